@@ -1,0 +1,61 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * The RDC-1 display processor's firmware: the command decoder, the drawing
+ * state and the raster algorithms.  It reaches the chip only through the DP
+ * port in hw-sim/hw.h; it never allocates (struct rdc_dp is the caller's).
+ */
+#ifndef RDC_DP_H
+#define RDC_DP_H
+
+#include "../hw-sim/hw.h"
+
+/* A drawing surface in VRAM. */
+struct rdc_surface {
+	uint32_t base, stride; /* bytes */
+	uint32_t width, height; /* pixels */
+	uint32_t format; /* enum rdc_format */
+};
+
+/* Clip rectangle: x0 <= x < x1, y0 <= y < y1. */
+struct rdc_rect {
+	int32_t x0, y0, x1, y1;
+};
+
+/* Drawing state set by the SET_* commands. */
+struct rdc_dp_state {
+	uint32_t fg, bg, rop;
+	struct rdc_rect clip;
+	struct rdc_surface dst, src;
+};
+
+enum rdc_dp_phase {
+	RDC_DP_IDLE, /* between commands */
+	RDC_DP_FETCH, /* header read, waiting for argument words */
+	RDC_DP_READBACK, /* READBACK in progress, waiting for RDATA space */
+	RDC_DP_WAIT, /* WAIT_VBLANK / WAIT_LINE until wait_time */
+	RDC_DP_HALTED /* halted on error */
+};
+
+struct rdc_dp {
+	struct rdc_hw *hw;
+	struct rdc_dp_state st;
+
+	/* decoder */
+	enum rdc_dp_phase phase;
+	unsigned int src; /* RDC_SRC_* of the command being fetched */
+	uint32_t cmd[1 + RDC_CMD_MAX_ARGS]; /* header + arguments */
+	uint32_t cmd_len, cmd_have; /* words expected / fetched (header incl.) */
+	uint64_t cmd_start; /* time the command's header was fetched */
+	uint64_t wait_time;
+
+	/* READBACK progress */
+	uint32_t rb_row, rb_word, rb_words_per_row;
+};
+
+/* Initialise and connect to the chip (rdc_hw_set_dp). */
+void rdc_dp_init(struct rdc_dp *dp, struct rdc_hw *hw);
+
+/* The built-in 8x16 font, code page 437 order, bit 7 leftmost. */
+extern const uint8_t rdc_font8x16[256 * 16];
+
+#endif /* RDC_DP_H */

@@ -1,0 +1,261 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * The simulated RDC-1 chip: register file, VRAM and its bus, CLUT, CRTC with
+ * scanout and cursor, command FIFO and ring, interrupts, pins, counters, and
+ * the run loop that advances simulated time.
+ *
+ * The caller owns every byte of memory: struct rdc_hw, VRAM and the two
+ * XRGB8888 frame buffers are handed in; the chip never allocates.  All
+ * state lives in the struct; nothing is global; the same register writes
+ * and commands give the same frames and cycle counts on every host.
+ *
+ * Three kinds of caller:
+ *  - the host (librdc's sim backend, the kernel driver): rdc_hw_read/write,
+ *    rdc_hw_vram_read/write, rdc_hw_run_until;
+ *  - the display processor (firmware-model/): the "DP port" below;
+ *  - tests: everything, plus the trace hook.
+ */
+#ifndef RDC_HW_H
+#define RDC_HW_H
+
+#include "rdc_port.h"
+#include "rdc_regs.h"
+
+#define RDC_NEVER UINT64_MAX /* "no such time" */
+#define RDC_DEFAULT_CORE_HZ 100000000u
+
+struct rdc_hw;
+
+/*
+ * The display processor as the chip sees it (firmware-model/ fills this
+ * in with rdc_dp_attach).  The chip calls run() from its run loop.
+ */
+struct rdc_dp_ops {
+	/* Chip reset: drop any command in progress and reset drawing state. */
+	void (*reset)(void *dp);
+	/*
+	 * Execute from hw->now.  Returns when the DP cannot progress, or once
+	 * hw->now >= until (a command in progress finishes first, so now may
+	 * pass until by at most one command).  The return value is the
+	 * earliest simulated time at which the DP could progress without the
+	 * host doing anything (a vblank or line it waits for), or RDC_NEVER
+	 * if it waits for the host (empty queues, full RDATA, halted).
+	 */
+	uint64_t (*run)(void *dp, uint64_t until);
+};
+
+/* Called with each complete frame at the start of vertical blanking. */
+typedef void (*rdc_frame_fn)(void *ctx, const uint32_t *xrgb, uint32_t width,
+			     uint32_t height, uint64_t frame_number);
+
+/* Timing of one mode, as in the CRTC registers. */
+struct rdc_timing {
+	uint32_t h_total, h_display, h_sync_start, h_sync_end;
+	uint32_t v_total, v_display, v_sync_start, v_sync_end;
+	uint32_t pixclk_khz, flags;
+};
+
+struct rdc_hw_config {
+	uint32_t vram_size; /* bytes, multiple of 4 */
+	uint32_t core_hz; /* 0 = RDC_DEFAULT_CORE_HZ */
+};
+
+/* Performance counters (RDC_REG_PERF_*). */
+struct rdc_perf {
+	uint64_t busy; /* cycles the DP spent executing commands */
+	uint64_t stall; /* of which, cycles waiting behind scanout fetches */
+	uint64_t pixels; /* pixels written by the DP */
+	uint32_t cmds; /* commands executed */
+	uint32_t last_cycles; /* cycles of the last command */
+	uint32_t last_opcode;
+};
+
+/* CRTC working state (what was latched at the last vblank). */
+struct rdc_crtc {
+	struct rdc_timing shadow, cur; /* registers / in force */
+	uint32_t fb_base, fb_stride, fb_format; /* shadows */
+	uint32_t cur_base, cur_stride, cur_format; /* latched */
+	uint32_t line_compare;
+	uint32_t preset;
+	uint32_t cursor_base, cursor_pos, cursor_fg, cursor_bg;
+	uint8_t cursor_img[RDC_CURSOR_BYTES]; /* latched at vblank */
+	int running; /* a mode is in force and scanout is enabled */
+	uint64_t frame_start; /* time line 0 of this frame starts */
+	uint64_t frame_cycles; /* core cycles a frame lasts */
+	uint32_t next_line; /* next line whose start is not yet processed */
+	uint64_t next_line_time; /* its start time (RDC_NEVER if stopped) */
+	uint64_t fetch_end; /* end of the current scanout fetch window */
+	uint64_t frame_count;
+};
+
+/* The DRAM bus's state for the cost model (see bus.h). */
+struct rdc_bus {
+	uint32_t open_row; /* DRAM row of the last access; ~0u: none */
+};
+
+struct rdc_hw {
+	/* configuration and memory handed in */
+	uint8_t *vram;
+	uint32_t vram_size;
+	uint32_t core_hz;
+	uint32_t *frame[2]; /* two XRGB8888 buffers, frame_cap pixels each */
+	uint32_t frame_cap;
+	unsigned int frame_back; /* buffer scanout is filling */
+
+	uint64_t now; /* simulated time, core cycles */
+
+	/* registers */
+	uint32_t control, irq_status, irq_enable;
+	uint32_t err_code, err_info;
+	uint32_t pins_in; /* RESET_N, BL_EN as driven from outside */
+	uint32_t perf_hi_snap; /* HI half snapshotted by a LO read */
+
+	struct rdc_bus bus;
+	struct rdc_crtc crtc;
+
+	uint32_t clut[RDC_CLUT_ENTRIES]; /* in force, 0x00RRGGBB */
+	uint32_t clut_shadow[RDC_CLUT_ENTRIES]; /* latched-mode writes */
+	uint32_t clut_dirty; /* shadow has entries to apply at vblank */
+	uint32_t clut_index;
+
+	/* command FIFO (host -> DP) and readback FIFO (DP -> host) */
+	uint32_t fifo[RDC_FIFO_DEPTH];
+	uint32_t fifo_head, fifo_count, fifo_lowwater;
+	uint32_t rdata[RDC_RDATA_DEPTH];
+	uint32_t rdata_head, rdata_count;
+	uint32_t ring_base, ring_size, ring_head, ring_tail;
+	uint32_t fence;
+
+	struct rdc_perf perf;
+
+	/* the display processor */
+	const struct rdc_dp_ops *dp_ops;
+	void *dp;
+	uint32_t dp_status; /* RDC_STATUS_DP_* bits the DP reports */
+
+	/* listeners */
+	rdc_frame_fn frame_fn;
+	void *frame_ctx;
+};
+
+/* ---- Host side ----------------------------------------------------------- */
+
+/*
+ * Sizes of the memory the caller hands to rdc_hw_init: VRAM of cfg->vram_size
+ * bytes and two frame buffers of frame_cap pixels each; frame_cap must hold
+ * the largest mode the host will set (RDC_CRTC_MAX_DISPLAY^2 covers any).
+ */
+void rdc_hw_init(struct rdc_hw *hw, const struct rdc_hw_config *cfg,
+		 uint8_t *vram, uint32_t *frame0, uint32_t *frame1,
+		 uint32_t frame_cap);
+/* Power-on reset: registers to their reset values, 640x480@60 XRGB8888 at
+ * VRAM 0, queues empty, counters zero, time kept.  VRAM is not cleared. */
+void rdc_hw_reset(struct rdc_hw *hw);
+
+/* Register access at hw->now.  Bad offsets are logged as RDC_ERR_REG. */
+uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg);
+void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
+
+/* Host access to VRAM through the aperture, at hw->now (not charged to the
+ * DP).  Return 0, or -1 if the range leaves VRAM (nothing is copied). */
+int rdc_hw_vram_read(struct rdc_hw *hw, uint32_t addr, void *buf, uint32_t len);
+int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
+		      uint32_t len);
+
+/* Advance simulated time to at least t, running the DP and scanout
+ * interleaved (see rdc_dp_ops.run for overshoot). */
+void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t);
+
+/* Drive the input pins (RDC_PIN_RESET_N, RDC_PIN_BL_EN). */
+void rdc_hw_set_pins(struct rdc_hw *hw, uint32_t pins_in);
+uint32_t rdc_hw_pins(struct rdc_hw *hw);
+
+/* Connect the display processor and a frame listener. */
+void rdc_hw_set_dp(struct rdc_hw *hw, const struct rdc_dp_ops *ops, void *dp);
+void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx);
+
+/* The last complete frame (NULL before the first) and its size. */
+const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
+			     uint32_t *height);
+
+/* Beam position at hw->now (y >= V_DISPLAY in vertical blanking). */
+void rdc_hw_beam(struct rdc_hw *hw, uint32_t *x, uint32_t *y);
+
+/* The timing of a preset; 0, or -1 for an unknown preset. */
+int rdc_preset_timing(uint32_t preset, struct rdc_timing *t);
+
+/* ---- DP port: how the display processor reaches the chip ----------------
+ * The DP touches VRAM, the queues, the CLUT and the IRQs only through
+ * these.  Every VRAM access is charged to simulated time by the bus model
+ * (bus.h) at hw->now and advances hw->now; scanout is brought up to date
+ * first, so the access races the beam exactly as the model says.
+ */
+
+/* Access kinds for rdc_port_span/rdc_port_column; OR in the PARTIAL flags
+ * when the first/last byte is only partly written (sub-byte pixels). */
+#define RDC_BUS_READ 0u
+#define RDC_BUS_WRITE 1u
+#define RDC_BUS_RMW 2u /* read then write every beat (ROP reads dst) */
+#define RDC_BUS_KIND_MASK 3u
+#define RDC_BUS_HEAD_PARTIAL 4u
+#define RDC_BUS_TAIL_PARTIAL 8u
+
+/*
+ * The DP accesses bytes [addr, addr + len) of VRAM.  Returns a pointer to
+ * them for the DP to read or write directly, valid until the next port call,
+ * or NULL (nothing charged) if len is 0 or the range leaves VRAM.  The
+ * access is charged in bursts; writes become visible to scanout when the
+ * span completes (scanout fetches that the span waited behind see the old
+ * bytes).
+ */
+uint8_t *rdc_port_span(struct rdc_hw *hw, uint32_t addr, uint32_t len,
+		       unsigned int kind);
+
+/*
+ * `count` accesses of `len` bytes each, `stride` bytes apart from addr (a
+ * vertical run of pixels).  Returns the pointer to the first, or NULL
+ * (nothing charged) if any leaves VRAM.  Charged as `count` separate
+ * single-burst accesses.
+ */
+uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
+			 uint32_t count, uint32_t len, unsigned int kind);
+
+/* Charge `cycles` of DP-internal work (decode, setup); no bus use. */
+void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles);
+
+/* Command sources, in the order the DP takes a new command from them. */
+#define RDC_SRC_FIFO 0u
+#define RDC_SRC_RING 1u
+
+/* Words waiting in a source (0 for a ring that is disabled or in error). */
+uint32_t rdc_port_cmd_avail(struct rdc_hw *hw, unsigned int src);
+/* Pop up to n words from src into dst, charging the fetch (FIFO: 1 cycle a
+ * word; ring: a VRAM read through the bus model).  Returns words popped. */
+uint32_t rdc_port_cmd_pop(struct rdc_hw *hw, unsigned int src, uint32_t *dst,
+			  uint32_t n);
+
+/* Readback FIFO: free words, and push up to n (returns words pushed). */
+uint32_t rdc_port_rdata_space(struct rdc_hw *hw);
+uint32_t rdc_port_rdata_push(struct rdc_hw *hw, const uint32_t *w, uint32_t n);
+
+/* CLUT write from the command stream (honours RDC_CONTROL_CLUT_LATCH). */
+void rdc_port_clut_write(struct rdc_hw *hw, uint32_t index, uint32_t rgb);
+
+/* REG_WRITE from the command stream: 0, or -1 if the register may not be
+ * written from a command (queues, control, reset). */
+int rdc_port_reg_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
+
+/* Raise interrupt status bits; record an error (sets RDC_IRQ_ERROR). */
+void rdc_port_irq(struct rdc_hw *hw, uint32_t bits);
+void rdc_port_error(struct rdc_hw *hw, uint32_t code, uint32_t info);
+void rdc_port_fence(struct rdc_hw *hw, uint32_t value);
+
+/* When the next vertical blanking starts / the beam next starts `line`
+ * (RDC_NEVER while scanout is stopped or line >= V_TOTAL). */
+uint64_t rdc_port_next_vblank(struct rdc_hw *hw);
+uint64_t rdc_port_next_line(struct rdc_hw *hw, uint32_t line);
+
+/* Move simulated time to t (>= now) with the DP idle; scanout catches up. */
+void rdc_port_idle_until(struct rdc_hw *hw, uint64_t t);
+
+#endif /* RDC_HW_H */

@@ -1,0 +1,73 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * The portable core's view of its host.  hw-sim/ and firmware-model/ build
+ * in three places: user space, the Linux kernel (Kbuild) and freestanding
+ * (an MCU, or `make freestanding`).  This header is the only place that
+ * knows which; the core includes nothing else from its environment.
+ *
+ * Only compiler-provided headers are used outside the kernel (stdint.h,
+ * stddef.h, stdbool.h are part of a freestanding C implementation).
+ * memcpy/memset/memmove map to the compiler builtins, which the kernel,
+ * libc or an MCU's runtime resolve.
+ */
+#ifndef RDC_PORT_H
+#define RDC_PORT_H
+
+#ifdef __KERNEL__
+#include <linux/types.h>
+#include <linux/string.h>
+#include <linux/bits.h>
+#include <linux/bitfield.h>
+#else
+#include <stdint.h>
+#include <stddef.h>
+#include <stdbool.h>
+#endif
+
+#define rdc_memcpy(d, s, n) __builtin_memcpy((d), (s), (n))
+#define rdc_memmove(d, s, n) __builtin_memmove((d), (s), (n))
+#define rdc_memset(d, c, n) __builtin_memset((d), (c), (n))
+
+#define RDC_MIN(a, b) ((a) < (b) ? (a) : (b))
+#define RDC_MAX(a, b) ((a) > (b) ? (a) : (b))
+#define RDC_ARRAY_SIZE(a) (sizeof(a) / sizeof((a)[0]))
+
+/* Little-endian loads and stores on byte pointers (VRAM is little-endian). */
+static inline uint16_t rdc_ld16(const uint8_t *p)
+{
+	return (uint16_t)(p[0] | (p[1] << 8));
+}
+
+static inline uint32_t rdc_ld24(const uint8_t *p)
+{
+	return (uint32_t)p[0] | ((uint32_t)p[1] << 8) | ((uint32_t)p[2] << 16);
+}
+
+static inline uint32_t rdc_ld32(const uint8_t *p)
+{
+	return (uint32_t)p[0] | ((uint32_t)p[1] << 8) | ((uint32_t)p[2] << 16) |
+	       ((uint32_t)p[3] << 24);
+}
+
+static inline void rdc_st16(uint8_t *p, uint32_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+}
+
+static inline void rdc_st24(uint8_t *p, uint32_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+	p[2] = (uint8_t)(v >> 16);
+}
+
+static inline void rdc_st32(uint8_t *p, uint32_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+	p[2] = (uint8_t)(v >> 16);
+	p[3] = (uint8_t)(v >> 24);
+}
+
+#endif /* RDC_PORT_H */

@@ -1,0 +1,361 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * RDC-1 register map and command encodings.
+ *
+ * The one copy, used by hw-sim, the display-processor firmware, librdc, the
+ * daemon and the kernel driver.  Registers are 32 bits wide at byte offsets
+ * (an MMIO window of RDC_REG_WINDOW bytes).  Access is noted per register:
+ *   R    read only (writes are ignored and logged as a host error)
+ *   RW   read/write
+ *   W    write only (reads return 0)
+ *   W1C  read; writing 1 to a bit clears it
+ * "latched" registers are shadows: the CRTC copies them to its working set
+ * at the start of vertical blanking, so a page flip never tears.
+ *
+ * docs/hardware.md is the prose reference; hw-sim/bus.h holds the cycle
+ * model's formulas.
+ */
+#ifndef RDC_REGS_H
+#define RDC_REGS_H
+
+#include "rdc_bits.h"
+
+#define RDC_ID_VALUE 0x31434452u /* "RDC1" little-endian */
+#define RDC_VERSION_VALUE 0x00010000u /* 1.0 */
+#define RDC_REG_WINDOW 0x400u
+
+/* ---- Identification and control ------------------------------------- */
+#define RDC_REG_ID 0x000 /* R   RDC_ID_VALUE */
+#define RDC_REG_VERSION 0x004 /* R   [31:16] major, [15:0] minor */
+#define RDC_REG_VRAM_SIZE 0x008 /* R   bytes of VRAM */
+#define RDC_REG_CORE_KHZ 0x00c /* R   core clock in kHz */
+
+#define RDC_REG_CONTROL 0x010 /* RW */
+#define   RDC_CONTROL_DP_EN BIT(0) /* display processor runs */
+#define   RDC_CONTROL_SCANOUT_EN BIT(1) /* CRTC runs; 0 = no frames */
+#define   RDC_CONTROL_RING_EN BIT(2) /* DP fetches from the VRAM ring */
+#define   RDC_CONTROL_HALT_ON_ERR BIT(3) /* bad command halts the DP */
+#define   RDC_CONTROL_CLUT_LATCH BIT(4) /* CLUT writes apply at vblank */
+#define   RDC_CONTROL_CURSOR_EN BIT(5) /* hardware cursor overlay */
+#define   RDC_CONTROL_RESUME BIT(30) /* W: leave the halted state */
+#define   RDC_CONTROL_SOFT_RESET BIT(31) /* W: reset the chip, self-clearing */
+#define   RDC_CONTROL_RESET_VALUE \
+	(RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN)
+
+#define RDC_REG_STATUS 0x014 /* R */
+#define   RDC_STATUS_DP_BUSY BIT(0) /* a command is in progress */
+#define   RDC_STATUS_DP_HALTED BIT(1) /* halted on error */
+#define   RDC_STATUS_DP_WAIT BIT(2) /* waiting (vblank, line, data) */
+#define   RDC_STATUS_FIFO_EMPTY BIT(3)
+#define   RDC_STATUS_FIFO_FULL BIT(4)
+#define   RDC_STATUS_RING_EMPTY BIT(5) /* head == tail */
+#define   RDC_STATUS_VBLANK BIT(6) /* beam in vertical blanking */
+#define   RDC_STATUS_HBLANK BIT(7) /* beam in horizontal blanking */
+#define   RDC_STATUS_IRQ BIT(8) /* level of the IRQ pin */
+#define   RDC_STATUS_IDLE_MASK \
+	(RDC_STATUS_DP_BUSY | RDC_STATUS_DP_WAIT) /* 0 and queues empty = idle */
+
+#define RDC_REG_IRQ_STATUS 0x018 /* W1C  raised events */
+#define RDC_REG_IRQ_ENABLE 0x01c /* RW   events that drive the IRQ pin */
+#define   RDC_IRQ_VBLANK BIT(0) /* start of vertical blanking */
+#define   RDC_IRQ_LINE BIT(1) /* beam reached LINE_COMPARE */
+#define   RDC_IRQ_FENCE BIT(2) /* FENCE command executed */
+#define   RDC_IRQ_FIFO_LOW BIT(3) /* FIFO level fell to FIFO_LOWWATER */
+#define   RDC_IRQ_ERROR BIT(4) /* ERR_CODE was set */
+#define   RDC_IRQ_ALL GENMASK(4, 0)
+
+#define RDC_REG_ERR_CODE 0x020 /* R   last error (enum rdc_err); cleared by
+				   writing RDC_IRQ_ERROR to IRQ_STATUS */
+#define RDC_REG_ERR_INFO 0x024 /* R   header word of the offending command,
+				   or the register offset for host errors */
+#define RDC_REG_PINS 0x028 /* R   pin levels */
+#define   RDC_PIN_TE BIT(0) /* out: high during vertical blanking */
+#define   RDC_PIN_IRQ BIT(1) /* out: high while an enabled IRQ is raised */
+#define   RDC_PIN_RESET_N BIT(2) /* in: low holds the chip in reset */
+#define   RDC_PIN_BL_EN BIT(3) /* in: backlight enable */
+
+/* ---- CRTC: timing (latched), framebuffer (latched), beam ---------------- */
+/*
+ * Horizontal values count pixels, vertical values count lines, both from 0
+ * at the first active pixel/line:  0 <= DISPLAY <= SYNC_START <= SYNC_END
+ * <= TOTAL, TOTAL <= RDC_CRTC_MAX_TOTAL.  Invalid timing is refused at
+ * latch time with RDC_ERR_MODE and the CRTC keeps its previous mode.
+ */
+#define RDC_REG_H_TOTAL 0x100 /* RW latched */
+#define RDC_REG_H_DISPLAY 0x104 /* RW latched */
+#define RDC_REG_H_SYNC_START 0x108 /* RW latched */
+#define RDC_REG_H_SYNC_END 0x10c /* RW latched */
+#define RDC_REG_V_TOTAL 0x110 /* RW latched */
+#define RDC_REG_V_DISPLAY 0x114 /* RW latched */
+#define RDC_REG_V_SYNC_START 0x118 /* RW latched */
+#define RDC_REG_V_SYNC_END 0x11c /* RW latched */
+#define RDC_REG_PIXCLK_KHZ 0x120 /* RW latched  pixel clock */
+#define RDC_REG_CRTC_FLAGS 0x124 /* RW latched */
+#define   RDC_CRTC_HSYNC_POS BIT(0) /* hsync active high */
+#define   RDC_CRTC_VSYNC_POS BIT(1) /* vsync active high */
+#define   RDC_CRTC_LCD BIT(2) /* panel timing (informative) */
+#define RDC_REG_FB_BASE 0x128 /* RW latched  VRAM byte address of line 0 */
+#define RDC_REG_FB_STRIDE 0x12c /* RW latched  bytes from line to line */
+#define RDC_REG_FB_FORMAT 0x130 /* RW latched  enum rdc_format */
+#define RDC_REG_LINE_COMPARE 0x134 /* RW  raise RDC_IRQ_LINE at this line */
+#define RDC_REG_BEAM 0x138 /* R   current beam position */
+#define   RDC_BEAM_X GENMASK(15, 0)
+#define   RDC_BEAM_Y GENMASK(31, 16)
+#define RDC_REG_FRAME_COUNT 0x13c /* R   vblanks since reset */
+#define RDC_REG_MODE_PRESET 0x140 /* W   load enum rdc_preset into the
+				   timing shadows (and FB_STRIDE for the
+				   current FB_FORMAT); reads the last one */
+
+#define RDC_CRTC_MAX_TOTAL 4096
+#define RDC_CRTC_MAX_DISPLAY 2048
+#define RDC_PIXCLK_MIN_KHZ 1000
+#define RDC_PIXCLK_MAX_KHZ 400000
+
+/* ---- Colour lookup table ------------------------------------------------ */
+#define RDC_REG_CLUT_INDEX 0x180 /* RW  next entry for CLUT_DATA, 0..255 */
+#define RDC_REG_CLUT_DATA 0x184 /* RW  0x00RRGGBB; index++ (wraps at 256)
+				   after each read or write */
+#define RDC_CLUT_ENTRIES 256
+
+/* ---- Hardware cursor ---------------------------------------------------- */
+/*
+ * 32x32 pixels, 2 bpp (8 bytes a row, pixel 0 in bits 7:6 of byte 0), read
+ * from VRAM at CURSOR_BASE when the CRTC latches at vblank:
+ *   0 transparent, 1 CURSOR_FG, 2 CURSOR_BG, 3 invert the screen pixel.
+ */
+#define RDC_REG_CURSOR_BASE 0x1a0 /* RW latched */
+#define RDC_REG_CURSOR_POS 0x1a4 /* RW  [15:0] x, [31:16] y, signed */
+#define RDC_REG_CURSOR_FG 0x1a8 /* RW  0x00RRGGBB */
+#define RDC_REG_CURSOR_BG 0x1ac /* RW  0x00RRGGBB */
+#define RDC_CURSOR_SIZE 32
+#define RDC_CURSOR_BYTES (RDC_CURSOR_SIZE * RDC_CURSOR_SIZE / 4)
+
+/* ---- Command queue ------------------------------------------------------ */
+#define RDC_REG_FIFO_DATA 0x200 /* W   push one command word; a write to a
+				   full FIFO is dropped: RDC_ERR_FIFO_OVERFLOW */
+#define RDC_REG_FIFO_FREE 0x204 /* R   free words */
+#define RDC_REG_FIFO_LOWWATER 0x208 /* RW  RDC_IRQ_FIFO_LOW at this level */
+#define RDC_REG_RING_BASE 0x20c /* RW  VRAM byte address, 4-aligned */
+#define RDC_REG_RING_SIZE 0x210 /* RW  bytes, multiple of 4, >= 16 */
+#define RDC_REG_RING_HEAD 0x214 /* RW  byte offset the DP reads next; host
+				   writes only while RING_EN is 0 */
+#define RDC_REG_RING_TAIL 0x218 /* RW  byte offset after the last word the
+				   host has written */
+#define RDC_REG_FENCE 0x21c /* R   value of the last FENCE executed */
+#define RDC_REG_RDATA 0x220 /* R   pop one readback word (0 if empty) */
+#define RDC_REG_RDATA_COUNT 0x224 /* R   readback words waiting */
+
+#define RDC_FIFO_DEPTH 256 /* words */
+#define RDC_RDATA_DEPTH 1024 /* words */
+
+/* ---- Performance counters (64-bit counters as LO/HI pairs) ------------- */
+/* Reading a LO register snapshots its HI half, so LO then HI is coherent. */
+#define RDC_REG_TIME_LO 0x300 /* R   simulated time, core cycles */
+#define RDC_REG_TIME_HI 0x304 /* R */
+#define RDC_REG_PERF_BUSY_LO 0x308 /* R   cycles the DP spent on commands */
+#define RDC_REG_PERF_BUSY_HI 0x30c /* R */
+#define RDC_REG_PERF_STALL_LO 0x310 /* R   cycles the DP waited for the bus */
+#define RDC_REG_PERF_STALL_HI 0x314 /* R */
+#define RDC_REG_PERF_PIXELS_LO 0x318 /* R   pixels the DP wrote */
+#define RDC_REG_PERF_PIXELS_HI 0x31c /* R */
+#define RDC_REG_PERF_CMDS 0x320 /* R   commands executed */
+#define RDC_REG_PERF_LAST_CYCLES 0x324 /* R   cycles of the last command */
+#define RDC_REG_PERF_LAST_OPCODE 0x328 /* R   opcode of the last command */
+#define RDC_REG_PERF_CTRL 0x32c /* W   write 1 to bit 0: zero the counters */
+#define   RDC_PERF_CTRL_CLEAR BIT(0)
+
+/* ---- Pixel formats ------------------------------------------------------ */
+/*
+ * Sub-byte formats pack the leftmost pixel in the most significant bits.
+ * Multi-byte pixels are little-endian: RGB565 is bits 15:11 red; RGB888 is
+ * bytes B, G, R; XRGB8888 is the 32-bit word 0xXXRRGGBB.
+ */
+enum rdc_format {
+	RDC_FMT_I1 = 0,
+	RDC_FMT_I2 = 1,
+	RDC_FMT_I4 = 2,
+	RDC_FMT_I8 = 3,
+	RDC_FMT_RGB565 = 4,
+	RDC_FMT_RGB888 = 5,
+	RDC_FMT_XRGB8888 = 6,
+	RDC_FMT_COUNT
+};
+
+static inline unsigned int rdc_format_bpp(unsigned int fmt)
+{
+	static const unsigned char bpp[RDC_FMT_COUNT] = { 1, 2, 4, 8, 16, 24, 32 };
+
+	return fmt < RDC_FMT_COUNT ? bpp[fmt] : 0;
+}
+
+static inline int rdc_format_indexed(unsigned int fmt)
+{
+	return fmt <= RDC_FMT_I8;
+}
+
+/* Bytes a row of `width` pixels occupies (sub-byte rows round up). */
+static inline uint32_t rdc_format_row_bytes(unsigned int fmt, uint32_t width)
+{
+	return (uint32_t)(((uint64_t)width * rdc_format_bpp(fmt) + 7) / 8);
+}
+
+/* ---- Mode presets --------------------------------------------------------
+ * Pixel clock = H_TOTAL * V_TOTAL * refresh.  VESA DMT / CEA-861 timings;
+ * 320x200 is VGA mode 13h's 70 Hz frame without line doubling
+ * (400 * 225 * 70 Hz = 6.3 MHz).
+ */
+enum rdc_preset {
+	RDC_PRESET_320x200_70 = 0,
+	RDC_PRESET_640x480_60 = 1,
+	RDC_PRESET_800x600_60 = 2,
+	RDC_PRESET_1024x768_60 = 3,
+	RDC_PRESET_1280x720_60 = 4,
+	RDC_PRESET_1920x1080_60 = 5,
+	RDC_PRESET_COUNT
+};
+
+/* ---- Errors (RDC_REG_ERR_CODE) ------------------------------------------ */
+enum rdc_err {
+	RDC_ERR_NONE = 0,
+	RDC_ERR_OPCODE = 1, /* unknown opcode */
+	RDC_ERR_LENGTH = 2, /* argument count wrong for the opcode */
+	RDC_ERR_RANGE = 3, /* coordinate, size or radius out of range */
+	RDC_ERR_SURFACE = 4, /* surface leaves VRAM, or bad format/stride */
+	RDC_ERR_RING = 5, /* ring base/size/head/tail out of range */
+	RDC_ERR_FIFO_OVERFLOW = 6, /* host wrote FIFO_DATA while full */
+	RDC_ERR_REG = 7, /* bad register in a REG_WRITE command, or a host
+			    access outside the register window / to a R reg */
+	RDC_ERR_ARG = 8, /* bad enumerated argument (ROP, format, ...) */
+	RDC_ERR_MODE = 9, /* CRTC timing refused at latch */
+	RDC_ERR_COUNT
+};
+
+/* ---- Commands ------------------------------------------------------------
+ * A command is a header word followed by RDC_CMD_LEN(header) argument
+ * words.  Points pack x in [15:0] and y in [31:16], both signed 16-bit;
+ * sizes pack w in [15:0] and h in [31:16], unsigned.  Coordinates must lie
+ * in [RDC_COORD_MIN, RDC_COORD_MAX] and sizes/radii in [0, RDC_SIZE_MAX],
+ * else RDC_ERR_RANGE.  Colours are raw pixel values of the target format
+ * (a CLUT index for indexed formats).
+ *
+ * On error the DP sets ERR_CODE/ERR_INFO, raises RDC_IRQ_ERROR and skips
+ * the command (its argument words are consumed), or with
+ * RDC_CONTROL_HALT_ON_ERR set, halts until RESUME or reset.
+ */
+#define RDC_CMD_OPCODE GENMASK(31, 24)
+#define RDC_CMD_FLAGS GENMASK(23, 16)
+#define RDC_CMD_LENGTH GENMASK(15, 0)
+#define RDC_CMD(op, flags, len) \
+	(FIELD_PREP(RDC_CMD_OPCODE, (op)) | FIELD_PREP(RDC_CMD_FLAGS, (flags)) | \
+	 FIELD_PREP(RDC_CMD_LENGTH, (len)))
+#define RDC_CMD_OP(hdr) FIELD_GET(RDC_CMD_OPCODE, (hdr))
+#define RDC_CMD_FL(hdr) FIELD_GET(RDC_CMD_FLAGS, (hdr))
+#define RDC_CMD_LEN(hdr) FIELD_GET(RDC_CMD_LENGTH, (hdr))
+
+#define RDC_CMD_MAX_ARGS 4096 /* longer commands: RDC_ERR_LENGTH */
+#define RDC_COORD_MIN (-16384)
+#define RDC_COORD_MAX 16383
+#define RDC_SIZE_MAX 16384
+
+#define RDC_XY(x, y) (((uint32_t)(uint16_t)(int16_t)(x)) | \
+		      ((uint32_t)(uint16_t)(int16_t)(y) << 16))
+#define RDC_X(w) ((int32_t)(int16_t)((w) & 0xffff))
+#define RDC_Y(w) ((int32_t)(int16_t)((w) >> 16))
+#define RDC_WH(w, h) (((uint32_t)(uint16_t)(w)) | ((uint32_t)(uint16_t)(h) << 16))
+#define RDC_W(v) ((uint32_t)((v) & 0xffff))
+#define RDC_H(v) ((uint32_t)((v) >> 16))
+
+/*   opcode                     args (words)                  flags */
+enum rdc_opcode {
+	/* Control */
+	RDC_OP_NOP = 0x00, /* any number, ignored */
+	RDC_OP_FENCE = 0x01, /* value: FENCE = value, RDC_IRQ_FENCE */
+	RDC_OP_WAIT_VBLANK = 0x02, /* none; no-op while scanout is off */
+	RDC_OP_WAIT_LINE = 0x03, /* line: wait until the beam starts it */
+	RDC_OP_REG_WRITE = 0x04, /* reg, value (CRTC, CLUT, cursor, IRQ regs) */
+	RDC_OP_LOAD_CLUT = 0x05, /* first, then 1..256 entries 0x00RRGGBB */
+	RDC_OP_CALL = 0x06, /* reserved: display lists */
+	RDC_OP_RET = 0x07, /* reserved */
+	RDC_OP_JUMP = 0x08, /* reserved */
+
+	/* Drawing state */
+	RDC_OP_SET_FG = 0x10, /* pixel value */
+	RDC_OP_SET_BG = 0x11, /* pixel value */
+	RDC_OP_SET_ROP = 0x12, /* enum rdc_rop */
+	RDC_OP_SET_CLIP = 0x13, /* xy0, xy1: x0 <= x < x1, y0 <= y < y1 */
+	RDC_OP_SET_DST = 0x14, /* base, stride, wh, format */
+	RDC_OP_SET_SRC = 0x15, /* base, stride, wh, format */
+
+	/* Primitives (first set) */
+	RDC_OP_PIXEL = 0x20, /* xy */
+	RDC_OP_LINE = 0x21, /* xy0, xy1: both endpoints drawn */
+	RDC_OP_POLYLINE = 0x22, /* 2..RDC_CMD_MAX_ARGS points */
+	RDC_OP_RECT = 0x23, /* xy, wh: outline */
+	RDC_OP_FILL_RECT = 0x24, /* xy, wh */
+	RDC_OP_CIRCLE = 0x25, /* xy centre, radius */
+	RDC_OP_FILL_CIRCLE = 0x26, /* xy centre, radius */
+	RDC_OP_ELLIPSE = 0x27, /* xy centre, wh = (rx, ry) */
+	RDC_OP_FILL_ELLIPSE = 0x28, /* xy centre, wh = (rx, ry) */
+	RDC_OP_BLIT = 0x30, /* src xy, dst xy, wh: SRC surface to DST,
+			       overlap-safe, ROP applies */
+	RDC_OP_HOST_BLIT = 0x31, /* xy, wh, then rows of DST-format pixels,
+				    each row padded to a word */
+	RDC_OP_READBACK = 0x32, /* xy, wh: rows of SRC-format pixels to RDATA,
+				   each row padded to a word */
+	RDC_OP_MONO = 0x33, /* xy, wh, then 1 bpp rows (bit 7 of byte 0
+			       leftmost), each row padded to a word;
+			       1 = FG, 0 = BG        flags: RDC_MONO_TRANSPARENT */
+	RDC_OP_TEXT = 0x34, /* xy, count, then count chars 4 to a word
+			       (byte 0 first), built-in 8x16 font;
+			       flags: RDC_MONO_TRANSPARENT */
+	RDC_OP_COUNT = 0x100
+};
+
+#define RDC_MONO_TRANSPARENT BIT(0) /* 0 bits leave the destination alone */
+
+/* Raster operations: X11's GXclear..GXset.  Bit n of the code is the
+ * result for (src, dst) = (!(n >> 1), !(n & 1)), so 3 (GXcopy) is src. */
+enum rdc_rop {
+	RDC_ROP_CLEAR = 0x0,
+	RDC_ROP_AND = 0x1,
+	RDC_ROP_AND_REVERSE = 0x2,
+	RDC_ROP_COPY = 0x3,
+	RDC_ROP_AND_INVERTED = 0x4,
+	RDC_ROP_NOOP = 0x5,
+	RDC_ROP_XOR = 0x6,
+	RDC_ROP_OR = 0x7,
+	RDC_ROP_NOR = 0x8,
+	RDC_ROP_EQUIV = 0x9,
+	RDC_ROP_INVERT = 0xa,
+	RDC_ROP_OR_REVERSE = 0xb,
+	RDC_ROP_COPY_INVERTED = 0xc,
+	RDC_ROP_OR_INVERTED = 0xd,
+	RDC_ROP_NAND = 0xe,
+	RDC_ROP_SET = 0xf,
+	RDC_ROP_COUNT
+};
+
+/* Apply ROP to 32 bits of source and destination at once. */
+static inline uint32_t rdc_rop_apply(unsigned int rop, uint32_t s, uint32_t d)
+{
+	uint32_t r = 0;
+
+	if (rop & 1)
+		r |= s & d;
+	if (rop & 2)
+		r |= s & ~d;
+	if (rop & 4)
+		r |= ~s & d;
+	if (rop & 8)
+		r |= ~s & ~d;
+	return r;
+}
+
+/* Does the ROP read the destination (a read-modify-write on the bus)? */
+static inline int rdc_rop_reads_dst(unsigned int rop)
+{
+	return rop != RDC_ROP_CLEAR && rop != RDC_ROP_COPY &&
+	       rop != RDC_ROP_COPY_INVERTED && rop != RDC_ROP_SET;
+}
+
+#endif /* RDC_REGS_H */

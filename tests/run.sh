@@ -1,0 +1,28 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only
+# Run every cmocka test program in $1/tests from the source root and close
+# with one summary line: "tests: N passed, M failed".
+set -u
+dir=${1:-build/san}
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+pass=0
+fail=0
+bad=""
+for t in "$dir"/tests/test_*; do
+	[ -x "$t" ] || continue
+	out=$("$t" 2>&1)
+	rc=$?
+	printf '%s\n' "$out"
+	p=$(printf '%s\n' "$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -n 1)
+	f=$(printf '%s\n' "$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -n 1)
+	pass=$((pass + ${p:-0}))
+	if [ $rc -ne 0 ] && [ -z "$f" ]; then
+		f=1 # crashed or sanitizer abort before cmocka's summary
+	fi
+	fail=$((fail + ${f:-0}))
+	[ $rc -ne 0 ] && bad="$bad $(basename "$t")"
+done
+[ -n "$bad" ] && echo "failing programs:$bad"
+echo "tests: $pass passed, $fail failed"
+[ $fail -eq 0 ] && [ $pass -gt 0 ]

@@ -1,0 +1,222 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * librdc: the host library for the RDC-1 simulated raster display
+ * controller.
+ *
+ * One device handle (rdc_dev) reached through a URI that picks a backend:
+ *   "sim:" or ""            an RDC-1 simulated in this process (default);
+ *                           options: "sim:vram=16M"
+ *   (later: unix:PATH, tcp:HOST:PORT, usb:, fbdev:/dev/fbN)
+ *
+ * Errors: every function that can fail returns 0 or a positive count on
+ * success and a negative enum rdc_error on failure; rdc_strerror() names
+ * it.  When the device itself reported an error (ERR_CODE), the call
+ * returns RDC_E_DEVICE and rdc_dev_error() gives the device's code.
+ *
+ * Register offsets, formats, ROPs and command encodings are those of
+ * <rdc_regs.h>, which this header includes.
+ */
+#ifndef RDC_H
+#define RDC_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rdc_regs.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum rdc_error {
+	RDC_OK = 0,
+	RDC_E_INVAL = -1, /* bad argument */
+	RDC_E_NOMEM = -2, /* out of memory */
+	RDC_E_NOSYS = -3, /* the backend does not offer this */
+	RDC_E_URI = -4, /* unknown or malformed device URI */
+	RDC_E_IO = -5, /* transport failure */
+	RDC_E_TIMEOUT = -6, /* the wait ran past its simulated-time budget */
+	RDC_E_DEVICE = -7, /* the device reported an error (rdc_dev_error) */
+	RDC_E_HALTED = -8, /* the display processor is halted on an error */
+	RDC_E_RANGE = -9, /* address or size outside the device */
+	RDC_E_PARSE = -10, /* script syntax error (rdc_script_*) */
+	RDC_E_PROTO = -11, /* protocol violation by the other side */
+	RDC_E_BUSY = -12, /* another client controls the device */
+	RDC_E_FILE = -13, /* file could not be read or written */
+	RDC_E_COUNT_ = -14
+};
+
+/* A short English description of an enum rdc_error value. */
+const char *rdc_strerror(int err);
+/* The name of a device error code (enum rdc_err), e.g. "RANGE". */
+const char *rdc_dev_strerror(uint32_t code);
+
+typedef struct rdc_dev rdc_dev;
+typedef struct rdc_batch rdc_batch;
+
+/* ---- Device ---------------------------------------------------------------- */
+int rdc_open(const char *uri, rdc_dev **out);
+void rdc_close(rdc_dev *dev);
+/* Chip reset (RDC_CONTROL_SOFT_RESET). */
+int rdc_reset(rdc_dev *dev);
+/* The device error (enum rdc_err) behind the last RDC_E_DEVICE, and its
+ * ERR_INFO word; reading clears the device's error status. */
+int rdc_dev_error(rdc_dev *dev, uint32_t *code, uint32_t *info);
+
+int rdc_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val);
+int rdc_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val);
+
+int rdc_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len);
+int rdc_vram_write(rdc_dev *dev, uint32_t addr, const void *buf, size_t len);
+
+/*
+ * Program a preset mode with a framebuffer at `base` in `format`, stride
+ * the packed row size rounded up to 4 bytes, and point the DP's destination
+ * and source surfaces and clip at it.  Takes effect at the next vblank.
+ */
+int rdc_mode_set(rdc_dev *dev, uint32_t preset, uint32_t format, uint32_t base);
+/* Mode size of a preset (no device needed); 0 or RDC_E_INVAL. */
+int rdc_preset_size(uint32_t preset, uint32_t *width, uint32_t *height);
+/* Preset by name ("640x480", "640x480@60", "1080p"); -1 if unknown. */
+int rdc_preset_by_name(const char *name);
+
+/* ---- Command submission ----------------------------------------------------- */
+/*
+ * Push command words into the FIFO.  When it is full the call waits
+ * (advancing simulated time on sim:) until the DP makes room: that is the
+ * back-pressure.  Returns RDC_E_HALTED if the DP halted.
+ */
+int rdc_submit(rdc_dev *dev, const uint32_t *words, size_t n);
+/* Submit a FENCE with a fresh value and wait until the DP has executed it,
+ * i.e. every command submitted before has completed. */
+int rdc_finish(rdc_dev *dev);
+/* Wait until FENCE >= value (wrapping compare). */
+int rdc_fence_wait(rdc_dev *dev, uint32_t value);
+/* Wait for the start of the next vertical blanking (host side). */
+int rdc_vblank_wait(rdc_dev *dev);
+/*
+ * Screen to host: read a w x h rectangle at (x, y) of the SRC surface
+ * through the DP's READBACK command into buf (rows of SRC-format pixels,
+ * each padded to 4 bytes); `cap` is buf's size in bytes.  Returns bytes
+ * written or an error.
+ */
+int rdc_readback(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
+		 void *buf, size_t cap);
+/*
+ * Host to screen: copy w x h pixels (DST format, rows `pitch` bytes apart)
+ * to (x, y) of the DST surface, split into HOST_BLIT commands that fit
+ * RDC_CMD_MAX_ARGS.
+ */
+int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
+		  const void *pixels, size_t pitch);
+
+/* ---- Frames ------------------------------------------------------------------ */
+/*
+ * Copy the last complete scanned-out frame (XRGB8888, width*height words)
+ * into buf of `cap` words.  Returns RDC_E_RANGE if cap is too small, and
+ * RDC_E_NOSYS... never on sim:.  *width/*height are set in every case when
+ * a frame exists; before the first frame the call waits for one.
+ */
+int rdc_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap, uint32_t *width,
+		   uint32_t *height);
+/* CRC-32 (zlib) of the last complete frame's XRGB8888 bytes. */
+int rdc_frame_crc(rdc_dev *dev, uint32_t *crc);
+
+/* ---- Batches: encode commands, then submit them ------------------------------ */
+/*
+ * A batch is a growable array of command words.  Encoders never fail on
+ * arguments (the device validates); they return RDC_E_NOMEM only.
+ */
+rdc_batch *rdc_batch_new(void);
+void rdc_batch_free(rdc_batch *b);
+void rdc_batch_reset(rdc_batch *b);
+const uint32_t *rdc_batch_words(const rdc_batch *b, size_t *n);
+int rdc_batch_submit(rdc_dev *dev, rdc_batch *b); /* then empties b */
+/* Raw command: header from op/flags and `n` argument words. */
+int rdc_batch_cmd(rdc_batch *b, uint32_t op, uint32_t flags,
+		  const uint32_t *args, size_t n);
+
+int rdc_batch_nop(rdc_batch *b);
+int rdc_batch_fence(rdc_batch *b, uint32_t value);
+int rdc_batch_wait_vblank(rdc_batch *b);
+int rdc_batch_wait_line(rdc_batch *b, uint32_t line);
+int rdc_batch_reg_write(rdc_batch *b, uint32_t reg, uint32_t val);
+int rdc_batch_load_clut(rdc_batch *b, uint32_t first, const uint32_t *rgb,
+			size_t n);
+int rdc_batch_fg(rdc_batch *b, uint32_t pixel);
+int rdc_batch_bg(rdc_batch *b, uint32_t pixel);
+int rdc_batch_rop(rdc_batch *b, uint32_t rop);
+int rdc_batch_clip(rdc_batch *b, int x0, int y0, int x1, int y1);
+int rdc_batch_dst(rdc_batch *b, uint32_t base, uint32_t stride, uint32_t w,
+		  uint32_t h, uint32_t format);
+int rdc_batch_src(rdc_batch *b, uint32_t base, uint32_t stride, uint32_t w,
+		  uint32_t h, uint32_t format);
+int rdc_batch_pixel(rdc_batch *b, int x, int y);
+int rdc_batch_line(rdc_batch *b, int x0, int y0, int x1, int y1);
+/* xy: n points as x0, y0, x1, y1, ... */
+int rdc_batch_polyline(rdc_batch *b, const int *xy, size_t n);
+int rdc_batch_rect(rdc_batch *b, int x, int y, uint32_t w, uint32_t h);
+int rdc_batch_fill_rect(rdc_batch *b, int x, int y, uint32_t w, uint32_t h);
+int rdc_batch_circle(rdc_batch *b, int cx, int cy, uint32_t r);
+int rdc_batch_fill_circle(rdc_batch *b, int cx, int cy, uint32_t r);
+int rdc_batch_ellipse(rdc_batch *b, int cx, int cy, uint32_t rx, uint32_t ry);
+int rdc_batch_fill_ellipse(rdc_batch *b, int cx, int cy, uint32_t rx,
+			   uint32_t ry);
+int rdc_batch_blit(rdc_batch *b, int sx, int sy, int dx, int dy, uint32_t w,
+		   uint32_t h);
+/* bits: h rows of ceil(w/8) bytes, bit 7 leftmost (padded into words here). */
+int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
+		   const uint8_t *bits, int transparent);
+int rdc_batch_text(rdc_batch *b, int x, int y, const char *s, size_t len,
+		   int transparent);
+
+/* ---- Introspection for hardware-model tests (sim: only) ---------------------- */
+struct rdc_stats {
+	uint64_t time; /* simulated core cycles */
+	uint64_t busy, stall, pixels;
+	uint32_t cmds, last_cycles, last_opcode;
+	uint64_t frames; /* vblanks since reset */
+};
+
+int rdc_sim_time(rdc_dev *dev, uint64_t *cycles);
+/* Advance simulated time by `cycles` (the DP runs meanwhile). */
+int rdc_sim_step(rdc_dev *dev, uint64_t cycles);
+/* Advance simulated time to at least `t`. */
+int rdc_sim_run_until(rdc_dev *dev, uint64_t t);
+int rdc_sim_beam(rdc_dev *dev, uint32_t *x, uint32_t *y);
+int rdc_stats_get(rdc_dev *dev, struct rdc_stats *st);
+/* Core clock in Hz (for converting cycles to time). */
+int rdc_sim_core_hz(rdc_dev *dev, uint32_t *hz);
+
+/* ---- .rdl scripts (docs/rdl.md) ---------------------------------------------- */
+struct rdc_script_result {
+	/* cycles spent per command class ("fill", "line", ...), index by
+	 * the opcode; counts likewise */
+	uint64_t op_cycles[256];
+	uint64_t op_count[256];
+	uint32_t error_line; /* script line of a parse or device error */
+	char error_msg[160];
+};
+
+/*
+ * Run a script: parse it line by line, encode and submit its commands, and
+ * wait for the device to finish.  `png_dir` is where `screenshot` commands
+ * write relative paths (NULL: the current directory).
+ */
+int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
+		   struct rdc_script_result *res);
+int rdc_script_run_file(rdc_dev *dev, const char *path,
+			struct rdc_script_result *res);
+/* Name of an opcode ("fill-rect"), or NULL. */
+const char *rdc_op_name(uint32_t op);
+
+/* ---- PNG ----------------------------------------------------------------- */
+/* Write w x h XRGB8888 pixels (row `pitch` words) as an RGB PNG. */
+int rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,
+		  uint32_t h, size_t pitch);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RDC_H */
