@@ -1,0 +1,113 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * librdc internals: the device object and the backend table.
+ *
+ * A backend is a table of operations in the style of libusb's
+ * usbi_os_backend.  The core (core.c) implements the public API on top of
+ * these operations alone and never asks which backend it talks to; a new
+ * transport is a new file with one struct rdc_backend and a line in the
+ * table in core.c.
+ */
+#ifndef RDC_PRIV_H
+#define RDC_PRIV_H
+
+#include <stdbool.h>
+
+#include "rdc.h"
+
+/*
+ * A wait condition, evaluated by the backend on its side of the transport
+ * (so a remote device can wait without a round trip per check).  The wait
+ * ends when ANY of the terms holds.
+ */
+enum rdc_wait_kind {
+	RDC_WAIT_NONE, /* unused term */
+	RDC_WAIT_GE, /* (reg & mask) >= value, unsigned */
+	RDC_WAIT_WRAP_GE, /* (int32_t)((reg & mask) - value) >= 0 */
+	RDC_WAIT_EQ, /* (reg & mask) == value */
+};
+
+#define RDC_WAIT_TERMS 2
+
+struct rdc_wait_term {
+	enum rdc_wait_kind kind;
+	uint32_t reg, mask, value;
+};
+
+struct rdc_wait {
+	struct rdc_wait_term term[RDC_WAIT_TERMS];
+	/* Fail with RDC_E_HALTED if the DP halts: set for conditions that
+	 * only the DP can make true. */
+	bool needs_dp;
+	/* Simulated-time budget in core cycles; 0 = the default. */
+	uint64_t budget;
+};
+
+/* Ten simulated seconds of the default 100 MHz core clock. */
+#define RDC_WAIT_BUDGET_DEFAULT (10ull * RDC_DEFAULT_CORE_HZ)
+
+struct rdc_backend {
+	/* URI scheme without the colon, e.g. "sim". */
+	const char *scheme;
+
+	/*
+	 * Connect; `opts` is the URI after "scheme:".  Set dev->priv.
+	 * Returns 0 or a negative enum rdc_error (RDC_E_URI for bad options).
+	 * NULL: the scheme is known but not available in this build
+	 * (rdc_open returns RDC_E_NOSYS).
+	 */
+	int (*open)(rdc_dev *dev, const char *opts);
+	/* Disconnect and free dev->priv. */
+	void (*close)(rdc_dev *dev);
+
+	int (*reg_read)(rdc_dev *dev, uint32_t reg, uint32_t *val);
+	int (*reg_write)(rdc_dev *dev, uint32_t reg, uint32_t val);
+	/* RDC_E_RANGE when [addr, addr + len) leaves VRAM. */
+	int (*vram_read)(rdc_dev *dev, uint32_t addr, void *buf, size_t len);
+	int (*vram_write)(rdc_dev *dev, uint32_t addr, const void *buf,
+			  size_t len);
+
+	/*
+	 * Optional: push `n` command words, honouring back-pressure.  NULL:
+	 * the core writes FIFO_DATA itself, waiting on FIFO_FREE.
+	 */
+	int (*submit)(rdc_dev *dev, const uint32_t *words, size_t n);
+
+	/*
+	 * Let the device run until `w` holds: 0, RDC_E_TIMEOUT past the
+	 * budget, RDC_E_HALTED (w->needs_dp), or a transport error.
+	 */
+	int (*wait)(rdc_dev *dev, const struct rdc_wait *w);
+
+	/*
+	 * Optional (simulators only, else RDC_E_NOSYS): advance simulated
+	 * time by `cycles` whatever happens.
+	 */
+	int (*step)(rdc_dev *dev, uint64_t cycles);
+
+	/*
+	 * Copy the last complete frame (XRGB8888, width * height words) to
+	 * buf.  Returns 0; 1 if no frame has completed yet (the core waits
+	 * and retries); RDC_E_RANGE if cap < width * height, with *width and
+	 * *height set.
+	 */
+	int (*frame_grab)(rdc_dev *dev, uint32_t *buf, size_t cap,
+			  uint32_t *width, uint32_t *height);
+};
+
+/* Backends (one file each). */
+extern const struct rdc_backend rdc_backend_sim;
+
+struct rdc_dev {
+	const struct rdc_backend *be;
+	void *priv; /* the backend's */
+	uint32_t fence_seq; /* last FENCE value handed out */
+};
+
+/* Run a wait with one term (core.c). */
+int rdc_wait_one(rdc_dev *dev, enum rdc_wait_kind kind, uint32_t reg,
+		 uint32_t mask, uint32_t value, bool needs_dp);
+/* RDC_E_DEVICE if the device has a pending error, else 0 (core.c). */
+int rdc_check_error(rdc_dev *dev);
+
+#endif /* RDC_PRIV_H */

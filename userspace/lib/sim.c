@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The "sim:" backend: an RDC-1 (hw-sim) and its display processor
+ * (firmware-model) in this process.  Simulated time moves only inside
+ * wait() and step(), so a host that never waits sees a frozen chip.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "dp.h"
+#include "hw.h"
+#include "rdc_priv.h"
+
+#define SIM_VRAM_DEFAULT (16u << 20)
+#define SIM_VRAM_MIN (64u << 10)
+#define SIM_VRAM_MAX (256u << 20)
+#define SIM_FRAME_CAP ((uint32_t)RDC_CRTC_MAX_DISPLAY * RDC_CRTC_MAX_DISPLAY)
+
+/*
+ * A wait checks its condition between slices of simulated time.  Slices
+ * start short so a wait that is satisfied soon does not run the chip far
+ * past the event, and double up to a cap so a long wait (a frame is
+ * ~1.7 M cycles at 640x480) costs few checks.
+ */
+#define SIM_SLICE_FIRST 16u
+#define SIM_SLICE_MAX 16384u
+
+struct sim {
+	struct rdc_hw hw;
+	struct rdc_dp dp;
+	uint8_t *vram;
+	uint32_t *frame[2];
+};
+
+static struct sim *sim_of(rdc_dev *dev)
+{
+	return dev->priv;
+}
+
+/* "4M", "65536", "64K": bytes, or 0 if malformed or overflowing. */
+static uint64_t sim_parse_size(const char *s, size_t len)
+{
+	uint64_t v = 0;
+	size_t i = 0;
+
+	if (len == 0)
+		return 0;
+	for (; i < len && s[i] >= '0' && s[i] <= '9'; i++) {
+		v = v * 10 + (uint64_t)(s[i] - '0');
+		if (v > SIM_VRAM_MAX)
+			return 0;
+	}
+	if (i == 0)
+		return 0;
+	if (i + 1 == len) {
+		switch (s[i]) {
+		case 'k': case 'K':
+			v <<= 10;
+			break;
+		case 'm': case 'M':
+			v <<= 20;
+			break;
+		default:
+			return 0;
+		}
+	} else if (i != len) {
+		return 0;
+	}
+	return v;
+}
+
+static int sim_parse_opts(const char *opts, uint32_t *vram_size)
+{
+	const char *p = opts;
+
+	*vram_size = SIM_VRAM_DEFAULT;
+	while (*p) {
+		const char *end = strchr(p, ',');
+		size_t len = end ? (size_t)(end - p) : strlen(p);
+
+		if (len > 5 && !strncmp(p, "vram=", 5)) {
+			uint64_t v = sim_parse_size(p + 5, len - 5);
+
+			if (v < SIM_VRAM_MIN || v > SIM_VRAM_MAX || (v & 3))
+				return RDC_E_URI;
+			*vram_size = (uint32_t)v;
+		} else if (len) {
+			return RDC_E_URI;
+		}
+		p += len;
+		if (*p == ',')
+			p++;
+	}
+	return 0;
+}
+
+static void sim_free(struct sim *s)
+{
+	if (!s)
+		return;
+	free(s->vram);
+	free(s->frame[0]);
+	free(s->frame[1]);
+	free(s);
+}
+
+static int sim_open(rdc_dev *dev, const char *opts)
+{
+	struct rdc_hw_config cfg = { 0 };
+	struct sim *s;
+	int ret;
+
+	ret = sim_parse_opts(opts, &cfg.vram_size);
+	if (ret)
+		return ret;
+	s = calloc(1, sizeof(*s));
+	if (!s)
+		return RDC_E_NOMEM;
+	s->vram = calloc(cfg.vram_size, 1);
+	s->frame[0] = calloc(SIM_FRAME_CAP, sizeof(uint32_t));
+	s->frame[1] = calloc(SIM_FRAME_CAP, sizeof(uint32_t));
+	if (!s->vram || !s->frame[0] || !s->frame[1]) {
+		sim_free(s);
+		return RDC_E_NOMEM;
+	}
+	rdc_hw_init(&s->hw, &cfg, s->vram, s->frame[0], s->frame[1],
+		    SIM_FRAME_CAP);
+	rdc_dp_init(&s->dp, &s->hw);
+	dev->priv = s;
+	return 0;
+}
+
+static void sim_close(rdc_dev *dev)
+{
+	sim_free(sim_of(dev));
+	dev->priv = NULL;
+}
+
+static int sim_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
+{
+	*val = rdc_hw_read(&sim_of(dev)->hw, reg);
+	return 0;
+}
+
+static int sim_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
+{
+	rdc_hw_write(&sim_of(dev)->hw, reg, val);
+	return 0;
+}
+
+static int sim_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
+{
+	struct rdc_hw *hw = &sim_of(dev)->hw;
+
+	if (len > hw->vram_size || addr > hw->vram_size - len)
+		return RDC_E_RANGE;
+	return rdc_hw_vram_read(hw, addr, buf, (uint32_t)len) ? RDC_E_RANGE : 0;
+}
+
+static int sim_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
+			  size_t len)
+{
+	struct rdc_hw *hw = &sim_of(dev)->hw;
+
+	if (len > hw->vram_size || addr > hw->vram_size - len)
+		return RDC_E_RANGE;
+	return rdc_hw_vram_write(hw, addr, buf, (uint32_t)len) ? RDC_E_RANGE :
+								 0;
+}
+
+static bool sim_term_holds(struct rdc_hw *hw, const struct rdc_wait_term *t)
+{
+	uint32_t v;
+
+	if (t->kind == RDC_WAIT_NONE)
+		return false;
+	v = rdc_hw_read(hw, t->reg) & t->mask;
+	switch (t->kind) {
+	case RDC_WAIT_GE:
+		return v >= t->value;
+	case RDC_WAIT_WRAP_GE:
+		return (int32_t)(v - t->value) >= 0;
+	case RDC_WAIT_EQ:
+		return v == t->value;
+	default:
+		return false;
+	}
+}
+
+static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
+{
+	struct rdc_hw *hw = &sim_of(dev)->hw;
+	uint64_t budget = w->budget ? w->budget : RDC_WAIT_BUDGET_DEFAULT;
+	uint64_t start = hw->now;
+	uint64_t slice = SIM_SLICE_FIRST;
+
+	for (;;) {
+		for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++)
+			if (sim_term_holds(hw, &w->term[i]))
+				return 0;
+		if (w->needs_dp &&
+		    (rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED))
+			return RDC_E_HALTED;
+		if (hw->now - start >= budget)
+			return RDC_E_TIMEOUT;
+		rdc_hw_run_until(hw, hw->now + slice);
+		if (slice < SIM_SLICE_MAX)
+			slice *= 2;
+	}
+}
+
+static int sim_step(rdc_dev *dev, uint64_t cycles)
+{
+	struct rdc_hw *hw = &sim_of(dev)->hw;
+
+	if (cycles > UINT64_MAX - hw->now)
+		return RDC_E_RANGE;
+	rdc_hw_run_until(hw, hw->now + cycles);
+	return 0;
+}
+
+static int sim_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
+			  uint32_t *width, uint32_t *height)
+{
+	uint32_t w = 0, h = 0;
+	const uint32_t *f = rdc_hw_frame(&sim_of(dev)->hw, &w, &h);
+
+	if (!f)
+		return 1;
+	*width = w;
+	*height = h;
+	if (cap < (size_t)w * h)
+		return RDC_E_RANGE;
+	memcpy(buf, f, (size_t)w * h * sizeof(*buf));
+	return 0;
+}
+
+const struct rdc_backend rdc_backend_sim = {
+	.scheme = "sim",
+	.open = sim_open,
+	.close = sim_close,
+	.reg_read = sim_reg_read,
+	.reg_write = sim_reg_write,
+	.vram_read = sim_vram_read,
+	.vram_write = sim_vram_write,
+	.wait = sim_wait,
+	.step = sim_step,
+	.frame_grab = sim_frame_grab,
+};
