@@ -38,7 +38,7 @@ SAN_OBJS := $(patsubst %.c,$(O)/san/%.o,$(CORE_SRCS) $(LIB_SRCS))
 TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
-.PHONY: all deps demo check test golden freestanding clean help
+.PHONY: all deps demo check test golden freestanding speed clean help
 all: $(O)/rel/rdcctl $(O)/rel/librdc.a
 
 help:
@@ -47,6 +47,7 @@ help:
 	@echo "make check        install missing packages, build with ASan+UBSan, run every test"
 	@echo "make golden       regenerate tests/golden/*.crc and write PNGs to $(O)/golden"
 	@echo "make freestanding compile hw-sim/ and firmware-model/ with no libc headers"
+	@echo "make speed        time a full-screen fill through the command path against memset"
 
 deps:
 	@scripts/deps.sh
@@ -84,6 +85,12 @@ demo: deps
 check test: deps
 	$(MAKE) $(TEST_BINS) $(O)/san/rdcctl freestanding
 	@tests/run.sh $(O)/san
+
+$(O)/rel/fill_speed: $(O)/rel/tests/perf/fill_speed.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+speed: $(O)/rel/fill_speed
+	$(O)/rel/fill_speed
 
 golden: $(O)/rel/rdcctl
 	@tests/golden/regen.sh $(O)/rel/rdcctl $(O)/golden
