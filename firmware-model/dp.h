@@ -9,6 +9,9 @@
 
 #include "../hw-sim/hw.h"
 
+#define RDC_DP_CHUNK 1024u /* pixels staged per span */
+#define RDC_DP_RB_CHUNK 256u /* READBACK words packed per span read */
+
 /* A drawing surface in VRAM. */
 struct rdc_surface {
 	uint32_t base, stride; /* bytes */
@@ -50,6 +53,14 @@ struct rdc_dp {
 
 	/* READBACK progress */
 	uint32_t rb_row, rb_word, rb_words_per_row;
+
+	/* Staging for rows whose pixels differ (blit, host data, mono, text):
+	 * a row is written in pieces of at most RDC_DP_CHUNK pixels. */
+	uint32_t px[RDC_DP_CHUNK];
+	uint8_t on[RDC_DP_CHUNK];
+	/* READBACK words packed but not yet pushed to RDATA */
+	uint32_t rb_buf[RDC_DP_RB_CHUNK];
+	uint32_t rb_pos, rb_len;
 };
 
 /* Initialise and connect to the chip (rdc_hw_set_dp). */

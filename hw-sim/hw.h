@@ -23,6 +23,11 @@
 
 #define RDC_NEVER UINT64_MAX /* "no such time" */
 #define RDC_DEFAULT_CORE_HZ 100000000u
+#define RDC_FIFO_LOWWATER_RESET 64u /* FIFO_LOWWATER after reset */
+/* LINE_COMPARE after reset: beyond any V_TOTAL, so RDC_IRQ_LINE never fires */
+#define RDC_LINE_COMPARE_RESET RDC_CRTC_MAX_TOTAL
+#define RDC_CURSOR_FG_RESET 0x00ffffffu
+#define RDC_CURSOR_BG_RESET 0x00000000u
 
 struct rdc_hw;
 
@@ -60,7 +65,11 @@ struct rdc_hw_config {
 	uint32_t core_hz; /* 0 = RDC_DEFAULT_CORE_HZ */
 };
 
-/* Performance counters (RDC_REG_PERF_*). */
+/*
+ * Performance counters (RDC_REG_PERF_*).  The chip's bus model counts
+ * `stall`; the display processor maintains the others (it knows where a
+ * command starts and ends and how many pixels it wrote).
+ */
 struct rdc_perf {
 	uint64_t busy; /* cycles the DP spent executing commands */
 	uint64_t stall; /* of which, cycles waiting behind scanout fetches */
@@ -86,6 +95,11 @@ struct rdc_crtc {
 	uint64_t next_line_time; /* its start time (RDC_NEVER if stopped) */
 	uint64_t fetch_end; /* end of the current scanout fetch window */
 	uint64_t frame_count;
+	int mode_valid; /* `cur` holds a mode that passed validation */
+	int in_vblank; /* beam in vertical blanking (TE pin level) */
+	int shadow_dirty; /* timing/format shadows written since the latch */
+	int mode_pending; /* `pending` goes in force at the next frame start */
+	struct rdc_timing pending;
 };
 
 /* The DRAM bus's state for the cost model (see bus.h). */
@@ -109,6 +123,8 @@ struct rdc_hw {
 	uint32_t err_code, err_info;
 	uint32_t pins_in; /* RESET_N, BL_EN as driven from outside */
 	uint32_t perf_hi_snap; /* HI half snapshotted by a LO read */
+	uint32_t perf_snap_reg; /* the HI register perf_hi_snap belongs to */
+	int in_reset; /* RESET_N held low */
 
 	struct rdc_bus bus;
 	struct rdc_crtc crtc;
@@ -125,6 +141,7 @@ struct rdc_hw {
 	uint32_t rdata_head, rdata_count;
 	uint32_t ring_base, ring_size, ring_head, ring_tail;
 	uint32_t fence;
+	int ring_err; /* ring programming invalid: yields no words */
 
 	struct rdc_perf perf;
 
@@ -132,10 +149,17 @@ struct rdc_hw {
 	const struct rdc_dp_ops *dp_ops;
 	void *dp;
 	uint32_t dp_status; /* RDC_STATUS_DP_* bits the DP reports */
+	/* Set to 1 by a host CONTROL write with RDC_CONTROL_RESUME; the DP
+	 * leaves its halted state when it sees it and clears it. */
+	uint32_t dp_resume;
 
 	/* listeners */
 	rdc_frame_fn frame_fn;
 	void *frame_ctx;
+
+	/* the last complete frame: frame[frame_back ^ 1] */
+	int have_frame;
+	uint32_t front_w, front_h;
 };
 
 /* ---- Host side ----------------------------------------------------------- */

@@ -231,6 +231,7 @@ enum rdc_err {
 };
 
 /* ---- Commands ------------------------------------------------------------
+ * docs/commands.md is the full reference (semantics and cycle costs).
  * A command is a header word followed by RDC_CMD_LEN(header) argument
  * words.  Points pack x in [15:0] and y in [31:16], both signed 16-bit;
  * sizes pack w in [15:0] and h in [31:16], unsigned.  Coordinates must lie
@@ -240,7 +241,12 @@ enum rdc_err {
  *
  * On error the DP sets ERR_CODE/ERR_INFO, raises RDC_IRQ_ERROR and skips
  * the command (its argument words are consumed), or with
- * RDC_CONTROL_HALT_ON_ERR set, halts until RESUME or reset.
+ * RDC_CONTROL_HALT_ON_ERR set, halts until RESUME or reset.  A header
+ * announcing more than RDC_CMD_MAX_ARGS words is the exception: only the
+ * header is consumed.  A rejected command draws nothing and changes no
+ * state.  Drawing is clipped to the clip rectangle intersected with the
+ * DST surface; colours are masked to DST's bits per pixel; every primitive
+ * writes each pixel at most once (XOR twice restores the surface).
  */
 #define RDC_CMD_OPCODE GENMASK(31, 24)
 #define RDC_CMD_FLAGS GENMASK(23, 16)
@@ -282,19 +288,23 @@ enum rdc_opcode {
 	RDC_OP_SET_FG = 0x10, /* pixel value */
 	RDC_OP_SET_BG = 0x11, /* pixel value */
 	RDC_OP_SET_ROP = 0x12, /* enum rdc_rop */
-	RDC_OP_SET_CLIP = 0x13, /* xy0, xy1: x0 <= x < x1, y0 <= y < y1 */
+	RDC_OP_SET_CLIP = 0x13, /* xy0, xy1: x0 <= x < x1, y0 <= y < y1;
+				   x1, y1 may be RDC_COORD_MAX + 1 */
 	RDC_OP_SET_DST = 0x14, /* base, stride, wh, format */
 	RDC_OP_SET_SRC = 0x15, /* base, stride, wh, format */
 
 	/* Primitives (first set) */
 	RDC_OP_PIXEL = 0x20, /* xy */
 	RDC_OP_LINE = 0x21, /* xy0, xy1: both endpoints drawn */
-	RDC_OP_POLYLINE = 0x22, /* 2..RDC_CMD_MAX_ARGS points */
+	RDC_OP_POLYLINE = 0x22, /* 2..RDC_CMD_MAX_ARGS points; a shared
+				   vertex is drawn once, and so is the
+				   start of a closed one (last == first) */
 	RDC_OP_RECT = 0x23, /* xy, wh: outline */
 	RDC_OP_FILL_RECT = 0x24, /* xy, wh */
 	RDC_OP_CIRCLE = 0x25, /* xy centre, radius */
 	RDC_OP_FILL_CIRCLE = 0x26, /* xy centre, radius */
-	RDC_OP_ELLIPSE = 0x27, /* xy centre, wh = (rx, ry) */
+	RDC_OP_ELLIPSE = 0x27, /* xy centre, wh = (rx, ry); a zero radius
+				  draws a line */
 	RDC_OP_FILL_ELLIPSE = 0x28, /* xy centre, wh = (rx, ry) */
 	RDC_OP_BLIT = 0x30, /* src xy, dst xy, wh: SRC surface to DST,
 			       overlap-safe, ROP applies */

@@ -16,8 +16,8 @@
  * Register offsets, formats, ROPs and command encodings are those of
  * <rdc_regs.h>, which this header includes.
  */
-#ifndef RDC_H
-#define RDC_H
+#ifndef RDC_LIB_H
+#define RDC_LIB_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -95,6 +95,13 @@ int rdc_fence_wait(rdc_dev *dev, uint32_t value);
 /* Wait for the start of the next vertical blanking (host side). */
 int rdc_vblank_wait(rdc_dev *dev);
 /*
+ * Wait until the DP is idle: FIFO empty, no command in progress or
+ * waiting.  Unlike rdc_finish it adds no command, so the performance
+ * counters (PERF_LAST_*) still describe the last command submitted.
+ * RDC_E_DEVICE if the device has a pending error.
+ */
+int rdc_idle_wait(rdc_dev *dev);
+/*
  * Screen to host: read a w x h rectangle at (x, y) of the SRC surface
  * through the DP's READBACK command into buf (rows of SRC-format pixels,
  * each padded to 4 bytes); `cap` is buf's size in bytes.  Returns bytes
@@ -113,19 +120,29 @@ int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
 /* ---- Frames ------------------------------------------------------------------ */
 /*
  * Copy the last complete scanned-out frame (XRGB8888, width*height words)
- * into buf of `cap` words.  Returns RDC_E_RANGE if cap is too small, and
- * RDC_E_NOSYS... never on sim:.  *width/*height are set in every case when
- * a frame exists; before the first frame the call waits for one.
+ * into buf of `cap` words.  Returns RDC_E_RANGE if cap is too small (so
+ * cap 0 and buf NULL asks for the size), RDC_E_NOSYS if the backend cannot
+ * see frames (never on sim:).  width and height are set whenever a frame
+ * exists; before the first frame the call waits for one vblank.
  */
 int rdc_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap, uint32_t *width,
 		   uint32_t *height);
-/* CRC-32 (zlib) of the last complete frame's XRGB8888 bytes. */
+/* CRC-32 (zlib) of the last complete frame's XRGB8888 bytes (each pixel
+ * as the little-endian word 0x00RRGGBB, i.e. bytes B, G, R, 0). */
 int rdc_frame_crc(rdc_dev *dev, uint32_t *crc);
+/*
+ * Wait until a frame scanned out entirely after this call has completed,
+ * so that rdc_frame_grab shows everything drawn before it (two vblanks
+ * from active video, one from vertical blanking).
+ */
+int rdc_frame_wait(rdc_dev *dev);
 
 /* ---- Batches: encode commands, then submit them ------------------------------ */
 /*
- * A batch is a growable array of command words.  Encoders never fail on
- * arguments (the device validates); they return RDC_E_NOMEM only.
+ * A batch is a growable array of command words.  Encoders do not check
+ * arguments (the device validates, so bad commands can be sent on
+ * purpose); they fail only with RDC_E_NOMEM, or RDC_E_INVAL for a NULL
+ * pointer or a command whose length does not fit RDC_CMD_LENGTH.
  */
 rdc_batch *rdc_batch_new(void);
 void rdc_batch_free(rdc_batch *b);
@@ -196,12 +213,30 @@ struct rdc_script_result {
 	uint64_t op_count[256];
 	uint32_t error_line; /* script line of a parse or device error */
 	char error_msg[160];
+	/* readback statements: how many ran; CRC-32 (zlib) and word count
+	 * of the data the last one read */
+	uint32_t readbacks;
+	uint32_t readback_crc;
+	uint32_t readback_words;
+	/* 1 if the last statement was `vsync`: the frame that just completed
+	 * is the script's picture (mid-frame effects); else the picture is
+	 * the next frame scanned entirely after the script (rdc_frame_wait) */
+	uint32_t frame_ready;
 };
 
 /*
+ * Make the script's picture current: rdc_frame_wait unless
+ * res->frame_ready.  rdcctl run and the golden tests use this.
+ */
+int rdc_script_frame_wait(rdc_dev *dev, const struct rdc_script_result *res);
+
+/*
  * Run a script: parse it line by line, encode and submit its commands, and
- * wait for the device to finish.  `png_dir` is where `screenshot` commands
- * write relative paths (NULL: the current directory).
+ * wait for the device to finish each statement.  Returns 0 or the error of
+ * the first failing statement (RDC_E_PARSE for syntax, RDC_E_DEVICE when
+ * the device flagged a command, ...), with res->error_line (1-based) and
+ * res->error_msg set.  `screenshot` paths are relative to the current
+ * directory.  res may be NULL.
  */
 int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
 		   struct rdc_script_result *res);
@@ -209,6 +244,14 @@ int rdc_script_run_file(rdc_dev *dev, const char *path,
 			struct rdc_script_result *res);
 /* Name of an opcode ("fill-rect"), or NULL. */
 const char *rdc_op_name(uint32_t op);
+
+/* The register table: rdc_reg_count() entries; rdc_reg_info(i, &off)
+ * gives the name ("CLUT_INDEX") and offset, NULL past the end. */
+size_t rdc_reg_count(void);
+const char *rdc_reg_info(size_t i, uint32_t *reg);
+/* Offset of a register by name, case-insensitive, "RDC_REG_" optional;
+ * 0 or RDC_E_INVAL. */
+int rdc_reg_by_name(const char *name, uint32_t *reg);
 
 /* ---- PNG ----------------------------------------------------------------- */
 /* Write w x h XRGB8888 pixels (row `pitch` words) as an RGB PNG. */
@@ -219,4 +262,4 @@ int rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,
 }
 #endif
 
-#endif /* RDC_H */
+#endif /* RDC_LIB_H */

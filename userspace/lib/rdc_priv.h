@@ -13,6 +13,7 @@
 
 #include <stdbool.h>
 
+#include "hw.h"
 #include "rdc.h"
 
 /*
@@ -102,6 +103,10 @@ struct rdc_dev {
 	const struct rdc_backend *be;
 	void *priv; /* the backend's */
 	uint32_t fence_seq; /* last FENCE value handed out */
+
+	/* command-stream watcher (core.c, rdc_track_words) */
+	uint32_t scan_op, scan_left, scan_n, scan_args[4];
+	uint32_t dst_format, src_format;
 };
 
 /* Run a wait with one term (core.c). */
@@ -109,5 +114,11 @@ int rdc_wait_one(rdc_dev *dev, enum rdc_wait_kind kind, uint32_t reg,
 		 uint32_t mask, uint32_t value, bool needs_dp);
 /* RDC_E_DEVICE if the device has a pending error, else 0 (core.c). */
 int rdc_check_error(rdc_dev *dev);
+
+/* The last complete frame in a malloc'd buffer (core.c). */
+int rdc_frame_alloc(rdc_dev *dev, uint32_t **pix, uint32_t *width,
+		    uint32_t *height);
+/* zlib CRC-32 of XRGB8888 pixels as little-endian bytes (core.c). */
+uint32_t rdc_crc32_xrgb(const uint32_t *pix, size_t n);
 
 #endif /* RDC_PRIV_H */

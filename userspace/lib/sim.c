@@ -198,7 +198,11 @@ static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 		for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++)
 			if (sim_term_holds(hw, &w->term[i]))
 				return 0;
-		if (w->needs_dp &&
+		/*
+		 * STATUS reflects the DP as of its last run: after a RESUME it
+		 * reads halted until the chip has run, so judge only then.
+		 */
+		if (w->needs_dp && hw->now != start &&
 		    (rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED))
 			return RDC_E_HALTED;
 		if (hw->now - start >= budget)

@@ -1,0 +1,552 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The display processor's command decoder and drawing state.
+ *
+ * A command is fetched whole (header, then its argument words, from the
+ * source the header came from) before it runs, so a command never sees a
+ * half-written argument list; the source running dry mid-command parks the
+ * decoder in RDC_DP_FETCH.  Only WAIT_VBLANK/WAIT_LINE (waiting for the
+ * beam) and READBACK (waiting for RDATA space) suspend after they start.
+ */
+#include "dp_int.h"
+#include "../hw-sim/bus.h"
+
+static void dp_reset_state(struct rdc_dp *dp)
+{
+	static const struct rdc_surface reset_surface = {
+		.base = 0,
+		.stride = 640 * 4,
+		.width = 640,
+		.height = 480,
+		.format = RDC_FMT_XRGB8888,
+	};
+	struct rdc_dp_state *st = &dp->st;
+
+	st->fg = 0xffffffffu;
+	st->bg = 0;
+	st->rop = RDC_ROP_COPY;
+	st->clip.x0 = RDC_COORD_MIN;
+	st->clip.y0 = RDC_COORD_MIN;
+	st->clip.x1 = RDC_COORD_MAX + 1;
+	st->clip.y1 = RDC_COORD_MAX + 1;
+	st->dst = reset_surface;
+	st->src = reset_surface;
+}
+
+static void dp_reset(void *opaque)
+{
+	struct rdc_dp *dp = opaque;
+
+	dp_reset_state(dp);
+	dp->phase = RDC_DP_IDLE;
+	dp->cmd_len = 0;
+	dp->cmd_have = 0;
+	dp->rb_pos = 0;
+	dp->rb_len = 0;
+	dp->hw->dp_status = 0;
+	dp->hw->dp_resume = 0;
+}
+
+static bool coord_ok(int32_t v)
+{
+	return v >= RDC_COORD_MIN && v <= RDC_COORD_MAX;
+}
+
+static bool xy_ok(uint32_t w)
+{
+	return coord_ok(RDC_X(w)) && coord_ok(RDC_Y(w));
+}
+
+static bool wh_ok(uint32_t w)
+{
+	return RDC_W(w) <= RDC_SIZE_MAX && RDC_H(w) <= RDC_SIZE_MAX;
+}
+
+/* The command is over: account for it and return to idle. */
+static void cmd_done(struct rdc_dp *dp)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint64_t cycles = hw->now - dp->cmd_start;
+
+	hw->perf.cmds++;
+	hw->perf.last_cycles = (uint32_t)RDC_MIN(cycles, (uint64_t)UINT32_MAX);
+	hw->perf.last_opcode = RDC_CMD_OP(dp->cmd[0]);
+	hw->perf.busy += cycles;
+	if (dp->phase != RDC_DP_HALTED)
+		dp->phase = RDC_DP_IDLE;
+}
+
+/* Reject the command: record the error, then skip it or halt. */
+static void cmd_fail(struct rdc_dp *dp, uint32_t code)
+{
+	struct rdc_hw *hw = dp->hw;
+
+	rdc_port_error(hw, code, dp->cmd[0]);
+	if (hw->control & RDC_CONTROL_HALT_ON_ERR) {
+		dp->phase = RDC_DP_HALTED;
+		hw->dp_resume = 0;
+	}
+	cmd_done(dp);
+}
+
+/* Does a SET_DST/SET_SRC argument list describe a surface inside VRAM? */
+static bool surface_parse(const struct rdc_hw *hw, const uint32_t *a,
+			  struct rdc_surface *s)
+{
+	uint32_t fmt = a[3], w = RDC_W(a[2]), h = RDC_H(a[2]), row;
+
+	if (fmt >= RDC_FMT_COUNT || w < 1 || h < 1 || w > RDC_SIZE_MAX ||
+	    h > RDC_SIZE_MAX)
+		return false;
+	row = rdc_format_row_bytes(fmt, w);
+	if (a[1] < row)
+		return false;
+	if ((uint64_t)a[0] + (uint64_t)(h - 1) * a[1] + row > hw->vram_size)
+		return false;
+	s->base = a[0];
+	s->stride = a[1];
+	s->width = w;
+	s->height = h;
+	s->format = fmt;
+	return true;
+}
+
+/* Mask the colour registers to the destination's pixel size. */
+static void dp_mask_colours(struct rdc_dp *dp, uint32_t *fg, uint32_t *bg)
+{
+	unsigned int bpp = rdc_format_bpp(dp->st.dst.format);
+	uint32_t m = bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
+
+	*fg = dp->st.fg & m;
+	*bg = dp->st.bg & m;
+}
+
+/* Run a command that may wait: WAIT_* or READBACK.  true when complete. */
+static bool readback_step(struct rdc_dp *dp)
+{
+	struct rdc_hw *hw = dp->hw;
+	const uint32_t *a = dp->cmd + 1;
+	uint32_t w = RDC_W(a[1]), h = RDC_H(a[1]);
+
+	for (;;) {
+		uint32_t pushed;
+
+		if (dp->rb_pos == dp->rb_len) {
+			uint32_t n;
+
+			if (dp->rb_row >= h || !dp->rb_words_per_row)
+				return true;
+			n = RDC_MIN(RDC_DP_RB_CHUNK,
+				    dp->rb_words_per_row - dp->rb_word);
+			rdc_dp_readback_pack(dp, RDC_X(a[0]), RDC_Y(a[0]), w,
+					     dp->rb_row, dp->rb_word, n,
+					     dp->rb_buf);
+			dp->rb_pos = 0;
+			dp->rb_len = n;
+			dp->rb_word += n;
+			if (dp->rb_word == dp->rb_words_per_row) {
+				dp->rb_word = 0;
+				dp->rb_row++;
+			}
+		}
+		if (!rdc_port_rdata_space(hw))
+			return false;
+		pushed = rdc_port_rdata_push(hw, dp->rb_buf + dp->rb_pos,
+					     dp->rb_len - dp->rb_pos);
+		if (!pushed)
+			return false;
+		dp->rb_pos += pushed;
+	}
+}
+
+/* Exact argument count of the fixed-length commands; -1: variable. */
+static int fixed_len(uint32_t op)
+{
+	switch (op) {
+	case RDC_OP_FENCE:
+	case RDC_OP_WAIT_LINE:
+	case RDC_OP_SET_FG:
+	case RDC_OP_SET_BG:
+	case RDC_OP_SET_ROP:
+	case RDC_OP_PIXEL:
+		return 1;
+	case RDC_OP_WAIT_VBLANK:
+		return 0;
+	case RDC_OP_REG_WRITE:
+	case RDC_OP_SET_CLIP:
+	case RDC_OP_LINE:
+	case RDC_OP_RECT:
+	case RDC_OP_FILL_RECT:
+	case RDC_OP_CIRCLE:
+	case RDC_OP_FILL_CIRCLE:
+	case RDC_OP_ELLIPSE:
+	case RDC_OP_FILL_ELLIPSE:
+	case RDC_OP_READBACK:
+		return 2;
+	case RDC_OP_BLIT:
+		return 3;
+	case RDC_OP_SET_DST:
+	case RDC_OP_SET_SRC:
+		return 4;
+	default:
+		return -1;
+	}
+}
+
+/*
+ * Execute the fetched command in dp->cmd.  Returns RDC_ERR_NONE, or the
+ * error to report.  Commands that suspend set dp->phase and return
+ * RDC_ERR_NONE; the caller then leaves them in progress.
+ */
+static uint32_t cmd_exec(struct rdc_dp *dp)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint32_t hdr = dp->cmd[0], op = RDC_CMD_OP(hdr), fl = RDC_CMD_FL(hdr);
+	uint32_t len = RDC_CMD_LEN(hdr), i, fg, bg;
+	const uint32_t *a = dp->cmd + 1;
+	int fixed = fixed_len(op);
+	struct rdc_surface s;
+	uint64_t t, need;
+	bool tr = fl & RDC_MONO_TRANSPARENT;
+
+	if (fixed >= 0 && len != (uint32_t)fixed)
+		return RDC_ERR_LENGTH;
+
+	switch (op) {
+	case RDC_OP_NOP:
+		return RDC_ERR_NONE;
+	case RDC_OP_FENCE:
+		rdc_port_fence(hw, a[0]);
+		return RDC_ERR_NONE;
+	case RDC_OP_WAIT_VBLANK:
+	case RDC_OP_WAIT_LINE:
+		t = op == RDC_OP_WAIT_VBLANK ? rdc_port_next_vblank(hw) :
+					       rdc_port_next_line(hw, a[0]);
+		if (t != RDC_NEVER && t > hw->now) {
+			dp->wait_time = t;
+			dp->phase = RDC_DP_WAIT;
+		}
+		return RDC_ERR_NONE;
+	case RDC_OP_REG_WRITE:
+		return rdc_port_reg_write(hw, a[0], a[1]) ? RDC_ERR_REG :
+							     RDC_ERR_NONE;
+	case RDC_OP_LOAD_CLUT:
+		if (len < 2 || len > RDC_CLUT_ENTRIES + 1)
+			return RDC_ERR_LENGTH;
+		if ((uint64_t)a[0] + (len - 1) > RDC_CLUT_ENTRIES)
+			return RDC_ERR_RANGE;
+		for (i = 1; i < len; i++)
+			rdc_port_clut_write(hw, a[0] + i - 1, a[i]);
+		return RDC_ERR_NONE;
+
+	case RDC_OP_SET_FG:
+		dp->st.fg = a[0];
+		return RDC_ERR_NONE;
+	case RDC_OP_SET_BG:
+		dp->st.bg = a[0];
+		return RDC_ERR_NONE;
+	case RDC_OP_SET_ROP:
+		if (a[0] >= RDC_ROP_COUNT)
+			return RDC_ERR_ARG;
+		dp->st.rop = a[0];
+		return RDC_ERR_NONE;
+	case RDC_OP_SET_CLIP:
+		/* x1/y1 are exclusive, so they may reach RDC_COORD_MAX + 1. */
+		if (RDC_X(a[0]) < RDC_COORD_MIN || RDC_Y(a[0]) < RDC_COORD_MIN ||
+		    RDC_X(a[1]) > RDC_COORD_MAX + 1 ||
+		    RDC_Y(a[1]) > RDC_COORD_MAX + 1 ||
+		    RDC_X(a[0]) > RDC_X(a[1]) || RDC_Y(a[0]) > RDC_Y(a[1]))
+			return RDC_ERR_RANGE;
+		dp->st.clip.x0 = RDC_X(a[0]);
+		dp->st.clip.y0 = RDC_Y(a[0]);
+		dp->st.clip.x1 = RDC_X(a[1]);
+		dp->st.clip.y1 = RDC_Y(a[1]);
+		return RDC_ERR_NONE;
+	case RDC_OP_SET_DST:
+	case RDC_OP_SET_SRC:
+		if (!surface_parse(hw, a, &s))
+			return RDC_ERR_SURFACE;
+		if (op == RDC_OP_SET_DST)
+			dp->st.dst = s;
+		else
+			dp->st.src = s;
+		return RDC_ERR_NONE;
+	default:
+		break;
+	}
+
+	/* Primitives: colours are masked to the destination format. */
+	if (op < RDC_OP_PIXEL || op > RDC_OP_TEXT ||
+	    (op > RDC_OP_FILL_ELLIPSE && op < RDC_OP_BLIT))
+		return RDC_ERR_OPCODE;
+	dp_mask_colours(dp, &fg, &bg);
+	{
+		/* Draw with the masked colours, keep the registers intact. */
+		uint32_t save_fg = dp->st.fg, save_bg = dp->st.bg;
+		uint32_t err = RDC_ERR_NONE;
+
+		dp->st.fg = fg;
+		dp->st.bg = bg;
+		switch (op) {
+		case RDC_OP_PIXEL:
+			if (!xy_ok(a[0]))
+				err = RDC_ERR_RANGE;
+			else
+				rdc_dp_pixel(dp, RDC_X(a[0]), RDC_Y(a[0]));
+			break;
+		case RDC_OP_LINE:
+			if (!xy_ok(a[0]) || !xy_ok(a[1]))
+				err = RDC_ERR_RANGE;
+			else
+				rdc_dp_line(dp, RDC_X(a[0]), RDC_Y(a[0]),
+					    RDC_X(a[1]), RDC_Y(a[1]), false,
+					    false);
+			break;
+		case RDC_OP_POLYLINE:
+			if (len < 2) {
+				err = RDC_ERR_LENGTH;
+				break;
+			}
+			for (i = 0; i < len; i++)
+				if (!xy_ok(a[i]))
+					err = RDC_ERR_RANGE;
+			if (err)
+				break;
+			/*
+			 * Each segment after the first leaves out its first
+			 * pixel (the previous segment's last); a closed
+			 * polyline also leaves out the closing pixel.
+			 */
+			for (i = 0; i + 1 < len; i++)
+				rdc_dp_line(dp, RDC_X(a[i]), RDC_Y(a[i]),
+					    RDC_X(a[i + 1]), RDC_Y(a[i + 1]),
+					    i > 0,
+					    len > 2 && i + 2 == len &&
+						    a[i + 1] == a[0]);
+			break;
+		case RDC_OP_RECT:
+		case RDC_OP_FILL_RECT:
+			if (!xy_ok(a[0]) || !wh_ok(a[1]))
+				err = RDC_ERR_RANGE;
+			else
+				rdc_dp_rect(dp, RDC_X(a[0]), RDC_Y(a[0]),
+					    RDC_W(a[1]), RDC_H(a[1]),
+					    op == RDC_OP_FILL_RECT);
+			break;
+		case RDC_OP_CIRCLE:
+		case RDC_OP_FILL_CIRCLE:
+			if (!xy_ok(a[0]) || a[1] > RDC_SIZE_MAX)
+				err = RDC_ERR_RANGE;
+			else
+				rdc_dp_circle(dp, RDC_X(a[0]), RDC_Y(a[0]),
+					      a[1], op == RDC_OP_FILL_CIRCLE);
+			break;
+		case RDC_OP_ELLIPSE:
+		case RDC_OP_FILL_ELLIPSE:
+			if (!xy_ok(a[0]) || !wh_ok(a[1]))
+				err = RDC_ERR_RANGE;
+			else
+				rdc_dp_ellipse(dp, RDC_X(a[0]), RDC_Y(a[0]),
+					       RDC_W(a[1]), RDC_H(a[1]),
+					       op == RDC_OP_FILL_ELLIPSE);
+			break;
+		case RDC_OP_BLIT:
+			if (!xy_ok(a[0]) || !xy_ok(a[1]) || !wh_ok(a[2]))
+				err = RDC_ERR_RANGE;
+			else if (rdc_format_bpp(dp->st.src.format) !=
+				 rdc_format_bpp(dp->st.dst.format))
+				err = RDC_ERR_ARG;
+			else
+				rdc_dp_blit(dp, RDC_X(a[0]), RDC_Y(a[0]),
+					    RDC_X(a[1]), RDC_Y(a[1]),
+					    RDC_W(a[2]), RDC_H(a[2]));
+			break;
+		case RDC_OP_HOST_BLIT:
+		case RDC_OP_MONO:
+			if (len < 2) {
+				err = RDC_ERR_LENGTH;
+				break;
+			}
+			if (!xy_ok(a[0]) || !wh_ok(a[1])) {
+				err = RDC_ERR_RANGE;
+				break;
+			}
+			need = 2 + (uint64_t)RDC_H(a[1]) *
+					   rdc_dp_words_per_row(
+						   op == RDC_OP_MONO ?
+							   RDC_FMT_I1 :
+							   dp->st.dst.format,
+						   RDC_W(a[1]));
+			if (need != len) {
+				err = RDC_ERR_LENGTH;
+				break;
+			}
+			if (op == RDC_OP_MONO)
+				rdc_dp_mono(dp, RDC_X(a[0]), RDC_Y(a[0]),
+					    RDC_W(a[1]), RDC_H(a[1]), a + 2,
+					    tr);
+			else
+				rdc_dp_host_blit(dp, RDC_X(a[0]), RDC_Y(a[0]),
+						 RDC_W(a[1]), RDC_H(a[1]),
+						 a + 2);
+			break;
+		case RDC_OP_READBACK:
+			if (!xy_ok(a[0]) || !wh_ok(a[1])) {
+				err = RDC_ERR_RANGE;
+				break;
+			}
+			dp->rb_row = 0;
+			dp->rb_word = 0;
+			dp->rb_pos = 0;
+			dp->rb_len = 0;
+			dp->rb_words_per_row = RDC_H(a[1]) ?
+				rdc_dp_words_per_row(dp->st.src.format,
+						     RDC_W(a[1])) : 0;
+			if (!readback_step(dp))
+				dp->phase = RDC_DP_READBACK;
+			break;
+		case RDC_OP_TEXT:
+			if (len < 2) {
+				err = RDC_ERR_LENGTH;
+				break;
+			}
+			if (!xy_ok(a[0])) {
+				err = RDC_ERR_RANGE;
+				break;
+			}
+			if (2 + ((uint64_t)a[1] + 3) / 4 != len) {
+				err = RDC_ERR_LENGTH;
+				break;
+			}
+			rdc_dp_text(dp, RDC_X(a[0]), RDC_Y(a[0]), a[1], a + 2,
+				    tr);
+			break;
+		default:
+			err = RDC_ERR_OPCODE;
+			break;
+		}
+		dp->st.fg = save_fg;
+		dp->st.bg = save_bg;
+		return err;
+	}
+}
+
+static void dp_status_update(struct rdc_dp *dp)
+{
+	static const uint32_t bits[] = {
+		[RDC_DP_IDLE] = 0,
+		[RDC_DP_FETCH] = RDC_STATUS_DP_BUSY | RDC_STATUS_DP_WAIT,
+		[RDC_DP_READBACK] = RDC_STATUS_DP_BUSY | RDC_STATUS_DP_WAIT,
+		[RDC_DP_WAIT] = RDC_STATUS_DP_BUSY | RDC_STATUS_DP_WAIT,
+		[RDC_DP_HALTED] = RDC_STATUS_DP_HALTED,
+	};
+
+	dp->hw->dp_status = bits[dp->phase];
+}
+
+/* Start a command from the first source with words waiting. */
+static bool cmd_begin(struct rdc_dp *dp)
+{
+	struct rdc_hw *hw = dp->hw;
+	unsigned int src;
+
+	if (rdc_port_cmd_avail(hw, RDC_SRC_FIFO))
+		src = RDC_SRC_FIFO;
+	else if (rdc_port_cmd_avail(hw, RDC_SRC_RING))
+		src = RDC_SRC_RING;
+	else
+		return false;
+	dp->cmd_start = hw->now;
+	if (rdc_port_cmd_pop(hw, src, dp->cmd, 1) != 1)
+		return false;
+	dp->src = src;
+	dp->cmd_have = 1;
+	if (RDC_CMD_LEN(dp->cmd[0]) > RDC_CMD_MAX_ARGS) {
+		/* Too long to buffer: drop the header alone. */
+		rdc_port_compute(hw, RDC_T_DECODE);
+		cmd_fail(dp, RDC_ERR_LENGTH);
+		return true;
+	}
+	dp->cmd_len = 1 + RDC_CMD_LEN(dp->cmd[0]);
+	dp->phase = RDC_DP_FETCH;
+	return true;
+}
+
+static uint64_t dp_run(void *opaque, uint64_t until)
+{
+	struct rdc_dp *dp = opaque;
+	struct rdc_hw *hw = dp->hw;
+	uint64_t ret = RDC_NEVER;
+
+	if (!(hw->control & RDC_CONTROL_DP_EN)) {
+		dp_status_update(dp);
+		return RDC_NEVER;
+	}
+	for (;;) {
+		uint32_t err, got;
+
+		switch (dp->phase) {
+		case RDC_DP_HALTED:
+			if (!hw->dp_resume)
+				goto out;
+			hw->dp_resume = 0;
+			dp->phase = RDC_DP_IDLE;
+			continue;
+		case RDC_DP_IDLE:
+			if (hw->now >= until) {
+				if (rdc_port_cmd_avail(hw, RDC_SRC_FIFO) ||
+				    rdc_port_cmd_avail(hw, RDC_SRC_RING))
+					ret = hw->now;
+				goto out;
+			}
+			if (!cmd_begin(dp))
+				goto out;
+			continue;
+		case RDC_DP_FETCH:
+			got = rdc_port_cmd_pop(hw, dp->src,
+					       dp->cmd + dp->cmd_have,
+					       dp->cmd_len - dp->cmd_have);
+			dp->cmd_have += got;
+			if (dp->cmd_have < dp->cmd_len)
+				goto out; /* the host owes us words */
+			rdc_port_compute(hw, RDC_T_DECODE);
+			dp->phase = RDC_DP_IDLE;
+			err = cmd_exec(dp);
+			if (err)
+				cmd_fail(dp, err);
+			else if (dp->phase == RDC_DP_IDLE)
+				cmd_done(dp);
+			continue;
+		case RDC_DP_WAIT:
+			if (dp->wait_time > until) {
+				ret = dp->wait_time;
+				goto out;
+			}
+			if (dp->wait_time > hw->now)
+				rdc_port_idle_until(hw, dp->wait_time);
+			cmd_done(dp);
+			continue;
+		case RDC_DP_READBACK:
+			if (!readback_step(dp))
+				goto out;
+			cmd_done(dp);
+			continue;
+		}
+	}
+out:
+	dp_status_update(dp);
+	return ret;
+}
+
+static const struct rdc_dp_ops rdc_dp_ops = {
+	.reset = dp_reset,
+	.run = dp_run,
+};
+
+void rdc_dp_init(struct rdc_dp *dp, struct rdc_hw *hw)
+{
+	rdc_memset(dp, 0, sizeof(*dp));
+	dp->hw = hw;
+	dp_reset(dp);
+	rdc_hw_set_dp(hw, &rdc_dp_ops, dp);
+}

@@ -1,0 +1,755 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The display processor's rasterisers.  Every primitive is decomposed into
+ * horizontal spans (one rdc_port_span call each) or vertical runs (one
+ * rdc_port_column call each), so the bus model charges whole bursts and
+ * the cost of a command follows from the work it does.  ref.c holds the
+ * plain per-pixel versions these are tested against.
+ */
+#include "dp_int.h"
+
+struct rdc_rect rdc_dp_eff_clip(const struct rdc_dp *dp)
+{
+	struct rdc_rect r = dp->st.clip;
+
+	r.x0 = RDC_MAX(r.x0, 0);
+	r.y0 = RDC_MAX(r.y0, 0);
+	r.x1 = RDC_MIN(r.x1, (int32_t)dp->st.dst.width);
+	r.y1 = RDC_MIN(r.y1, (int32_t)dp->st.dst.height);
+	if (r.x1 < r.x0)
+		r.x1 = r.x0;
+	if (r.y1 < r.y0)
+		r.y1 = r.y0;
+	return r;
+}
+
+static uint32_t fmt_mask(unsigned int bpp)
+{
+	return bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
+}
+
+/* Pixel at bit offset `bit` from p (sub-byte pixels MSB first). */
+static inline uint32_t px_ld(const uint8_t *p, unsigned int bpp, uint32_t bit)
+{
+	switch (bpp) {
+	case 32:
+		return rdc_ld32(p + bit / 8);
+	case 24:
+		return rdc_ld24(p + bit / 8);
+	case 16:
+		return rdc_ld16(p + bit / 8);
+	case 8:
+		return p[bit / 8];
+	default:
+		return (p[bit / 8] >> (8 - bpp - (bit & 7))) & fmt_mask(bpp);
+	}
+}
+
+static inline void px_st(uint8_t *p, unsigned int bpp, uint32_t bit,
+			 uint32_t v)
+{
+	unsigned int sh;
+	uint32_t m;
+
+	switch (bpp) {
+	case 32:
+		rdc_st32(p + bit / 8, v);
+		break;
+	case 24:
+		rdc_st24(p + bit / 8, v);
+		break;
+	case 16:
+		rdc_st16(p + bit / 8, v);
+		break;
+	case 8:
+		p[bit / 8] = (uint8_t)v;
+		break;
+	default:
+		sh = 8 - bpp - (bit & 7);
+		m = fmt_mask(bpp) << sh;
+		p[bit / 8] = (uint8_t)((p[bit / 8] & ~m) | ((v << sh) & m));
+		break;
+	}
+}
+
+/* Byte k of a little-endian word stream. */
+static inline uint32_t word_byte(const uint32_t *w, uint32_t k)
+{
+	return (w[k / 4] >> (8 * (k % 4))) & 0xff;
+}
+
+/* Pixel at bit offset `bit` of a row of host words (same packing as VRAM). */
+static uint32_t word_px(const uint32_t *w, unsigned int bpp, uint32_t bit)
+{
+	uint32_t k = bit / 8, v = 0;
+	unsigned int i;
+
+	if (bpp < 8)
+		return (word_byte(w, k) >> (8 - bpp - (bit & 7))) &
+		       fmt_mask(bpp);
+	for (i = 0; i < bpp / 8; i++)
+		v |= word_byte(w, k + i) << (8 * i);
+	return v;
+}
+
+/*
+ * Write pixels [xa, xa + n) of destination row y, already inside the
+ * effective clip.  vals == NULL: every pixel gets `solid`; on != NULL:
+ * only pixels with on[i] set are written (transparent mono and text),
+ * which the bus sees as a read-modify-write of the whole span.
+ */
+static void span_emit(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
+		      uint32_t solid, const uint32_t *vals, const uint8_t *on)
+{
+	struct rdc_hw *hw = dp->hw;
+	const struct rdc_surface *s = &dp->st.dst;
+	unsigned int bpp = rdc_format_bpp(s->format);
+	unsigned int rop = dp->st.rop;
+	uint32_t mask = fmt_mask(bpp);
+	uint64_t bit0 = (uint64_t)xa * bpp, bit1 = bit0 + (uint64_t)n * bpp;
+	uint32_t addr, len, first, i, cnt = n;
+	unsigned int kind;
+	uint8_t *p;
+
+	if (!n)
+		return;
+	addr = s->base + (uint32_t)y * s->stride + (uint32_t)(bit0 / 8);
+	len = (uint32_t)((bit1 + 7) / 8 - bit0 / 8);
+	if (on || rdc_rop_reads_dst(rop)) {
+		kind = RDC_BUS_RMW;
+	} else {
+		kind = RDC_BUS_WRITE;
+		if (bit0 & 7)
+			kind |= RDC_BUS_HEAD_PARTIAL;
+		if (bit1 & 7)
+			kind |= RDC_BUS_TAIL_PARTIAL;
+	}
+	p = rdc_port_span(hw, addr, len, kind);
+	if (!p)
+		return;
+	first = (uint32_t)(bit0 & 7);
+
+	if (!vals && !on && !rdc_rop_reads_dst(rop)) {
+		/* Solid fill that ignores the destination: memset speed. */
+		uint32_t v = rdc_rop_apply(rop, solid, 0) & mask;
+
+		if (bpp == 32) {
+			if ((v & 0xff) * 0x01010101u == v) {
+				rdc_memset(p, (int)(v & 0xff), (size_t)n * 4);
+			} else {
+				for (i = 0; i < n; i++)
+					rdc_st32(p + 4 * i, v);
+			}
+			hw->perf.pixels += n;
+			return;
+		}
+		if (bpp == 8) {
+			rdc_memset(p, (int)v, n);
+			hw->perf.pixels += n;
+			return;
+		}
+	}
+
+	for (i = 0; i < n; i++) {
+		uint32_t bit = first + i * bpp, s_px, d_px;
+
+		if (on && !on[i]) {
+			cnt--;
+			continue;
+		}
+		s_px = vals ? vals[i] : solid;
+		d_px = rdc_rop_reads_dst(rop) ? px_ld(p, bpp, bit) : 0;
+		px_st(p, bpp, bit, rdc_rop_apply(rop, s_px, d_px) & mask);
+	}
+	hw->perf.pixels += cnt;
+}
+
+/* Solid span [xa, xb] of row y, clipped here. */
+static void span_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t y,
+		      int32_t xa, int32_t xb, uint32_t colour)
+{
+	if (y < c->y0 || y >= c->y1)
+		return;
+	xa = RDC_MAX(xa, c->x0);
+	xb = RDC_MIN(xb, c->x1 - 1);
+	if (xa > xb)
+		return;
+	span_emit(dp, y, xa, (uint32_t)(xb - xa + 1), colour, NULL, NULL);
+}
+
+/* Solid vertical run [ya, yb] of column x, clipped here. */
+static void col_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t x,
+		     int32_t ya, int32_t yb, uint32_t colour)
+{
+	struct rdc_hw *hw = dp->hw;
+	const struct rdc_surface *s = &dp->st.dst;
+	unsigned int bpp = rdc_format_bpp(s->format);
+	unsigned int rop = dp->st.rop;
+	uint32_t mask = fmt_mask(bpp), bit, count, k;
+	unsigned int kind;
+	uint8_t *p;
+
+	if (x < c->x0 || x >= c->x1)
+		return;
+	ya = RDC_MAX(ya, c->y0);
+	yb = RDC_MIN(yb, c->y1 - 1);
+	if (ya > yb)
+		return;
+	if (ya == yb) {
+		span_emit(dp, ya, x, 1, colour, NULL, NULL);
+		return;
+	}
+	count = (uint32_t)(yb - ya + 1);
+	bit = (uint32_t)x * bpp;
+	if (rdc_rop_reads_dst(rop))
+		kind = RDC_BUS_RMW;
+	else if (bpp < 8)
+		kind = RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL |
+		       RDC_BUS_TAIL_PARTIAL;
+	else
+		kind = RDC_BUS_WRITE;
+	p = rdc_port_column(hw, s->base + (uint32_t)ya * s->stride + bit / 8,
+			    s->stride, count, (bpp + 7) / 8, kind);
+	if (!p)
+		return;
+	for (k = 0; k < count; k++) {
+		uint8_t *q = p + (size_t)k * s->stride;
+		uint32_t d = rdc_rop_reads_dst(rop) ? px_ld(q, bpp, bit & 7) : 0;
+
+		px_st(q, bpp, bit & 7, rdc_rop_apply(rop, colour, d) & mask);
+	}
+	hw->perf.pixels += count;
+}
+
+void rdc_dp_pixel(struct rdc_dp *dp, int32_t x, int32_t y)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+
+	span_fill(dp, &c, y, x, x, dp->st.fg);
+}
+
+static int64_t div_ceil(int64_t a, int64_t b)
+{
+	/* b > 0 */
+	return a >= 0 ? (a + b - 1) / b : -((-a) / b);
+}
+
+static int64_t div_floor(int64_t a, int64_t b)
+{
+	return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+/*
+ * Midpoint line.  The endpoints are first put in a canonical order (the
+ * major axis increasing), so line(a, b) and line(b, a) are the same pixels.
+ * Step i along the major axis (0..n) lands on minor offset
+ *   j(i) = floor((2 * i * m + n) / (2 * n)),   n = |major delta|, m = |minor|
+ * which is Bresenham's choice with ties rounded away from the start.  The
+ * clip turns into a range of i solved in closed form, and the decision
+ * variable (the remainder of that division) is started at the first
+ * visible i, so a clipped line has exactly the unclipped line's pixels.
+ */
+void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
+		 int32_t y1, bool skip_first, bool skip_last)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	int32_t adx = x1 > x0 ? x1 - x0 : x0 - x1;
+	int32_t ady = y1 > y0 ? y1 - y0 : y0 - y1;
+	bool xmajor = adx >= ady && adx > 0;
+	int32_t u0, v0, sv, cu0, cu1, cv0, cv1;
+	int64_t n, m, ilo, ihi, jlo, jhi, i, j, rem, run;
+	uint32_t fg = dp->st.fg;
+
+	if (c.x0 >= c.x1 || c.y0 >= c.y1)
+		return;
+	if ((xmajor && x1 < x0) || (!xmajor && y1 < y0)) {
+		int32_t t;
+		bool b;
+
+		t = x0, x0 = x1, x1 = t;
+		t = y0, y0 = y1, y1 = t;
+		b = skip_first, skip_first = skip_last, skip_last = b;
+	}
+	if (xmajor) {
+		u0 = x0, v0 = y0, n = adx, m = ady, sv = y1 < y0 ? -1 : 1;
+		cu0 = c.x0, cu1 = c.x1 - 1, cv0 = c.y0, cv1 = c.y1 - 1;
+	} else {
+		u0 = y0, v0 = x0, n = ady, m = adx, sv = x1 < x0 ? -1 : 1;
+		cu0 = c.y0, cu1 = c.y1 - 1, cv0 = c.x0, cv1 = c.x1 - 1;
+	}
+
+	ilo = RDC_MAX((int64_t)(skip_first ? 1 : 0), (int64_t)cu0 - u0);
+	ihi = RDC_MIN(n - (skip_last ? 1 : 0), (int64_t)cu1 - u0);
+	if (sv > 0) {
+		jlo = (int64_t)cv0 - v0;
+		jhi = (int64_t)cv1 - v0;
+	} else {
+		jlo = (int64_t)v0 - cv1;
+		jhi = (int64_t)v0 - cv0;
+	}
+	if (jhi < 0 || jlo > m)
+		return;
+	if (n > 0 && m > 0) {
+		/* j(i) >= jlo  <=>  i >= ceil((2n*jlo - n) / 2m) */
+		if (jlo > 0)
+			ilo = RDC_MAX(ilo, div_ceil(2 * n * jlo - n, 2 * m));
+		/* j(i) <= jhi  <=>  2im < 2n(jhi + 1) - n */
+		ihi = RDC_MIN(ihi,
+			      div_ceil(2 * n * (jhi + 1) - n, 2 * m) - 1);
+	} else if (jlo > 0) {
+		return; /* j is always 0 */
+	}
+	if (ilo > ihi)
+		return;
+
+	if (n > 0) {
+		j = div_floor(2 * ilo * m + n, 2 * n);
+		rem = 2 * ilo * m + n - j * 2 * n;
+	} else {
+		j = 0;
+		rem = 0;
+	}
+	run = ilo;
+	for (i = ilo; i <= ihi; i++) {
+		int64_t nj = j;
+
+		if (i < ihi) {
+			rem += 2 * m;
+			if (rem >= 2 * n) {
+				rem -= 2 * n;
+				nj++;
+			}
+		}
+		if (nj != j || i == ihi) {
+			int32_t v = v0 + sv * (int32_t)j;
+
+			if (xmajor)
+				span_fill(dp, &c, v, u0 + (int32_t)run,
+					  u0 + (int32_t)i, fg);
+			else
+				col_fill(dp, &c, v, u0 + (int32_t)run,
+					 u0 + (int32_t)i, fg);
+			run = i + 1;
+			j = nj;
+		}
+	}
+}
+
+void rdc_dp_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+		 uint32_t h, bool fill)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	int32_t xr = x + (int32_t)w - 1, yb = y + (int32_t)h - 1, r;
+	uint32_t fg = dp->st.fg;
+
+	if (!w || !h)
+		return;
+	if (fill) {
+		for (r = RDC_MAX(y, c.y0); r <= RDC_MIN(yb, c.y1 - 1); r++)
+			span_fill(dp, &c, r, x, xr, fg);
+		return;
+	}
+	/* Each pixel once: full top and bottom rows, sides between them. */
+	span_fill(dp, &c, y, x, xr, fg);
+	if (h > 1)
+		span_fill(dp, &c, yb, x, xr, fg);
+	if (h > 2) {
+		col_fill(dp, &c, x, y + 1, yb - 1, fg);
+		if (w > 1)
+			col_fill(dp, &c, xr, y + 1, yb - 1, fg);
+	}
+}
+
+/*
+ * Row t of a shape symmetric about (cx, cy) covers |dx| in [amin, amax]:
+ * draw it at rows cy - t and cy + t (once for t = 0), mirrored left and
+ * right (one span when it crosses the centre).  A fill covers [-amax, amax].
+ */
+static void quad_row(struct rdc_dp *dp, const struct rdc_rect *c, int32_t cx,
+		     int32_t cy, uint32_t t, uint32_t amin, uint32_t amax,
+		     bool fill)
+{
+	int32_t rows[2] = { cy - (int32_t)t, cy + (int32_t)t };
+	int32_t lo = (int32_t)amin, hi = (int32_t)amax;
+	unsigned int k, nrows = t ? 2 : 1;
+	uint32_t fg = dp->st.fg;
+
+	for (k = 0; k < nrows; k++) {
+		if (fill || amin == 0) {
+			span_fill(dp, c, rows[k], cx - hi, cx + hi, fg);
+		} else {
+			span_fill(dp, c, rows[k], cx - hi, cx - lo, fg);
+			span_fill(dp, c, rows[k], cx + lo, cx + hi, fg);
+		}
+	}
+}
+
+/*
+ * Midpoint circle over the octant 0 <= a <= b from (0, r).  Every row is
+ * emitted once: the octant's own rows b (runs of a sharing b) and the
+ * mirrored rows a (one pixel at b each), except the diagonal point a == b,
+ * which its row b already holds.
+ */
+void rdc_dp_circle(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t r,
+		   bool fill)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	int64_t d = 1 - (int64_t)r;
+	uint32_t a = 0, b = r, ga = 0;
+
+	if (c.x0 >= c.x1 || c.y0 >= c.y1)
+		return;
+	if (r == 0) {
+		span_fill(dp, &c, cy, cx, cx, dp->st.fg);
+		return;
+	}
+	/* Nothing of a circle whose bounding box misses the clip shows. */
+	if (cx + (int32_t)r < c.x0 || cx - (int32_t)r >= c.x1 ||
+	    cy + (int32_t)r < c.y0 || cy - (int32_t)r >= c.y1)
+		return;
+	while (a <= b) {
+		uint32_t na = a + 1, nb = b;
+
+		if (a < b)
+			quad_row(dp, &c, cx, cy, a, b, b, fill);
+		if (d < 0) {
+			d += 2 * (int64_t)a + 3;
+		} else {
+			d += 2 * ((int64_t)a - b) + 5;
+			nb--;
+		}
+		if (nb != b || na > nb) {
+			quad_row(dp, &c, cx, cy, b, ga, a, fill);
+			ga = na;
+		}
+		a = na;
+		b = nb;
+	}
+}
+
+struct quad_acc {
+	struct rdc_dp *dp;
+	const struct rdc_rect *c;
+	int32_t cx, cy;
+	bool fill, open;
+	uint32_t t, amin, amax;
+};
+
+/* Collect consecutive quadrant points into rows (b never increases). */
+static void quad_pt(struct quad_acc *q, uint32_t a, uint32_t b)
+{
+	if (q->open && q->t == b) {
+		q->amax = a;
+		return;
+	}
+	if (q->open)
+		quad_row(q->dp, q->c, q->cx, q->cy, q->t, q->amin, q->amax,
+			 q->fill);
+	q->open = true;
+	q->t = b;
+	q->amin = a;
+	q->amax = a;
+}
+
+/*
+ * Midpoint ellipse (two regions), with the decision variables scaled by 4
+ * so they stay exact integers; 64 bits hold them for radii up to
+ * RDC_SIZE_MAX.  A zero radius degenerates to a line.
+ */
+void rdc_dp_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
+		    uint32_t ry, bool fill)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	int64_t rx2 = (int64_t)rx * rx, ry2 = (int64_t)ry * ry;
+	int64_t x = 0, y = ry, px = 0, py = 2 * rx2 * ry, p;
+	struct quad_acc q = { dp, &c, cx, cy, fill, false, 0, 0, 0 };
+
+	if (c.x0 >= c.x1 || c.y0 >= c.y1)
+		return;
+	if (ry == 0) {
+		span_fill(dp, &c, cy, cx - (int32_t)rx, cx + (int32_t)rx,
+			  dp->st.fg);
+		return;
+	}
+	if (rx == 0) {
+		col_fill(dp, &c, cx, cy - (int32_t)ry, cy + (int32_t)ry,
+			 dp->st.fg);
+		return;
+	}
+	if (cx + (int32_t)rx < c.x0 || cx - (int32_t)rx >= c.x1 ||
+	    cy + (int32_t)ry < c.y0 || cy - (int32_t)ry >= c.y1)
+		return;
+
+	quad_pt(&q, 0, ry);
+	p = 4 * ry2 - 4 * rx2 * ry + rx2;
+	while (px < py) {
+		x++;
+		px += 2 * ry2;
+		if (p < 0) {
+			p += 4 * (ry2 + px);
+		} else {
+			y--;
+			py -= 2 * rx2;
+			p += 4 * (ry2 + px - py);
+		}
+		quad_pt(&q, (uint32_t)x, (uint32_t)y);
+	}
+	p = ry2 * (2 * x + 1) * (2 * x + 1) + 4 * rx2 * (y - 1) * (y - 1) -
+	    4 * rx2 * ry2;
+	while (y > 0) {
+		y--;
+		py -= 2 * rx2;
+		if (p > 0) {
+			p += 4 * (rx2 - py);
+		} else {
+			x++;
+			px += 2 * ry2;
+			p += 4 * (rx2 - py + px);
+		}
+		quad_pt(&q, (uint32_t)x, (uint32_t)y);
+	}
+	quad_row(dp, &c, cx, cy, q.t, q.amin, q.amax, fill);
+}
+
+/*
+ * Clip a source rectangle against [0, sw) x [0, sh) and its destination
+ * against the clip, shrinking both together.  False if nothing remains.
+ */
+static bool clip_pair(const struct rdc_rect *c, int64_t sw, int64_t sh,
+		      int64_t *sx, int64_t *sy, int64_t *dx, int64_t *dy,
+		      int64_t *w, int64_t *h)
+{
+	int64_t d;
+
+	if (*sx < 0)
+		*dx -= *sx, *w += *sx, *sx = 0;
+	if (*sy < 0)
+		*dy -= *sy, *h += *sy, *sy = 0;
+	*w = RDC_MIN(*w, sw - *sx);
+	*h = RDC_MIN(*h, sh - *sy);
+	if (*dx < c->x0)
+		d = c->x0 - *dx, *sx += d, *dx += d, *w -= d;
+	if (*dy < c->y0)
+		d = c->y0 - *dy, *sy += d, *dy += d, *h -= d;
+	*w = RDC_MIN(*w, c->x1 - *dx);
+	*h = RDC_MIN(*h, c->y1 - *dy);
+	return *w > 0 && *h > 0;
+}
+
+/*
+ * Screen-to-screen copy.  Pieces of at most RDC_DP_CHUNK pixels are read
+ * whole before they are written, and visited in descending address order
+ * when the destination lies above the source (ascending otherwise), as
+ * memmove does, so any overlap of the two rectangles copies correctly.
+ */
+void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
+		 int32_t dy32, uint32_t w32, uint32_t h32)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	const struct rdc_surface *ss = &dp->st.src, *ds = &dp->st.dst;
+	unsigned int bpp = rdc_format_bpp(ss->format);
+	int64_t sx = sx32, sy = sy32, dx = dx32, dy = dy32, w = w32, h = h32;
+	uint64_t sbit, dbit;
+	bool back;
+	int64_t k;
+
+	if (!clip_pair(&c, ss->width, ss->height, &sx, &sy, &dx, &dy, &w, &h))
+		return;
+	sbit = (uint64_t)ss->base * 8 + (uint64_t)sy * ss->stride * 8 +
+	       (uint64_t)sx * bpp;
+	dbit = (uint64_t)ds->base * 8 + (uint64_t)dy * ds->stride * 8 +
+	       (uint64_t)dx * bpp;
+	back = dbit > sbit;
+
+	for (k = 0; k < h; k++) {
+		int64_t row = back ? h - 1 - k : k;
+		int64_t done;
+
+		for (done = 0; done < w; done += RDC_DP_CHUNK) {
+			uint32_t n = (uint32_t)RDC_MIN(w - done,
+						       (int64_t)RDC_DP_CHUNK);
+			int64_t off = back ? w - done - n : done;
+			uint64_t b0 = (uint64_t)(sx + off) * bpp;
+			uint64_t b1 = b0 + (uint64_t)n * bpp;
+			uint32_t addr = ss->base +
+					(uint32_t)(sy + row) * ss->stride +
+					(uint32_t)(b0 / 8);
+			const uint8_t *p;
+			uint32_t i;
+
+			p = rdc_port_span(dp->hw, addr,
+					  (uint32_t)((b1 + 7) / 8 - b0 / 8),
+					  RDC_BUS_READ);
+			if (!p)
+				continue;
+			for (i = 0; i < n; i++)
+				dp->px[i] = px_ld(p, bpp,
+						  (uint32_t)(b0 & 7) + i * bpp);
+			span_emit(dp, (int32_t)(dy + row), (int32_t)(dx + off),
+				  n, 0, dp->px, NULL);
+		}
+	}
+}
+
+/*
+ * Rows of pixels produced from command data: get(x) gives pixel x of row r
+ * (relative to the rectangle) and whether it is drawn.  Shared by
+ * HOST_BLIT, MONO and TEXT.
+ */
+struct row_src {
+	unsigned int kind;
+	const uint32_t *data;
+	uint32_t wpr; /* words a data row */
+	unsigned int bpp;
+	uint32_t fg, bg;
+	bool transparent;
+};
+
+enum { SRC_HOST, SRC_MONO, SRC_TEXT };
+
+static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+		      uint32_t h, const struct row_src *rs)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	int64_t xa = RDC_MAX((int64_t)x, (int64_t)c.x0);
+	int64_t xb = RDC_MIN((int64_t)x + w, (int64_t)c.x1); /* exclusive */
+	int64_t ya = RDC_MAX((int64_t)y, (int64_t)c.y0);
+	int64_t yb = RDC_MIN((int64_t)y + h, (int64_t)c.y1);
+	int64_t row, col;
+
+	for (row = ya; row < yb; row++) {
+		uint32_t r = (uint32_t)(row - y);
+
+		for (col = xa; col < xb; col += RDC_DP_CHUNK) {
+			uint32_t n = (uint32_t)RDC_MIN(xb - col,
+						       (int64_t)RDC_DP_CHUNK);
+			uint32_t i;
+
+			for (i = 0; i < n; i++) {
+				uint32_t bx = (uint32_t)(col - x) + i;
+				uint32_t bit;
+				bool set;
+
+				switch (rs->kind) {
+				case SRC_HOST:
+					dp->px[i] = word_px(rs->data +
+							    (size_t)r * rs->wpr,
+							    rs->bpp,
+							    bx * rs->bpp);
+					dp->on[i] = 1;
+					continue;
+				case SRC_MONO:
+					bit = word_byte(rs->data +
+							(size_t)r * rs->wpr,
+							bx / 8);
+					break;
+				default: /* SRC_TEXT: r is the glyph row */
+					bit = rdc_font8x16[word_byte(rs->data,
+								     bx / 8) *
+								   16 + r];
+					break;
+				}
+				set = (bit >> (7 - bx % 8)) & 1;
+				dp->px[i] = set ? rs->fg : rs->bg;
+				dp->on[i] = set;
+			}
+			span_emit(dp, (int32_t)row, (int32_t)col, n, 0, dp->px,
+				  rs->transparent ? dp->on : NULL);
+		}
+	}
+}
+
+void rdc_dp_host_blit(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+		      uint32_t h, const uint32_t *data)
+{
+	unsigned int fmt = dp->st.dst.format;
+	struct row_src rs = {
+		.kind = SRC_HOST, .data = data,
+		.wpr = rdc_dp_words_per_row(fmt, w),
+		.bpp = rdc_format_bpp(fmt),
+	};
+
+	rows_draw(dp, x, y, w, h, &rs);
+}
+
+void rdc_dp_mono(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+		 uint32_t h, const uint32_t *data, bool transparent)
+{
+	struct row_src rs = {
+		.kind = SRC_MONO, .data = data,
+		.wpr = rdc_dp_words_per_row(RDC_FMT_I1, w),
+		.fg = dp->st.fg, .bg = dp->st.bg, .transparent = transparent,
+	};
+
+	rows_draw(dp, x, y, w, h, &rs);
+}
+
+#define RDC_GLYPH_W 8
+#define RDC_GLYPH_H 16
+
+/* One span per glyph row across the whole string. */
+void rdc_dp_text(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t count,
+		 const uint32_t *chars, bool transparent)
+{
+	struct row_src rs = {
+		.kind = SRC_TEXT, .data = chars,
+		.fg = dp->st.fg, .bg = dp->st.bg, .transparent = transparent,
+	};
+
+	rows_draw(dp, x, y, count * RDC_GLYPH_W, RDC_GLYPH_H, &rs);
+}
+
+void rdc_dp_readback_pack(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+			  uint32_t row, uint32_t word, uint32_t n,
+			  uint32_t *out)
+{
+	const struct rdc_surface *s = &dp->st.src;
+	unsigned int bpp = rdc_format_bpp(s->format);
+	uint64_t byte0 = (uint64_t)word * 4, byte1 = byte0 + (uint64_t)n * 4;
+	int64_t k0 = (int64_t)(byte0 * 8 / bpp);
+	int64_t k1 = RDC_MIN((int64_t)((byte1 * 8 + bpp - 1) / bpp), (int64_t)w);
+	int64_t sy = (int64_t)y + row, va, vb, k;
+	const uint8_t *p = NULL;
+	uint64_t pbit0 = 0;
+
+	rdc_memset(out, 0, (size_t)n * 4);
+	if (sy < 0 || sy >= s->height)
+		return;
+	/* the part of pixels [k0, k1) that lies on the surface */
+	va = RDC_MAX(k0, -(int64_t)x);
+	vb = RDC_MIN(k1, (int64_t)s->width - x);
+	if (va >= vb)
+		return;
+	pbit0 = (uint64_t)(x + va) * bpp;
+	p = rdc_port_span(dp->hw,
+			  s->base + (uint32_t)sy * s->stride +
+				  (uint32_t)(pbit0 / 8),
+			  (uint32_t)(((uint64_t)(x + vb) * bpp + 7) / 8 -
+				     pbit0 / 8),
+			  RDC_BUS_READ);
+	if (!p)
+		return;
+	for (k = va; k < vb; k++) {
+		uint32_t v = px_ld(p, bpp,
+				   (uint32_t)((pbit0 & 7) + (k - va) * bpp));
+		uint64_t kb = (uint64_t)k * bpp;
+		unsigned int i;
+
+		if (bpp < 8) {
+			uint64_t byte = kb / 8 - byte0;
+
+			out[byte / 4] |= (v << (8 - bpp - (kb & 7)))
+					 << (8 * (byte % 4));
+			continue;
+		}
+		for (i = 0; i < bpp / 8; i++) {
+			uint64_t byte = kb / 8 + i;
+
+			if (byte < byte0 || byte >= byte1)
+				continue;
+			byte -= byte0;
+			out[byte / 4] |= ((v >> (8 * i)) & 0xff)
+					 << (8 * (byte % 4));
+		}
+	}
+}

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Command queues: the FIFO register port, the ring buffer in VRAM, and the
+ * readback FIFO the DP fills for the host.
+ */
+#include "hw_priv.h"
+
+#define WORD_BYTES 4u
+#define RING_MIN_BYTES 16u
+
+void rdc_cmdq_reset(struct rdc_hw *hw)
+{
+	hw->fifo_head = 0;
+	hw->fifo_count = 0;
+	hw->fifo_lowwater = RDC_FIFO_LOWWATER_RESET;
+	hw->rdata_head = 0;
+	hw->rdata_count = 0;
+	hw->ring_base = 0;
+	hw->ring_size = 0;
+	hw->ring_head = 0;
+	hw->ring_tail = 0;
+	hw->ring_err = 0;
+	hw->fence = 0;
+}
+
+void rdc_fifo_push(struct rdc_hw *hw, uint32_t word)
+{
+	if (hw->fifo_count >= RDC_FIFO_DEPTH) {
+		rdc_port_error(hw, RDC_ERR_FIFO_OVERFLOW, RDC_REG_FIFO_DATA);
+		return;
+	}
+	hw->fifo[(hw->fifo_head + hw->fifo_count) % RDC_FIFO_DEPTH] = word;
+	hw->fifo_count++;
+}
+
+uint32_t rdc_rdata_pop(struct rdc_hw *hw)
+{
+	uint32_t w;
+
+	if (!hw->rdata_count)
+		return 0;
+	w = hw->rdata[hw->rdata_head];
+	hw->rdata_head = (hw->rdata_head + 1) % RDC_RDATA_DEPTH;
+	hw->rdata_count--;
+	return w;
+}
+
+static bool ring_ok(const struct rdc_hw *hw)
+{
+	return hw->ring_base % WORD_BYTES == 0 &&
+	       hw->ring_size % WORD_BYTES == 0 &&
+	       hw->ring_size >= RING_MIN_BYTES &&
+	       (uint64_t)hw->ring_base + hw->ring_size <= hw->vram_size &&
+	       hw->ring_head < hw->ring_size &&
+	       hw->ring_head % WORD_BYTES == 0 &&
+	       hw->ring_tail < hw->ring_size &&
+	       hw->ring_tail % WORD_BYTES == 0;
+}
+
+/*
+ * Called when the ring is enabled or reprogrammed while enabled: bad
+ * programming stops the ring (no words) until a valid reprogramming.
+ */
+void rdc_ring_validate(struct rdc_hw *hw, uint32_t reg)
+{
+	if (!(hw->control & RDC_CONTROL_RING_EN)) {
+		hw->ring_err = 0;
+		return;
+	}
+	hw->ring_err = !ring_ok(hw);
+	if (hw->ring_err)
+		rdc_port_error(hw, RDC_ERR_RING, reg);
+}
+
+uint32_t rdc_ring_words(const struct rdc_hw *hw)
+{
+	if (!(hw->control & RDC_CONTROL_RING_EN) || hw->ring_err ||
+	    !ring_ok(hw))
+		return 0;
+	return (hw->ring_tail + hw->ring_size - hw->ring_head) %
+	       hw->ring_size / WORD_BYTES;
+}
+
+uint32_t rdc_port_cmd_avail(struct rdc_hw *hw, unsigned int src)
+{
+	if (src == RDC_SRC_FIFO)
+		return hw->fifo_count;
+	if (src == RDC_SRC_RING)
+		return rdc_ring_words(hw);
+	return 0;
+}
+
+static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
+{
+	uint32_t before = hw->fifo_count, i;
+
+	n = RDC_MIN(n, hw->fifo_count);
+	if (!n)
+		return 0;
+	rdc_port_compute(hw, n * RDC_T_FIFO_WORD);
+	for (i = 0; i < n; i++) {
+		dst[i] = hw->fifo[hw->fifo_head];
+		hw->fifo_head = (hw->fifo_head + 1) % RDC_FIFO_DEPTH;
+	}
+	hw->fifo_count -= n;
+	if (before > hw->fifo_lowwater && hw->fifo_count <= hw->fifo_lowwater)
+		rdc_port_irq(hw, RDC_IRQ_FIFO_LOW);
+	return n;
+}
+
+static uint32_t ring_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
+{
+	uint32_t got = 0;
+
+	n = RDC_MIN(n, rdc_ring_words(hw));
+	while (got < n) {
+		uint32_t words = RDC_MIN(n - got, (hw->ring_size -
+						   hw->ring_head) / WORD_BYTES);
+		uint32_t addr = hw->ring_base + hw->ring_head, i;
+
+		rdc_bus_charge(hw, addr, words * WORD_BYTES, RDC_BUS_READ);
+		for (i = 0; i < words; i++)
+			dst[got + i] = rdc_ld32(hw->vram + addr + i * WORD_BYTES);
+		got += words;
+		hw->ring_head = (hw->ring_head + words * WORD_BYTES) %
+				hw->ring_size;
+	}
+	return got;
+}
+
+uint32_t rdc_port_cmd_pop(struct rdc_hw *hw, unsigned int src, uint32_t *dst,
+			  uint32_t n)
+{
+	if (src == RDC_SRC_FIFO)
+		return fifo_pop(hw, dst, n);
+	if (src == RDC_SRC_RING)
+		return ring_pop(hw, dst, n);
+	return 0;
+}
+
+uint32_t rdc_port_rdata_space(struct rdc_hw *hw)
+{
+	return RDC_RDATA_DEPTH - hw->rdata_count;
+}
+
+uint32_t rdc_port_rdata_push(struct rdc_hw *hw, const uint32_t *w, uint32_t n)
+{
+	uint32_t i;
+
+	n = RDC_MIN(n, RDC_RDATA_DEPTH - hw->rdata_count);
+	for (i = 0; i < n; i++) {
+		hw->rdata[(hw->rdata_head + hw->rdata_count) %
+			  RDC_RDATA_DEPTH] = w[i];
+		hw->rdata_count++;
+	}
+	return n;
+}

@@ -1,0 +1,427 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * CRTC: mode presets and validation, the line-by-line scanout state machine
+ * (fetch, vblank latch, line compare), pixel format conversion through the
+ * CLUT and the hardware cursor overlay.
+ *
+ * Scanout is lazy: nothing happens until someone looks (a register read,
+ * a DP bus access, the run loop), and then every event whose time has come
+ * is processed in order.  Every path that touches VRAM or observes the
+ * CRTC catches up first, so the result is the same as a beam that runs
+ * continuously.
+ */
+#include "hw_priv.h"
+
+#define HZ_PER_KHZ 1000u
+#define RGB_MASK 0x00ffffffu
+#define CURSOR_ROW_BYTES (RDC_CURSOR_SIZE / 4) /* 2 bpp */
+
+static const struct rdc_timing rdc_presets[RDC_PRESET_COUNT] = {
+	[RDC_PRESET_320x200_70] = { 400, 320, 328, 376, 225, 200, 206, 207,
+				    6300, 0 },
+	[RDC_PRESET_640x480_60] = { 800, 640, 656, 752, 525, 480, 490, 492,
+				    25175, 0 },
+	[RDC_PRESET_800x600_60] = { 1056, 800, 840, 968, 628, 600, 601, 605,
+				    40000,
+				    RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
+	[RDC_PRESET_1024x768_60] = { 1344, 1024, 1048, 1184, 806, 768, 771,
+				     777, 65000, 0 },
+	[RDC_PRESET_1280x720_60] = { 1650, 1280, 1390, 1430, 750, 720, 725,
+				     730, 74250,
+				     RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
+	[RDC_PRESET_1920x1080_60] = { 2200, 1920, 2008, 2052, 1125, 1080, 1084,
+				      1089, 148500,
+				      RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
+};
+
+int rdc_preset_timing(uint32_t preset, struct rdc_timing *t)
+{
+	if (preset >= RDC_PRESET_COUNT)
+		return -1;
+	*t = rdc_presets[preset];
+	return 0;
+}
+
+/* Core cycles from the start of a frame to the start of line n. */
+static uint64_t line_offset(const struct rdc_hw *hw,
+			    const struct rdc_timing *tm, uint32_t n)
+{
+	return (uint64_t)n * tm->h_total * hw->core_hz /
+	       ((uint64_t)tm->pixclk_khz * HZ_PER_KHZ);
+}
+
+static bool timing_axis_ok(uint32_t disp, uint32_t ss, uint32_t se,
+			   uint32_t total)
+{
+	return disp >= 1 && disp <= RDC_CRTC_MAX_DISPLAY && disp <= ss &&
+	       ss <= se && se <= total && total <= RDC_CRTC_MAX_TOTAL;
+}
+
+static bool timing_ok(const struct rdc_hw *hw, const struct rdc_timing *tm)
+{
+	if (!timing_axis_ok(tm->h_display, tm->h_sync_start, tm->h_sync_end,
+			    tm->h_total) ||
+	    !timing_axis_ok(tm->v_display, tm->v_sync_start, tm->v_sync_end,
+			    tm->v_total))
+		return false;
+	if (tm->v_display >= tm->v_total) /* no vertical blanking */
+		return false;
+	if (tm->pixclk_khz < RDC_PIXCLK_MIN_KHZ ||
+	    tm->pixclk_khz > RDC_PIXCLK_MAX_KHZ)
+		return false;
+	if (line_offset(hw, tm, 1) < 1) /* a line shorter than a core cycle */
+		return false;
+	return (uint64_t)tm->h_display * tm->v_display <= hw->frame_cap &&
+	       hw->frame[0] && hw->frame[1];
+}
+
+static bool timing_same(const struct rdc_timing *a, const struct rdc_timing *b)
+{
+	return a->h_total == b->h_total && a->h_display == b->h_display &&
+	       a->h_sync_start == b->h_sync_start &&
+	       a->h_sync_end == b->h_sync_end && a->v_total == b->v_total &&
+	       a->v_display == b->v_display &&
+	       a->v_sync_start == b->v_sync_start &&
+	       a->v_sync_end == b->v_sync_end &&
+	       a->pixclk_khz == b->pixclk_khz && a->flags == b->flags;
+}
+
+/*
+ * Copy the shadows to the working set.  At vblank a new timing waits for
+ * the next frame start (the blank lines of this frame keep the old one);
+ * when scanout starts it goes in force at once.
+ */
+static void crtc_latch(struct rdc_hw *hw, bool at_vblank)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	if (c->shadow_dirty || !c->mode_valid) {
+		const struct rdc_timing *in_force =
+			c->mode_pending ? &c->pending : &c->cur;
+
+		if (!timing_ok(hw, &c->shadow)) {
+			rdc_port_error(hw, RDC_ERR_MODE, RDC_REG_H_TOTAL);
+		} else if (!c->mode_valid || !at_vblank) {
+			c->cur = c->shadow;
+			c->mode_valid = 1;
+			c->mode_pending = 0;
+		} else if (!timing_same(in_force, &c->shadow)) {
+			c->pending = c->shadow;
+			c->mode_pending = !timing_same(&c->cur, &c->shadow);
+		}
+		if (c->fb_format < RDC_FMT_COUNT)
+			c->cur_format = c->fb_format;
+		else
+			rdc_port_error(hw, RDC_ERR_MODE, RDC_REG_FB_FORMAT);
+		c->shadow_dirty = 0;
+	}
+	c->cur_base = c->fb_base;
+	c->cur_stride = c->fb_stride;
+	if ((uint64_t)c->cursor_base + RDC_CURSOR_BYTES <= hw->vram_size)
+		rdc_memcpy(c->cursor_img, hw->vram + c->cursor_base,
+			   RDC_CURSOR_BYTES);
+	else
+		rdc_memset(c->cursor_img, 0, RDC_CURSOR_BYTES);
+	rdc_clut_latch(hw);
+}
+
+/* VRAM range of active line n; false if it leaves VRAM (scans black). */
+static bool line_range(const struct rdc_hw *hw, const struct rdc_timing *tm,
+		       uint32_t n, uint64_t *addr, uint32_t *bytes)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+
+	*bytes = rdc_format_row_bytes(c->cur_format, tm->h_display);
+	*addr = c->cur_base + (uint64_t)n * c->cur_stride;
+	return *addr + *bytes <= hw->vram_size;
+}
+
+int rdc_crtc_next_fetches(const struct rdc_hw *hw)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	const struct rdc_timing *tm = &c->cur;
+	uint32_t n = c->next_line, bytes;
+	uint64_t addr;
+
+	if (!c->running)
+		return 0;
+	if (n >= tm->v_total) { /* line 0 of the next frame */
+		n = 0;
+		if (c->mode_pending)
+			tm = &c->pending;
+	}
+	return n < tm->v_display && line_range(hw, tm, n, &addr, &bytes);
+}
+
+static void convert_line(const struct rdc_hw *hw, uint32_t *out,
+			 const uint8_t *src, uint32_t w, uint32_t fmt)
+{
+	const uint32_t *clut = hw->clut;
+	uint32_t x, v, r, g, b;
+
+	switch (fmt) {
+	case RDC_FMT_I1:
+	case RDC_FMT_I2:
+	case RDC_FMT_I4: {
+		uint32_t bpp = rdc_format_bpp(fmt);
+		uint32_t mask = (1u << bpp) - 1;
+		uint32_t per_byte = 8 / bpp;
+
+		for (x = 0; x < w; x++) {
+			uint32_t shift = 8 - bpp * (x % per_byte + 1);
+
+			out[x] = clut[(src[x / per_byte] >> shift) & mask];
+		}
+		break;
+	}
+	case RDC_FMT_I8:
+		for (x = 0; x < w; x++)
+			out[x] = clut[src[x]];
+		break;
+	case RDC_FMT_RGB565:
+		for (x = 0; x < w; x++) {
+			v = rdc_ld16(src + 2 * x);
+			r = (v >> 11) & 0x1f;
+			g = (v >> 5) & 0x3f;
+			b = v & 0x1f;
+			out[x] = ((r << 3 | r >> 2) << 16) |
+				 ((g << 2 | g >> 4) << 8) | (b << 3 | b >> 2);
+		}
+		break;
+	case RDC_FMT_RGB888:
+		for (x = 0; x < w; x++)
+			out[x] = rdc_ld24(src + 3 * x);
+		break;
+	case RDC_FMT_XRGB8888:
+		for (x = 0; x < w; x++)
+			out[x] = rdc_ld32(src + 4 * x) & RGB_MASK;
+		break;
+	default:
+		rdc_memset(out, 0, (size_t)w * sizeof(*out));
+		break;
+	}
+}
+
+static void cursor_line(const struct rdc_hw *hw, uint32_t *out, uint32_t n,
+			uint32_t w)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	int32_t cx = (int16_t)(c->cursor_pos & 0xffff);
+	int32_t cy = (int16_t)(c->cursor_pos >> 16);
+	int32_t dy = (int32_t)n - cy;
+	const uint8_t *row;
+	int32_t i;
+
+	if (dy < 0 || dy >= RDC_CURSOR_SIZE)
+		return;
+	row = c->cursor_img + dy * CURSOR_ROW_BYTES;
+	for (i = 0; i < RDC_CURSOR_SIZE; i++) {
+		int32_t x = cx + i;
+		uint32_t v;
+
+		if (x < 0 || x >= (int32_t)w)
+			continue;
+		v = (row[i / 4] >> (6 - 2 * (i % 4))) & 3;
+		if (v == 1)
+			out[x] = c->cursor_fg & RGB_MASK;
+		else if (v == 2)
+			out[x] = c->cursor_bg & RGB_MASK;
+		else if (v == 3)
+			out[x] ^= RGB_MASK;
+	}
+}
+
+/* Start of active line n: the CRTC reads it and converts it at once. */
+static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t w = c->cur.h_display, bytes;
+	uint32_t *out = hw->frame[hw->frame_back] + (size_t)n * w;
+	uint64_t addr;
+
+	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
+		uint64_t start = RDC_MAX(when, c->fetch_end);
+
+		c->fetch_end = start + rdc_bus_read_cost(&hw->bus.open_row,
+							 addr, bytes);
+		convert_line(hw, out, hw->vram + addr, w, c->cur_format);
+	} else {
+		rdc_memset(out, 0, (size_t)w * sizeof(*out));
+	}
+	if (hw->control & RDC_CONTROL_CURSOR_EN)
+		cursor_line(hw, out, n, w);
+}
+
+static void crtc_vblank(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t w = c->cur.h_display, h = c->cur.v_display;
+	uint64_t number = c->frame_count;
+
+	c->in_vblank = 1;
+	rdc_port_irq(hw, RDC_IRQ_VBLANK);
+	hw->frame_back ^= 1;
+	hw->front_w = w;
+	hw->front_h = h;
+	hw->have_frame = 1;
+	c->frame_count++;
+	crtc_latch(hw, true);
+	if (hw->frame_fn)
+		hw->frame_fn(hw->frame_ctx, hw->frame[hw->frame_back ^ 1], w, h,
+			     number);
+}
+
+void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	while (c->running && c->next_line_time <= t) {
+		uint32_t n = c->next_line;
+		uint64_t when = c->next_line_time;
+
+		if (n >= c->cur.v_total) {
+			c->frame_start += c->frame_cycles;
+			if (c->mode_pending) {
+				c->cur = c->pending;
+				c->mode_pending = 0;
+				c->frame_cycles = line_offset(hw, &c->cur,
+							      c->cur.v_total);
+			}
+			n = 0;
+		}
+		if (n == 0)
+			c->in_vblank = 0;
+		if (n < c->cur.v_display)
+			crtc_fetch(hw, n, when);
+		else if (n == c->cur.v_display)
+			crtc_vblank(hw);
+		if (n == c->line_compare)
+			rdc_port_irq(hw, RDC_IRQ_LINE);
+		c->next_line = n + 1;
+		c->next_line_time = c->frame_start +
+				    line_offset(hw, &c->cur, n + 1);
+	}
+}
+
+void rdc_crtc_start(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	if (c->mode_pending) {
+		c->cur = c->pending;
+		c->mode_pending = 0;
+	}
+	crtc_latch(hw, false);
+	c->running = c->mode_valid;
+	c->in_vblank = 0;
+	c->next_line = 0;
+	if (!c->running) {
+		c->next_line_time = RDC_NEVER;
+		return;
+	}
+	c->frame_start = hw->now;
+	c->frame_cycles = line_offset(hw, &c->cur, c->cur.v_total);
+	c->next_line_time = hw->now;
+}
+
+void rdc_crtc_stop(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	c->running = 0;
+	c->in_vblank = 0;
+	c->next_line_time = RDC_NEVER;
+}
+
+void rdc_crtc_reset(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	rdc_memset(c, 0, sizeof(*c));
+	c->preset = RDC_PRESET_640x480_60;
+	c->shadow = rdc_presets[c->preset];
+	c->fb_format = RDC_FMT_XRGB8888;
+	c->fb_stride = rdc_format_row_bytes(c->fb_format, c->shadow.h_display);
+	c->line_compare = RDC_LINE_COMPARE_RESET;
+	c->cursor_fg = RDC_CURSOR_FG_RESET;
+	c->cursor_bg = RDC_CURSOR_BG_RESET;
+	c->next_line_time = RDC_NEVER;
+	c->shadow_dirty = 1;
+}
+
+/* Beam at hw->now; scanout must have caught up. */
+static void crtc_beam(struct rdc_hw *hw, uint32_t *x, uint32_t *y)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t line;
+	uint64_t px;
+
+	if (!c->running || !c->next_line) {
+		*x = 0;
+		*y = 0;
+		return;
+	}
+	line = c->next_line - 1;
+	px = (hw->now - c->frame_start - line_offset(hw, &c->cur, line)) *
+	     c->cur.pixclk_khz * HZ_PER_KHZ / hw->core_hz;
+	*x = (uint32_t)RDC_MIN(px, (uint64_t)c->cur.h_total - 1);
+	*y = line;
+}
+
+void rdc_hw_beam(struct rdc_hw *hw, uint32_t *x, uint32_t *y)
+{
+	rdc_crtc_catch_up(hw, hw->now);
+	crtc_beam(hw, x, y);
+}
+
+uint32_t rdc_crtc_status(struct rdc_hw *hw)
+{
+	uint32_t s = 0, x, y;
+
+	rdc_hw_beam(hw, &x, &y);
+	if (hw->crtc.in_vblank)
+		s |= RDC_STATUS_VBLANK;
+	if (hw->crtc.running && x >= hw->crtc.cur.h_display)
+		s |= RDC_STATUS_HBLANK;
+	return s;
+}
+
+uint64_t rdc_port_next_vblank(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	const struct rdc_timing *tm;
+
+	rdc_crtc_catch_up(hw, hw->now);
+	if (!c->running)
+		return RDC_NEVER;
+	if (c->next_line <= c->cur.v_display)
+		return c->frame_start +
+		       line_offset(hw, &c->cur, c->cur.v_display);
+	tm = c->mode_pending ? &c->pending : &c->cur;
+	return c->frame_start + c->frame_cycles +
+	       line_offset(hw, tm, tm->v_display);
+}
+
+uint64_t rdc_port_next_line(struct rdc_hw *hw, uint32_t line)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	const struct rdc_timing *tm;
+
+	rdc_crtc_catch_up(hw, hw->now);
+	if (!c->running)
+		return RDC_NEVER;
+	if (line < c->cur.v_total && line >= c->next_line)
+		return c->frame_start + line_offset(hw, &c->cur, line);
+	tm = c->mode_pending ? &c->pending : &c->cur;
+	if (line >= tm->v_total)
+		return RDC_NEVER;
+	return c->frame_start + c->frame_cycles + line_offset(hw, tm, line);
+}
+
+void rdc_port_idle_until(struct rdc_hw *hw, uint64_t t)
+{
+	if (t <= hw->now)
+		return;
+	rdc_crtc_catch_up(hw, t);
+	hw->now = t;
+}

@@ -1,0 +1,475 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The RDC-1 chip: creation and reset, the register file, interrupts, pins,
+ * host VRAM access and the run loop.
+ */
+#include "hw_priv.h"
+
+#define HZ_PER_KHZ 1000u
+#define RGB_MASK 0x00ffffffu
+#define CONTROL_RW_BITS                                                   \
+	(RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_RING_EN | \
+	 RDC_CONTROL_HALT_ON_ERR | RDC_CONTROL_CLUT_LATCH |                 \
+	 RDC_CONTROL_CURSOR_EN)
+#define PINS_IN (RDC_PIN_RESET_N | RDC_PIN_BL_EN)
+
+void rdc_hw_init(struct rdc_hw *hw, const struct rdc_hw_config *cfg,
+		 uint8_t *vram, uint32_t *frame0, uint32_t *frame1,
+		 uint32_t frame_cap)
+{
+	rdc_memset(hw, 0, sizeof(*hw));
+	hw->vram = vram;
+	hw->vram_size = vram ? cfg->vram_size : 0;
+	hw->core_hz = cfg->core_hz ? cfg->core_hz : RDC_DEFAULT_CORE_HZ;
+	hw->frame[0] = frame0;
+	hw->frame[1] = frame1;
+	hw->frame_cap = frame0 && frame1 ? frame_cap : 0;
+	if (hw->frame_cap) {
+		rdc_memset(frame0, 0, (size_t)frame_cap * sizeof(*frame0));
+		rdc_memset(frame1, 0, (size_t)frame_cap * sizeof(*frame1));
+	}
+	/* out of power-on reset, backlight on */
+	hw->pins_in = PINS_IN;
+	rdc_hw_reset(hw);
+}
+
+void rdc_hw_reset(struct rdc_hw *hw)
+{
+	hw->control = RDC_CONTROL_RESET_VALUE;
+	hw->irq_status = 0;
+	hw->irq_enable = 0;
+	hw->err_code = RDC_ERR_NONE;
+	hw->err_info = 0;
+	hw->perf_hi_snap = 0;
+	hw->perf_snap_reg = 0;
+	hw->bus.open_row = ~0u;
+	rdc_memset(&hw->perf, 0, sizeof(hw->perf));
+	rdc_clut_reset(hw);
+	rdc_cmdq_reset(hw);
+	hw->dp_status = 0;
+	hw->dp_resume = 0;
+	hw->have_frame = 0;
+	hw->front_w = 0;
+	hw->front_h = 0;
+	hw->frame_back = 0;
+	rdc_crtc_reset(hw);
+	if (!hw->in_reset)
+		rdc_crtc_start(hw);
+	if (hw->dp_ops && hw->dp_ops->reset)
+		hw->dp_ops->reset(hw->dp);
+}
+
+/* ---- interrupts and errors ---------------------------------------------- */
+
+void rdc_port_irq(struct rdc_hw *hw, uint32_t bits)
+{
+	hw->irq_status |= bits & RDC_IRQ_ALL;
+}
+
+void rdc_port_error(struct rdc_hw *hw, uint32_t code, uint32_t info)
+{
+	hw->err_code = code;
+	hw->err_info = info;
+	rdc_port_irq(hw, RDC_IRQ_ERROR);
+}
+
+void rdc_port_fence(struct rdc_hw *hw, uint32_t value)
+{
+	hw->fence = value;
+	rdc_port_irq(hw, RDC_IRQ_FENCE);
+}
+
+static bool irq_line(const struct rdc_hw *hw)
+{
+	return (hw->irq_status & hw->irq_enable) != 0;
+}
+
+/* ---- pins --------------------------------------------------------------- */
+
+uint32_t rdc_hw_pins(struct rdc_hw *hw)
+{
+	uint32_t p = hw->pins_in;
+
+	rdc_crtc_catch_up(hw, hw->now);
+	if (hw->crtc.in_vblank)
+		p |= RDC_PIN_TE;
+	if (irq_line(hw))
+		p |= RDC_PIN_IRQ;
+	return p;
+}
+
+/*
+ * RESET_N low resets the chip and holds it there: registers read their
+ * reset values, writes are ignored, neither the DP nor scanout runs.
+ * Releasing it resets again, so the first frame starts at the release.
+ */
+void rdc_hw_set_pins(struct rdc_hw *hw, uint32_t pins_in)
+{
+	bool hold = !(pins_in & RDC_PIN_RESET_N);
+
+	rdc_crtc_catch_up(hw, hw->now);
+	hw->pins_in = pins_in & PINS_IN;
+	if (hold != (bool)hw->in_reset) {
+		hw->in_reset = hold;
+		rdc_hw_reset(hw);
+	}
+}
+
+/* ---- connections -------------------------------------------------------- */
+
+void rdc_hw_set_dp(struct rdc_hw *hw, const struct rdc_dp_ops *ops, void *dp)
+{
+	hw->dp_ops = ops;
+	hw->dp = dp;
+}
+
+void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx)
+{
+	hw->frame_fn = fn;
+	hw->frame_ctx = ctx;
+}
+
+const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
+			     uint32_t *height)
+{
+	if (!hw->have_frame) {
+		if (width)
+			*width = 0;
+		if (height)
+			*height = 0;
+		return NULL;
+	}
+	if (width)
+		*width = hw->front_w;
+	if (height)
+		*height = hw->front_h;
+	return hw->frame[hw->frame_back ^ 1];
+}
+
+/* ---- host VRAM aperture ------------------------------------------------- */
+
+int rdc_hw_vram_read(struct rdc_hw *hw, uint32_t addr, void *buf, uint32_t len)
+{
+	if ((uint64_t)addr + len > hw->vram_size)
+		return -1;
+	rdc_memcpy(buf, hw->vram + addr, len);
+	return 0;
+}
+
+int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
+		      uint32_t len)
+{
+	if ((uint64_t)addr + len > hw->vram_size)
+		return -1;
+	/* lines the beam has passed keep the old bytes */
+	rdc_crtc_catch_up(hw, hw->now);
+	rdc_memcpy(hw->vram + addr, buf, len);
+	return 0;
+}
+
+/* ---- run loop ----------------------------------------------------------- */
+
+void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t)
+{
+	rdc_crtc_catch_up(hw, hw->now);
+	while (hw->now < t) {
+		uint64_t wake = RDC_NEVER;
+
+		if (hw->in_reset) {
+			hw->now = t;
+			return;
+		}
+		if (hw->dp_ops && hw->dp_ops->run &&
+		    (hw->control & RDC_CONTROL_DP_EN))
+			wake = hw->dp_ops->run(hw->dp, t);
+		if (hw->now >= t)
+			break;
+		/*
+		 * A DP that claims it can progress now but returned anyway
+		 * gets one idle cycle, so a confused DP cannot hang the host.
+		 */
+		if (wake <= hw->now)
+			wake = hw->now + 1;
+		rdc_port_idle_until(hw, RDC_MIN(wake, t));
+	}
+	rdc_crtc_catch_up(hw, hw->now);
+}
+
+/* ---- register file ------------------------------------------------------ */
+
+static uint32_t snap_lo(struct rdc_hw *hw, uint64_t v, uint32_t hi_reg)
+{
+	hw->perf_hi_snap = (uint32_t)(v >> 32);
+	hw->perf_snap_reg = hi_reg;
+	return (uint32_t)v;
+}
+
+/* A HI read after its LO returns the snapshot, else the live value. */
+static uint32_t snap_hi(struct rdc_hw *hw, uint64_t v, uint32_t hi_reg)
+{
+	if (hw->perf_snap_reg == hi_reg) {
+		hw->perf_snap_reg = 0;
+		return hw->perf_hi_snap;
+	}
+	return (uint32_t)(v >> 32);
+}
+
+static uint32_t timing_reg(struct rdc_timing *t, uint32_t reg, uint32_t **p)
+{
+	switch (reg) {
+	case RDC_REG_H_TOTAL: *p = &t->h_total; break;
+	case RDC_REG_H_DISPLAY: *p = &t->h_display; break;
+	case RDC_REG_H_SYNC_START: *p = &t->h_sync_start; break;
+	case RDC_REG_H_SYNC_END: *p = &t->h_sync_end; break;
+	case RDC_REG_V_TOTAL: *p = &t->v_total; break;
+	case RDC_REG_V_DISPLAY: *p = &t->v_display; break;
+	case RDC_REG_V_SYNC_START: *p = &t->v_sync_start; break;
+	case RDC_REG_V_SYNC_END: *p = &t->v_sync_end; break;
+	case RDC_REG_PIXCLK_KHZ: *p = &t->pixclk_khz; break;
+	case RDC_REG_CRTC_FLAGS: *p = &t->flags; break;
+	default: return 0;
+	}
+	return 1;
+}
+
+static uint32_t status_reg(struct rdc_hw *hw)
+{
+	uint32_t s = hw->dp_status &
+		     (RDC_STATUS_DP_BUSY | RDC_STATUS_DP_HALTED |
+		      RDC_STATUS_DP_WAIT);
+
+	if (!hw->fifo_count)
+		s |= RDC_STATUS_FIFO_EMPTY;
+	if (hw->fifo_count >= RDC_FIFO_DEPTH)
+		s |= RDC_STATUS_FIFO_FULL;
+	if (hw->ring_head == hw->ring_tail)
+		s |= RDC_STATUS_RING_EMPTY;
+	s |= rdc_crtc_status(hw);
+	if (irq_line(hw))
+		s |= RDC_STATUS_IRQ;
+	return s;
+}
+
+uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t *p, x, y, v;
+
+	rdc_crtc_catch_up(hw, hw->now);
+	if (timing_reg(&c->shadow, reg, &p))
+		return *p;
+	switch (reg) {
+	case RDC_REG_ID: return RDC_ID_VALUE;
+	case RDC_REG_VERSION: return RDC_VERSION_VALUE;
+	case RDC_REG_VRAM_SIZE: return hw->vram_size;
+	case RDC_REG_CORE_KHZ: return hw->core_hz / HZ_PER_KHZ;
+	case RDC_REG_CONTROL: return hw->control;
+	case RDC_REG_STATUS: return status_reg(hw);
+	case RDC_REG_IRQ_STATUS: return hw->irq_status;
+	case RDC_REG_IRQ_ENABLE: return hw->irq_enable;
+	case RDC_REG_ERR_CODE: return hw->err_code;
+	case RDC_REG_ERR_INFO: return hw->err_info;
+	case RDC_REG_PINS: return rdc_hw_pins(hw);
+	case RDC_REG_FB_BASE: return c->fb_base;
+	case RDC_REG_FB_STRIDE: return c->fb_stride;
+	case RDC_REG_FB_FORMAT: return c->fb_format;
+	case RDC_REG_LINE_COMPARE: return c->line_compare;
+	case RDC_REG_BEAM:
+		rdc_hw_beam(hw, &x, &y);
+		return FIELD_PREP(RDC_BEAM_X, x) | FIELD_PREP(RDC_BEAM_Y, y);
+	case RDC_REG_FRAME_COUNT: return (uint32_t)c->frame_count;
+	case RDC_REG_MODE_PRESET: return c->preset;
+	case RDC_REG_CLUT_INDEX: return hw->clut_index;
+	case RDC_REG_CLUT_DATA:
+		v = hw->clut_shadow[hw->clut_index];
+		hw->clut_index = (hw->clut_index + 1) % RDC_CLUT_ENTRIES;
+		return v;
+	case RDC_REG_CURSOR_BASE: return c->cursor_base;
+	case RDC_REG_CURSOR_POS: return c->cursor_pos;
+	case RDC_REG_CURSOR_FG: return c->cursor_fg;
+	case RDC_REG_CURSOR_BG: return c->cursor_bg;
+	case RDC_REG_FIFO_DATA: return 0;
+	case RDC_REG_FIFO_FREE: return RDC_FIFO_DEPTH - hw->fifo_count;
+	case RDC_REG_FIFO_LOWWATER: return hw->fifo_lowwater;
+	case RDC_REG_RING_BASE: return hw->ring_base;
+	case RDC_REG_RING_SIZE: return hw->ring_size;
+	case RDC_REG_RING_HEAD: return hw->ring_head;
+	case RDC_REG_RING_TAIL: return hw->ring_tail;
+	case RDC_REG_FENCE: return hw->fence;
+	case RDC_REG_RDATA: return rdc_rdata_pop(hw);
+	case RDC_REG_RDATA_COUNT: return hw->rdata_count;
+	case RDC_REG_TIME_LO: return snap_lo(hw, hw->now, RDC_REG_TIME_HI);
+	case RDC_REG_TIME_HI: return snap_hi(hw, hw->now, reg);
+	case RDC_REG_PERF_BUSY_LO:
+		return snap_lo(hw, hw->perf.busy, RDC_REG_PERF_BUSY_HI);
+	case RDC_REG_PERF_BUSY_HI: return snap_hi(hw, hw->perf.busy, reg);
+	case RDC_REG_PERF_STALL_LO:
+		return snap_lo(hw, hw->perf.stall, RDC_REG_PERF_STALL_HI);
+	case RDC_REG_PERF_STALL_HI: return snap_hi(hw, hw->perf.stall, reg);
+	case RDC_REG_PERF_PIXELS_LO:
+		return snap_lo(hw, hw->perf.pixels, RDC_REG_PERF_PIXELS_HI);
+	case RDC_REG_PERF_PIXELS_HI: return snap_hi(hw, hw->perf.pixels, reg);
+	case RDC_REG_PERF_CMDS: return hw->perf.cmds;
+	case RDC_REG_PERF_LAST_CYCLES: return hw->perf.last_cycles;
+	case RDC_REG_PERF_LAST_OPCODE: return hw->perf.last_opcode;
+	case RDC_REG_PERF_CTRL: return 0;
+	default:
+		break;
+	}
+	/* unaligned, outside the window, or a hole in the map */
+	if (!hw->in_reset)
+		rdc_port_error(hw, RDC_ERR_REG, reg);
+	return 0;
+}
+
+static void control_write(struct rdc_hw *hw, uint32_t val)
+{
+	uint32_t old = hw->control;
+
+	if (val & RDC_CONTROL_SOFT_RESET) {
+		rdc_hw_reset(hw);
+		return;
+	}
+	if (val & RDC_CONTROL_RESUME)
+		hw->dp_resume = 1;
+	hw->control = val & CONTROL_RW_BITS;
+	if ((old ^ hw->control) & RDC_CONTROL_SCANOUT_EN) {
+		if (hw->control & RDC_CONTROL_SCANOUT_EN)
+			rdc_crtc_start(hw);
+		else
+			rdc_crtc_stop(hw);
+	}
+	if ((old ^ hw->control) & RDC_CONTROL_RING_EN)
+		rdc_ring_validate(hw, RDC_REG_CONTROL);
+}
+
+static void preset_write(struct rdc_hw *hw, uint32_t val)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	struct rdc_timing t;
+
+	if (rdc_preset_timing(val, &t)) {
+		rdc_port_error(hw, RDC_ERR_MODE, RDC_REG_MODE_PRESET);
+		return;
+	}
+	c->shadow = t;
+	c->preset = val;
+	c->shadow_dirty = 1;
+	if (c->fb_format < RDC_FMT_COUNT)
+		c->fb_stride = (rdc_format_row_bytes(c->fb_format,
+						     t.h_display) + 3) & ~3u;
+}
+
+/* Registers a REG_WRITE command may reach as well as the host. */
+static bool crtc_side_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t *p;
+
+	if (timing_reg(&c->shadow, reg, &p)) {
+		*p = val;
+		c->shadow_dirty = 1;
+		return true;
+	}
+	switch (reg) {
+	case RDC_REG_IRQ_STATUS:
+		hw->irq_status &= ~val;
+		if (val & RDC_IRQ_ERROR) {
+			hw->err_code = RDC_ERR_NONE;
+			hw->err_info = 0;
+		}
+		return true;
+	case RDC_REG_IRQ_ENABLE:
+		hw->irq_enable = val & RDC_IRQ_ALL;
+		return true;
+	case RDC_REG_FB_BASE:
+		c->fb_base = val;
+		return true;
+	case RDC_REG_FB_STRIDE:
+		c->fb_stride = val;
+		return true;
+	case RDC_REG_FB_FORMAT:
+		c->fb_format = val;
+		c->shadow_dirty = 1;
+		return true;
+	case RDC_REG_LINE_COMPARE:
+		c->line_compare = val;
+		return true;
+	case RDC_REG_MODE_PRESET:
+		preset_write(hw, val);
+		return true;
+	case RDC_REG_CLUT_INDEX:
+		hw->clut_index = val % RDC_CLUT_ENTRIES;
+		return true;
+	case RDC_REG_CLUT_DATA:
+		rdc_port_clut_write(hw, hw->clut_index, val);
+		hw->clut_index = (hw->clut_index + 1) % RDC_CLUT_ENTRIES;
+		return true;
+	case RDC_REG_CURSOR_BASE:
+		c->cursor_base = val;
+		return true;
+	case RDC_REG_CURSOR_POS:
+		c->cursor_pos = val;
+		return true;
+	case RDC_REG_CURSOR_FG:
+		c->cursor_fg = val & RGB_MASK;
+		return true;
+	case RDC_REG_CURSOR_BG:
+		c->cursor_bg = val & RGB_MASK;
+		return true;
+	default:
+		return false;
+	}
+}
+
+void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
+{
+	if (hw->in_reset)
+		return;
+	rdc_crtc_catch_up(hw, hw->now);
+	if (crtc_side_write(hw, reg, val))
+		return;
+	switch (reg) {
+	case RDC_REG_CONTROL:
+		control_write(hw, val);
+		return;
+	case RDC_REG_FIFO_DATA:
+		rdc_fifo_push(hw, val);
+		return;
+	case RDC_REG_FIFO_LOWWATER:
+		hw->fifo_lowwater = RDC_MIN(val, RDC_FIFO_DEPTH);
+		return;
+	case RDC_REG_RING_BASE:
+		hw->ring_base = val;
+		rdc_ring_validate(hw, reg);
+		return;
+	case RDC_REG_RING_SIZE:
+		hw->ring_size = val;
+		rdc_ring_validate(hw, reg);
+		return;
+	case RDC_REG_RING_HEAD:
+		if (hw->control & RDC_CONTROL_RING_EN)
+			break; /* the DP owns HEAD while the ring runs */
+		hw->ring_head = val;
+		rdc_ring_validate(hw, reg);
+		return;
+	case RDC_REG_RING_TAIL:
+		hw->ring_tail = val;
+		rdc_ring_validate(hw, reg);
+		return;
+	case RDC_REG_PERF_CTRL:
+		if (val & RDC_PERF_CTRL_CLEAR)
+			rdc_memset(&hw->perf, 0, sizeof(hw->perf));
+		return;
+	default:
+		break;
+	}
+	/* read-only, unaligned, outside the window, or a hole in the map */
+	rdc_port_error(hw, RDC_ERR_REG, reg);
+}
+
+int rdc_port_reg_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
+{
+	rdc_crtc_catch_up(hw, hw->now);
+	return crtc_side_write(hw, reg, val) ? 0 : -1;
+}

@@ -1,0 +1,669 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The command decoder: bad input of every kind (nothing outside the target
+ * touched, ERR_CODE/ERR_INFO/IRQ_STATUS right, skip versus halt), control
+ * commands, the queues (FIFO back-pressure, the VRAM ring, READBACK larger
+ * than RDATA), and exact cycle counts derived from bus.h's formulas.
+ */
+#include "test_dp_common.h"
+
+static const struct rdc_surface scr = {
+	0, 640 * 4, 640, 480, RDC_FMT_XRGB8888
+};
+
+/* ---- bad input ------------------------------------------------------- */
+
+/*
+ * Feed words, expect `err` with the given header in ERR_INFO, and VRAM
+ * exactly as before (guard: the whole of it).
+ */
+static void expect_error(struct tdp *t, const uint32_t *w, unsigned int n,
+			 uint32_t err, uint32_t hdr)
+{
+	uint8_t *keep = malloc(TDP_VRAM_SIZE);
+	unsigned int i;
+
+	assert_non_null(keep);
+	memcpy(keep, t->vram, TDP_VRAM_SIZE);
+	tdp_clear_err(t);
+	for (i = 0; i < n; i++)
+		tdp_push(t, w[i]);
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), err);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_ERR_INFO), hdr);
+	assert_true(rdc_hw_read(&t->hw, RDC_REG_IRQ_STATUS) & RDC_IRQ_ERROR);
+	assert_memory_equal(keep, t->vram, TDP_VRAM_SIZE);
+	free(keep);
+	tdp_clear_err(t);
+}
+
+#define EXPECT_ERROR(t, err, ...) \
+	do { \
+		const uint32_t w_[] = { __VA_ARGS__ }; \
+		expect_error((t), w_, RDC_ARRAY_SIZE(w_), (err), w_[0]); \
+	} while (0)
+
+/* A pixel drawn by a later command proves the stream stayed in sync. */
+static void expect_pixel(struct tdp *t, int32_t x, int32_t y, uint32_t v)
+{
+	assert_int_equal(tdp_get(t->vram, &scr, x, y), v);
+}
+
+static void test_bad_opcodes(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t fill = RDC_CMD(RDC_OP_FILL_RECT, 0, 2);
+
+	/* argument words that look like commands must be skipped */
+	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x77, 0, 3), fill,
+		     RDC_XY(0, 0), RDC_WH(100, 100));
+	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x09, 0, 0));
+	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x29, 0, 2), fill, 0);
+	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(RDC_OP_CALL, 0, 1), 0);
+	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(RDC_OP_RET, 0, 0));
+	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(RDC_OP_JUMP, 0, 1), 0);
+	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0xff, 0xff, 0));
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(1, 1));
+	tdp_drain(t);
+	expect_pixel(t, 1, 1, 0xffffffffu);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+}
+
+static void test_bad_lengths(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t px = RDC_CMD(RDC_OP_PIXEL, 0, 1);
+
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_PIXEL, 0, 2), px,
+		     RDC_XY(3, 3));
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_PIXEL, 0, 0));
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_LINE, 0, 3), 0, 0, 0);
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_POLYLINE, 0, 1), 0);
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_SET_DST, 0, 3), 0,
+		     2560, RDC_WH(640, 480));
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_LOAD_CLUT, 0, 1), 0);
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_WAIT_VBLANK, 0, 1), 0);
+	/* HOST_BLIT 2x2 XRGB8888 needs 2 + 4 words */
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_HOST_BLIT, 0, 5),
+		     RDC_XY(0, 0), RDC_WH(2, 2), 1, 2, 3);
+	/* MONO 40x2 needs 2 words a row */
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_MONO, 0, 4),
+		     RDC_XY(0, 0), RDC_WH(40, 2), ~0u, ~0u);
+	/* TEXT of 5 chars needs 2 words */
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_TEXT, 0, 3),
+		     RDC_XY(0, 0), 5, 0x41414141);
+	/* the stream is still in sync */
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(2, 2));
+	tdp_drain(t);
+	expect_pixel(t, 2, 2, 0xffffffffu);
+	expect_pixel(t, 3, 3, 0);
+}
+
+/* A header claiming more than RDC_CMD_MAX_ARGS: only it is dropped. */
+static void test_huge_length(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t hdr = RDC_CMD(RDC_OP_NOP, 0, RDC_CMD_MAX_ARGS + 1);
+
+	tdp_push(t, hdr);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(4, 4));
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_LENGTH);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_ERR_INFO), hdr);
+	expect_pixel(t, 4, 4, 0xffffffffu);
+	tdp_clear_err(t);
+	hdr = RDC_CMD(RDC_OP_FILL_RECT, 0, 0xffff);
+	tdp_push(t, hdr);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(5, 4));
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_LENGTH);
+	expect_pixel(t, 5, 4, 0xffffffffu);
+	/* a long NOP within the limit is fine and skipped whole */
+	tdp_clear_err(t);
+	tdp_push(t, RDC_CMD(RDC_OP_NOP, 0, 300));
+	{
+		unsigned int i;
+
+		for (i = 0; i < 300; i++)
+			tdp_push(t, RDC_CMD(RDC_OP_FILL_RECT, 0, 2));
+	}
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(6, 4));
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	expect_pixel(t, 6, 4, 0xffffffffu);
+}
+
+static void test_bad_ranges(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t far = RDC_XY(RDC_COORD_MAX + 1, 0);
+	uint32_t neg = RDC_XY(0, RDC_COORD_MIN - 1);
+
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_PIXEL, 0, 1), far);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_LINE, 0, 2), 0, neg);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_POLYLINE, 0, 3), 0,
+		     RDC_XY(5, 5), far);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_FILL_RECT, 0, 2), 0,
+		     RDC_WH(RDC_SIZE_MAX + 1, 1));
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_RECT, 0, 2), far,
+		     RDC_WH(3, 3));
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_CIRCLE, 0, 2),
+		     RDC_XY(10, 10), RDC_SIZE_MAX + 1);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_FILL_CIRCLE, 0, 2),
+		     RDC_XY(10, 10), 0xffffffffu);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_ELLIPSE, 0, 2),
+		     RDC_XY(10, 10), RDC_WH(3, RDC_SIZE_MAX + 1));
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_BLIT, 0, 3), 0, far,
+		     RDC_WH(3, 3));
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_READBACK, 0, 2), 0,
+		     RDC_WH(RDC_SIZE_MAX + 1, 0));
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_HOST_BLIT, 0, 3), far,
+		     RDC_WH(1, 1), 0);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_MONO, 0, 3), 0,
+		     RDC_WH(RDC_SIZE_MAX + 1, 1), 0);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_TEXT, 0, 3), neg, 1,
+		     0x41);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_FILL_ELLIPSE, 0, 2), neg,
+		     RDC_WH(3, 3));
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_SET_CLIP, 0, 2),
+		     RDC_XY(10, 10), RDC_XY(5, 20));
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_LOAD_CLUT, 0, 3), 255,
+		     1, 2);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_LOAD_CLUT, 0, 2),
+		     0xffffffffu, 1);
+	EXPECT_ERROR(t, RDC_ERR_ARG, RDC_CMD(RDC_OP_SET_ROP, 0, 1),
+		     RDC_ROP_COUNT);
+	EXPECT_ERROR(t, RDC_ERR_REG, RDC_CMD(RDC_OP_REG_WRITE, 0, 2),
+		     RDC_REG_CONTROL, 0);
+	EXPECT_ERROR(t, RDC_ERR_REG, RDC_CMD(RDC_OP_REG_WRITE, 0, 2),
+		     RDC_REG_FIFO_DATA, 0);
+	EXPECT_ERROR(t, RDC_ERR_REG, RDC_CMD(RDC_OP_REG_WRITE, 0, 2),
+		     0x12345678u, 0);
+	/* the rejected ROP and clip left the state alone */
+	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(0, 0), RDC_WH(20, 20));
+	tdp_drain(t);
+	expect_pixel(t, 0, 0, 0xffffffffu);
+	expect_pixel(t, 19, 19, 0xffffffffu);
+}
+
+static void test_bad_surfaces(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t h = RDC_CMD(RDC_OP_SET_DST, 0, 4);
+	uint32_t vs = TDP_VRAM_SIZE;
+
+	EXPECT_ERROR(t, RDC_ERR_SURFACE, h, vs - 100, 64, RDC_WH(16, 10),
+		     RDC_FMT_XRGB8888);
+	EXPECT_ERROR(t, RDC_ERR_SURFACE, h, 0, 63, RDC_WH(16, 10),
+		     RDC_FMT_XRGB8888);
+	EXPECT_ERROR(t, RDC_ERR_SURFACE, h, 0, 64, RDC_WH(16, 10),
+		     RDC_FMT_COUNT);
+	EXPECT_ERROR(t, RDC_ERR_SURFACE, h, 0, 64, RDC_WH(0, 10), RDC_FMT_I8);
+	EXPECT_ERROR(t, RDC_ERR_SURFACE, h, 0, 64, RDC_WH(10, 0), RDC_FMT_I8);
+	EXPECT_ERROR(t, RDC_ERR_SURFACE, h, 0, 0x10000, RDC_WH(16, 16385),
+		     RDC_FMT_I1);
+	/* 32-bit wrap-around must not sneak past the check */
+	EXPECT_ERROR(t, RDC_ERR_SURFACE, h, 0xffffff00u, 0xffffffffu,
+		     RDC_WH(16, 3), RDC_FMT_I8);
+	EXPECT_ERROR(t, RDC_ERR_SURFACE, RDC_CMD(RDC_OP_SET_SRC, 0, 4), 16,
+		     0x80000000u, RDC_WH(16, 3), RDC_FMT_I8);
+	/* exactly the last bytes of VRAM is fine */
+	TDP_CMD(t, RDC_OP_SET_DST, vs - 64 * 9 - 16, 64, RDC_WH(16, 10),
+		RDC_FMT_I8);
+	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(-5, -5), RDC_WH(100, 100));
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	assert_int_equal(t->vram[vs - 1], 0xff);
+	assert_int_equal(t->vram[vs - 17], 0);
+	/* the refused surfaces did not replace the screen */
+	TDP_CMD(t, RDC_OP_SET_DST, scr.base, scr.stride,
+		RDC_WH(scr.width, scr.height), scr.format);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(7, 7));
+	tdp_drain(t);
+	expect_pixel(t, 7, 7, 0xffffffffu);
+}
+
+/* Colours are masked to the destination's pixel size. */
+static void test_colour_mask(void **state)
+{
+	struct tdp *t = *state;
+
+	TDP_CMD(t, RDC_OP_SET_DST, 0x1000, 16, RDC_WH(16, 4), RDC_FMT_I4);
+	TDP_CMD(t, RDC_OP_SET_FG, 0x12345);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(1, 0));
+	tdp_drain(t);
+	assert_int_equal(t->vram[0x1000], 0x05);
+	assert_int_equal(t->vram[0x0fff], 0);
+	assert_int_equal(t->vram[0x1001], 0);
+}
+
+static void test_halt_on_error(void **state)
+{
+	struct tdp *t = *state;
+
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_HALT_ON_ERR);
+	tdp_push(t, RDC_CMD(0x66, 0, 0));
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(8, 8));
+	tdp_drain(t);
+	assert_true(rdc_hw_read(&t->hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED);
+	assert_int_equal(tdp_err(t), RDC_ERR_OPCODE);
+	expect_pixel(t, 8, 8, 0);
+	/* time passing does not un-halt it */
+	rdc_hw_run_until(&t->hw, t->hw.now + 1000000);
+	expect_pixel(t, 8, 8, 0);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_HALT_ON_ERR |
+			     RDC_CONTROL_RESUME);
+	tdp_drain(t);
+	assert_false(rdc_hw_read(&t->hw, RDC_REG_STATUS) &
+		     RDC_STATUS_DP_HALTED);
+	expect_pixel(t, 8, 8, 0xffffffffu);
+
+	/* halted again, then a soft reset also clears it */
+	tdp_push(t, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
+	tdp_push(t, 99);
+	tdp_drain(t);
+	assert_true(rdc_hw_read(&t->hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
+	assert_false(rdc_hw_read(&t->hw, RDC_REG_STATUS) &
+		     RDC_STATUS_DP_HALTED);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(9, 8));
+	tdp_drain(t);
+	expect_pixel(t, 9, 8, 0xffffffffu);
+}
+
+static void test_dp_disabled(void **state)
+{
+	struct tdp *t = *state;
+
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL, 0);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(10, 8));
+	rdc_hw_run_until(&t->hw, t->hw.now + 100000);
+	expect_pixel(t, 10, 8, 0);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
+	tdp_drain(t);
+	expect_pixel(t, 10, 8, 0xffffffffu);
+}
+
+/* ---- control --------------------------------------------------------- */
+
+static void test_fence_clut_reg(void **state)
+{
+	struct tdp *t = *state;
+	unsigned int i;
+
+	TDP_CMD(t, RDC_OP_FENCE, 0xabcd);
+	TDP_CMD(t, RDC_OP_LOAD_CLUT, 250, 0x111111, 0x222222, 0x333333,
+		0x444444, 0x555555, 0x666666);
+	TDP_CMD(t, RDC_OP_REG_WRITE, RDC_REG_LINE_COMPARE, 123);
+	TDP_CMD(t, RDC_OP_NOP);
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_FENCE), 0xabcd);
+	assert_true(rdc_hw_read(&t->hw, RDC_REG_IRQ_STATUS) & RDC_IRQ_FENCE);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_LINE_COMPARE), 123);
+	rdc_hw_write(&t->hw, RDC_REG_CLUT_INDEX, 250);
+	for (i = 0; i < 6; i++)
+		assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_CLUT_DATA),
+				 0x111111u * (i + 1));
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_CMDS), 4);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_OPCODE),
+			 RDC_OP_NOP);
+}
+
+/* With scanout off there is no vblank to wait for: done at once. */
+static void test_wait_no_scanout(void **state)
+{
+	struct tdp *t = *state;
+
+	TDP_CMD(t, RDC_OP_WAIT_VBLANK);
+	TDP_CMD(t, RDC_OP_WAIT_LINE, 10);
+	TDP_CMD(t, RDC_OP_FENCE, 1);
+	tdp_drain(t);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_FENCE), 1);
+}
+
+/* WAIT_VBLANK lasts from its fetch until the vblank the chip reports. */
+static void test_wait_vblank_line(void **state)
+{
+	struct tdp *t = *state;
+	uint64_t t0, tv, tl;
+
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
+	rdc_hw_run_until(&t->hw, t->hw.now + 1000);
+	t0 = t->hw.now;
+	tv = rdc_port_next_vblank(&t->hw);
+	assert_true(tv != RDC_NEVER && tv > t0);
+	TDP_CMD(t, RDC_OP_WAIT_VBLANK);
+	rdc_hw_run_until(&t->hw, tv - 1);
+	assert_true(rdc_hw_read(&t->hw, RDC_REG_STATUS) & RDC_STATUS_DP_WAIT);
+	rdc_hw_run_until(&t->hw, tv + 1);
+	assert_false(rdc_hw_read(&t->hw, RDC_REG_STATUS) & RDC_STATUS_DP_WAIT);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_OPCODE),
+			 RDC_OP_WAIT_VBLANK);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES),
+			 tv - t0);
+
+	t0 = t->hw.now;
+	tl = rdc_port_next_line(&t->hw, 100);
+	assert_true(tl != RDC_NEVER && tl > t0);
+	TDP_CMD(t, RDC_OP_WAIT_LINE, 100);
+	rdc_hw_run_until(&t->hw, tl + 1);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_OPCODE),
+			 RDC_OP_WAIT_LINE);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES),
+			 tl - t0);
+}
+
+/* ---- queues ---------------------------------------------------------- */
+
+/* HOST_BLIT of 4002 words through the 256-word FIFO. */
+static void test_fifo_backpressure(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t w = 100, h = 40, i, full = 0;
+	int32_t x, y;
+
+	tdp_push(t, RDC_CMD(RDC_OP_HOST_BLIT, 0, 2 + w * h));
+	tdp_push(t, RDC_XY(20, 30));
+	tdp_push(t, RDC_WH(w, h));
+	for (i = 0; i < w * h; i++) {
+		unsigned int spins = 0;
+
+		while (!rdc_hw_read(&t->hw, RDC_REG_FIFO_FREE)) {
+			full++;
+			assert_true(++spins < TDP_RUN_LIMIT);
+			rdc_hw_run_until(&t->hw, t->hw.now + 50);
+		}
+		rdc_hw_write(&t->hw, RDC_REG_FIFO_DATA, i * 0x01010101u);
+	}
+	tdp_drain(t);
+	assert_true(full > 0);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	for (y = 0; y < 480; y++)
+		for (x = 0; x < 640; x++) {
+			uint32_t want = 0;
+
+			if (x >= 20 && x < 120 && y >= 30 && y < 70)
+				want = (uint32_t)((y - 30) * 100 + x - 20) *
+				       0x01010101u;
+			expect_pixel(t, x, y, want);
+		}
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_PIXELS_LO), w * h);
+}
+
+static void ring_put(struct tdp *t, uint32_t base, uint32_t size,
+		     uint32_t *tail, uint32_t w)
+{
+	assert_int_equal(rdc_hw_vram_write(&t->hw, base + *tail, &w, 4), 0);
+	*tail = (*tail + 4) % size;
+}
+
+/* Commands from the VRAM ring, one of them wrapping around its end. */
+static void test_ring(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t base = 0x300000, size = 64, tail = 40, k;
+
+	rdc_hw_write(&t->hw, RDC_REG_RING_BASE, base);
+	rdc_hw_write(&t->hw, RDC_REG_RING_SIZE, size);
+	rdc_hw_write(&t->hw, RDC_REG_RING_HEAD, tail);
+	rdc_hw_write(&t->hw, RDC_REG_RING_TAIL, tail);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_RING_EN);
+	for (k = 0; k < 3; k++) {
+		ring_put(t, base, size, &tail, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+		ring_put(t, base, size, &tail, 0x100 + k);
+		ring_put(t, base, size, &tail, RDC_CMD(RDC_OP_FILL_RECT, 0, 2));
+		ring_put(t, base, size, &tail, RDC_XY(10 * k, 0));
+		ring_put(t, base, size, &tail, RDC_WH(3, 2));
+		rdc_hw_write(&t->hw, RDC_REG_RING_TAIL, tail);
+		tdp_drain(t);
+		for (;;) {
+			rdc_hw_run_until(&t->hw, t->hw.now + TDP_RUN_STEP);
+			if (rdc_hw_read(&t->hw, RDC_REG_RING_HEAD) == tail)
+				break;
+		}
+	}
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	for (k = 0; k < 3; k++) {
+		expect_pixel(t, 10 * (int32_t)k, 0, 0x100 + k);
+		expect_pixel(t, 10 * (int32_t)k + 2, 1, 0x100 + k);
+		expect_pixel(t, 10 * (int32_t)k + 3, 1, 0);
+	}
+}
+
+/* A bad ring programming: the DP keeps serving the FIFO. */
+static void test_ring_bad(void **state)
+{
+	struct tdp *t = *state;
+
+	rdc_hw_write(&t->hw, RDC_REG_RING_BASE, TDP_VRAM_SIZE - 8);
+	rdc_hw_write(&t->hw, RDC_REG_RING_SIZE, 64);
+	rdc_hw_write(&t->hw, RDC_REG_RING_TAIL, 8);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_RING_EN);
+	rdc_hw_run_until(&t->hw, t->hw.now + 1000);
+	assert_int_equal(tdp_err(t), RDC_ERR_RING);
+	tdp_clear_err(t);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(11, 11));
+	tdp_drain(t);
+	expect_pixel(t, 11, 11, 0xffffffffu);
+}
+
+/* READBACK of 4096 words through the 1024-word RDATA FIFO. */
+static void test_readback_large(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t i, got = 0, waited = 0;
+
+	for (i = 0; i < 640 * 480; i++)
+		rdc_st32(t->vram + 4 * i, i * 2654435761u);
+	TDP_CMD(t, RDC_OP_SET_SRC, scr.base, scr.stride,
+		RDC_WH(scr.width, scr.height), scr.format);
+	TDP_CMD(t, RDC_OP_READBACK, RDC_XY(100, 50), RDC_WH(64, 64));
+	while (got < 64 * 64) {
+		uint32_t n = rdc_hw_read(&t->hw, RDC_REG_RDATA_COUNT);
+
+		assert_true(n <= RDC_RDATA_DEPTH);
+		if (n == RDC_RDATA_DEPTH && got + n < 64 * 64) {
+			assert_true(rdc_hw_read(&t->hw, RDC_REG_STATUS) &
+				    RDC_STATUS_DP_WAIT);
+			waited++;
+		}
+		if (!n) {
+			rdc_hw_run_until(&t->hw, t->hw.now + TDP_RUN_STEP);
+			continue;
+		}
+		while (n--) {
+			uint32_t x = 100 + got % 64, y = 50 + got / 64;
+
+			assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_RDATA),
+					 (y * 640 + x) * 2654435761u);
+			got++;
+		}
+	}
+	tdp_drain(t);
+	assert_true(waited > 0);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_RDATA_COUNT), 0);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_OPCODE),
+			 RDC_OP_READBACK);
+}
+
+/* ---- cycle counts ---------------------------------------------------- */
+
+enum { K_READ, K_WRITE, K_RMW };
+
+/*
+ * bus.h, transcribed: bursts at multiples of BURST_BEATS * BYTES; per
+ * burst beats * T_BEAT + misses * T_ROW_MISS, plus for written bursts
+ * T_TURN + rmw_beats * T_BEAT when any beat is read-modify-written.
+ */
+static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind,
+			 int head_partial, int tail_partial)
+{
+	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
+	uint64_t end = a + n, first_beat = a / RDC_BUS_BYTES;
+	uint64_t last_beat = (end - 1) / RDC_BUS_BYTES, cost = 0;
+	int head = head_partial || a % RDC_BUS_BYTES;
+	int tail = tail_partial || end % RDC_BUS_BYTES;
+
+	while (a < end) {
+		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
+
+		if (be > end)
+			be = end;
+		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES; b++) {
+			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
+						  RDC_DRAM_ROW_BYTES);
+
+			beats++;
+			if (row != *open) {
+				cost += RDC_T_ROW_MISS;
+				*open = row;
+			}
+			if (kind == K_RMW ||
+			    (kind == K_WRITE &&
+			     ((b == first_beat && head) ||
+			      (b == last_beat && tail))))
+				rmw++;
+		}
+		cost += beats * RDC_T_BEAT;
+		if (rmw)
+			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
+		a = be;
+	}
+	return cost;
+}
+
+static uint32_t last_cycles(struct tdp *t)
+{
+	return rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES);
+}
+
+/* FILL_RECT of an aligned XRGB8888 rectangle, scanout off. */
+static void test_cycles_fill(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t open, y;
+	uint64_t want;
+
+	tdp_drain(t);
+	open = t->hw.bus.open_row;
+	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
+	for (y = 0; y < 4; y++)
+		want += bus_span(&open, 64 * 4 + (uint64_t)(10 + y) * 2560,
+				 32 * 4, K_WRITE, 0, 0);
+	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(64, 10), RDC_WH(32, 4));
+	tdp_drain(t);
+	assert_int_equal(last_cycles(t), want);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_PIXELS_LO), 128);
+}
+
+/* One pixel: a 4-byte write inside an 8-byte beat is merged (RMW). */
+static void test_cycles_pixel(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t open;
+	uint64_t want;
+
+	tdp_drain(t);
+	open = t->hw.bus.open_row;
+	want = 2 * RDC_T_FIFO_WORD + RDC_T_DECODE +
+	       bus_span(&open, 5 * 4 + 7 * 2560, 4, K_WRITE, 0, 0);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(5, 7));
+	tdp_drain(t);
+	assert_int_equal(last_cycles(t), want);
+	/* and by hand: one beat, one row miss (row 8 was not open), merge */
+	assert_int_equal(want, 2 + 4 + RDC_T_BEAT + RDC_T_ROW_MISS +
+				       RDC_T_TURN + RDC_T_BEAT);
+}
+
+/* XOR fill: every beat read-modify-written; I4 fill with partial edges. */
+static void test_cycles_rmw(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t open, y;
+	uint64_t want;
+
+	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_XOR);
+	tdp_drain(t);
+	open = t->hw.bus.open_row;
+	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
+	for (y = 0; y < 3; y++)
+		want += bus_span(&open, 3 * 4 + (uint64_t)(100 + y) * 2560,
+				 300 * 4, K_RMW, 0, 0);
+	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(3, 100), RDC_WH(300, 3));
+	tdp_drain(t);
+	assert_int_equal(last_cycles(t), want);
+
+	/* I4, x = 3..40: first and last bytes half written */
+	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_COPY);
+	TDP_CMD(t, RDC_OP_SET_DST, 0x100000, 64, RDC_WH(128, 16), RDC_FMT_I4);
+	tdp_drain(t);
+	open = t->hw.bus.open_row;
+	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE +
+	       bus_span(&open, 0x100000 + 64 * 2 + 1, 20, K_WRITE, 1, 1);
+	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(3, 2), RDC_WH(38, 1));
+	tdp_drain(t);
+	assert_int_equal(last_cycles(t), want);
+}
+
+/* Drawing in vertical blanking: no scanout contention, no stall. */
+static void test_cycles_vblank(void **state)
+{
+	struct tdp *t = *state;
+	uint64_t tv, stall, want;
+	uint32_t open, y;
+
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
+	rdc_hw_run_until(&t->hw, t->hw.now + 10);
+	tv = rdc_port_next_vblank(&t->hw);
+	assert_true(tv != RDC_NEVER);
+	rdc_hw_run_until(&t->hw, tv + 10);
+	assert_true(rdc_hw_read(&t->hw, RDC_REG_STATUS) & RDC_STATUS_VBLANK);
+	stall = t->hw.perf.stall;
+	open = t->hw.bus.open_row;
+	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
+	for (y = 0; y < 16; y++)
+		want += bus_span(&open, (uint64_t)(200 + y) * 2560, 640 * 4,
+				 K_WRITE, 0, 0);
+	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(0, 200), RDC_WH(640, 16));
+	rdc_hw_run_until(&t->hw, t->hw.now + 5000);
+	assert_true(rdc_hw_read(&t->hw, RDC_REG_STATUS) & RDC_STATUS_VBLANK);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_OPCODE),
+			 RDC_OP_FILL_RECT);
+	assert_int_equal(last_cycles(t), want);
+	assert_int_equal(t->hw.perf.stall, stall);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		TDP_TEST(test_bad_opcodes),
+		TDP_TEST(test_bad_lengths),
+		TDP_TEST(test_huge_length),
+		TDP_TEST(test_bad_ranges),
+		TDP_TEST(test_bad_surfaces),
+		TDP_TEST(test_colour_mask),
+		TDP_TEST(test_halt_on_error),
+		TDP_TEST(test_dp_disabled),
+		TDP_TEST(test_fence_clut_reg),
+		TDP_TEST(test_wait_no_scanout),
+		TDP_TEST(test_wait_vblank_line),
+		TDP_TEST(test_fifo_backpressure),
+		TDP_TEST(test_ring),
+		TDP_TEST(test_ring_bad),
+		TDP_TEST(test_readback_large),
+		TDP_TEST(test_cycles_fill),
+		TDP_TEST(test_cycles_pixel),
+		TDP_TEST(test_cycles_rmw),
+		TDP_TEST(test_cycles_vblank),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,1575 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The .rdl script interpreter (the format is documented in docs/rdl.md).
+ *
+ * Each statement is parsed completely before anything is sent, so a
+ * syntax error never leaves half a command in the FIFO.  Every statement
+ * that issues commands runs to completion (the DP idle) before the next
+ * one: the busy-cycle and command counters read around it then belong to
+ * that statement alone, which makes the per-class accounting in struct
+ * rdc_script_result exact without any help from the device.
+ */
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <zlib.h>
+
+#include "rdc_priv.h"
+
+/* Limits that keep hostile scripts from exhausting memory or time. */
+#define RDL_MAX_LINE (4u << 20) /* bytes in one logical line */
+#define RDL_MAX_FILE (64u << 20)
+#define RDL_MAX_BLIT_BYTES (64u << 20)
+#define RDL_MAX_STEP RDC_WAIT_BUDGET_DEFAULT
+
+struct rdl_tok {
+	const char *s; /* NUL-terminated; unescaped for quoted strings */
+	size_t len;
+	bool quoted;
+};
+
+struct rdl {
+	rdc_dev *dev;
+	struct rdc_script_result *res;
+	rdc_batch *b;
+	uint32_t line; /* first physical line of the statement */
+	struct rdl_tok *tok;
+	size_t ntok, tok_cap;
+	char *buf; /* the logical line, tokens point into it */
+	size_t buf_cap;
+};
+
+static int rdl_err(struct rdl *r, int code, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+
+static int rdl_err(struct rdl *r, int code, const char *fmt, ...)
+{
+	va_list ap;
+
+	r->res->error_line = r->line;
+	va_start(ap, fmt);
+	vsnprintf(r->res->error_msg, sizeof(r->res->error_msg), fmt, ap);
+	va_end(ap);
+	return code;
+}
+
+/* A library call failed: describe it, with the device's code if any. */
+static int rdl_fail(struct rdl *r, const char *what, int ret)
+{
+	uint32_t code = 0, info = 0;
+
+	if (ret == RDC_E_DEVICE &&
+	    !rdc_reg_read(r->dev, RDC_REG_ERR_CODE, &code) &&
+	    !rdc_reg_read(r->dev, RDC_REG_ERR_INFO, &info))
+		return rdl_err(r, ret, "%s: device error %s (info 0x%08x)",
+			       what, rdc_dev_strerror(code), info);
+	return rdl_err(r, ret, "%s: %s", what, rdc_strerror(ret));
+}
+
+/* ---- Names ------------------------------------------------------------- */
+
+static const char *const rdl_op_names[RDC_OP_COUNT] = {
+	[RDC_OP_NOP] = "nop",
+	[RDC_OP_FENCE] = "fence",
+	[RDC_OP_WAIT_VBLANK] = "wait-vblank",
+	[RDC_OP_WAIT_LINE] = "wait-line",
+	[RDC_OP_REG_WRITE] = "cmd-reg",
+	[RDC_OP_LOAD_CLUT] = "load-clut",
+	[RDC_OP_CALL] = "call",
+	[RDC_OP_RET] = "ret",
+	[RDC_OP_JUMP] = "jump",
+	[RDC_OP_SET_FG] = "fg",
+	[RDC_OP_SET_BG] = "bg",
+	[RDC_OP_SET_ROP] = "rop",
+	[RDC_OP_SET_CLIP] = "clip",
+	[RDC_OP_SET_DST] = "dst",
+	[RDC_OP_SET_SRC] = "src",
+	[RDC_OP_PIXEL] = "pixel",
+	[RDC_OP_LINE] = "line",
+	[RDC_OP_POLYLINE] = "polyline",
+	[RDC_OP_RECT] = "rect",
+	[RDC_OP_FILL_RECT] = "fill-rect",
+	[RDC_OP_CIRCLE] = "circle",
+	[RDC_OP_FILL_CIRCLE] = "fill-circle",
+	[RDC_OP_ELLIPSE] = "ellipse",
+	[RDC_OP_FILL_ELLIPSE] = "fill-ellipse",
+	[RDC_OP_BLIT] = "blit",
+	[RDC_OP_HOST_BLIT] = "host-blit",
+	[RDC_OP_READBACK] = "readback",
+	[RDC_OP_MONO] = "mono",
+	[RDC_OP_TEXT] = "text",
+};
+
+const char *rdc_op_name(uint32_t op)
+{
+	return op < RDC_OP_COUNT ? rdl_op_names[op] : NULL;
+}
+
+#define RDL_REG(n) { #n, RDC_REG_##n }
+static const struct {
+	const char *name;
+	uint32_t reg;
+} rdl_regs[] = {
+	RDL_REG(ID), RDL_REG(VERSION), RDL_REG(VRAM_SIZE), RDL_REG(CORE_KHZ),
+	RDL_REG(CONTROL), RDL_REG(STATUS), RDL_REG(IRQ_STATUS),
+	RDL_REG(IRQ_ENABLE), RDL_REG(ERR_CODE), RDL_REG(ERR_INFO),
+	RDL_REG(PINS), RDL_REG(H_TOTAL), RDL_REG(H_DISPLAY),
+	RDL_REG(H_SYNC_START), RDL_REG(H_SYNC_END), RDL_REG(V_TOTAL),
+	RDL_REG(V_DISPLAY), RDL_REG(V_SYNC_START), RDL_REG(V_SYNC_END),
+	RDL_REG(PIXCLK_KHZ), RDL_REG(CRTC_FLAGS), RDL_REG(FB_BASE),
+	RDL_REG(FB_STRIDE), RDL_REG(FB_FORMAT), RDL_REG(LINE_COMPARE),
+	RDL_REG(BEAM), RDL_REG(FRAME_COUNT), RDL_REG(MODE_PRESET),
+	RDL_REG(CLUT_INDEX), RDL_REG(CLUT_DATA), RDL_REG(CURSOR_BASE),
+	RDL_REG(CURSOR_POS), RDL_REG(CURSOR_FG), RDL_REG(CURSOR_BG),
+	RDL_REG(FIFO_DATA), RDL_REG(FIFO_FREE), RDL_REG(FIFO_LOWWATER),
+	RDL_REG(RING_BASE), RDL_REG(RING_SIZE), RDL_REG(RING_HEAD),
+	RDL_REG(RING_TAIL), RDL_REG(FENCE), RDL_REG(RDATA),
+	RDL_REG(RDATA_COUNT), RDL_REG(TIME_LO), RDL_REG(TIME_HI),
+	RDL_REG(PERF_BUSY_LO), RDL_REG(PERF_BUSY_HI), RDL_REG(PERF_STALL_LO),
+	RDL_REG(PERF_STALL_HI), RDL_REG(PERF_PIXELS_LO),
+	RDL_REG(PERF_PIXELS_HI), RDL_REG(PERF_CMDS),
+	RDL_REG(PERF_LAST_CYCLES), RDL_REG(PERF_LAST_OPCODE),
+	RDL_REG(PERF_CTRL),
+};
+
+size_t rdc_reg_count(void)
+{
+	return RDC_ARRAY_SIZE(rdl_regs);
+}
+
+const char *rdc_reg_info(size_t i, uint32_t *reg)
+{
+	if (i >= RDC_ARRAY_SIZE(rdl_regs))
+		return NULL;
+	if (reg)
+		*reg = rdl_regs[i].reg;
+	return rdl_regs[i].name;
+}
+
+/* Register by name (case-insensitive, optional "RDC_REG_" prefix). */
+int rdc_reg_by_name(const char *name, uint32_t *reg)
+{
+	if (!strncasecmp(name, "RDC_REG_", 8))
+		name += 8;
+	for (size_t i = 0; i < RDC_ARRAY_SIZE(rdl_regs); i++) {
+		if (!strcasecmp(name, rdl_regs[i].name)) {
+			*reg = rdl_regs[i].reg;
+			return 0;
+		}
+	}
+	return RDC_E_INVAL;
+}
+
+static const char *const rdl_rop_names[RDC_ROP_COUNT] = {
+	"clear", "and", "and-reverse", "copy", "and-inverted", "noop",
+	"xor", "or", "nor", "equiv", "invert", "or-reverse",
+	"copy-inverted", "or-inverted", "nand", "set",
+};
+
+/* "copy", "GXcopy", "and-reverse", "GXandReverse", "and_reverse" */
+static int rdl_rop_by_name(const char *s)
+{
+	char want[32], have[32];
+	size_t n = 0;
+
+	if (!strncasecmp(s, "gx", 2))
+		s += 2;
+	for (; *s && n + 1 < sizeof(want); s++)
+		if (*s != '-' && *s != '_')
+			want[n++] = (char)(*s | 0x20);
+	want[n] = 0;
+	for (int i = 0; i < RDC_ROP_COUNT; i++) {
+		const char *p = rdl_rop_names[i];
+
+		n = 0;
+		for (; *p; p++)
+			if (*p != '-')
+				have[n++] = *p;
+		have[n] = 0;
+		if (!strcmp(want, have))
+			return i;
+	}
+	return -1;
+}
+
+static const char *const rdl_fmt_names[RDC_FMT_COUNT] = {
+	"i1", "i2", "i4", "i8", "rgb565", "rgb888", "xrgb8888",
+};
+
+/* ---- Tokens and values ------------------------------------------------- */
+
+static bool rdl_is_space(char c)
+{
+	return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+
+static int rdl_hex(char c)
+{
+	if (c >= '0' && c <= '9')
+		return c - '0';
+	if (c >= 'a' && c <= 'f')
+		return c - 'a' + 10;
+	if (c >= 'A' && c <= 'F')
+		return c - 'A' + 10;
+	return -1;
+}
+
+/* "#rrggbb" exactly, as opposed to a comment. */
+static bool rdl_is_colour(const char *p)
+{
+	for (int i = 1; i <= 6; i++)
+		if (rdl_hex(p[i]) < 0)
+			return false;
+	return !p[7] || rdl_is_space(p[7]);
+}
+
+static int rdl_push_tok(struct rdl *r, const char *s, size_t len, bool quoted)
+{
+	if (r->ntok == r->tok_cap) {
+		size_t cap = r->tok_cap ? r->tok_cap * 2 : 32;
+		struct rdl_tok *t = realloc(r->tok, cap * sizeof(*t));
+
+		if (!t)
+			return rdl_err(r, RDC_E_NOMEM, "out of memory");
+		r->tok = t;
+		r->tok_cap = cap;
+	}
+	r->tok[r->ntok++] = (struct rdl_tok){ s, len, quoted };
+	return 0;
+}
+
+/*
+ * Split r->buf into tokens in place: words end at white space (a NUL is
+ * written there), quoted strings are unescaped where they stand (the
+ * result is never longer than the source).
+ */
+static int rdl_tokenize(struct rdl *r)
+{
+	char *p = r->buf;
+	int ret;
+
+	r->ntok = 0;
+	for (;;) {
+		while (rdl_is_space(*p))
+			p++;
+		if (!*p || (*p == '#' && !rdl_is_colour(p)))
+			return 0;
+		if (*p == '"') {
+			char *out = ++p, *start = out;
+
+			for (;;) {
+				int hi, lo;
+
+				if (!*p)
+					return rdl_err(r, RDC_E_PARSE,
+						       "unterminated string");
+				if (*p == '"')
+					break;
+				if (*p != '\\') {
+					*out++ = *p++;
+					continue;
+				}
+				p++;
+				switch (*p) {
+				case 'n': *out++ = '\n'; p++; break;
+				case 't': *out++ = '\t'; p++; break;
+				case 'r': *out++ = '\r'; p++; break;
+				case '0': *out++ = '\0'; p++; break;
+				case '\\': *out++ = '\\'; p++; break;
+				case '"': *out++ = '"'; p++; break;
+				case 'x':
+					hi = rdl_hex(p[1]);
+					lo = hi < 0 ? -1 : rdl_hex(p[2]);
+					if (lo < 0)
+						return rdl_err(r, RDC_E_PARSE,
+							"bad \\x escape: two hex digits needed");
+					*out++ = (char)(hi << 4 | lo);
+					p += 3;
+					break;
+				default:
+					return rdl_err(r, RDC_E_PARSE,
+						       "unknown escape in string");
+				}
+			}
+			p++; /* closing quote */
+			if (*p && !rdl_is_space(*p))
+				return rdl_err(r, RDC_E_PARSE,
+					       "text after closing quote");
+			ret = rdl_push_tok(r, start, (size_t)(out - start),
+					   true);
+			if (ret)
+				return ret;
+			*out = 0;
+			continue;
+		}
+		{
+			char *start = p;
+
+			while (*p && !rdl_is_space(*p) && *p != '"')
+				p++;
+			if (*p == '"')
+				return rdl_err(r, RDC_E_PARSE,
+					       "quote inside a word");
+			ret = rdl_push_tok(r, start, (size_t)(p - start),
+					   false);
+			if (ret)
+				return ret;
+			if (*p)
+				*p++ = 0;
+		}
+	}
+}
+
+/* Integer in [lo, hi]: decimal or 0x hex, optional sign. */
+static int rdl_int(struct rdl *r, size_t i, int64_t lo, int64_t hi,
+		   int64_t *out)
+{
+	const char *s, *what = "number";
+	bool neg = false;
+	uint64_t v = 0;
+	int base = 10, digits = 0;
+
+	if (i >= r->ntok)
+		return rdl_err(r, RDC_E_PARSE, "missing argument %zu", i);
+	s = r->tok[i].s;
+	if (r->tok[i].quoted)
+		goto bad;
+	if (*s == '-' || *s == '+')
+		neg = *s++ == '-';
+	if (s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+		base = 16;
+		s += 2;
+	}
+	for (; *s; s++, digits++) {
+		int d = rdl_hex(*s);
+
+		if (d < 0 || d >= base)
+			goto bad;
+		v = v * (uint64_t)base + (uint64_t)d;
+		if (v > ((uint64_t)1 << 40))
+			goto range;
+	}
+	if (!digits)
+		goto bad;
+	*out = neg ? -(int64_t)v : (int64_t)v;
+	if (*out < lo || *out > hi)
+		goto range;
+	return 0;
+bad:
+	return rdl_err(r, RDC_E_PARSE, "argument %zu: '%.40s' is not a %s", i,
+		       r->tok[i].s, what);
+range:
+	return rdl_err(r, RDC_E_PARSE,
+		       "argument %zu: '%.40s' out of range [%lld, %lld]", i,
+		       r->tok[i].s, (long long)lo, (long long)hi);
+}
+
+static int rdl_u32(struct rdl *r, size_t i, uint32_t *out)
+{
+	int64_t v;
+	int ret = rdl_int(r, i, INT32_MIN, UINT32_MAX, &v);
+
+	*out = (uint32_t)v; /* negative numbers wrap: 0xffffffff == -1 */
+	return ret;
+}
+
+/* Coordinates are signed 16-bit on the wire. */
+static int rdl_coord(struct rdl *r, size_t i, int *out)
+{
+	int64_t v;
+	int ret = rdl_int(r, i, INT16_MIN, INT16_MAX, &v);
+
+	*out = (int)v;
+	return ret;
+}
+
+/* Sizes and radii are unsigned 16-bit on the wire. */
+static int rdl_size(struct rdl *r, size_t i, uint32_t *out)
+{
+	int64_t v;
+	int ret = rdl_int(r, i, 0, UINT16_MAX, &v);
+
+	*out = (uint32_t)v;
+	return ret;
+}
+
+static int rdl_coords(struct rdl *r, size_t first, size_t n, int *out)
+{
+	for (size_t k = 0; k < n; k++) {
+		int ret = rdl_coord(r, first + k, &out[k]);
+
+		if (ret)
+			return ret;
+	}
+	return 0;
+}
+
+/* 8-bit-per-channel RGB to a pixel of an RGB format, rounding. */
+static uint32_t rdl_rgb_to_pixel(uint32_t rgb, uint32_t fmt)
+{
+	uint32_t red = (rgb >> 16) & 0xff, green = (rgb >> 8) & 0xff;
+	uint32_t blue = rgb & 0xff;
+
+	if (fmt == RDC_FMT_RGB565)
+		return ((red * 31 + 127) / 255) << 11 |
+		       ((green * 63 + 127) / 255) << 5 |
+		       ((blue * 31 + 127) / 255);
+	return rgb & 0xffffff;
+}
+
+/* A colour: a raw pixel value, or #rrggbb in an RGB format `fmt`. */
+static int rdl_colour(struct rdl *r, size_t i, uint32_t fmt, uint32_t *out)
+{
+	const char *s;
+	uint32_t rgb = 0;
+
+	if (i >= r->ntok)
+		return rdl_err(r, RDC_E_PARSE, "missing colour");
+	s = r->tok[i].s;
+	if (s[0] != '#' || r->tok[i].quoted)
+		return rdl_u32(r, i, out);
+	if (r->tok[i].len != 7 || !rdl_is_colour(s))
+		return rdl_err(r, RDC_E_PARSE, "bad colour '%.40s'", s);
+	if (fmt >= RDC_FMT_COUNT || rdc_format_indexed(fmt))
+		return rdl_err(r, RDC_E_PARSE,
+			       "#rrggbb needs an RGB destination; indexed formats take a CLUT index");
+	for (int k = 1; k <= 6; k++)
+		rgb = rgb << 4 | (uint32_t)rdl_hex(s[k]);
+	*out = rdl_rgb_to_pixel(rgb, fmt);
+	return 0;
+}
+
+/* A CLUT entry: 0x00RRGGBB or #rrggbb. */
+static int rdl_rgb(struct rdl *r, size_t i, uint32_t *out)
+{
+	int ret = rdl_colour(r, i, RDC_FMT_XRGB8888, out);
+
+	if (!ret && *out > 0xffffff)
+		return rdl_err(r, RDC_E_PARSE, "CLUT colour above 0xffffff");
+	return ret;
+}
+
+static int rdl_format(struct rdl *r, size_t i, uint32_t *out)
+{
+	for (uint32_t f = 0; f < RDC_FMT_COUNT; f++) {
+		if (!strcasecmp(r->tok[i].s, rdl_fmt_names[f])) {
+			*out = f;
+			return 0;
+		}
+	}
+	return rdl_err(r, RDC_E_PARSE, "unknown format '%.40s'", r->tok[i].s);
+}
+
+static int rdl_reg(struct rdl *r, size_t i, uint32_t *out)
+{
+	int64_t v;
+
+	if (!rdc_reg_by_name(r->tok[i].s, out))
+		return 0;
+	if (rdl_hex(r->tok[i].s[0]) >= 0 && !rdl_int(r, i, 0, RDC_REG_WINDOW - 4,
+						      &v)) {
+		*out = (uint32_t)v;
+		return 0;
+	}
+	return rdl_err(r, RDC_E_PARSE, "unknown register '%.40s'",
+		       r->tok[i].s);
+}
+
+static bool rdl_word(struct rdl *r, size_t i, const char *w)
+{
+	return i < r->ntok && !r->tok[i].quoted && !strcmp(r->tok[i].s, w);
+}
+
+/* ---- Execution ---------------------------------------------------------- */
+
+static uint32_t rdl_dst_format(struct rdl *r)
+{
+	return r->dev->dst_format;
+}
+
+/* The counters that the accounting reads around a statement. */
+static int rdl_counters(struct rdl *r, uint64_t *busy, uint32_t *cmds)
+{
+	uint32_t lo, hi;
+	int ret;
+
+	ret = rdc_reg_read(r->dev, RDC_REG_PERF_BUSY_LO, &lo);
+	if (!ret)
+		ret = rdc_reg_read(r->dev, RDC_REG_PERF_BUSY_HI, &hi);
+	if (!ret)
+		ret = rdc_reg_read(r->dev, RDC_REG_PERF_CMDS, cmds);
+	if (ret)
+		return rdl_fail(r, "reading counters", ret);
+	*busy = (uint64_t)hi << 32 | lo;
+	return 0;
+}
+
+static void rdl_account(struct rdl *r, uint32_t op, uint64_t busy0,
+			uint32_t cmds0, uint64_t busy1, uint32_t cmds1)
+{
+	op &= 0xff;
+	r->res->op_cycles[op] += busy1 - busy0;
+	r->res->op_count[op] += cmds1 - cmds0;
+}
+
+/* Submit the statement's batch, run the DP dry, charge it to `op`. */
+static int rdl_run_batch(struct rdl *r, uint32_t op)
+{
+	uint64_t busy0, busy1;
+	uint32_t cmds0, cmds1;
+	int ret;
+
+	ret = rdl_counters(r, &busy0, &cmds0);
+	if (ret)
+		return ret;
+	ret = rdc_batch_submit(r->dev, r->b);
+	if (!ret)
+		ret = rdc_idle_wait(r->dev);
+	if (ret)
+		return rdl_fail(r, rdc_op_name(op) ? rdc_op_name(op) : "cmd",
+				ret);
+	ret = rdl_counters(r, &busy1, &cmds1);
+	if (ret)
+		return ret;
+	rdl_account(r, op, busy0, cmds0, busy1, cmds1);
+	return 0;
+}
+
+static int rdl_encoded(struct rdl *r, uint32_t op, int enc)
+{
+	if (enc)
+		return rdl_err(r, enc, "encoding: %s", rdc_strerror(enc));
+	return rdl_run_batch(r, op);
+}
+
+/* Statement handlers get the tokens after the keyword at index 1. */
+typedef int (*rdl_fn)(struct rdl *r, uint32_t op);
+
+static int st_nop(struct rdl *r, uint32_t op)
+{
+	uint32_t n = 0;
+	int ret = 0;
+
+	if (r->ntok > 1)
+		ret = rdl_size(r, 1, &n);
+	if (ret)
+		return ret;
+	if (n > RDC_CMD_LENGTH)
+		return rdl_err(r, RDC_E_PARSE, "too many NOP words");
+	{
+		uint32_t *z = calloc(n + 1, sizeof(*z));
+
+		if (!z)
+			return rdl_err(r, RDC_E_NOMEM, "out of memory");
+		ret = rdc_batch_cmd(r->b, op, 0, z, n);
+		free(z);
+	}
+	return rdl_encoded(r, op, ret);
+}
+
+/* Commands whose arguments are all plain 32-bit numbers. */
+static int st_words(struct rdl *r, uint32_t op)
+{
+	uint32_t a[RDC_CMD_MAX_ARGS];
+	size_t n = r->ntok - 1;
+
+	if (n > RDC_ARRAY_SIZE(a))
+		return rdl_err(r, RDC_E_PARSE, "too many arguments");
+	for (size_t i = 0; i < n; i++) {
+		int ret = rdl_u32(r, i + 1, &a[i]);
+
+		if (ret)
+			return ret;
+	}
+	return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, 0, a, n));
+}
+
+static int st_cmd_reg(struct rdl *r, uint32_t op)
+{
+	uint32_t reg, val;
+	int ret = rdl_reg(r, 1, &reg);
+
+	if (!ret)
+		ret = rdl_u32(r, 2, &val);
+	if (ret)
+		return ret;
+	return rdl_encoded(r, op, rdc_batch_reg_write(r->b, reg, val));
+}
+
+static int st_load_clut(struct rdl *r, uint32_t op)
+{
+	uint32_t first, rgb[RDC_CLUT_ENTRIES];
+	size_t n = r->ntok - 2;
+	int ret = rdl_u32(r, 1, &first);
+
+	if (ret)
+		return ret;
+	if (n > RDC_CLUT_ENTRIES)
+		return rdl_err(r, RDC_E_PARSE, "more than %d CLUT entries",
+			       RDC_CLUT_ENTRIES);
+	for (size_t i = 0; i < n; i++) {
+		ret = rdl_rgb(r, i + 2, &rgb[i]);
+		if (ret)
+			return ret;
+	}
+	return rdl_encoded(r, op, rdc_batch_load_clut(r->b, first, rgb, n));
+}
+
+static int st_colour(struct rdl *r, uint32_t op)
+{
+	uint32_t c;
+	int ret = rdl_colour(r, 1, rdl_dst_format(r), &c);
+
+	if (ret)
+		return ret;
+	return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, 0, &c, 1));
+}
+
+static int st_rop(struct rdl *r, uint32_t op)
+{
+	int rop = rdl_rop_by_name(r->tok[1].s);
+	uint32_t v;
+
+	if (rop >= 0) {
+		v = (uint32_t)rop;
+	} else if (rdl_hex(r->tok[1].s[0]) >= 0 || r->tok[1].s[0] == '-') {
+		int ret = rdl_u32(r, 1, &v);
+
+		if (ret)
+			return ret;
+	} else {
+		return rdl_err(r, RDC_E_PARSE, "unknown rop '%.40s'",
+			       r->tok[1].s);
+	}
+	return rdl_encoded(r, op, rdc_batch_rop(r->b, v));
+}
+
+/* The scanout framebuffer as a surface (FB_* shadow registers). */
+static int rdl_screen(struct rdl *r, uint32_t *base, uint32_t *stride,
+		      uint32_t *w, uint32_t *h, uint32_t *fmt)
+{
+	int ret;
+
+	ret = rdc_reg_read(r->dev, RDC_REG_FB_BASE, base);
+	if (!ret)
+		ret = rdc_reg_read(r->dev, RDC_REG_FB_STRIDE, stride);
+	if (!ret)
+		ret = rdc_reg_read(r->dev, RDC_REG_FB_FORMAT, fmt);
+	if (!ret)
+		ret = rdc_reg_read(r->dev, RDC_REG_H_DISPLAY, w);
+	if (!ret)
+		ret = rdc_reg_read(r->dev, RDC_REG_V_DISPLAY, h);
+	return ret ? rdl_fail(r, "reading the framebuffer registers", ret) : 0;
+}
+
+static int st_clip(struct rdl *r, uint32_t op)
+{
+	int c[4];
+	int ret;
+
+	if (r->ntok == 2 && rdl_word(r, 1, "off")) {
+		uint32_t base, stride, w, h, fmt;
+
+		ret = rdl_screen(r, &base, &stride, &w, &h, &fmt);
+		c[0] = c[1] = 0;
+		c[2] = (int)RDC_MIN(w, (uint32_t)INT16_MAX);
+		c[3] = (int)RDC_MIN(h, (uint32_t)INT16_MAX);
+	} else if (r->ntok == 5) {
+		ret = rdl_coords(r, 1, 4, c);
+	} else {
+		return rdl_err(r, RDC_E_PARSE,
+			       "clip takes X0 Y0 X1 Y1 or 'off'");
+	}
+	if (ret)
+		return ret;
+	return rdl_encoded(r, op, rdc_batch_clip(r->b, c[0], c[1], c[2], c[3]));
+}
+
+static int st_surface(struct rdl *r, uint32_t op)
+{
+	uint32_t base, stride, w, h, fmt;
+	int ret;
+
+	if (r->ntok == 2 && rdl_word(r, 1, "screen")) {
+		ret = rdl_screen(r, &base, &stride, &w, &h, &fmt);
+	} else if (r->ntok == 6) {
+		ret = rdl_u32(r, 1, &base);
+		if (!ret)
+			ret = rdl_u32(r, 2, &stride);
+		if (!ret)
+			ret = rdl_size(r, 3, &w);
+		if (!ret)
+			ret = rdl_size(r, 4, &h);
+		if (!ret)
+			ret = rdl_format(r, 5, &fmt);
+	} else {
+		return rdl_err(r, RDC_E_PARSE,
+			       "%s takes BASE STRIDE W H FORMAT or 'screen'",
+			       rdc_op_name(op));
+	}
+	if (ret)
+		return ret;
+	if (op == RDC_OP_SET_DST)
+		ret = rdc_batch_dst(r->b, base, stride, w, h, fmt);
+	else
+		ret = rdc_batch_src(r->b, base, stride, w, h, fmt);
+	return rdl_encoded(r, op, ret);
+}
+
+static int st_points(struct rdl *r, uint32_t op)
+{
+	size_t n = r->ntok - 1;
+	int *c;
+	int ret;
+
+	if (n % 2)
+		return rdl_err(r, RDC_E_PARSE, "%s needs X Y pairs",
+			       rdc_op_name(op));
+	c = malloc((n + 1) * sizeof(*c));
+	if (!c)
+		return rdl_err(r, RDC_E_NOMEM, "out of memory");
+	ret = rdl_coords(r, 1, n, c);
+	if (!ret) {
+		switch (op) {
+		case RDC_OP_PIXEL:
+			ret = rdc_batch_pixel(r->b, c[0], c[1]);
+			break;
+		case RDC_OP_LINE:
+			ret = rdc_batch_line(r->b, c[0], c[1], c[2], c[3]);
+			break;
+		default:
+			ret = rdc_batch_polyline(r->b, c, n / 2);
+			break;
+		}
+		ret = rdl_encoded(r, op, ret);
+	}
+	free(c);
+	return ret;
+}
+
+/* X Y then `nsize` sizes: rect, fill-rect, circles, ellipses. */
+static int st_shape(struct rdl *r, uint32_t op)
+{
+	int c[2];
+	uint32_t s[2] = { 0, 0 };
+	size_t nsize = r->ntok - 3;
+	int ret = rdl_coords(r, 1, 2, c);
+
+	for (size_t i = 0; !ret && i < nsize; i++)
+		ret = rdl_size(r, 3 + i, &s[i]);
+	if (ret)
+		return ret;
+	switch (op) {
+	case RDC_OP_RECT:
+		ret = rdc_batch_rect(r->b, c[0], c[1], s[0], s[1]);
+		break;
+	case RDC_OP_FILL_RECT:
+		ret = rdc_batch_fill_rect(r->b, c[0], c[1], s[0], s[1]);
+		break;
+	case RDC_OP_CIRCLE:
+		ret = rdc_batch_circle(r->b, c[0], c[1], s[0]);
+		break;
+	case RDC_OP_FILL_CIRCLE:
+		ret = rdc_batch_fill_circle(r->b, c[0], c[1], s[0]);
+		break;
+	case RDC_OP_ELLIPSE:
+		ret = rdc_batch_ellipse(r->b, c[0], c[1], s[0], s[1]);
+		break;
+	default:
+		ret = rdc_batch_fill_ellipse(r->b, c[0], c[1], s[0], s[1]);
+		break;
+	}
+	return rdl_encoded(r, op, ret);
+}
+
+static int st_blit(struct rdl *r, uint32_t op)
+{
+	int c[4];
+	uint32_t w, h;
+	int ret = rdl_coords(r, 1, 4, c);
+
+	if (!ret)
+		ret = rdl_size(r, 5, &w);
+	if (!ret)
+		ret = rdl_size(r, 6, &h);
+	if (ret)
+		return ret;
+	return rdl_encoded(r, op,
+			   rdc_batch_blit(r->b, c[0], c[1], c[2], c[3], w, h));
+}
+
+/* Store pixel x of a packed row in format fmt (leftmost in the MSBs). */
+static void rdl_put_pixel(uint8_t *row, uint32_t fmt, uint32_t x, uint32_t v)
+{
+	uint32_t bpp = rdc_format_bpp(fmt);
+
+	if (bpp < 8) {
+		uint32_t bit = x * bpp;
+		uint32_t shift = 8 - bpp - (bit & 7);
+		uint32_t mask = ((1u << bpp) - 1) << shift;
+
+		row[bit / 8] = (uint8_t)((row[bit / 8] & ~mask) |
+					 ((v << shift) & mask));
+		return;
+	}
+	switch (bpp) {
+	case 8:
+		row[x] = (uint8_t)v;
+		break;
+	case 16:
+		rdc_st16(row + 2 * x, v);
+		break;
+	case 24:
+		rdc_st24(row + 3 * x, v);
+		break;
+	default:
+		rdc_st32(row + 4 * x, v);
+		break;
+	}
+}
+
+/* Generated host-blit contents, in the destination format. */
+static int rdl_pattern(struct rdl *r, size_t i, uint32_t fmt, uint32_t w,
+		       uint32_t h, uint8_t *pix, size_t pitch)
+{
+	const char *name = i < r->ntok ? r->tok[i].s : "";
+	uint32_t bpp = rdc_format_bpp(fmt);
+	uint32_t maxv = bpp >= 32 ? 0xffffffu : (1u << bpp) - 1;
+	int ret;
+
+	if (!strcmp(name, "checker")) {
+		uint32_t cell, c0, c1;
+
+		ret = rdl_size(r, i + 1, &cell);
+		if (!ret)
+			ret = rdl_colour(r, i + 2, fmt, &c0);
+		if (!ret)
+			ret = rdl_colour(r, i + 3, fmt, &c1);
+		if (ret)
+			return ret;
+		if (!cell)
+			return rdl_err(r, RDC_E_PARSE, "checker cell size 0");
+		for (uint32_t y = 0; y < h; y++)
+			for (uint32_t x = 0; x < w; x++)
+				rdl_put_pixel(pix + y * pitch, fmt, x,
+					      ((x / cell + y / cell) & 1) ? c1 :
+									  c0);
+		return 0;
+	}
+	if (!strcmp(name, "gradient")) {
+		/* Indexed: a ramp of indices across the width.  RGB: red
+		 * grows to the right, green downwards, blue is half on. */
+		for (uint32_t y = 0; y < h; y++) {
+			for (uint32_t x = 0; x < w; x++) {
+				uint32_t v;
+
+				if (rdc_format_indexed(fmt)) {
+					v = (uint32_t)((uint64_t)x * (maxv + 1) /
+						       w);
+				} else {
+					uint32_t red = x * 255 / RDC_MAX(w - 1, 1u);
+					uint32_t grn = y * 255 / RDC_MAX(h - 1, 1u);
+
+					v = rdl_rgb_to_pixel(red << 16 |
+							     grn << 8 | 0x80,
+							     fmt);
+				}
+				rdl_put_pixel(pix + y * pitch, fmt, x, v);
+			}
+		}
+		return 0;
+	}
+	if (!strcmp(name, "noise")) {
+		uint32_t seed;
+
+		ret = rdl_u32(r, i + 1, &seed);
+		if (ret)
+			return ret;
+		/* xorshift32: the same seed gives the same picture anywhere */
+		seed = seed ? seed : 1;
+		for (uint32_t y = 0; y < h; y++) {
+			for (uint32_t x = 0; x < w; x++) {
+				seed ^= seed << 13;
+				seed ^= seed >> 17;
+				seed ^= seed << 5;
+				rdl_put_pixel(pix + y * pitch, fmt, x,
+					      seed & maxv);
+			}
+		}
+		return 0;
+	}
+	return rdl_err(r, RDC_E_PARSE,
+		       "unknown pattern '%.40s' (checker, gradient, noise)",
+		       name);
+}
+
+static int st_host_blit(struct rdl *r, uint32_t op)
+{
+	uint32_t fmt = rdl_dst_format(r), w, h;
+	size_t pitch;
+	uint8_t *pix;
+	int c[2];
+	int ret = rdl_coords(r, 1, 2, c);
+
+	if (!ret)
+		ret = rdl_size(r, 3, &w);
+	if (!ret)
+		ret = rdl_size(r, 4, &h);
+	if (ret)
+		return ret;
+	if (fmt >= RDC_FMT_COUNT)
+		return rdl_err(r, RDC_E_PARSE, "destination format unknown");
+	if (!w || !h)
+		return rdl_err(r, RDC_E_PARSE, "empty host-blit");
+	pitch = rdc_format_row_bytes(fmt, w);
+	if ((uint64_t)pitch * h > RDL_MAX_BLIT_BYTES)
+		return rdl_err(r, RDC_E_PARSE, "host-blit too large");
+	pix = calloc((size_t)h, pitch);
+	if (!pix)
+		return rdl_err(r, RDC_E_NOMEM, "out of memory");
+	if (rdl_word(r, 5, "pattern")) {
+		ret = rdl_pattern(r, 6, fmt, w, h, pix, pitch);
+	} else if (rdl_word(r, 5, "data")) {
+		if (r->ntok - 6 != (uint64_t)w * h)
+			ret = rdl_err(r, RDC_E_PARSE,
+				      "host-blit data: %zu values for %u pixels",
+				      r->ntok - 6, w * h);
+		for (uint32_t k = 0; !ret && k < w * h; k++) {
+			uint32_t v;
+
+			ret = rdl_colour(r, 6 + k, fmt, &v);
+			if (!ret)
+				rdl_put_pixel(pix + (k / w) * pitch, fmt, k % w,
+					      v);
+		}
+	} else {
+		ret = rdl_err(r, RDC_E_PARSE,
+			      "host-blit X Y W H then 'pattern NAME ...' or 'data PIXELS...'");
+	}
+	if (!ret) {
+		uint64_t busy0, busy1;
+		uint32_t cmds0, cmds1;
+
+		ret = rdl_counters(r, &busy0, &cmds0);
+		if (!ret) {
+			ret = rdc_host_blit(r->dev, c[0], c[1], w, h, pix,
+					    pitch);
+			if (!ret)
+				ret = rdc_idle_wait(r->dev);
+			if (ret)
+				ret = rdl_fail(r, "host-blit", ret);
+		}
+		if (!ret)
+			ret = rdl_counters(r, &busy1, &cmds1);
+		if (!ret)
+			rdl_account(r, op, busy0, cmds0, busy1, cmds1);
+	}
+	free(pix);
+	return ret;
+}
+
+/*
+ * READBACK without the fence rdc_readback adds, so the statement's cycles
+ * are the READBACK's alone: pop RDATA until the DP is idle and it is
+ * empty.
+ */
+static int st_readback(struct rdl *r, uint32_t op)
+{
+	const uint32_t idle = RDC_STATUS_IDLE_MASK | RDC_STATUS_FIFO_EMPTY;
+	struct rdc_wait wt = {
+		.term = {
+			{ RDC_WAIT_GE, RDC_REG_RDATA_COUNT, ~0u, 1 },
+			{ RDC_WAIT_EQ, RDC_REG_STATUS, idle,
+			  RDC_STATUS_FIFO_EMPTY },
+		},
+		.needs_dp = true,
+	};
+	uint32_t crc = 0, words = 0, w, h, expect = 0, cmds0, cmds1;
+	uint64_t busy0, busy1;
+	int c[2];
+	int ret = rdl_coords(r, 1, 2, c);
+
+	if (!ret)
+		ret = rdl_size(r, 3, &w);
+	if (!ret)
+		ret = rdl_size(r, 4, &h);
+	if (!ret && r->ntok == 6)
+		ret = rdl_u32(r, 5, &expect);
+	if (!ret)
+		ret = rdl_counters(r, &busy0, &cmds0);
+	if (ret)
+		return ret;
+	crc = (uint32_t)crc32(0L, Z_NULL, 0);
+	ret = rdc_submit(r->dev,
+			 (const uint32_t[]){ RDC_CMD(RDC_OP_READBACK, 0, 2),
+					     RDC_XY(c[0], c[1]),
+					     RDC_WH(w, h) }, 3);
+	for (;;) {
+		uint32_t count = 0, status = 0;
+
+		if (!ret)
+			ret = r->dev->be->wait(r->dev, &wt);
+		if (!ret)
+			ret = rdc_reg_read(r->dev, RDC_REG_RDATA_COUNT, &count);
+		for (; !ret && count; count--) {
+			uint32_t v;
+			uint8_t b[4];
+
+			ret = rdc_reg_read(r->dev, RDC_REG_RDATA, &v);
+			rdc_st32(b, v);
+			crc = (uint32_t)crc32(crc, b, sizeof(b));
+			words++;
+		}
+		if (!ret)
+			ret = rdc_reg_read(r->dev, RDC_REG_STATUS, &status);
+		if (!ret)
+			ret = rdc_reg_read(r->dev, RDC_REG_RDATA_COUNT, &count);
+		if (ret || ((status & idle) == RDC_STATUS_FIFO_EMPTY && !count))
+			break;
+	}
+	if (!ret)
+		ret = rdc_check_error(r->dev);
+	if (ret)
+		return rdl_fail(r, "readback", ret);
+	ret = rdl_counters(r, &busy1, &cmds1);
+	if (ret)
+		return ret;
+	rdl_account(r, op, busy0, cmds0, busy1, cmds1);
+	r->res->readbacks++;
+	r->res->readback_words = words;
+	r->res->readback_crc = crc;
+	if (r->ntok == 6 && crc != expect)
+		return rdl_err(r, RDC_E_DEVICE,
+			       "readback crc32 %08x, expected %08x", crc,
+			       expect);
+	return 0;
+}
+
+static int st_mono(struct rdl *r, uint32_t op)
+{
+	uint32_t w, h;
+	size_t first = 5, need, have = 0;
+	bool transparent = false;
+	uint8_t *bits;
+	int c[2];
+	int ret = rdl_coords(r, 1, 2, c);
+
+	if (!ret)
+		ret = rdl_size(r, 3, &w);
+	if (!ret)
+		ret = rdl_size(r, 4, &h);
+	if (ret)
+		return ret;
+	if (rdl_word(r, 5, "transparent")) {
+		transparent = true;
+		first++;
+	}
+	need = (size_t)(w + 7) / 8 * h;
+	if (need > RDC_CMD_MAX_ARGS * 4)
+		return rdl_err(r, RDC_E_PARSE, "mono bitmap too large");
+	bits = calloc(need + 1, 1);
+	if (!bits)
+		return rdl_err(r, RDC_E_NOMEM, "out of memory");
+	for (size_t i = first; i < r->ntok && !ret; i++) {
+		const char *s = r->tok[i].s;
+
+		if (r->tok[i].len % 2 || r->tok[i].quoted)
+			ret = rdl_err(r, RDC_E_PARSE,
+				      "mono: '%.40s' is not whole hex bytes",
+				      s);
+		for (; !ret && *s; s += 2) {
+			int hi = rdl_hex(s[0]), lo = rdl_hex(s[1]);
+
+			if (hi < 0 || lo < 0)
+				ret = rdl_err(r, RDC_E_PARSE,
+					      "mono: bad hex digit");
+			else if (have >= need)
+				ret = rdl_err(r, RDC_E_PARSE,
+					      "mono: more than %zu bytes",
+					      need);
+			else
+				bits[have++] = (uint8_t)(hi << 4 | lo);
+		}
+	}
+	if (!ret && have != need)
+		ret = rdl_err(r, RDC_E_PARSE,
+			      "mono: %zu bytes given, %zu needed (H rows of ceil(W/8))",
+			      have, need);
+	if (!ret)
+		ret = rdl_encoded(r, op, rdc_batch_mono(r->b, c[0], c[1], w, h,
+							bits, transparent));
+	free(bits);
+	return ret;
+}
+
+static int st_text(struct rdl *r, uint32_t op)
+{
+	bool transparent = rdl_word(r, 4, "transparent");
+	int c[2];
+	int ret = rdl_coords(r, 1, 2, c);
+
+	if (ret)
+		return ret;
+	if (!r->tok[3].quoted)
+		return rdl_err(r, RDC_E_PARSE, "text needs a \"string\"");
+	if (r->ntok == 5 && !transparent)
+		return rdl_err(r, RDC_E_PARSE, "text: '%.40s' after the string",
+			       r->tok[4].s);
+	return rdl_encoded(r, op, rdc_batch_text(r->b, c[0], c[1], r->tok[3].s,
+						 r->tok[3].len, transparent));
+}
+
+/* `raw WORD...`: words straight into the FIFO, headers included. */
+static int st_raw(struct rdl *r, uint32_t op)
+{
+	size_t n = r->ntok - 1;
+	uint32_t *w = malloc((n + 1) * sizeof(*w));
+	uint64_t busy0, busy1;
+	uint32_t cmds0, cmds1;
+	int ret = 0;
+
+	(void)op;
+	if (!w)
+		return rdl_err(r, RDC_E_NOMEM, "out of memory");
+	for (size_t i = 0; i < n && !ret; i++)
+		ret = rdl_u32(r, i + 1, &w[i]);
+	if (!ret)
+		ret = rdl_counters(r, &busy0, &cmds0);
+	if (!ret) {
+		ret = rdc_submit(r->dev, w, n);
+		if (!ret)
+			ret = rdc_idle_wait(r->dev);
+		if (ret)
+			ret = rdl_fail(r, "raw", ret);
+	}
+	if (!ret)
+		ret = rdl_counters(r, &busy1, &cmds1);
+	if (!ret)
+		rdl_account(r, RDC_CMD_OP(w[0]), busy0, cmds0, busy1, cmds1);
+	free(w);
+	return ret;
+}
+
+/* `cmd OPCODE [ARG...]`: any opcode with its argument count. */
+static int st_cmd(struct rdl *r, uint32_t op)
+{
+	size_t n = r->ntok - 2;
+	uint32_t *a = malloc((n + 1) * sizeof(*a));
+	uint32_t code;
+	int ret;
+
+	(void)op;
+	if (!a)
+		return rdl_err(r, RDC_E_NOMEM, "out of memory");
+	ret = rdl_u32(r, 1, &code);
+	if (!ret && code > 0xff)
+		ret = rdl_err(r, RDC_E_PARSE, "opcode above 0xff");
+	for (size_t i = 0; i < n && !ret; i++)
+		ret = rdl_u32(r, i + 2, &a[i]);
+	if (!ret)
+		ret = rdl_encoded(r, code, rdc_batch_cmd(r->b, code, 0, a, n));
+	free(a);
+	return ret;
+}
+
+/* ---- Host-side statements ----------------------------------------------- */
+
+static int st_mode(struct rdl *r, uint32_t op)
+{
+	uint32_t fmt = RDC_FMT_XRGB8888, base = 0, preset;
+	uint64_t busy0, busy1;
+	uint32_t cmds0, cmds1;
+	int p = rdc_preset_by_name(r->tok[1].s);
+	int ret = 0;
+
+	if (p < 0) {
+		ret = rdl_u32(r, 1, &preset);
+		if (ret)
+			return rdl_err(r, RDC_E_PARSE,
+				       "unknown mode '%.40s'", r->tok[1].s);
+	} else {
+		preset = (uint32_t)p;
+	}
+	if (r->ntok > 2)
+		ret = rdl_format(r, 2, &fmt);
+	if (!ret && r->ntok > 3)
+		ret = rdl_u32(r, 3, &base);
+	if (!ret)
+		ret = rdl_counters(r, &busy0, &cmds0);
+	if (ret)
+		return ret;
+	ret = rdc_mode_set(r->dev, preset, fmt, base);
+	if (!ret)
+		ret = rdc_idle_wait(r->dev);
+	if (ret)
+		return rdl_fail(r, "mode", ret);
+	ret = rdl_counters(r, &busy1, &cmds1);
+	if (!ret)
+		rdl_account(r, op, busy0, cmds0, busy1, cmds1);
+	return ret;
+}
+
+static int st_reg(struct rdl *r, uint32_t op)
+{
+	uint32_t reg, val;
+	int ret = rdl_reg(r, 1, &reg);
+
+	(void)op;
+	if (!ret)
+		ret = rdl_u32(r, 2, &val);
+	if (ret)
+		return ret;
+	ret = rdc_reg_write(r->dev, reg, val);
+	return ret ? rdl_fail(r, "reg", ret) : 0;
+}
+
+static int st_expect(struct rdl *r, uint32_t op)
+{
+	uint32_t reg, val, have;
+	int ret = rdl_reg(r, 1, &reg);
+
+	(void)op;
+	if (!ret)
+		ret = rdl_u32(r, 2, &val);
+	if (ret)
+		return ret;
+	ret = rdc_reg_read(r->dev, reg, &have);
+	if (ret)
+		return rdl_fail(r, "expect", ret);
+	if (have != val)
+		return rdl_err(r, RDC_E_DEVICE,
+			       "expect %s: read 0x%08x, expected 0x%08x",
+			       r->tok[1].s, have, val);
+	return 0;
+}
+
+static int st_palette(struct rdl *r, uint32_t op)
+{
+	uint32_t first, rgb;
+	int ret = rdl_u32(r, 1, &first);
+
+	(void)op;
+	if (ret)
+		return ret;
+	if (first >= RDC_CLUT_ENTRIES)
+		return rdl_err(r, RDC_E_PARSE, "palette index above 255");
+	ret = rdc_reg_write(r->dev, RDC_REG_CLUT_INDEX, first);
+	for (size_t i = 2; i < r->ntok && !ret; i++) {
+		ret = rdl_rgb(r, i, &rgb);
+		if (ret)
+			return ret;
+		ret = rdc_reg_write(r->dev, RDC_REG_CLUT_DATA, rgb);
+	}
+	return ret ? rdl_fail(r, "palette", ret) : 0;
+}
+
+static int st_step(struct rdl *r, uint32_t op)
+{
+	int64_t v;
+	int ret = rdl_int(r, 1, 0, (int64_t)RDL_MAX_STEP, &v);
+
+	(void)op;
+	if (ret)
+		return ret;
+	ret = rdc_sim_step(r->dev, (uint64_t)v);
+	return ret ? rdl_fail(r, "step", ret) : 0;
+}
+
+static int st_run_until(struct rdl *r, uint32_t op)
+{
+	uint64_t now;
+	int64_t v;
+	int ret = rdl_int(r, 1, 0, INT64_MAX >> 24, &v);
+
+	(void)op;
+	if (ret)
+		return ret;
+	ret = rdc_sim_time(r->dev, &now);
+	if (!ret && (uint64_t)v > now && (uint64_t)v - now > RDL_MAX_STEP)
+		return rdl_err(r, RDC_E_PARSE, "run-until: more than %llu cycles ahead",
+			       (unsigned long long)RDL_MAX_STEP);
+	if (!ret)
+		ret = rdc_sim_run_until(r->dev, (uint64_t)v);
+	return ret ? rdl_fail(r, "run-until", ret) : 0;
+}
+
+static int st_wait_frame(struct rdl *r, uint32_t op)
+{
+	int ret = rdc_frame_wait(r->dev);
+
+	(void)op;
+	return ret ? rdl_fail(r, "wait-frame", ret) : 0;
+}
+
+static int st_vsync(struct rdl *r, uint32_t op)
+{
+	int ret = rdc_vblank_wait(r->dev);
+
+	(void)op;
+	if (ret)
+		return rdl_fail(r, "vsync", ret);
+	r->res->frame_ready = 1;
+	return 0;
+}
+
+static int st_finish(struct rdl *r, uint32_t op)
+{
+	int ret = rdc_finish(r->dev);
+
+	(void)op;
+	return ret ? rdl_fail(r, "finish", ret) : 0;
+}
+
+static int st_reset(struct rdl *r, uint32_t op)
+{
+	int ret = rdc_reset(r->dev);
+
+	(void)op;
+	return ret ? rdl_fail(r, "reset", ret) : 0;
+}
+
+static int st_screenshot(struct rdl *r, uint32_t op)
+{
+	uint32_t *pix, w, h;
+	int ret;
+
+	(void)op;
+	ret = rdc_frame_wait(r->dev);
+	if (!ret)
+		ret = rdc_frame_alloc(r->dev, &pix, &w, &h);
+	if (ret)
+		return rdl_fail(r, "screenshot", ret);
+	ret = rdc_png_write(r->tok[1].s, pix, w, h, w);
+	free(pix);
+	if (ret)
+		return rdl_err(r, ret, "screenshot: cannot write '%.80s': %s",
+			       r->tok[1].s, rdc_strerror(ret));
+	return 0;
+}
+
+#define RDL_ANY 0x7fffffffu
+static const struct rdl_stmt {
+	const char *name;
+	rdl_fn fn;
+	uint32_t op; /* command class the statement's cycles go to */
+	uint32_t min, max; /* argument count */
+} rdl_stmts[] = {
+	/* device commands */
+	{ "nop", st_nop, RDC_OP_NOP, 0, 1 },
+	{ "fence", st_words, RDC_OP_FENCE, 1, 1 },
+	{ "wait-vblank", st_words, RDC_OP_WAIT_VBLANK, 0, 0 },
+	{ "wait-line", st_words, RDC_OP_WAIT_LINE, 1, 1 },
+	{ "cmd-reg", st_cmd_reg, RDC_OP_REG_WRITE, 2, 2 },
+	{ "load-clut", st_load_clut, RDC_OP_LOAD_CLUT, 2, RDL_ANY },
+	{ "call", st_words, RDC_OP_CALL, 1, 1 },
+	{ "ret", st_words, RDC_OP_RET, 0, 0 },
+	{ "jump", st_words, RDC_OP_JUMP, 1, 1 },
+	{ "fg", st_colour, RDC_OP_SET_FG, 1, 1 },
+	{ "bg", st_colour, RDC_OP_SET_BG, 1, 1 },
+	{ "rop", st_rop, RDC_OP_SET_ROP, 1, 1 },
+	{ "clip", st_clip, RDC_OP_SET_CLIP, 1, 4 },
+	{ "dst", st_surface, RDC_OP_SET_DST, 1, 5 },
+	{ "src", st_surface, RDC_OP_SET_SRC, 1, 5 },
+	{ "pixel", st_points, RDC_OP_PIXEL, 2, 2 },
+	{ "line", st_points, RDC_OP_LINE, 4, 4 },
+	{ "polyline", st_points, RDC_OP_POLYLINE, 4, RDL_ANY },
+	{ "rect", st_shape, RDC_OP_RECT, 4, 4 },
+	{ "fill-rect", st_shape, RDC_OP_FILL_RECT, 4, 4 },
+	{ "fill", st_shape, RDC_OP_FILL_RECT, 4, 4 },
+	{ "circle", st_shape, RDC_OP_CIRCLE, 3, 3 },
+	{ "fill-circle", st_shape, RDC_OP_FILL_CIRCLE, 3, 3 },
+	{ "ellipse", st_shape, RDC_OP_ELLIPSE, 4, 4 },
+	{ "fill-ellipse", st_shape, RDC_OP_FILL_ELLIPSE, 4, 4 },
+	{ "blit", st_blit, RDC_OP_BLIT, 6, 6 },
+	{ "host-blit", st_host_blit, RDC_OP_HOST_BLIT, 6, RDL_ANY },
+	{ "readback", st_readback, RDC_OP_READBACK, 4, 5 },
+	{ "mono", st_mono, RDC_OP_MONO, 4, RDL_ANY },
+	{ "text", st_text, RDC_OP_TEXT, 3, 4 },
+	{ "cmd", st_cmd, RDC_OP_NOP, 1, RDC_CMD_MAX_ARGS + 1 },
+	{ "raw", st_raw, RDC_OP_NOP, 1, RDL_ANY },
+	/* host side */
+	{ "mode", st_mode, RDC_OP_SET_DST, 1, 3 },
+	{ "reg", st_reg, 0, 2, 2 },
+	{ "expect", st_expect, 0, 2, 2 },
+	{ "palette", st_palette, 0, 2, RDC_CLUT_ENTRIES + 1 },
+	{ "step", st_step, 0, 1, 1 },
+	{ "run-until", st_run_until, 0, 1, 1 },
+	{ "wait-frame", st_wait_frame, 0, 0, 0 },
+	{ "vsync", st_vsync, 0, 0, 0 },
+	{ "finish", st_finish, 0, 0, 0 },
+	{ "reset", st_reset, 0, 0, 0 },
+	{ "screenshot", st_screenshot, 0, 1, 1 },
+};
+
+static int rdl_statement(struct rdl *r)
+{
+	const struct rdl_tok *kw = &r->tok[0];
+	uint32_t nargs = (uint32_t)RDC_MIN(r->ntok - 1, (size_t)RDL_ANY - 1);
+
+	if (kw->quoted)
+		return rdl_err(r, RDC_E_PARSE, "statement starts with a string");
+	for (size_t i = 0; i < RDC_ARRAY_SIZE(rdl_stmts); i++) {
+		const struct rdl_stmt *st = &rdl_stmts[i];
+
+		if (strcmp(kw->s, st->name))
+			continue;
+		if (nargs < st->min || nargs > st->max)
+			return rdl_err(r, RDC_E_PARSE,
+				       "%s: %u arguments (takes %u%s)",
+				       st->name, nargs, st->min,
+				       st->max == st->min ? "" :
+				       st->max == RDL_ANY ? " or more" :
+							    " or more, within limits");
+		rdc_batch_reset(r->b);
+		r->res->frame_ready = 0;
+		return st->fn(r, st->op);
+	}
+	return rdl_err(r, RDC_E_PARSE, "unknown statement '%.40s'", kw->s);
+}
+
+/* Copy the next logical line (joining "\\\n" continuations) into r->buf. */
+static int rdl_next_line(struct rdl *r, const char **pos, const char *end,
+			 uint32_t *phys)
+{
+	size_t n = 0;
+	const char *p = *pos;
+
+	r->line = *phys + 1;
+	while (p < end) {
+		const char *nl = memchr(p, '\n', (size_t)(end - p));
+		size_t len = nl ? (size_t)(nl - p) : (size_t)(end - p);
+		bool cont;
+
+		(*phys)++;
+		if (memchr(p, '\0', len))
+			return rdl_err(r, RDC_E_PARSE, "NUL byte in line");
+		if (len && p[len - 1] == '\r')
+			len--; /* CRLF files */
+		cont = len && p[len - 1] == '\\';
+		if (cont)
+			len--;
+		if (n + len + 2 > RDL_MAX_LINE)
+			return rdl_err(r, RDC_E_PARSE, "line too long");
+		if (n + len + 2 > r->buf_cap) {
+			size_t cap = RDC_MAX(r->buf_cap * 2, n + len + 2);
+			char *b = realloc(r->buf, cap);
+
+			if (!b)
+				return rdl_err(r, RDC_E_NOMEM, "out of memory");
+			r->buf = b;
+			r->buf_cap = cap;
+		}
+		memcpy(r->buf + n, p, len);
+		n += len;
+		r->buf[n++] = ' ';
+		p = nl ? nl + 1 : end;
+		if (!cont)
+			break;
+	}
+	*pos = p;
+	if (!r->buf)
+		return 0;
+	r->buf[n] = 0;
+	return 0;
+}
+
+int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
+		   struct rdc_script_result *res)
+{
+	struct rdc_script_result local;
+	struct rdl r = { .dev = dev };
+	const char *pos = text, *end = text + len;
+	uint32_t phys = 0;
+	int ret = 0;
+
+	if (!res)
+		res = &local;
+	memset(res, 0, sizeof(*res));
+	r.res = res;
+	if (!dev || (!text && len))
+		return RDC_E_INVAL;
+	r.b = rdc_batch_new();
+	if (!r.b)
+		return rdl_err(&r, RDC_E_NOMEM, "out of memory");
+	while (!ret && pos < end) {
+		ret = rdl_next_line(&r, &pos, end, &phys);
+		if (!ret && r.buf)
+			ret = rdl_tokenize(&r);
+		if (!ret && r.ntok)
+			ret = rdl_statement(&r);
+	}
+	rdc_batch_free(r.b);
+	free(r.tok);
+	free(r.buf);
+	return ret;
+}
+
+int rdc_script_frame_wait(rdc_dev *dev, const struct rdc_script_result *res)
+{
+	if (!dev || !res)
+		return RDC_E_INVAL;
+	return res->frame_ready ? 0 : rdc_frame_wait(dev);
+}
+
+int rdc_script_run_file(rdc_dev *dev, const char *path,
+			struct rdc_script_result *res)
+{
+	struct rdc_script_result local;
+	char *text = NULL;
+	size_t len = 0, cap = 0;
+	FILE *f;
+	int ret;
+
+	if (!res)
+		res = &local;
+	memset(res, 0, sizeof(*res));
+	if (!dev || !path)
+		return RDC_E_INVAL;
+	f = fopen(path, "rb");
+	if (!f) {
+		snprintf(res->error_msg, sizeof(res->error_msg),
+			 "cannot open '%.100s': %s", path, strerror(errno));
+		return RDC_E_FILE;
+	}
+	for (;;) {
+		size_t got;
+
+		if (len == cap) {
+			char *t;
+
+			if (cap >= RDL_MAX_FILE) {
+				ret = RDC_E_FILE;
+				snprintf(res->error_msg,
+					 sizeof(res->error_msg),
+					 "'%.100s' is larger than %u bytes",
+					 path, RDL_MAX_FILE);
+				goto out;
+			}
+			cap = cap ? cap * 2 : 65536;
+			t = realloc(text, cap);
+			if (!t) {
+				ret = RDC_E_NOMEM;
+				goto out;
+			}
+			text = t;
+		}
+		got = fread(text + len, 1, cap - len, f);
+		len += got;
+		if (got == 0)
+			break;
+	}
+	if (ferror(f)) {
+		ret = RDC_E_FILE;
+		snprintf(res->error_msg, sizeof(res->error_msg),
+			 "cannot read '%.100s'", path);
+		goto out;
+	}
+	ret = rdc_script_run(dev, text, len, res);
+out:
+	fclose(f);
+	free(text);
+	return ret;
+}

@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * rdcctl: run .rdl scripts against an RDC-1, dump its registers and
+ * counters, save what it shows.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "rdc.h"
+
+#define RDCCTL_DEFAULT_URI "sim:"
+
+static void usage(FILE *f)
+{
+	fputs("usage: rdcctl [--uri URI] COMMAND [ARGS]\n"
+	      "\n"
+	      "commands:\n"
+	      "  run FILE.rdl [-o OUT.png]  run a script, wait for the next\n"
+	      "                             complete frame, print cycles per\n"
+	      "                             command class, the simulated time\n"
+	      "                             and the frame's CRC-32; -o saves it\n"
+	      "  regs [FILE.rdl]            print every register (after the\n"
+	      "                             script, if one is given)\n"
+	      "  stats [FILE.rdl]           print the performance counters\n"
+	      "\n"
+	      "options:\n"
+	      "  --uri URI   device to use (default " RDCCTL_DEFAULT_URI
+	      ", e.g. sim:vram=4M)\n"
+	      "  -h, --help  this text\n"
+	      "\n"
+	      "The script format is described in docs/rdl.md.\n",
+	      f);
+}
+
+struct opts {
+	const char *uri;
+	const char *cmd;
+	const char *script;
+	const char *png;
+};
+
+static int parse_args(int argc, char **argv, struct opts *o)
+{
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i];
+
+		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+			usage(stdout);
+			exit(0);
+		} else if (!strcmp(a, "--uri") || !strcmp(a, "-o")) {
+			if (i + 1 >= argc) {
+				fprintf(stderr, "rdcctl: %s needs a value\n",
+					a);
+				return -1;
+			}
+			if (a[1] == 'o')
+				o->png = argv[++i];
+			else
+				o->uri = argv[++i];
+		} else if (!strncmp(a, "--uri=", 6)) {
+			o->uri = a + 6;
+		} else if (a[0] == '-' && a[1]) {
+			fprintf(stderr, "rdcctl: unknown option '%s'\n", a);
+			return -1;
+		} else if (!o->cmd) {
+			o->cmd = a;
+		} else if (!o->script) {
+			o->script = a;
+		} else {
+			fprintf(stderr, "rdcctl: unexpected argument '%s'\n",
+				a);
+			return -1;
+		}
+	}
+	if (!o->cmd) {
+		usage(stderr);
+		return -1;
+	}
+	return 0;
+}
+
+static int run_script(rdc_dev *dev, const char *path,
+		      struct rdc_script_result *res)
+{
+	int ret = rdc_script_run_file(dev, path, res);
+
+	if (!ret)
+		return 0;
+	if (res->error_line)
+		fprintf(stderr, "%s:%u: error: %s\n", path, res->error_line,
+			res->error_msg);
+	else if (res->error_msg[0])
+		fprintf(stderr, "rdcctl: %s\n", res->error_msg);
+	else
+		fprintf(stderr, "rdcctl: %s: %s\n", path, rdc_strerror(ret));
+	return ret;
+}
+
+static void print_classes(const struct rdc_script_result *res)
+{
+	printf("%-14s %10s %14s\n", "class", "commands", "cycles");
+	for (uint32_t op = 0; op < 256; op++) {
+		const char *name = rdc_op_name(op);
+		char buf[16];
+
+		if (!res->op_count[op] && !res->op_cycles[op])
+			continue;
+		if (!name) {
+			snprintf(buf, sizeof(buf), "op-0x%02x", op);
+			name = buf;
+		}
+		printf("%-14s %10llu %14llu\n", name,
+		       (unsigned long long)res->op_count[op],
+		       (unsigned long long)res->op_cycles[op]);
+	}
+}
+
+static int cmd_run(rdc_dev *dev, const struct opts *o)
+{
+	struct rdc_script_result *res = calloc(1, sizeof(*res));
+	uint32_t *pix = NULL, w = 0, h = 0, crc, hz = 0;
+	uint64_t t = 0;
+	int ret;
+
+	if (!res)
+		return RDC_E_NOMEM;
+	if (!o->script) {
+		fprintf(stderr, "rdcctl: run needs a script\n");
+		free(res);
+		return RDC_E_INVAL;
+	}
+	ret = run_script(dev, o->script, res);
+	if (ret)
+		goto out;
+	ret = rdc_sim_time(dev, &t);
+	if (!ret)
+		ret = rdc_sim_core_hz(dev, &hz);
+	if (!ret)
+		ret = rdc_script_frame_wait(dev, res);
+	if (!ret)
+		ret = rdc_frame_grab(dev, NULL, 0, &w, &h);
+	if (ret == RDC_E_RANGE) {
+		pix = malloc(((size_t)w * h + 1) * sizeof(*pix));
+		ret = pix ? rdc_frame_grab(dev, pix, (size_t)w * h, &w, &h) :
+			    RDC_E_NOMEM;
+	}
+	if (ret) {
+		fprintf(stderr, "rdcctl: frame: %s\n", rdc_strerror(ret));
+		goto out;
+	}
+	ret = rdc_frame_crc(dev, &crc);
+	if (ret) {
+		fprintf(stderr, "rdcctl: crc: %s\n", rdc_strerror(ret));
+		goto out;
+	}
+	print_classes(res);
+	if (res->readbacks)
+		printf("readback crc32 %08x (%u words)\n", res->readback_crc,
+		       res->readback_words);
+	printf("total %llu cycles (%.3f ms at %u Hz)\n", (unsigned long long)t,
+	       hz ? (double)t * 1000.0 / hz : 0.0, hz);
+	printf("frame %ux%u\n", w, h);
+	printf("crc32 %08x\n", crc);
+	if (o->png) {
+		ret = rdc_png_write(o->png, pix, w, h, w);
+		if (ret)
+			fprintf(stderr, "rdcctl: %s: %s\n", o->png,
+				rdc_strerror(ret));
+	}
+out:
+	free(pix);
+	free(res);
+	return ret;
+}
+
+static int cmd_regs(rdc_dev *dev)
+{
+	for (size_t i = 0; i < rdc_reg_count(); i++) {
+		uint32_t reg, v;
+		const char *name = rdc_reg_info(i, &reg);
+		int ret;
+
+		/* Reading these pops or changes state; show them as such. */
+		if (reg == RDC_REG_RDATA || reg == RDC_REG_FIFO_DATA ||
+		    reg == RDC_REG_PERF_CTRL) {
+			printf("0x%03x %-18s (not read)\n", reg, name);
+			continue;
+		}
+		ret = rdc_reg_read(dev, reg, &v);
+		if (ret) {
+			fprintf(stderr, "rdcctl: %s: %s\n", name,
+				rdc_strerror(ret));
+			return ret;
+		}
+		printf("0x%03x %-18s 0x%08x %u\n", reg, name, v, v);
+	}
+	return 0;
+}
+
+static int cmd_stats(rdc_dev *dev)
+{
+	struct rdc_stats st;
+	uint32_t hz = 0;
+	int ret = rdc_stats_get(dev, &st);
+
+	if (!ret)
+		ret = rdc_sim_core_hz(dev, &hz);
+	if (ret) {
+		fprintf(stderr, "rdcctl: stats: %s\n", rdc_strerror(ret));
+		return ret;
+	}
+	printf("time         %llu cycles (%.3f ms)\n",
+	       (unsigned long long)st.time,
+	       hz ? (double)st.time * 1000.0 / hz : 0.0);
+	printf("busy         %llu\n", (unsigned long long)st.busy);
+	printf("stall        %llu\n", (unsigned long long)st.stall);
+	printf("pixels       %llu\n", (unsigned long long)st.pixels);
+	printf("commands     %u\n", st.cmds);
+	printf("last-cycles  %u\n", st.last_cycles);
+	printf("last-opcode  0x%02x %s\n", st.last_opcode,
+	       rdc_op_name(st.last_opcode) ? rdc_op_name(st.last_opcode) : "");
+	printf("frames       %llu\n", (unsigned long long)st.frames);
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	struct opts o = { .uri = RDCCTL_DEFAULT_URI };
+	rdc_dev *dev;
+	int ret;
+
+	if (parse_args(argc, argv, &o))
+		return 2;
+	if (strcmp(o.cmd, "run") && strcmp(o.cmd, "regs") &&
+	    strcmp(o.cmd, "stats")) {
+		fprintf(stderr, "rdcctl: unknown command '%s' (try --help)\n",
+			o.cmd);
+		return 2;
+	}
+	ret = rdc_open(o.uri, &dev);
+	if (ret) {
+		fprintf(stderr, "rdcctl: cannot open '%s': %s\n", o.uri,
+			rdc_strerror(ret));
+		return 1;
+	}
+	if (!strcmp(o.cmd, "run")) {
+		ret = cmd_run(dev, &o);
+	} else {
+		struct rdc_script_result *res = calloc(1, sizeof(*res));
+
+		ret = res ? 0 : RDC_E_NOMEM;
+		if (!ret && o.script)
+			ret = run_script(dev, o.script, res);
+		free(res);
+		if (!ret)
+			ret = !strcmp(o.cmd, "regs") ? cmd_regs(dev) :
+						       cmd_stats(dev);
+	}
+	rdc_close(dev);
+	return ret ? 1 : 0;
+}
