@@ -69,7 +69,7 @@ static void cmd_done(struct rdc_dp *dp)
 	uint64_t cycles = hw->now - dp->cmd_start;
 
 	hw->perf.cmds++;
-	hw->perf.last_cycles = (uint32_t)RDC_MIN(cycles, (uint64_t)UINT32_MAX);
+	hw->perf.last_cycles = (uint32_t)RDC_MIN(cycles, (uint64_t)0xffffffffu);
 	hw->perf.last_opcode = RDC_CMD_OP(dp->cmd[0]);
 	hw->perf.busy += cycles;
 	if (dp->phase != RDC_DP_HALTED)

@@ -214,7 +214,10 @@ static void col_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t x,
 		return;
 	for (k = 0; k < count; k++) {
 		uint8_t *q = p + (size_t)k * s->stride;
-		uint32_t d = rdc_rop_reads_dst(rop) ? px_ld(q, bpp, bit & 7) : 0;
+		uint32_t d = 0;
+
+		if (rdc_rop_reads_dst(rop))
+			d = px_ld(q, bpp, bit & 7);
 
 		px_st(q, bpp, bit & 7, rdc_rop_apply(rop, colour, d) & mask);
 	}
@@ -707,7 +710,8 @@ void rdc_dp_readback_pack(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 	unsigned int bpp = rdc_format_bpp(s->format);
 	uint64_t byte0 = (uint64_t)word * 4, byte1 = byte0 + (uint64_t)n * 4;
 	int64_t k0 = (int64_t)(byte0 * 8 / bpp);
-	int64_t k1 = RDC_MIN((int64_t)((byte1 * 8 + bpp - 1) / bpp), (int64_t)w);
+	int64_t k1 = RDC_MIN((int64_t)((byte1 * 8 + bpp - 1) / bpp),
+			     (int64_t)w);
 	int64_t sy = (int64_t)y + row, va, vb, k;
 	const uint8_t *p = NULL;
 	uint64_t pbit0 = 0;

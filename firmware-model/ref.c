@@ -9,19 +9,19 @@
 void rdc_ref_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
 		  rdc_ref_plot_fn plot, void *ctx)
 {
-	int32_t dx = x1 - x0, dy = y1 - y0, adx, ady, sx, sy, i;
+	int32_t dx = x1 - x0, dy = y1 - y0, sx, sy, i;
+	int32_t adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
 	int64_t d;
-
-	adx = dx < 0 ? -dx : dx;
-	ady = dy < 0 ? -dy : dy;
 	/* Canonical direction: along the major axis, increasing. */
-	if ((adx >= ady && adx > 0 && dx < 0) || ((adx < ady || !adx) && dy < 0)) {
+	bool xmajor = adx >= ady && adx > 0;
+
+	if ((xmajor && dx < 0) || (!xmajor && dy < 0)) {
 		rdc_ref_line(x1, y1, x0, y0, plot, ctx);
 		return;
 	}
 	sx = dx < 0 ? -1 : 1;
 	sy = dy < 0 ? -1 : 1;
-	if (adx >= ady && adx > 0) {
+	if (xmajor) {
 		/* Bresenham; a tie (d == 0) steps the minor axis. */
 		d = 2 * (int64_t)ady - adx;
 		for (i = 0; i <= adx; i++) {

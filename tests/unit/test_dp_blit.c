@@ -72,7 +72,8 @@ static void test_blit_random(void **state)
 		ds = ss;
 		if (mode == 1) {
 			/* same stride, shifted a few bytes/rows: overlap */
-			ds.base = ss.base + (uint32_t)tdp_range(&rng, 0, 3 * ss.stride);
+			ds.base = ss.base + (uint32_t)tdp_range(&rng, 0,
+								3 * ss.stride);
 			if (tdp_rand(&rng) % 2) {
 				uint32_t tmp = ds.base;
 
@@ -398,8 +399,8 @@ static void test_mono_text_random(void **state)
 		tdp_drain(t);
 		assert_int_equal(tdp_err(t), RDC_ERR_NONE);
 		if (memcmp(want, t->vram, WIN))
-			fail_msg("%s %u: fmt %u rop %u tr %d", text ? "text" : "mono",
-				 k, fmt, rop, tr);
+			fail_msg("%s %u: fmt %u rop %u tr %d",
+				 text ? "text" : "mono", k, fmt, rop, tr);
 	}
 	free(want);
 }

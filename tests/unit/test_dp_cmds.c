@@ -493,6 +493,103 @@ static void test_readback_large(void **state)
 			 RDC_OP_READBACK);
 }
 
+/* ---- decoder ----------------------------------------------------------- */
+
+/* run() stops at the first command boundary at or after `until`. */
+static void test_until_boundary(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t cmds = rdc_hw_read(&t->hw, RDC_REG_PERF_CMDS);
+
+	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(0, 0), RDC_WH(640, 480));
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(0, 0));
+	TDP_CMD(t, RDC_OP_SET_FG, 5);
+	rdc_hw_run_until(&t->hw, t->hw.now + 1);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_CMDS), cmds + 1);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_OPCODE),
+			 RDC_OP_FILL_RECT);
+	expect_pixel(t, 639, 479, 0xffffffffu);
+	assert_false(rdc_hw_read(&t->hw, RDC_REG_STATUS) &
+		     RDC_STATUS_FIFO_EMPTY);
+	tdp_drain(t);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_CMDS), cmds + 3);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_PIXELS_LO),
+			 640 * 480 + 1);
+}
+
+/* A command whose words come late waits in FETCH, BUSY and WAIT set. */
+static void test_fetch_wait(void **state)
+{
+	struct tdp *t = *state;
+	uint64_t t0;
+
+	t0 = t->hw.now;
+	tdp_push(t, RDC_CMD(RDC_OP_HOST_BLIT, 0, 4));
+	tdp_push(t, RDC_XY(30, 40));
+	tdp_push(t, RDC_WH(2, 1));
+	rdc_hw_run_until(&t->hw, t->hw.now + 1000);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_STATUS) &
+				 RDC_STATUS_IDLE_MASK,
+			 RDC_STATUS_DP_BUSY | RDC_STATUS_DP_WAIT);
+	expect_pixel(t, 30, 40, 0);
+	tdp_push(t, 0x123456);
+	tdp_push(t, 0x654321);
+	tdp_drain(t);
+	expect_pixel(t, 30, 40, 0x123456);
+	expect_pixel(t, 31, 40, 0x654321);
+	assert_true(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES) >= 1000);
+	assert_true(t->hw.now - t0 >= 1000);
+}
+
+/* The FIFO is served before the ring. */
+static void test_fifo_before_ring(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t base = 0x200000, size = 64, tail = 0;
+
+	ring_put(t, base, size, &tail, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+	ring_put(t, base, size, &tail, 0x22);
+	ring_put(t, base, size, &tail, RDC_CMD(RDC_OP_PIXEL, 0, 1));
+	ring_put(t, base, size, &tail, RDC_XY(50, 50));
+	TDP_CMD(t, RDC_OP_SET_FG, 0x11);
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(50, 50));
+	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(51, 50));
+	rdc_hw_write(&t->hw, RDC_REG_RING_BASE, base);
+	rdc_hw_write(&t->hw, RDC_REG_RING_SIZE, size);
+	rdc_hw_write(&t->hw, RDC_REG_RING_HEAD, 0);
+	rdc_hw_write(&t->hw, RDC_REG_RING_TAIL, tail);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_RING_EN);
+	tdp_drain(t);
+	rdc_hw_run_until(&t->hw, t->hw.now + TDP_RUN_STEP);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_RING_HEAD), tail);
+	/* the FIFO's pixels first, then the ring's over (50, 50) */
+	expect_pixel(t, 50, 50, 0x22);
+	expect_pixel(t, 51, 50, 0x11);
+}
+
+/* A closed polyline drawn with XOR keeps every vertex pixel. */
+static void test_polyline_closed_xor(void **state)
+{
+	struct tdp *t = *state;
+	const uint32_t pts[] = { RDC_XY(10, 10), RDC_XY(60, 12),
+				 RDC_XY(30, 50), RDC_XY(10, 10) };
+
+	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_XOR);
+	TDP_CMD(t, RDC_OP_SET_FG, 0xff);
+	tdp_cmd(t, RDC_OP_POLYLINE, 0, 4, pts);
+	tdp_drain(t);
+	expect_pixel(t, 10, 10, 0xff);
+	expect_pixel(t, 60, 12, 0xff);
+	expect_pixel(t, 30, 50, 0xff);
+	/* drawn again, it cancels out */
+	tdp_cmd(t, RDC_OP_POLYLINE, 0, 4, pts);
+	tdp_drain(t);
+	expect_pixel(t, 10, 10, 0);
+	expect_pixel(t, 60, 12, 0);
+	expect_pixel(t, 30, 50, 0);
+}
+
 /* ---- cycle counts ---------------------------------------------------- */
 
 enum { K_READ, K_WRITE, K_RMW };
@@ -659,6 +756,10 @@ int main(void)
 		TDP_TEST(test_ring),
 		TDP_TEST(test_ring_bad),
 		TDP_TEST(test_readback_large),
+		TDP_TEST(test_until_boundary),
+		TDP_TEST(test_fetch_wait),
+		TDP_TEST(test_fifo_before_ring),
+		TDP_TEST(test_polyline_closed_xor),
 		TDP_TEST(test_cycles_fill),
 		TDP_TEST(test_cycles_pixel),
 		TDP_TEST(test_cycles_rmw),

@@ -334,9 +334,12 @@ static void test_line_translation(void **state)
 
 	tdp_set_surface(t, RDC_OP_SET_DST, &sq);
 	for (k = 0; k < 200; k++) {
-		int32_t x0 = tdp_range(&rng, 0, 200), y0 = tdp_range(&rng, 0, 200);
-		int32_t x1 = tdp_range(&rng, 0, 200), y1 = tdp_range(&rng, 0, 200);
-		int32_t dx = tdp_range(&rng, 0, 300), dy = tdp_range(&rng, 0, 300);
+		int32_t x0 = tdp_range(&rng, 0, 200);
+		int32_t y0 = tdp_range(&rng, 0, 200);
+		int32_t x1 = tdp_range(&rng, 0, 200);
+		int32_t y1 = tdp_range(&rng, 0, 200);
+		int32_t dx = tdp_range(&rng, 0, 300);
+		int32_t dy = tdp_range(&rng, 0, 300);
 
 		zero_surface(t);
 		TDP_CMD(t, RDC_OP_SET_FG, 1);

@@ -67,7 +67,7 @@ const char *rdc_dev_strerror(uint32_t code)
 	return code < RDC_ERR_COUNT ? rdc_dev_error_str[code] : "UNKNOWN";
 }
 
-/* ---- Device ------------------------------------------------------------ */
+/* ---- Device -------------------------------------------------------------- */
 
 static int rdc_track_reset(rdc_dev *dev);
 
@@ -258,7 +258,7 @@ int rdc_vram_write(rdc_dev *dev, uint32_t addr, const void *buf, size_t len)
 	return dev->be->vram_write(dev, addr, buf, len);
 }
 
-/* ---- Modes ------------------------------------------------------------- */
+/* ---- Modes --------------------------------------------------------------- */
 
 int rdc_preset_size(uint32_t preset, uint32_t *width, uint32_t *height)
 {
@@ -344,7 +344,7 @@ int rdc_mode_set(rdc_dev *dev, uint32_t preset, uint32_t format, uint32_t base)
 	return rdc_submit(dev, cmd, n);
 }
 
-/* ---- Waits and submission ---------------------------------------------- */
+/* ---- Waits and submission ------------------------------------------------ */
 
 int rdc_wait_one(rdc_dev *dev, enum rdc_wait_kind kind, uint32_t reg,
 		 uint32_t mask, uint32_t value, bool needs_dp)
@@ -649,7 +649,7 @@ int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
 	return ret;
 }
 
-/* ---- Frames --------------------------------------------------------------- */
+/* ---- Frames -------------------------------------------------------------- */
 
 int rdc_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap, uint32_t *width,
 		   uint32_t *height)
@@ -736,7 +736,7 @@ int rdc_frame_crc(rdc_dev *dev, uint32_t *crc)
 	return 0;
 }
 
-/* ---- Introspection --------------------------------------------------------- */
+/* ---- Introspection ------------------------------------------------------- */
 
 int rdc_sim_time(rdc_dev *dev, uint64_t *cycles)
 {

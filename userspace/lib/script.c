@@ -469,8 +469,8 @@ static int rdl_reg(struct rdl *r, size_t i, uint32_t *out)
 
 	if (!rdc_reg_by_name(r->tok[i].s, out))
 		return 0;
-	if (rdl_hex(r->tok[i].s[0]) >= 0 && !rdl_int(r, i, 0, RDC_REG_WINDOW - 4,
-						      &v)) {
+	if (rdl_hex(r->tok[i].s[0]) >= 0 &&
+	    !rdl_int(r, i, 0, RDC_REG_WINDOW - 4, &v)) {
 		*out = (uint32_t)v;
 		return 0;
 	}
@@ -831,6 +831,22 @@ static void rdl_put_pixel(uint8_t *row, uint32_t fmt, uint32_t x, uint32_t v)
 	}
 }
 
+/*
+ * The `gradient` pattern.  Indexed: a ramp of indices across the width.
+ * RGB: red grows to the right, green downwards, blue is half on.
+ */
+static uint32_t rdl_gradient(uint32_t fmt, uint32_t x, uint32_t y,
+			     uint32_t w, uint32_t h)
+{
+	uint32_t red, grn;
+
+	if (rdc_format_indexed(fmt))
+		return (uint32_t)(((uint64_t)x << rdc_format_bpp(fmt)) / w);
+	red = x * 255 / RDC_MAX(w - 1, 1u);
+	grn = y * 255 / RDC_MAX(h - 1, 1u);
+	return rdl_rgb_to_pixel(red << 16 | grn << 8 | 0x80, fmt);
+}
+
 /* Generated host-blit contents, in the destination format. */
 static int rdl_pattern(struct rdl *r, size_t i, uint32_t fmt, uint32_t w,
 		       uint32_t h, uint8_t *pix, size_t pitch)
@@ -860,26 +876,10 @@ static int rdl_pattern(struct rdl *r, size_t i, uint32_t fmt, uint32_t w,
 		return 0;
 	}
 	if (!strcmp(name, "gradient")) {
-		/* Indexed: a ramp of indices across the width.  RGB: red
-		 * grows to the right, green downwards, blue is half on. */
-		for (uint32_t y = 0; y < h; y++) {
-			for (uint32_t x = 0; x < w; x++) {
-				uint32_t v;
-
-				if (rdc_format_indexed(fmt)) {
-					v = (uint32_t)((uint64_t)x * (maxv + 1) /
-						       w);
-				} else {
-					uint32_t red = x * 255 / RDC_MAX(w - 1, 1u);
-					uint32_t grn = y * 255 / RDC_MAX(h - 1, 1u);
-
-					v = rdl_rgb_to_pixel(red << 16 |
-							     grn << 8 | 0x80,
-							     fmt);
-				}
-				rdl_put_pixel(pix + y * pitch, fmt, x, v);
-			}
-		}
+		for (uint32_t y = 0; y < h; y++)
+			for (uint32_t x = 0; x < w; x++)
+				rdl_put_pixel(pix + y * pitch, fmt, x,
+					      rdl_gradient(fmt, x, y, w, h));
 		return 0;
 	}
 	if (!strcmp(name, "noise")) {
@@ -1289,7 +1289,8 @@ static int st_run_until(struct rdl *r, uint32_t op)
 		return ret;
 	ret = rdc_sim_time(r->dev, &now);
 	if (!ret && (uint64_t)v > now && (uint64_t)v - now > RDL_MAX_STEP)
-		return rdl_err(r, RDC_E_PARSE, "run-until: more than %llu cycles ahead",
+		return rdl_err(r, RDC_E_PARSE,
+			       "run-until: more than %llu cycles ahead",
 			       (unsigned long long)RDL_MAX_STEP);
 	if (!ret)
 		ret = rdc_sim_run_until(r->dev, (uint64_t)v);
@@ -1410,7 +1411,8 @@ static int rdl_statement(struct rdl *r)
 	uint32_t nargs = (uint32_t)RDC_MIN(r->ntok - 1, (size_t)RDL_ANY - 1);
 
 	if (kw->quoted)
-		return rdl_err(r, RDC_E_PARSE, "statement starts with a string");
+		return rdl_err(r, RDC_E_PARSE,
+			       "statement starts with a string");
 	for (size_t i = 0; i < RDC_ARRAY_SIZE(rdl_stmts); i++) {
 		const struct rdl_stmt *st = &rdl_stmts[i];
 
