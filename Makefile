@@ -45,7 +45,7 @@ help:
 	@echo "make              build librdc and rdcctl (optimised) in $(O)/rel"
 	@echo "make demo         install missing packages, build, run examples/demo.rdl"
 	@echo "make check        install missing packages, build with ASan+UBSan, run every test"
-	@echo "make golden       regenerate tests/golden/*.crc and write PNGs to $(O)/golden"
+	@echo "make golden       regenerate tests/golden/golden.txt and write PNGs to $(O)/golden"
 	@echo "make freestanding compile hw-sim/ and firmware-model/ with no libc headers"
 	@echo "make speed        time a full-screen fill through the command path against memset"
 

@@ -11,15 +11,22 @@
 #include "dp_int.h"
 #include "../hw-sim/bus.h"
 
+/* DST and SRC start as the chip's power-on screen: the 640x480 preset in
+ * XRGB8888 at VRAM 0, unpadded. */
+static void dp_reset_surface(struct rdc_surface *s)
+{
+	struct rdc_timing tm = { 0 };
+
+	rdc_preset_timing(RDC_PRESET_640x480_60, &tm);
+	s->base = 0;
+	s->format = RDC_FMT_XRGB8888;
+	s->width = tm.h_display;
+	s->height = tm.v_display;
+	s->stride = rdc_format_row_bytes(s->format, s->width);
+}
+
 static void dp_reset_state(struct rdc_dp *dp)
 {
-	static const struct rdc_surface reset_surface = {
-		.base = 0,
-		.stride = 640 * 4,
-		.width = 640,
-		.height = 480,
-		.format = RDC_FMT_XRGB8888,
-	};
 	struct rdc_dp_state *st = &dp->st;
 
 	st->fg = 0xffffffffu;
@@ -29,8 +36,8 @@ static void dp_reset_state(struct rdc_dp *dp)
 	st->clip.y0 = RDC_COORD_MIN;
 	st->clip.x1 = RDC_COORD_MAX + 1;
 	st->clip.y1 = RDC_COORD_MAX + 1;
-	st->dst = reset_surface;
-	st->src = reset_surface;
+	dp_reset_surface(&st->dst);
+	st->src = st->dst;
 }
 
 static void dp_reset(void *opaque)
@@ -111,14 +118,15 @@ static bool surface_parse(const struct rdc_hw *hw, const uint32_t *a,
 	return true;
 }
 
-/* Mask the colour registers to the destination's pixel size. */
-static void dp_mask_colours(struct rdc_dp *dp, uint32_t *fg, uint32_t *bg)
+/* Mask colours to the destination's pixel size. */
+static void dp_mask_colours(const struct rdc_dp *dp, uint32_t *fg,
+			    uint32_t *bg)
 {
 	unsigned int bpp = rdc_format_bpp(dp->st.dst.format);
 	uint32_t m = bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
 
-	*fg = dp->st.fg & m;
-	*bg = dp->st.bg & m;
+	*fg &= m;
+	*bg &= m;
 }
 
 /* Run a command that may wait: WAIT_* or READBACK.  true when complete. */
@@ -194,6 +202,119 @@ static int fixed_len(uint32_t op)
 }
 
 /*
+ * Check and draw a primitive; the colours in dp->st are already masked.
+ * Returns RDC_ERR_NONE or the error; nothing is drawn on error.
+ */
+static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
+			  uint32_t len, const uint32_t *a)
+{
+	bool tr = fl & RDC_MONO_TRANSPARENT;
+	uint32_t i, fmt;
+
+	switch (op) {
+	case RDC_OP_PIXEL:
+		if (!xy_ok(a[0]))
+			return RDC_ERR_RANGE;
+		rdc_dp_pixel(dp, RDC_X(a[0]), RDC_Y(a[0]));
+		return RDC_ERR_NONE;
+	case RDC_OP_LINE:
+		if (!xy_ok(a[0]) || !xy_ok(a[1]))
+			return RDC_ERR_RANGE;
+		rdc_dp_line(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_X(a[1]),
+			    RDC_Y(a[1]), false, false);
+		return RDC_ERR_NONE;
+	case RDC_OP_POLYLINE:
+		if (len < 2)
+			return RDC_ERR_LENGTH;
+		for (i = 0; i < len; i++)
+			if (!xy_ok(a[i]))
+				return RDC_ERR_RANGE;
+		/*
+		 * Each segment after the first leaves out its first pixel
+		 * (the previous segment's last); a closed polyline also
+		 * leaves out its closing pixel, so XOR outlines stay whole.
+		 */
+		for (i = 0; i + 1 < len; i++)
+			rdc_dp_line(dp, RDC_X(a[i]), RDC_Y(a[i]),
+				    RDC_X(a[i + 1]), RDC_Y(a[i + 1]), i > 0,
+				    len > 2 && i + 2 == len && a[i + 1] == a[0]);
+		return RDC_ERR_NONE;
+	case RDC_OP_RECT:
+	case RDC_OP_FILL_RECT:
+		if (!xy_ok(a[0]) || !wh_ok(a[1]))
+			return RDC_ERR_RANGE;
+		rdc_dp_rect(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_W(a[1]),
+			    RDC_H(a[1]), op == RDC_OP_FILL_RECT);
+		return RDC_ERR_NONE;
+	case RDC_OP_CIRCLE:
+	case RDC_OP_FILL_CIRCLE:
+		if (!xy_ok(a[0]) || a[1] > RDC_SIZE_MAX)
+			return RDC_ERR_RANGE;
+		rdc_dp_circle(dp, RDC_X(a[0]), RDC_Y(a[0]), a[1],
+			      op == RDC_OP_FILL_CIRCLE);
+		return RDC_ERR_NONE;
+	case RDC_OP_ELLIPSE:
+	case RDC_OP_FILL_ELLIPSE:
+		if (!xy_ok(a[0]) || !wh_ok(a[1]))
+			return RDC_ERR_RANGE;
+		rdc_dp_ellipse(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_W(a[1]),
+			       RDC_H(a[1]), op == RDC_OP_FILL_ELLIPSE);
+		return RDC_ERR_NONE;
+	case RDC_OP_BLIT:
+		if (!xy_ok(a[0]) || !xy_ok(a[1]) || !wh_ok(a[2]))
+			return RDC_ERR_RANGE;
+		if (rdc_format_bpp(dp->st.src.format) !=
+		    rdc_format_bpp(dp->st.dst.format))
+			return RDC_ERR_ARG;
+		rdc_dp_blit(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_X(a[1]),
+			    RDC_Y(a[1]), RDC_W(a[2]), RDC_H(a[2]));
+		return RDC_ERR_NONE;
+	case RDC_OP_HOST_BLIT:
+	case RDC_OP_MONO:
+		if (len < 2)
+			return RDC_ERR_LENGTH;
+		if (!xy_ok(a[0]) || !wh_ok(a[1]))
+			return RDC_ERR_RANGE;
+		fmt = op == RDC_OP_MONO ? RDC_FMT_I1 : dp->st.dst.format;
+		/* the data rows must be there, exactly */
+		if (len != 2 + (uint64_t)RDC_H(a[1]) *
+				       rdc_dp_words_per_row(fmt, RDC_W(a[1])))
+			return RDC_ERR_LENGTH;
+		if (op == RDC_OP_MONO)
+			rdc_dp_mono(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_W(a[1]),
+				    RDC_H(a[1]), a + 2, tr);
+		else
+			rdc_dp_host_blit(dp, RDC_X(a[0]), RDC_Y(a[0]),
+					 RDC_W(a[1]), RDC_H(a[1]), a + 2);
+		return RDC_ERR_NONE;
+	case RDC_OP_TEXT:
+		if (len < 2)
+			return RDC_ERR_LENGTH;
+		if (!xy_ok(a[0]))
+			return RDC_ERR_RANGE;
+		if (len != 2 + ((uint64_t)a[1] + 3) / 4)
+			return RDC_ERR_LENGTH;
+		rdc_dp_text(dp, RDC_X(a[0]), RDC_Y(a[0]), a[1], a + 2, tr);
+		return RDC_ERR_NONE;
+	case RDC_OP_READBACK:
+		if (!xy_ok(a[0]) || !wh_ok(a[1]))
+			return RDC_ERR_RANGE;
+		dp->rb_row = 0;
+		dp->rb_word = 0;
+		dp->rb_pos = 0;
+		dp->rb_len = 0;
+		dp->rb_words_per_row =
+			RDC_H(a[1]) ? rdc_dp_words_per_row(dp->st.src.format,
+							   RDC_W(a[1])) : 0;
+		if (!readback_step(dp))
+			dp->phase = RDC_DP_READBACK;
+		return RDC_ERR_NONE;
+	default:
+		return RDC_ERR_OPCODE;
+	}
+}
+
+/*
  * Execute the fetched command in dp->cmd.  Returns RDC_ERR_NONE, or the
  * error to report.  Commands that suspend set dp->phase and return
  * RDC_ERR_NONE; the caller then leaves them in progress.
@@ -201,13 +322,12 @@ static int fixed_len(uint32_t op)
 static uint32_t cmd_exec(struct rdc_dp *dp)
 {
 	struct rdc_hw *hw = dp->hw;
-	uint32_t hdr = dp->cmd[0], op = RDC_CMD_OP(hdr), fl = RDC_CMD_FL(hdr);
-	uint32_t len = RDC_CMD_LEN(hdr), i, fg, bg;
+	uint32_t hdr = dp->cmd[0], op = RDC_CMD_OP(hdr);
+	uint32_t len = RDC_CMD_LEN(hdr), i, err, save_fg, save_bg;
 	const uint32_t *a = dp->cmd + 1;
 	int fixed = fixed_len(op);
 	struct rdc_surface s;
-	uint64_t t, need;
-	bool tr = fl & RDC_MONO_TRANSPARENT;
+	uint64_t t;
 
 	if (fixed >= 0 && len != (uint32_t)fixed)
 		return RDC_ERR_LENGTH;
@@ -275,160 +395,14 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 		break;
 	}
 
-	/* Primitives: colours are masked to the destination format. */
-	if (op < RDC_OP_PIXEL || op > RDC_OP_TEXT ||
-	    (op > RDC_OP_FILL_ELLIPSE && op < RDC_OP_BLIT))
-		return RDC_ERR_OPCODE;
-	dp_mask_colours(dp, &fg, &bg);
-	{
-		/* Draw with the masked colours, keep the registers intact. */
-		uint32_t save_fg = dp->st.fg, save_bg = dp->st.bg;
-		uint32_t err = RDC_ERR_NONE;
-
-		dp->st.fg = fg;
-		dp->st.bg = bg;
-		switch (op) {
-		case RDC_OP_PIXEL:
-			if (!xy_ok(a[0]))
-				err = RDC_ERR_RANGE;
-			else
-				rdc_dp_pixel(dp, RDC_X(a[0]), RDC_Y(a[0]));
-			break;
-		case RDC_OP_LINE:
-			if (!xy_ok(a[0]) || !xy_ok(a[1]))
-				err = RDC_ERR_RANGE;
-			else
-				rdc_dp_line(dp, RDC_X(a[0]), RDC_Y(a[0]),
-					    RDC_X(a[1]), RDC_Y(a[1]), false,
-					    false);
-			break;
-		case RDC_OP_POLYLINE:
-			if (len < 2) {
-				err = RDC_ERR_LENGTH;
-				break;
-			}
-			for (i = 0; i < len; i++)
-				if (!xy_ok(a[i]))
-					err = RDC_ERR_RANGE;
-			if (err)
-				break;
-			/*
-			 * Each segment after the first leaves out its first
-			 * pixel (the previous segment's last); a closed
-			 * polyline also leaves out the closing pixel.
-			 */
-			for (i = 0; i + 1 < len; i++)
-				rdc_dp_line(dp, RDC_X(a[i]), RDC_Y(a[i]),
-					    RDC_X(a[i + 1]), RDC_Y(a[i + 1]),
-					    i > 0,
-					    len > 2 && i + 2 == len &&
-						    a[i + 1] == a[0]);
-			break;
-		case RDC_OP_RECT:
-		case RDC_OP_FILL_RECT:
-			if (!xy_ok(a[0]) || !wh_ok(a[1]))
-				err = RDC_ERR_RANGE;
-			else
-				rdc_dp_rect(dp, RDC_X(a[0]), RDC_Y(a[0]),
-					    RDC_W(a[1]), RDC_H(a[1]),
-					    op == RDC_OP_FILL_RECT);
-			break;
-		case RDC_OP_CIRCLE:
-		case RDC_OP_FILL_CIRCLE:
-			if (!xy_ok(a[0]) || a[1] > RDC_SIZE_MAX)
-				err = RDC_ERR_RANGE;
-			else
-				rdc_dp_circle(dp, RDC_X(a[0]), RDC_Y(a[0]),
-					      a[1], op == RDC_OP_FILL_CIRCLE);
-			break;
-		case RDC_OP_ELLIPSE:
-		case RDC_OP_FILL_ELLIPSE:
-			if (!xy_ok(a[0]) || !wh_ok(a[1]))
-				err = RDC_ERR_RANGE;
-			else
-				rdc_dp_ellipse(dp, RDC_X(a[0]), RDC_Y(a[0]),
-					       RDC_W(a[1]), RDC_H(a[1]),
-					       op == RDC_OP_FILL_ELLIPSE);
-			break;
-		case RDC_OP_BLIT:
-			if (!xy_ok(a[0]) || !xy_ok(a[1]) || !wh_ok(a[2]))
-				err = RDC_ERR_RANGE;
-			else if (rdc_format_bpp(dp->st.src.format) !=
-				 rdc_format_bpp(dp->st.dst.format))
-				err = RDC_ERR_ARG;
-			else
-				rdc_dp_blit(dp, RDC_X(a[0]), RDC_Y(a[0]),
-					    RDC_X(a[1]), RDC_Y(a[1]),
-					    RDC_W(a[2]), RDC_H(a[2]));
-			break;
-		case RDC_OP_HOST_BLIT:
-		case RDC_OP_MONO:
-			if (len < 2) {
-				err = RDC_ERR_LENGTH;
-				break;
-			}
-			if (!xy_ok(a[0]) || !wh_ok(a[1])) {
-				err = RDC_ERR_RANGE;
-				break;
-			}
-			need = 2 + (uint64_t)RDC_H(a[1]) *
-					   rdc_dp_words_per_row(
-						   op == RDC_OP_MONO ?
-							   RDC_FMT_I1 :
-							   dp->st.dst.format,
-						   RDC_W(a[1]));
-			if (need != len) {
-				err = RDC_ERR_LENGTH;
-				break;
-			}
-			if (op == RDC_OP_MONO)
-				rdc_dp_mono(dp, RDC_X(a[0]), RDC_Y(a[0]),
-					    RDC_W(a[1]), RDC_H(a[1]), a + 2,
-					    tr);
-			else
-				rdc_dp_host_blit(dp, RDC_X(a[0]), RDC_Y(a[0]),
-						 RDC_W(a[1]), RDC_H(a[1]),
-						 a + 2);
-			break;
-		case RDC_OP_READBACK:
-			if (!xy_ok(a[0]) || !wh_ok(a[1])) {
-				err = RDC_ERR_RANGE;
-				break;
-			}
-			dp->rb_row = 0;
-			dp->rb_word = 0;
-			dp->rb_pos = 0;
-			dp->rb_len = 0;
-			dp->rb_words_per_row = RDC_H(a[1]) ?
-				rdc_dp_words_per_row(dp->st.src.format,
-						     RDC_W(a[1])) : 0;
-			if (!readback_step(dp))
-				dp->phase = RDC_DP_READBACK;
-			break;
-		case RDC_OP_TEXT:
-			if (len < 2) {
-				err = RDC_ERR_LENGTH;
-				break;
-			}
-			if (!xy_ok(a[0])) {
-				err = RDC_ERR_RANGE;
-				break;
-			}
-			if (2 + ((uint64_t)a[1] + 3) / 4 != len) {
-				err = RDC_ERR_LENGTH;
-				break;
-			}
-			rdc_dp_text(dp, RDC_X(a[0]), RDC_Y(a[0]), a[1], a + 2,
-				    tr);
-			break;
-		default:
-			err = RDC_ERR_OPCODE;
-			break;
-		}
-		dp->st.fg = save_fg;
-		dp->st.bg = save_bg;
-		return err;
-	}
+	/* Draw with colours masked to DST; the registers keep all bits. */
+	save_fg = dp->st.fg;
+	save_bg = dp->st.bg;
+	dp_mask_colours(dp, &dp->st.fg, &dp->st.bg);
+	err = exec_draw(dp, op, RDC_CMD_FL(hdr), len, a);
+	dp->st.fg = save_fg;
+	dp->st.bg = save_bg;
+	return err;
 }
 
 static void dp_status_update(struct rdc_dp *dp)

@@ -92,6 +92,26 @@ static uint32_t word_px(const uint32_t *w, unsigned int bpp, uint32_t bit)
 	return v;
 }
 
+#define FILL_BLOCK 64 /* bytes of pattern copied at a time */
+
+/* n XRGB8888 pixels of v: memset when the bytes agree, else a pattern
+ * block the compiler turns into wide stores. */
+static void fill32(uint8_t *p, uint32_t v, uint32_t n)
+{
+	uint8_t pat[FILL_BLOCK];
+	size_t len = (size_t)n * 4, i;
+
+	if ((v & 0xff) * 0x01010101u == v) {
+		rdc_memset(p, (int)(v & 0xff), len);
+		return;
+	}
+	for (i = 0; i < FILL_BLOCK; i += 4)
+		rdc_st32(pat + i, v);
+	for (i = 0; i + FILL_BLOCK <= len; i += FILL_BLOCK)
+		rdc_memcpy(p + i, pat, FILL_BLOCK);
+	rdc_memcpy(p + i, pat, len - i);
+}
+
 /*
  * Write pixels [xa, xa + n) of destination row y, already inside the
  * effective clip.  vals == NULL: every pixel gets `solid`; on != NULL:
@@ -134,12 +154,7 @@ static void span_emit(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 		uint32_t v = rdc_rop_apply(rop, solid, 0) & mask;
 
 		if (bpp == 32) {
-			if ((v & 0xff) * 0x01010101u == v) {
-				rdc_memset(p, (int)(v & 0xff), (size_t)n * 4);
-			} else {
-				for (i = 0; i < n; i++)
-					rdc_st32(p + 4 * i, v);
-			}
+			fill32(p, v, n);
 			hw->perf.pixels += n;
 			return;
 		}

@@ -65,8 +65,8 @@ uint64_t rdc_bus_read_cost(uint32_t *row, uint64_t addr, uint64_t len)
  * lines, vblank) are processed as their time comes; they see VRAM as it
  * was before this access.
  */
-static void bus_burst(struct rdc_hw *hw, uint64_t *tp, uint64_t a,
-		      uint64_t n, unsigned int kind)
+static void bus_burst(struct rdc_hw *hw, uint64_t *tp, uint64_t a, uint64_t n,
+		      unsigned int kind)
 {
 	struct rdc_crtc *c = &hw->crtc;
 	uint64_t t = *tp;
@@ -80,7 +80,6 @@ static void bus_burst(struct rdc_hw *hw, uint64_t *tp, uint64_t a,
 			t = c->fetch_end;
 		}
 		if (c->running && c->next_line_time <= t) {
-			hw->now = t;
 			rdc_crtc_catch_up(hw, t);
 			continue;
 		}
@@ -96,7 +95,6 @@ static void bus_burst(struct rdc_hw *hw, uint64_t *tp, uint64_t a,
 			t = ev;
 			continue;
 		}
-		hw->now = t;
 		rdc_crtc_catch_up(hw, ev);
 	}
 }

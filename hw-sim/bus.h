@@ -35,7 +35,10 @@
  * DP burst that would overlap a fetch window waits until the window ends
  * (the wait counts as stall cycles).  Outside active lines (vertical
  * blanking) the DP has the bus to itself, so drawing in vblank is faster.
- * The fetch leaves its last row open.
+ * The fetch leaves its last row open.  A fetch that finds the previous
+ * one still on the bus (a line that takes longer to read than to show)
+ * starts when it ends; lines whose bytes would leave VRAM are not fetched
+ * (they show black) and take no bus time.
  *
  * Command fetch: a FIFO word costs RDC_T_FIFO_WORD; ring words are VRAM
  * reads by the formula.  Each command costs RDC_T_DECODE once it is fetched.

@@ -12,18 +12,17 @@
 
 /* The 16 colours of the IBM VGA text palette, entries 0..15. */
 static const uint32_t rdc_vga16[16] = {
-	0x000000, 0x0000aa, 0x00aa00, 0x00aaaa,
-	0xaa0000, 0xaa00aa, 0xaa5500, 0xaaaaaa,
-	0x555555, 0x5555ff, 0x55ff55, 0x55ffff,
+	0x000000, 0x0000aa, 0x00aa00, 0x00aaaa, 0xaa0000, 0xaa00aa,
+	0xaa5500, 0xaaaaaa, 0x555555, 0x5555ff, 0x55ff55, 0x55ffff,
 	0xff5555, 0xff55ff, 0xffff55, 0xffffff,
 };
 
-#define CUBE_FIRST 16u /* 6x6x6 colour cube, entries 16..231 */
+#define CUBE_FIRST  16u /* 6x6x6 colour cube, entries 16..231 */
 #define CUBE_LEVELS 6u
-#define CUBE_STEP 0x33u /* 0, 0x33, ..., 0xff: the "web-safe" levels */
-#define GREY_FIRST (CUBE_FIRST + CUBE_LEVELS * CUBE_LEVELS * CUBE_LEVELS)
-#define GREY_BASE 8u /* grey ramp 232..255: 8, 18, ..., 238 as xterm */
-#define GREY_STEP 10u
+#define CUBE_STEP   0x33u /* 0, 0x33, ..., 0xff: the "web-safe" levels */
+#define GREY_FIRST  (CUBE_FIRST + CUBE_LEVELS * CUBE_LEVELS * CUBE_LEVELS)
+#define GREY_BASE   8u /* grey ramp 232..255: 8, 18, ..., 238 as xterm */
+#define GREY_STEP   10u
 
 void rdc_clut_reset(struct rdc_hw *hw)
 {

@@ -5,7 +5,7 @@
  */
 #include "hw_priv.h"
 
-#define WORD_BYTES 4u
+#define WORD_BYTES     4u
 #define RING_MIN_BYTES 16u
 
 void rdc_cmdq_reset(struct rdc_hw *hw)
@@ -53,8 +53,7 @@ static bool ring_ok(const struct rdc_hw *hw)
 	       (uint64_t)hw->ring_base + hw->ring_size <= hw->vram_size &&
 	       hw->ring_head < hw->ring_size &&
 	       hw->ring_head % WORD_BYTES == 0 &&
-	       hw->ring_tail < hw->ring_size &&
-	       hw->ring_tail % WORD_BYTES == 0;
+	       hw->ring_tail < hw->ring_size && hw->ring_tail % WORD_BYTES == 0;
 }
 
 /*
@@ -77,8 +76,8 @@ uint32_t rdc_ring_words(const struct rdc_hw *hw)
 	if (!(hw->control & RDC_CONTROL_RING_EN) || hw->ring_err ||
 	    !ring_ok(hw))
 		return 0;
-	return (hw->ring_tail + hw->ring_size - hw->ring_head) %
-	       hw->ring_size / WORD_BYTES;
+	return (hw->ring_tail + hw->ring_size - hw->ring_head) % hw->ring_size /
+	       WORD_BYTES;
 }
 
 uint32_t rdc_port_cmd_avail(struct rdc_hw *hw, unsigned int src)
@@ -114,16 +113,17 @@ static uint32_t ring_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 
 	n = RDC_MIN(n, rdc_ring_words(hw));
 	while (got < n) {
-		uint32_t words = RDC_MIN(n - got, (hw->ring_size -
-						   hw->ring_head) / WORD_BYTES);
+		uint32_t words = RDC_MIN(
+			n - got, (hw->ring_size - hw->ring_head) / WORD_BYTES);
 		uint32_t addr = hw->ring_base + hw->ring_head, i;
 
 		rdc_bus_charge(hw, addr, words * WORD_BYTES, RDC_BUS_READ);
 		for (i = 0; i < words; i++)
-			dst[got + i] = rdc_ld32(hw->vram + addr + i * WORD_BYTES);
+			dst[got + i] =
+				rdc_ld32(hw->vram + addr + i * WORD_BYTES);
 		got += words;
-		hw->ring_head = (hw->ring_head + words * WORD_BYTES) %
-				hw->ring_size;
+		hw->ring_head =
+			(hw->ring_head + words * WORD_BYTES) % hw->ring_size;
 	}
 	return got;
 }

@@ -12,26 +12,26 @@
  */
 #include "hw_priv.h"
 
-#define HZ_PER_KHZ 1000u
-#define RGB_MASK 0x00ffffffu
+#define HZ_PER_KHZ	 1000u
+#define RGB_MASK	 0x00ffffffu
 #define CURSOR_ROW_BYTES (RDC_CURSOR_SIZE / 4) /* 2 bpp */
 
 static const struct rdc_timing rdc_presets[RDC_PRESET_COUNT] = {
-	[RDC_PRESET_320x200_70] = { 400, 320, 328, 376, 225, 200, 206, 207,
-				    6300, 0 },
-	[RDC_PRESET_640x480_60] = { 800, 640, 656, 752, 525, 480, 490, 492,
-				    25175, 0 },
-	[RDC_PRESET_800x600_60] = { 1056, 800, 840, 968, 628, 600, 601, 605,
-				    40000,
-				    RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
-	[RDC_PRESET_1024x768_60] = { 1344, 1024, 1048, 1184, 806, 768, 771,
-				     777, 65000, 0 },
-	[RDC_PRESET_1280x720_60] = { 1650, 1280, 1390, 1430, 750, 720, 725,
-				     730, 74250,
-				     RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
-	[RDC_PRESET_1920x1080_60] = { 2200, 1920, 2008, 2052, 1125, 1080, 1084,
-				      1089, 148500,
-				      RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
+	[RDC_PRESET_320x200_70] = {400, 320, 328, 376, 225, 200, 206, 207, 6300,
+				   0},
+	[RDC_PRESET_640x480_60] = {800, 640, 656, 752, 525, 480, 490, 492,
+				   25175, 0},
+	[RDC_PRESET_800x600_60] = {1056, 800, 840, 968, 628, 600, 601, 605,
+				   40000,
+				   RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS},
+	[RDC_PRESET_1024x768_60] = {1344, 1024, 1048, 1184, 806, 768, 771, 777,
+				    65000, 0},
+	[RDC_PRESET_1280x720_60] = {1650, 1280, 1390, 1430, 750, 720, 725, 730,
+				    74250,
+				    RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS},
+	[RDC_PRESET_1920x1080_60] = {2200, 1920, 2008, 2052, 1125, 1080, 1084,
+				     1089, 148500,
+				     RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS},
 };
 
 int rdc_preset_timing(uint32_t preset, struct rdc_timing *t)
@@ -231,8 +231,13 @@ static void cursor_line(const struct rdc_hw *hw, uint32_t *out, uint32_t n,
 	}
 }
 
-/* Start of active line n: the CRTC reads it and converts it at once. */
-static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when)
+/*
+ * Start of active line n: the CRTC reads it and converts it at once.  The
+ * bus sees every fetch; the conversion is skipped (`hidden`) for a frame
+ * that nobody can ever look at.
+ */
+static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
+		       bool hidden)
 {
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t w = c->cur.h_display, bytes;
@@ -244,6 +249,8 @@ static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when)
 
 		c->fetch_end = start + rdc_bus_read_cost(&hw->bus.open_row,
 							 addr, bytes);
+		if (hidden)
+			return;
 		convert_line(hw, out, hw->vram + addr, w, c->cur_format);
 	} else {
 		rdc_memset(out, 0, (size_t)w * sizeof(*out));
@@ -265,16 +272,41 @@ static void crtc_vblank(struct rdc_hw *hw)
 	hw->front_h = h;
 	hw->have_frame = 1;
 	c->frame_count++;
+	rdc_trace(hw, RDC_TRACE_VBLANK, (uint32_t)number, 0);
 	crtc_latch(hw, true);
 	if (hw->frame_fn)
 		hw->frame_fn(hw->frame_ctx, hw->frame[hw->frame_back ^ 1], w, h,
 			     number);
 }
 
+/*
+ * When the frame after this one will be complete: the frame scanned now is
+ * on show from its own vblank until then.  Registers cannot change during
+ * a catch-up, so the latch at this frame's vblank is known in advance.
+ */
+static uint64_t crtc_next_frame_vblank(const struct rdc_hw *hw)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	const struct rdc_timing *next = c->mode_pending ? &c->pending : &c->cur;
+
+	if (c->shadow_dirty && timing_ok(hw, &c->shadow))
+		next = &c->shadow;
+	return c->frame_start + c->frame_cycles +
+	       line_offset(hw, next, next->v_display);
+}
+
 void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 {
 	struct rdc_crtc *c = &hw->crtc;
+	uint64_t shown_until = 0;
 
+	/*
+	 * Without a frame listener, a frame that is replaced before this
+	 * catch-up ends is never seen: skip converting it, so that running
+	 * far ahead costs little more than the bus bookkeeping.
+	 */
+	if (c->running && c->next_line_time <= t && !hw->frame_fn)
+		shown_until = crtc_next_frame_vblank(hw);
 	while (c->running && c->next_line_time <= t) {
 		uint32_t n = c->next_line;
 		uint64_t when = c->next_line_time;
@@ -288,18 +320,27 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 							      c->cur.v_total);
 			}
 			n = 0;
+			if (!hw->frame_fn)
+				shown_until = crtc_next_frame_vblank(hw);
 		}
+		/*
+		 * Step past the event before acting on it: the frame listener
+		 * may read registers, which catches up again.
+		 */
+		c->next_line = n + 1;
+		c->next_line_time =
+			c->frame_start + line_offset(hw, &c->cur, n + 1);
+		if (hw->now < when)
+			hw->now = when;
 		if (n == 0)
 			c->in_vblank = 0;
 		if (n < c->cur.v_display)
-			crtc_fetch(hw, n, when);
+			crtc_fetch(hw, n, when,
+				   !hw->frame_fn && t >= shown_until);
 		else if (n == c->cur.v_display)
 			crtc_vblank(hw);
 		if (n == c->line_compare)
 			rdc_port_irq(hw, RDC_IRQ_LINE);
-		c->next_line = n + 1;
-		c->next_line_time = c->frame_start +
-				    line_offset(hw, &c->cur, n + 1);
 	}
 }
 

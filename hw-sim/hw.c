@@ -6,10 +6,10 @@
 #include "hw_priv.h"
 
 #define HZ_PER_KHZ 1000u
-#define RGB_MASK 0x00ffffffu
-#define CONTROL_RW_BITS                                                   \
-	(RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_RING_EN | \
-	 RDC_CONTROL_HALT_ON_ERR | RDC_CONTROL_CLUT_LATCH |                 \
+#define RGB_MASK   0x00ffffffu
+#define CONTROL_RW_BITS                                                        \
+	(RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_RING_EN |    \
+	 RDC_CONTROL_HALT_ON_ERR | RDC_CONTROL_CLUT_LATCH |                    \
 	 RDC_CONTROL_CURSOR_EN)
 #define PINS_IN (RDC_PIN_RESET_N | RDC_PIN_BL_EN)
 
@@ -35,6 +35,7 @@ void rdc_hw_init(struct rdc_hw *hw, const struct rdc_hw_config *cfg,
 
 void rdc_hw_reset(struct rdc_hw *hw)
 {
+	rdc_trace(hw, RDC_TRACE_RESET, 0, 0);
 	hw->control = RDC_CONTROL_RESET_VALUE;
 	hw->irq_status = 0;
 	hw->irq_enable = 0;
@@ -71,6 +72,7 @@ void rdc_port_error(struct rdc_hw *hw, uint32_t code, uint32_t info)
 	hw->err_code = code;
 	hw->err_info = info;
 	rdc_port_irq(hw, RDC_IRQ_ERROR);
+	rdc_trace(hw, RDC_TRACE_ERROR, code, info);
 }
 
 void rdc_port_fence(struct rdc_hw *hw, uint32_t value)
@@ -125,8 +127,15 @@ void rdc_hw_set_dp(struct rdc_hw *hw, const struct rdc_dp_ops *ops, void *dp)
 
 void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx)
 {
+	/* frames skipped so far were never shown: nothing to catch up */
 	hw->frame_fn = fn;
 	hw->frame_ctx = ctx;
+}
+
+void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx)
+{
+	hw->trace_fn = fn;
+	hw->trace_ctx = ctx;
 }
 
 const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
@@ -164,6 +173,7 @@ int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 	/* lines the beam has passed keep the old bytes */
 	rdc_crtc_catch_up(hw, hw->now);
 	rdc_memcpy(hw->vram + addr, buf, len);
+	rdc_trace(hw, RDC_TRACE_VRAM_WRITE, addr, len);
 	return 0;
 }
 
@@ -217,26 +227,47 @@ static uint32_t snap_hi(struct rdc_hw *hw, uint64_t v, uint32_t hi_reg)
 static uint32_t timing_reg(struct rdc_timing *t, uint32_t reg, uint32_t **p)
 {
 	switch (reg) {
-	case RDC_REG_H_TOTAL: *p = &t->h_total; break;
-	case RDC_REG_H_DISPLAY: *p = &t->h_display; break;
-	case RDC_REG_H_SYNC_START: *p = &t->h_sync_start; break;
-	case RDC_REG_H_SYNC_END: *p = &t->h_sync_end; break;
-	case RDC_REG_V_TOTAL: *p = &t->v_total; break;
-	case RDC_REG_V_DISPLAY: *p = &t->v_display; break;
-	case RDC_REG_V_SYNC_START: *p = &t->v_sync_start; break;
-	case RDC_REG_V_SYNC_END: *p = &t->v_sync_end; break;
-	case RDC_REG_PIXCLK_KHZ: *p = &t->pixclk_khz; break;
-	case RDC_REG_CRTC_FLAGS: *p = &t->flags; break;
-	default: return 0;
+	case RDC_REG_H_TOTAL:
+		*p = &t->h_total;
+		break;
+	case RDC_REG_H_DISPLAY:
+		*p = &t->h_display;
+		break;
+	case RDC_REG_H_SYNC_START:
+		*p = &t->h_sync_start;
+		break;
+	case RDC_REG_H_SYNC_END:
+		*p = &t->h_sync_end;
+		break;
+	case RDC_REG_V_TOTAL:
+		*p = &t->v_total;
+		break;
+	case RDC_REG_V_DISPLAY:
+		*p = &t->v_display;
+		break;
+	case RDC_REG_V_SYNC_START:
+		*p = &t->v_sync_start;
+		break;
+	case RDC_REG_V_SYNC_END:
+		*p = &t->v_sync_end;
+		break;
+	case RDC_REG_PIXCLK_KHZ:
+		*p = &t->pixclk_khz;
+		break;
+	case RDC_REG_CRTC_FLAGS:
+		*p = &t->flags;
+		break;
+	default:
+		return 0;
 	}
 	return 1;
 }
 
 static uint32_t status_reg(struct rdc_hw *hw)
 {
-	uint32_t s = hw->dp_status &
-		     (RDC_STATUS_DP_BUSY | RDC_STATUS_DP_HALTED |
-		      RDC_STATUS_DP_WAIT);
+	uint32_t s =
+		hw->dp_status & (RDC_STATUS_DP_BUSY | RDC_STATUS_DP_HALTED |
+				 RDC_STATUS_DP_WAIT);
 
 	if (!hw->fifo_count)
 		s |= RDC_STATUS_FIFO_EMPTY;
@@ -250,7 +281,7 @@ static uint32_t status_reg(struct rdc_hw *hw)
 	return s;
 }
 
-uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg)
+static uint32_t reg_read(struct rdc_hw *hw, uint32_t reg)
 {
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t *p, x, y, v;
@@ -259,60 +290,101 @@ uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg)
 	if (timing_reg(&c->shadow, reg, &p))
 		return *p;
 	switch (reg) {
-	case RDC_REG_ID: return RDC_ID_VALUE;
-	case RDC_REG_VERSION: return RDC_VERSION_VALUE;
-	case RDC_REG_VRAM_SIZE: return hw->vram_size;
-	case RDC_REG_CORE_KHZ: return hw->core_hz / HZ_PER_KHZ;
-	case RDC_REG_CONTROL: return hw->control;
-	case RDC_REG_STATUS: return status_reg(hw);
-	case RDC_REG_IRQ_STATUS: return hw->irq_status;
-	case RDC_REG_IRQ_ENABLE: return hw->irq_enable;
-	case RDC_REG_ERR_CODE: return hw->err_code;
-	case RDC_REG_ERR_INFO: return hw->err_info;
-	case RDC_REG_PINS: return rdc_hw_pins(hw);
-	case RDC_REG_FB_BASE: return c->fb_base;
-	case RDC_REG_FB_STRIDE: return c->fb_stride;
-	case RDC_REG_FB_FORMAT: return c->fb_format;
-	case RDC_REG_LINE_COMPARE: return c->line_compare;
+	case RDC_REG_ID:
+		return RDC_ID_VALUE;
+	case RDC_REG_VERSION:
+		return RDC_VERSION_VALUE;
+	case RDC_REG_VRAM_SIZE:
+		return hw->vram_size;
+	case RDC_REG_CORE_KHZ:
+		return hw->core_hz / HZ_PER_KHZ;
+	case RDC_REG_CONTROL:
+		return hw->control;
+	case RDC_REG_STATUS:
+		return status_reg(hw);
+	case RDC_REG_IRQ_STATUS:
+		return hw->irq_status;
+	case RDC_REG_IRQ_ENABLE:
+		return hw->irq_enable;
+	case RDC_REG_ERR_CODE:
+		return hw->err_code;
+	case RDC_REG_ERR_INFO:
+		return hw->err_info;
+	case RDC_REG_PINS:
+		return rdc_hw_pins(hw);
+	case RDC_REG_FB_BASE:
+		return c->fb_base;
+	case RDC_REG_FB_STRIDE:
+		return c->fb_stride;
+	case RDC_REG_FB_FORMAT:
+		return c->fb_format;
+	case RDC_REG_LINE_COMPARE:
+		return c->line_compare;
 	case RDC_REG_BEAM:
 		rdc_hw_beam(hw, &x, &y);
 		return FIELD_PREP(RDC_BEAM_X, x) | FIELD_PREP(RDC_BEAM_Y, y);
-	case RDC_REG_FRAME_COUNT: return (uint32_t)c->frame_count;
-	case RDC_REG_MODE_PRESET: return c->preset;
-	case RDC_REG_CLUT_INDEX: return hw->clut_index;
+	case RDC_REG_FRAME_COUNT:
+		return (uint32_t)c->frame_count;
+	case RDC_REG_MODE_PRESET:
+		return c->preset;
+	case RDC_REG_CLUT_INDEX:
+		return hw->clut_index;
 	case RDC_REG_CLUT_DATA:
 		v = hw->clut_shadow[hw->clut_index];
 		hw->clut_index = (hw->clut_index + 1) % RDC_CLUT_ENTRIES;
 		return v;
-	case RDC_REG_CURSOR_BASE: return c->cursor_base;
-	case RDC_REG_CURSOR_POS: return c->cursor_pos;
-	case RDC_REG_CURSOR_FG: return c->cursor_fg;
-	case RDC_REG_CURSOR_BG: return c->cursor_bg;
-	case RDC_REG_FIFO_DATA: return 0;
-	case RDC_REG_FIFO_FREE: return RDC_FIFO_DEPTH - hw->fifo_count;
-	case RDC_REG_FIFO_LOWWATER: return hw->fifo_lowwater;
-	case RDC_REG_RING_BASE: return hw->ring_base;
-	case RDC_REG_RING_SIZE: return hw->ring_size;
-	case RDC_REG_RING_HEAD: return hw->ring_head;
-	case RDC_REG_RING_TAIL: return hw->ring_tail;
-	case RDC_REG_FENCE: return hw->fence;
-	case RDC_REG_RDATA: return rdc_rdata_pop(hw);
-	case RDC_REG_RDATA_COUNT: return hw->rdata_count;
-	case RDC_REG_TIME_LO: return snap_lo(hw, hw->now, RDC_REG_TIME_HI);
-	case RDC_REG_TIME_HI: return snap_hi(hw, hw->now, reg);
+	case RDC_REG_CURSOR_BASE:
+		return c->cursor_base;
+	case RDC_REG_CURSOR_POS:
+		return c->cursor_pos;
+	case RDC_REG_CURSOR_FG:
+		return c->cursor_fg;
+	case RDC_REG_CURSOR_BG:
+		return c->cursor_bg;
+	case RDC_REG_FIFO_DATA:
+		return 0;
+	case RDC_REG_FIFO_FREE:
+		return RDC_FIFO_DEPTH - hw->fifo_count;
+	case RDC_REG_FIFO_LOWWATER:
+		return hw->fifo_lowwater;
+	case RDC_REG_RING_BASE:
+		return hw->ring_base;
+	case RDC_REG_RING_SIZE:
+		return hw->ring_size;
+	case RDC_REG_RING_HEAD:
+		return hw->ring_head;
+	case RDC_REG_RING_TAIL:
+		return hw->ring_tail;
+	case RDC_REG_FENCE:
+		return hw->fence;
+	case RDC_REG_RDATA:
+		return rdc_rdata_pop(hw);
+	case RDC_REG_RDATA_COUNT:
+		return hw->rdata_count;
+	case RDC_REG_TIME_LO:
+		return snap_lo(hw, hw->now, RDC_REG_TIME_HI);
+	case RDC_REG_TIME_HI:
+		return snap_hi(hw, hw->now, reg);
 	case RDC_REG_PERF_BUSY_LO:
 		return snap_lo(hw, hw->perf.busy, RDC_REG_PERF_BUSY_HI);
-	case RDC_REG_PERF_BUSY_HI: return snap_hi(hw, hw->perf.busy, reg);
+	case RDC_REG_PERF_BUSY_HI:
+		return snap_hi(hw, hw->perf.busy, reg);
 	case RDC_REG_PERF_STALL_LO:
 		return snap_lo(hw, hw->perf.stall, RDC_REG_PERF_STALL_HI);
-	case RDC_REG_PERF_STALL_HI: return snap_hi(hw, hw->perf.stall, reg);
+	case RDC_REG_PERF_STALL_HI:
+		return snap_hi(hw, hw->perf.stall, reg);
 	case RDC_REG_PERF_PIXELS_LO:
 		return snap_lo(hw, hw->perf.pixels, RDC_REG_PERF_PIXELS_HI);
-	case RDC_REG_PERF_PIXELS_HI: return snap_hi(hw, hw->perf.pixels, reg);
-	case RDC_REG_PERF_CMDS: return hw->perf.cmds;
-	case RDC_REG_PERF_LAST_CYCLES: return hw->perf.last_cycles;
-	case RDC_REG_PERF_LAST_OPCODE: return hw->perf.last_opcode;
-	case RDC_REG_PERF_CTRL: return 0;
+	case RDC_REG_PERF_PIXELS_HI:
+		return snap_hi(hw, hw->perf.pixels, reg);
+	case RDC_REG_PERF_CMDS:
+		return hw->perf.cmds;
+	case RDC_REG_PERF_LAST_CYCLES:
+		return hw->perf.last_cycles;
+	case RDC_REG_PERF_LAST_OPCODE:
+		return hw->perf.last_opcode;
+	case RDC_REG_PERF_CTRL:
+		return 0;
 	default:
 		break;
 	}
@@ -320,6 +392,14 @@ uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg)
 	if (!hw->in_reset)
 		rdc_port_error(hw, RDC_ERR_REG, reg);
 	return 0;
+}
+
+uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg)
+{
+	uint32_t v = reg_read(hw, reg);
+
+	rdc_trace(hw, RDC_TRACE_REG_READ, reg, v);
+	return v;
 }
 
 static void control_write(struct rdc_hw *hw, uint32_t val)
@@ -356,8 +436,9 @@ static void preset_write(struct rdc_hw *hw, uint32_t val)
 	c->preset = val;
 	c->shadow_dirty = 1;
 	if (c->fb_format < RDC_FMT_COUNT)
-		c->fb_stride = (rdc_format_row_bytes(c->fb_format,
-						     t.h_display) + 3) & ~3u;
+		c->fb_stride =
+			(rdc_format_row_bytes(c->fb_format, t.h_display) + 3) &
+			~3u;
 }
 
 /* Registers a REG_WRITE command may reach as well as the host. */
@@ -427,6 +508,7 @@ void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
 	if (hw->in_reset)
 		return;
 	rdc_crtc_catch_up(hw, hw->now);
+	rdc_trace(hw, RDC_TRACE_REG_WRITE, reg, val);
 	if (crtc_side_write(hw, reg, val))
 		return;
 	switch (reg) {

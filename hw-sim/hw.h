@@ -49,9 +49,28 @@ struct rdc_dp_ops {
 	uint64_t (*run)(void *dp, uint64_t until);
 };
 
-/* Called with each complete frame at the start of vertical blanking. */
+/*
+ * Called with each complete frame at the start of vertical blanking;
+ * frame_number counts from 0 (FRAME_COUNT reads frame_number + 1 then).
+ * Without a listener the chip skips converting frames that are replaced
+ * before anyone could look at them with rdc_hw_frame (a long
+ * rdc_hw_run_until); with one, every frame is converted and handed over.
+ */
 typedef void (*rdc_frame_fn)(void *ctx, const uint32_t *xrgb, uint32_t width,
 			     uint32_t height, uint64_t frame_number);
+
+/* Trace points, for tests, replay logs and debugging (rdc_hw_set_trace). */
+enum rdc_trace_event {
+	RDC_TRACE_REG_READ, /* a = offset, b = value read */
+	RDC_TRACE_REG_WRITE, /* a = offset, b = value written (host) */
+	RDC_TRACE_VRAM_WRITE, /* a = address, b = bytes (host aperture) */
+	RDC_TRACE_VBLANK, /* a = frame number (low 32 bits) */
+	RDC_TRACE_ERROR, /* a = enum rdc_err, b = ERR_INFO */
+	RDC_TRACE_RESET, /* chip reset (power-on, SOFT_RESET, RESET_N) */
+};
+
+typedef void (*rdc_trace_fn)(void *ctx, uint64_t time, unsigned int event,
+			     uint32_t a, uint32_t b);
 
 /* Timing of one mode, as in the CRTC registers. */
 struct rdc_timing {
@@ -160,6 +179,9 @@ struct rdc_hw {
 	/* the last complete frame: frame[frame_back ^ 1] */
 	int have_frame;
 	uint32_t front_w, front_h;
+
+	rdc_trace_fn trace_fn; /* optional */
+	void *trace_ctx;
 };
 
 /* ---- Host side ----------------------------------------------------------- */
@@ -172,11 +194,55 @@ struct rdc_hw {
 void rdc_hw_init(struct rdc_hw *hw, const struct rdc_hw_config *cfg,
 		 uint8_t *vram, uint32_t *frame0, uint32_t *frame1,
 		 uint32_t frame_cap);
-/* Power-on reset: registers to their reset values, 640x480@60 XRGB8888 at
- * VRAM 0, queues empty, counters zero, time kept.  VRAM is not cleared. */
+/*
+ * Power-on reset: registers to their reset values, 640x480@60 XRGB8888 at
+ * VRAM 0 (stride 2560) in force at once (the frame starts at hw->now),
+ * queues empty, counters zero, time kept.  VRAM is not cleared.  Reset
+ * values not in rdc_regs.h: FIFO_LOWWATER RDC_FIFO_LOWWATER_RESET,
+ * LINE_COMPARE RDC_LINE_COMPARE_RESET (never matches), CURSOR_* 0 with
+ * CURSOR_FG/BG RDC_CURSOR_FG/BG_RESET, ring registers 0.  The CLUT holds
+ * the 16 VGA text colours (0-15), a 6x6x6 colour cube with levels 0x33
+ * apart (16 + 36 r + 6 g + b), and a grey ramp 8, 18, ... 238 (232-255).
+ * If frame_cap cannot hold 640x480 the reset raises RDC_ERR_MODE and
+ * scanout waits for a valid mode: program one, then clear and set
+ * CONTROL.SCANOUT_EN.  rdc_hw_init drives RESET_N and BL_EN high.
+ */
 void rdc_hw_reset(struct rdc_hw *hw);
 
-/* Register access at hw->now.  Bad offsets are logged as RDC_ERR_REG. */
+/*
+ * Register access at hw->now.  Bad offsets (outside the window, unaligned,
+ * holes) and writes to R registers are logged as RDC_ERR_REG with the
+ * offset in ERR_INFO, and otherwise ignored; such a read returns 0.  Where
+ * rdc_regs.h is silent:
+ *  - Timing validation at latch, beyond rdc_regs.h's ordering: DISPLAY >= 1
+ *    (at most RDC_CRTC_MAX_DISPLAY), V_DISPLAY < V_TOTAL (there is a
+ *    vertical blanking), PIXCLK_KHZ in [RDC_PIXCLK_MIN_KHZ,
+ *    RDC_PIXCLK_MAX_KHZ], a line lasts at least one core cycle, and
+ *    H_DISPLAY * V_DISPLAY fits frame_cap.  A refusal is RDC_ERR_MODE with
+ *    ERR_INFO = RDC_REG_H_TOTAL, reported once per programming.  An
+ *    unknown FB_FORMAT is refused at latch the same way with ERR_INFO =
+ *    RDC_REG_FB_FORMAT (the old format stays).  An unknown MODE_PRESET is
+ *    RDC_ERR_MODE with ERR_INFO = RDC_REG_MODE_PRESET.
+ *  - A new timing latched at vblank goes in force at the next frame start
+ *    (the rest of this frame's blanking keeps the old one).  Turning
+ *    SCANOUT_EN on latches everything at once and starts a frame at
+ *    hw->now; turning it off stops all scanout events (a fetch already on
+ *    the bus completes).
+ *  - CLUT_DATA reads return the last value written to the entry, also in
+ *    latched mode before the vblank applies it.
+ *  - The ring is checked when RING_EN is set and at every ring register
+ *    write while it is set; a failure is RDC_ERR_RING with the offset of
+ *    the register written in ERR_INFO.  A RING_HEAD write while RING_EN is
+ *    set is refused with RDC_ERR_REG.  STATUS.RING_EMPTY is HEAD == TAIL.
+ *  - FIFO_LOWWATER is clamped to RDC_FIFO_DEPTH.
+ *  - A LO read snapshots its own HI register; a HI read returns the
+ *    snapshot if its LO was the last LO read, else the live value.
+ *  - CONTROL.RESUME sets dp_resume for the DP to find.
+ *  - While RESET_N is low, writes are ignored and reads return the reset
+ *    values; releasing RESET_N resets the chip again.
+ * Scanout events that fall at the very time of an access (a register
+ * write, a host VRAM write, a DP access) happen before it.
+ */
 uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg);
 void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
 
@@ -186,17 +252,23 @@ int rdc_hw_vram_read(struct rdc_hw *hw, uint32_t addr, void *buf, uint32_t len);
 int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 		      uint32_t len);
 
-/* Advance simulated time to at least t, running the DP and scanout
- * interleaved (see rdc_dp_ops.run for overshoot). */
+/*
+ * Advance simulated time to at least t, running the DP and scanout
+ * interleaved (see rdc_dp_ops.run for overshoot): the DP runs, then the
+ * chip idles to min(its wake time, t), and so on.  A DP that returns a
+ * wake time not after hw->now gets one idle cycle, so it cannot hang the
+ * loop.
+ */
 void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t);
 
 /* Drive the input pins (RDC_PIN_RESET_N, RDC_PIN_BL_EN). */
 void rdc_hw_set_pins(struct rdc_hw *hw, uint32_t pins_in);
 uint32_t rdc_hw_pins(struct rdc_hw *hw);
 
-/* Connect the display processor and a frame listener. */
+/* Connect the display processor, a frame listener and a tracer. */
 void rdc_hw_set_dp(struct rdc_hw *hw, const struct rdc_dp_ops *ops, void *dp);
 void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx);
+void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx);
 
 /* The last complete frame (NULL before the first) and its size. */
 const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
@@ -239,7 +311,9 @@ uint8_t *rdc_port_span(struct rdc_hw *hw, uint32_t addr, uint32_t len,
  * `count` accesses of `len` bytes each, `stride` bytes apart from addr (a
  * vertical run of pixels).  Returns the pointer to the first, or NULL
  * (nothing charged) if any leaves VRAM.  Charged as `count` separate
- * single-burst accesses.
+ * single-burst accesses (each one burst even if longer than a burst; the
+ * PARTIAL flags apply to every element).  The access kind 3 is charged as
+ * RDC_BUS_RMW.
  */
 uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 			 uint32_t count, uint32_t len, unsigned int kind);
@@ -275,7 +349,8 @@ void rdc_port_error(struct rdc_hw *hw, uint32_t code, uint32_t info);
 void rdc_port_fence(struct rdc_hw *hw, uint32_t value);
 
 /* When the next vertical blanking starts / the beam next starts `line`
- * (RDC_NEVER while scanout is stopped or line >= V_TOTAL). */
+ * (RDC_NEVER while scanout is stopped or line >= V_TOTAL): always a time
+ * after hw->now, so a vblank or line start at hw->now itself has passed. */
 uint64_t rdc_port_next_vblank(struct rdc_hw *hw);
 uint64_t rdc_port_next_line(struct rdc_hw *hw, uint32_t line);
 

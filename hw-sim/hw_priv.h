@@ -10,6 +10,13 @@
 #include "hw.h"
 #include "bus.h"
 
+static inline void rdc_trace(struct rdc_hw *hw, unsigned int event, uint32_t a,
+			     uint32_t b)
+{
+	if (hw->trace_fn)
+		hw->trace_fn(hw->trace_ctx, hw->now, event, a, b);
+}
+
 /* bus.c: charge a VRAM access at hw->now, racing scanout; advances now. */
 void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 		    unsigned int kind);

@@ -11,6 +11,35 @@ static const struct rdc_surface scr = {
 	0, 640 * 4, 640, 480, RDC_FMT_XRGB8888
 };
 
+/* Reset state: FG all ones, COPY, no clip, DST = the 640x480 screen. */
+static void test_reset_state(void **state)
+{
+	struct tdp *t = *state;
+	const uint32_t end = 640 * 480 * 4;
+	uint32_t i;
+
+	for (i = 0; i < 2; i++) {
+		memset(t->vram, 0x5a, end + 64);
+		TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(-100, -100),
+			RDC_WH(RDC_SIZE_MAX, RDC_SIZE_MAX));
+		tdp_drain(t);
+		assert_int_equal(t->vram[0], 0xff);
+		assert_int_equal(t->vram[end - 1], 0xff);
+		assert_int_equal(t->vram[end], 0x5a);
+		assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_PIXELS_LO),
+				 640 * 480);
+		/* change everything, then a soft reset restores it */
+		TDP_CMD(t, RDC_OP_SET_FG, 3);
+		TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_XOR);
+		TDP_CMD(t, RDC_OP_SET_CLIP, RDC_XY(1, 1), RDC_XY(2, 2));
+		TDP_CMD(t, RDC_OP_SET_DST, 0x200000, 16, RDC_WH(16, 16),
+			RDC_FMT_I8);
+		tdp_drain(t);
+		rdc_hw_write(&t->hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
+		rdc_hw_write(&t->hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
+	}
+}
+
 /* ---- bad input ------------------------------------------------------- */
 
 /*
@@ -709,6 +738,52 @@ static void test_cycles_rmw(void **state)
 	assert_int_equal(last_cycles(t), want);
 }
 
+/* A vertical line: one column access, `count` one-burst elements. */
+static void test_cycles_column(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t open, y;
+	uint64_t want;
+
+	tdp_drain(t);
+	open = t->hw.bus.open_row;
+	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
+	for (y = 20; y <= 29; y++)
+		want += bus_span(&open, 5 * 4 + (uint64_t)y * 2560, 4, K_WRITE,
+				 0, 0);
+	TDP_CMD(t, RDC_OP_LINE, RDC_XY(5, 20), RDC_XY(5, 29));
+	tdp_drain(t);
+	assert_int_equal(last_cycles(t), want);
+}
+
+/* A command from the ring: header and arguments are VRAM reads. */
+static void test_cycles_ring(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t base = 0x300000, size = 256, tail = 0, open;
+	uint64_t want;
+
+	ring_put(t, base, size, &tail, RDC_CMD(RDC_OP_FILL_RECT, 0, 2));
+	ring_put(t, base, size, &tail, RDC_XY(0, 0));
+	ring_put(t, base, size, &tail, RDC_WH(16, 1));
+	rdc_hw_write(&t->hw, RDC_REG_RING_BASE, base);
+	rdc_hw_write(&t->hw, RDC_REG_RING_SIZE, size);
+	rdc_hw_write(&t->hw, RDC_REG_RING_HEAD, 0);
+	rdc_hw_write(&t->hw, RDC_REG_RING_TAIL, tail);
+	open = t->hw.bus.open_row;
+	/* the header is read on its own, then the two argument words */
+	want = bus_span(&open, base, 4, K_READ, 0, 0) +
+	       bus_span(&open, base + 4, 8, K_READ, 0, 0) + RDC_T_DECODE +
+	       bus_span(&open, 0, 16 * 4, K_WRITE, 0, 0);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_RING_EN);
+	rdc_hw_run_until(&t->hw, t->hw.now + TDP_RUN_STEP);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_RING_HEAD), tail);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_OPCODE),
+			 RDC_OP_FILL_RECT);
+	assert_int_equal(last_cycles(t), want);
+}
+
 /* Drawing in vertical blanking: no scanout contention, no stall. */
 static void test_cycles_vblank(void **state)
 {
@@ -741,6 +816,7 @@ static void test_cycles_vblank(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		TDP_TEST(test_reset_state),
 		TDP_TEST(test_bad_opcodes),
 		TDP_TEST(test_bad_lengths),
 		TDP_TEST(test_huge_length),
@@ -763,6 +839,8 @@ int main(void)
 		TDP_TEST(test_cycles_fill),
 		TDP_TEST(test_cycles_pixel),
 		TDP_TEST(test_cycles_rmw),
+		TDP_TEST(test_cycles_column),
+		TDP_TEST(test_cycles_ring),
 		TDP_TEST(test_cycles_vblank),
 	};
 

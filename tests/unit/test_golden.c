@@ -17,10 +17,10 @@
 
 #include "rdc.h"
 
-#define GOLDEN_DIR "tests/golden"
-#define GOLDEN_LIST GOLDEN_DIR "/golden.txt"
-#define SCENE_DIR GOLDEN_DIR "/scenes"
-#define GOLDEN_MAX 256
+#define GOLDEN_DIR	"tests/golden"
+#define GOLDEN_LIST	GOLDEN_DIR "/golden.txt"
+#define SCENE_DIR	GOLDEN_DIR "/scenes"
+#define GOLDEN_MAX	256
 #define GOLDEN_NAME_MAX 64
 
 struct golden {
@@ -58,9 +58,8 @@ static int golden_load(void)
 
 /* What rdcctl run measures: time at the script's end, then the picture. */
 static int golden_run(const char *path, uint32_t *crc,
-		      unsigned long long *cycles,
-		      struct rdc_script_result *res, uint32_t **pix,
-		      uint32_t *w, uint32_t *h)
+		      unsigned long long *cycles, struct rdc_script_result *res,
+		      uint32_t **pix, uint32_t *w, uint32_t *h)
 {
 	rdc_dev *dev;
 	uint64_t t;
@@ -84,9 +83,9 @@ static int golden_run(const char *path, uint32_t *crc,
 		ret = rdc_frame_grab(dev, NULL, 0, w, h);
 		if (ret == RDC_E_RANGE) {
 			*pix = malloc((size_t)*w * *h * sizeof(**pix));
-			ret = *pix ? rdc_frame_grab(dev, *pix,
-						    (size_t)*w * *h, w, h) :
-				     RDC_E_NOMEM;
+			ret = *pix ? rdc_frame_grab(dev, *pix, (size_t)*w * *h,
+						    w, h)
+				   : RDC_E_NOMEM;
 		}
 	}
 	*cycles = t;
@@ -119,10 +118,11 @@ static void test_golden_scenes(void **state)
 			continue;
 		}
 		if (crc != g->crc || cycles != g->cycles) {
-			print_error("golden %s: crc32 %08x cycles %llu, "
-				    "expected crc32 %08x cycles %llu "
-				    "(make golden regenerates; look at the PNGs)\n",
-				    g->name, crc, cycles, g->crc, g->cycles);
+			print_error(
+				"golden %s: crc32 %08x cycles %llu, "
+				"expected crc32 %08x cycles %llu "
+				"(make golden regenerates; look at the PNGs)\n",
+				g->name, crc, cycles, g->crc, g->cycles);
 			failed++;
 		}
 	}
@@ -177,10 +177,10 @@ static void test_golden_determinism(void **state)
 		uint32_t c1 = 0, c2 = 0;
 		unsigned long long t1 = 0, t2 = 0;
 
-		assert_int_equal(golden_run(scenes[s], &c1, &t1, &r1, &p1, &w1,
-					    &h1), 0);
-		assert_int_equal(golden_run(scenes[s], &c2, &t2, &r2, &p2, &w2,
-					    &h2), 0);
+		assert_int_equal(
+			golden_run(scenes[s], &c1, &t1, &r1, &p1, &w1, &h1), 0);
+		assert_int_equal(
+			golden_run(scenes[s], &c2, &t2, &r2, &p2, &w2, &h2), 0);
 		assert_non_null(p1);
 		assert_non_null(p2);
 		assert_int_equal(w1, w2);

@@ -18,10 +18,10 @@
 
 #define VRAM_SIZE (2u << 20)
 #define FRAME_CAP (64u * 64u)
-#define BURST (RDC_BUS_BURST_BEATS * RDC_BUS_BYTES) /* 128 bytes */
-#define ROW RDC_DRAM_ROW_BYTES
-#define MISS RDC_T_ROW_MISS
-#define TURN RDC_T_TURN
+#define BURST	  (RDC_BUS_BURST_BEATS * RDC_BUS_BYTES) /* 128 bytes */
+#define ROW	  RDC_DRAM_ROW_BYTES
+#define MISS	  RDC_T_ROW_MISS
+#define TURN	  RDC_T_TURN
 
 struct fx {
 	struct rdc_hw hw;
@@ -36,13 +36,19 @@ struct fx {
  * stride of one DRAM row every line lives in its own row (line L in row
  * L), so each fetch costs 16 beats + a row miss = 22 cycles.
  */
-#define LINE_CYCLES 1000u
+#define LINE_CYCLES  1000u
 #define ACTIVE_LINES 48u
 #define FETCH_CYCLES (BURST / RDC_BUS_BYTES * RDC_T_BEAT + MISS)
 
 static const struct rdc_timing small_mode = {
-	.h_total = 64, .h_display = 32, .h_sync_start = 40, .h_sync_end = 48,
-	.v_total = 60, .v_display = 48, .v_sync_start = 50, .v_sync_end = 52,
+	.h_total = 64,
+	.h_display = 32,
+	.h_sync_start = 40,
+	.h_sync_end = 48,
+	.v_total = 60,
+	.v_display = 48,
+	.v_sync_start = 50,
+	.v_sync_end = 52,
 	.pixclk_khz = 6400,
 };
 
@@ -71,7 +77,7 @@ static void set_mode(struct rdc_hw *hw, const struct rdc_timing *t,
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
+	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
 
 	if (!f)
 		return -1;
@@ -142,21 +148,25 @@ static void test_span_costs(void **state)
 			 13 + MISS + TURN + 1);
 	/* RMW of 256 aligned bytes in row 1: 32 beats, 2 bursts, each
 	 * reads all its beats back after a turnaround */
-	assert_int_equal(span(hw, 2048, 256, RDC_BUS_RMW),
-			 32 + 2 * TURN + 32);
+	assert_int_equal(span(hw, 2048, 256, RDC_BUS_RMW), 32 + 2 * TURN + 32);
 	/* aligned write flagged partial at the edges (sub-byte pixels) */
-	assert_int_equal(span(hw, 2048, 64, RDC_BUS_WRITE |
-			      RDC_BUS_HEAD_PARTIAL), 8 + TURN + 1);
-	assert_int_equal(span(hw, 2048, 64, RDC_BUS_WRITE |
-			      RDC_BUS_HEAD_PARTIAL | RDC_BUS_TAIL_PARTIAL),
+	assert_int_equal(
+		span(hw, 2048, 64, RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL),
+		8 + TURN + 1);
+	assert_int_equal(span(hw, 2048, 64,
+			      RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL |
+				      RDC_BUS_TAIL_PARTIAL),
 			 8 + TURN + 2);
 	/* the flags on a span of several bursts: each edge its own burst */
-	assert_int_equal(span(hw, 2048, 256, RDC_BUS_WRITE |
-			      RDC_BUS_HEAD_PARTIAL | RDC_BUS_TAIL_PARTIAL),
+	assert_int_equal(span(hw, 2048, 256,
+			      RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL |
+				      RDC_BUS_TAIL_PARTIAL),
 			 32 + 2 * (TURN + 1));
 	/* flags mean nothing to reads */
-	assert_int_equal(span(hw, 2048, 64, RDC_BUS_READ |
-			      RDC_BUS_HEAD_PARTIAL | RDC_BUS_TAIL_PARTIAL), 8);
+	assert_int_equal(span(hw, 2048, 64,
+			      RDC_BUS_READ | RDC_BUS_HEAD_PARTIAL |
+				      RDC_BUS_TAIL_PARTIAL),
+			 8);
 	/* a span over three rows from a fourth: 3 misses */
 	assert_int_equal(span(hw, 10 * ROW, 3 * ROW, RDC_BUS_READ),
 			 3 * ROW / 8 + 3 * MISS);
@@ -178,8 +188,7 @@ static void test_column_costs(void **state)
 			 (1 + MISS) + 4 * 1);
 	/* reads of 2 bytes at stride 640 starting in row 0 (open):
 	 * addresses 0, 640, 1280, 1920, 2560 -> row 1 at the last */
-	assert_int_equal(column(hw, 0, 640, 5, 2, RDC_BUS_READ),
-			 5 * 1 + MISS);
+	assert_int_equal(column(hw, 0, 640, 5, 2, RDC_BUS_READ), 5 * 1 + MISS);
 	/* RMW column: every element is one burst with its turnaround */
 	assert_int_equal(column(hw, 2 * ROW, 8, 3, 8, RDC_BUS_RMW),
 			 3 * (1 + TURN + 1) + MISS);
@@ -237,7 +246,9 @@ static uint64_t ref_cost(uint32_t *open_row, uint32_t a, uint32_t n,
 static void test_random_spans_match_reference(void **state)
 {
 	static const unsigned int kinds[] = {
-		RDC_BUS_READ, RDC_BUS_WRITE, RDC_BUS_RMW,
+		RDC_BUS_READ,
+		RDC_BUS_WRITE,
+		RDC_BUS_RMW,
 		RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL,
 		RDC_BUS_WRITE | RDC_BUS_TAIL_PARTIAL,
 		RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL | RDC_BUS_TAIL_PARTIAL,
@@ -279,16 +290,17 @@ static void test_out_of_range(void **state)
 	assert_null(rdc_port_column(hw, 0, ROW, VRAM_SIZE / ROW, ROW + 1,
 				    RDC_BUS_WRITE));
 	/* 32-bit wrap of count * stride must not pass */
-	assert_null(rdc_port_column(hw, 0, 0x10000u, 0x10001u, 4,
-				    RDC_BUS_WRITE));
+	assert_null(
+		rdc_port_column(hw, 0, 0x10000u, 0x10001u, 4, RDC_BUS_WRITE));
 	assert_null(rdc_port_column(hw, 0xfffffffcu, 0, 1, 8, RDC_BUS_READ));
 	assert_int_equal(hw->now, t0);
 	assert_int_equal(hw->bus.open_row, ~0u);
 	/* the last bytes are in range */
 	assert_ptr_equal(rdc_port_span(hw, VRAM_SIZE - 4, 4, RDC_BUS_WRITE),
 			 hw->vram + VRAM_SIZE - 4);
-	assert_ptr_equal(rdc_port_column(hw, 0, ROW, VRAM_SIZE / ROW, ROW,
-					 RDC_BUS_READ), hw->vram);
+	assert_ptr_equal(
+		rdc_port_column(hw, 0, ROW, VRAM_SIZE / ROW, ROW, RDC_BUS_READ),
+		hw->vram);
 }
 
 static void test_compute_and_idle(void **state)

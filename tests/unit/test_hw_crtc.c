@@ -17,7 +17,7 @@
 
 #define VRAM_SIZE (2u << 20)
 #define FRAME_CAP (64u * 64u)
-#define CORE_HZ 100000000ull
+#define CORE_HZ	  100000000ull
 
 struct fx {
 	struct rdc_hw hw;
@@ -39,13 +39,19 @@ struct fx {
  * A small mode: 64 pixels a line at 10 MHz is 10 core cycles a pixel,
  * 640 a line; 60 lines make a 38400-cycle frame, 48 of them active.
  */
-#define PX_CYCLES 10u
-#define LINE_CYCLES 640u
+#define PX_CYCLES    10u
+#define LINE_CYCLES  640u
 #define FRAME_CYCLES (60u * LINE_CYCLES)
 
 static const struct rdc_timing small_mode = {
-	.h_total = 64, .h_display = 32, .h_sync_start = 40, .h_sync_end = 48,
-	.v_total = 60, .v_display = 48, .v_sync_start = 50, .v_sync_end = 52,
+	.h_total = 64,
+	.h_display = 32,
+	.h_sync_start = 40,
+	.h_sync_end = 48,
+	.v_total = 60,
+	.v_display = 48,
+	.v_sync_start = 50,
+	.v_sync_end = 52,
 	.pixclk_khz = 10000,
 };
 
@@ -80,6 +86,12 @@ static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 	struct fx *f = ctx;
 
 	assert_non_null(xrgb);
+	/* the chip is consistent from inside the listener */
+	assert_int_equal(
+		FIELD_GET(RDC_BEAM_Y, rdc_hw_read(&f->hw, RDC_REG_BEAM)), h);
+	assert_int_equal(rdc_hw_read(&f->hw, RDC_REG_FRAME_COUNT), n + 1);
+	assert_true(rdc_hw_pins(&f->hw) & RDC_PIN_TE);
+	assert_ptr_equal(rdc_hw_frame(&f->hw, NULL, NULL), xrgb);
 	if (f->frames < 8) {
 		f->fnum[f->frames] = n;
 		f->ftime[f->frames] = f->hw.now;
@@ -92,7 +104,7 @@ static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
+	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
 
 	if (!f)
 		return -1;
@@ -116,16 +128,16 @@ static void test_preset_periods(void **state)
 		uint32_t preset, w, h, htotal, vtotal, khz;
 		uint32_t refresh_mhz; /* nominal, millihertz */
 	} p[] = {
-		{ RDC_PRESET_320x200_70, 320, 200, 400, 225, 6300, 70000 },
-		{ RDC_PRESET_640x480_60, 640, 480, 800, 525, 25175, 59940 },
-		{ RDC_PRESET_800x600_60, 800, 600, 1056, 628, 40000, 60317 },
-		{ RDC_PRESET_1024x768_60, 1024, 768, 1344, 806, 65000, 60004 },
-		{ RDC_PRESET_1280x720_60, 1280, 720, 1650, 750, 74250, 60000 },
-		{ RDC_PRESET_1920x1080_60, 1920, 1080, 2200, 1125, 148500,
-		  60000 },
+		{RDC_PRESET_320x200_70, 320, 200, 400, 225, 6300, 70000},
+		{RDC_PRESET_640x480_60, 640, 480, 800, 525, 25175, 59940},
+		{RDC_PRESET_800x600_60, 800, 600, 1056, 628, 40000, 60317},
+		{RDC_PRESET_1024x768_60, 1024, 768, 1344, 806, 65000, 60004},
+		{RDC_PRESET_1280x720_60, 1280, 720, 1650, 750, 74250, 60000},
+		{RDC_PRESET_1920x1080_60, 1920, 1080, 2200, 1125, 148500,
+		 60000},
 	};
 	const uint32_t cap = 1920 * 1080;
-	struct rdc_hw_config cfg = { .vram_size = 1u << 20 };
+	struct rdc_hw_config cfg = {.vram_size = 1u << 20};
 	struct rdc_hw *hw = calloc(1, sizeof(*hw));
 	uint8_t *vram = calloc(1, cfg.vram_size);
 	uint32_t *f0 = calloc(cap, 4), *f1 = calloc(cap, 4);
@@ -186,8 +198,8 @@ static void test_line_times(void **state)
 	static const struct rdc_timing odd = {
 		/* 7 pixels at 3 MHz: 233.33 cycles a line, so the line
 		 * starts are floors of n * 700 / 3 */
-		.h_total = 7, .h_display = 4, .h_sync_start = 5,
-		.h_sync_end = 6, .v_total = 9, .v_display = 6,
+		.h_total = 7,	   .h_display = 4,  .h_sync_start = 5,
+		.h_sync_end = 6,   .v_total = 9,    .v_display = 6,
 		.v_sync_start = 7, .v_sync_end = 8, .pixclk_khz = 3000,
 	};
 	struct fx *f = *state;
@@ -308,8 +320,11 @@ static void test_frame_listener(void **state)
 	assert_int_equal(f->frames, 4);
 	assert_int_equal(f->fw, 32);
 	assert_int_equal(f->fh, 48);
-	for (i = 0; i < 4; i++)
+	for (i = 0; i < 4; i++) {
 		assert_int_equal(f->fnum[i], i);
+		assert_int_equal(f->ftime[i],
+				 fs + i * FRAME_CYCLES + 48 * LINE_CYCLES);
+	}
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_FRAME_COUNT), 4);
 	assert_non_null(rdc_hw_frame(hw, &w, &h));
 	assert_int_equal(w, 32);
@@ -471,7 +486,7 @@ static void fake_reset(void *dp)
 	(void)dp;
 }
 
-static const struct rdc_dp_ops fake_ops = { fake_reset, fake_run };
+static const struct rdc_dp_ops fake_ops = {fake_reset, fake_run};
 
 static void test_run_loop(void **state)
 {
@@ -515,7 +530,7 @@ static uint64_t sleepy_run(void *dp, uint64_t until)
 	return f->runs < 3 ? f->hw.now + 700 : RDC_NEVER;
 }
 
-static const struct rdc_dp_ops sleepy_ops = { fake_reset, sleepy_run };
+static const struct rdc_dp_ops sleepy_ops = {fake_reset, sleepy_run};
 
 static void test_run_loop_wakes(void **state)
 {
@@ -549,8 +564,7 @@ int main(void)
 						setup, teardown),
 		cmocka_unit_test_setup_teardown(test_scanout_off_and_on, setup,
 						teardown),
-		cmocka_unit_test_setup_teardown(test_run_loop, setup,
-						teardown),
+		cmocka_unit_test_setup_teardown(test_run_loop, setup, teardown),
 		cmocka_unit_test_setup_teardown(test_run_loop_wakes, setup,
 						teardown),
 	};

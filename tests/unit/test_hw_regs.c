@@ -36,12 +36,12 @@ static uint64_t fake_run(void *dp, uint64_t until)
 	return RDC_NEVER;
 }
 
-static const struct rdc_dp_ops fake_ops = { fake_reset, fake_run };
+static const struct rdc_dp_ops fake_ops = {fake_reset, fake_run};
 
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
+	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
 
 	if (!f)
 		return -1;
@@ -170,15 +170,15 @@ static void expect_reg_error(struct rdc_hw *hw, uint32_t off)
 static void test_bad_offsets(void **state)
 {
 	static const uint32_t bad[] = {
-		0x002, /* unaligned */
-		0x011, /* unaligned CONTROL */
-		0x02c, /* hole after PINS */
-		0x144, /* hole after MODE_PRESET */
-		0x188, /* hole after CLUT_DATA */
-		0x228, /* hole after RDATA_COUNT */
-		0x330, /* after PERF_CTRL */
+		0x002,		/* unaligned */
+		0x011,		/* unaligned CONTROL */
+		0x02c,		/* hole after PINS */
+		0x144,		/* hole after MODE_PRESET */
+		0x188,		/* hole after CLUT_DATA */
+		0x228,		/* hole after RDATA_COUNT */
+		0x330,		/* after PERF_CTRL */
 		RDC_REG_WINDOW, /* outside the window */
-		0xfffffffc, /* far outside */
+		0xfffffffc,	/* far outside */
 	};
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
@@ -199,13 +199,15 @@ static void test_bad_offsets(void **state)
 static void test_read_only(void **state)
 {
 	static const uint32_t ro[] = {
-		RDC_REG_ID, RDC_REG_VERSION, RDC_REG_VRAM_SIZE,
-		RDC_REG_CORE_KHZ, RDC_REG_STATUS, RDC_REG_ERR_INFO,
-		RDC_REG_PINS, RDC_REG_BEAM, RDC_REG_FRAME_COUNT,
-		RDC_REG_FIFO_FREE, RDC_REG_FENCE, RDC_REG_RDATA,
-		RDC_REG_RDATA_COUNT, RDC_REG_TIME_LO, RDC_REG_TIME_HI,
-		RDC_REG_PERF_BUSY_LO, RDC_REG_PERF_CMDS,
-		RDC_REG_PERF_LAST_OPCODE,
+		RDC_REG_ID,	     RDC_REG_VERSION,
+		RDC_REG_VRAM_SIZE,   RDC_REG_CORE_KHZ,
+		RDC_REG_STATUS,	     RDC_REG_ERR_INFO,
+		RDC_REG_PINS,	     RDC_REG_BEAM,
+		RDC_REG_FRAME_COUNT, RDC_REG_FIFO_FREE,
+		RDC_REG_FENCE,	     RDC_REG_RDATA,
+		RDC_REG_RDATA_COUNT, RDC_REG_TIME_LO,
+		RDC_REG_TIME_HI,     RDC_REG_PERF_BUSY_LO,
+		RDC_REG_PERF_CMDS,   RDC_REG_PERF_LAST_OPCODE,
 	};
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
@@ -294,12 +296,12 @@ static void test_errors_and_fence(void **state)
 static void test_rw_registers(void **state)
 {
 	static const uint32_t rw[] = {
-		RDC_REG_H_TOTAL, RDC_REG_H_DISPLAY, RDC_REG_H_SYNC_START,
-		RDC_REG_H_SYNC_END, RDC_REG_V_TOTAL, RDC_REG_V_DISPLAY,
-		RDC_REG_V_SYNC_START, RDC_REG_V_SYNC_END, RDC_REG_PIXCLK_KHZ,
-		RDC_REG_CRTC_FLAGS, RDC_REG_FB_BASE, RDC_REG_FB_STRIDE,
+		RDC_REG_H_TOTAL,      RDC_REG_H_DISPLAY,   RDC_REG_H_SYNC_START,
+		RDC_REG_H_SYNC_END,   RDC_REG_V_TOTAL,	   RDC_REG_V_DISPLAY,
+		RDC_REG_V_SYNC_START, RDC_REG_V_SYNC_END,  RDC_REG_PIXCLK_KHZ,
+		RDC_REG_CRTC_FLAGS,   RDC_REG_FB_BASE,	   RDC_REG_FB_STRIDE,
 		RDC_REG_LINE_COMPARE, RDC_REG_CURSOR_BASE, RDC_REG_CURSOR_POS,
-		RDC_REG_RING_BASE, RDC_REG_RING_SIZE, RDC_REG_RING_HEAD,
+		RDC_REG_RING_BASE,    RDC_REG_RING_SIZE,   RDC_REG_RING_HEAD,
 		RDC_REG_RING_TAIL,
 	};
 	struct fx *f = *state;
@@ -322,8 +324,9 @@ static void test_rw_registers(void **state)
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_FIFO_LOWWATER),
 			 RDC_FIFO_DEPTH);
 	/* CONTROL keeps only its RW bits; RESUME / SOFT_RESET never read */
-	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN |
-		     RDC_CONTROL_CURSOR_EN | RDC_CONTROL_RESUME | BIT(20));
+	rdc_hw_write(hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_CURSOR_EN |
+			     RDC_CONTROL_RESUME | BIT(20));
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_CONTROL),
 			 RDC_CONTROL_DP_EN | RDC_CONTROL_CURSOR_EN);
 	assert_int_equal(hw->dp_resume, 1);
@@ -509,10 +512,19 @@ static void test_te_pin(void **state)
 static void test_port_reg_write(void **state)
 {
 	static const uint32_t refused[] = {
-		RDC_REG_CONTROL, RDC_REG_FIFO_DATA, RDC_REG_FIFO_LOWWATER,
-		RDC_REG_RING_BASE, RDC_REG_RING_SIZE, RDC_REG_RING_HEAD,
-		RDC_REG_RING_TAIL, RDC_REG_PERF_CTRL, RDC_REG_ID,
-		RDC_REG_BEAM, RDC_REG_FRAME_COUNT, RDC_REG_STATUS, 0x002,
+		RDC_REG_CONTROL,
+		RDC_REG_FIFO_DATA,
+		RDC_REG_FIFO_LOWWATER,
+		RDC_REG_RING_BASE,
+		RDC_REG_RING_SIZE,
+		RDC_REG_RING_HEAD,
+		RDC_REG_RING_TAIL,
+		RDC_REG_PERF_CTRL,
+		RDC_REG_ID,
+		RDC_REG_BEAM,
+		RDC_REG_FRAME_COUNT,
+		RDC_REG_STATUS,
+		0x002,
 		RDC_REG_WINDOW,
 	};
 	struct fx *f = *state;
@@ -538,11 +550,65 @@ static void test_port_reg_write(void **state)
 	assert_int_equal(rdc_port_reg_write(hw, RDC_REG_IRQ_ENABLE, 4), 0);
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_IRQ_ENABLE), 4);
 	rdc_port_irq(hw, RDC_IRQ_FENCE);
-	assert_int_equal(rdc_port_reg_write(hw, RDC_REG_IRQ_STATUS,
-					    RDC_IRQ_FENCE), 0);
+	assert_int_equal(
+		rdc_port_reg_write(hw, RDC_REG_IRQ_STATUS, RDC_IRQ_FENCE), 0);
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_IRQ_STATUS), 0);
 	/* refusals are the DP's to report: the chip logs nothing */
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_ERR_CODE), RDC_ERR_NONE);
+}
+
+struct trace_log {
+	int n;
+	uint64_t t[16];
+	unsigned int ev[16];
+	uint32_t a[16], b[16];
+};
+
+static void on_trace(void *ctx, uint64_t t, unsigned int ev, uint32_t a,
+		     uint32_t b)
+{
+	struct trace_log *l = ctx;
+
+	if (l->n < 16) {
+		l->t[l->n] = t;
+		l->ev[l->n] = ev;
+		l->a[l->n] = a;
+		l->b[l->n] = b;
+	}
+	l->n++;
+}
+
+static void test_trace(void **state)
+{
+	struct fx *f = *state;
+	struct rdc_hw *hw = &f->hw;
+	struct trace_log log = {0};
+	uint64_t vb = rdc_port_next_vblank(hw);
+
+	rdc_hw_set_trace(hw, on_trace, &log);
+	rdc_hw_write(hw, RDC_REG_FB_BASE, 0x40);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_FB_BASE), 0x40);
+	assert_int_equal(rdc_hw_vram_write(hw, 8, "xy", 2), 0);
+	rdc_hw_write(hw, RDC_REG_ID, 1);
+	rdc_hw_run_until(hw, vb + 5);
+	assert_int_equal(log.n, 6);
+	assert_int_equal(log.ev[0], RDC_TRACE_REG_WRITE);
+	assert_int_equal(log.a[0], RDC_REG_FB_BASE);
+	assert_int_equal(log.b[0], 0x40);
+	assert_int_equal(log.ev[1], RDC_TRACE_REG_READ);
+	assert_int_equal(log.b[1], 0x40);
+	assert_int_equal(log.ev[2], RDC_TRACE_VRAM_WRITE);
+	assert_int_equal(log.a[2], 8);
+	assert_int_equal(log.b[2], 2);
+	assert_int_equal(log.ev[3], RDC_TRACE_REG_WRITE);
+	assert_int_equal(log.ev[4], RDC_TRACE_ERROR);
+	assert_int_equal(log.a[4], RDC_ERR_REG);
+	assert_int_equal(log.b[4], RDC_REG_ID);
+	assert_int_equal(log.ev[5], RDC_TRACE_VBLANK);
+	assert_int_equal(log.t[5], vb);
+	assert_int_equal(log.a[5], 0);
+	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
+	assert_int_equal(log.ev[7], RDC_TRACE_RESET);
 }
 
 int main(void)
@@ -577,6 +643,7 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_te_pin, setup, teardown),
 		cmocka_unit_test_setup_teardown(test_port_reg_write, setup,
 						teardown),
+		cmocka_unit_test_setup_teardown(test_trace, setup, teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -27,7 +27,7 @@ struct fx {
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
+	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
 
 	if (!f)
 		return -1;
@@ -43,8 +43,8 @@ static int teardown(void **state)
 }
 
 /* A w x h mode with blanking around it at 10 core cycles a pixel. */
-static void start_mode(struct rdc_hw *hw, uint32_t w, uint32_t h,
-		       uint32_t base, uint32_t stride, uint32_t fmt)
+static void start_mode(struct rdc_hw *hw, uint32_t w, uint32_t h, uint32_t base,
+		       uint32_t stride, uint32_t fmt)
 {
 	uint32_t ctl = hw->control | RDC_CONTROL_SCANOUT_EN;
 
@@ -151,10 +151,11 @@ static void test_all_formats(void **state)
 		p = grab(hw, w, h);
 		for (y = 0; y < h; y++)
 			for (x = 0; x < w; x++)
-				assert_int_equal(p[y * w + x],
-						 expect_pixel(f->vram + base +
-							      y * stride, x,
-							      fmt));
+				assert_int_equal(
+					p[y * w + x],
+					expect_pixel(f->vram + base +
+							     y * stride,
+						     x, fmt));
 	}
 }
 
@@ -166,18 +167,22 @@ static void test_known_pixels(void **state)
 		uint8_t bytes[8];
 		uint32_t px[2];
 	} k[] = {
-		{ RDC_FMT_RGB565, { 0x00, 0xf8, 0xe0, 0x07 },
-		  { 0xff0000, 0x00ff00 } },
-		{ RDC_FMT_RGB565, { 0x1f, 0x00, 0x10, 0x84 },
-		  { 0x0000ff, 0x848284 } },
-		{ RDC_FMT_RGB888, { 0x11, 0x22, 0x33, 0xff, 0x00, 0x80 },
-		  { 0x332211, 0x8000ff } },
-		{ RDC_FMT_XRGB8888, { 0x44, 0x33, 0x22, 0x11, 1, 2, 3, 0xff },
-		  { 0x223344, 0x030201 } },
-		{ RDC_FMT_I1, { 0x40 }, { 0x000000, 0x0000aa } },
-		{ RDC_FMT_I2, { 0x6c }, { 0x0000aa, 0x00aa00 } },
-		{ RDC_FMT_I4, { 0xf8 }, { 0xffffff, 0x555555 } },
-		{ RDC_FMT_I8, { 9, 12 }, { 0x5555ff, 0xff5555 } },
+		{RDC_FMT_RGB565,
+		 {0x00, 0xf8, 0xe0, 0x07},
+		 {0xff0000, 0x00ff00}},
+		{RDC_FMT_RGB565,
+		 {0x1f, 0x00, 0x10, 0x84},
+		 {0x0000ff, 0x848284}},
+		{RDC_FMT_RGB888,
+		 {0x11, 0x22, 0x33, 0xff, 0x00, 0x80},
+		 {0x332211, 0x8000ff}},
+		{RDC_FMT_XRGB8888,
+		 {0x44, 0x33, 0x22, 0x11, 1, 2, 3, 0xff},
+		 {0x223344, 0x030201}},
+		{RDC_FMT_I1, {0x40}, {0x000000, 0x0000aa}},
+		{RDC_FMT_I2, {0x6c}, {0x0000aa, 0x00aa00}},
+		{RDC_FMT_I4, {0xf8}, {0xffffff, 0x555555}},
+		{RDC_FMT_I8, {9, 12}, {0x5555ff, 0xff5555}},
 	};
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
@@ -243,8 +248,8 @@ static void test_clut_immediate_and_latched(void **state)
 /* ---- cursor ------------------------------------------------------------- */
 
 #define CUR_BASE 0x10000u
-#define SCR_W 48u
-#define SCR_H 40u
+#define SCR_W	 48u
+#define SCR_H	 40u
 
 static uint32_t cursor_value(uint32_t cx, uint32_t cy)
 {
@@ -258,9 +263,9 @@ static void write_cursor(uint8_t *img, uint32_t flip)
 	memset(img, 0, RDC_CURSOR_BYTES);
 	for (y = 0; y < RDC_CURSOR_SIZE; y++)
 		for (x = 0; x < RDC_CURSOR_SIZE; x++)
-			img[y * 8 + x / 4] |= (uint8_t)(((cursor_value(x, y) ^
-							  flip) & 3)
-							<< (6 - 2 * (x % 4)));
+			img[y * 8 + x / 4] |=
+				(uint8_t)(((cursor_value(x, y) ^ flip) & 3)
+					  << (6 - 2 * (x % 4)));
 }
 
 static uint32_t screen_px(uint32_t x, uint32_t y)
@@ -301,8 +306,9 @@ static void check_cursor_frame(const uint32_t *p, int32_t px, int32_t py,
 static void test_cursor(void **state)
 {
 	static const int32_t pos[][2] = {
-		{ 3, 2 }, { -5, -3 }, { SCR_W - 10, SCR_H - 2 },
-		{ -31, 20 }, { SCR_W - 1, -31 }, { -40, 0 }, { 0, SCR_H },
+		{3, 2},	    {-5, -3},	      {SCR_W - 10, SCR_H - 2},
+		{-31, 20},  {SCR_W - 1, -31}, {-40, 0},
+		{0, SCR_H},
 	};
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
@@ -373,8 +379,7 @@ static void test_fb_leaving_vram_scans_black(void **state)
 	p = grab(hw, w, h);
 	for (y = 0; y < h; y++)
 		for (x = 0; x < w; x++)
-			assert_int_equal(p[y * w + x],
-					 y < 2 ? 0xffffff : 0);
+			assert_int_equal(p[y * w + x], y < 2 ? 0xffffff : 0);
 	/* a base past the end */
 	start_mode(hw, w, h, 0xfffffff0u, stride, RDC_FMT_RGB888);
 	p = grab(hw, w, h);
@@ -385,8 +390,7 @@ static void test_fb_leaving_vram_scans_black(void **state)
 	p = grab(hw, w, h);
 	for (y = 0; y < h; y++)
 		for (x = 0; x < w; x++)
-			assert_int_equal(p[y * w + x],
-					 y == 0 ? 0xeeeeee : 0);
+			assert_int_equal(p[y * w + x], y == 0 ? 0xeeeeee : 0);
 	/* stride 0 repeats line 0 */
 	memset(f->vram, 9, 64);
 	start_mode(hw, w, h, 0, 0, RDC_FMT_I8);
@@ -423,6 +427,44 @@ static void test_fb_latched(void **state)
 	assert_int_equal(p[1], 0x00aa00);
 }
 
+/*
+ * Running many frames in one go: the frame on show at the end is complete
+ * and right, also across a mode change latched on the way.
+ */
+static void test_run_far_ahead(void **state)
+{
+	struct fx *f = *state;
+	struct rdc_hw *hw = &f->hw;
+	const uint32_t *p;
+	uint32_t w, h, i;
+
+	for (i = 0; i < 64 * 64; i++)
+		f->vram[i] = (uint8_t)(i % 251);
+	start_mode(hw, 16, 8, 0, 16, RDC_FMT_I8);
+	load_test_clut(hw);
+	/* 100 frames ahead, stopping mid-frame */
+	rdc_hw_run_until(hw, hw->now + 100 * (16 + 16) * (8 + 4) * 10 + 500);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_FRAME_COUNT), 100);
+	p = rdc_hw_frame(hw, &w, &h);
+	assert_non_null(p);
+	assert_int_equal(w, 16);
+	assert_int_equal(h, 8);
+	for (i = 0; i < 16 * 8; i++)
+		assert_int_equal(p[i], test_clut(i % 251));
+	/* a new, smaller mode latched at the next vblank, then far ahead */
+	rdc_hw_write(hw, RDC_REG_H_DISPLAY, 8);
+	rdc_hw_write(hw, RDC_REG_V_DISPLAY, 6);
+	rdc_hw_write(hw, RDC_REG_FB_STRIDE, 8);
+	rdc_hw_run_until(hw, hw->now + 50 * (16 + 16) * (8 + 4) * 10);
+	p = rdc_hw_frame(hw, &w, &h);
+	assert_non_null(p);
+	assert_int_equal(w, 8);
+	assert_int_equal(h, 6);
+	for (i = 0; i < 8 * 6; i++)
+		assert_int_equal(p[i], test_clut(i % 251));
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_ERR_CODE), RDC_ERR_NONE);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -430,12 +472,14 @@ int main(void)
 						teardown),
 		cmocka_unit_test_setup_teardown(test_known_pixels, setup,
 						teardown),
-		cmocka_unit_test_setup_teardown(
-			test_clut_immediate_and_latched, setup, teardown),
+		cmocka_unit_test_setup_teardown(test_clut_immediate_and_latched,
+						setup, teardown),
 		cmocka_unit_test_setup_teardown(test_cursor, setup, teardown),
 		cmocka_unit_test_setup_teardown(
 			test_fb_leaving_vram_scans_black, setup, teardown),
 		cmocka_unit_test_setup_teardown(test_fb_latched, setup,
+						teardown),
+		cmocka_unit_test_setup_teardown(test_run_far_ahead, setup,
 						teardown),
 	};
 

@@ -50,8 +50,8 @@ static void test_open_bad(void **state)
 	/* malformed options of a known scheme */
 	open_fails("sim:vram=", RDC_E_URI);
 	open_fails("sim:vram=4G", RDC_E_URI);
-	open_fails("sim:vram=1K", RDC_E_URI); /* below 64 KiB */
-	open_fails("sim:vram=512M", RDC_E_URI); /* above 256 MiB */
+	open_fails("sim:vram=1K", RDC_E_URI);	 /* below 64 KiB */
+	open_fails("sim:vram=512M", RDC_E_URI);	 /* above 256 MiB */
 	open_fails("sim:vram=65537", RDC_E_URI); /* not a multiple of 4 */
 	open_fails("sim:vram=4MB", RDC_E_URI);
 	open_fails("sim:vram=x", RDC_E_URI);

@@ -27,8 +27,7 @@ static uint32_t *png_load(const char *path, uint32_t *w, uint32_t *h)
 	img.format = PNG_FORMAT_RGB;
 	rgb = malloc(PNG_IMAGE_SIZE(img));
 	out = malloc((size_t)img.width * img.height * 4);
-	if (!rgb || !out ||
-	    !png_image_finish_read(&img, NULL, rgb, 0, NULL)) {
+	if (!rgb || !out || !png_image_finish_read(&img, NULL, rgb, 0, NULL)) {
 		free(rgb);
 		free(out);
 		png_image_free(&img);
@@ -45,11 +44,10 @@ static uint32_t *png_load(const char *path, uint32_t *w, uint32_t *h)
 
 static void test_png_roundtrip_frame(void **state)
 {
-	static const char script[] =
-		"mode 320x200 xrgb8888\n"
-		"host-blit 0 0 320 200 pattern noise 3\n"
-		"fg #ff8000\nfill-circle 160 100 50\n"
-		"text 10 10 \"png\"\n";
+	static const char script[] = "mode 320x200 xrgb8888\n"
+				     "host-blit 0 0 320 200 pattern noise 3\n"
+				     "fg #ff8000\nfill-circle 160 100 50\n"
+				     "text 10 10 \"png\"\n";
 	char path[] = "/tmp/rdc_png_XXXXXX";
 	uint32_t *frame, *back, w = 0, h = 0, bw = 0, bh = 0;
 	rdc_dev *dev;
@@ -107,17 +105,15 @@ static void test_png_pitch(void **state)
 
 static void test_png_errors(void **state)
 {
-	uint32_t px[4] = { 0 };
+	uint32_t px[4] = {0};
 
 	(void)state;
 	assert_int_equal(rdc_png_write("/nonexistent/dir/x.png", px, 2, 2, 2),
 			 RDC_E_FILE);
 	assert_int_equal(rdc_png_write("/tmp/x.png", NULL, 2, 2, 2),
 			 RDC_E_INVAL);
-	assert_int_equal(rdc_png_write("/tmp/x.png", px, 0, 2, 2),
-			 RDC_E_INVAL);
-	assert_int_equal(rdc_png_write("/tmp/x.png", px, 2, 2, 1),
-			 RDC_E_INVAL);
+	assert_int_equal(rdc_png_write("/tmp/x.png", px, 0, 2, 2), RDC_E_INVAL);
+	assert_int_equal(rdc_png_write("/tmp/x.png", px, 2, 2, 1), RDC_E_INVAL);
 	assert_int_equal(rdc_png_write(NULL, px, 2, 2, 2), RDC_E_INVAL);
 }
 

@@ -122,9 +122,9 @@ static void test_vblank_wait(void **state)
 	assert_true(y >= vdisp);
 	assert_int_equal(rdc_vblank_wait(dev), 0);
 	assert_int_equal(reg(dev, RDC_REG_FRAME_COUNT), fc0 + 2);
-	/* from vblank, a fresh frame is one vblank away */
+	/* even from vblank, a frame with fresh latched state is two away */
 	assert_int_equal(rdc_frame_wait(dev), 0);
-	assert_int_equal(reg(dev, RDC_REG_FRAME_COUNT), fc0 + 3);
+	assert_int_equal(reg(dev, RDC_REG_FRAME_COUNT), fc0 + 4);
 }
 
 static void test_frame_wait_from_active(void **state)
@@ -165,15 +165,17 @@ static void test_halted(void **state)
 
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_CONTROL,
 				       RDC_CONTROL_RESET_VALUE |
-				       RDC_CONTROL_HALT_ON_ERR), 0);
+					       RDC_CONTROL_HALT_ON_ERR),
+			 0);
 	assert_int_equal(rdc_submit(dev, &bad, 1), 0);
 	assert_int_equal(rdc_finish(dev), RDC_E_HALTED);
 	assert_true(reg(dev, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED);
 	assert_int_equal(rdc_dev_error(dev, &code, NULL), 0);
 	assert_int_equal(code, RDC_ERR_OPCODE);
-	assert_int_equal(rdc_reg_write(dev, RDC_REG_CONTROL,
-				       RDC_CONTROL_RESET_VALUE |
-				       RDC_CONTROL_RESUME), 0);
+	assert_int_equal(
+		rdc_reg_write(dev, RDC_REG_CONTROL,
+			      RDC_CONTROL_RESET_VALUE | RDC_CONTROL_RESUME),
+		0);
 	assert_int_equal(rdc_finish(dev), 0);
 }
 

@@ -41,7 +41,7 @@ static uint32_t reg(rdc_dev *dev, uint32_t r)
 static void test_vram_bounds(void **state)
 {
 	rdc_dev *dev = *state;
-	uint8_t buf[16] = { 1, 2, 3, 4, 5, 6, 7, 8 }, back[16];
+	uint8_t buf[16] = {1, 2, 3, 4, 5, 6, 7, 8}, back[16];
 
 	assert_int_equal(reg(dev, RDC_REG_VRAM_SIZE), VRAM_4M);
 	assert_int_equal(rdc_vram_write(dev, VRAM_4M - 8, buf, 8), 0);
@@ -63,7 +63,8 @@ static void test_mode_set(void **state)
 	rdc_dev *dev = *state;
 
 	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_800x600_60,
-				      RDC_FMT_RGB888, 0x1000), 0);
+				      RDC_FMT_RGB888, 0x1000),
+			 0);
 	/* 800 pixels * 3 bytes, already a multiple of 4 */
 	assert_int_equal(reg(dev, RDC_REG_FB_STRIDE), 2400);
 	assert_int_equal(reg(dev, RDC_REG_FB_BASE), 0x1000);
@@ -71,21 +72,25 @@ static void test_mode_set(void **state)
 	assert_int_equal(reg(dev, RDC_REG_H_DISPLAY), 800);
 	assert_int_equal(reg(dev, RDC_REG_V_DISPLAY), 600);
 	/* 320 pixels at 1 bpp: 40 bytes; at 2 bpp 80 */
-	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_I1, 0),
-			 0);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_I1, 0), 0);
 	assert_int_equal(reg(dev, RDC_REG_FB_STRIDE), 40);
 	assert_int_equal(rdc_finish(dev), 0);
 	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_COUNT, RDC_FMT_I8, 0),
 			 RDC_E_INVAL);
-	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60,
-				      RDC_FMT_COUNT, 0), RDC_E_INVAL);
-	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_I8,
-				      2), RDC_E_INVAL);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_COUNT, 0),
+		RDC_E_INVAL);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_I8, 2),
+		RDC_E_INVAL);
 	/* 1920 * 1080 * 4 bytes do not fit 4 MiB */
-	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_1920x1080_60,
-				      RDC_FMT_XRGB8888, 0), RDC_E_RANGE);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_1920x1080_60, RDC_FMT_XRGB8888, 0),
+		RDC_E_RANGE);
 	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_I8,
-				      VRAM_4M - 1024), RDC_E_RANGE);
+				      VRAM_4M - 1024),
+			 RDC_E_RANGE);
 }
 
 static uint32_t seed = 12345;
@@ -101,9 +106,10 @@ static uint8_t rnd8(void)
  * VRAM aperture, per format.  x is a multiple of 32 so rows start on a
  * byte in every format.
  */
-static void roundtrip(rdc_dev *dev, uint32_t fmt, uint32_t w, uint32_t h)
+static void roundtrip_at(rdc_dev *dev, uint32_t fmt, uint32_t x, uint32_t w,
+			 uint32_t h)
 {
-	const uint32_t x = 64, y = 7;
+	const uint32_t y = 7;
 	uint32_t row = rdc_format_row_bytes(fmt, w);
 	uint32_t padded = (row + 3) & ~3u;
 	uint32_t stride = reg(dev, RDC_REG_FB_STRIDE);
@@ -121,17 +127,25 @@ static void roundtrip(rdc_dev *dev, uint32_t fmt, uint32_t w, uint32_t h)
 	 * the comparisons below see only what was drawn */
 	if (rdc_format_bpp(fmt) < 8 && (w * rdc_format_bpp(fmt)) % 8)
 		for (uint32_t r = 0; r < h; r++)
-			src[r * row + row - 1] &= (uint8_t)(0xff00 >>
-				((w * rdc_format_bpp(fmt)) % 8));
+			src[r * row + row - 1] &=
+				(uint8_t)(0xff00 >>
+					  ((w * rdc_format_bpp(fmt)) % 8));
 	assert_int_equal(rdc_host_blit(dev, (int)x, (int)y, w, h, src, row), 0);
 	n = rdc_readback(dev, (int)x, (int)y, w, h, rb, (size_t)padded * h);
 	assert_int_equal(n, (int)(padded * h));
 	for (uint32_t r = 0; r < h; r++) {
-		assert_memory_equal(rb + (size_t)r * padded, src + (size_t)r * row,
-				    row);
-		assert_int_equal(rdc_vram_read(dev, (y + r) * stride +
-					       x * rdc_format_bpp(fmt) / 8, vr,
-					       row), 0);
+		assert_memory_equal(rb + (size_t)r * padded,
+				    src + (size_t)r * row, row);
+		/* the aperture holds the rows packed at x: compare whole
+		 * bytes only when x starts one */
+		if (x * rdc_format_bpp(fmt) % 32)
+			continue;
+		assert_int_equal(
+			rdc_vram_read(dev,
+				      (y + r) * stride +
+					      x * rdc_format_bpp(fmt) / 8,
+				      vr, row),
+			0);
 		assert_memory_equal(vr, src + (size_t)r * row, row);
 	}
 	free(src);
@@ -139,17 +153,25 @@ static void roundtrip(rdc_dev *dev, uint32_t fmt, uint32_t w, uint32_t h)
 	free(vr);
 }
 
+static void roundtrip(rdc_dev *dev, uint32_t fmt, uint32_t w, uint32_t h)
+{
+	roundtrip_at(dev, fmt, 64, w, h);
+}
+
 static void test_host_blit_readback_formats(void **state)
 {
 	rdc_dev *dev = *state;
 
 	for (uint32_t fmt = 0; fmt < RDC_FMT_COUNT; fmt++) {
-		assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60, fmt,
-					      0), 0);
+		assert_int_equal(
+			rdc_mode_set(dev, RDC_PRESET_640x480_60, fmt, 0), 0);
 		roundtrip(dev, fmt, 40, 9);
 		roundtrip(dev, fmt, 8, 1);
 		/* 200 rows of 400 pixels: many commands, many RDATA refills */
 		roundtrip(dev, fmt, 400, 200);
+		/* rows that start and end inside a byte or a word */
+		roundtrip_at(dev, fmt, 3, 13, 5);
+		roundtrip_at(dev, fmt, 33, 1, 2);
 	}
 }
 
@@ -166,8 +188,8 @@ static void test_host_blit_wide_split(void **state)
 	assert_non_null(vr);
 	for (uint32_t i = 0; i < W * H; i++)
 		px[i] = i * 2654435761u;
-	assert_int_equal(rdc_batch_dst(b, 0x10000, W * 4, W, H,
-				       RDC_FMT_XRGB8888), 0);
+	assert_int_equal(
+		rdc_batch_dst(b, 0x10000, W * 4, W, H, RDC_FMT_XRGB8888), 0);
 	assert_int_equal(rdc_batch_clip(b, 0, 0, W, H), 0);
 	assert_int_equal(rdc_batch_submit(dev, b), 0);
 	assert_int_equal(rdc_finish(dev), 0);
@@ -177,8 +199,8 @@ static void test_host_blit_wide_split(void **state)
 	/* 4094 argument words a command: a piece is at most 4064 pixels */
 	assert_true(reg(dev, RDC_REG_PERF_CMDS) - cmds0 >= 3 + 1);
 	for (uint32_t r = 0; r < H; r++) {
-		assert_int_equal(rdc_vram_read(dev, 0x10000 + r * W * 4, vr,
-					       W * 4), 0);
+		assert_int_equal(
+			rdc_vram_read(dev, 0x10000 + r * W * 4, vr, W * 4), 0);
 		assert_memory_equal(vr, px + r * W, W * 4);
 	}
 	assert_int_equal(rdc_host_blit(dev, 0, 0, 4, 4, px, 15), RDC_E_INVAL);
@@ -199,8 +221,9 @@ static void test_readback_small_buffer(void **state)
 	assert_int_equal(reg(dev, RDC_REG_RDATA_COUNT), 0);
 	assert_int_equal(rdc_readback(dev, 0, 0, 4, 4, buf, sizeof(buf)), 64);
 	/* a rectangle the device refuses */
-	assert_int_equal(rdc_readback(dev, 0, 0, RDC_SIZE_MAX + 1, 1, buf,
-				      sizeof(buf)), RDC_E_DEVICE);
+	assert_int_equal(
+		rdc_readback(dev, 0, 0, RDC_SIZE_MAX + 1, 1, buf, sizeof(buf)),
+		RDC_E_DEVICE);
 	assert_int_equal(rdc_dev_error(dev, NULL, NULL), 0);
 }
 
@@ -210,8 +233,9 @@ static void test_frame_grab(void **state)
 	rdc_batch *b = rdc_batch_new();
 	uint32_t w = 0, h = 0, *pix, crc1 = 0, crc2 = 0;
 
-	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70,
-				      RDC_FMT_XRGB8888, 0), 0);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_XRGB8888, 0),
+		0);
 	assert_int_equal(rdc_batch_fg(b, 0xff0000), 0);
 	assert_int_equal(rdc_batch_fill_rect(b, 0, 0, 320, 200), 0);
 	assert_int_equal(rdc_batch_fg(b, 0x0000ff), 0);
@@ -253,6 +277,28 @@ static void test_frame_grab(void **state)
 	free(pix);
 }
 
+/* A mode set in vertical blanking is latched a frame later; the fresh
+ * frame rdc_frame_wait waits for has it. */
+static void test_mode_set_in_vblank(void **state)
+{
+	rdc_dev *dev = *state;
+	uint32_t w = 0, h = 0;
+
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_RGB565, 0), 0);
+	assert_int_equal(rdc_frame_wait(dev), 0);
+	assert_int_equal(rdc_frame_grab(dev, NULL, 0, &w, &h), RDC_E_RANGE);
+	assert_int_equal(w, 320);
+	assert_int_equal(rdc_vblank_wait(dev), 0);
+	assert_true(reg(dev, RDC_REG_STATUS) & RDC_STATUS_VBLANK);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_I8, 0), 0);
+	assert_int_equal(rdc_frame_wait(dev), 0);
+	assert_int_equal(rdc_frame_grab(dev, NULL, 0, &w, &h), RDC_E_RANGE);
+	assert_int_equal(w, 640);
+	assert_int_equal(h, 480);
+}
+
 #define T(f) cmocka_unit_test_setup_teardown(f, dev_setup, dev_teardown)
 
 int main(void)
@@ -264,6 +310,7 @@ int main(void)
 		T(test_host_blit_wide_split),
 		T(test_readback_small_buffer),
 		T(test_frame_grab),
+		T(test_mode_set_in_vblank),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

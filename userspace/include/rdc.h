@@ -4,8 +4,9 @@
  * controller.
  *
  * One device handle (rdc_dev) reached through a URI that picks a backend:
- *   "sim:" or ""            an RDC-1 simulated in this process (default);
- *                           options: "sim:vram=16M"
+ *   "sim:", "sim" or ""     an RDC-1 simulated in this process (default);
+ *                           options: "sim:vram=16M" (64K..256M bytes,
+ *                           K/M suffixes)
  *   (later: unix:PATH, tcp:HOST:PORT, usb:, fbdev:/dev/fbN)
  *
  * Errors: every function that can fail returns 0 or a positive count on
@@ -30,19 +31,19 @@ extern "C" {
 
 enum rdc_error {
 	RDC_OK = 0,
-	RDC_E_INVAL = -1, /* bad argument */
-	RDC_E_NOMEM = -2, /* out of memory */
-	RDC_E_NOSYS = -3, /* the backend does not offer this */
-	RDC_E_URI = -4, /* unknown or malformed device URI */
-	RDC_E_IO = -5, /* transport failure */
+	RDC_E_INVAL = -1,   /* bad argument */
+	RDC_E_NOMEM = -2,   /* out of memory */
+	RDC_E_NOSYS = -3,   /* the backend does not offer this */
+	RDC_E_URI = -4,	    /* unknown or malformed device URI */
+	RDC_E_IO = -5,	    /* transport failure */
 	RDC_E_TIMEOUT = -6, /* the wait ran past its simulated-time budget */
-	RDC_E_DEVICE = -7, /* the device reported an error (rdc_dev_error) */
-	RDC_E_HALTED = -8, /* the display processor is halted on an error */
-	RDC_E_RANGE = -9, /* address or size outside the device */
-	RDC_E_PARSE = -10, /* script syntax error (rdc_script_*) */
-	RDC_E_PROTO = -11, /* protocol violation by the other side */
-	RDC_E_BUSY = -12, /* another client controls the device */
-	RDC_E_FILE = -13, /* file could not be read or written */
+	RDC_E_DEVICE = -7,  /* the device reported an error (rdc_dev_error) */
+	RDC_E_HALTED = -8,  /* the display processor is halted on an error */
+	RDC_E_RANGE = -9,   /* address or size outside the device */
+	RDC_E_PARSE = -10,  /* script syntax error (rdc_script_*) */
+	RDC_E_PROTO = -11,  /* protocol violation by the other side */
+	RDC_E_BUSY = -12,   /* another client controls the device */
+	RDC_E_FILE = -13,   /* file could not be read or written */
 	RDC_E_COUNT_ = -14
 };
 
@@ -54,7 +55,7 @@ const char *rdc_dev_strerror(uint32_t code);
 typedef struct rdc_dev rdc_dev;
 typedef struct rdc_batch rdc_batch;
 
-/* ---- Device ---------------------------------------------------------------- */
+/* ---- Device -------------------------------------------------------------- */
 int rdc_open(const char *uri, rdc_dev **out);
 void rdc_close(rdc_dev *dev);
 /* Chip reset (RDC_CONTROL_SOFT_RESET). */
@@ -80,17 +81,21 @@ int rdc_preset_size(uint32_t preset, uint32_t *width, uint32_t *height);
 /* Preset by name ("640x480", "640x480@60", "1080p"); -1 if unknown. */
 int rdc_preset_by_name(const char *name);
 
-/* ---- Command submission ----------------------------------------------------- */
+/* ---- Command submission -------------------------------------------------- */
 /*
  * Push command words into the FIFO.  When it is full the call waits
  * (advancing simulated time on sim:) until the DP makes room: that is the
  * back-pressure.  Returns RDC_E_HALTED if the DP halted.
  */
 int rdc_submit(rdc_dev *dev, const uint32_t *words, size_t n);
-/* Submit a FENCE with a fresh value and wait until the DP has executed it,
- * i.e. every command submitted before has completed. */
+/*
+ * Submit a FENCE with a fresh value and wait until the DP has executed it
+ * and is idle, i.e. every command submitted before has completed.
+ * RDC_E_DEVICE if the device has a pending error (ERR_CODE), RDC_E_HALTED,
+ * RDC_E_TIMEOUT after ten simulated seconds.
+ */
 int rdc_finish(rdc_dev *dev);
-/* Wait until FENCE >= value (wrapping compare). */
+/* Wait until FENCE >= value (wrapping compare); RDC_E_DEVICE as above. */
 int rdc_fence_wait(rdc_dev *dev, uint32_t value);
 /* Wait for the start of the next vertical blanking (host side). */
 int rdc_vblank_wait(rdc_dev *dev);
@@ -105,19 +110,22 @@ int rdc_idle_wait(rdc_dev *dev);
  * Screen to host: read a w x h rectangle at (x, y) of the SRC surface
  * through the DP's READBACK command into buf (rows of SRC-format pixels,
  * each padded to 4 bytes); `cap` is buf's size in bytes.  Returns bytes
- * written or an error.
+ * written, RDC_E_RANGE if they did not fit (the data is drained all the
+ * same), or RDC_E_DEVICE if the device refused the rectangle.
  */
-int rdc_readback(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
-		 void *buf, size_t cap);
+int rdc_readback(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h, void *buf,
+		 size_t cap);
 /*
  * Host to screen: copy w x h pixels (DST format, rows `pitch` bytes apart)
  * to (x, y) of the DST surface, split into HOST_BLIT commands that fit
- * RDC_CMD_MAX_ARGS.
+ * RDC_CMD_MAX_ARGS.  The DST format is the one of the last SET_DST this
+ * handle sent (rdc_mode_set, batches), else the scanout format.  Returns
+ * once the words are queued; rdc_finish waits for the drawing.
  */
 int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
 		  const void *pixels, size_t pitch);
 
-/* ---- Frames ------------------------------------------------------------------ */
+/* ---- Frames -------------------------------------------------------------- */
 /*
  * Copy the last complete scanned-out frame (XRGB8888, width*height words)
  * into buf of `cap` words.  Returns RDC_E_RANGE if cap is too small (so
@@ -128,16 +136,17 @@ int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
 int rdc_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap, uint32_t *width,
 		   uint32_t *height);
 /* CRC-32 (zlib) of the last complete frame's XRGB8888 bytes (each pixel
- * as the little-endian word 0x00RRGGBB, i.e. bytes B, G, R, 0). */
+ * as the little-endian word 0xXXRRGGBB, i.e. bytes B, G, R, X). */
 int rdc_frame_crc(rdc_dev *dev, uint32_t *crc);
 /*
- * Wait until a frame scanned out entirely after this call has completed,
- * so that rdc_frame_grab shows everything drawn before it (two vblanks
- * from active video, one from vertical blanking).
+ * Wait until a frame scanned out entirely after this call, with the
+ * latched registers (mode, FB_BASE, ...) written before it in force, has
+ * completed, so that rdc_frame_grab shows everything done before it: two
+ * vblanks.
  */
 int rdc_frame_wait(rdc_dev *dev);
 
-/* ---- Batches: encode commands, then submit them ------------------------------ */
+/* ---- Batches: encode commands, then submit them -------------------------- */
 /*
  * A batch is a growable array of command words.  Encoders do not check
  * arguments (the device validates, so bad commands can be sent on
@@ -187,7 +196,7 @@ int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 int rdc_batch_text(rdc_batch *b, int x, int y, const char *s, size_t len,
 		   int transparent);
 
-/* ---- Introspection for hardware-model tests (sim: only) ---------------------- */
+/* ---- Introspection for hardware-model tests (sim: only) ------------------ */
 struct rdc_stats {
 	uint64_t time; /* simulated core cycles */
 	uint64_t busy, stall, pixels;
@@ -205,7 +214,7 @@ int rdc_stats_get(rdc_dev *dev, struct rdc_stats *st);
 /* Core clock in Hz (for converting cycles to time). */
 int rdc_sim_core_hz(rdc_dev *dev, uint32_t *hz);
 
-/* ---- .rdl scripts (docs/rdl.md) ---------------------------------------------- */
+/* ---- .rdl scripts (docs/rdl.md) ------------------------------------------ */
 struct rdc_script_result {
 	/* cycles spent per command class ("fill", "line", ...), index by
 	 * the opcode; counts likewise */

@@ -67,8 +67,8 @@ static int batch_reserve(rdc_batch *b, size_t more)
 }
 
 /* Header plus `n` arguments; the space for the arguments is returned. */
-static uint32_t *batch_open(rdc_batch *b, uint32_t op, uint32_t flags,
-			    size_t n, int *err)
+static uint32_t *batch_open(rdc_batch *b, uint32_t op, uint32_t flags, size_t n,
+			    int *err)
 {
 	uint32_t *p;
 
@@ -99,7 +99,7 @@ int rdc_batch_cmd(rdc_batch *b, uint32_t op, uint32_t flags,
 static int batch_args(rdc_batch *b, uint32_t op, size_t n, uint32_t a0,
 		      uint32_t a1, uint32_t a2, uint32_t a3)
 {
-	const uint32_t a[4] = { a0, a1, a2, a3 };
+	const uint32_t a[4] = {a0, a1, a2, a3};
 
 	return rdc_batch_cmd(b, op, 0, a, n);
 }
@@ -165,8 +165,8 @@ int rdc_batch_rop(rdc_batch *b, uint32_t rop)
 
 int rdc_batch_clip(rdc_batch *b, int x0, int y0, int x1, int y1)
 {
-	return batch_args(b, RDC_OP_SET_CLIP, 2, RDC_XY(x0, y0),
-			  RDC_XY(x1, y1), 0, 0);
+	return batch_args(b, RDC_OP_SET_CLIP, 2, RDC_XY(x0, y0), RDC_XY(x1, y1),
+			  0, 0);
 }
 
 int rdc_batch_dst(rdc_batch *b, uint32_t base, uint32_t stride, uint32_t w,
@@ -214,8 +214,8 @@ int rdc_batch_rect(rdc_batch *b, int x, int y, uint32_t w, uint32_t h)
 
 int rdc_batch_fill_rect(rdc_batch *b, int x, int y, uint32_t w, uint32_t h)
 {
-	return batch_args(b, RDC_OP_FILL_RECT, 2, RDC_XY(x, y), RDC_WH(w, h),
-			  0, 0);
+	return batch_args(b, RDC_OP_FILL_RECT, 2, RDC_XY(x, y), RDC_WH(w, h), 0,
+			  0);
 }
 
 int rdc_batch_circle(rdc_batch *b, int cx, int cy, uint32_t r)
@@ -260,8 +260,7 @@ int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 		return RDC_E_INVAL;
 	if (2 + row_words * h > RDC_CMD_LENGTH)
 		return RDC_E_INVAL;
-	p = batch_open(b, RDC_OP_MONO,
-		       transparent ? RDC_MONO_TRANSPARENT : 0,
+	p = batch_open(b, RDC_OP_MONO, transparent ? RDC_MONO_TRANSPARENT : 0,
 		       2 + row_words * h, &err);
 	if (!p)
 		return err;
@@ -270,7 +269,7 @@ int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 	p += 2;
 	for (size_t r = 0; r < h; r++) {
 		for (size_t k = 0; k < row_words; k++) {
-			uint8_t pad[4] = { 0 };
+			uint8_t pad[4] = {0};
 			size_t nb = RDC_MIN((size_t)4, row_bytes - 4 * k);
 
 			memcpy(pad, bits + r * row_bytes + 4 * k, nb);
@@ -296,7 +295,7 @@ int rdc_batch_text(rdc_batch *b, int x, int y, const char *s, size_t len,
 	p[0] = RDC_XY(x, y);
 	p[1] = (uint32_t)len;
 	for (size_t k = 0; k < words; k++) {
-		uint8_t pad[4] = { 0 };
+		uint8_t pad[4] = {0};
 
 		memcpy(pad, s + 4 * k, RDC_MIN((size_t)4, len - 4 * k));
 		p[2 + k] = rdc_ld32(pad);

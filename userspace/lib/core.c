@@ -15,14 +15,14 @@
  * rdc_open knows them (RDC_E_NOSYS), unlike a typo (RDC_E_URI).  A
  * transport is added by giving its entry an open() in a file of its own.
  */
-static const struct rdc_backend rdc_backend_unix = { .scheme = "unix" };
-static const struct rdc_backend rdc_backend_tcp = { .scheme = "tcp" };
-static const struct rdc_backend rdc_backend_usb = { .scheme = "usb" };
-static const struct rdc_backend rdc_backend_fbdev = { .scheme = "fbdev" };
+static const struct rdc_backend rdc_backend_unix = {.scheme = "unix"};
+static const struct rdc_backend rdc_backend_tcp = {.scheme = "tcp"};
+static const struct rdc_backend rdc_backend_usb = {.scheme = "usb"};
+static const struct rdc_backend rdc_backend_fbdev = {.scheme = "fbdev"};
 
 static const struct rdc_backend *const rdc_backends[] = {
-	&rdc_backend_sim,  &rdc_backend_unix,  &rdc_backend_tcp,
-	&rdc_backend_usb,  &rdc_backend_fbdev,
+	&rdc_backend_sim, &rdc_backend_unix,  &rdc_backend_tcp,
+	&rdc_backend_usb, &rdc_backend_fbdev,
 };
 
 static const char *const rdc_error_str[] = {
@@ -277,14 +277,14 @@ static const struct {
 	const char *name;
 	uint32_t preset;
 } rdc_preset_names[] = {
-	{ "320x200@70", RDC_PRESET_320x200_70 },
-	{ "640x480@60", RDC_PRESET_640x480_60 },
-	{ "800x600@60", RDC_PRESET_800x600_60 },
-	{ "1024x768@60", RDC_PRESET_1024x768_60 },
-	{ "1280x720@60", RDC_PRESET_1280x720_60 },
-	{ "1920x1080@60", RDC_PRESET_1920x1080_60 },
-	{ "720p", RDC_PRESET_1280x720_60 },
-	{ "1080p", RDC_PRESET_1920x1080_60 },
+	{"320x200@70", RDC_PRESET_320x200_70},
+	{"640x480@60", RDC_PRESET_640x480_60},
+	{"800x600@60", RDC_PRESET_800x600_60},
+	{"1024x768@60", RDC_PRESET_1024x768_60},
+	{"1280x720@60", RDC_PRESET_1280x720_60},
+	{"1920x1080@60", RDC_PRESET_1920x1080_60},
+	{"720p", RDC_PRESET_1280x720_60},
+	{"1080p", RDC_PRESET_1920x1080_60},
 };
 
 int rdc_preset_by_name(const char *name)
@@ -350,8 +350,10 @@ int rdc_wait_one(rdc_dev *dev, enum rdc_wait_kind kind, uint32_t reg,
 		 uint32_t mask, uint32_t value, bool needs_dp)
 {
 	struct rdc_wait w = {
-		.term[0] = { .kind = kind, .reg = reg, .mask = mask,
-			     .value = value },
+		.term[0] = {.kind = kind,
+			    .reg = reg,
+			    .mask = mask,
+			    .value = value},
 		.needs_dp = needs_dp,
 	};
 
@@ -375,8 +377,9 @@ int rdc_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 			return ret;
 		if (!free_words) {
 			/* Wait for half a FIFO, not one word: fewer checks. */
-			uint32_t want = n < RDC_FIFO_DEPTH / 2 ?
-					(uint32_t)n : RDC_FIFO_DEPTH / 2;
+			uint32_t want = n < RDC_FIFO_DEPTH / 2
+						? (uint32_t)n
+						: RDC_FIFO_DEPTH / 2;
 
 			ret = rdc_wait_one(dev, RDC_WAIT_GE, RDC_REG_FIFO_FREE,
 					   ~0u, want, true);
@@ -469,29 +472,29 @@ int rdc_vblank_wait(rdc_dev *dev)
 
 int rdc_frame_wait(rdc_dev *dev)
 {
-	uint32_t fc, st;
+	uint32_t fc;
 	int ret;
 
 	if (!dev)
 		return RDC_E_INVAL;
 	ret = rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &fc);
-	if (!ret)
-		ret = rdc_reg_read(dev, RDC_REG_STATUS, &st);
 	if (ret)
 		return ret;
 	/*
-	 * In vertical blanking the next frame has not started: its end is
-	 * the next vblank.  In active video the frame on screen began
-	 * before this call, so the one after it is needed.
+	 * Two vblanks from anywhere: the first latches what the host wrote
+	 * (mode, base, format are latched registers), the frame scanned after
+	 * it with that state in force completes at the second.  From
+	 * vertical blanking one would do for VRAM contents, but not for a
+	 * mode set there, which is latched only at the next vblank.
 	 */
 	return rdc_wait_one(dev, RDC_WAIT_WRAP_GE, RDC_REG_FRAME_COUNT, ~0u,
-			    fc + ((st & RDC_STATUS_VBLANK) ? 1 : 2), false);
+			    fc + 2, false);
 }
 
 /* ---- Host <-> screen ---------------------------------------------------- */
 
-static void rdc_rb_store(uint8_t *out, size_t cap, size_t *got,
-			 bool *overflow, uint32_t v)
+static void rdc_rb_store(uint8_t *out, size_t cap, size_t *got, bool *overflow,
+			 uint32_t v)
 {
 	if (*got + 4 > cap) {
 		/* keep draining so the FIFO is left empty */
@@ -502,8 +505,8 @@ static void rdc_rb_store(uint8_t *out, size_t cap, size_t *got,
 	*got += 4;
 }
 
-int rdc_readback(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
-		 void *buf, size_t cap)
+int rdc_readback(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h, void *buf,
+		 size_t cap)
 {
 	uint8_t *out = buf;
 	size_t got = 0;
@@ -532,10 +535,12 @@ int rdc_readback(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
 	for (;;) {
 		uint32_t fence, count;
 		struct rdc_wait wt = {
-			.term = {
-				{ RDC_WAIT_GE, RDC_REG_RDATA_COUNT, ~0u, 1 },
-				{ RDC_WAIT_EQ, RDC_REG_FENCE, ~0u, seq },
-			},
+			.term =
+				{
+					{RDC_WAIT_GE, RDC_REG_RDATA_COUNT, ~0u,
+					 1},
+					{RDC_WAIT_EQ, RDC_REG_FENCE, ~0u, seq},
+				},
 			.needs_dp = true,
 		};
 
@@ -629,13 +634,14 @@ int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
 			cmd[n++] = RDC_XY(x + (int)px, y + (int)py);
 			cmd[n++] = RDC_WH(pw, ph);
 			for (uint32_t r = 0; r < ph; r++) {
-				const uint8_t *row = src + (size_t)(py + r) *
-							     pitch + src_off;
+				const uint8_t *row = src +
+						     (size_t)(py + r) * pitch +
+						     src_off;
 				uint8_t pad[4];
 
 				for (uint32_t k = 0; k < row_words; k++) {
-					uint32_t nb = RDC_MIN(4u, row_bytes -
-								  k * 4);
+					uint32_t nb =
+						RDC_MIN(4u, row_bytes - k * 4);
 
 					memset(pad, 0, sizeof(pad));
 					memcpy(pad, row + k * 4, nb);

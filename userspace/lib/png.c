@@ -17,8 +17,8 @@ int rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,
 	FILE *f;
 	volatile int ret = RDC_E_FILE;
 
-	if (!path || !xrgb || !w || !h || pitch < w ||
-	    w > RDC_CRTC_MAX_TOTAL || h > RDC_CRTC_MAX_TOTAL)
+	if (!path || !xrgb || !w || !h || pitch < w || w > RDC_CRTC_MAX_TOTAL ||
+	    h > RDC_CRTC_MAX_TOTAL)
 		return RDC_E_INVAL;
 	row = malloc((size_t)w * PNG_RGB_BYTES);
 	if (!row)
@@ -37,9 +37,8 @@ int rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,
 	if (setjmp(png_jmpbuf(png)))
 		goto out;
 	png_init_io(png, f);
-	png_set_IHDR(png, info, w, h, 8, PNG_COLOR_TYPE_RGB,
-		     PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-		     PNG_FILTER_TYPE_DEFAULT);
+	png_set_IHDR(png, info, w, h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+		     PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
 	png_write_info(png, info);
 	for (uint32_t y = 0; y < h; y++) {
 		const uint32_t *src = xrgb + (size_t)y * pitch;

@@ -22,10 +22,10 @@
  * ends when ANY of the terms holds.
  */
 enum rdc_wait_kind {
-	RDC_WAIT_NONE, /* unused term */
-	RDC_WAIT_GE, /* (reg & mask) >= value, unsigned */
+	RDC_WAIT_NONE,	  /* unused term */
+	RDC_WAIT_GE,	  /* (reg & mask) >= value, unsigned */
 	RDC_WAIT_WRAP_GE, /* (int32_t)((reg & mask) - value) >= 0 */
-	RDC_WAIT_EQ, /* (reg & mask) == value */
+	RDC_WAIT_EQ,	  /* (reg & mask) == value */
 };
 
 #define RDC_WAIT_TERMS 2
@@ -101,7 +101,7 @@ extern const struct rdc_backend rdc_backend_sim;
 
 struct rdc_dev {
 	const struct rdc_backend *be;
-	void *priv; /* the backend's */
+	void *priv;	    /* the backend's */
 	uint32_t fence_seq; /* last FENCE value handed out */
 
 	/* command-stream watcher (core.c, rdc_track_words) */

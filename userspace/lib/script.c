@@ -20,10 +20,10 @@
 #include "rdc_priv.h"
 
 /* Limits that keep hostile scripts from exhausting memory or time. */
-#define RDL_MAX_LINE (4u << 20) /* bytes in one logical line */
-#define RDL_MAX_FILE (64u << 20)
+#define RDL_MAX_LINE	   (4u << 20) /* bytes in one logical line */
+#define RDL_MAX_FILE	   (64u << 20)
 #define RDL_MAX_BLIT_BYTES (64u << 20)
-#define RDL_MAX_STEP RDC_WAIT_BUDGET_DEFAULT
+#define RDL_MAX_STEP	   RDC_WAIT_BUDGET_DEFAULT
 
 struct rdl_tok {
 	const char *s; /* NUL-terminated; unescaped for quoted strings */
@@ -108,30 +108,68 @@ const char *rdc_op_name(uint32_t op)
 	return op < RDC_OP_COUNT ? rdl_op_names[op] : NULL;
 }
 
+/* clang-format off */
 #define RDL_REG(n) { #n, RDC_REG_##n }
+/* clang-format on */
 static const struct {
 	const char *name;
 	uint32_t reg;
 } rdl_regs[] = {
-	RDL_REG(ID), RDL_REG(VERSION), RDL_REG(VRAM_SIZE), RDL_REG(CORE_KHZ),
-	RDL_REG(CONTROL), RDL_REG(STATUS), RDL_REG(IRQ_STATUS),
-	RDL_REG(IRQ_ENABLE), RDL_REG(ERR_CODE), RDL_REG(ERR_INFO),
-	RDL_REG(PINS), RDL_REG(H_TOTAL), RDL_REG(H_DISPLAY),
-	RDL_REG(H_SYNC_START), RDL_REG(H_SYNC_END), RDL_REG(V_TOTAL),
-	RDL_REG(V_DISPLAY), RDL_REG(V_SYNC_START), RDL_REG(V_SYNC_END),
-	RDL_REG(PIXCLK_KHZ), RDL_REG(CRTC_FLAGS), RDL_REG(FB_BASE),
-	RDL_REG(FB_STRIDE), RDL_REG(FB_FORMAT), RDL_REG(LINE_COMPARE),
-	RDL_REG(BEAM), RDL_REG(FRAME_COUNT), RDL_REG(MODE_PRESET),
-	RDL_REG(CLUT_INDEX), RDL_REG(CLUT_DATA), RDL_REG(CURSOR_BASE),
-	RDL_REG(CURSOR_POS), RDL_REG(CURSOR_FG), RDL_REG(CURSOR_BG),
-	RDL_REG(FIFO_DATA), RDL_REG(FIFO_FREE), RDL_REG(FIFO_LOWWATER),
-	RDL_REG(RING_BASE), RDL_REG(RING_SIZE), RDL_REG(RING_HEAD),
-	RDL_REG(RING_TAIL), RDL_REG(FENCE), RDL_REG(RDATA),
-	RDL_REG(RDATA_COUNT), RDL_REG(TIME_LO), RDL_REG(TIME_HI),
-	RDL_REG(PERF_BUSY_LO), RDL_REG(PERF_BUSY_HI), RDL_REG(PERF_STALL_LO),
-	RDL_REG(PERF_STALL_HI), RDL_REG(PERF_PIXELS_LO),
-	RDL_REG(PERF_PIXELS_HI), RDL_REG(PERF_CMDS),
-	RDL_REG(PERF_LAST_CYCLES), RDL_REG(PERF_LAST_OPCODE),
+	RDL_REG(ID),
+	RDL_REG(VERSION),
+	RDL_REG(VRAM_SIZE),
+	RDL_REG(CORE_KHZ),
+	RDL_REG(CONTROL),
+	RDL_REG(STATUS),
+	RDL_REG(IRQ_STATUS),
+	RDL_REG(IRQ_ENABLE),
+	RDL_REG(ERR_CODE),
+	RDL_REG(ERR_INFO),
+	RDL_REG(PINS),
+	RDL_REG(H_TOTAL),
+	RDL_REG(H_DISPLAY),
+	RDL_REG(H_SYNC_START),
+	RDL_REG(H_SYNC_END),
+	RDL_REG(V_TOTAL),
+	RDL_REG(V_DISPLAY),
+	RDL_REG(V_SYNC_START),
+	RDL_REG(V_SYNC_END),
+	RDL_REG(PIXCLK_KHZ),
+	RDL_REG(CRTC_FLAGS),
+	RDL_REG(FB_BASE),
+	RDL_REG(FB_STRIDE),
+	RDL_REG(FB_FORMAT),
+	RDL_REG(LINE_COMPARE),
+	RDL_REG(BEAM),
+	RDL_REG(FRAME_COUNT),
+	RDL_REG(MODE_PRESET),
+	RDL_REG(CLUT_INDEX),
+	RDL_REG(CLUT_DATA),
+	RDL_REG(CURSOR_BASE),
+	RDL_REG(CURSOR_POS),
+	RDL_REG(CURSOR_FG),
+	RDL_REG(CURSOR_BG),
+	RDL_REG(FIFO_DATA),
+	RDL_REG(FIFO_FREE),
+	RDL_REG(FIFO_LOWWATER),
+	RDL_REG(RING_BASE),
+	RDL_REG(RING_SIZE),
+	RDL_REG(RING_HEAD),
+	RDL_REG(RING_TAIL),
+	RDL_REG(FENCE),
+	RDL_REG(RDATA),
+	RDL_REG(RDATA_COUNT),
+	RDL_REG(TIME_LO),
+	RDL_REG(TIME_HI),
+	RDL_REG(PERF_BUSY_LO),
+	RDL_REG(PERF_BUSY_HI),
+	RDL_REG(PERF_STALL_LO),
+	RDL_REG(PERF_STALL_HI),
+	RDL_REG(PERF_PIXELS_LO),
+	RDL_REG(PERF_PIXELS_HI),
+	RDL_REG(PERF_CMDS),
+	RDL_REG(PERF_LAST_CYCLES),
+	RDL_REG(PERF_LAST_OPCODE),
 	RDL_REG(PERF_CTRL),
 };
 
@@ -164,9 +202,10 @@ int rdc_reg_by_name(const char *name, uint32_t *reg)
 }
 
 static const char *const rdl_rop_names[RDC_ROP_COUNT] = {
-	"clear", "and", "and-reverse", "copy", "and-inverted", "noop",
-	"xor", "or", "nor", "equiv", "invert", "or-reverse",
-	"copy-inverted", "or-inverted", "nand", "set",
+	"clear",	 "and",		"and-reverse", "copy",
+	"and-inverted",	 "noop",	"xor",	       "or",
+	"nor",		 "equiv",	"invert",      "or-reverse",
+	"copy-inverted", "or-inverted", "nand",	       "set",
 };
 
 /* "copy", "GXcopy", "and-reverse", "GXandReverse", "and_reverse" */
@@ -237,7 +276,32 @@ static int rdl_push_tok(struct rdl *r, const char *s, size_t len, bool quoted)
 		r->tok = t;
 		r->tok_cap = cap;
 	}
-	r->tok[r->ntok++] = (struct rdl_tok){ s, len, quoted };
+	r->tok[r->ntok++] = (struct rdl_tok){s, len, quoted};
+	return 0;
+}
+
+/* The escape after a backslash at *p: one byte to *out, both advance. */
+static int rdl_escape(struct rdl *r, char **p, char **out)
+{
+	static const char from[] = "ntr0\\\"", to[] = "\n\t\r\0\\\"";
+	const char *e;
+	int hi, lo;
+
+	if (**p == 'x') {
+		hi = rdl_hex((*p)[1]);
+		lo = hi < 0 ? -1 : rdl_hex((*p)[2]);
+		if (lo < 0)
+			return rdl_err(r, RDC_E_PARSE,
+				       "bad \\x escape: two hex digits needed");
+		*(*out)++ = (char)(hi << 4 | lo);
+		*p += 3;
+		return 0;
+	}
+	e = **p ? strchr(from, **p) : NULL;
+	if (!e)
+		return rdl_err(r, RDC_E_PARSE, "unknown escape in string");
+	*(*out)++ = to[e - from];
+	(*p)++;
 	return 0;
 }
 
@@ -261,8 +325,6 @@ static int rdl_tokenize(struct rdl *r)
 			char *out = ++p, *start = out;
 
 			for (;;) {
-				int hi, lo;
-
 				if (!*p)
 					return rdl_err(r, RDC_E_PARSE,
 						       "unterminated string");
@@ -273,26 +335,9 @@ static int rdl_tokenize(struct rdl *r)
 					continue;
 				}
 				p++;
-				switch (*p) {
-				case 'n': *out++ = '\n'; p++; break;
-				case 't': *out++ = '\t'; p++; break;
-				case 'r': *out++ = '\r'; p++; break;
-				case '0': *out++ = '\0'; p++; break;
-				case '\\': *out++ = '\\'; p++; break;
-				case '"': *out++ = '"'; p++; break;
-				case 'x':
-					hi = rdl_hex(p[1]);
-					lo = hi < 0 ? -1 : rdl_hex(p[2]);
-					if (lo < 0)
-						return rdl_err(r, RDC_E_PARSE,
-							"bad \\x escape: two hex digits needed");
-					*out++ = (char)(hi << 4 | lo);
-					p += 3;
-					break;
-				default:
-					return rdl_err(r, RDC_E_PARSE,
-						       "unknown escape in string");
-				}
+				ret = rdl_escape(r, &p, &out);
+				if (ret)
+					return ret;
 			}
 			p++; /* closing quote */
 			if (*p && !rdl_is_space(*p))
@@ -435,7 +480,8 @@ static int rdl_colour(struct rdl *r, size_t i, uint32_t fmt, uint32_t *out)
 		return rdl_err(r, RDC_E_PARSE, "bad colour '%.40s'", s);
 	if (fmt >= RDC_FMT_COUNT || rdc_format_indexed(fmt))
 		return rdl_err(r, RDC_E_PARSE,
-			       "#rrggbb needs an RGB destination; indexed formats take a CLUT index");
+			       "#rrggbb needs an RGB destination; indexed "
+			       "formats take a CLUT index");
 	for (int k = 1; k <= 6; k++)
 		rgb = rgb << 4 | (uint32_t)rdl_hex(s[k]);
 	*out = rdl_rgb_to_pixel(rgb, fmt);
@@ -474,8 +520,7 @@ static int rdl_reg(struct rdl *r, size_t i, uint32_t *out)
 		*out = (uint32_t)v;
 		return 0;
 	}
-	return rdl_err(r, RDC_E_PARSE, "unknown register '%.40s'",
-		       r->tok[i].s);
+	return rdl_err(r, RDC_E_PARSE, "unknown register '%.40s'", r->tok[i].s);
 }
 
 static bool rdl_word(struct rdl *r, size_t i, const char *w)
@@ -557,8 +602,9 @@ static int st_nop(struct rdl *r, uint32_t op)
 		ret = rdl_size(r, 1, &n);
 	if (ret)
 		return ret;
-	if (n > RDC_CMD_LENGTH)
-		return rdl_err(r, RDC_E_PARSE, "too many NOP words");
+	if (n > RDC_CMD_MAX_ARGS)
+		return rdl_err(r, RDC_E_PARSE, "more than %d NOP words",
+			       RDC_CMD_MAX_ARGS);
 	{
 		uint32_t *z = calloc(n + 1, sizeof(*z));
 
@@ -728,6 +774,11 @@ static int st_points(struct rdl *r, uint32_t op)
 	if (n % 2)
 		return rdl_err(r, RDC_E_PARSE, "%s needs X Y pairs",
 			       rdc_op_name(op));
+	/* Longer is refused by the DP with only the header consumed, and
+	 * the points would then run as commands: `raw` can do that. */
+	if (n / 2 > RDC_CMD_MAX_ARGS)
+		return rdl_err(r, RDC_E_PARSE, "more than %d points",
+			       RDC_CMD_MAX_ARGS);
 	c = malloc((n + 1) * sizeof(*c));
 	if (!c)
 		return rdl_err(r, RDC_E_NOMEM, "out of memory");
@@ -754,7 +805,7 @@ static int st_points(struct rdl *r, uint32_t op)
 static int st_shape(struct rdl *r, uint32_t op)
 {
 	int c[2];
-	uint32_t s[2] = { 0, 0 };
+	uint32_t s[2] = {0, 0};
 	size_t nsize = r->ntok - 3;
 	int ret = rdl_coords(r, 1, 2, c);
 
@@ -835,8 +886,8 @@ static void rdl_put_pixel(uint8_t *row, uint32_t fmt, uint32_t x, uint32_t v)
  * The `gradient` pattern.  Indexed: a ramp of indices across the width.
  * RGB: red grows to the right, green downwards, blue is half on.
  */
-static uint32_t rdl_gradient(uint32_t fmt, uint32_t x, uint32_t y,
-			     uint32_t w, uint32_t h)
+static uint32_t rdl_gradient(uint32_t fmt, uint32_t x, uint32_t y, uint32_t w,
+			     uint32_t h)
 {
 	uint32_t red, grn;
 
@@ -871,8 +922,8 @@ static int rdl_pattern(struct rdl *r, size_t i, uint32_t fmt, uint32_t w,
 		for (uint32_t y = 0; y < h; y++)
 			for (uint32_t x = 0; x < w; x++)
 				rdl_put_pixel(pix + y * pitch, fmt, x,
-					      ((x / cell + y / cell) & 1) ? c1 :
-									  c0);
+					      ((x / cell + y / cell) & 1) ? c1
+									  : c0);
 		return 0;
 	}
 	if (!strcmp(name, "gradient")) {
@@ -934,9 +985,10 @@ static int st_host_blit(struct rdl *r, uint32_t op)
 		ret = rdl_pattern(r, 6, fmt, w, h, pix, pitch);
 	} else if (rdl_word(r, 5, "data")) {
 		if (r->ntok - 6 != (uint64_t)w * h)
-			ret = rdl_err(r, RDC_E_PARSE,
-				      "host-blit data: %zu values for %u pixels",
-				      r->ntok - 6, w * h);
+			ret = rdl_err(
+				r, RDC_E_PARSE,
+				"host-blit data: %zu values for %u pixels",
+				r->ntok - 6, w * h);
 		for (uint32_t k = 0; !ret && k < w * h; k++) {
 			uint32_t v;
 
@@ -947,7 +999,8 @@ static int st_host_blit(struct rdl *r, uint32_t op)
 		}
 	} else {
 		ret = rdl_err(r, RDC_E_PARSE,
-			      "host-blit X Y W H then 'pattern NAME ...' or 'data PIXELS...'");
+			      "host-blit X Y W H then 'pattern NAME ...' or "
+			      "'data PIXELS...'");
 	}
 	if (!ret) {
 		uint64_t busy0, busy1;
@@ -980,11 +1033,12 @@ static int st_readback(struct rdl *r, uint32_t op)
 {
 	const uint32_t idle = RDC_STATUS_IDLE_MASK | RDC_STATUS_FIFO_EMPTY;
 	struct rdc_wait wt = {
-		.term = {
-			{ RDC_WAIT_GE, RDC_REG_RDATA_COUNT, ~0u, 1 },
-			{ RDC_WAIT_EQ, RDC_REG_STATUS, idle,
-			  RDC_STATUS_FIFO_EMPTY },
-		},
+		.term =
+			{
+				{RDC_WAIT_GE, RDC_REG_RDATA_COUNT, ~0u, 1},
+				{RDC_WAIT_EQ, RDC_REG_STATUS, idle,
+				 RDC_STATUS_FIFO_EMPTY},
+			},
 		.needs_dp = true,
 	};
 	uint32_t crc = 0, words = 0, w, h, expect = 0, cmds0, cmds1;
@@ -1004,9 +1058,9 @@ static int st_readback(struct rdl *r, uint32_t op)
 		return ret;
 	crc = (uint32_t)crc32(0L, Z_NULL, 0);
 	ret = rdc_submit(r->dev,
-			 (const uint32_t[]){ RDC_CMD(RDC_OP_READBACK, 0, 2),
-					     RDC_XY(c[0], c[1]),
-					     RDC_WH(w, h) }, 3);
+			 (const uint32_t[]){RDC_CMD(RDC_OP_READBACK, 0, 2),
+					    RDC_XY(c[0], c[1]), RDC_WH(w, h)},
+			 3);
 	for (;;) {
 		uint32_t count = 0, status = 0;
 
@@ -1068,8 +1122,9 @@ static int st_mono(struct rdl *r, uint32_t op)
 		first++;
 	}
 	need = (size_t)(w + 7) / 8 * h;
-	if (need > RDC_CMD_MAX_ARGS * 4)
-		return rdl_err(r, RDC_E_PARSE, "mono bitmap too large");
+	if (2 + ((size_t)(w + 7) / 8 + 3) / 4 * h > RDC_CMD_MAX_ARGS)
+		return rdl_err(r, RDC_E_PARSE,
+			       "mono bitmap too large for one command");
 	bits = calloc(need + 1, 1);
 	if (!bits)
 		return rdl_err(r, RDC_E_NOMEM, "out of memory");
@@ -1096,11 +1151,13 @@ static int st_mono(struct rdl *r, uint32_t op)
 	}
 	if (!ret && have != need)
 		ret = rdl_err(r, RDC_E_PARSE,
-			      "mono: %zu bytes given, %zu needed (H rows of ceil(W/8))",
+			      "mono: %zu bytes given, %zu needed (H rows of "
+			      "ceil(W/8))",
 			      have, need);
 	if (!ret)
-		ret = rdl_encoded(r, op, rdc_batch_mono(r->b, c[0], c[1], w, h,
-							bits, transparent));
+		ret = rdl_encoded(r, op,
+				  rdc_batch_mono(r->b, c[0], c[1], w, h, bits,
+						 transparent));
 	free(bits);
 	return ret;
 }
@@ -1118,8 +1175,11 @@ static int st_text(struct rdl *r, uint32_t op)
 	if (r->ntok == 5 && !transparent)
 		return rdl_err(r, RDC_E_PARSE, "text: '%.40s' after the string",
 			       r->tok[4].s);
-	return rdl_encoded(r, op, rdc_batch_text(r->b, c[0], c[1], r->tok[3].s,
-						 r->tok[3].len, transparent));
+	if (2 + (r->tok[3].len + 3) / 4 > RDC_CMD_MAX_ARGS)
+		return rdl_err(r, RDC_E_PARSE, "text too long for one command");
+	return rdl_encoded(r, op,
+			   rdc_batch_text(r->b, c[0], c[1], r->tok[3].s,
+					  r->tok[3].len, transparent));
 }
 
 /* `raw WORD...`: words straight into the FIFO, headers included. */
@@ -1188,8 +1248,8 @@ static int st_mode(struct rdl *r, uint32_t op)
 	if (p < 0) {
 		ret = rdl_u32(r, 1, &preset);
 		if (ret)
-			return rdl_err(r, RDC_E_PARSE,
-				       "unknown mode '%.40s'", r->tok[1].s);
+			return rdl_err(r, RDC_E_PARSE, "unknown mode '%.40s'",
+				       r->tok[1].s);
 	} else {
 		preset = (uint32_t)p;
 	}
@@ -1355,55 +1415,69 @@ static int st_screenshot(struct rdl *r, uint32_t op)
 static const struct rdl_stmt {
 	const char *name;
 	rdl_fn fn;
-	uint32_t op; /* command class the statement's cycles go to */
+	uint32_t op;	   /* command class the statement's cycles go to */
 	uint32_t min, max; /* argument count */
 } rdl_stmts[] = {
 	/* device commands */
-	{ "nop", st_nop, RDC_OP_NOP, 0, 1 },
-	{ "fence", st_words, RDC_OP_FENCE, 1, 1 },
-	{ "wait-vblank", st_words, RDC_OP_WAIT_VBLANK, 0, 0 },
-	{ "wait-line", st_words, RDC_OP_WAIT_LINE, 1, 1 },
-	{ "cmd-reg", st_cmd_reg, RDC_OP_REG_WRITE, 2, 2 },
-	{ "load-clut", st_load_clut, RDC_OP_LOAD_CLUT, 2, RDL_ANY },
-	{ "call", st_words, RDC_OP_CALL, 1, 1 },
-	{ "ret", st_words, RDC_OP_RET, 0, 0 },
-	{ "jump", st_words, RDC_OP_JUMP, 1, 1 },
-	{ "fg", st_colour, RDC_OP_SET_FG, 1, 1 },
-	{ "bg", st_colour, RDC_OP_SET_BG, 1, 1 },
-	{ "rop", st_rop, RDC_OP_SET_ROP, 1, 1 },
-	{ "clip", st_clip, RDC_OP_SET_CLIP, 1, 4 },
-	{ "dst", st_surface, RDC_OP_SET_DST, 1, 5 },
-	{ "src", st_surface, RDC_OP_SET_SRC, 1, 5 },
-	{ "pixel", st_points, RDC_OP_PIXEL, 2, 2 },
-	{ "line", st_points, RDC_OP_LINE, 4, 4 },
-	{ "polyline", st_points, RDC_OP_POLYLINE, 4, RDL_ANY },
-	{ "rect", st_shape, RDC_OP_RECT, 4, 4 },
-	{ "fill-rect", st_shape, RDC_OP_FILL_RECT, 4, 4 },
-	{ "fill", st_shape, RDC_OP_FILL_RECT, 4, 4 },
-	{ "circle", st_shape, RDC_OP_CIRCLE, 3, 3 },
-	{ "fill-circle", st_shape, RDC_OP_FILL_CIRCLE, 3, 3 },
-	{ "ellipse", st_shape, RDC_OP_ELLIPSE, 4, 4 },
-	{ "fill-ellipse", st_shape, RDC_OP_FILL_ELLIPSE, 4, 4 },
-	{ "blit", st_blit, RDC_OP_BLIT, 6, 6 },
-	{ "host-blit", st_host_blit, RDC_OP_HOST_BLIT, 6, RDL_ANY },
-	{ "readback", st_readback, RDC_OP_READBACK, 4, 5 },
-	{ "mono", st_mono, RDC_OP_MONO, 4, RDL_ANY },
-	{ "text", st_text, RDC_OP_TEXT, 3, 4 },
-	{ "cmd", st_cmd, RDC_OP_NOP, 1, RDC_CMD_MAX_ARGS + 1 },
-	{ "raw", st_raw, RDC_OP_NOP, 1, RDL_ANY },
+	{"nop", st_nop, RDC_OP_NOP, 0, 1},
+	{"fence", st_words, RDC_OP_FENCE, 1, 1},
+	{"wait-vblank", st_words, RDC_OP_WAIT_VBLANK, 0, 0},
+	{"wait-line", st_words, RDC_OP_WAIT_LINE, 1, 1},
+	{"cmd-reg", st_cmd_reg, RDC_OP_REG_WRITE, 2, 2},
+	{"load-clut", st_load_clut, RDC_OP_LOAD_CLUT, 2, RDL_ANY},
+	{"call", st_words, RDC_OP_CALL, 1, 1},
+	{"ret", st_words, RDC_OP_RET, 0, 0},
+	{"jump", st_words, RDC_OP_JUMP, 1, 1},
+	{"fg", st_colour, RDC_OP_SET_FG, 1, 1},
+	{"bg", st_colour, RDC_OP_SET_BG, 1, 1},
+	{"rop", st_rop, RDC_OP_SET_ROP, 1, 1},
+	{"clip", st_clip, RDC_OP_SET_CLIP, 1, 4},
+	{"dst", st_surface, RDC_OP_SET_DST, 1, 5},
+	{"src", st_surface, RDC_OP_SET_SRC, 1, 5},
+	{"pixel", st_points, RDC_OP_PIXEL, 2, 2},
+	{"line", st_points, RDC_OP_LINE, 4, 4},
+	{"polyline", st_points, RDC_OP_POLYLINE, 4, RDL_ANY},
+	{"rect", st_shape, RDC_OP_RECT, 4, 4},
+	{"fill-rect", st_shape, RDC_OP_FILL_RECT, 4, 4},
+	{"fill", st_shape, RDC_OP_FILL_RECT, 4, 4},
+	{"circle", st_shape, RDC_OP_CIRCLE, 3, 3},
+	{"fill-circle", st_shape, RDC_OP_FILL_CIRCLE, 3, 3},
+	{"ellipse", st_shape, RDC_OP_ELLIPSE, 4, 4},
+	{"fill-ellipse", st_shape, RDC_OP_FILL_ELLIPSE, 4, 4},
+	{"blit", st_blit, RDC_OP_BLIT, 6, 6},
+	{"host-blit", st_host_blit, RDC_OP_HOST_BLIT, 6, RDL_ANY},
+	{"readback", st_readback, RDC_OP_READBACK, 4, 5},
+	{"mono", st_mono, RDC_OP_MONO, 4, RDL_ANY},
+	{"text", st_text, RDC_OP_TEXT, 3, 4},
+	{"cmd", st_cmd, RDC_OP_NOP, 1, RDC_CMD_MAX_ARGS + 1},
+	{"raw", st_raw, RDC_OP_NOP, 1, RDL_ANY},
 	/* host side */
-	{ "mode", st_mode, RDC_OP_SET_DST, 1, 3 },
-	{ "reg", st_reg, 0, 2, 2 },
-	{ "expect", st_expect, 0, 2, 2 },
-	{ "palette", st_palette, 0, 2, RDC_CLUT_ENTRIES + 1 },
-	{ "step", st_step, 0, 1, 1 },
-	{ "run-until", st_run_until, 0, 1, 1 },
-	{ "wait-frame", st_wait_frame, 0, 0, 0 },
-	{ "vsync", st_vsync, 0, 0, 0 },
-	{ "finish", st_finish, 0, 0, 0 },
-	{ "reset", st_reset, 0, 0, 0 },
-	{ "screenshot", st_screenshot, 0, 1, 1 },
+	{"mode", st_mode, RDC_OP_SET_DST, 1, 3},
+	{"reg", st_reg, 0, 2, 2},
+	{"expect", st_expect, 0, 2, 2},
+	{"palette", st_palette, 0, 2, RDC_CLUT_ENTRIES + 1},
+	{"step", st_step, 0, 1, 1},
+	{"run-until", st_run_until, 0, 1, 1},
+	{"wait-frame", st_wait_frame, 0, 0, 0},
+	{"vsync", st_vsync, 0, 0, 0},
+	{"finish", st_finish, 0, 0, 0},
+	{"reset", st_reset, 0, 0, 0},
+	{"screenshot", st_screenshot, 0, 1, 1},
 };
+
+static int rdl_arg_count(struct rdl *r, const struct rdl_stmt *st,
+			 uint32_t nargs)
+{
+	if (st->min == st->max)
+		return rdl_err(r, RDC_E_PARSE, "%s: %u arguments (takes %u)",
+			       st->name, nargs, st->min);
+	if (st->max == RDL_ANY)
+		return rdl_err(r, RDC_E_PARSE,
+			       "%s: %u arguments (takes at least %u)", st->name,
+			       nargs, st->min);
+	return rdl_err(r, RDC_E_PARSE, "%s: %u arguments (takes %u to %u)",
+		       st->name, nargs, st->min, st->max);
+}
 
 static int rdl_statement(struct rdl *r)
 {
@@ -1419,12 +1493,7 @@ static int rdl_statement(struct rdl *r)
 		if (strcmp(kw->s, st->name))
 			continue;
 		if (nargs < st->min || nargs > st->max)
-			return rdl_err(r, RDC_E_PARSE,
-				       "%s: %u arguments (takes %u%s)",
-				       st->name, nargs, st->min,
-				       st->max == st->min ? "" :
-				       st->max == RDL_ANY ? " or more" :
-							    " or more, within limits");
+			return rdl_arg_count(r, st, nargs);
 		rdc_batch_reset(r->b);
 		r->res->frame_ready = 0;
 		return st->fn(r, st->op);
@@ -1472,9 +1541,7 @@ static int rdl_next_line(struct rdl *r, const char **pos, const char *end,
 			break;
 	}
 	*pos = p;
-	if (!r->buf)
-		return 0;
-	r->buf[n] = 0;
+	r->buf[n] = 0; /* the loop ran at least once: buf exists */
 	return 0;
 }
 
@@ -1482,8 +1549,8 @@ int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
 		   struct rdc_script_result *res)
 {
 	struct rdc_script_result local;
-	struct rdl r = { .dev = dev };
-	const char *pos = text, *end = text + len;
+	struct rdl r = {.dev = dev};
+	const char *pos = text, *end;
 	uint32_t phys = 0;
 	int ret = 0;
 
@@ -1493,12 +1560,15 @@ int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
 	r.res = res;
 	if (!dev || (!text && len))
 		return RDC_E_INVAL;
+	if (!len)
+		return 0;
+	end = text + len;
 	r.b = rdc_batch_new();
 	if (!r.b)
 		return rdl_err(&r, RDC_E_NOMEM, "out of memory");
 	while (!ret && pos < end) {
 		ret = rdl_next_line(&r, &pos, end, &phys);
-		if (!ret && r.buf)
+		if (!ret)
 			ret = rdl_tokenize(&r);
 		if (!ret && r.ntok)
 			ret = rdl_statement(&r);
@@ -1544,8 +1614,7 @@ int rdc_script_run_file(rdc_dev *dev, const char *path,
 
 			if (cap >= RDL_MAX_FILE) {
 				ret = RDC_E_FILE;
-				snprintf(res->error_msg,
-					 sizeof(res->error_msg),
+				snprintf(res->error_msg, sizeof(res->error_msg),
 					 "'%.100s' is larger than %u bytes",
 					 path, RDL_MAX_FILE);
 				goto out;

@@ -12,18 +12,21 @@
 #include "rdc_priv.h"
 
 #define SIM_VRAM_DEFAULT (16u << 20)
-#define SIM_VRAM_MIN (64u << 10)
-#define SIM_VRAM_MAX (256u << 20)
-#define SIM_FRAME_CAP ((uint32_t)RDC_CRTC_MAX_DISPLAY * RDC_CRTC_MAX_DISPLAY)
+#define SIM_VRAM_MIN	 (64u << 10)
+#define SIM_VRAM_MAX	 (256u << 20)
+#define SIM_FRAME_CAP	 ((uint32_t)RDC_CRTC_MAX_DISPLAY * RDC_CRTC_MAX_DISPLAY)
 
 /*
- * A wait checks its condition between slices of simulated time.  Slices
- * start short so a wait that is satisfied soon does not run the chip far
- * past the event, and double up to a cap so a long wait (a frame is
- * ~1.7 M cycles at 640x480) costs few checks.
+ * A wait checks its condition between slices of simulated time, so it
+ * returns up to one slice after the event.  Slices start short and double
+ * up to a cap.  Waits on the DP (fence, idle, FIFO room) keep the cap low:
+ * the host then sees the DP finish within SIM_SLICE_MAX_DP cycles, which
+ * keeps a script's total time close to the sum of its commands.  Waits
+ * on the beam (a frame is ~1.7 M cycles at 640x480) may take long slices.
  */
-#define SIM_SLICE_FIRST 16u
-#define SIM_SLICE_MAX 16384u
+#define SIM_SLICE_FIRST	 16u
+#define SIM_SLICE_MAX_DP 256u
+#define SIM_SLICE_MAX	 16384u
 
 struct sim {
 	struct rdc_hw hw;
@@ -54,10 +57,12 @@ static uint64_t sim_parse_size(const char *s, size_t len)
 		return 0;
 	if (i + 1 == len) {
 		switch (s[i]) {
-		case 'k': case 'K':
+		case 'k':
+		case 'K':
 			v <<= 10;
 			break;
-		case 'm': case 'M':
+		case 'm':
+		case 'M':
 			v <<= 20;
 			break;
 		default:
@@ -106,7 +111,7 @@ static void sim_free(struct sim *s)
 
 static int sim_open(rdc_dev *dev, const char *opts)
 {
-	struct rdc_hw_config cfg = { 0 };
+	struct rdc_hw_config cfg = {0};
 	struct sim *s;
 	int ret;
 
@@ -164,8 +169,8 @@ static int sim_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 
 	if (len > hw->vram_size || addr > hw->vram_size - len)
 		return RDC_E_RANGE;
-	return rdc_hw_vram_write(hw, addr, buf, (uint32_t)len) ? RDC_E_RANGE :
-								 0;
+	return rdc_hw_vram_write(hw, addr, buf, (uint32_t)len) ? RDC_E_RANGE
+							       : 0;
 }
 
 static bool sim_term_holds(struct rdc_hw *hw, const struct rdc_wait_term *t)
@@ -193,6 +198,7 @@ static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 	uint64_t budget = w->budget ? w->budget : RDC_WAIT_BUDGET_DEFAULT;
 	uint64_t start = hw->now;
 	uint64_t slice = SIM_SLICE_FIRST;
+	uint64_t slice_max = w->needs_dp ? SIM_SLICE_MAX_DP : SIM_SLICE_MAX;
 
 	for (;;) {
 		for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++)
@@ -208,7 +214,7 @@ static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 		if (hw->now - start >= budget)
 			return RDC_E_TIMEOUT;
 		rdc_hw_run_until(hw, hw->now + slice);
-		if (slice < SIM_SLICE_MAX)
+		if (slice < slice_max)
 			slice *= 2;
 	}
 }

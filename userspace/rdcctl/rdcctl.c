@@ -19,7 +19,8 @@ static void usage(FILE *f)
 	      "  run FILE.rdl [-o OUT.png]  run a script, wait for the next\n"
 	      "                             complete frame, print cycles per\n"
 	      "                             command class, the simulated time\n"
-	      "                             and the frame's CRC-32; -o saves it\n"
+	      "                             and the frame's CRC-32; -o saves "
+	      "it\n"
 	      "  regs [FILE.rdl]            print every register (after the\n"
 	      "                             script, if one is given)\n"
 	      "  stats [FILE.rdl]           print the performance counters\n"
@@ -142,8 +143,8 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 		ret = rdc_frame_grab(dev, NULL, 0, &w, &h);
 	if (ret == RDC_E_RANGE) {
 		pix = malloc(((size_t)w * h + 1) * sizeof(*pix));
-		ret = pix ? rdc_frame_grab(dev, pix, (size_t)w * h, &w, &h) :
-			    RDC_E_NOMEM;
+		ret = pix ? rdc_frame_grab(dev, pix, (size_t)w * h, &w, &h)
+			  : RDC_E_NOMEM;
 	}
 	if (ret) {
 		fprintf(stderr, "rdcctl: frame: %s\n", rdc_strerror(ret));
@@ -226,7 +227,7 @@ static int cmd_stats(rdc_dev *dev)
 
 int main(int argc, char **argv)
 {
-	struct opts o = { .uri = RDCCTL_DEFAULT_URI };
+	struct opts o = {.uri = RDCCTL_DEFAULT_URI};
 	rdc_dev *dev;
 	int ret;
 
@@ -254,8 +255,8 @@ int main(int argc, char **argv)
 			ret = run_script(dev, o.script, res);
 		free(res);
 		if (!ret)
-			ret = !strcmp(o.cmd, "regs") ? cmd_regs(dev) :
-						       cmd_stats(dev);
+			ret = !strcmp(o.cmd, "regs") ? cmd_regs(dev)
+						     : cmd_stats(dev);
 	}
 	rdc_close(dev);
 	return ret ? 1 : 0;
