@@ -153,6 +153,27 @@ int rdc_crtc_next_fetches(const struct rdc_hw *hw)
 	return n < tm->v_display && line_range(hw, tm, n, &addr, &bytes);
 }
 
+/*
+ * Sub-byte indexed pixels, leftmost in the most significant bits: one byte
+ * at a time, so that with bpp a constant the inner loop unrolls.
+ */
+static inline void convert_indexed(const uint32_t *clut, uint32_t *out,
+				   const uint8_t *src, uint32_t w,
+				   unsigned int bpp)
+{
+	const unsigned int per_byte = 8 / bpp, mask = (1u << bpp) - 1;
+	uint32_t x = 0, k;
+
+	for (; x + per_byte <= w; x += per_byte) {
+		uint32_t b = *src++;
+
+		for (k = 0; k < per_byte; k++)
+			out[x + k] = clut[(b >> (8 - bpp * (k + 1))) & mask];
+	}
+	for (k = 0; x < w; x++, k++)
+		out[x] = clut[(*src >> (8 - bpp * (k + 1))) & mask];
+}
+
 static void convert_line(const struct rdc_hw *hw, uint32_t *out,
 			 const uint8_t *src, uint32_t w, uint32_t fmt)
 {
@@ -161,19 +182,14 @@ static void convert_line(const struct rdc_hw *hw, uint32_t *out,
 
 	switch (fmt) {
 	case RDC_FMT_I1:
-	case RDC_FMT_I2:
-	case RDC_FMT_I4: {
-		uint32_t bpp = rdc_format_bpp(fmt);
-		uint32_t mask = (1u << bpp) - 1;
-		uint32_t per_byte = 8 / bpp;
-
-		for (x = 0; x < w; x++) {
-			uint32_t shift = 8 - bpp * (x % per_byte + 1);
-
-			out[x] = clut[(src[x / per_byte] >> shift) & mask];
-		}
+		convert_indexed(clut, out, src, w, 1);
 		break;
-	}
+	case RDC_FMT_I2:
+		convert_indexed(clut, out, src, w, 2);
+		break;
+	case RDC_FMT_I4:
+		convert_indexed(clut, out, src, w, 4);
+		break;
 	case RDC_FMT_I8:
 		for (x = 0; x < w; x++)
 			out[x] = clut[src[x]];
@@ -281,8 +297,9 @@ static void crtc_vblank(struct rdc_hw *hw)
 
 /*
  * When the frame after this one will be complete: the frame scanned now is
- * on show from its own vblank until then.  Registers cannot change during
- * a catch-up, so the latch at this frame's vblank is known in advance.
+ * on show from its own vblank until then.  Only this frame's active lines
+ * ask, so its vblank latch is still to come, and as registers cannot change
+ * during a catch-up, what that latch will do is known in advance.
  */
 static uint64_t crtc_next_frame_vblank(const struct rdc_hw *hw)
 {

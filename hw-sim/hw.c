@@ -161,6 +161,8 @@ int rdc_hw_vram_read(struct rdc_hw *hw, uint32_t addr, void *buf, uint32_t len)
 {
 	if ((uint64_t)addr + len > hw->vram_size)
 		return -1;
+	if (!len)
+		return 0;
 	rdc_memcpy(buf, hw->vram + addr, len);
 	return 0;
 }
@@ -170,6 +172,8 @@ int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 {
 	if ((uint64_t)addr + len > hw->vram_size)
 		return -1;
+	if (!len)
+		return 0;
 	/* lines the beam has passed keep the old bytes */
 	rdc_crtc_catch_up(hw, hw->now);
 	rdc_memcpy(hw->vram + addr, buf, len);

@@ -213,10 +213,39 @@ static void test_random_programming(void **state)
 	free(f);
 }
 
+/* No VRAM and no frame buffers: nothing to scan out or draw, no crash. */
+static void test_no_memory(void **state)
+{
+	struct rdc_hw *hw = calloc(1, sizeof(*hw));
+	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	uint8_t b[4] = {0};
+	uint32_t w[4];
+
+	(void)state;
+	assert_non_null(hw);
+	rdc_hw_init(hw, &cfg, NULL, NULL, NULL, FRAME_CAP);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_VRAM_SIZE), 0);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_ERR_CODE), RDC_ERR_MODE);
+	assert_int_equal(rdc_port_next_vblank(hw), RDC_NEVER);
+	rdc_hw_run_until(hw, 10000000);
+	assert_null(rdc_hw_frame(hw, NULL, NULL));
+	assert_null(rdc_port_span(hw, 0, 1, RDC_BUS_WRITE));
+	assert_null(rdc_port_column(hw, 0, 0, 1, 1, RDC_BUS_WRITE));
+	assert_int_equal(rdc_hw_vram_write(hw, 0, b, 1), -1);
+	assert_int_equal(rdc_hw_vram_write(hw, 0, b, 0), 0);
+	assert_int_equal(rdc_hw_vram_read(hw, 0, b, 0), 0);
+	rdc_hw_write(hw, RDC_REG_RING_SIZE, 16);
+	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_RING_EN);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_ERR_CODE), RDC_ERR_RING);
+	assert_int_equal(rdc_port_cmd_pop(hw, RDC_SRC_RING, w, 4), 0);
+	free(hw);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_random_programming),
+		cmocka_unit_test(test_no_memory),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -133,29 +133,33 @@ static uint32_t expect_pixel(const uint8_t *b, uint32_t x, uint32_t fmt)
 
 static void test_all_formats(void **state)
 {
+	static const uint32_t widths[] = {24, 13}; /* whole bytes, or not */
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
-	const uint32_t w = 24, h = 5, stride = 100, base = 0x1234;
-	uint32_t fmt;
+	const uint32_t h = 5, stride = 100, base = 0x1234;
+	uint32_t fmt, i;
 
 	load_test_clut(hw);
-	for (fmt = 0; fmt < RDC_FMT_COUNT; fmt++) {
-		const uint32_t *p;
-		uint32_t x, y;
+	for (i = 0; i < 2; i++) {
+		for (fmt = 0; fmt < RDC_FMT_COUNT; fmt++) {
+			const uint32_t w = widths[i];
+			const uint32_t *p;
+			uint32_t x, y;
 
-		for (y = 0; y < h; y++)
-			for (x = 0; x < stride; x++)
-				f->vram[base + y * stride + x] =
-					pattern(y + fmt, x);
-		start_mode(hw, w, h, base, stride, fmt);
-		p = grab(hw, w, h);
-		for (y = 0; y < h; y++)
-			for (x = 0; x < w; x++)
-				assert_int_equal(
-					p[y * w + x],
-					expect_pixel(f->vram + base +
-							     y * stride,
-						     x, fmt));
+			for (y = 0; y < h; y++)
+				for (x = 0; x < stride; x++)
+					f->vram[base + y * stride + x] =
+						pattern(y + fmt + i, x);
+			start_mode(hw, w, h, base, stride, fmt);
+			p = grab(hw, w, h);
+			for (y = 0; y < h; y++)
+				for (x = 0; x < w; x++)
+					assert_int_equal(
+						p[y * w + x],
+						expect_pixel(f->vram + base +
+								     y * stride,
+							     x, fmt));
+		}
 	}
 }
 
