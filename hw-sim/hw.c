@@ -183,21 +183,27 @@ int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 
 /* ---- run loop ----------------------------------------------------------- */
 
-void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t)
+static int hw_run(struct rdc_hw *hw, uint64_t t, bool stop_idle)
 {
+	int idle = 0;
+
 	rdc_crtc_catch_up(hw, hw->now);
 	while (hw->now < t) {
 		uint64_t wake = RDC_NEVER;
 
 		if (hw->in_reset) {
 			hw->now = t;
-			return;
+			return 0;
 		}
 		if (hw->dp_ops && hw->dp_ops->run &&
 		    (hw->control & RDC_CONTROL_DP_EN))
 			wake = hw->dp_ops->run(hw->dp, t);
 		if (hw->now >= t)
 			break;
+		if (stop_idle && wake == RDC_NEVER) {
+			idle = 1;
+			break;
+		}
 		/*
 		 * A DP that claims it can progress now but returned anyway
 		 * gets one idle cycle, so a confused DP cannot hang the host.
@@ -207,6 +213,17 @@ void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t)
 		rdc_port_idle_until(hw, RDC_MIN(wake, t));
 	}
 	rdc_crtc_catch_up(hw, hw->now);
+	return idle;
+}
+
+void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t)
+{
+	hw_run(hw, t, false);
+}
+
+int rdc_hw_run_until_idle(struct rdc_hw *hw, uint64_t t)
+{
+	return hw_run(hw, t, true);
 }
 
 /* ---- register file ------------------------------------------------------ */

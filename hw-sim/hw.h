@@ -260,6 +260,13 @@ int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
  * loop.
  */
 void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t);
+/*
+ * The same, but stop at the exact cycle the DP runs out of work it can do
+ * without the host (queues empty, waiting for RDATA space, halted or
+ * disabled): returns 1 then, 0 once t is reached.  A host that waits for
+ * the DP to finish resumes at the cycle it finished.
+ */
+int rdc_hw_run_until_idle(struct rdc_hw *hw, uint64_t t);
 
 /* Drive the input pins (RDC_PIN_RESET_N, RDC_PIN_BL_EN). */
 void rdc_hw_set_pins(struct rdc_hw *hw, uint32_t pins_in);

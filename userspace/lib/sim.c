@@ -17,15 +17,15 @@
 #define SIM_FRAME_CAP	 ((uint32_t)RDC_CRTC_MAX_DISPLAY * RDC_CRTC_MAX_DISPLAY)
 
 /*
- * A wait checks its condition between slices of simulated time, so it
- * returns up to one slice after the event.  Slices start short and double
- * up to a cap.  Waits on the DP (fence, idle, FIFO room) keep the cap low:
- * the host then sees the DP finish within SIM_SLICE_MAX_DP cycles, which
- * keeps a script's total time close to the sum of its commands.  Waits
- * on the beam (a frame is ~1.7 M cycles at 640x480) may take long slices.
+ * A wait checks its condition between slices of simulated time.  Waits on
+ * the DP (fence, idle, FIFO room, readback data) stop a slice at the exact
+ * cycle the DP runs out of work (rdc_hw_run_until_idle), so a host that
+ * waits for the DP resumes at the cycle it finished and a script's
+ * statements follow each other without gaps.  Other waits (on the beam: a
+ * frame is ~1.7 M cycles at 640x480) return up to one slice after the
+ * event; slices start short and double up to a cap.
  */
 #define SIM_SLICE_FIRST	 16u
-#define SIM_SLICE_MAX_DP 256u
 #define SIM_SLICE_MAX	 16384u
 
 struct sim {
@@ -198,9 +198,10 @@ static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 	uint64_t budget = w->budget ? w->budget : RDC_WAIT_BUDGET_DEFAULT;
 	uint64_t start = hw->now;
 	uint64_t slice = SIM_SLICE_FIRST;
-	uint64_t slice_max = w->needs_dp ? SIM_SLICE_MAX_DP : SIM_SLICE_MAX;
 
 	for (;;) {
+		uint64_t before = hw->now;
+
 		for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++)
 			if (sim_term_holds(hw, &w->term[i]))
 				return 0;
@@ -213,8 +214,10 @@ static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 			return RDC_E_HALTED;
 		if (hw->now - start >= budget)
 			return RDC_E_TIMEOUT;
-		rdc_hw_run_until(hw, hw->now + slice);
-		if (slice < slice_max)
+		if (!w->needs_dp || !rdc_hw_run_until_idle(hw, hw->now + slice) ||
+		    hw->now == before)
+			rdc_hw_run_until(hw, hw->now + slice);
+		if (slice < SIM_SLICE_MAX)
 			slice *= 2;
 	}
 }
