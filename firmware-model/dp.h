@@ -29,6 +29,23 @@ struct rdc_dp_state {
 	uint32_t fg, bg, rop;
 	struct rdc_rect clip;
 	struct rdc_surface dst, src;
+
+	/* SET_PATTERN */
+	uint32_t pat_mode; /* enum rdc_pattern_mode */
+	uint8_t pat_mono[8];
+	uint32_t pat_color[64];
+	/* SET_PEN, SET_DASH */
+	uint32_t pen_width, pen_cap, pen_join;
+	uint32_t dash_bits, dash_len, dash_offset;
+	/* SET_ALPHA, SET_COLORKEY, SET_AA_RAMP */
+	uint32_t alpha;
+	uint32_t colorkey, colorkey_on;
+	uint32_t aa_ramp;
+	/* SET_TRANSFORM / SET_VIEWPORT: m[row][col], signed 15.16 */
+	int32_t xf[3][3];
+	bool xf_identity;
+	/* SET_ZBUF */
+	uint32_t z_base, z_stride, z_flags; /* z_flags 0: off */
 };
 
 enum rdc_dp_phase {
@@ -50,6 +67,11 @@ struct rdc_dp {
 	uint32_t cmd_len, cmd_have; /* words expected / fetched (header incl.) */
 	uint64_t cmd_start; /* time the command's header was fetched */
 	uint64_t wait_time;
+
+	/* display lists: the list being executed and the return stack */
+	uint32_t list_depth; /* 0: commands come from the FIFO or ring */
+	uint32_t list_pc; /* VRAM byte address of the next list word */
+	uint32_t list_ret[RDC_CALL_DEPTH];
 
 	/* READBACK progress */
 	uint32_t rb_row, rb_word, rb_words_per_row;

@@ -227,6 +227,8 @@ enum rdc_err {
 			    access outside the register window / to a R reg */
 	RDC_ERR_ARG = 8, /* bad enumerated argument (ROP, format, ...) */
 	RDC_ERR_MODE = 9, /* CRTC timing refused at latch */
+	RDC_ERR_STACK = 10, /* display-list nesting too deep, or RET outside
+			       a list */
 	RDC_ERR_COUNT
 };
 
@@ -280,9 +282,15 @@ enum rdc_opcode {
 	RDC_OP_WAIT_LINE = 0x03, /* line: wait until the beam starts it */
 	RDC_OP_REG_WRITE = 0x04, /* reg, value (CRTC, CLUT, cursor, IRQ regs) */
 	RDC_OP_LOAD_CLUT = 0x05, /* first, then 1..256 entries 0x00RRGGBB */
-	RDC_OP_CALL = 0x06, /* reserved: display lists */
-	RDC_OP_RET = 0x07, /* reserved */
-	RDC_OP_JUMP = 0x08, /* reserved */
+	RDC_OP_CALL = 0x06, /* addr: run the display list at VRAM byte
+			       address addr (4-aligned); its RET resumes
+			       after this CALL.  At most RDC_CALL_DEPTH
+			       lists nest: deeper is RDC_ERR_STACK */
+	RDC_OP_RET = 0x07, /* none: return from a display list; outside
+			      one: RDC_ERR_STACK */
+	RDC_OP_JUMP = 0x08, /* addr: continue the current display list at
+			       addr; from the FIFO or ring it enters a list
+			       as CALL does */
 
 	/* Drawing state */
 	RDC_OP_SET_FG = 0x10, /* pixel value */
@@ -292,6 +300,36 @@ enum rdc_opcode {
 				   x1, y1 may be RDC_COORD_MAX + 1 */
 	RDC_OP_SET_DST = 0x14, /* base, stride, wh, format */
 	RDC_OP_SET_SRC = 0x15, /* base, stride, wh, format */
+	RDC_OP_SET_PATTERN = 0x16, /* flags = enum rdc_pattern_mode; MONO*:
+				      2 words, 8 rows of 8 bits (row 0 in
+				      byte 0 of word 0, bit 7 leftmost);
+				      COLOR: 64 pixel values row by row;
+				      NONE: no words.  Anchored at the DST
+				      origin; used by the filled primitives */
+	RDC_OP_SET_PEN = 0x17, /* [7:0] width 1..RDC_PEN_MAX_WIDTH,
+				  [9:8] enum rdc_cap, [11:10] enum rdc_join */
+	RDC_OP_SET_DASH = 0x18, /* pattern (bit 0 first, 1 = drawn), then
+				   [5:0] length 0..32 (0 = solid) and
+				   [13:8] offset; the dash continues along
+				   a polyline */
+	RDC_OP_SET_ALPHA = 0x19, /* 0..255: global alpha of BLIT and
+				    HOST_BLIT (255 = opaque) */
+	RDC_OP_SET_COLORKEY = 0x1a, /* key pixel value; flags
+				       RDC_COLORKEY_ENABLE: source pixels
+				       equal to the key are not drawn */
+	RDC_OP_SET_TRANSFORM = 0x1b, /* 9 words m00 m01 m02 m10 m11 m12 m20
+					m21 m22, signed 15.16 fixed point,
+					or none for the identity */
+	RDC_OP_SET_VIEWPORT = 0x1c, /* wx0 wy0 wx1 wy1 (world window,
+				       signed 15.16), xy0 xy1 (viewport,
+				       pixels): sets the transform */
+	RDC_OP_SET_AA_RAMP = 0x1d, /* 2..256 CLUT entries from the FG index
+				      for anti-aliasing in indexed formats */
+	RDC_OP_SET_ZBUF = 0x1e, /* base, stride: 16-bit depth surface the
+				   size of DST; flags RDC_Z_TEST | RDC_Z_WRITE;
+				   no words: depth buffering off */
+	RDC_OP_CLEAR_Z = 0x1f, /* value: fill the depth surface (clip
+				  applies) */
 
 	/* Primitives (first set) */
 	RDC_OP_PIXEL = 0x20, /* xy */
@@ -306,6 +344,21 @@ enum rdc_opcode {
 	RDC_OP_ELLIPSE = 0x27, /* xy centre, wh = (rx, ry); a zero radius
 				  draws a line */
 	RDC_OP_FILL_ELLIPSE = 0x28, /* xy centre, wh = (rx, ry) */
+	RDC_OP_POLYGON = 0x29, /* 2..n points: closed outline */
+	RDC_OP_FILL_POLYGON = 0x2a, /* 3..n points, scan-line fill;
+				       flags RDC_FILL_NONZERO (else even-odd) */
+	RDC_OP_FLOOD_FILL = 0x2b, /* xy seed, then with RDC_FLOOD_BOUNDARY the
+				     boundary colour; flags RDC_FLOOD_* */
+	RDC_OP_ARC = 0x2c, /* xy centre, wh = (rx, ry), angles: [15:0]
+			      start, [31:16] end in 1/65536 turn
+			      counter-clockwise from +x (y up on screen);
+			      flags = enum rdc_arc_mode */
+	RDC_OP_BEZIER = 0x2d, /* 4 points; flags: steps (0 = chosen from the
+				 control polygon) */
+	RDC_OP_HERMITE = 0x2e, /* p0, p1, tangent t0, tangent t1 (as xy);
+				  flags: steps (0 = chosen) */
+	RDC_OP_BSPLINE = 0x2f, /* 4..n control points, uniform cubic;
+				  flags: steps per segment (0 = chosen) */
 	RDC_OP_BLIT = 0x30, /* src xy, dst xy, wh: SRC surface to DST,
 			       overlap-safe, ROP applies */
 	RDC_OP_HOST_BLIT = 0x31, /* xy, wh, then rows of DST-format pixels,
@@ -318,8 +371,36 @@ enum rdc_opcode {
 	RDC_OP_TEXT = 0x34, /* xy, count, then count chars 4 to a word
 			       (byte 0 first), built-in 8x16 font;
 			       flags: RDC_MONO_TRANSPARENT */
+	RDC_OP_AA_LINE = 0x35, /* xy0, xy1: Wu line */
+	RDC_OP_AA_CIRCLE = 0x36, /* xy centre, radius */
+	RDC_OP_AA_ELLIPSE = 0x37, /* xy centre, wh = (rx, ry) */
+	RDC_OP_TRIANGLE = 0x38, /* 3 vertices of (xy, colour, z [15:0]):
+				   9 words; flags RDC_TRI_GOURAUD (else flat,
+				   the first vertex's colour) */
 	RDC_OP_COUNT = 0x100
 };
+
+#define RDC_CALL_DEPTH 8 /* nested display lists */
+#define RDC_PEN_MAX_WIDTH 64
+#define RDC_COLORKEY_ENABLE BIT(0)
+#define RDC_FILL_NONZERO BIT(0)
+#define RDC_FLOOD_8 BIT(0) /* 8-connected (else 4-connected) */
+#define RDC_FLOOD_BOUNDARY BIT(1) /* fill up to the boundary colour (else
+				     replace the seed's colour) */
+#define RDC_Z_TEST BIT(0) /* draw only where z < stored depth */
+#define RDC_Z_WRITE BIT(1) /* store z where drawn */
+#define RDC_TRI_GOURAUD BIT(0)
+
+enum rdc_pattern_mode {
+	RDC_PAT_NONE = 0, /* solid FG */
+	RDC_PAT_MONO = 1, /* 1 = FG, 0 = BG */
+	RDC_PAT_MONO_TRANSPARENT = 2, /* 1 = FG, 0 left alone */
+	RDC_PAT_COLOR = 3 /* 64 pixel values */
+};
+
+enum rdc_cap { RDC_CAP_BUTT = 0, RDC_CAP_ROUND = 1, RDC_CAP_SQUARE = 2 };
+enum rdc_join { RDC_JOIN_MITER = 0, RDC_JOIN_ROUND = 1, RDC_JOIN_BEVEL = 2 };
+enum rdc_arc_mode { RDC_ARC_OUTLINE = 0, RDC_ARC_PIE = 1, RDC_ARC_CHORD = 2 };
 
 #define RDC_MONO_TRANSPARENT BIT(0) /* 0 bits leave the destination alone */
 
