@@ -38,7 +38,7 @@ SAN_OBJS := $(patsubst %.c,$(O)/san/%.o,$(CORE_SRCS) $(LIB_SRCS))
 TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
-.PHONY: all deps demo check test golden freestanding speed clean help
+.PHONY: all deps demo check test golden freestanding speed bench clean help
 all: $(O)/rel/rdcctl $(O)/rel/librdc.a
 
 help:
@@ -85,6 +85,13 @@ demo: deps
 check test: deps
 	$(MAKE) $(TEST_BINS) $(O)/san/rdcctl freestanding
 	@tests/run.sh $(O)/san
+
+$(O)/rel/rdc-bench: $(O)/rel/bench/rdc_bench.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+# The workloads of BENCHMARKS.md; BENCH_ARGS="-w fill -r 5" to narrow.
+bench: $(O)/rel/rdc-bench
+	$(O)/rel/rdc-bench $(BENCH_ARGS)
 
 $(O)/rel/fill_speed: $(O)/rel/tests/perf/fill_speed.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
