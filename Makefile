@@ -25,11 +25,23 @@ SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all \
 SAN_CFLAGS := $(BASE_CFLAGS) -O1 -g $(SAN_FLAGS)
 
 LIBS := $(shell $(PKG_CONFIG) --libs libpng zlib 2>/dev/null || echo -lpng -lz)
+# The vnc frame sink needs libvncserver; without it the build goes on and
+# that sink answers RDC_E_NOSYS.
+HAVE_VNC := $(shell $(PKG_CONFIG) --exists libvncserver 2>/dev/null && echo 1)
+ifeq ($(HAVE_VNC),1)
+VNC_CFLAGS := -DRDC_HAVE_VNC $(shell $(PKG_CONFIG) --cflags libvncserver)
+REL_CFLAGS += $(VNC_CFLAGS)
+SAN_CFLAGS += $(VNC_CFLAGS)
+LIBS += $(shell $(PKG_CONFIG) --libs libvncserver)
+else
+$(info libvncserver not found (Debian: libvncserver-dev): building without the vnc sink)
+endif
 CMOCKA_LIBS := $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 CORE_SRCS := $(sort $(wildcard hw-sim/*.c firmware-model/*.c))
-LIB_SRCS := $(sort $(wildcard userspace/lib/*.c))
+LIB_SRCS := $(sort $(wildcard userspace/lib/*.c userspace/sink/*.c))
 CTL_SRCS := $(sort $(wildcard userspace/rdcctl/*.c))
+RDCD_SRCS := $(sort $(wildcard userspace/rdcd/*.c))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_HELPERS := $(sort $(filter-out $(TEST_SRCS),$(wildcard tests/unit/*.c)))
 
@@ -38,8 +50,9 @@ SAN_OBJS := $(patsubst %.c,$(O)/san/%.o,$(CORE_SRCS) $(LIB_SRCS))
 TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
-.PHONY: all deps demo check test golden freestanding speed bench clean help
-all: $(O)/rel/rdcctl $(O)/rel/librdc.a
+.PHONY: all deps demo check test golden freestanding speed bench clean help \
+	bench-sink vm-test
+all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a
 
 help:
 	@echo "make              build librdc and rdcctl (optimised) in $(O)/rel"
@@ -48,6 +61,8 @@ help:
 	@echo "make golden       regenerate tests/golden/golden.txt and write PNGs to $(O)/golden"
 	@echo "make freestanding compile hw-sim/ and firmware-model/ with no libc headers"
 	@echo "make speed        time a full-screen fill through the command path against memset"
+	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
+	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/*"
 
 deps:
 	@scripts/deps.sh
@@ -71,6 +86,12 @@ $(O)/san/librdc.a: $(SAN_OBJS)
 $(O)/rel/rdcctl: $(patsubst %.c,$(O)/rel/%.o,$(CTL_SRCS)) $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
+$(O)/rel/rdcd: $(patsubst %.c,$(O)/rel/%.o,$(RDCD_SRCS)) $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+$(O)/san/rdcd: $(patsubst %.c,$(O)/san/%.o,$(RDCD_SRCS)) $(O)/san/librdc.a
+	$(CC) $(SAN_CFLAGS) $^ $(LIBS) -o $@
+
 $(O)/san/rdcctl: $(patsubst %.c,$(O)/san/%.o,$(CTL_SRCS)) $(O)/san/librdc.a
 	$(CC) $(SAN_CFLAGS) $^ $(LIBS) -o $@
 
@@ -83,15 +104,34 @@ demo: deps
 	$(O)/rel/rdcctl run examples/demo.rdl -o demo.png
 
 check test: deps
-	$(MAKE) $(TEST_BINS) $(O)/san/rdcctl freestanding
-	@tests/run.sh $(O)/san
+	$(MAKE) $(TEST_BINS) $(O)/san/rdcctl $(O)/san/rdcd freestanding $(VM_BINS)
+	@vm=0; tests/vm/run.sh --auto $(O) || vm=1; \
+	tests/run.sh $(O)/san && exit $$vm
 
 $(O)/rel/rdc-bench: $(O)/rel/bench/rdc_bench.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 # The workloads of BENCHMARKS.md; BENCH_ARGS="-w fill -r 5" to narrow.
-bench: $(O)/rel/rdc-bench
+bench: $(O)/rel/rdc-bench $(O)/rel/sink-bench
 	$(O)/rel/rdc-bench $(BENCH_ARGS)
+	$(O)/rel/sink-bench
+
+$(O)/rel/sink-bench: $(O)/rel/bench/sink_bench.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+# The v4l2 sink's conversions against memcpy, per frame.
+bench-sink: $(O)/rel/sink-bench
+	$(O)/rel/sink-bench
+
+# The VM tests (tests/vm/README.md): Debian's kernel under QEMU runs the
+# programs below against v4l2loopback.  `make check` runs them when QEMU
+# can run here and skips them, saying why, when it cannot.
+VM_BINS := $(O)/rel/rdcctl $(O)/rel/v4l2_read
+$(O)/rel/v4l2_read: $(O)/rel/tests/vm/v4l2_read.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+vm-test: $(VM_BINS)
+	@tests/vm/run.sh $(O)
 
 $(O)/rel/fill_speed: $(O)/rel/tests/perf/fill_speed.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@

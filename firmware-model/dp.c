@@ -11,6 +11,9 @@
 #include "dp_int.h"
 #include "../hw-sim/bus.h"
 
+/* dp->src of a command fetched from a display list in VRAM */
+#define DP_SRC_LIST 2u
+
 /* DST and SRC start as the chip's power-on screen: the 640x480 preset in
  * XRGB8888 at VRAM 0, unpadded. */
 static void dp_reset_surface(struct rdc_surface *s)
@@ -38,6 +41,16 @@ static void dp_reset_state(struct rdc_dp *dp)
 	st->clip.y1 = RDC_COORD_MAX + 1;
 	dp_reset_surface(&st->dst);
 	st->src = st->dst;
+	st->alpha = RDC_ALPHA_OPAQUE;
+	st->colorkey = 0;
+	st->colorkey_on = 0;
+	st->aa_ramp = RDC_AA_RAMP_RESET;
+	dp_xform_reset(st);
+	dp_pen_reset(st);
+	st->pat_mode = RDC_PAT_NONE;
+	st->z_base = 0;
+	st->z_stride = 0;
+	st->z_flags = 0;
 }
 
 static void dp_reset(void *opaque)
@@ -46,6 +59,8 @@ static void dp_reset(void *opaque)
 
 	dp_reset_state(dp);
 	dp->phase = RDC_DP_IDLE;
+	dp->list_depth = 0;
+	dp->list_pc = 0;
 	dp->cmd_len = 0;
 	dp->cmd_have = 0;
 	dp->rb_pos = 0;
@@ -83,17 +98,27 @@ static void cmd_done(struct rdc_dp *dp)
 		dp->phase = RDC_DP_IDLE;
 }
 
-/* Reject the command: record the error, then skip it or halt. */
-static void cmd_fail(struct rdc_dp *dp, uint32_t code)
+/*
+ * Reject the command: record the error, then skip it or halt.  An error
+ * inside a display list abandons every list: the next command comes from
+ * the FIFO or the ring.
+ */
+static void cmd_fail_info(struct rdc_dp *dp, uint32_t code, uint32_t info)
 {
 	struct rdc_hw *hw = dp->hw;
 
-	rdc_port_error(hw, code, dp->cmd[0]);
+	rdc_port_error(hw, code, info);
+	dp->list_depth = 0;
 	if (hw->control & RDC_CONTROL_HALT_ON_ERR) {
 		dp->phase = RDC_DP_HALTED;
 		hw->dp_resume = 0;
 	}
 	cmd_done(dp);
+}
+
+static void cmd_fail(struct rdc_dp *dp, uint32_t code)
+{
+	cmd_fail_info(dp, code, dp->cmd[0]);
 }
 
 /* Does a SET_DST/SET_SRC argument list describe a surface inside VRAM? */
@@ -177,8 +202,16 @@ static int fixed_len(uint32_t op)
 	case RDC_OP_SET_BG:
 	case RDC_OP_SET_ROP:
 	case RDC_OP_PIXEL:
+	case RDC_OP_SET_PEN:
+	case RDC_OP_CALL:
+	case RDC_OP_JUMP:
+	case RDC_OP_SET_ALPHA:
+	case RDC_OP_SET_COLORKEY:
+	case RDC_OP_SET_AA_RAMP:
+	case RDC_OP_CLEAR_Z:
 		return 1;
 	case RDC_OP_WAIT_VBLANK:
+	case RDC_OP_RET:
 		return 0;
 	case RDC_OP_REG_WRITE:
 	case RDC_OP_SET_CLIP:
@@ -190,12 +223,23 @@ static int fixed_len(uint32_t op)
 	case RDC_OP_ELLIPSE:
 	case RDC_OP_FILL_ELLIPSE:
 	case RDC_OP_READBACK:
+	case RDC_OP_SET_DASH:
+	case RDC_OP_AA_LINE:
+	case RDC_OP_AA_CIRCLE:
+	case RDC_OP_AA_ELLIPSE:
 		return 2;
 	case RDC_OP_BLIT:
+	case RDC_OP_ARC:
 		return 3;
 	case RDC_OP_SET_DST:
 	case RDC_OP_SET_SRC:
+	case RDC_OP_BEZIER:
+	case RDC_OP_HERMITE:
 		return 4;
+	case RDC_OP_SET_VIEWPORT:
+		return 6;
+	case RDC_OP_TRIANGLE:
+		return 9;
 	default:
 		return -1;
 	}
@@ -209,57 +253,77 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 			  uint32_t len, const uint32_t *a)
 {
 	bool tr = fl & RDC_MONO_TRANSPARENT;
-	uint32_t i, fmt;
+	int32_t x = RDC_X(a[0]), y = RDC_Y(a[0]);
+	uint32_t w, h, fmt;
 
 	switch (op) {
+	/*
+	 * The geometric primitives go through the transform unit: vertices
+	 * and anchors (RECT's corner, the centres) are mapped by dp_xform,
+	 * sizes and radii scaled by |m00| and |m11| (dp_xform_size).  A
+	 * result out of range fails the command with RDC_ERR_RANGE.
+	 */
 	case RDC_OP_PIXEL:
-		if (!xy_ok(a[0]))
+		if (!dp_xform(dp, &x, &y))
 			return RDC_ERR_RANGE;
-		rdc_dp_pixel(dp, RDC_X(a[0]), RDC_Y(a[0]));
+		rdc_dp_pixel(dp, x, y);
 		return RDC_ERR_NONE;
 	case RDC_OP_LINE:
-		if (!xy_ok(a[0]) || !xy_ok(a[1]))
-			return RDC_ERR_RANGE;
-		rdc_dp_line(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_X(a[1]),
-			    RDC_Y(a[1]), false, false);
-		return RDC_ERR_NONE;
 	case RDC_OP_POLYLINE:
-		if (len < 2)
-			return RDC_ERR_LENGTH;
-		for (i = 0; i < len; i++)
-			if (!xy_ok(a[i]))
-				return RDC_ERR_RANGE;
+	case RDC_OP_POLYGON:
 		/*
-		 * Each segment after the first leaves out its first pixel
-		 * (the previous segment's last); a closed polyline also
-		 * leaves out its closing pixel, so XOR outlines stay whole.
+		 * Polyline segments after the first leave out their first
+		 * pixel (the previous segment's last); a closed polyline
+		 * also leaves out its closing pixel, so XOR outlines stay
+		 * whole.  The stroker keeps that rule.
 		 */
-		for (i = 0; i + 1 < len; i++)
-			rdc_dp_line(dp, RDC_X(a[i]), RDC_Y(a[i]),
-				    RDC_X(a[i + 1]), RDC_Y(a[i + 1]), i > 0,
-				    len > 2 && i + 2 == len && a[i + 1] == a[0]);
-		return RDC_ERR_NONE;
+		return dp_cmd_stroke(dp, op, len, a);
 	case RDC_OP_RECT:
 	case RDC_OP_FILL_RECT:
-		if (!xy_ok(a[0]) || !wh_ok(a[1]))
+		w = RDC_W(a[1]);
+		h = RDC_H(a[1]);
+		if (!dp_xform(dp, &x, &y) || !dp_xform_size(dp, &w, &h))
 			return RDC_ERR_RANGE;
-		rdc_dp_rect(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_W(a[1]),
-			    RDC_H(a[1]), op == RDC_OP_FILL_RECT);
+		if (op == RDC_OP_RECT && !dp_pen_plain(dp))
+			dp_stroke_rect(dp, x, y, w, h);
+		else
+			rdc_dp_rect(dp, x, y, w, h, op == RDC_OP_FILL_RECT);
 		return RDC_ERR_NONE;
 	case RDC_OP_CIRCLE:
 	case RDC_OP_FILL_CIRCLE:
-		if (!xy_ok(a[0]) || a[1] > RDC_SIZE_MAX)
+		w = a[1];
+		h = a[1];
+		if (a[1] > RDC_SIZE_MAX || !dp_xform(dp, &x, &y) ||
+		    !dp_xform_size(dp, &w, &h))
 			return RDC_ERR_RANGE;
-		rdc_dp_circle(dp, RDC_X(a[0]), RDC_Y(a[0]), a[1],
-			      op == RDC_OP_FILL_CIRCLE);
+		/* unequal scales turn the circle into an ellipse */
+		if (w == h)
+			rdc_dp_circle(dp, x, y, w, op == RDC_OP_FILL_CIRCLE);
+		else
+			rdc_dp_ellipse(dp, x, y, w, h,
+				       op == RDC_OP_FILL_CIRCLE);
 		return RDC_ERR_NONE;
 	case RDC_OP_ELLIPSE:
 	case RDC_OP_FILL_ELLIPSE:
-		if (!xy_ok(a[0]) || !wh_ok(a[1]))
+		w = RDC_W(a[1]);
+		h = RDC_H(a[1]);
+		if (!wh_ok(a[1]) || !dp_xform(dp, &x, &y) ||
+		    !dp_xform_size(dp, &w, &h))
 			return RDC_ERR_RANGE;
-		rdc_dp_ellipse(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_W(a[1]),
-			       RDC_H(a[1]), op == RDC_OP_FILL_ELLIPSE);
+		rdc_dp_ellipse(dp, x, y, w, h, op == RDC_OP_FILL_ELLIPSE);
 		return RDC_ERR_NONE;
+	case RDC_OP_ARC:
+		return dp_cmd_arc(dp, fl, a);
+	case RDC_OP_FILL_POLYGON:
+		return dp_cmd_polygon(dp, op, fl, len, a);
+	case RDC_OP_FLOOD_FILL:
+		return dp_cmd_flood(dp, fl, len, a);
+	case RDC_OP_TRIANGLE:
+		return dp_cmd_triangle(dp, fl, a);
+	case RDC_OP_BEZIER:
+	case RDC_OP_HERMITE:
+	case RDC_OP_BSPLINE:
+		return dp_cmd_curve(dp, op, fl, len, a);
 	case RDC_OP_BLIT:
 		if (!xy_ok(a[0]) || !xy_ok(a[1]) || !wh_ok(a[2]))
 			return RDC_ERR_RANGE;
@@ -296,6 +360,10 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 			return RDC_ERR_LENGTH;
 		rdc_dp_text(dp, RDC_X(a[0]), RDC_Y(a[0]), a[1], a + 2, tr);
 		return RDC_ERR_NONE;
+	case RDC_OP_AA_LINE:
+	case RDC_OP_AA_CIRCLE:
+	case RDC_OP_AA_ELLIPSE:
+		return rdc_dp_aa_cmd(dp, op, a);
 	case RDC_OP_READBACK:
 		if (!xy_ok(a[0]) || !wh_ok(a[1]))
 			return RDC_ERR_RANGE;
@@ -312,6 +380,100 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 	default:
 		return RDC_ERR_OPCODE;
 	}
+}
+
+/*
+ * Display lists.  list_depth counts the lists entered; list_ret[d - 1]
+ * holds the address to resume the list at depth d when the list it called
+ * returns (the outermost list returns to the FIFO or ring, which need no
+ * address).
+ */
+static bool list_addr_ok(const struct rdc_dp *dp, uint32_t addr)
+{
+	return addr % sizeof(uint32_t) == 0 &&
+	       (uint64_t)addr + sizeof(uint32_t) <= dp->hw->vram_size;
+}
+
+/* CALL, and JUMP: from the FIFO or ring a JUMP enters a list as CALL does. */
+static uint32_t list_enter(struct rdc_dp *dp, uint32_t op, uint32_t addr)
+{
+	if (!list_addr_ok(dp, addr))
+		return RDC_ERR_RANGE;
+	if (op == RDC_OP_JUMP && dp->list_depth) {
+		dp->list_pc = addr;
+		return RDC_ERR_NONE;
+	}
+	if (dp->list_depth >= RDC_CALL_DEPTH)
+		return RDC_ERR_STACK;
+	if (dp->list_depth)
+		dp->list_ret[dp->list_depth - 1] = dp->list_pc;
+	dp->list_depth++;
+	dp->list_pc = addr;
+	return RDC_ERR_NONE;
+}
+
+static uint32_t list_ret(struct rdc_dp *dp)
+{
+	if (!dp->list_depth)
+		return RDC_ERR_STACK;
+	dp->list_depth--;
+	if (dp->list_depth)
+		dp->list_pc = dp->list_ret[dp->list_depth - 1];
+	return RDC_ERR_NONE;
+}
+
+/*
+ * Fetch the next command of the current list from VRAM: the header as one
+ * 4-byte read, then its argument words as one read span, both charged by
+ * the bus model.  A list word outside VRAM (the list ran off its end, or
+ * a RET returned into a bad address) is RDC_ERR_RANGE with ERR_INFO = that
+ * word's address, and the lists are abandoned.
+ */
+static void list_begin(struct rdc_dp *dp)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint32_t pc = dp->list_pc, len, i;
+	const uint8_t *p;
+
+	dp->cmd_start = hw->now;
+	dp->src = DP_SRC_LIST;
+	dp->cmd[0] = RDC_CMD(RDC_OP_NOP, 0, 0);
+	p = list_addr_ok(dp, pc) ?
+		    rdc_port_span(hw, pc, sizeof(uint32_t), RDC_BUS_READ) :
+		    NULL;
+	if (!p) {
+		rdc_port_compute(hw, RDC_T_DECODE);
+		cmd_fail_info(dp, RDC_ERR_RANGE, pc);
+		return;
+	}
+	dp->cmd[0] = rdc_ld32(p);
+	pc += sizeof(uint32_t);
+	dp->list_pc = pc;
+	len = RDC_CMD_LEN(dp->cmd[0]);
+	if (len > RDC_CMD_MAX_ARGS) {
+		/* as from the FIFO: only the header is consumed */
+		rdc_port_compute(hw, RDC_T_DECODE);
+		cmd_fail(dp, RDC_ERR_LENGTH);
+		return;
+	}
+	if (len) {
+		p = (uint64_t)pc + (uint64_t)len * sizeof(uint32_t) <=
+				    hw->vram_size ?
+			    rdc_port_span(hw, pc, len * sizeof(uint32_t),
+					  RDC_BUS_READ) :
+			    NULL;
+		if (!p) {
+			rdc_port_compute(hw, RDC_T_DECODE);
+			cmd_fail_info(dp, RDC_ERR_RANGE, pc);
+			return;
+		}
+		for (i = 0; i < len; i++)
+			dp->cmd[1 + i] = rdc_ld32(p + i * sizeof(uint32_t));
+		dp->list_pc = pc + len * (uint32_t)sizeof(uint32_t);
+	}
+	dp->cmd_len = 1 + len;
+	dp->cmd_have = dp->cmd_len;
+	dp->phase = RDC_DP_FETCH;
 }
 
 /*
@@ -391,6 +553,41 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 		else
 			dp->st.src = s;
 		return RDC_ERR_NONE;
+	case RDC_OP_SET_TRANSFORM:
+		return dp_cmd_set_transform(dp, len, a);
+	case RDC_OP_SET_VIEWPORT:
+		return dp_cmd_set_viewport(dp, len, a);
+	case RDC_OP_SET_PEN:
+		return dp_cmd_set_pen(dp, a[0]);
+	case RDC_OP_SET_DASH:
+		return dp_cmd_set_dash(dp, a[0], a[1]);
+	case RDC_OP_SET_PATTERN:
+		return dp_cmd_set_pattern(dp, RDC_CMD_FL(hdr), len, a);
+	case RDC_OP_SET_ZBUF:
+		return dp_cmd_set_zbuf(dp, RDC_CMD_FL(hdr), len, a);
+	case RDC_OP_CLEAR_Z:
+		return dp_cmd_clear_z(dp, a);
+	case RDC_OP_SET_ALPHA:
+		if (a[0] > RDC_ALPHA_OPAQUE)
+			return RDC_ERR_RANGE;
+		dp->st.alpha = a[0];
+		return RDC_ERR_NONE;
+	case RDC_OP_SET_COLORKEY:
+		if (RDC_CMD_FL(hdr) & ~RDC_COLORKEY_ENABLE)
+			return RDC_ERR_ARG;
+		dp->st.colorkey = a[0];
+		dp->st.colorkey_on = RDC_CMD_FL(hdr) & RDC_COLORKEY_ENABLE;
+		return RDC_ERR_NONE;
+	case RDC_OP_SET_AA_RAMP:
+		if (a[0] < RDC_AA_RAMP_MIN || a[0] > RDC_AA_RAMP_MAX)
+			return RDC_ERR_RANGE;
+		dp->st.aa_ramp = a[0];
+		return RDC_ERR_NONE;
+	case RDC_OP_CALL:
+	case RDC_OP_JUMP:
+		return list_enter(dp, op, a[0]);
+	case RDC_OP_RET:
+		return list_ret(dp);
 	default:
 		break;
 	}
@@ -416,6 +613,9 @@ static void dp_status_update(struct rdc_dp *dp)
 	};
 
 	dp->hw->dp_status = bits[dp->phase];
+	/* between the commands of a display list the DP is still busy */
+	if (dp->list_depth && dp->phase == RDC_DP_IDLE)
+		dp->hw->dp_status |= RDC_STATUS_DP_BUSY;
 }
 
 /* Start a command from the first source with words waiting. */
@@ -424,6 +624,11 @@ static bool cmd_begin(struct rdc_dp *dp)
 	struct rdc_hw *hw = dp->hw;
 	unsigned int src;
 
+	/* A display list runs to its end before the queues are looked at. */
+	if (dp->list_depth) {
+		list_begin(dp);
+		return true;
+	}
 	if (rdc_port_cmd_avail(hw, RDC_SRC_FIFO))
 		src = RDC_SRC_FIFO;
 	else if (rdc_port_cmd_avail(hw, RDC_SRC_RING))
@@ -468,7 +673,8 @@ static uint64_t dp_run(void *opaque, uint64_t until)
 			continue;
 		case RDC_DP_IDLE:
 			if (hw->now >= until) {
-				if (rdc_port_cmd_avail(hw, RDC_SRC_FIFO) ||
+				if (dp->list_depth ||
+				    rdc_port_cmd_avail(hw, RDC_SRC_FIFO) ||
 				    rdc_port_cmd_avail(hw, RDC_SRC_RING))
 					ret = hw->now;
 				goto out;
@@ -477,6 +683,7 @@ static uint64_t dp_run(void *opaque, uint64_t until)
 				goto out;
 			continue;
 		case RDC_DP_FETCH:
+			/* (a list command arrives whole: nothing to pop) */
 			got = rdc_port_cmd_pop(hw, dp->src,
 					       dp->cmd + dp->cmd_have,
 					       dp->cmd_len - dp->cmd_have);

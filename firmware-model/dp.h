@@ -11,6 +11,17 @@
 
 #define RDC_DP_CHUNK 1024u /* pixels staged per span */
 #define RDC_DP_RB_CHUNK 256u /* READBACK words packed per span read */
+/*
+ * FILL_POLYGON / TRIANGLE scratch: vertices after Sutherland-Hodgman
+ * clipping (a polygon whose clipped form would need more falls back to
+ * clipping each scan line, which gives the same pixels), and the edge
+ * table's capacity.  Polygon points must lie within +-RDC_POLY_COORD_LIMIT
+ * (16.16 fixed point in 32 bits).
+ */
+#define RDC_DP_POLY_VERTS (RDC_CMD_MAX_ARGS + 256u)
+#define RDC_POLY_COORD_LIMIT 32767
+/* FLOOD_FILL's span stack; when full, the fill rescans (flood.c). */
+#define RDC_DP_FLOOD_STACK 4096u
 
 /* A drawing surface in VRAM. */
 struct rdc_surface {
@@ -83,6 +94,32 @@ struct rdc_dp {
 	/* READBACK words packed but not yet pushed to RDATA */
 	uint32_t rb_buf[RDC_DP_RB_CHUNK];
 	uint32_t rb_pos, rb_len;
+
+	/* AA_* (aa.c): 8-bit coverage of the pixels of the two runs a Wu
+	 * line builds at once (0: pixel left alone, 255: full FG) */
+	uint8_t aa_cov[2][RDC_DP_CHUNK];
+
+	/* FILL_POLYGON / TRIANGLE (poly.c): device-space points, the two
+	 * Sutherland-Hodgman vertex lists (16.16; `parent` names the line
+	 * the edge leaving the vertex lies on), the edge table (one bucket
+	 * per clip row) and the active edge table. */
+	int32_t poly_xy[2 * RDC_CMD_MAX_ARGS];
+	struct rdc_dp_pvert {
+		int32_t x, y, parent;
+	} poly_v[2][RDC_DP_POLY_VERTS];
+	struct rdc_dp_edge {
+		int32_t q, r, dq, dr, den, yend;
+		uint16_t next;
+		int16_t dir;
+	} poly_e[RDC_DP_POLY_VERTS];
+	uint16_t poly_et[RDC_SIZE_MAX];
+	uint16_t poly_aet[RDC_DP_POLY_VERTS];
+
+	/* FLOOD_FILL (flood.c): pending spans, and rows being scanned */
+	struct rdc_dp_fseg {
+		int16_t y, xl, xr, dy;
+	} flood_stk[RDC_DP_FLOOD_STACK];
+	uint32_t flood_row[3][RDC_DP_CHUNK];
 };
 
 /* Initialise and connect to the chip (rdc_hw_set_dp). */

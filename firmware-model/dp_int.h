@@ -19,6 +19,74 @@ void rdc_dp_pixel(struct rdc_dp *dp, int32_t x, int32_t y);
  * POLYLINE uses them so shared vertices are drawn once. */
 void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		 int32_t y1, bool skip_first, bool skip_last);
+/* Steps [first, last] of the same line, step 0 being (x0, y0) and step
+ * max(|dx|, |dy|) being (x1, y1): dashes draw their pieces with it. */
+void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
+		       int32_t y1, int64_t first, int64_t last);
+/* Solid FG span [xa, xb] of row y, clipped. */
+void rdc_dp_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb);
+/*
+ * Write pixels [xa, xa + n) of DST row y, already inside the effective
+ * clip, as one bus span: vals == NULL gives every pixel `solid`, else
+ * pixel i gets vals[i]; on != NULL writes only pixels with on[i] set (a
+ * read-modify-write span).  The ROP applies.  n <= RDC_DP_CHUNK when vals
+ * or on point at dp->px / dp->on.
+ */
+void rdc_dp_span_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
+		    uint32_t solid, const uint32_t *vals, const uint8_t *on);
+/* Read pixels [xa, xa + n) of DST row y (inside DST) as one read span;
+ * false (out untouched) if the span leaves VRAM. */
+bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
+		    uint32_t *out);
+/* Pixel at bit offset `bit` from p in a surface of `bpp` bits per pixel
+ * (sub-byte pixels MSB first); the store masks v to bpp bits. */
+uint32_t rdc_dp_px_load(const uint8_t *p, unsigned int bpp, uint32_t bit);
+void rdc_dp_px_store(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v);
+
+/*
+ * Anti-aliasing (aa.c).  rdc_dp_aa_cmd checks, transforms and draws
+ * AA_LINE, AA_CIRCLE or AA_ELLIPSE with arguments a; returns an enum
+ * rdc_err.  rdc_dp_blend mixes src over dst with weight a / 255 per
+ * channel of an RGB format: (s * a + d * (255 - a) + 127) / 255.
+ */
+uint32_t rdc_dp_aa_cmd(struct rdc_dp *dp, uint32_t op, const uint32_t *a);
+uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst,
+		      uint32_t a);
+
+/*
+ * Filled-primitive helpers (pattern.c, poly.c).  dp_fill_span fills
+ * [x0, x1] of row y with the current fill style (solid FG, or the
+ * SET_PATTERN pattern anchored at the DST origin), clipped; x0 > x1 draws
+ * nothing.  dp_fill_poly scan-converts the polygon of n points xy[2i],
+ * xy[2i + 1] in device coordinates (any int32; no transform applied) with
+ * the fill style, even-odd or non-zero, pixel centres sampled with the
+ * top-left rule; n > RDC_DP_POLY_VERTS or n < 3 draws nothing, and so do points beyond
+ * +-RDC_POLY_COORD_LIMIT.
+ */
+void dp_fill_span(struct rdc_dp *dp, int32_t x0, int32_t x1, int32_t y);
+void dp_fill_poly(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
+		  bool nonzero);
+/* A run [xa, xb] of row y, inside the effective clip. */
+typedef void (*dp_span_fn)(struct rdc_dp *dp, int32_t y, int32_t xa,
+			   int32_t xb, void *ctx);
+/* dp_fill_poly's pixels, one call per maximal run of a row. */
+void dp_poly_scan(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
+		  bool nonzero, dp_span_fn span, void *ctx);
+/* The pattern (or FG) at (x, y); false where a transparent pattern
+ * leaves DST alone. */
+bool dp_pat_value(const struct rdc_dp *dp, int32_t x, int32_t y, uint32_t *v);
+/* Commands of pattern.c, poly.c, flood.c, tri.c; return an enum rdc_err.
+ * len is the argument count, a the arguments, flags the header's. */
+uint32_t dp_cmd_set_pattern(struct rdc_dp *dp, uint32_t mode, uint32_t len,
+			    const uint32_t *a);
+uint32_t dp_cmd_polygon(struct rdc_dp *dp, uint32_t op, uint32_t flags,
+			uint32_t len, const uint32_t *a);
+uint32_t dp_cmd_flood(struct rdc_dp *dp, uint32_t flags, uint32_t len,
+		      const uint32_t *a);
+uint32_t dp_cmd_triangle(struct rdc_dp *dp, uint32_t flags, const uint32_t *a);
+uint32_t dp_cmd_set_zbuf(struct rdc_dp *dp, uint32_t flags, uint32_t len,
+			 const uint32_t *a);
+uint32_t dp_cmd_clear_z(struct rdc_dp *dp, const uint32_t *a);
 void rdc_dp_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		 uint32_t h, bool fill);
 void rdc_dp_circle(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t r,
@@ -41,6 +109,72 @@ void rdc_dp_text(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t count,
 void rdc_dp_readback_pack(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 			  uint32_t row, uint32_t word, uint32_t n,
 			  uint32_t *out);
+
+/*
+ * Transform unit (xform.c).  dp_xform maps a vertex through st.xf:
+ * x' = (m00 x + m01 y + m02) / w, y' = (m10 x + m11 y + m12) / w with
+ * w = m20 x + m21 y + m22, rounded to nearest (halves up).  Returns false,
+ * leaving *x and *y alone, when w <= 0, the input is wider than 2^20 or the
+ * result leaves [RDC_COORD_MIN, RDC_COORD_MAX]: the caller then fails the
+ * command with RDC_ERR_RANGE.  With the identity it only checks the range.
+ */
+bool dp_xform(const struct rdc_dp *dp, int32_t *x, int32_t *y);
+/* Scale a size or radii pair by |m00| and |m11| (rounded; no rotation,
+ * no projective division); false past RDC_SIZE_MAX. */
+bool dp_xform_size(const struct rdc_dp *dp, uint32_t *w, uint32_t *h);
+/* A vector (HERMITE's tangents): the linear part over m22, no
+ * translation; false when m22 <= 0 or the result passes 2^20. */
+bool dp_xform_vec(const struct rdc_dp *dp, int32_t *x, int32_t *y);
+void dp_xform_reset(struct rdc_dp_state *st);
+/* SET_TRANSFORM and SET_VIEWPORT; return an enum rdc_err. */
+uint32_t dp_cmd_set_transform(struct rdc_dp *dp, uint32_t len,
+			      const uint32_t *a);
+uint32_t dp_cmd_set_viewport(struct rdc_dp *dp, uint32_t len,
+			     const uint32_t *a);
+
+/*
+ * The stroker (pen.c): feed it the vertices of a polyline one by one; it
+ * draws with the pen and dash of dp->st.  closed: the last vertex equals
+ * the first, which is then joined (wide pens) or drawn once (width 1).
+ */
+struct pen_vec {
+	int64_t x, y; /* 24.8 fixed point; integers are pixel centres */
+};
+
+struct dp_stroke {
+	struct rdc_dp *dp;
+	bool thick, dashed, pending;
+	uint32_t count, segs;
+	int32_t x0, y0, px, py, qx, qy;
+	int32_t fdx, fdy, ldx, ldy;
+	struct pen_vec fnrm, fdir, lnrm, ldir;
+	int64_t base; /* dash steps before the current segment */
+};
+
+void dp_stroke_begin(struct dp_stroke *sk, struct rdc_dp *dp);
+void dp_stroke_point(struct dp_stroke *sk, int32_t x, int32_t y);
+void dp_stroke_end(struct dp_stroke *sk, bool closed);
+uint32_t dp_cmd_set_pen(struct rdc_dp *dp, uint32_t v);
+uint32_t dp_cmd_set_dash(struct rdc_dp *dp, uint32_t bits, uint32_t v);
+void dp_pen_reset(struct rdc_dp_state *st);
+/* LINE, POLYLINE, POLYGON through the transform and the stroker. */
+uint32_t dp_cmd_stroke(struct rdc_dp *dp, uint32_t op, uint32_t len,
+		       const uint32_t *a);
+void dp_stroke_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+		    uint32_t h);
+/* Width 1, no dash: the plain midpoint line. */
+bool dp_pen_plain(const struct rdc_dp *dp);
+uint64_t dp_isqrt(uint64_t v);
+
+/* ARC (arc.c): sine and cosine of a 1/65536-turn angle in 16.16. */
+int32_t dp_sin(uint32_t a);
+int32_t dp_cos(uint32_t a);
+void dp_arc(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
+	    uint32_t ry, uint32_t start, uint32_t end, uint32_t mode);
+uint32_t dp_cmd_arc(struct rdc_dp *dp, uint32_t fl, const uint32_t *a);
+/* BEZIER, HERMITE, BSPLINE (curve.c) */
+uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
+		      uint32_t len, const uint32_t *a);
 
 /* Words a row of w pixels of `fmt` occupies, padded to a word. */
 static inline uint32_t rdc_dp_words_per_row(unsigned int fmt, uint32_t w)

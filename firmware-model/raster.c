@@ -257,18 +257,78 @@ static int64_t div_floor(int64_t a, int64_t b)
 	return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
 
+void rdc_dp_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+
+	span_fill(dp, &c, y, xa, xb, dp->st.fg);
+}
+
+void rdc_dp_span_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
+		    uint32_t solid, const uint32_t *vals, const uint8_t *on)
+{
+	span_emit(dp, y, xa, n, solid, vals, on);
+}
+
+bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
+		    uint32_t *out)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	unsigned int bpp = rdc_format_bpp(s->format);
+	uint64_t bit0 = (uint64_t)xa * bpp, bit1 = bit0 + (uint64_t)n * bpp;
+	const uint8_t *p;
+	uint32_t i;
+
+	if (!n)
+		return true;
+	p = rdc_port_span(dp->hw,
+			  s->base + (uint32_t)y * s->stride + (uint32_t)(bit0 / 8),
+			  (uint32_t)((bit1 + 7) / 8 - bit0 / 8), RDC_BUS_READ);
+	if (!p)
+		return false;
+	for (i = 0; i < n; i++)
+		out[i] = px_ld(p, bpp, (uint32_t)(bit0 & 7) + i * bpp);
+	return true;
+}
+
+uint32_t rdc_dp_px_load(const uint8_t *p, unsigned int bpp, uint32_t bit)
+{
+	return px_ld(p, bpp, bit);
+}
+
+void rdc_dp_px_store(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v)
+{
+	px_st(p, bpp, bit, v & fmt_mask(bpp));
+}
+
 /*
  * Midpoint line.  The endpoints are first put in a canonical order (the
  * major axis increasing), so line(a, b) and line(b, a) are the same pixels.
  * Step i along the major axis (0..n) lands on minor offset
  *   j(i) = floor((2 * i * m + n) / (2 * n)),   n = |major delta|, m = |minor|
- * which is Bresenham's choice with ties rounded away from the start.  The
- * clip turns into a range of i solved in closed form, and the decision
- * variable (the remainder of that division) is started at the first
- * visible i, so a clipped line has exactly the unclipped line's pixels.
+ * which is Bresenham's choice with ties rounded away from the start.
+ *
+ * Clipping happens before rasterisation, Liang-Barsky style but on the
+ * discrete step parameter i instead of a real one: each clip edge bounds i
+ * from one side (the major-axis edges directly, the minor-axis edges by
+ * inverting j(i) in closed form), the bounds are intersected, and the
+ * decision variable (the remainder of that division) is started at the
+ * first visible i.  So a clipped line has exactly the unclipped line's
+ * pixels inside the clip, and the cost follows the visible part only.
  */
 void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		 int32_t y1, bool skip_first, bool skip_last)
+{
+	int32_t adx = x1 > x0 ? x1 - x0 : x0 - x1;
+	int32_t ady = y1 > y0 ? y1 - y0 : y0 - y1;
+	int64_t n = RDC_MAX(adx, ady);
+
+	rdc_dp_line_steps(dp, x0, y0, x1, y1, skip_first ? 1 : 0,
+			  n - (skip_last ? 1 : 0));
+}
+
+void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
+		       int32_t y1, int64_t first, int64_t last)
 {
 	struct rdc_rect c = rdc_dp_eff_clip(dp);
 	int32_t adx = x1 > x0 ? x1 - x0 : x0 - x1;
@@ -282,11 +342,12 @@ void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		return;
 	if ((xmajor && x1 < x0) || (!xmajor && y1 < y0)) {
 		int32_t t;
-		bool b;
+		int64_t f = first;
 
 		t = x0, x0 = x1, x1 = t;
 		t = y0, y0 = y1, y1 = t;
-		b = skip_first, skip_first = skip_last, skip_last = b;
+		first = RDC_MAX(adx, ady) - last;
+		last = RDC_MAX(adx, ady) - f;
 	}
 	if (xmajor) {
 		u0 = x0, v0 = y0, n = adx, m = ady, sv = y1 < y0 ? -1 : 1;
@@ -296,8 +357,8 @@ void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		cu0 = c.y0, cu1 = c.y1 - 1, cv0 = c.x0, cv1 = c.x1 - 1;
 	}
 
-	ilo = RDC_MAX((int64_t)(skip_first ? 1 : 0), (int64_t)cu0 - u0);
-	ihi = RDC_MIN(n - (skip_last ? 1 : 0), (int64_t)cu1 - u0);
+	ilo = RDC_MAX(RDC_MAX(first, (int64_t)0), (int64_t)cu0 - u0);
+	ihi = RDC_MIN(RDC_MIN(last, n), (int64_t)cu1 - u0);
 	if (sv > 0) {
 		jlo = (int64_t)cv0 - v0;
 		jhi = (int64_t)cv1 - v0;
@@ -364,7 +425,7 @@ void rdc_dp_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		return;
 	if (fill) {
 		for (r = RDC_MAX(y, c.y0); r <= RDC_MIN(yb, c.y1 - 1); r++)
-			span_fill(dp, &c, r, x, xr, fg);
+			dp_fill_span(dp, x, xr, r);
 		return;
 	}
 	/* Each pixel once: full top and bottom rows, sides between them. */
@@ -393,7 +454,9 @@ static void quad_row(struct rdc_dp *dp, const struct rdc_rect *c, int32_t cx,
 	uint32_t fg = dp->st.fg;
 
 	for (k = 0; k < nrows; k++) {
-		if (fill || amin == 0) {
+		if (fill) {
+			dp_fill_span(dp, cx - hi, cx + hi, rows[k]);
+		} else if (amin == 0) {
 			span_fill(dp, c, rows[k], cx - hi, cx + hi, fg);
 		} else {
 			span_fill(dp, c, rows[k], cx - hi, cx - lo, fg);
@@ -418,7 +481,10 @@ void rdc_dp_circle(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t r,
 	if (c.x0 >= c.x1 || c.y0 >= c.y1)
 		return;
 	if (r == 0) {
-		span_fill(dp, &c, cy, cx, cx, dp->st.fg);
+		if (fill)
+			dp_fill_span(dp, cx, cx, cy);
+		else
+			span_fill(dp, &c, cy, cx, cx, dp->st.fg);
 		return;
 	}
 	/* Nothing of a circle whose bounding box misses the clip shows. */
@@ -485,13 +551,23 @@ void rdc_dp_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 	if (c.x0 >= c.x1 || c.y0 >= c.y1)
 		return;
 	if (ry == 0) {
-		span_fill(dp, &c, cy, cx - (int32_t)rx, cx + (int32_t)rx,
-			  dp->st.fg);
+		if (fill)
+			dp_fill_span(dp, cx - (int32_t)rx, cx + (int32_t)rx, cy);
+		else
+			span_fill(dp, &c, cy, cx - (int32_t)rx,
+				  cx + (int32_t)rx, dp->st.fg);
 		return;
 	}
 	if (rx == 0) {
-		col_fill(dp, &c, cx, cy - (int32_t)ry, cy + (int32_t)ry,
-			 dp->st.fg);
+		int32_t t;
+
+		/* a patterned fill needs its pixels row by row */
+		if (!fill || dp->st.pat_mode == RDC_PAT_NONE)
+			col_fill(dp, &c, cx, cy - (int32_t)ry,
+				 cy + (int32_t)ry, dp->st.fg);
+		else
+			for (t = -(int32_t)ry; t <= (int32_t)ry; t++)
+				dp_fill_span(dp, cx, cx, cy + t);
 		return;
 	}
 	if (cx + (int32_t)rx < c.x0 || cx - (int32_t)rx >= c.x1 ||
@@ -560,6 +636,60 @@ static bool clip_pair(const struct rdc_rect *c, int64_t sw, int64_t sh,
  * when the destination lies above the source (ascending otherwise), as
  * memmove does, so any overlap of the two rectangles copies correctly.
  */
+/*
+ * Write the staged pixels dp->px[0, n) of a BLIT or HOST_BLIT to DST row y
+ * from xa (inside the clip), in this order: the colour key drops source
+ * pixels equal to it (compared in the source format, masked to its pixel
+ * size), the ROP combines the others with the destination, and a global
+ * alpha below opaque blends that result over the destination
+ * (rdc_dp_blend; one read-modify-write span).  Indexed formats have no
+ * blend: blit_drawn() lets them draw only at alpha >= RDC_ALPHA_THRESHOLD.
+ */
+static void blit_span(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n)
+{
+	const struct rdc_dp_state *st = &dp->st;
+	unsigned int fmt = st->dst.format, bpp = rdc_format_bpp(fmt);
+	uint32_t mask = fmt_mask(bpp), key = st->colorkey & mask, i, cnt = 0;
+	bool blend = st->alpha != RDC_ALPHA_OPAQUE && !rdc_format_indexed(fmt);
+	uint64_t bit0 = (uint64_t)xa * bpp, bit1 = bit0 + (uint64_t)n * bpp;
+	uint8_t *p;
+
+	if (st->colorkey_on)
+		for (i = 0; i < n; i++)
+			dp->on[i] = dp->px[i] != key;
+	if (!blend) {
+		span_emit(dp, y, xa, n, 0, dp->px,
+			  st->colorkey_on ? dp->on : NULL);
+		return;
+	}
+	p = rdc_port_span(dp->hw,
+			  st->dst.base + (uint32_t)y * st->dst.stride +
+				  (uint32_t)(bit0 / 8),
+			  (uint32_t)((bit1 + 7) / 8 - bit0 / 8), RDC_BUS_RMW);
+	if (!p)
+		return;
+	for (i = 0; i < n; i++) {
+		uint32_t bit = (uint32_t)(bit0 & 7) + i * bpp, d;
+
+		if (st->colorkey_on && !dp->on[i])
+			continue;
+		d = px_ld(p, bpp, bit);
+		px_st(p, bpp, bit,
+		      rdc_dp_blend(fmt, rdc_rop_apply(st->rop, dp->px[i], d) &
+						mask,
+				   d, st->alpha) & mask);
+		cnt++;
+	}
+	dp->hw->perf.pixels += cnt;
+}
+
+/* Does the global alpha let a BLIT or HOST_BLIT draw at all? */
+static bool blit_drawn(const struct rdc_dp *dp)
+{
+	return !rdc_format_indexed(dp->st.dst.format) ||
+	       dp->st.alpha >= RDC_ALPHA_THRESHOLD;
+}
+
 void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 		 int32_t dy32, uint32_t w32, uint32_t h32)
 {
@@ -571,7 +701,8 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 	bool back;
 	int64_t k;
 
-	if (!clip_pair(&c, ss->width, ss->height, &sx, &sy, &dx, &dy, &w, &h))
+	if (!blit_drawn(dp) ||
+	    !clip_pair(&c, ss->width, ss->height, &sx, &sy, &dx, &dy, &w, &h))
 		return;
 	sbit = (uint64_t)ss->base * 8 + (uint64_t)sy * ss->stride * 8 +
 	       (uint64_t)sx * bpp;
@@ -603,8 +734,8 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 			for (i = 0; i < n; i++)
 				dp->px[i] = px_ld(p, bpp,
 						  (uint32_t)(b0 & 7) + i * bpp);
-			span_emit(dp, (int32_t)(dy + row), (int32_t)(dx + off),
-				  n, 0, dp->px, NULL);
+			blit_span(dp, (int32_t)(dy + row), (int32_t)(dx + off),
+				  n);
 		}
 	}
 }
@@ -671,8 +802,11 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 				dp->px[i] = set ? rs->fg : rs->bg;
 				dp->on[i] = set;
 			}
-			span_emit(dp, (int32_t)row, (int32_t)col, n, 0, dp->px,
-				  rs->transparent ? dp->on : NULL);
+			if (rs->kind == SRC_HOST)
+				blit_span(dp, (int32_t)row, (int32_t)col, n);
+			else
+				span_emit(dp, (int32_t)row, (int32_t)col, n, 0,
+					  dp->px, rs->transparent ? dp->on : NULL);
 		}
 	}
 }
@@ -687,7 +821,8 @@ void rdc_dp_host_blit(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		.bpp = rdc_format_bpp(fmt),
 	};
 
-	rows_draw(dp, x, y, w, h, &rs);
+	if (blit_drawn(dp))
+		rows_draw(dp, x, y, w, h, &rs);
 }
 
 void rdc_dp_mono(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,

@@ -381,7 +381,21 @@ enum rdc_opcode {
 };
 
 #define RDC_CALL_DEPTH 8 /* nested display lists */
+#define RDC_ALPHA_OPAQUE 255u /* SET_ALPHA: 0..255, reset 255 */
+#define RDC_ALPHA_THRESHOLD 128u /* indexed DST: alpha >= this draws */
+#define RDC_AA_RAMP_MIN 2u /* SET_AA_RAMP range */
+#define RDC_AA_RAMP_MAX 256u
+#define RDC_AA_RAMP_RESET 8u
 #define RDC_PEN_MAX_WIDTH 64
+#define RDC_PEN_WIDTH GENMASK(7, 0) /* SET_PEN word fields */
+#define RDC_PEN_CAP GENMASK(9, 8)
+#define RDC_PEN_JOIN GENMASK(11, 10)
+#define RDC_DASH_LEN GENMASK(5, 0) /* SET_DASH second word fields */
+#define RDC_DASH_OFFSET GENMASK(13, 8)
+#define RDC_DASH_MAX_LEN 32
+#define RDC_ARC_START GENMASK(15, 0) /* ARC angle word fields */
+#define RDC_ARC_END GENMASK(31, 16)
+#define RDC_CURVE_MAX_STEPS 255 /* steps in the flags of BEZIER & co. */
 #define RDC_COLORKEY_ENABLE BIT(0)
 #define RDC_FILL_NONZERO BIT(0)
 #define RDC_FLOOD_8 BIT(0) /* 8-connected (else 4-connected) */

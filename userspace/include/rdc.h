@@ -7,7 +7,13 @@
  *   "sim:", "sim" or ""     an RDC-1 simulated in this process (default);
  *                           options: "sim:vram=16M" (64K..256M bytes,
  *                           K/M suffixes)
- *   (later: unix:PATH, tcp:HOST:PORT, usb:, fbdev:/dev/fbN)
+ *   "unix:PATH", "unix:"   an RDC-1 served by rdcd on a UNIX socket (the
+ *                           default path when PATH is empty)
+ *   "tcp:HOST:PORT"         the same over TCP; options after '?', joined
+ *                           by '&': "token=FILE" (else $RDC_TOKEN_FILE),
+ *                           "observe" (do not ask for control)
+ *                           (docs/protocol.md)
+ *   (later: usb:, fbdev:/dev/fbN)
  *
  * Errors: every function that can fail returns 0 or a positive count on
  * success and a negative enum rdc_error on failure; rdc_strerror() names
@@ -44,7 +50,8 @@ enum rdc_error {
 	RDC_E_PROTO = -11,  /* protocol violation by the other side */
 	RDC_E_BUSY = -12,   /* another client controls the device */
 	RDC_E_FILE = -13,   /* file could not be read or written */
-	RDC_E_COUNT_ = -14
+	RDC_E_AUTH = -14,   /* the daemon refused the token */
+	RDC_E_COUNT_ = -15
 };
 
 /* A short English description of an enum rdc_error value. */
@@ -195,6 +202,69 @@ int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 		   const uint8_t *bits, int transparent);
 int rdc_batch_text(rdc_batch *b, int x, int y, const char *s, size_t len,
 		   int transparent);
+/* Pens and dashes: width 1..RDC_PEN_MAX_WIDTH, enum rdc_cap, enum rdc_join;
+ * dash pattern bit 0 first, len 0..32 (0 = solid), offset 0..63. */
+int rdc_batch_pen(rdc_batch *b, uint32_t width, uint32_t cap, uint32_t join);
+int rdc_batch_dash(rdc_batch *b, uint32_t pattern, uint32_t len,
+		   uint32_t offset);
+/* Closed outline through n points (xy as for polyline). */
+int rdc_batch_polygon(rdc_batch *b, const int *xy, size_t n);
+/* Angles in 1/65536 turn, counter-clockwise from +x, y up; enum
+ * rdc_arc_mode. */
+int rdc_batch_arc(rdc_batch *b, int cx, int cy, uint32_t rx, uint32_t ry,
+		  uint32_t start, uint32_t end, uint32_t mode);
+/* Curves: xy holds 4 points (HERMITE: p0, p1, tangent t0, tangent t1);
+ * steps 0..RDC_CURVE_MAX_STEPS, 0 = chosen by the device. */
+int rdc_batch_bezier(rdc_batch *b, const int *xy, uint32_t steps);
+int rdc_batch_hermite(rdc_batch *b, const int *xy, uint32_t steps);
+int rdc_batch_bspline(rdc_batch *b, const int *xy, size_t n, uint32_t steps);
+/* m: 9 entries m00 m01 m02 m10 m11 m12 m20 m21 m22 in signed 15.16, or
+ * NULL for the identity. */
+int rdc_batch_transform(rdc_batch *b, const int32_t *m);
+/* World window in signed 15.16 onto the viewport's corner pixels. */
+int rdc_batch_viewport(rdc_batch *b, int32_t wx0, int32_t wy0, int32_t wx1,
+		       int32_t wy1, int x0, int y0, int x1, int y1);
+/* Filled polygon through n >= 3 points; even-odd unless nonzero. */
+int rdc_batch_fill_polygon(rdc_batch *b, const int *xy, size_t n,
+			   int nonzero);
+/* Flood fill from (x, y); flags RDC_FLOOD_8 | RDC_FLOOD_BOUNDARY, the
+ * boundary pixel value used only with RDC_FLOOD_BOUNDARY. */
+int rdc_batch_flood(rdc_batch *b, int x, int y, uint32_t flags,
+		    uint32_t boundary);
+/* Fill patterns, anchored at the DST origin: none (solid FG); 8 rows of
+ * 8 bits, bit 7 leftmost, 1 = FG, 0 = BG or left alone; 64 pixel values
+ * row by row. */
+int rdc_batch_pattern_none(rdc_batch *b);
+int rdc_batch_pattern_mono(rdc_batch *b, const uint8_t rows[8],
+			   int transparent);
+int rdc_batch_pattern_color(rdc_batch *b, const uint32_t px[64]);
+/* Triangle: xy holds 3 points, colour and z (0..65535) one per vertex;
+ * flat shading uses colour[0]. */
+int rdc_batch_triangle(rdc_batch *b, const int *xy, const uint32_t *colour,
+		       const uint32_t *z, int gouraud);
+/* Depth buffer: 16-bit surface the size of DST at base, stride bytes a
+ * row; flags RDC_Z_TEST | RDC_Z_WRITE.  zbuf_off turns it off. */
+int rdc_batch_zbuf(rdc_batch *b, uint32_t base, uint32_t stride,
+		   uint32_t flags);
+int rdc_batch_zbuf_off(rdc_batch *b);
+int rdc_batch_clear_z(rdc_batch *b, uint32_t value);
+/* Anti-aliased line, circle and ellipse (blended in RGB formats, through
+ * the CLUT ramp of aa_ramp entries from FG, 2..256, in indexed ones). */
+int rdc_batch_aa_line(rdc_batch *b, int x0, int y0, int x1, int y1);
+int rdc_batch_aa_circle(rdc_batch *b, int cx, int cy, uint32_t r);
+int rdc_batch_aa_ellipse(rdc_batch *b, int cx, int cy, uint32_t rx,
+			 uint32_t ry);
+int rdc_batch_aa_ramp(rdc_batch *b, uint32_t n);
+/* BLIT / HOST_BLIT: global alpha 0..255 (255 opaque), and the source
+ * colour key (pixels equal to key are not drawn) when enable is set. */
+int rdc_batch_alpha(rdc_batch *b, uint32_t alpha);
+int rdc_batch_colorkey(rdc_batch *b, uint32_t key, int enable);
+/* Display lists: command words stored in VRAM (rdc_vram_write) at a
+ * 4-aligned byte address, run by CALL (back after the CALL at RET) or
+ * JUMP; nesting up to RDC_CALL_DEPTH. */
+int rdc_batch_call(rdc_batch *b, uint32_t addr);
+int rdc_batch_ret(rdc_batch *b);
+int rdc_batch_jump(rdc_batch *b, uint32_t addr);
 
 /* ---- Introspection for hardware-model tests (sim: only) ------------------ */
 struct rdc_stats {
@@ -261,6 +331,59 @@ const char *rdc_reg_info(size_t i, uint32_t *reg);
 /* Offset of a register by name, case-insensitive, "RDC_REG_" optional;
  * 0 or RDC_E_INVAL. */
 int rdc_reg_by_name(const char *name, uint32_t *reg);
+
+/* ---- Events from a daemon (unix:, tcp:) ---------------------------------- */
+#define RDC_EVENT_FRAME 0x1u /* a frame (every Nth) */
+#define RDC_EVENT_IRQ 0x2u   /* interrupt status bits that became set */
+
+/* Frame encodings on the wire (docs/protocol.md); pixels arrive decoded. */
+#define RDC_FRAME_RAW 0u
+#define RDC_FRAME_RLE 1u
+#define RDC_FRAME_DELTA 2u /* rows unchanged since the last frame skipped */
+
+struct rdc_event {
+	uint32_t type;	      /* RDC_EVENT_FRAME or RDC_EVENT_IRQ */
+	uint32_t irq;	      /* IRQ: the new RDC_IRQ_* bits */
+	uint64_t time;	      /* IRQ: simulated time of the check */
+	uint64_t number;      /* FRAME: frame number since reset */
+	uint32_t width, height; /* FRAME: pixels stored in buf */
+	uint32_t dropped;     /* FRAME: frames dropped for this client */
+};
+
+/*
+ * Ask the daemon for events: `events` is a mask of RDC_EVENT_*, frames
+ * come every `every`th frame (1 = all) in `encoding` (RDC_FRAME_*).  A
+ * subscriber that does not keep up loses frames (counted in `dropped`),
+ * never stalls the device.  RDC_E_NOSYS on backends without a daemon.
+ */
+int rdc_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
+		  uint32_t encoding);
+/*
+ * The next event; a frame's XRGB8888 pixels go to buf (cap words,
+ * RDC_E_RANGE if too small: the event is consumed).  Waits up to
+ * timeout_ms of wall time (< 0: forever), else RDC_E_TIMEOUT.
+ */
+int rdc_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
+		   size_t cap, int timeout_ms);
+
+/* ---- Traces (rdcd --record) ---------------------------------------------- */
+struct rdc_replay_result {
+	uint64_t records;    /* operations replayed */
+	uint64_t mismatches; /* times or register values that differ */
+	uint64_t time;	     /* simulated time at the end */
+	uint64_t frames;     /* frames completed during the replay */
+	uint32_t frame_crc;  /* CRC-32 of the last frame (0 if none) */
+	uint32_t width, height;
+};
+
+/*
+ * Play a trace back on a fresh sim: device: the same operations at the
+ * same simulated times give the same frames and cycle counts.  `dev_out`
+ * (may be NULL) receives the device afterwards, for the caller to
+ * inspect and rdc_close.  RDC_E_FILE, RDC_E_PARSE for a damaged trace.
+ */
+int rdc_replay_file(const char *path, struct rdc_replay_result *res,
+		    rdc_dev **dev_out);
 
 /* ---- PNG ----------------------------------------------------------------- */
 /* Write w x h XRGB8888 pixels (row `pitch` words) as an RGB PNG. */

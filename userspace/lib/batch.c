@@ -313,3 +313,216 @@ int rdc_batch_submit(rdc_dev *dev, rdc_batch *b)
 	b->n = 0;
 	return ret;
 }
+
+int rdc_batch_pen(rdc_batch *b, uint32_t width, uint32_t cap, uint32_t join)
+{
+	return batch_args(b, RDC_OP_SET_PEN, 1,
+			  FIELD_PREP(RDC_PEN_WIDTH, width & 0xff) |
+				  FIELD_PREP(RDC_PEN_CAP, cap & 3) |
+				  FIELD_PREP(RDC_PEN_JOIN, join & 3),
+			  0, 0, 0);
+}
+
+int rdc_batch_dash(rdc_batch *b, uint32_t pattern, uint32_t len,
+		   uint32_t offset)
+{
+	return batch_args(b, RDC_OP_SET_DASH, 2, pattern,
+			  FIELD_PREP(RDC_DASH_LEN, len & 0x3f) |
+				  FIELD_PREP(RDC_DASH_OFFSET, offset & 0x3f),
+			  0, 0);
+}
+
+/* n points of xy as one command of opcode op with flags. */
+static int batch_points(rdc_batch *b, uint32_t op, uint32_t flags,
+			const int *xy, size_t n)
+{
+	uint32_t *p;
+	int err;
+
+	if ((!xy && n) || n > RDC_CMD_LENGTH)
+		return RDC_E_INVAL;
+	p = batch_open(b, op, flags, n, &err);
+	for (size_t i = 0; p && i < n; i++)
+		p[i] = RDC_XY(xy[2 * i], xy[2 * i + 1]);
+	return err;
+}
+
+int rdc_batch_polygon(rdc_batch *b, const int *xy, size_t n)
+{
+	return batch_points(b, RDC_OP_POLYGON, 0, xy, n);
+}
+
+int rdc_batch_arc(rdc_batch *b, int cx, int cy, uint32_t rx, uint32_t ry,
+		  uint32_t start, uint32_t end, uint32_t mode)
+{
+	const uint32_t a[3] = {
+		RDC_XY(cx, cy), RDC_WH(rx, ry),
+		FIELD_PREP(RDC_ARC_START, start & 0xffff) |
+			FIELD_PREP(RDC_ARC_END, end & 0xffff),
+	};
+
+	return rdc_batch_cmd(b, RDC_OP_ARC, mode, a, 3);
+}
+
+int rdc_batch_bezier(rdc_batch *b, const int *xy, uint32_t steps)
+{
+	return batch_points(b, RDC_OP_BEZIER, steps, xy, xy ? 4 : 1);
+}
+
+int rdc_batch_hermite(rdc_batch *b, const int *xy, uint32_t steps)
+{
+	return batch_points(b, RDC_OP_HERMITE, steps, xy, xy ? 4 : 1);
+}
+
+int rdc_batch_bspline(rdc_batch *b, const int *xy, size_t n, uint32_t steps)
+{
+	return batch_points(b, RDC_OP_BSPLINE, steps, xy, n);
+}
+
+int rdc_batch_transform(rdc_batch *b, const int32_t *m)
+{
+	uint32_t a[9];
+
+	if (!m)
+		return rdc_batch_cmd(b, RDC_OP_SET_TRANSFORM, 0, NULL, 0);
+	for (int i = 0; i < 9; i++)
+		a[i] = (uint32_t)m[i];
+	return rdc_batch_cmd(b, RDC_OP_SET_TRANSFORM, 0, a, 9);
+}
+
+int rdc_batch_viewport(rdc_batch *b, int32_t wx0, int32_t wy0, int32_t wx1,
+		       int32_t wy1, int x0, int y0, int x1, int y1)
+{
+	const uint32_t a[6] = {
+		(uint32_t)wx0, (uint32_t)wy0, (uint32_t)wx1, (uint32_t)wy1,
+		RDC_XY(x0, y0), RDC_XY(x1, y1),
+	};
+
+	return rdc_batch_cmd(b, RDC_OP_SET_VIEWPORT, 0, a, 6);
+}
+
+int rdc_batch_fill_polygon(rdc_batch *b, const int *xy, size_t n,
+			   int nonzero)
+{
+	return batch_points(b, RDC_OP_FILL_POLYGON,
+			    nonzero ? RDC_FILL_NONZERO : 0, xy, n);
+}
+
+int rdc_batch_flood(rdc_batch *b, int x, int y, uint32_t flags,
+		    uint32_t boundary)
+{
+	const uint32_t a[2] = { RDC_XY(x, y), boundary };
+
+	return rdc_batch_cmd(b, RDC_OP_FLOOD_FILL, flags, a,
+			     flags & RDC_FLOOD_BOUNDARY ? 2 : 1);
+}
+
+int rdc_batch_pattern_none(rdc_batch *b)
+{
+	return rdc_batch_cmd(b, RDC_OP_SET_PATTERN, RDC_PAT_NONE, NULL, 0);
+}
+
+int rdc_batch_pattern_mono(rdc_batch *b, const uint8_t rows[8],
+			   int transparent)
+{
+	uint32_t a[2] = { 0, 0 };
+
+	if (!rows)
+		return RDC_E_INVAL;
+	for (int i = 0; i < 8; i++)
+		a[i / 4] |= (uint32_t)rows[i] << (8 * (i % 4));
+	return rdc_batch_cmd(b, RDC_OP_SET_PATTERN,
+			     transparent ? RDC_PAT_MONO_TRANSPARENT :
+					   RDC_PAT_MONO,
+			     a, 2);
+}
+
+int rdc_batch_pattern_color(rdc_batch *b, const uint32_t px[64])
+{
+	if (!px)
+		return RDC_E_INVAL;
+	return rdc_batch_cmd(b, RDC_OP_SET_PATTERN, RDC_PAT_COLOR, px, 64);
+}
+
+int rdc_batch_triangle(rdc_batch *b, const int *xy, const uint32_t *colour,
+		       const uint32_t *z, int gouraud)
+{
+	uint32_t a[9];
+
+	if (!xy || !colour || !z)
+		return RDC_E_INVAL;
+	for (int i = 0; i < 3; i++) {
+		a[3 * i] = RDC_XY(xy[2 * i], xy[2 * i + 1]);
+		a[3 * i + 1] = colour[i];
+		a[3 * i + 2] = z[i];
+	}
+	return rdc_batch_cmd(b, RDC_OP_TRIANGLE, gouraud ? RDC_TRI_GOURAUD : 0,
+			     a, 9);
+}
+
+int rdc_batch_zbuf(rdc_batch *b, uint32_t base, uint32_t stride,
+		   uint32_t flags)
+{
+	const uint32_t a[2] = { base, stride };
+
+	return rdc_batch_cmd(b, RDC_OP_SET_ZBUF, flags, a, 2);
+}
+
+int rdc_batch_zbuf_off(rdc_batch *b)
+{
+	return rdc_batch_cmd(b, RDC_OP_SET_ZBUF, 0, NULL, 0);
+}
+
+int rdc_batch_clear_z(rdc_batch *b, uint32_t value)
+{
+	return rdc_batch_cmd(b, RDC_OP_CLEAR_Z, 0, &value, 1);
+}
+
+int rdc_batch_aa_line(rdc_batch *b, int x0, int y0, int x1, int y1)
+{
+	return batch_args(b, RDC_OP_AA_LINE, 2, RDC_XY(x0, y0), RDC_XY(x1, y1),
+			  0, 0);
+}
+
+int rdc_batch_aa_circle(rdc_batch *b, int cx, int cy, uint32_t r)
+{
+	return batch_args(b, RDC_OP_AA_CIRCLE, 2, RDC_XY(cx, cy), r, 0, 0);
+}
+
+int rdc_batch_aa_ellipse(rdc_batch *b, int cx, int cy, uint32_t rx,
+			 uint32_t ry)
+{
+	return batch_args(b, RDC_OP_AA_ELLIPSE, 2, RDC_XY(cx, cy),
+			  RDC_WH(rx, ry), 0, 0);
+}
+
+int rdc_batch_aa_ramp(rdc_batch *b, uint32_t n)
+{
+	return batch_args(b, RDC_OP_SET_AA_RAMP, 1, n, 0, 0, 0);
+}
+
+int rdc_batch_alpha(rdc_batch *b, uint32_t alpha)
+{
+	return batch_args(b, RDC_OP_SET_ALPHA, 1, alpha, 0, 0, 0);
+}
+
+int rdc_batch_colorkey(rdc_batch *b, uint32_t key, int enable)
+{
+	return rdc_batch_cmd(b, RDC_OP_SET_COLORKEY,
+			     enable ? RDC_COLORKEY_ENABLE : 0, &key, 1);
+}
+
+int rdc_batch_call(rdc_batch *b, uint32_t addr)
+{
+	return batch_args(b, RDC_OP_CALL, 1, addr, 0, 0, 0);
+}
+
+int rdc_batch_ret(rdc_batch *b)
+{
+	return batch_args(b, RDC_OP_RET, 0, 0, 0, 0, 0);
+}
+
+int rdc_batch_jump(rdc_batch *b, uint32_t addr)
+{
+	return batch_args(b, RDC_OP_JUMP, 1, addr, 0, 0, 0);
+}

@@ -15,8 +15,6 @@
  * rdc_open knows them (RDC_E_NOSYS), unlike a typo (RDC_E_URI).  A
  * transport is added by giving its entry an open() in a file of its own.
  */
-static const struct rdc_backend rdc_backend_unix = {.scheme = "unix"};
-static const struct rdc_backend rdc_backend_tcp = {.scheme = "tcp"};
 static const struct rdc_backend rdc_backend_usb = {.scheme = "usb"};
 static const struct rdc_backend rdc_backend_fbdev = {.scheme = "fbdev"};
 
@@ -40,6 +38,7 @@ static const char *const rdc_error_str[] = {
 	[-RDC_E_PROTO] = "protocol violation",
 	[-RDC_E_BUSY] = "device busy",
 	[-RDC_E_FILE] = "file could not be read or written",
+	[-RDC_E_AUTH] = "token missing or refused",
 };
 
 const char *rdc_strerror(int err)
@@ -829,4 +828,27 @@ int rdc_stats_get(rdc_dev *dev, struct rdc_stats *st)
 	if (!ret)
 		st->frames = frames;
 	return ret;
+}
+
+/* ---- Events -------------------------------------------------------------- */
+
+int rdc_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
+		  uint32_t encoding)
+{
+	if (!dev || (events & ~(RDC_EVENT_FRAME | RDC_EVENT_IRQ)) ||
+	    encoding > RDC_FRAME_DELTA || ((events & RDC_EVENT_FRAME) && !every))
+		return RDC_E_INVAL;
+	if (!dev->be->subscribe)
+		return RDC_E_NOSYS;
+	return dev->be->subscribe(dev, events, every, encoding);
+}
+
+int rdc_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
+		   size_t cap, int timeout_ms)
+{
+	if (!dev || !ev || (!buf && cap))
+		return RDC_E_INVAL;
+	if (!dev->be->event_next)
+		return RDC_E_NOSYS;
+	return dev->be->event_next(dev, ev, buf, cap, timeout_ms);
 }

@@ -94,10 +94,42 @@ struct rdc_backend {
 	 */
 	int (*frame_grab)(rdc_dev *dev, uint32_t *buf, size_t cap,
 			  uint32_t *width, uint32_t *height);
+
+	/*
+	 * Optional (remote devices, else RDC_E_NOSYS): ask for events
+	 * (RDC_EVENT_*) and frames, see rdc_subscribe; and take the next one,
+	 * waiting up to timeout_ms of wall time (RDC_E_TIMEOUT).
+	 */
+	int (*subscribe)(rdc_dev *dev, uint32_t events, uint32_t every,
+			 uint32_t encoding);
+	int (*event_next)(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
+			  size_t cap, int timeout_ms);
 };
 
 /* Backends (one file each). */
 extern const struct rdc_backend rdc_backend_sim;
+extern const struct rdc_backend rdc_backend_unix; /* net.c */
+extern const struct rdc_backend rdc_backend_tcp;  /* net.c */
+
+/*
+ * The chip behind a "sim:" handle, NULL for any other backend: rdcd owns
+ * its device through a sim: handle and hooks frames and time here.
+ */
+struct rdc_hw *rdc_sim_hw(rdc_dev *dev);
+
+/*
+ * Trace recording (record.c): wrap a sim: handle so that every operation
+ * that can change the device is appended to a file with its simulated
+ * time; rdc_replay_file (rdc.h) plays such a file back.
+ */
+struct rdc_rec;
+struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size);
+/* Wrap `dev` (a sim: handle); the wrapper stays until rdc_close(dev). */
+void rdc_rec_attach(struct rdc_rec *rec, rdc_dev *dev);
+/* Note a power cycle: the handle is closed and a fresh one attached. */
+void rdc_rec_power(struct rdc_rec *rec);
+/* Write the end record (`dev` attached, or NULL), flush and free. */
+int rdc_rec_close(struct rdc_rec *rec, rdc_dev *dev);
 
 struct rdc_dev {
 	const struct rdc_backend *be;

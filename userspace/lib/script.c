@@ -24,6 +24,7 @@
 #define RDL_MAX_FILE	   (64u << 20)
 #define RDL_MAX_BLIT_BYTES (64u << 20)
 #define RDL_MAX_STEP	   RDC_WAIT_BUDGET_DEFAULT
+#define RDL_MAX_LIST_WORDS (1u << 20) /* one `list` block */
 
 struct rdl_tok {
 	const char *s; /* NUL-terminated; unescaped for quoted strings */
@@ -40,6 +41,11 @@ struct rdl {
 	size_t ntok, tok_cap;
 	char *buf; /* the logical line, tokens point into it */
 	size_t buf_cap;
+	/* `list ADDR` ... `end`: command words kept for VRAM, not run */
+	bool list_on;
+	uint32_t list_addr, list_line;
+	uint32_t *list_w;
+	size_t list_n, list_cap;
 };
 
 static int rdl_err(struct rdl *r, int code, const char *fmt, ...)
@@ -96,11 +102,32 @@ static const char *const rdl_op_names[RDC_OP_COUNT] = {
 	[RDC_OP_FILL_CIRCLE] = "fill-circle",
 	[RDC_OP_ELLIPSE] = "ellipse",
 	[RDC_OP_FILL_ELLIPSE] = "fill-ellipse",
+	[RDC_OP_SET_PEN] = "pen",
+	[RDC_OP_SET_DASH] = "dash",
+	[RDC_OP_SET_TRANSFORM] = "transform",
+	[RDC_OP_SET_VIEWPORT] = "viewport",
+	[RDC_OP_POLYGON] = "polygon",
+	[RDC_OP_ARC] = "arc",
+	[RDC_OP_BEZIER] = "bezier",
+	[RDC_OP_HERMITE] = "hermite",
+	[RDC_OP_BSPLINE] = "bspline",
 	[RDC_OP_BLIT] = "blit",
 	[RDC_OP_HOST_BLIT] = "host-blit",
 	[RDC_OP_READBACK] = "readback",
 	[RDC_OP_MONO] = "mono",
 	[RDC_OP_TEXT] = "text",
+	[RDC_OP_FILL_POLYGON] = "fill-polygon",
+	[RDC_OP_FLOOD_FILL] = "flood",
+	[RDC_OP_SET_PATTERN] = "pattern",
+	[RDC_OP_TRIANGLE] = "triangle",
+	[RDC_OP_SET_ZBUF] = "zbuf",
+	[RDC_OP_CLEAR_Z] = "clear-z",
+	[RDC_OP_AA_LINE] = "aa-line",
+	[RDC_OP_AA_CIRCLE] = "aa-circle",
+	[RDC_OP_AA_ELLIPSE] = "aa-ellipse",
+	[RDC_OP_SET_AA_RAMP] = "aa-ramp",
+	[RDC_OP_SET_ALPHA] = "alpha",
+	[RDC_OP_SET_COLORKEY] = "colorkey",
 };
 
 const char *rdc_op_name(uint32_t op)
@@ -583,10 +610,36 @@ static int rdl_run_batch(struct rdl *r, uint32_t op)
 	return 0;
 }
 
+/* Inside `list`: append the statement's words to the list instead. */
+static int rdl_list_add(struct rdl *r)
+{
+	size_t n;
+	const uint32_t *w = rdc_batch_words(r->b, &n);
+
+	if (n > RDL_MAX_LIST_WORDS - r->list_n)
+		return rdl_err(r, RDC_E_PARSE, "list longer than %u words",
+			       RDL_MAX_LIST_WORDS);
+	if (r->list_n + n > r->list_cap) {
+		size_t cap = RDC_MAX(r->list_cap * 2, r->list_n + n);
+		uint32_t *nw = realloc(r->list_w, cap * sizeof(*nw));
+
+		if (!nw)
+			return rdl_err(r, RDC_E_NOMEM, "out of memory");
+		r->list_w = nw;
+		r->list_cap = cap;
+	}
+	memcpy(r->list_w + r->list_n, w, n * sizeof(*w));
+	r->list_n += n;
+	rdc_batch_reset(r->b);
+	return 0;
+}
+
 static int rdl_encoded(struct rdl *r, uint32_t op, int enc)
 {
 	if (enc)
 		return rdl_err(r, enc, "encoding: %s", rdc_strerror(enc));
+	if (r->list_on)
+		return rdl_list_add(r);
 	return rdl_run_batch(r, op);
 }
 
@@ -791,6 +844,12 @@ static int st_points(struct rdl *r, uint32_t op)
 		case RDC_OP_LINE:
 			ret = rdc_batch_line(r->b, c[0], c[1], c[2], c[3]);
 			break;
+		case RDC_OP_POLYGON:
+			ret = rdc_batch_polygon(r->b, c, n / 2);
+			break;
+		case RDC_OP_AA_LINE:
+			ret = rdc_batch_aa_line(r->b, c[0], c[1], c[2], c[3]);
+			break;
 		default:
 			ret = rdc_batch_polyline(r->b, c, n / 2);
 			break;
@@ -828,6 +887,12 @@ static int st_shape(struct rdl *r, uint32_t op)
 		break;
 	case RDC_OP_ELLIPSE:
 		ret = rdc_batch_ellipse(r->b, c[0], c[1], s[0], s[1]);
+		break;
+	case RDC_OP_AA_CIRCLE:
+		ret = rdc_batch_aa_circle(r->b, c[0], c[1], s[0]);
+		break;
+	case RDC_OP_AA_ELLIPSE:
+		ret = rdc_batch_aa_ellipse(r->b, c[0], c[1], s[0], s[1]);
 		break;
 	default:
 		ret = rdc_batch_fill_ellipse(r->b, c[0], c[1], s[0], s[1]);
@@ -1411,6 +1476,475 @@ static int st_screenshot(struct rdl *r, uint32_t op)
 	return 0;
 }
 
+/* ---- Pens, dashes, arcs, curves, transforms ------------------------------ */
+
+/*
+ * A decimal number with optional sign and fraction, times `scale`, rounded
+ * to nearest (halves away from zero), in [lo, hi].  Exact: no floating
+ * point, so "0.5" is 32768 in 15.16 on every host.
+ */
+static int rdl_fixed(struct rdl *r, size_t i, int64_t scale, int64_t lo,
+		     int64_t hi, int64_t *out)
+{
+	const char *s;
+	bool neg = false;
+	uint64_t ip = 0, fp = 0, den = 1;
+	int digits = 0;
+	int64_t v;
+
+	if (i >= r->ntok)
+		return rdl_err(r, RDC_E_PARSE, "missing argument %zu", i);
+	s = r->tok[i].s;
+	if (r->tok[i].quoted)
+		goto bad;
+	if (*s == '-' || *s == '+')
+		neg = *s++ == '-';
+	for (; *s >= '0' && *s <= '9'; s++, digits++) {
+		ip = ip * 10 + (uint64_t)(*s - '0');
+		if (ip > ((uint64_t)1 << 32))
+			goto range;
+	}
+	if (*s == '.') {
+		for (s++; *s >= '0' && *s <= '9'; s++, digits++) {
+			/* digits past the ninth cannot move the result */
+			if (den < 1000000000u) {
+				fp = fp * 10 + (uint64_t)(*s - '0');
+				den *= 10;
+			}
+		}
+	}
+	if (*s || !digits)
+		goto bad;
+	v = (int64_t)(ip * (uint64_t)scale +
+		      (fp * (uint64_t)scale * 2 + den) / (2 * den));
+	*out = neg ? -v : v;
+	if (*out < lo || *out > hi)
+		goto range;
+	return 0;
+bad:
+	return rdl_err(r, RDC_E_PARSE, "argument %zu: '%.40s' is not a number",
+		       i, r->tok[i].s);
+range:
+	return rdl_err(r, RDC_E_PARSE, "argument %zu: '%.40s' out of range", i,
+		       r->tok[i].s);
+}
+
+#define RDL_FIX_ONE 65536 /* 1.0 in 15.16 */
+
+/* pen WIDTH [butt|round|square] [miter|round|bevel] */
+static int st_pen(struct rdl *r, uint32_t op)
+{
+	static const char *const caps[] = {"butt", "round", "square"};
+	static const char *const joins[] = {"miter", "round", "bevel"};
+	uint32_t cap = RDC_CAP_BUTT, join = RDC_JOIN_MITER, k;
+	int64_t w;
+	int ret = rdl_int(r, 1, 0, UINT8_MAX, &w);
+
+	if (ret)
+		return ret;
+	if (r->ntok > 2) {
+		for (k = 0; k < 3 && !rdl_word(r, 2, caps[k]); k++)
+			;
+		if (k == 3)
+			return rdl_err(r, RDC_E_PARSE, "unknown cap '%.40s'",
+				       r->tok[2].s);
+		cap = k;
+	}
+	if (r->ntok > 3) {
+		for (k = 0; k < 3 && !rdl_word(r, 3, joins[k]); k++)
+			;
+		if (k == 3)
+			return rdl_err(r, RDC_E_PARSE, "unknown join '%.40s'",
+				       r->tok[3].s);
+		join = k;
+	}
+	return rdl_encoded(r, op, rdc_batch_pen(r->b, (uint32_t)w, cap, join));
+}
+
+/* dash PATTERN LENGTH [OFFSET] | dash off */
+static int st_dash(struct rdl *r, uint32_t op)
+{
+	uint32_t bits;
+	int64_t len, off = 0;
+	int ret;
+
+	if (rdl_word(r, 1, "off")) {
+		if (r->ntok != 2)
+			return rdl_err(r, RDC_E_PARSE, "dash off: no arguments");
+		return rdl_encoded(r, op, rdc_batch_dash(r->b, 0, 0, 0));
+	}
+	if (r->ntok < 3)
+		return rdl_err(r, RDC_E_PARSE, "dash PATTERN LENGTH [OFFSET]");
+	ret = rdl_u32(r, 1, &bits);
+	if (!ret)
+		ret = rdl_int(r, 2, 0, RDC_DASH_MAX_LEN, &len);
+	if (!ret && r->ntok > 3)
+		ret = rdl_int(r, 3, 0,
+			      FIELD_GET(RDC_DASH_OFFSET, RDC_DASH_OFFSET), &off);
+	if (ret)
+		return ret;
+	return rdl_encoded(r, op, rdc_batch_dash(r->b, bits, (uint32_t)len,
+						 (uint32_t)off));
+}
+
+/* Degrees (decimals allowed) to 1/65536 turn, modulo a turn. */
+static int rdl_angle(struct rdl *r, size_t i, uint32_t *out)
+{
+	int64_t v;
+	/* 65536 / 360 = 8192 / 45: scale by 8192, then divide by 45 */
+	int ret = rdl_fixed(r, i, 8192, -((int64_t)1 << 40), (int64_t)1 << 40,
+			    &v);
+	int64_t q;
+
+	if (ret)
+		return ret;
+	q = v >= 0 ? (v + 22) / 45 : -((-v + 22) / 45);
+	*out = (uint32_t)(((q % 65536) + 65536) % 65536);
+	return 0;
+}
+
+/* arc CX CY RX RY START END [pie|chord] */
+static int st_arc(struct rdl *r, uint32_t op)
+{
+	int c[2];
+	uint32_t rx, ry, a0, a1, mode = RDC_ARC_OUTLINE;
+	int ret = rdl_coords(r, 1, 2, c);
+
+	if (!ret)
+		ret = rdl_size(r, 3, &rx);
+	if (!ret)
+		ret = rdl_size(r, 4, &ry);
+	if (!ret)
+		ret = rdl_angle(r, 5, &a0);
+	if (!ret)
+		ret = rdl_angle(r, 6, &a1);
+	if (ret)
+		return ret;
+	if (r->ntok > 7) {
+		if (rdl_word(r, 7, "pie"))
+			mode = RDC_ARC_PIE;
+		else if (rdl_word(r, 7, "chord"))
+			mode = RDC_ARC_CHORD;
+		else
+			return rdl_err(r, RDC_E_PARSE,
+				       "arc mode '%.40s': pie or chord",
+				       r->tok[7].s);
+	}
+	return rdl_encoded(r, op, rdc_batch_arc(r->b, c[0], c[1], rx, ry, a0,
+						a1, mode));
+}
+
+/* bezier|hermite X0 Y0 ... [steps N]; bspline takes 4 or more points */
+static int st_curve(struct rdl *r, uint32_t op)
+{
+	size_t n = r->ntok - 1;
+	int64_t steps = 0;
+	int *c;
+	int ret;
+
+	if (n >= 2 && rdl_word(r, r->ntok - 2, "steps")) {
+		ret = rdl_int(r, r->ntok - 1, 1, RDC_CURVE_MAX_STEPS, &steps);
+		if (ret)
+			return ret;
+		n -= 2;
+	}
+	if (n % 2 || n < 8 || (op != RDC_OP_BSPLINE && n != 8))
+		return rdl_err(r, RDC_E_PARSE, "%s needs %s X Y pairs",
+			       rdc_op_name(op),
+			       op == RDC_OP_BSPLINE ? "4 or more" : "4");
+	if (n / 2 > RDC_CMD_MAX_ARGS)
+		return rdl_err(r, RDC_E_PARSE, "more than %d points",
+			       RDC_CMD_MAX_ARGS);
+	c = malloc(n * sizeof(*c));
+	if (!c)
+		return rdl_err(r, RDC_E_NOMEM, "out of memory");
+	ret = rdl_coords(r, 1, n, c);
+	if (!ret) {
+		if (op == RDC_OP_BEZIER)
+			ret = rdc_batch_bezier(r->b, c, (uint32_t)steps);
+		else if (op == RDC_OP_HERMITE)
+			ret = rdc_batch_hermite(r->b, c, (uint32_t)steps);
+		else
+			ret = rdc_batch_bspline(r->b, c, n / 2,
+						(uint32_t)steps);
+		ret = rdl_encoded(r, op, ret);
+	}
+	free(c);
+	return ret;
+}
+
+/* transform M00 M01 M02 M10 M11 M12 M20 M21 M22 | transform identity */
+static int st_transform(struct rdl *r, uint32_t op)
+{
+	int32_t m[9];
+	int64_t v;
+
+	if (rdl_word(r, 1, "identity") && r->ntok == 2)
+		return rdl_encoded(r, op, rdc_batch_transform(r->b, NULL));
+	if (r->ntok != 10)
+		return rdl_err(r, RDC_E_PARSE,
+			       "transform: 9 numbers or 'identity'");
+	for (size_t i = 0; i < 9; i++) {
+		int ret = rdl_fixed(r, 1 + i, RDL_FIX_ONE, INT32_MIN,
+				    INT32_MAX, &v);
+
+		if (ret)
+			return ret;
+		m[i] = (int32_t)v;
+	}
+	return rdl_encoded(r, op, rdc_batch_transform(r->b, m));
+}
+
+/* viewport WX0 WY0 WX1 WY1 X0 Y0 X1 Y1 */
+static int st_viewport(struct rdl *r, uint32_t op)
+{
+	int64_t w[4];
+	int c[4], ret = 0;
+
+	for (size_t i = 0; !ret && i < 4; i++)
+		ret = rdl_fixed(r, 1 + i, RDL_FIX_ONE, INT32_MIN, INT32_MAX,
+				&w[i]);
+	if (!ret)
+		ret = rdl_coords(r, 5, 4, c);
+	if (ret)
+		return ret;
+	return rdl_encoded(r, op,
+			   rdc_batch_viewport(r->b, (int32_t)w[0],
+					      (int32_t)w[1], (int32_t)w[2],
+					      (int32_t)w[3], c[0], c[1], c[2],
+					      c[3]));
+}
+
+/* fill-polygon [nonzero] X0 Y0 X1 Y1 X2 Y2 ... */
+static int st_fill_polygon(struct rdl *r, uint32_t op)
+{
+	size_t first = rdl_word(r, 1, "nonzero") ? 2 : 1;
+	size_t n = r->ntok - first;
+	int *c;
+	int ret;
+
+	if (n % 2 || n < 6)
+		return rdl_err(r, RDC_E_PARSE,
+			       "fill-polygon needs 3 or more X Y pairs");
+	if (n / 2 > RDC_CMD_MAX_ARGS)
+		return rdl_err(r, RDC_E_PARSE, "more than %d points",
+			       RDC_CMD_MAX_ARGS);
+	c = malloc(n * sizeof(*c));
+	if (!c)
+		return rdl_err(r, RDC_E_NOMEM, "out of memory");
+	ret = rdl_coords(r, first, n, c);
+	if (!ret)
+		ret = rdl_encoded(r, op,
+				  rdc_batch_fill_polygon(r->b, c, n / 2,
+							 first == 2));
+	free(c);
+	return ret;
+}
+
+/* flood X Y [8] [boundary COLOUR] */
+static int st_flood(struct rdl *r, uint32_t op)
+{
+	uint32_t flags = 0, boundary = 0;
+	size_t i = 3;
+	int xy[2];
+	int ret = rdl_coords(r, 1, 2, xy);
+
+	if (ret)
+		return ret;
+	if (i < r->ntok && rdl_word(r, i, "8")) {
+		flags |= RDC_FLOOD_8;
+		i++;
+	}
+	if (i < r->ntok && rdl_word(r, i, "boundary")) {
+		flags |= RDC_FLOOD_BOUNDARY;
+		ret = rdl_colour(r, i + 1, rdl_dst_format(r), &boundary);
+		if (ret)
+			return ret;
+		i += 2;
+	}
+	if (i != r->ntok)
+		return rdl_err(r, RDC_E_PARSE,
+			       "flood X Y [8] [boundary COLOUR]");
+	return rdl_encoded(r, op,
+			   rdc_batch_flood(r->b, xy[0], xy[1], flags,
+					   boundary));
+}
+
+/* pattern none | mono HEX16 [transparent] | color C0 ... C63 */
+static int st_pattern(struct rdl *r, uint32_t op)
+{
+	uint32_t px[64];
+	uint8_t rows[8] = { 0 };
+	const char *h;
+	size_t k;
+
+	if (rdl_word(r, 1, "none") && r->ntok == 2)
+		return rdl_encoded(r, op, rdc_batch_pattern_none(r->b));
+	if (rdl_word(r, 1, "mono") && (r->ntok == 3 || r->ntok == 4)) {
+		if (r->ntok == 4 && !rdl_word(r, 3, "transparent"))
+			return rdl_err(r, RDC_E_PARSE,
+				       "pattern mono HEX16 [transparent]");
+		h = r->tok[2].s;
+		if (h[0] == '0' && (h[1] == 'x' || h[1] == 'X'))
+			h += 2;
+		for (k = 0; k < 16; k++) {
+			int d = rdl_hex(h[k]);
+
+			if (d < 0)
+				break;
+			rows[k / 2] = (uint8_t)(rows[k / 2] << 4 | d);
+		}
+		if (k != 16 || h[16])
+			return rdl_err(r, RDC_E_PARSE,
+				       "pattern mono: 16 hex digits, row 0 "
+				       "first");
+		return rdl_encoded(r, op,
+				   rdc_batch_pattern_mono(r->b, rows,
+							  r->ntok == 4));
+	}
+	if (rdl_word(r, 1, "color") && r->ntok == 2 + 64) {
+		for (k = 0; k < 64; k++) {
+			int ret = rdl_colour(r, 2 + k, rdl_dst_format(r),
+					     &px[k]);
+
+			if (ret)
+				return ret;
+		}
+		return rdl_encoded(r, op, rdc_batch_pattern_color(r->b, px));
+	}
+	return rdl_err(r, RDC_E_PARSE,
+		       "pattern none | mono HEX16 [transparent] | "
+		       "color C0 ... C63");
+}
+
+/* triangle [gouraud] X Y COLOUR Z  X Y COLOUR Z  X Y COLOUR Z */
+static int st_triangle(struct rdl *r, uint32_t op)
+{
+	size_t first = rdl_word(r, 1, "gouraud") ? 2 : 1;
+	uint32_t colour[3], z[3];
+	int xy[6];
+
+	if (r->ntok - first != 12)
+		return rdl_err(r, RDC_E_PARSE,
+			       "triangle [gouraud] then X Y COLOUR Z three "
+			       "times");
+	for (size_t v = 0; v < 3; v++) {
+		size_t i = first + 4 * v;
+		int64_t zv;
+		int ret = rdl_coords(r, i, 2, &xy[2 * v]);
+
+		if (!ret)
+			ret = rdl_colour(r, i + 2, rdl_dst_format(r),
+					 &colour[v]);
+		if (!ret)
+			ret = rdl_int(r, i + 3, 0, UINT16_MAX, &zv);
+		if (ret)
+			return ret;
+		z[v] = (uint32_t)zv;
+	}
+	return rdl_encoded(r, op,
+			   rdc_batch_triangle(r->b, xy, colour, z,
+					      first == 2));
+}
+
+/* zbuf BASE STRIDE [test] [write] | zbuf off */
+static int st_zbuf(struct rdl *r, uint32_t op)
+{
+	uint32_t base, stride, flags = 0;
+	int ret;
+
+	if (rdl_word(r, 1, "off")) {
+		if (r->ntok != 2)
+			return rdl_err(r, RDC_E_PARSE, "zbuf off: no arguments");
+		return rdl_encoded(r, op, rdc_batch_zbuf_off(r->b));
+	}
+	if (r->ntok < 3)
+		return rdl_err(r, RDC_E_PARSE,
+			       "zbuf BASE STRIDE [test] [write] | zbuf off");
+	ret = rdl_u32(r, 1, &base);
+	if (!ret)
+		ret = rdl_u32(r, 2, &stride);
+	if (ret)
+		return ret;
+	for (size_t i = 3; i < r->ntok; i++) {
+		if (rdl_word(r, i, "test"))
+			flags |= RDC_Z_TEST;
+		else if (rdl_word(r, i, "write"))
+			flags |= RDC_Z_WRITE;
+		else
+			return rdl_err(r, RDC_E_PARSE,
+				       "zbuf: '%.40s' is not test or write",
+				       r->tok[i].s);
+	}
+	return rdl_encoded(r, op, rdc_batch_zbuf(r->b, base, stride, flags));
+}
+
+/* clear-z VALUE */
+static int st_clear_z(struct rdl *r, uint32_t op)
+{
+	int64_t v;
+	int ret = rdl_int(r, 1, 0, UINT16_MAX, &v);
+
+	if (ret)
+		return ret;
+	return rdl_encoded(r, op, rdc_batch_clear_z(r->b, (uint32_t)v));
+}
+
+/* colorkey COLOUR | colorkey off */
+static int st_colorkey(struct rdl *r, uint32_t op)
+{
+	uint32_t key;
+	int ret;
+
+	if (rdl_word(r, 1, "off"))
+		return rdl_encoded(r, op, rdc_batch_colorkey(r->b, 0, 0));
+	ret = rdl_colour(r, 1, rdl_dst_format(r), &key);
+	if (ret)
+		return ret;
+	return rdl_encoded(r, op, rdc_batch_colorkey(r->b, key, 1));
+}
+
+/* list ADDR: the statements up to `end` go to VRAM at ADDR */
+static int st_list(struct rdl *r, uint32_t op)
+{
+	uint32_t addr;
+	int ret;
+
+	(void)op;
+	if (r->list_on)
+		return rdl_err(r, RDC_E_PARSE,
+			       "list inside the list begun on line %u",
+			       r->list_line);
+	ret = rdl_u32(r, 1, &addr);
+	if (ret)
+		return ret;
+	if (addr % sizeof(uint32_t))
+		return rdl_err(r, RDC_E_PARSE,
+			       "list: address 0x%x is not 4-aligned", addr);
+	r->list_on = true;
+	r->list_addr = addr;
+	r->list_line = r->line;
+	r->list_n = 0;
+	return 0;
+}
+
+static int st_end(struct rdl *r, uint32_t op)
+{
+	int ret;
+
+	(void)op;
+	if (!r->list_on)
+		return rdl_err(r, RDC_E_PARSE, "end without list");
+	r->list_on = false;
+	if (!r->list_n)
+		return 0;
+	ret = rdc_vram_write(r->dev, r->list_addr, r->list_w,
+			     r->list_n * sizeof(*r->list_w));
+	if (ret)
+		return rdl_fail(r, "list", ret);
+	return 0;
+}
+
 #define RDL_ANY 0x7fffffffu
 static const struct rdl_stmt {
 	const char *name;
@@ -1444,6 +1978,27 @@ static const struct rdl_stmt {
 	{"fill-circle", st_shape, RDC_OP_FILL_CIRCLE, 3, 3},
 	{"ellipse", st_shape, RDC_OP_ELLIPSE, 4, 4},
 	{"fill-ellipse", st_shape, RDC_OP_FILL_ELLIPSE, 4, 4},
+	{"pen", st_pen, RDC_OP_SET_PEN, 1, 3},
+	{"dash", st_dash, RDC_OP_SET_DASH, 1, 3},
+	{"polygon", st_points, RDC_OP_POLYGON, 4, RDL_ANY},
+	{"arc", st_arc, RDC_OP_ARC, 6, 7},
+	{"bezier", st_curve, RDC_OP_BEZIER, 8, 10},
+	{"hermite", st_curve, RDC_OP_HERMITE, 8, 10},
+	{"bspline", st_curve, RDC_OP_BSPLINE, 8, RDL_ANY},
+	{"transform", st_transform, RDC_OP_SET_TRANSFORM, 1, 9},
+	{"viewport", st_viewport, RDC_OP_SET_VIEWPORT, 8, 8},
+	{"fill-polygon", st_fill_polygon, RDC_OP_FILL_POLYGON, 6, RDL_ANY},
+	{"flood", st_flood, RDC_OP_FLOOD_FILL, 2, 5},
+	{"pattern", st_pattern, RDC_OP_SET_PATTERN, 1, 65},
+	{"triangle", st_triangle, RDC_OP_TRIANGLE, 12, 13},
+	{"zbuf", st_zbuf, RDC_OP_SET_ZBUF, 1, 4},
+	{"clear-z", st_clear_z, RDC_OP_CLEAR_Z, 1, 1},
+	{"aa-line", st_points, RDC_OP_AA_LINE, 4, 4},
+	{"aa-circle", st_shape, RDC_OP_AA_CIRCLE, 3, 3},
+	{"aa-ellipse", st_shape, RDC_OP_AA_ELLIPSE, 4, 4},
+	{"aa-ramp", st_words, RDC_OP_SET_AA_RAMP, 1, 1},
+	{"alpha", st_words, RDC_OP_SET_ALPHA, 1, 1},
+	{"colorkey", st_colorkey, RDC_OP_SET_COLORKEY, 1, 1},
 	{"blit", st_blit, RDC_OP_BLIT, 6, 6},
 	{"host-blit", st_host_blit, RDC_OP_HOST_BLIT, 6, RDL_ANY},
 	{"readback", st_readback, RDC_OP_READBACK, 4, 5},
@@ -1451,7 +2006,9 @@ static const struct rdl_stmt {
 	{"text", st_text, RDC_OP_TEXT, 3, 4},
 	{"cmd", st_cmd, RDC_OP_NOP, 1, RDC_CMD_MAX_ARGS + 1},
 	{"raw", st_raw, RDC_OP_NOP, 1, RDL_ANY},
-	/* host side */
+	/* host side (refused inside `list`, as are readback and raw) */
+	{"list", st_list, 0, 1, 1},
+	{"end", st_end, 0, 0, 0},
 	{"mode", st_mode, RDC_OP_SET_DST, 1, 3},
 	{"reg", st_reg, 0, 2, 2},
 	{"expect", st_expect, 0, 2, 2},
@@ -1479,6 +2036,21 @@ static int rdl_arg_count(struct rdl *r, const struct rdl_stmt *st,
 		       st->name, nargs, st->min, st->max);
 }
 
+/* Statements that act on the host at once cannot be kept in a list. */
+static bool rdl_list_refused(const struct rdl_stmt *st)
+{
+	size_t i;
+
+	if (st->fn == st_end || st->fn == st_list)
+		return false;
+	if (st->fn == st_readback || st->fn == st_raw)
+		return true;
+	for (i = 0; i < RDC_ARRAY_SIZE(rdl_stmts); i++)
+		if (rdl_stmts[i].fn == st_list)
+			break;
+	return st >= rdl_stmts + i;
+}
+
 static int rdl_statement(struct rdl *r)
 {
 	const struct rdl_tok *kw = &r->tok[0];
@@ -1494,6 +2066,10 @@ static int rdl_statement(struct rdl *r)
 			continue;
 		if (nargs < st->min || nargs > st->max)
 			return rdl_arg_count(r, st, nargs);
+		if (r->list_on && rdl_list_refused(st))
+			return rdl_err(r, RDC_E_PARSE,
+				       "%s: not allowed inside list (line %u)",
+				       st->name, r->list_line);
 		rdc_batch_reset(r->b);
 		r->res->frame_ready = 0;
 		return st->fn(r, st->op);
@@ -1573,6 +2149,11 @@ int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
 		if (!ret && r.ntok)
 			ret = rdl_statement(&r);
 	}
+	if (!ret && r.list_on) {
+		r.line = r.list_line;
+		ret = rdl_err(&r, RDC_E_PARSE, "list without end");
+	}
+	free(r.list_w);
 	rdc_batch_free(r.b);
 	free(r.tok);
 	free(r.buf);

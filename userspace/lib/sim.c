@@ -248,6 +248,11 @@ static int sim_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 	return 0;
 }
 
+struct rdc_hw *rdc_sim_hw(rdc_dev *dev)
+{
+	return dev && dev->be == &rdc_backend_sim ? &sim_of(dev)->hw : NULL;
+}
+
 const struct rdc_backend rdc_backend_sim = {
 	.scheme = "sim",
 	.open = sim_open,

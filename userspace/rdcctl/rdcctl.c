@@ -8,12 +8,13 @@
 #include <string.h>
 
 #include "rdc.h"
+#include "stream.h"
 
 #define RDCCTL_DEFAULT_URI "sim:"
 
 static void usage(FILE *f)
 {
-	fputs("usage: rdcctl [--uri URI] COMMAND [ARGS]\n"
+	fprintf(f, "usage: rdcctl [--connect URI] COMMAND [ARGS]\n"
 	      "\n"
 	      "commands:\n"
 	      "  run FILE.rdl [-o OUT.png]  run a script, wait for the next\n"
@@ -24,14 +25,21 @@ static void usage(FILE *f)
 	      "  regs [FILE.rdl]            print every register (after the\n"
 	      "                             script, if one is given)\n"
 	      "  stats [FILE.rdl]           print the performance counters\n"
+	      "  replay TRACE [-o OUT.png]  play an rdcd --record trace on a\n"
+	      "                             fresh sim: and print its time, frame\n"
+	      "                             count and last frame's CRC-32\n"
+	      "%s"
 	      "\n"
 	      "options:\n"
-	      "  --uri URI   device to use (default " RDCCTL_DEFAULT_URI
-	      ", e.g. sim:vram=4M)\n"
+	      "  --connect URI  device to use (default " RDCCTL_DEFAULT_URI
+	      ", e.g. sim:vram=4M,\n"
+	      "                 unix:/run/user/1000/rdc/rdc.sock, "
+	      "tcp:127.0.0.1:7000);\n"
+	      "                 --uri is the same\n"
 	      "  -h, --help  this text\n"
 	      "\n"
 	      "The script format is described in docs/rdl.md.\n",
-	      f);
+	      rdcctl_stream_usage);
 }
 
 struct opts {
@@ -49,7 +57,8 @@ static int parse_args(int argc, char **argv, struct opts *o)
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
 			usage(stdout);
 			exit(0);
-		} else if (!strcmp(a, "--uri") || !strcmp(a, "-o")) {
+		} else if (!strcmp(a, "--uri") || !strcmp(a, "--connect") ||
+			   !strcmp(a, "-o")) {
 			if (i + 1 >= argc) {
 				fprintf(stderr, "rdcctl: %s needs a value\n",
 					a);
@@ -61,6 +70,8 @@ static int parse_args(int argc, char **argv, struct opts *o)
 				o->uri = argv[++i];
 		} else if (!strncmp(a, "--uri=", 6)) {
 			o->uri = a + 6;
+		} else if (!strncmp(a, "--connect=", 10)) {
+			o->uri = a + 10;
 		} else if (a[0] == '-' && a[1]) {
 			fprintf(stderr, "rdcctl: unknown option '%s'\n", a);
 			return -1;
@@ -225,14 +236,63 @@ static int cmd_stats(rdc_dev *dev)
 	return 0;
 }
 
+/* A trace needs no device: it brings its own fresh one. */
+static int cmd_replay(const struct opts *o)
+{
+	struct rdc_replay_result res;
+	rdc_dev *dev = NULL;
+	uint32_t *pix = NULL, w = 0, h = 0;
+	int ret;
+
+	if (!o->script) {
+		fprintf(stderr, "rdcctl: replay needs a trace file\n");
+		return 2;
+	}
+	ret = rdc_replay_file(o->script, &res, &dev);
+	if (ret) {
+		fprintf(stderr, "rdcctl: %s: %s\n", o->script,
+			rdc_strerror(ret));
+		return 1;
+	}
+	printf("records %llu\n", (unsigned long long)res.records);
+	printf("total %llu cycles\n", (unsigned long long)res.time);
+	printf("frames %llu\n", (unsigned long long)res.frames);
+	if (res.frames)
+		printf("frame %ux%u\ncrc32 %08x\n", res.width, res.height,
+		       res.frame_crc);
+	printf("mismatches %llu\n", (unsigned long long)res.mismatches);
+	if (o->png && res.frames) {
+		ret = rdc_frame_grab(dev, NULL, 0, &w, &h);
+		if (ret == RDC_E_RANGE) {
+			pix = malloc(((size_t)w * h + 1) * sizeof(*pix));
+			ret = pix ? rdc_frame_grab(dev, pix, (size_t)w * h, &w,
+						   &h)
+				  : RDC_E_NOMEM;
+		}
+		if (!ret)
+			ret = rdc_png_write(o->png, pix, w, h, w);
+		if (ret)
+			fprintf(stderr, "rdcctl: %s: %s\n", o->png,
+				rdc_strerror(ret));
+		free(pix);
+	}
+	rdc_close(dev);
+	return ret || res.mismatches ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
 	struct opts o = {.uri = RDCCTL_DEFAULT_URI};
 	rdc_dev *dev;
 	int ret;
 
+	ret = rdcctl_stream_main(argc, argv);
+	if (ret >= 0)
+		return ret;
 	if (parse_args(argc, argv, &o))
 		return 2;
+	if (!strcmp(o.cmd, "replay"))
+		return cmd_replay(&o);
 	if (strcmp(o.cmd, "run") && strcmp(o.cmd, "regs") &&
 	    strcmp(o.cmd, "stats")) {
 		fprintf(stderr, "rdcctl: unknown command '%s' (try --help)\n",

@@ -1,0 +1,590 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * rdcd against hostile and careless clients, over real sockets: malformed,
+ * truncated, oversized and out-of-order messages, hang-ups mid-message,
+ * tokens, control passing between clients, and the daemon still serving
+ * everyone else afterwards and exiting cleanly (under ASan: no leaks).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+
+#include "rdc.h"
+#include "test_net_common.h"
+
+static const char *const args_stepped[] = {"--stepped", "-v", NULL};
+
+/* A fresh connection that says HELLO; -1 on failure. */
+static int hello_fd(const struct netd *d, uint32_t flags)
+{
+	int fd = netd_connect(d->sock);
+
+	if (fd < 0)
+		return -1;
+	if (netd_hello(fd, flags, NULL, NULL) != RDC_ST_OK) {
+		close(fd);
+		return -1;
+	}
+	return fd;
+}
+
+/* The daemon still answers a newcomer. */
+static void assert_serving(const struct netd *d)
+{
+	int fd = hello_fd(d, 0);
+
+	assert_true(fd >= 0);
+	assert_int_equal(netd_call(fd, RDC_MSG_PING, 9, NULL, 0, NULL, 0),
+			 RDC_ST_OK);
+	close(fd);
+}
+
+static void test_bad_messages(void **state)
+{
+	struct rdc_proto_hello_reply hr;
+	struct netd d;
+	uint8_t b[64] = {0};
+	int fd;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args_stepped), 0);
+	fd = netd_connect(d.sock);
+	assert_true(fd >= 0);
+
+	/* before HELLO: refused, but the connection stays */
+	assert_int_equal(netd_call(fd, RDC_MSG_PING, 1, NULL, 0, NULL, 0),
+			 RDC_ST_ORDER);
+	assert_int_equal(netd_hello(fd, RDC_HELLO_CONTROL, NULL, &hr),
+			 RDC_ST_OK);
+	assert_int_equal(hr.flags, RDC_HELLO_CONTROL);
+	assert_int_equal(hr.run_mode, RDC_RUN_STEPPED);
+	assert_int_equal(hr.vram_size, 16u << 20);
+	/* a second HELLO is out of order */
+	assert_int_equal(netd_hello(fd, 0, NULL, NULL), RDC_ST_ORDER);
+
+	/* wrong payload sizes for their types */
+	assert_int_equal(netd_call(fd, RDC_MSG_REG_READ, 2, b, 3, NULL, 0),
+			 RDC_ST_MALFORMED);
+	assert_int_equal(netd_call(fd, RDC_MSG_REG_WRITE, 3, b, 12, NULL, 0),
+			 RDC_ST_MALFORMED);
+	assert_int_equal(netd_call(fd, RDC_MSG_SUBMIT, 4, b, 6, NULL, 0),
+			 RDC_ST_MALFORMED);
+	assert_int_equal(netd_call(fd, RDC_MSG_WAIT, 5, b, 10, NULL, 0),
+			 RDC_ST_MALFORMED);
+	assert_int_equal(netd_call(fd, RDC_MSG_PING, 6, b, 1, NULL, 0),
+			 RDC_ST_MALFORMED);
+	/* unknown types, and events sent as requests */
+	assert_int_equal(netd_call(fd, 40, 7, b, 8, NULL, 0), RDC_ST_TYPE);
+	assert_int_equal(netd_call(fd, RDC_MSG_EV_FRAME, 8, b, 8, NULL, 0),
+			 RDC_ST_TYPE);
+	assert_int_equal(netd_call(fd, 0, 9, NULL, 0, NULL, 0), RDC_ST_TYPE);
+	/* arguments out of range */
+	rdc_proto_put32(b, RDC_REG_WINDOW);
+	assert_int_equal(netd_call(fd, RDC_MSG_REG_READ, 10, b, 4, NULL, 0),
+			 RDC_ST_RANGE);
+	rdc_proto_put32(b, (16u << 20) - 4);
+	rdc_proto_put32(b + 4, 8);
+	assert_int_equal(netd_call(fd, RDC_MSG_VRAM_READ, 11, b, 8, NULL, 0),
+			 RDC_ST_RANGE);
+	rdc_proto_put32(b, 0xfffffffcu);
+	assert_int_equal(netd_call(fd, RDC_MSG_VRAM_WRITE, 12, b, 12, NULL, 0),
+			 RDC_ST_RANGE);
+	memset(b, 0, sizeof(b));
+	rdc_proto_put32(b + 12, 99); /* wait kind */
+	assert_int_equal(netd_call(fd, RDC_MSG_WAIT, 13, b, RDC_PROTO_WAIT_SIZE,
+				   NULL, 0),
+			 RDC_ST_INVAL);
+	rdc_proto_put64(b, ~0ull); /* step of forever */
+	assert_int_equal(netd_call(fd, RDC_MSG_STEP, 14, b, 8, NULL, 0),
+			 RDC_ST_RANGE);
+	rdc_proto_put32(b, 7);
+	assert_int_equal(netd_call(fd, RDC_MSG_RESET, 15, b, 4, NULL, 0),
+			 RDC_ST_INVAL);
+	/* and after all that, the connection works */
+	rdc_proto_put32(b, RDC_REG_ID);
+	assert_int_equal(netd_call(fd, RDC_MSG_REG_READ, 16, b, 4, b + 8, 4),
+			 RDC_ST_OK);
+	assert_int_equal(rdc_proto_get32(b + 8), RDC_ID_VALUE);
+
+	/* oversized: answered, then the connection is closed */
+	{
+		uint8_t h[RDC_PROTO_HDR_SIZE];
+		struct rdc_proto_hdr hdr = {.len = RDC_PROTO_MAX_REQUEST + 1,
+					    .type = RDC_MSG_SUBMIT,
+					    .seq = 17};
+		struct rdc_proto_hdr r;
+
+		rdc_proto_hdr_encode(h, &hdr);
+		assert_int_equal(netd_write(fd, h, sizeof(h)), 0);
+		assert_int_equal(netd_reply(fd, &r, NULL, 0), 0);
+		assert_int_equal(r.status, RDC_ST_TOOBIG);
+		assert_int_equal(r.seq, 17);
+		assert_true(netd_closed(fd));
+	}
+	close(fd);
+	assert_serving(&d);
+
+	/* a bad magic: answered and closed */
+	fd = netd_connect(d.sock);
+	assert_true(fd >= 0);
+	memset(b, 0, sizeof(b));
+	assert_int_equal(netd_call(fd, RDC_MSG_HELLO, 1, b, RDC_PROTO_HELLO_FIXED,
+				   NULL, 0),
+			 RDC_ST_VERSION);
+	assert_true(netd_closed(fd));
+	close(fd);
+	assert_serving(&d);
+	assert_true(netd_log_has(&d, "message too big"));
+	assert_true(netd_log_has(&d, "bad magic or version"));
+	assert_int_equal(netd_stop(&d), 0);
+}
+
+static void test_hangups(void **state)
+{
+	uint8_t h[RDC_PROTO_HDR_SIZE], b[64] = {0};
+	struct rdc_proto_hdr hdr = {.len = 4096, .type = RDC_MSG_SUBMIT,
+				    .seq = 2};
+	struct netd d;
+	int fd;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args_stepped), 0);
+	/* half a header */
+	fd = netd_connect(d.sock);
+	assert_true(fd >= 0);
+	assert_int_equal(netd_write(fd, "\x10\x00\x00", 3), 0);
+	close(fd);
+	/* a header and part of its payload, from the controlling client */
+	fd = hello_fd(&d, RDC_HELLO_CONTROL);
+	assert_true(fd >= 0);
+	rdc_proto_hdr_encode(h, &hdr);
+	assert_int_equal(netd_write(fd, h, sizeof(h)), 0);
+	assert_int_equal(netd_write(fd, b, sizeof(b)), 0);
+	close(fd);
+	/* a subscriber that leaves with a frame half sent */
+	fd = hello_fd(&d, 0);
+	assert_true(fd >= 0);
+	rdc_proto_put32(b, RDC_SUB_FRAMES);
+	rdc_proto_put32(b + 4, 1);
+	rdc_proto_put32(b + 8, RDC_ENC_RAW);
+	assert_int_equal(netd_call(fd, RDC_MSG_SUBSCRIBE, 3, b, 12, NULL, 0),
+			 RDC_ST_OK);
+	{
+		rdc_dev *dev;
+
+		/* control passed on: the first controller left */
+		assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
+		assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60,
+					      RDC_FMT_XRGB8888, 0),
+				 0);
+		assert_int_equal(rdc_frame_wait(dev), 0);
+		assert_int_equal(rdc_frame_wait(dev), 0);
+		close(fd); /* unread frames pending */
+		assert_int_equal(rdc_frame_wait(dev), 0);
+		rdc_close(dev);
+	}
+	assert_serving(&d);
+	assert_true(netd_log_has(&d, "hung up mid-message"));
+	assert_int_equal(netd_stop(&d), 0);
+}
+
+static void test_control(void **state)
+{
+	rdc_dev *a = NULL, *b = NULL, *obs = NULL;
+	uint8_t p[8];
+	struct netd d;
+	uint32_t v;
+	int fd;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args_stepped), 0);
+	assert_int_equal(rdc_open(d.unix_uri, &a), 0);
+	/* a second controller is refused; an observer is welcome */
+	assert_int_equal(rdc_open(d.unix_uri, &b), RDC_E_BUSY);
+	assert_null(b);
+	{
+		char uri[200];
+
+		snprintf(uri, sizeof(uri), "%s?observe", d.unix_uri);
+		assert_int_equal(rdc_open(uri, &obs), 0);
+	}
+	assert_int_equal(rdc_reg_write(a, RDC_REG_FENCE, 0), 0);
+	assert_int_equal(rdc_reg_write(a, RDC_REG_CLUT_INDEX, 5), 0);
+	/* observers read, but do not write, submit or move time */
+	assert_int_equal(rdc_reg_read(obs, RDC_REG_CLUT_INDEX, &v), 0);
+	assert_int_equal(v, 5);
+	assert_int_equal(rdc_reg_write(obs, RDC_REG_CLUT_INDEX, 1), RDC_E_BUSY);
+	assert_int_equal(rdc_finish(obs), RDC_E_BUSY);
+	assert_int_equal(rdc_vblank_wait(obs), RDC_E_BUSY);
+	assert_int_equal(rdc_reg_read(obs, RDC_REG_RDATA, &v), RDC_E_BUSY);
+	/* control passes when its holder leaves */
+	fd = hello_fd(&d, 0);
+	assert_true(fd >= 0);
+	assert_int_equal(netd_call(fd, RDC_MSG_CLAIM, 2, NULL, 0, NULL, 0),
+			 RDC_ST_BUSY);
+	rdc_close(a);
+	/* the daemon sees the hang-up before our next request is read */
+	for (int i = 0; i < 100; i++) {
+		int st = netd_call(fd, RDC_MSG_CLAIM, 3, NULL, 0, NULL, 0);
+
+		if (st == RDC_ST_OK)
+			break;
+		assert_int_equal(st, RDC_ST_BUSY);
+		netd_sleep_ms(10);
+	}
+	rdc_proto_put32(p, RDC_REG_CLUT_INDEX);
+	rdc_proto_put32(p + 4, 9);
+	assert_int_equal(netd_call(fd, RDC_MSG_REG_WRITE, 4, p, 8, NULL, 0),
+			 RDC_ST_OK);
+	assert_int_equal(rdc_reg_read(obs, RDC_REG_CLUT_INDEX, &v), 0);
+	assert_int_equal(v, 9);
+	/* ... or gives it up */
+	assert_int_equal(netd_call(fd, RDC_MSG_RELEASE, 5, NULL, 0, NULL, 0),
+			 RDC_ST_OK);
+	assert_int_equal(netd_call(fd, RDC_MSG_REG_WRITE, 6, p, 8, NULL, 0),
+			 RDC_ST_BUSY);
+	assert_int_equal(rdc_open(d.unix_uri, &b), 0);
+	assert_int_equal(rdc_reg_write(b, RDC_REG_CLUT_INDEX, 3), 0);
+	rdc_close(b);
+	rdc_close(obs);
+	close(fd);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
+static void test_token(void **state)
+{
+	char tokfile[200], badfile[200], uri[400], args_tok[220];
+	const char *args[] = {"--stepped", "--token", args_tok, NULL};
+	rdc_dev *dev = NULL;
+	struct netd d;
+	FILE *f;
+	int fd;
+
+	(void)state;
+	snprintf(tokfile, sizeof(tokfile), "/tmp/rdcd-tok-%d", (int)getpid());
+	snprintf(badfile, sizeof(badfile), "/tmp/rdcd-bad-%d", (int)getpid());
+	f = fopen(tokfile, "w");
+	assert_non_null(f);
+	fputs("s3cret-token\n", f);
+	fclose(f);
+	f = fopen(badfile, "w");
+	assert_non_null(f);
+	fputs("s3cret-tokem\n", f);
+	fclose(f);
+	snprintf(args_tok, sizeof(args_tok), "%s", tokfile);
+	assert_int_equal(netd_start(&d, args), 0);
+
+	/* TCP without a token, with a wrong one: refused */
+	assert_int_equal(rdc_open(d.tcp_uri, &dev), RDC_E_AUTH);
+	snprintf(uri, sizeof(uri), "%s?token=%s", d.tcp_uri, badfile);
+	assert_int_equal(rdc_open(uri, &dev), RDC_E_AUTH);
+	snprintf(uri, sizeof(uri), "%s?token=/nonexistent/tok", d.tcp_uri);
+	assert_int_equal(rdc_open(uri, &dev), RDC_E_FILE);
+	/* the right one */
+	snprintf(uri, sizeof(uri), "%s?token=%s", d.tcp_uri, tokfile);
+	assert_int_equal(rdc_open(uri, &dev), 0);
+	rdc_close(dev);
+	/* the environment variable works too */
+	setenv("RDC_TOKEN_FILE", tokfile, 1);
+	assert_int_equal(rdc_open(d.tcp_uri, &dev), 0);
+	rdc_close(dev);
+	unsetenv("RDC_TOKEN_FILE");
+	/* the UNIX socket is guarded by its file mode instead */
+	fd = hello_fd(&d, 0);
+	assert_true(fd >= 0);
+	close(fd);
+	{
+		struct stat st;
+
+		assert_int_equal(stat(d.sock, &st), 0);
+		assert_int_equal(st.st_mode & 0777, 0600);
+	}
+	assert_true(netd_log_has(&d, "bad token"));
+	assert_int_equal(netd_stop(&d), 0);
+	unlink(tokfile);
+	unlink(badfile);
+}
+
+/* A non-loopback TCP listener without a token: the daemon will not start. */
+static void test_token_required(void **state)
+{
+	const char *args[] = {"--listen", "tcp:0.0.0.0:0", NULL};
+	struct netd d;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args), -1);
+	assert_int_equal(d.pid, 0); /* it exited by itself */
+	assert_true(netd_log_has(&d, "--token FILE is required"));
+	netd_stop(&d); /* cleans up */
+}
+
+#define LOAD_CLIENTS 64
+
+/*
+ * 64 clients at once on a free-running daemon: some subscribe to frames
+ * and never read, some poll registers, one draws.  Nobody is starved, the
+ * drawing's fences all arrive, the silent subscribers lose frames alone.
+ */
+static void test_many_clients(void **state)
+{
+	static const char *const args[] = {"--fast", "-q", NULL};
+	int fds[LOAD_CLIENTS];
+	uint8_t p[16];
+	rdc_dev *dev = NULL;
+	rdc_batch *b;
+	struct netd d;
+	uint32_t v;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args), 0);
+	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60,
+				      RDC_FMT_XRGB8888, 0),
+			 0);
+	for (int i = 0; i < LOAD_CLIENTS - 1; i++) {
+		fds[i] = hello_fd(&d, 0);
+		assert_true(fds[i] >= 0);
+		if (i % 2 == 0) {
+			rdc_proto_put32(p, RDC_SUB_FRAMES | RDC_SUB_IRQ);
+			rdc_proto_put32(p + 4, 1);
+			rdc_proto_put32(p + 8, RDC_ENC_RAW);
+			assert_int_equal(netd_call(fds[i], RDC_MSG_SUBSCRIBE, 2,
+						   p, 12, NULL, 0),
+					 RDC_ST_OK);
+		}
+	}
+	b = rdc_batch_new();
+	assert_non_null(b);
+	for (uint32_t round = 1; round <= 20; round++) {
+		for (int i = 0; i < 50; i++) {
+			assert_int_equal(rdc_batch_fg(b, round * 977u + (uint32_t)i), 0);
+			assert_int_equal(rdc_batch_fill_rect(b, i * 11, (int)round * 20,
+							     30, 15),
+					 0);
+		}
+		assert_int_equal(rdc_batch_fence(b, round), 0);
+		assert_int_equal(rdc_batch_submit(dev, b), 0);
+		/* the odd clients keep asking */
+		for (int i = 1; i < LOAD_CLIENTS - 1; i += 2) {
+			rdc_proto_put32(p, RDC_REG_FRAME_COUNT);
+			assert_int_equal(netd_call(fds[i], RDC_MSG_REG_READ,
+						   round, p, 4, NULL, 0),
+					 RDC_ST_OK);
+		}
+		assert_int_equal(rdc_fence_wait(dev, round), 0);
+	}
+	/* everything acknowledged was executed */
+	assert_int_equal(rdc_finish(dev), 0);
+	assert_int_equal(rdc_reg_read(dev, RDC_REG_PERF_CMDS, &v), 0);
+	assert_true(v >= 20 * 101);
+	/* frames kept coming while the silent ones sat on theirs */
+	{
+		uint32_t f0, f1;
+
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &f0), 0);
+		assert_int_equal(rdc_vblank_wait(dev), 0);
+		assert_int_equal(rdc_vblank_wait(dev), 0);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &f1), 0);
+		assert_true(f1 - f0 >= 2);
+	}
+	/* a silent subscriber, drained now: it lost frames, for itself */
+	{
+		uint8_t st[RDC_PROTO_STATS_SIZE];
+		struct rdc_proto_stats s;
+
+		for (int k = 0; k < 40; k++)
+			assert_int_equal(rdc_vblank_wait(dev), 0);
+		assert_int_equal(netd_call(fds[0], RDC_MSG_STATS, 99, NULL, 0,
+					   st, sizeof(st)),
+				 RDC_ST_OK);
+		assert_int_equal(rdc_proto_stats_decode(st, sizeof(st), &s), 0);
+		assert_true(s.frames_dropped > 0);
+		assert_true(s.frames_sent >= 1);
+		assert_int_equal(s.clients, LOAD_CLIENTS);
+	}
+	rdc_batch_free(b);
+	rdc_close(dev);
+	for (int i = 0; i < LOAD_CLIENTS - 1; i++)
+		close(fds[i]);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
+/* Subscribed frames, in every encoding, decode to what frame_grab shows. */
+static void test_subscribe(void **state)
+{
+	static const char *const args[] = {"--stepped", "-q", NULL};
+	static uint32_t grab[640 * 480], ev_pix[640 * 480];
+	uint32_t w, h, crc_grab = 0;
+	rdc_dev *dev = NULL, *obs[3];
+	struct rdc_event ev;
+	struct netd d;
+	rdc_batch *b;
+	char uri[200];
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args), 0);
+	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
+	snprintf(uri, sizeof(uri), "%s?observe", d.unix_uri);
+	for (uint32_t enc = 0; enc < 3; enc++) {
+		assert_int_equal(rdc_open(uri, &obs[enc]), 0);
+		assert_int_equal(rdc_subscribe(obs[enc], RDC_EVENT_FRAME, 1, enc),
+				 0);
+	}
+	assert_int_equal(rdc_subscribe(obs[0], RDC_EVENT_FRAME, 0, 0),
+			 RDC_E_INVAL);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60,
+				      RDC_FMT_XRGB8888, 0),
+			 0);
+	b = rdc_batch_new();
+	assert_non_null(b);
+	assert_int_equal(rdc_batch_fg(b, 0x00336699), 0);
+	assert_int_equal(rdc_batch_fill_rect(b, 10, 10, 300, 200), 0);
+	assert_int_equal(rdc_batch_fg(b, 0x00ffcc00), 0);
+	assert_int_equal(rdc_batch_circle(b, 320, 240, 100), 0);
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	assert_int_equal(rdc_finish(dev), 0);
+	assert_int_equal(rdc_frame_wait(dev), 0);
+	assert_int_equal(rdc_frame_grab(dev, grab, RDC_ARRAY_SIZE(grab), &w, &h),
+			 0);
+	assert_int_equal(w, 640);
+	/* the picture is not blank */
+	assert_int_equal(grab[20 * 640 + 20], 0x00336699);
+	for (size_t i = 0; i < RDC_ARRAY_SIZE(grab); i++)
+		crc_grab = crc_grab * 31 + grab[i];
+	for (uint32_t enc = 0; enc < 3; enc++) {
+		uint64_t last = 0;
+		int got = 0;
+
+		/* the newest frame is the one grabbed (older ones first) */
+		while (rdc_event_next(obs[enc], &ev, ev_pix,
+				      RDC_ARRAY_SIZE(ev_pix), 2000) == 0) {
+			assert_int_equal(ev.type, RDC_EVENT_FRAME);
+			assert_true(ev.number >= last);
+			last = ev.number;
+			got++;
+			if (!memcmp(ev_pix, grab, sizeof(grab)))
+				break;
+		}
+		assert_true(got > 0);
+		assert_memory_equal(ev_pix, grab, sizeof(grab));
+		assert_int_equal(ev.width, 640);
+		assert_int_equal(ev.height, 480);
+		/* nothing dropped: they were read in time */
+		assert_int_equal(ev.dropped, 0);
+		rdc_close(obs[enc]);
+	}
+	rdc_batch_free(b);
+	rdc_close(dev);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
+/* rdcd --record, then replay: the same frames and cycle counts. */
+static void test_record_replay(void **state)
+{
+	char trace[200];
+	const char *args[] = {"--stepped", "-q", "--record", trace, NULL};
+	struct rdc_replay_result res;
+	uint32_t crc = 0;
+	uint64_t t = 0;
+	rdc_dev *dev = NULL;
+	rdc_batch *b;
+	struct netd d;
+
+	(void)state;
+	snprintf(trace, sizeof(trace), "/tmp/rdcd-trace-%d", (int)getpid());
+	assert_int_equal(netd_start(&d, args), 0);
+	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70,
+				      RDC_FMT_RGB565, 4096),
+			 0);
+	b = rdc_batch_new();
+	assert_non_null(b);
+	for (int i = 0; i < 200; i++) {
+		assert_int_equal(rdc_batch_fg(b, (uint32_t)i * 331u), 0);
+		assert_int_equal(rdc_batch_line(b, i, 0, 319 - i, 199), 0);
+	}
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	{
+		uint8_t v[100];
+
+		for (int i = 0; i < 100; i++)
+			v[i] = (uint8_t)(255 - i);
+		assert_int_equal(rdc_vram_write(dev, 4096 + 640 * 50, v, 100),
+				 0);
+	}
+	assert_int_equal(rdc_finish(dev), 0);
+	assert_int_equal(rdc_frame_wait(dev), 0);
+	assert_int_equal(rdc_sim_step(dev, 777), 0);
+	assert_int_equal(rdc_frame_crc(dev, &crc), 0);
+	assert_int_equal(rdc_sim_time(dev, &t), 0);
+	rdc_batch_free(b);
+	rdc_close(dev);
+	assert_int_equal(netd_stop(&d), 0);
+
+	assert_int_equal(rdc_replay_file(trace, &res, NULL), 0);
+	assert_int_equal(res.mismatches, 0);
+	assert_true(res.records > 100);
+	assert_int_equal(res.time, t);
+	assert_int_equal(res.frame_crc, crc);
+	assert_int_equal(res.width, 320);
+	unlink(trace);
+	/* a damaged trace is refused, not trusted */
+	{
+		FILE *f = fopen(trace, "wb");
+
+		assert_non_null(f);
+		fputs("RDCTRACE\x01\x00\x00\x00\x00\x00\x01\x00\x09", f);
+		fclose(f);
+		assert_int_equal(rdc_replay_file(trace, &res, NULL),
+				 RDC_E_PARSE);
+		unlink(trace);
+		assert_int_equal(rdc_replay_file(trace, &res, NULL),
+				 RDC_E_FILE);
+	}
+}
+
+/* Paced mode: time follows the wall clock; waits complete there too. */
+static void test_paced(void **state)
+{
+	static const char *const args[] = {"-q", NULL};
+	rdc_dev *dev = NULL;
+	struct netd d;
+	uint64_t t0, t1;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args), 0);
+	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
+	assert_int_equal(rdc_sim_time(dev, &t0), 0);
+	assert_int_equal(rdc_vblank_wait(dev), 0);
+	assert_int_equal(rdc_sim_step(dev, 1000), 0);
+	assert_int_equal(rdc_sim_time(dev, &t1), 0);
+	assert_true(t1 >= t0 + 1000);
+	assert_int_equal(rdc_finish(dev), 0);
+	{
+		struct rdc_stats st;
+
+		assert_int_equal(rdc_stats_get(dev, &st), 0);
+		assert_true(st.frames >= 1);
+	}
+	rdc_close(dev);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_bad_messages),
+		cmocka_unit_test(test_hangups),
+		cmocka_unit_test(test_control),
+		cmocka_unit_test(test_token),
+		cmocka_unit_test(test_token_required),
+		cmocka_unit_test(test_many_clients),
+		cmocka_unit_test(test_subscribe),
+		cmocka_unit_test(test_record_replay),
+		cmocka_unit_test(test_paced),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

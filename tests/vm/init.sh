@@ -1,0 +1,59 @@
+#!/bin/busybox sh
+# SPDX-License-Identifier: GPL-2.0-only
+# /init of the VM tests' initramfs (tests/vm/run.sh builds it): mount the
+# host's root read-only over 9p at /host, then for each test load the
+# modules its "# vm-module:" lines name, run it chrooted into the host
+# root, unload them, and report on the console:
+#   RDC-VM-OUT NAME: a line the test printed
+#   RDC-VM-RESULT NAME STATUS
+/bin/busybox --install -s /bin
+export PATH=/bin
+mount -t proc proc /proc
+mount -t sysfs sys /sys
+mount -t devtmpfs dev /dev
+mount -t tmpfs tmp /tmp
+
+if grep -q rdc.probe=1 /proc/cmdline; then
+	echo RDC-VM-PROBE-OK
+	poweroff -f
+fi
+
+. /vm.conf
+for m in virtio_pci 9pnet_virtio 9p; do
+	modprobe "$m"
+done
+mount -t 9p -o trans=virtio,version=9p2000.L,ro,cache=loose hostroot /host ||
+	echo "RDC-VM-OUT init: cannot mount the host's root"
+mount --bind /proc /host/proc
+mount --bind /sys /host/sys
+mount --bind /dev /host/dev
+mount -t tmpfs tmp /host/tmp
+
+for t in $RDC_TESTS; do
+	f=/host$RDC_TREE/tests/vm/tests/$t.sh
+	loaded=""
+	rc=0
+	sed -n 's/^# vm-module: *//p' "$f" >/tmp/mods
+	while read -r name args; do
+		if modprobe "$name" $args; then
+			loaded="$name $loaded"
+		else
+			echo "RDC-VM-OUT $t: modprobe $name failed"
+			rc=1
+		fi
+	done </tmp/mods
+	if [ $rc = 0 ]; then
+		( chroot /host /usr/bin/env -i \
+			PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
+			HOME=/tmp TMPDIR=/tmp RDC_TREE="$RDC_TREE" \
+			RDC_BUILD="$RDC_BUILD" /bin/sh "$RDC_TREE/tests/vm/tests/$t.sh" 2>&1
+		  echo $? >/tmp/rc ) | sed "s/^/RDC-VM-OUT $t: /"
+		rc=$(cat /tmp/rc)
+	fi
+	for m in $loaded; do
+		modprobe -r "$m" || echo "RDC-VM-OUT $t: cannot unload $m"
+	done
+	echo "RDC-VM-RESULT $t $rc"
+done
+echo RDC-VM-DONE
+poweroff -f

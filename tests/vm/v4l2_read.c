@@ -1,0 +1,382 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * v4l2_read: the capture side of the VM tests.  Reads frames from a V4L2
+ * capture device (v4l2loopback) or from a raw file another reader wrote
+ * (ffmpeg -f rawvideo), and checks each one, byte for byte through its
+ * CRC-32, against frames this program simulates itself: it runs the same
+ * .rdl scripts on an in-process RDC-1 (sim:) and converts the scanned-out
+ * frames to the capture format with the sinks' converters.
+ *
+ *   v4l2_read --expect A.rdl [--expect B.rdl ...] (--device /dev/videoN |
+ *             --raw FILE --format F) [--frames N] [--need-all]
+ *             [--check-rate] [--timeout S] [--stall-ms MS]
+ *
+ * Scripts run one after the other on one device; after each, its picture
+ * is one expected frame (with the CRTC's frame interval).  Every frame
+ * read must equal one of them, exactly bytesperline * height bytes;
+ * --need-all asks that each was seen.  A device that stops delivering for
+ * --stall-ms is closed and opened again, so a writer that renegotiates
+ * (mode change) or restarts is followed.  Exit 0 when all is well.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <linux/videodev2.h>
+#include <poll.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <time.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include "rdc.h"
+#include "rdc_sink.h"
+
+#define MAX_EXPECT 8
+#define NS_PER_S 1000000000ull
+#define NS_PER_MS 1000000ull
+#define RETRY_NS (50 * NS_PER_MS)
+
+struct expect {
+	const char *script;
+	uint32_t *px, w, h;
+	uint32_t num, den;
+	uint32_t crc; /* in the current capture format */
+	uint64_t seen;
+};
+
+struct ropts {
+	const char *device, *raw, *format;
+	struct expect ex[MAX_EXPECT];
+	int nex;
+	uint64_t frames;
+	int need_all, check_rate;
+	uint64_t timeout_ns, stall_ns;
+};
+
+static uint64_t now_ns(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (uint64_t)ts.tv_sec * NS_PER_S + (uint64_t)ts.tv_nsec;
+}
+
+static void nap(uint64_t ns)
+{
+	struct timespec ts = { .tv_sec = (time_t)(ns / NS_PER_S),
+			       .tv_nsec = (long)(ns % NS_PER_S) };
+
+	nanosleep(&ts, NULL);
+}
+
+static int simulate(struct ropts *o)
+{
+	struct rdc_script_result *res = calloc(1, sizeof(*res));
+	rdc_dev *dev;
+	int ret = rdc_open("sim:", &dev);
+
+	if (ret || !res) {
+		free(res);
+		return -1;
+	}
+	for (int i = 0; i < o->nex && !ret; i++) {
+		struct expect *e = &o->ex[i];
+
+		memset(res, 0, sizeof(*res));
+		ret = rdc_script_run_file(dev, e->script, res);
+		if (!ret)
+			ret = rdc_script_frame_wait(dev, res);
+		if (!ret)
+			ret = rdc_frame_grab(dev, NULL, 0, &e->w, &e->h);
+		if (ret == RDC_E_RANGE) {
+			e->px = malloc((size_t)e->w * e->h * 4);
+			ret = e->px ? rdc_frame_grab(dev, e->px,
+						     (size_t)e->w * e->h,
+						     &e->w, &e->h)
+				    : RDC_E_NOMEM;
+		}
+		if (!ret)
+			ret = rdc_sink_interval(dev, &e->num, &e->den);
+		if (ret)
+			fprintf(stderr, "v4l2_read: %s: %s %s\n", e->script,
+				rdc_strerror(ret), res->error_msg);
+	}
+	rdc_close(dev);
+	free(res);
+	return ret ? -1 : 0;
+}
+
+/* Expected CRCs for this capture format; -1 if a row pitch is off. */
+static int expect_crcs(struct ropts *o, int fmt, uint32_t bpl)
+{
+	for (int i = 0; i < o->nex; i++) {
+		struct expect *e = &o->ex[i];
+		struct rdc_frame f = { .xrgb = e->px, .width = e->w,
+				       .height = e->h, .stride = e->w };
+		size_t want = rdc_sink_fmt_bytesperline(fmt, e->w);
+		uint8_t *b;
+
+		e->crc = 0;
+		if (bpl && bpl != want)
+			continue; /* another size */
+		b = malloc(want * e->h);
+		if (!b || rdc_sink_convert(fmt, b, want, &f)) {
+			free(b);
+			return -1;
+		}
+		e->crc = (uint32_t)crc32(0, b, (uInt)(want * e->h));
+		free(b);
+	}
+	return 0;
+}
+
+static struct expect *match(struct ropts *o, uint32_t w, uint32_t h,
+			    uint32_t crc)
+{
+	for (int i = 0; i < o->nex; i++)
+		if (o->ex[i].w == w && o->ex[i].h == h && o->ex[i].crc == crc)
+			return &o->ex[i];
+	return NULL;
+}
+
+static int all_seen(const struct ropts *o)
+{
+	for (int i = 0; i < o->nex; i++)
+		if (!o->ex[i].seen)
+			return 0;
+	return 1;
+}
+
+static int check_raw(struct ropts *o)
+{
+	int fmt = rdc_sink_fmt_by_name(o->format);
+	FILE *f = fopen(o->raw, "rb");
+	uint64_t n = 0, bad = 0;
+	size_t bpl, size;
+	uint8_t *buf;
+
+	if (fmt < 0 || !f) {
+		fprintf(stderr, "v4l2_read: bad --format or --raw\n");
+		if (f)
+			fclose(f);
+		return 1;
+	}
+	expect_crcs(o, fmt, 0);
+	bpl = rdc_sink_fmt_bytesperline(fmt, o->ex[0].w);
+	size = bpl * o->ex[0].h;
+	buf = malloc(size);
+	while (buf && fread(buf, 1, size, f) == size) {
+		uint32_t crc = (uint32_t)crc32(0, buf, (uInt)size);
+		struct expect *e = match(o, o->ex[0].w, o->ex[0].h, crc);
+
+		if (e)
+			e->seen++;
+		else
+			bad++;
+		n++;
+	}
+	fclose(f);
+	free(buf);
+	printf("raw: %llu frames of %zu bytes, %llu not matching\n",
+	       (unsigned long long)n, size, (unsigned long long)bad);
+	return !buf || bad || n != o->frames || (o->need_all && !all_seen(o));
+}
+
+struct session {
+	int fd, fmt;
+	uint32_t w, h, bpl, sizeimage;
+	struct v4l2_fract tpf;
+};
+
+/* Open the device once a writer has given it a format. */
+static int session_open(struct ropts *o, struct session *s, uint64_t deadline)
+{
+	while (now_ns() < deadline) {
+		struct v4l2_format vf = { .type = V4L2_BUF_TYPE_VIDEO_CAPTURE };
+		struct v4l2_streamparm parm = {
+			.type = V4L2_BUF_TYPE_VIDEO_CAPTURE
+		};
+		int fd = open(o->device, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+
+		if (fd < 0 || ioctl(fd, VIDIOC_G_FMT, &vf) < 0 ||
+		    !vf.fmt.pix.width) {
+			if (fd >= 0)
+				close(fd);
+			nap(RETRY_NS);
+			continue;
+		}
+		memset(s, 0, sizeof(*s));
+		s->fd = fd;
+		s->w = vf.fmt.pix.width;
+		s->h = vf.fmt.pix.height;
+		s->bpl = vf.fmt.pix.bytesperline;
+		s->sizeimage = vf.fmt.pix.sizeimage;
+		s->fmt = rdc_sink_fmt_by_fourcc(vf.fmt.pix.pixelformat);
+		if (!ioctl(fd, VIDIOC_G_PARM, &parm))
+			s->tpf = parm.parm.capture.timeperframe;
+		if (s->fmt < 0 || expect_crcs(o, s->fmt, s->bpl)) {
+			fprintf(stderr, "v4l2_read: format %.4s not ours\n",
+				(const char *)&vf.fmt.pix.pixelformat);
+			close(fd);
+			return -1;
+		}
+		printf("session: %ux%u %s bytesperline %u sizeimage %u "
+		       "interval %u/%u\n",
+		       s->w, s->h, rdc_sink_fmt_name(s->fmt), s->bpl,
+		       s->sizeimage, s->tpf.numerator, s->tpf.denominator);
+		return 0;
+	}
+	return -1;
+}
+
+static int read_device(struct ropts *o)
+{
+	uint64_t deadline = now_ns() + o->timeout_ns, n = 0, bad = 0;
+	uint64_t sessions = 0, rate_bad = 0, ival_bad = 0;
+	struct session s = { .fd = -1 };
+	uint8_t *buf = NULL;
+
+	while (n < o->frames || (o->need_all && !all_seen(o))) {
+		uint64_t t_first = 0, t_last = 0, in_session = 0;
+		size_t cap, want;
+		struct expect *e = NULL;
+
+		if (now_ns() >= deadline || session_open(o, &s, deadline))
+			break;
+		sessions++;
+		want = (size_t)s.bpl * s.h;
+		cap = (s.sizeimage > want ? s.sizeimage : want) + 1;
+		free(buf);
+		buf = malloc(cap);
+		if (!buf)
+			break;
+		while (n < o->frames || (o->need_all && !all_seen(o))) {
+			struct pollfd p = { .fd = s.fd, .events = POLLIN };
+			ssize_t got;
+			uint32_t crc;
+
+			if (poll(&p, 1, (int)(o->stall_ns / NS_PER_MS)) <= 0 ||
+			    now_ns() >= deadline)
+				break; /* stalled: reopen, maybe renegotiated */
+			got = read(s.fd, buf, cap);
+			if (got < 0 && errno == EAGAIN)
+				continue;
+			if (got < 0)
+				break;
+			crc = (uint32_t)crc32(0, buf, (uInt)got);
+			e = (size_t)got == want ? match(o, s.w, s.h, crc) : NULL;
+			if (e) {
+				e->seen++;
+			} else {
+				bad++;
+				fprintf(stderr, "v4l2_read: frame %llu: %zd "
+						"bytes (want %zu), crc %08x "
+						"matches nothing\n",
+					(unsigned long long)n, got, want, crc);
+			}
+			n++;
+			t_last = now_ns();
+			if (!in_session++)
+				t_first = t_last;
+		}
+		close(s.fd);
+		s.fd = -1;
+		/* The interval the writer announced is the mode's. */
+		if (e && (uint64_t)s.tpf.numerator * e->den !=
+				 (uint64_t)s.tpf.denominator * e->num) {
+			ival_bad++;
+			fprintf(stderr, "v4l2_read: interval %u/%u, mode's "
+					"%u/%u\n",
+				s.tpf.numerator, s.tpf.denominator, e->num,
+				e->den);
+		}
+		if (e && in_session > 2) {
+			double got_ms = (double)(t_last - t_first) /
+					(double)(in_session - 1) / 1e6;
+			double want_ms = 1e3 * e->num / e->den;
+
+			printf("session: %llu frames, %.2f ms apart "
+			       "(mode: %.2f ms)\n",
+			       (unsigned long long)in_session, got_ms, want_ms);
+			/* Generous: the writer runs under emulation. */
+			if (o->check_rate &&
+			    (got_ms < 0.5 * want_ms || got_ms > 2.0 * want_ms))
+				rate_bad++;
+		}
+	}
+	free(buf);
+	if (s.fd >= 0)
+		close(s.fd);
+	printf("device: %llu frames in %llu sessions, %llu not matching",
+	       (unsigned long long)n, (unsigned long long)sessions,
+	       (unsigned long long)bad);
+	for (int i = 0; i < o->nex; i++)
+		printf(", %s seen %llu", o->ex[i].script,
+		       (unsigned long long)o->ex[i].seen);
+	printf("\n");
+	return bad || ival_bad || rate_bad || n < o->frames ||
+	       (o->need_all && !all_seen(o));
+}
+
+static int parse(int argc, char **argv, struct ropts *o)
+{
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+
+		if (!strcmp(a, "--need-all")) {
+			o->need_all = 1;
+			continue;
+		}
+		if (!strcmp(a, "--check-rate")) {
+			o->check_rate = 1;
+			continue;
+		}
+		if (!v)
+			return -1;
+		i++;
+		if (!strcmp(a, "--expect") && o->nex < MAX_EXPECT)
+			o->ex[o->nex++].script = v;
+		else if (!strcmp(a, "--device"))
+			o->device = v;
+		else if (!strcmp(a, "--raw"))
+			o->raw = v;
+		else if (!strcmp(a, "--format"))
+			o->format = v;
+		else if (!strcmp(a, "--frames"))
+			o->frames = strtoull(v, NULL, 10);
+		else if (!strcmp(a, "--timeout"))
+			o->timeout_ns = strtoull(v, NULL, 10) * NS_PER_S;
+		else if (!strcmp(a, "--stall-ms"))
+			o->stall_ns = strtoull(v, NULL, 10) * NS_PER_MS;
+		else
+			return -1;
+	}
+	if (!o->nex || (!o->device == !o->raw) || (o->raw && !o->format))
+		return -1;
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	struct ropts o = { .frames = 10,
+			   .timeout_ns = 60 * NS_PER_S,
+			   .stall_ns = 1000 * NS_PER_MS };
+	int ret;
+
+	setvbuf(stdout, NULL, _IOLBF, 0);
+	if (parse(argc, argv, &o)) {
+		fprintf(stderr, "usage: v4l2_read --expect A.rdl [--expect "
+				"B.rdl...] (--device DEV | --raw FILE --format "
+				"F) [--frames N] [--need-all] [--check-rate] "
+				"[--timeout S] [--stall-ms MS]\n");
+		return 2;
+	}
+	if (simulate(&o))
+		return 1;
+	ret = o.raw ? check_raw(&o) : read_device(&o);
+	for (int i = 0; i < o.nex; i++)
+		free(o.ex[i].px);
+	return ret ? 1 : 0;
+}

@@ -1,0 +1,766 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The "unix:" and "tcp:" backends: an RDC-1 served by rdcd, reached over
+ * a stream socket with the protocol of rdc_proto.h.  Every operation is
+ * one request and its reply (a wait too: the daemon evaluates the
+ * condition), so the device behaves as sim: does, one round trip later.
+ *
+ * Events (frames, interrupts) arrive between replies.  A frame is decoded
+ * as soon as it is read, because row-delta frames build on the previous
+ * one; the application sees the newest (older undelivered frames are
+ * counted as dropped) and up to NET_IRQ_QUEUE interrupt events.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <sys/uio.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include "rdc_priv.h"
+#include "rdc_proto.h"
+
+#define NET_IRQ_QUEUE 64u
+#define NET_TOKEN_ENV "RDC_TOKEN_FILE"
+
+_Static_assert(RDC_FRAME_RAW == RDC_ENC_RAW && RDC_FRAME_RLE == RDC_ENC_RLE &&
+		       RDC_FRAME_DELTA == RDC_ENC_DELTA,
+	       "rdc.h and rdc_proto.h frame encodings differ");
+_Static_assert(RDC_EVENT_FRAME == RDC_SUB_FRAMES &&
+		       RDC_EVENT_IRQ == RDC_SUB_IRQ,
+	       "rdc.h and rdc_proto.h event bits differ");
+
+struct net {
+	int fd;
+	uint32_t seq;
+	struct rdc_proto_hello_reply hello;
+	/* the newest frame event, decoded (also the base for DELTA) */
+	uint32_t *frame;
+	uint32_t fw, fh;
+	bool frame_pending;
+	struct rdc_event frame_ev;
+	uint32_t local_dropped;
+	/* interrupt events not yet taken */
+	struct rdc_event irq[NET_IRQ_QUEUE];
+	unsigned int irq_head, irq_n;
+};
+
+static struct net *net_of(rdc_dev *dev)
+{
+	return dev->priv;
+}
+
+/*
+ * The daemon's status codes as librdc errors: the only place that maps
+ * them.  RDC_ST_NOFRAME is not an error (frame_grab's "no frame yet").
+ */
+static int net_status_to_error(uint32_t status)
+{
+	switch (status) {
+	case RDC_ST_OK:
+		return 0;
+	case RDC_ST_INVAL:
+		return RDC_E_INVAL;
+	case RDC_ST_NOMEM:
+		return RDC_E_NOMEM;
+	case RDC_ST_NOSYS:
+	case RDC_ST_TYPE:
+		return RDC_E_NOSYS;
+	case RDC_ST_TIMEOUT:
+		return RDC_E_TIMEOUT;
+	case RDC_ST_HALTED:
+		return RDC_E_HALTED;
+	case RDC_ST_RANGE:
+		return RDC_E_RANGE;
+	case RDC_ST_BUSY:
+		return RDC_E_BUSY;
+	case RDC_ST_AUTH:
+		return RDC_E_AUTH;
+	case RDC_ST_DEVICE:
+		return RDC_E_DEVICE;
+	case RDC_ST_NOFRAME:
+		return 1;
+	case RDC_ST_MALFORMED:
+	case RDC_ST_VERSION:
+	case RDC_ST_TOOBIG:
+	case RDC_ST_ORDER:
+	default:
+		return RDC_E_PROTO;
+	}
+}
+
+static int net_send_msg(struct net *n, uint16_t type, const void *a,
+			size_t alen, const void *b, size_t blen)
+{
+	uint8_t hdr[RDC_PROTO_HDR_SIZE];
+	struct rdc_proto_hdr h = {
+		.len = (uint32_t)(alen + blen),
+		.type = type,
+		.seq = ++n->seq,
+	};
+	struct iovec iov[3] = {
+		{hdr, sizeof(hdr)},
+		{(void *)a, alen},
+		{(void *)b, blen},
+	};
+	struct msghdr mh = {.msg_iov = iov, .msg_iovlen = 3};
+
+	rdc_proto_hdr_encode(hdr, &h);
+	while (mh.msg_iovlen) {
+		ssize_t k = sendmsg(n->fd, &mh, MSG_NOSIGNAL);
+
+		if (k < 0) {
+			if (errno == EINTR)
+				continue;
+			return RDC_E_IO;
+		}
+		while (mh.msg_iovlen && (size_t)k >= mh.msg_iov->iov_len) {
+			k -= (ssize_t)mh.msg_iov->iov_len;
+			mh.msg_iov++;
+			mh.msg_iovlen--;
+		}
+		if (mh.msg_iovlen) {
+			mh.msg_iov->iov_base = (uint8_t *)mh.msg_iov->iov_base + k;
+			mh.msg_iov->iov_len -= (size_t)k;
+		}
+	}
+	return 0;
+}
+
+/* Read exactly len bytes; timeout_ms < 0 waits forever. */
+static int net_read_all(struct net *n, void *buf, size_t len, int timeout_ms)
+{
+	uint8_t *p = buf;
+
+	while (len) {
+		ssize_t k;
+
+		if (timeout_ms >= 0) {
+			struct pollfd pfd = {.fd = n->fd, .events = POLLIN};
+			int r = poll(&pfd, 1, timeout_ms);
+
+			if (r < 0 && errno == EINTR)
+				continue;
+			if (r == 0)
+				return RDC_E_TIMEOUT;
+			if (r < 0)
+				return RDC_E_IO;
+		}
+		k = read(n->fd, p, len);
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k <= 0)
+			return RDC_E_IO;
+		p += k;
+		len -= (size_t)k;
+	}
+	return 0;
+}
+
+/* One message: header and a malloc'd payload (NULL when empty). */
+static int net_read_msg(struct net *n, struct rdc_proto_hdr *h, uint8_t **pl,
+			int timeout_ms)
+{
+	uint8_t hdr[RDC_PROTO_HDR_SIZE];
+	int ret;
+
+	*pl = NULL;
+	ret = net_read_all(n, hdr, sizeof(hdr), timeout_ms);
+	if (ret)
+		return ret;
+	rdc_proto_hdr_decode(hdr, h);
+	if (h->len > RDC_PROTO_MAX_REPLY)
+		return RDC_E_PROTO;
+	if (!h->len)
+		return 0;
+	*pl = malloc(h->len);
+	if (!*pl)
+		return RDC_E_NOMEM;
+	/* the rest of a started message comes without a deadline */
+	ret = net_read_all(n, *pl, h->len, -1);
+	if (ret) {
+		free(*pl);
+		*pl = NULL;
+	}
+	return ret;
+}
+
+static void net_irq_event(struct net *n, const uint8_t *pl, size_t len)
+{
+	struct rdc_event *ev;
+
+	if (len != 12)
+		return;
+	if (n->irq_n == NET_IRQ_QUEUE) {
+		/* keep the newest */
+		n->irq_head = (n->irq_head + 1) % NET_IRQ_QUEUE;
+		n->irq_n--;
+	}
+	ev = &n->irq[(n->irq_head + n->irq_n++) % NET_IRQ_QUEUE];
+	memset(ev, 0, sizeof(*ev));
+	ev->type = RDC_EVENT_IRQ;
+	ev->irq = rdc_proto_get32(pl);
+	ev->time = rdc_proto_get64(pl + 4);
+}
+
+static int net_frame_event(struct net *n, const uint8_t *pl, size_t len)
+{
+	struct rdc_proto_frame f;
+
+	if (rdc_proto_frame_hdr_decode(pl, len, &f))
+		return RDC_E_PROTO;
+	if (f.width != n->fw || f.height != n->fh || !n->frame) {
+		uint32_t *p = calloc((size_t)f.width * f.height + 1,
+				     sizeof(*p));
+
+		if (!p)
+			return RDC_E_NOMEM;
+		free(n->frame);
+		n->frame = p;
+		n->fw = f.width;
+		n->fh = f.height;
+	}
+	if (rdc_proto_frame_decode(n->frame, f.width, f.height, f.encoding,
+				   pl + RDC_PROTO_FRAME_HDR,
+				   len - RDC_PROTO_FRAME_HDR))
+		return RDC_E_PROTO;
+	if (n->frame_pending)
+		n->local_dropped++;
+	n->frame_pending = true;
+	memset(&n->frame_ev, 0, sizeof(n->frame_ev));
+	n->frame_ev.type = RDC_EVENT_FRAME;
+	n->frame_ev.number = f.number;
+	n->frame_ev.width = f.width;
+	n->frame_ev.height = f.height;
+	n->frame_ev.dropped = f.dropped + n->local_dropped;
+	return 0;
+}
+
+static int net_event(struct net *n, const struct rdc_proto_hdr *h,
+		     const uint8_t *pl)
+{
+	if (h->type == RDC_MSG_EV_FRAME)
+		return net_frame_event(n, pl, h->len);
+	if (h->type == RDC_MSG_EV_IRQ)
+		net_irq_event(n, pl, h->len);
+	return 0;
+}
+
+/*
+ * One request and its reply.  The reply payload goes to *out (malloc'd,
+ * the caller frees) when out is not NULL, else must be empty.  Returns
+ * the mapped status, or a transport error.
+ */
+static int net_call2(struct net *n, uint16_t type, const void *a, size_t alen,
+		     const void *b, size_t blen, uint8_t **out,
+		     uint32_t *out_len)
+{
+	uint32_t seq;
+	int ret;
+
+	if (n->fd < 0)
+		return RDC_E_IO;
+	ret = net_send_msg(n, type, a, alen, b, blen);
+	if (ret)
+		goto dead;
+	seq = n->seq;
+	for (;;) {
+		struct rdc_proto_hdr h;
+		uint8_t *pl;
+
+		ret = net_read_msg(n, &h, &pl, -1);
+		if (ret)
+			goto dead;
+		if (h.flags & RDC_MSGF_EVENT) {
+			ret = net_event(n, &h, pl);
+			free(pl);
+			if (ret)
+				goto dead;
+			continue;
+		}
+		if (!(h.flags & RDC_MSGF_REPLY) || h.seq != seq ||
+		    h.type != type) {
+			free(pl);
+			ret = RDC_E_PROTO;
+			goto dead;
+		}
+		if (out) {
+			*out = pl;
+			*out_len = h.len;
+		} else {
+			free(pl);
+		}
+		return net_status_to_error(h.status);
+	}
+dead:
+	/* The stream is out of step: nothing more can be trusted on it. */
+	close(n->fd);
+	n->fd = -1;
+	return ret == RDC_E_NOMEM ? ret : (ret == RDC_E_PROTO ? ret : RDC_E_IO);
+}
+
+static int net_call(struct net *n, uint16_t type, const void *a, size_t alen,
+		    uint8_t **out, uint32_t *out_len)
+{
+	return net_call2(n, type, a, alen, NULL, 0, out, out_len);
+}
+
+/* ---- Opening ------------------------------------------------------------ */
+
+struct net_opts {
+	char addr[256]; /* path, or host:port */
+	char token_file[256];
+	bool observe;
+};
+
+static int net_parse_opts(const char *opts, struct net_opts *o)
+{
+	const char *q = strchr(opts, '?');
+	size_t alen = q ? (size_t)(q - opts) : strlen(opts);
+	const char *env = getenv(NET_TOKEN_ENV);
+
+	memset(o, 0, sizeof(*o));
+	if (alen >= sizeof(o->addr))
+		return RDC_E_URI;
+	memcpy(o->addr, opts, alen);
+	if (env && strlen(env) < sizeof(o->token_file))
+		strcpy(o->token_file, env);
+	for (const char *p = q ? q + 1 : NULL; p && *p;) {
+		const char *end = strchr(p, '&');
+		size_t len = end ? (size_t)(end - p) : strlen(p);
+
+		if (len == 7 && !strncmp(p, "observe", 7)) {
+			o->observe = true;
+		} else if (len > 6 && !strncmp(p, "token=", 6) &&
+			   len - 6 < sizeof(o->token_file)) {
+			memcpy(o->token_file, p + 6, len - 6);
+			o->token_file[len - 6] = 0;
+		} else {
+			return RDC_E_URI;
+		}
+		p = end ? end + 1 : NULL;
+	}
+	return 0;
+}
+
+static int net_connect_unix(const char *path)
+{
+	struct sockaddr_un sa = {.sun_family = AF_UNIX};
+	char def[sizeof(sa.sun_path)];
+	int fd;
+
+	if (!*path) {
+		if (rdc_proto_default_path(def, sizeof(def)))
+			return RDC_E_URI;
+		path = def;
+	}
+	if (strlen(path) >= sizeof(sa.sun_path))
+		return RDC_E_URI;
+	strcpy(sa.sun_path, path);
+	fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+	if (fd < 0)
+		return RDC_E_IO;
+	if (connect(fd, (struct sockaddr *)&sa, sizeof(sa))) {
+		close(fd);
+		return RDC_E_IO;
+	}
+	return fd;
+}
+
+static int net_connect_tcp(const char *hostport)
+{
+	char host[256];
+	const char *colon = strrchr(hostport, ':'), *port;
+	struct addrinfo hints = {.ai_socktype = SOCK_STREAM}, *res, *ai;
+	size_t hlen;
+	int fd = RDC_E_IO;
+
+	if (!colon || !colon[1])
+		return RDC_E_URI;
+	port = colon + 1;
+	hlen = (size_t)(colon - hostport);
+	/* [::1]:7000 */
+	if (hlen >= 2 && hostport[0] == '[' && hostport[hlen - 1] == ']') {
+		hostport++;
+		hlen -= 2;
+	}
+	if (!hlen || hlen >= sizeof(host))
+		return RDC_E_URI;
+	memcpy(host, hostport, hlen);
+	host[hlen] = 0;
+	if (getaddrinfo(host, port, &hints, &res))
+		return RDC_E_URI;
+	for (ai = res; ai; ai = ai->ai_next) {
+		int one = 1;
+
+		fd = socket(ai->ai_family, ai->ai_socktype | SOCK_CLOEXEC,
+			    ai->ai_protocol);
+		if (fd < 0) {
+			fd = RDC_E_IO;
+			continue;
+		}
+		if (!connect(fd, ai->ai_addr, ai->ai_addrlen)) {
+			/* requests are small and synchronous */
+			setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one,
+				   sizeof(one));
+			break;
+		}
+		close(fd);
+		fd = RDC_E_IO;
+	}
+	freeaddrinfo(res);
+	return fd;
+}
+
+static int net_read_token(const char *path, uint8_t *tok, uint32_t *len)
+{
+	FILE *f;
+	size_t n;
+
+	*len = 0;
+	if (!*path)
+		return 0;
+	f = fopen(path, "rb");
+	if (!f)
+		return RDC_E_FILE;
+	n = fread(tok, 1, RDC_PROTO_MAX_TOKEN, f);
+	fclose(f);
+	while (n && (tok[n - 1] == '\n' || tok[n - 1] == '\r' ||
+		     tok[n - 1] == ' '))
+		n--;
+	*len = (uint32_t)n;
+	return 0;
+}
+
+static int net_open(rdc_dev *dev, const char *opts, bool tcp)
+{
+	struct net_opts o;
+	uint8_t token[RDC_PROTO_MAX_TOKEN], msg[RDC_PROTO_HELLO_FIXED +
+						 RDC_PROTO_MAX_TOKEN];
+	struct rdc_proto_hello h = {
+		.magic = RDC_PROTO_MAGIC,
+		.version = RDC_PROTO_VERSION,
+		.caps = RDC_CAP_ALL,
+		.token = token,
+	};
+	struct net *n;
+	uint8_t *pl = NULL;
+	uint32_t plen = 0;
+	size_t mlen;
+	int ret;
+
+	ret = net_parse_opts(opts, &o);
+	if (ret)
+		return ret;
+	ret = net_read_token(o.token_file, token, &h.token_len);
+	if (ret)
+		return ret;
+	h.flags = o.observe ? 0 : RDC_HELLO_CONTROL;
+	n = calloc(1, sizeof(*n));
+	if (!n)
+		return RDC_E_NOMEM;
+	n->fd = tcp ? net_connect_tcp(o.addr) : net_connect_unix(o.addr);
+	if (n->fd < 0) {
+		ret = n->fd;
+		free(n);
+		return ret;
+	}
+	mlen = rdc_proto_hello_encode(msg, sizeof(msg), &h);
+	ret = net_call(n, RDC_MSG_HELLO, msg, mlen, &pl, &plen);
+	if (!ret && rdc_proto_hello_reply_decode(pl, plen, &n->hello))
+		ret = RDC_E_PROTO;
+	if (!ret && !o.observe && !(n->hello.flags & RDC_HELLO_CONTROL))
+		ret = RDC_E_BUSY;
+	free(pl);
+	if (ret) {
+		if (n->fd >= 0)
+			close(n->fd);
+		free(n);
+		return ret;
+	}
+	dev->priv = n;
+	return 0;
+}
+
+static int net_open_unix(rdc_dev *dev, const char *opts)
+{
+	return net_open(dev, opts, false);
+}
+
+static int net_open_tcp(rdc_dev *dev, const char *opts)
+{
+	return net_open(dev, opts, true);
+}
+
+static void net_close(rdc_dev *dev)
+{
+	struct net *n = net_of(dev);
+
+	if (n->fd >= 0)
+		close(n->fd);
+	free(n->frame);
+	free(n);
+	dev->priv = NULL;
+}
+
+/* ---- Operations ---------------------------------------------------------- */
+
+static int net_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
+{
+	uint8_t b[4], *pl = NULL;
+	uint32_t len = 0;
+	int ret;
+
+	rdc_proto_put32(b, reg);
+	ret = net_call(net_of(dev), RDC_MSG_REG_READ, b, 4, &pl, &len);
+	if (!ret && len != 4)
+		ret = RDC_E_PROTO;
+	if (!ret)
+		*val = rdc_proto_get32(pl);
+	free(pl);
+	return ret;
+}
+
+static int net_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
+{
+	uint8_t b[8];
+
+	rdc_proto_put32(b, reg);
+	rdc_proto_put32(b + 4, val);
+	return net_call(net_of(dev), RDC_MSG_REG_WRITE, b, 8, NULL, NULL);
+}
+
+static int net_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
+{
+	uint8_t *out = buf;
+
+	if (len > UINT32_MAX || addr > UINT32_MAX - len)
+		return RDC_E_RANGE;
+	while (len) {
+		uint32_t k = (uint32_t)RDC_MIN(len, RDC_PROTO_VRAM_CHUNK);
+		uint8_t b[8], *pl = NULL;
+		uint32_t got = 0;
+		int ret;
+
+		rdc_proto_put32(b, addr);
+		rdc_proto_put32(b + 4, k);
+		ret = net_call(net_of(dev), RDC_MSG_VRAM_READ, b, 8, &pl,
+			       &got);
+		if (!ret && got != k)
+			ret = RDC_E_PROTO;
+		if (!ret)
+			memcpy(out, pl, k);
+		free(pl);
+		if (ret)
+			return ret;
+		out += k;
+		addr += k;
+		len -= k;
+	}
+	return 0;
+}
+
+static int net_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
+			  size_t len)
+{
+	const uint8_t *in = buf;
+
+	if (len > UINT32_MAX || addr > UINT32_MAX - len)
+		return RDC_E_RANGE;
+	/* Chunks are exact: a host aperture write takes no simulated time. */
+	do {
+		uint32_t k = (uint32_t)RDC_MIN(len, RDC_PROTO_VRAM_CHUNK);
+		uint8_t b[4];
+		int ret;
+
+		rdc_proto_put32(b, addr);
+		ret = net_call2(net_of(dev), RDC_MSG_VRAM_WRITE, b, 4, in, k,
+				NULL, NULL);
+		if (ret)
+			return ret;
+		in += k;
+		addr += k;
+		len -= k;
+	} while (len);
+	return 0;
+}
+
+static int net_submit(rdc_dev *dev, const uint32_t *words, size_t n)
+{
+	uint8_t *b;
+	int ret = 0;
+
+	b = malloc(RDC_MIN(n, RDC_PROTO_MAX_SUBMIT_WORDS) * 4 + 1);
+	if (!b)
+		return RDC_E_NOMEM;
+	/*
+	 * The daemon pushes each message's words as rdc_submit would on
+	 * sim: (FIFO_FREE, then waits), so splitting changes nothing.
+	 */
+	while (n && !ret) {
+		size_t k = RDC_MIN(n, RDC_PROTO_MAX_SUBMIT_WORDS);
+
+		for (size_t i = 0; i < k; i++)
+			rdc_proto_put32(b + 4 * i, words[i]);
+		ret = net_call(net_of(dev), RDC_MSG_SUBMIT, b, k * 4, NULL,
+			       NULL);
+		words += k;
+		n -= k;
+	}
+	free(b);
+	return ret;
+}
+
+static int net_wait(rdc_dev *dev, const struct rdc_wait *w)
+{
+	struct rdc_proto_wait pw = {.budget = w->budget,
+				    .needs_dp = w->needs_dp};
+	uint8_t b[RDC_PROTO_WAIT_SIZE];
+
+	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+		pw.term[i].kind = w->term[i].kind;
+		pw.term[i].reg = w->term[i].reg;
+		pw.term[i].mask = w->term[i].mask;
+		pw.term[i].value = w->term[i].value;
+	}
+	rdc_proto_wait_encode(b, &pw);
+	return net_call(net_of(dev), RDC_MSG_WAIT, b, sizeof(b), NULL, NULL);
+}
+
+static int net_step(rdc_dev *dev, uint64_t cycles)
+{
+	uint8_t b[8];
+
+	rdc_proto_put64(b, cycles);
+	return net_call(net_of(dev), RDC_MSG_STEP, b, 8, NULL, NULL);
+}
+
+static int net_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
+			  uint32_t *width, uint32_t *height)
+{
+	struct rdc_proto_frame f = {0};
+	uint8_t b[8], *pl = NULL;
+	uint32_t len = 0;
+	int ret;
+
+	rdc_proto_put32(b, RDC_ENC_RAW);
+	rdc_proto_put32(b + 4, (uint32_t)RDC_MIN(cap, UINT32_MAX));
+	ret = net_call(net_of(dev), RDC_MSG_FRAME_GRAB, b, 8, &pl, &len);
+	if (ret == 0 || ret == RDC_E_RANGE) {
+		if (rdc_proto_frame_hdr_decode(pl, len, &f))
+			ret = RDC_E_PROTO;
+		else {
+			*width = f.width;
+			*height = f.height;
+		}
+	}
+	if (!ret && (cap < (size_t)f.width * f.height ||
+		     rdc_proto_frame_decode(buf, f.width, f.height, f.encoding,
+					    pl + RDC_PROTO_FRAME_HDR,
+					    len - RDC_PROTO_FRAME_HDR)))
+		ret = RDC_E_PROTO;
+	free(pl);
+	return ret;
+}
+
+static int net_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
+			 uint32_t encoding)
+{
+	uint8_t b[12];
+
+	rdc_proto_put32(b, events);
+	rdc_proto_put32(b + 4, every);
+	rdc_proto_put32(b + 8, encoding);
+	return net_call(net_of(dev), RDC_MSG_SUBSCRIBE, b, 12, NULL, NULL);
+}
+
+static int net_take_event(struct net *n, struct rdc_event *ev, uint32_t *buf,
+			  size_t cap)
+{
+	if (n->irq_n) {
+		*ev = n->irq[n->irq_head];
+		n->irq_head = (n->irq_head + 1) % NET_IRQ_QUEUE;
+		n->irq_n--;
+		return 1;
+	}
+	if (n->frame_pending) {
+		size_t px = (size_t)n->fw * n->fh;
+
+		n->frame_pending = false;
+		*ev = n->frame_ev;
+		if (cap < px)
+			return RDC_E_RANGE;
+		memcpy(buf, n->frame, px * sizeof(*buf));
+		return 1;
+	}
+	return 0;
+}
+
+static int net_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
+			  size_t cap, int timeout_ms)
+{
+	struct net *n = net_of(dev);
+
+	for (;;) {
+		struct rdc_proto_hdr h;
+		uint8_t *pl;
+		int ret = net_take_event(n, ev, buf, cap);
+
+		if (ret)
+			return ret < 0 ? ret : 0;
+		if (n->fd < 0)
+			return RDC_E_IO;
+		ret = net_read_msg(n, &h, &pl, timeout_ms);
+		if (ret == RDC_E_TIMEOUT)
+			return ret;
+		if (!ret && !(h.flags & RDC_MSGF_EVENT))
+			ret = RDC_E_PROTO; /* a reply nobody asked for */
+		if (!ret)
+			ret = net_event(n, &h, pl);
+		free(pl);
+		if (ret) {
+			close(n->fd);
+			n->fd = -1;
+			return ret;
+		}
+	}
+}
+
+const struct rdc_backend rdc_backend_unix = {
+	.scheme = "unix",
+	.open = net_open_unix,
+	.close = net_close,
+	.reg_read = net_reg_read,
+	.reg_write = net_reg_write,
+	.vram_read = net_vram_read,
+	.vram_write = net_vram_write,
+	.submit = net_submit,
+	.wait = net_wait,
+	.step = net_step,
+	.frame_grab = net_frame_grab,
+	.subscribe = net_subscribe,
+	.event_next = net_event_next,
+};
+
+const struct rdc_backend rdc_backend_tcp = {
+	.scheme = "tcp",
+	.open = net_open_tcp,
+	.close = net_close,
+	.reg_read = net_reg_read,
+	.reg_write = net_reg_write,
+	.vram_read = net_vram_read,
+	.vram_write = net_vram_write,
+	.submit = net_submit,
+	.wait = net_wait,
+	.step = net_step,
+	.frame_grab = net_frame_grab,
+	.subscribe = net_subscribe,
+	.event_next = net_event_next,
+};

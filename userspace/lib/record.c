@@ -1,0 +1,424 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Traces: record every operation that can change a simulated RDC-1, with
+ * the simulated time it happened at, and play them back.
+ *
+ * The chip is deterministic, so the backend operations in the same order
+ * on a fresh chip reproduce everything: recording wraps the sim: backend's
+ * table (the core and rdcd keep calling through dev->be as before) and
+ * replay calls the same operations.  Time is recorded too, to detect a
+ * trace that does not match the build that replays it.
+ *
+ * File format, little-endian:
+ *   "RDCTRACE" u32 version u32 vram_size
+ *   records: u8 op, u64 time (before the operation), then by op:
+ *     REG_WRITE   u32 reg, u32 value
+ *     REG_READ    u32 reg, u32 value read (reads can pop RDATA)
+ *     VRAM_WRITE  u32 addr, u32 len, len bytes
+ *     WAIT        the RDC_MSG_WAIT payload (rdc_proto.h), i32 result
+ *     STEP        u64 cycles
+ *     POWER       (a new chip from here on)
+ *     END         (time is the final time)
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hw.h"
+#include "rdc_priv.h"
+#include "rdc_proto.h"
+
+#define REC_MAGIC "RDCTRACE"
+#define REC_MAGIC_LEN 8u
+#define REC_VERSION 1u
+#define REC_MAX_VRAM_WRITE (256u << 20)
+
+enum rec_op {
+	REC_REG_WRITE = 1,
+	REC_REG_READ = 2,
+	REC_VRAM_WRITE = 3,
+	REC_WAIT = 4,
+	REC_STEP = 5,
+	REC_POWER = 6,
+	REC_END = 7,
+};
+
+struct rdc_rec {
+	FILE *f;
+	int err;
+	const struct rdc_backend *inner;
+	void *inner_priv;
+	struct rdc_hw *hw;
+};
+
+static const struct rdc_backend rdc_backend_rec;
+
+static void rec_put(struct rdc_rec *r, const void *p, size_t n)
+{
+	if (n && fwrite(p, 1, n, r->f) != n)
+		r->err = RDC_E_FILE;
+}
+
+static void rec_head(struct rdc_rec *r, uint8_t op)
+{
+	uint8_t b[9];
+
+	b[0] = op;
+	rdc_proto_put64(b + 1, r->hw ? r->hw->now : 0);
+	rec_put(r, b, sizeof(b));
+}
+
+static void rec_u32x2(struct rdc_rec *r, uint8_t op, uint32_t a, uint32_t v)
+{
+	uint8_t b[8];
+
+	rec_head(r, op);
+	rdc_proto_put32(b, a);
+	rdc_proto_put32(b + 4, v);
+	rec_put(r, b, sizeof(b));
+}
+
+struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size)
+{
+	struct rdc_rec *r = calloc(1, sizeof(*r));
+	uint8_t b[8];
+
+	if (!r)
+		return NULL;
+	r->f = fopen(path, "wb");
+	if (!r->f) {
+		free(r);
+		return NULL;
+	}
+	rec_put(r, REC_MAGIC, REC_MAGIC_LEN);
+	rdc_proto_put32(b, REC_VERSION);
+	rdc_proto_put32(b + 4, vram_size);
+	rec_put(r, b, sizeof(b));
+	return r;
+}
+
+void rdc_rec_attach(struct rdc_rec *r, rdc_dev *dev)
+{
+	r->inner = dev->be;
+	r->inner_priv = dev->priv;
+	r->hw = rdc_sim_hw(dev);
+	dev->be = &rdc_backend_rec;
+	dev->priv = r;
+}
+
+void rdc_rec_power(struct rdc_rec *r)
+{
+	rec_head(r, REC_POWER);
+	r->hw = NULL;
+}
+
+int rdc_rec_close(struct rdc_rec *r, rdc_dev *dev)
+{
+	int ret;
+
+	if (!r)
+		return 0;
+	if (dev && dev->be == &rdc_backend_rec)
+		rec_head(r, REC_END);
+	if (fclose(r->f))
+		r->err = RDC_E_FILE;
+	ret = r->err;
+	if (dev && dev->be == &rdc_backend_rec) {
+		/* unwrap: the handle goes on without a recorder */
+		dev->be = r->inner;
+		dev->priv = r->inner_priv;
+	}
+	free(r);
+	return ret;
+}
+
+/* Run one operation of the wrapped backend. */
+#define REC_INNER(dev, r, call)                                              \
+	({                                                                   \
+		int ret_;                                                    \
+		(dev)->priv = (r)->inner_priv;                               \
+		ret_ = (r)->inner->call;                                     \
+		(dev)->priv = (r);                                           \
+		ret_;                                                        \
+	})
+
+static void rec_be_close(rdc_dev *dev)
+{
+	struct rdc_rec *r = dev->priv;
+
+	dev->priv = r->inner_priv;
+	r->inner->close(dev);
+	dev->be = r->inner;
+	r->hw = NULL;
+}
+
+static int rec_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
+{
+	struct rdc_rec *r = dev->priv;
+	uint64_t t = r->hw->now;
+	int ret = REC_INNER(dev, r, reg_read(dev, reg, val));
+	uint8_t b[17];
+
+	b[0] = REC_REG_READ;
+	rdc_proto_put64(b + 1, t);
+	rdc_proto_put32(b + 9, reg);
+	rdc_proto_put32(b + 13, ret ? 0 : *val);
+	rec_put(r, b, sizeof(b));
+	return ret;
+}
+
+static int rec_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
+{
+	struct rdc_rec *r = dev->priv;
+
+	rec_u32x2(r, REC_REG_WRITE, reg, val);
+	return REC_INNER(dev, r, reg_write(dev, reg, val));
+}
+
+static int rec_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r, vram_read(dev, addr, buf, len));
+}
+
+static int rec_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
+			  size_t len)
+{
+	struct rdc_rec *r = dev->priv;
+	int ret = REC_INNER(dev, r, vram_write(dev, addr, buf, len));
+
+	/* Only writes that happened: a refused one changed nothing. */
+	if (!ret) {
+		rec_u32x2(r, REC_VRAM_WRITE, addr, (uint32_t)len);
+		rec_put(r, buf, len);
+	}
+	return ret;
+}
+
+static int rec_wait(rdc_dev *dev, const struct rdc_wait *w)
+{
+	struct rdc_rec *r = dev->priv;
+	struct rdc_proto_wait pw = {.budget = w->budget,
+				    .needs_dp = w->needs_dp};
+	uint8_t b[RDC_PROTO_WAIT_SIZE + 4];
+	int ret;
+
+	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+		pw.term[i].kind = w->term[i].kind;
+		pw.term[i].reg = w->term[i].reg;
+		pw.term[i].mask = w->term[i].mask;
+		pw.term[i].value = w->term[i].value;
+	}
+	rec_head(r, REC_WAIT);
+	ret = REC_INNER(dev, r, wait(dev, w));
+	rdc_proto_wait_encode(b, &pw);
+	rdc_proto_put32(b + RDC_PROTO_WAIT_SIZE, (uint32_t)ret);
+	rec_put(r, b, sizeof(b));
+	return ret;
+}
+
+static int rec_step(rdc_dev *dev, uint64_t cycles)
+{
+	struct rdc_rec *r = dev->priv;
+	uint8_t b[8];
+
+	rec_head(r, REC_STEP);
+	rdc_proto_put64(b, cycles);
+	rec_put(r, b, sizeof(b));
+	return REC_INNER(dev, r, step(dev, cycles));
+}
+
+static int rec_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
+			  uint32_t *width, uint32_t *height)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r, frame_grab(dev, buf, cap, width, height));
+}
+
+static const struct rdc_backend rdc_backend_rec = {
+	.scheme = "sim",
+	.close = rec_be_close,
+	.reg_read = rec_reg_read,
+	.reg_write = rec_reg_write,
+	.vram_read = rec_vram_read,
+	.vram_write = rec_vram_write,
+	.wait = rec_wait,
+	.step = rec_step,
+	.frame_grab = rec_frame_grab,
+};
+
+/* ---- Replay -------------------------------------------------------------- */
+
+struct replay {
+	FILE *f;
+	struct rdc_replay_result *res;
+	rdc_dev *dev;
+	uint32_t vram;
+	uint8_t *buf;
+};
+
+static int rp_get(struct replay *p, void *b, size_t n)
+{
+	return fread(b, 1, n, p->f) == n ? 0 : RDC_E_PARSE;
+}
+
+static void rp_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
+		     uint64_t n)
+{
+	struct rdc_replay_result *res = ctx;
+
+	(void)n;
+	res->frames++;
+	res->width = w;
+	res->height = h;
+	res->frame_crc = rdc_crc32_xrgb(xrgb, (size_t)w * h);
+}
+
+static int rp_open(struct replay *p)
+{
+	char uri[48];
+	int ret;
+
+	rdc_close(p->dev);
+	p->dev = NULL;
+	snprintf(uri, sizeof(uri), "sim:vram=%u", p->vram);
+	ret = rdc_open(uri, &p->dev);
+	if (ret)
+		return ret == RDC_E_URI ? RDC_E_PARSE : ret;
+	rdc_hw_set_frame_fn(rdc_sim_hw(p->dev), rp_frame, p->res);
+	return 0;
+}
+
+static int rp_one(struct replay *p, uint8_t op, uint64_t t)
+{
+	const struct rdc_backend *be = p->dev->be;
+	struct rdc_hw *hw = rdc_sim_hw(p->dev);
+	uint8_t b[RDC_PROTO_WAIT_SIZE + 4];
+	uint32_t v;
+	int ret;
+
+	if (op != REC_POWER && hw->now != t)
+		p->res->mismatches++;
+	switch (op) {
+	case REC_REG_WRITE:
+		if (rp_get(p, b, 8))
+			return RDC_E_PARSE;
+		return be->reg_write(p->dev, rdc_proto_get32(b),
+				     rdc_proto_get32(b + 4)) < 0
+			       ? RDC_E_PARSE
+			       : 0;
+	case REC_REG_READ:
+		if (rp_get(p, b, 8))
+			return RDC_E_PARSE;
+		if (be->reg_read(p->dev, rdc_proto_get32(b), &v) ||
+		    v != rdc_proto_get32(b + 4))
+			p->res->mismatches++;
+		return 0;
+	case REC_VRAM_WRITE: {
+		uint32_t addr, len;
+
+		if (rp_get(p, b, 8))
+			return RDC_E_PARSE;
+		addr = rdc_proto_get32(b);
+		len = rdc_proto_get32(b + 4);
+		if (len > p->vram)
+			return RDC_E_PARSE;
+		if (rp_get(p, p->buf, len))
+			return RDC_E_PARSE;
+		return be->vram_write(p->dev, addr, p->buf, len) ? RDC_E_PARSE
+								 : 0;
+	}
+	case REC_WAIT: {
+		struct rdc_proto_wait pw;
+		struct rdc_wait w = {0};
+
+		if (rp_get(p, b, sizeof(b)) ||
+		    rdc_proto_wait_decode(b, RDC_PROTO_WAIT_SIZE, &pw))
+			return RDC_E_PARSE;
+		w.budget = pw.budget;
+		w.needs_dp = pw.needs_dp;
+		for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+			if (pw.term[i].kind > RDC_WAIT_EQ)
+				return RDC_E_PARSE;
+			w.term[i].kind = (enum rdc_wait_kind)pw.term[i].kind;
+			w.term[i].reg = pw.term[i].reg;
+			w.term[i].mask = pw.term[i].mask;
+			w.term[i].value = pw.term[i].value;
+		}
+		ret = be->wait(p->dev, &w);
+		if (ret != (int)rdc_proto_get32(b + RDC_PROTO_WAIT_SIZE))
+			p->res->mismatches++;
+		return 0;
+	}
+	case REC_STEP:
+		if (rp_get(p, b, 8))
+			return RDC_E_PARSE;
+		if (be->step(p->dev, rdc_proto_get64(b)))
+			p->res->mismatches++;
+		return 0;
+	case REC_POWER:
+		return rp_open(p);
+	default:
+		return RDC_E_PARSE;
+	}
+}
+
+int rdc_replay_file(const char *path, struct rdc_replay_result *res,
+		    rdc_dev **dev_out)
+{
+	struct rdc_replay_result dummy;
+	struct replay p = {0};
+	uint8_t hdr[REC_MAGIC_LEN + 8], rec[9];
+	int ret;
+
+	if (!path)
+		return RDC_E_INVAL;
+	if (dev_out)
+		*dev_out = NULL;
+	p.res = res ? res : &dummy;
+	memset(p.res, 0, sizeof(*p.res));
+	p.f = fopen(path, "rb");
+	if (!p.f)
+		return RDC_E_FILE;
+	ret = rp_get(&p, hdr, sizeof(hdr));
+	if (!ret && (memcmp(hdr, REC_MAGIC, REC_MAGIC_LEN) ||
+		     rdc_proto_get32(hdr + REC_MAGIC_LEN) != REC_VERSION))
+		ret = RDC_E_PARSE;
+	if (!ret) {
+		p.vram = rdc_proto_get32(hdr + REC_MAGIC_LEN + 4);
+		p.buf = p.vram <= REC_MAX_VRAM_WRITE ? malloc(p.vram + 1) : NULL;
+		ret = p.buf ? rp_open(&p) : RDC_E_PARSE;
+	}
+	while (!ret) {
+		uint64_t t;
+
+		ret = rp_get(&p, rec, sizeof(rec));
+		if (ret)
+			break; /* no END record: a trace cut short */
+		t = rdc_proto_get64(rec + 1);
+		if (rec[0] == REC_END) {
+			struct rdc_hw *hw = rdc_sim_hw(p.dev);
+
+			if (hw->now < t)
+				rdc_hw_run_until(hw, t);
+			if (hw->now != t)
+				p.res->mismatches++;
+			break;
+		}
+		ret = rp_one(&p, rec[0], t);
+		p.res->records++;
+	}
+	if (p.dev)
+		p.res->time = rdc_sim_hw(p.dev)->now;
+	fclose(p.f);
+	free(p.buf);
+	if (p.dev)
+		rdc_hw_set_frame_fn(rdc_sim_hw(p.dev), NULL, NULL);
+	if (!ret && dev_out)
+		*dev_out = p.dev;
+	else
+		rdc_close(p.dev);
+	return ret;
+}

@@ -1,0 +1,654 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * rdcd: a simulated RDC-1 served over UNIX and TCP sockets
+ * (docs/protocol.md).  One thread, one poll() loop, non-blocking sockets:
+ * the loop accepts clients, reads and answers requests, writes queued
+ * replies and frames, and between those moves simulated time (paced to
+ * the wall clock, as fast as possible, or, stepped, not at all).
+ */
+#include <arpa/inet.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "hw.h"
+#include "rdcd.h"
+
+#define NS_PER_S 1000000000ull
+/* Paced mode: wake this often to move time (1 ms). */
+#define RDCD_TICK_MS 1
+/* Fast mode: simulated cycles between looks at the sockets (1 ms). */
+#define RDCD_FAST_SLICE (RDC_DEFAULT_CORE_HZ / 1000u)
+/* Paced mode: a host this far behind the wall clock starts over from now
+ * instead of racing to catch up (100 ms). */
+#define RDCD_PACE_SLACK (RDC_DEFAULT_CORE_HZ / 10u)
+
+static volatile sig_atomic_t rdcd_stop;
+
+static void rdcd_on_signal(int sig)
+{
+	rdcd_stop = sig;
+}
+
+void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
+{
+	static const char *const name[] = {"error", "warning", "info",
+					   "debug"};
+	va_list ap;
+
+	if (level > d->log_level)
+		return;
+	fprintf(stderr, "rdcd: %s: ", name[level]);
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fputc('\n', stderr);
+}
+
+static void usage(FILE *f)
+{
+	fputs("usage: rdcd [OPTIONS]\n"
+	      "\n"
+	      "Serve a simulated RDC-1 over sockets (docs/protocol.md).\n"
+	      "\n"
+	      "  --listen URI     unix:PATH or tcp:HOST:PORT (repeatable); default\n"
+	      "                   unix: at $XDG_RUNTIME_DIR/rdc/rdc.sock, else\n"
+	      "                   /tmp/rdc-$UID/rdc.sock.  TCP with an empty HOST\n"
+	      "                   is 127.0.0.1; any other than loopback needs\n"
+	      "                   --token.  PORT 0: the kernel picks one\n"
+	      "  --fast           run unpaced, as fast as the host allows\n"
+	      "  --stepped        time moves only when the controlling client\n"
+	      "                   waits or steps, as on sim: (reproducible)\n"
+	      "                   default: paced to the pixel clock\n"
+	      "  --mode NAME      program a preset at start (e.g. 640x480)\n"
+	      "  --vram SIZE      VRAM bytes, K/M suffixes (default 16M)\n"
+	      "  --record FILE    write a trace for `rdcctl replay`\n"
+	      "  --token FILE     TCP clients must present this file's contents\n"
+	      "  --group          socket mode 0660 instead of 0600\n"
+	      "  --ready-file F   once listening, write the listen URIs to F\n"
+	      "  -v, -q           more, less logging (stderr)\n"
+	      "  -h, --help       this text\n",
+	      f);
+}
+
+static uint64_t rdcd_wall_ns(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (uint64_t)ts.tv_sec * NS_PER_S + (uint64_t)ts.tv_nsec;
+}
+
+/* ---- Listeners ----------------------------------------------------------- */
+
+static int rdcd_mkdir_parent(const char *path)
+{
+	char dir[sizeof(((struct sockaddr_un *)0)->sun_path)];
+	char *slash;
+
+	snprintf(dir, sizeof(dir), "%s", path);
+	slash = strrchr(dir, '/');
+	if (!slash || slash == dir)
+		return 0;
+	*slash = 0;
+	if (mkdir(dir, 0700) && errno != EEXIST)
+		return -1;
+	return 0;
+}
+
+static int rdcd_listen_unix(struct rdcd *d, struct rdcd_listener *l,
+			    const char *path, bool group)
+{
+	struct sockaddr_un sa = {.sun_family = AF_UNIX};
+	mode_t old;
+	int fd;
+
+	if (!*path) {
+		if (rdc_proto_default_path(l->path, sizeof(l->path))) {
+			rdcd_log(d, RDCD_LOG_ERR, "default socket path too long");
+			return -1;
+		}
+		if (rdcd_mkdir_parent(l->path)) {
+			rdcd_log(d, RDCD_LOG_ERR, "%s: %s", l->path,
+				 strerror(errno));
+			return -1;
+		}
+	} else if (strlen(path) >= sizeof(l->path)) {
+		rdcd_log(d, RDCD_LOG_ERR, "socket path too long: %s", path);
+		return -1;
+	} else {
+		strcpy(l->path, path);
+	}
+	strcpy(sa.sun_path, l->path);
+	fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+	if (fd < 0)
+		return -1;
+	/* A socket file nobody answers on is left over from a crash. */
+	if (!connect(fd, (struct sockaddr *)&sa, sizeof(sa)) ||
+	    errno == EAGAIN || errno == EINPROGRESS) {
+		rdcd_log(d, RDCD_LOG_ERR, "%s: another daemon is listening",
+			 l->path);
+		close(fd);
+		l->path[0] = 0;
+		return -1;
+	}
+	if (errno == ECONNREFUSED)
+		unlink(l->path);
+	close(fd);
+	fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+	if (fd < 0)
+		return -1;
+	/* Born with the final mode: no window where others may connect. */
+	old = umask(group ? 0117 : 0177);
+	if (bind(fd, (struct sockaddr *)&sa, sizeof(sa)) || listen(fd, 64)) {
+		umask(old);
+		rdcd_log(d, RDCD_LOG_ERR, "%s: %s", l->path, strerror(errno));
+		close(fd);
+		l->path[0] = 0;
+		return -1;
+	}
+	umask(old);
+	chmod(l->path, group ? 0660 : 0600);
+	l->fd = fd;
+	/* uri holds "unix:" and any sun_path */
+	strcpy(l->uri, "unix:");
+	strcat(l->uri, l->path);
+	return 0;
+}
+
+static bool rdcd_is_loopback(const struct sockaddr_storage *ss)
+{
+	if (ss->ss_family == AF_INET) {
+		const struct sockaddr_in *in = (const void *)ss;
+
+		return (ntohl(in->sin_addr.s_addr) >> 24) == 127;
+	}
+	if (ss->ss_family == AF_INET6) {
+		const struct sockaddr_in6 *in6 = (const void *)ss;
+
+		return IN6_IS_ADDR_LOOPBACK(&in6->sin6_addr) ||
+		       (IN6_IS_ADDR_V4MAPPED(&in6->sin6_addr) &&
+			in6->sin6_addr.s6_addr[12] == 127);
+	}
+	return false;
+}
+
+static int rdcd_listen_tcp(struct rdcd *d, struct rdcd_listener *l,
+			   const char *hostport)
+{
+	struct addrinfo hints = {.ai_socktype = SOCK_STREAM,
+				 .ai_flags = AI_PASSIVE | AI_NUMERICSERV};
+	const char *colon = strrchr(hostport, ':');
+	struct sockaddr_storage ss;
+	socklen_t sl = sizeof(ss);
+	struct addrinfo *res;
+	char host[128], addr[INET6_ADDRSTRLEN];
+	size_t hlen;
+	int fd, one = 1, port;
+
+	if (!colon) {
+		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: want tcp:HOST:PORT",
+			 hostport);
+		return -1;
+	}
+	hlen = (size_t)(colon - hostport);
+	if (hlen >= 2 && hostport[0] == '[' && hostport[hlen - 1] == ']') {
+		hostport++;
+		hlen -= 2;
+	}
+	if (hlen >= sizeof(host))
+		return -1;
+	memcpy(host, hostport, hlen);
+	host[hlen] = 0;
+	if (!hlen)
+		strcpy(host, "127.0.0.1");
+	if (getaddrinfo(host, colon + 1, &hints, &res)) {
+		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: cannot resolve", hostport);
+		return -1;
+	}
+	fd = socket(res->ai_family,
+		    res->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC,
+		    res->ai_protocol);
+	if (fd < 0) {
+		freeaddrinfo(res);
+		return -1;
+	}
+	setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
+	if (bind(fd, res->ai_addr, res->ai_addrlen) || listen(fd, 64)) {
+		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: %s", hostport,
+			 strerror(errno));
+		freeaddrinfo(res);
+		close(fd);
+		return -1;
+	}
+	freeaddrinfo(res);
+	getsockname(fd, (struct sockaddr *)&ss, &sl);
+	l->fd = fd;
+	l->tcp = true;
+	l->need_token = !rdcd_is_loopback(&ss);
+	if (l->need_token && !d->have_token) {
+		rdcd_log(d, RDCD_LOG_ERR,
+			 "tcp:%s is not loopback: --token FILE is required",
+			 hostport);
+		close(fd);
+		return -1;
+	}
+	if (ss.ss_family == AF_INET6) {
+		const struct sockaddr_in6 *in6 = (const void *)&ss;
+
+		inet_ntop(AF_INET6, &in6->sin6_addr, addr, sizeof(addr));
+		port = ntohs(in6->sin6_port);
+		snprintf(l->uri, sizeof(l->uri), "tcp:[%s]:%d", addr, port);
+	} else {
+		const struct sockaddr_in *in = (const void *)&ss;
+
+		inet_ntop(AF_INET, &in->sin_addr, addr, sizeof(addr));
+		port = ntohs(in->sin_port);
+		snprintf(l->uri, sizeof(l->uri), "tcp:%s:%d", addr, port);
+	}
+	return 0;
+}
+
+static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
+{
+	struct rdcd_listener *l;
+	int ret;
+
+	if (d->nlis == RDCD_MAX_LISTEN) {
+		rdcd_log(d, RDCD_LOG_ERR, "too many --listen");
+		return -1;
+	}
+	l = &d->lis[d->nlis];
+	memset(l, 0, sizeof(*l));
+	l->fd = -1;
+	if (!strncmp(uri, "unix:", 5))
+		ret = rdcd_listen_unix(d, l, uri + 5, group);
+	else if (!strncmp(uri, "tcp:", 4))
+		ret = rdcd_listen_tcp(d, l, uri + 4);
+	else {
+		rdcd_log(d, RDCD_LOG_ERR, "%s: want unix:PATH or tcp:HOST:PORT",
+			 uri);
+		return -1;
+	}
+	if (ret)
+		return ret;
+	rdcd_log(d, RDCD_LOG_INFO, "listening on %s%s", l->uri,
+		 l->need_token ? " (token required)" : "");
+	d->nlis++;
+	return 0;
+}
+
+static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
+{
+	for (;;) {
+		struct sockaddr_storage ss;
+		socklen_t sl = sizeof(ss);
+		char peer[64] = "local", addr[INET6_ADDRSTRLEN] = "?";
+		int fd = accept4(l->fd, (struct sockaddr *)&ss, &sl,
+				 SOCK_NONBLOCK | SOCK_CLOEXEC);
+		int one = 1;
+
+		if (fd < 0) {
+			if (errno != EAGAIN && errno != EWOULDBLOCK &&
+			    errno != EINTR)
+				rdcd_log(d, RDCD_LOG_WARN, "accept: %s",
+					 strerror(errno));
+			return;
+		}
+		if (d->nclients >= RDCD_MAX_CLIENTS) {
+			rdcd_log(d, RDCD_LOG_WARN,
+				 "%u clients already: refusing another",
+				 d->nclients);
+			close(fd);
+			continue;
+		}
+		if (l->tcp) {
+			setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one,
+				   sizeof(one));
+			if (ss.ss_family == AF_INET)
+				inet_ntop(AF_INET,
+					  &((struct sockaddr_in *)&ss)->sin_addr,
+					  addr, sizeof(addr));
+			else if (ss.ss_family == AF_INET6)
+				inet_ntop(AF_INET6,
+					  &((struct sockaddr_in6 *)&ss)->sin6_addr,
+					  addr, sizeof(addr));
+			snprintf(peer, sizeof(peer), "tcp %s", addr);
+		}
+		if (!rdcd_client_new(d, fd, l->tcp && d->have_token, peer)) {
+			rdcd_log(d, RDCD_LOG_ERR, "out of memory");
+			close(fd);
+		}
+	}
+}
+
+static int rdcd_read_token(struct rdcd *d, const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	size_t n;
+
+	if (!f) {
+		rdcd_log(d, RDCD_LOG_ERR, "--token %s: %s", path,
+			 strerror(errno));
+		return -1;
+	}
+	n = fread(d->token, 1, sizeof(d->token), f);
+	fclose(f);
+	while (n && (d->token[n - 1] == '\n' || d->token[n - 1] == '\r' ||
+		     d->token[n - 1] == ' '))
+		n--;
+	if (!n) {
+		rdcd_log(d, RDCD_LOG_ERR, "--token %s: empty", path);
+		return -1;
+	}
+	d->token_len = (uint32_t)n;
+	d->have_token = true;
+	return 0;
+}
+
+static int rdcd_write_ready(struct rdcd *d, const char *path)
+{
+	char tmp[4096];
+	FILE *f;
+
+	snprintf(tmp, sizeof(tmp), "%s.tmp", path);
+	f = fopen(tmp, "w");
+	if (!f)
+		return -1;
+	for (unsigned int i = 0; i < d->nlis; i++)
+		fprintf(f, "%s\n", d->lis[i].uri);
+	if (fclose(f) || rename(tmp, path))
+		return -1;
+	return 0;
+}
+
+/* ---- Time ---------------------------------------------------------------- */
+
+/* Move simulated time as the mode says; returns true if it moved. */
+static bool rdcd_advance(struct rdcd *d)
+{
+	uint64_t now = d->hw->now, target;
+
+	switch (d->mode) {
+	case RDC_RUN_FAST:
+		target = now + RDCD_FAST_SLICE;
+		break;
+	case RDC_RUN_PACED: {
+		uint64_t wall = rdcd_wall_ns();
+
+		if (!d->pace_wall0_ns) {
+			d->pace_wall0_ns = wall;
+			d->pace_sim0 = now;
+		}
+		target = d->pace_sim0 + (wall - d->pace_wall0_ns) *
+						RDC_DEFAULT_CORE_HZ / NS_PER_S;
+		if (target > now + RDCD_PACE_SLACK) {
+			/* the host fell behind: keep the rate, drop the debt */
+			d->pace_wall0_ns = wall;
+			d->pace_sim0 = now + RDCD_PACE_SLACK;
+			target = d->pace_sim0;
+		}
+		break;
+	}
+	default:
+		return false;
+	}
+	if (target <= now)
+		return false;
+	rdc_sim_step(d->dev, target - now);
+	return true;
+}
+
+/* ---- Main ---------------------------------------------------------------- */
+
+struct rdcd_opts {
+	const char *listen[RDCD_MAX_LISTEN];
+	unsigned int nlisten;
+	const char *mode, *record, *token, *ready;
+	uint32_t vram;
+	bool group;
+};
+
+static int parse_size(const char *s, uint32_t *out)
+{
+	char *end;
+	unsigned long long v = strtoull(s, &end, 10);
+
+	if (end == s)
+		return -1;
+	if (*end == 'K' || *end == 'k')
+		v <<= 10, end++;
+	else if (*end == 'M' || *end == 'm')
+		v <<= 20, end++;
+	if (*end || v > UINT32_MAX)
+		return -1;
+	*out = (uint32_t)v;
+	return 0;
+}
+
+static int parse_args(struct rdcd *d, int argc, char **argv,
+		      struct rdcd_opts *o)
+{
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i];
+		const char *val = i + 1 < argc ? argv[i + 1] : NULL;
+
+		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+			usage(stdout);
+			exit(0);
+		} else if (!strcmp(a, "--fast")) {
+			d->mode = RDC_RUN_FAST;
+		} else if (!strcmp(a, "--stepped")) {
+			d->mode = RDC_RUN_STEPPED;
+		} else if (!strcmp(a, "--group")) {
+			o->group = true;
+		} else if (!strcmp(a, "-v")) {
+			d->log_level++;
+		} else if (!strcmp(a, "-q")) {
+			d->log_level--;
+		} else if (!strcmp(a, "--listen") || !strcmp(a, "--mode") ||
+			   !strcmp(a, "--vram") || !strcmp(a, "--record") ||
+			   !strcmp(a, "--token") || !strcmp(a, "--ready-file")) {
+			if (!val) {
+				fprintf(stderr, "rdcd: %s needs a value\n", a);
+				return -1;
+			}
+			i++;
+			if (!strcmp(a, "--listen")) {
+				if (o->nlisten == RDCD_MAX_LISTEN) {
+					fprintf(stderr, "rdcd: too many --listen\n");
+					return -1;
+				}
+				o->listen[o->nlisten++] = val;
+			} else if (!strcmp(a, "--mode")) {
+				o->mode = val;
+			} else if (!strcmp(a, "--record")) {
+				o->record = val;
+			} else if (!strcmp(a, "--token")) {
+				o->token = val;
+			} else if (!strcmp(a, "--ready-file")) {
+				o->ready = val;
+			} else if (parse_size(val, &o->vram)) {
+				fprintf(stderr, "rdcd: bad --vram '%s'\n", val);
+				return -1;
+			}
+		} else {
+			fprintf(stderr, "rdcd: unknown argument '%s'\n", a);
+			usage(stderr);
+			return -1;
+		}
+	}
+	if (d->log_level < RDCD_LOG_ERR)
+		d->log_level = RDCD_LOG_ERR;
+	if (d->log_level > RDCD_LOG_DEBUG)
+		d->log_level = RDCD_LOG_DEBUG;
+	return 0;
+}
+
+static void rdcd_loop(struct rdcd *d)
+{
+	struct pollfd pfd[RDCD_MAX_LISTEN + RDCD_MAX_CLIENTS];
+	struct rdcd_client *cl[RDCD_MAX_CLIENTS];
+	sigset_t none;
+
+	sigemptyset(&none);
+	while (!rdcd_stop) {
+		unsigned int n = 0, nc = 0;
+		struct timespec ts = {0}, *tmo = NULL;
+		int r;
+
+		for (unsigned int i = 0; i < d->nlis; i++)
+			pfd[n++] = (struct pollfd){.fd = d->lis[i].fd,
+						   .events = POLLIN};
+		for (struct rdcd_client *c = d->clients; c; c = c->next) {
+			short ev = 0;
+
+			if (rdcd_client_wants_read(c))
+				ev |= POLLIN;
+			if (c->out_head)
+				ev |= POLLOUT;
+			cl[nc++] = c;
+			pfd[n++] = (struct pollfd){.fd = c->fd, .events = ev};
+		}
+		if (d->mode == RDC_RUN_PACED) {
+			ts.tv_nsec = RDCD_TICK_MS * 1000000L;
+			tmo = &ts;
+		} else if (d->mode == RDC_RUN_FAST) {
+			tmo = &ts; /* zero: just look */
+		}
+		/* Signals are blocked except inside ppoll: none is missed. */
+		r = ppoll(pfd, n, tmo, &none);
+		if (r < 0 && errno != EINTR) {
+			rdcd_log(d, RDCD_LOG_ERR, "poll: %s", strerror(errno));
+			break;
+		}
+		if (r > 0) {
+			unsigned int k = 0;
+
+			for (unsigned int i = 0; i < d->nlis; i++, k++)
+				if (pfd[k].revents & POLLIN)
+					rdcd_accept(d, &d->lis[i]);
+			for (unsigned int i = 0; i < nc; i++, k++) {
+				struct rdcd_client *c = cl[i];
+
+				if (pfd[k].revents & POLLOUT)
+					rdcd_client_flush(d, c);
+				if (pfd[k].revents & (POLLIN | POLLHUP | POLLERR))
+					rdcd_client_read(d, c);
+				if ((pfd[k].revents & (POLLHUP | POLLERR)) &&
+				    !(pfd[k].revents & POLLIN))
+					c->dead = true;
+			}
+		}
+		if (rdcd_advance(d))
+			rdcd_after_advance(d);
+		/* Replies go out at once: most clients wait for them. */
+		for (struct rdcd_client *c = d->clients, *next; c; c = next) {
+			next = c->next;
+			if (c->out_head)
+				rdcd_client_flush(d, c);
+			if (c->dead)
+				rdcd_client_free(d, c);
+		}
+	}
+}
+
+int main(int argc, char **argv)
+{
+	struct rdcd d = {.log_level = RDCD_LOG_INFO,
+			 .vram_size = 16u << 20,
+			 .mode = RDC_RUN_PACED};
+	struct rdcd_opts o = {0};
+	struct sigaction sa = {.sa_handler = rdcd_on_signal};
+	sigset_t block;
+	int ret = 1;
+
+	if (parse_args(&d, argc, argv, &o))
+		return 2;
+	if (o.vram)
+		d.vram_size = o.vram;
+	if (o.token && rdcd_read_token(&d, o.token))
+		return 1;
+	/* Block the signals; ppoll lets them in atomically. */
+	sigemptyset(&block);
+	sigaddset(&block, SIGINT);
+	sigaddset(&block, SIGTERM);
+	sigprocmask(SIG_BLOCK, &block, NULL);
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
+	signal(SIGPIPE, SIG_IGN);
+
+	if (o.record) {
+		d.rec = rdc_rec_open(o.record, d.vram_size);
+		if (!d.rec) {
+			rdcd_log(&d, RDCD_LOG_ERR, "--record %s: %s", o.record,
+				 strerror(errno));
+			return 1;
+		}
+	}
+	ret = rdcd_device_open(&d);
+	if (ret) {
+		rdcd_log(&d, RDCD_LOG_ERR, "device: %s (vram %u bytes?)",
+			 rdc_strerror(ret), d.vram_size);
+		rdc_rec_close(d.rec, NULL);
+		return 1;
+	}
+	ret = 1;
+	if (o.mode) {
+		int p = rdc_preset_by_name(o.mode);
+		int err = p < 0 ? RDC_E_INVAL
+				: rdc_mode_set(d.dev, (uint32_t)p,
+					       RDC_FMT_XRGB8888, 0);
+
+		if (err) {
+			rdcd_log(&d, RDCD_LOG_ERR, "--mode %s: %s", o.mode,
+				 rdc_strerror(err));
+			goto out;
+		}
+	}
+	if (!o.nlisten)
+		o.listen[o.nlisten++] = "unix:";
+	for (unsigned int i = 0; i < o.nlisten; i++)
+		if (rdcd_add_listener(&d, o.listen[i], o.group))
+			goto out;
+	if (o.ready && rdcd_write_ready(&d, o.ready)) {
+		rdcd_log(&d, RDCD_LOG_ERR, "--ready-file %s: %s", o.ready,
+			 strerror(errno));
+		goto out;
+	}
+	rdcd_log(&d, RDCD_LOG_INFO, "%s, vram %u bytes",
+		 d.mode == RDC_RUN_STEPPED ? "stepped"
+		 : d.mode == RDC_RUN_FAST  ? "fast"
+					   : "paced",
+		 d.vram_size);
+	rdcd_loop(&d);
+	if (rdcd_stop)
+		rdcd_log(&d, RDCD_LOG_INFO, "signal %d: shutting down",
+			 (int)rdcd_stop);
+	ret = 0;
+out:
+	while (d.clients) {
+		/* let the last replies go if the sockets take them */
+		rdcd_client_flush(&d, d.clients);
+		rdcd_client_free(&d, d.clients);
+	}
+	for (unsigned int i = 0; i < d.nlis; i++) {
+		close(d.lis[i].fd);
+		if (d.lis[i].path[0])
+			unlink(d.lis[i].path);
+	}
+	rdcd_device_close(&d);
+	return ret;
+}

@@ -1,0 +1,123 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * rdcd internals: the daemon state, its clients, and the functions the
+ * event loop (rdcd.c) and the request handlers (serve.c) share.
+ */
+#ifndef RDCD_H
+#define RDCD_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <sys/un.h>
+
+#include "rdc_priv.h"
+#include "rdc_proto.h"
+
+#define RDCD_MAX_LISTEN 8
+#define RDCD_MAX_CLIENTS 128
+/* Requests handled per client per loop turn, so one cannot starve others. */
+#define RDCD_REQ_PER_TURN 64
+/* Replies queued for a client before the daemon stops reading from it. */
+#define RDCD_OUT_HIGH (4u << 20)
+/* Frame events queued per client; beyond this frames are dropped for it. */
+#define RDCD_MAX_QUEUED_FRAMES 2u
+/* Longest wait or step a client may ask for: one simulated minute. */
+#define RDCD_MAX_BUDGET_S 60u
+
+enum rdcd_log_level { RDCD_LOG_ERR, RDCD_LOG_WARN, RDCD_LOG_INFO,
+		      RDCD_LOG_DEBUG };
+
+struct rdcd_obuf {
+	struct rdcd_obuf *next;
+	size_t len, off;
+	bool frame;
+	uint8_t data[];
+};
+
+enum rdcd_pending { RDCD_PEND_NONE, RDCD_PEND_SUBMIT, RDCD_PEND_WAIT,
+		    RDCD_PEND_STEP };
+
+struct rdcd_client {
+	struct rdcd_client *next;
+	int fd;
+	uint32_t id;
+	bool tcp, hello, dead, closing;
+	char peer[64];
+
+	/* input: a header, then its payload */
+	uint8_t hdrbuf[RDC_PROTO_HDR_SIZE];
+	size_t hdr_got, body_got;
+	struct rdc_proto_hdr hdr;
+	uint8_t *body;
+
+	/* output queue */
+	struct rdcd_obuf *out_head, *out_tail;
+	size_t out_bytes;
+	uint32_t out_frames;
+
+	/* a request that waits for the device (paced and fast modes) */
+	enum rdcd_pending pend;
+	struct rdc_proto_hdr pend_hdr;
+	uint8_t *pend_words; /* SUBMIT payload, little-endian words */
+	size_t pend_n, pend_done;
+	struct rdc_wait pend_wait;
+	uint64_t pend_start, pend_target;
+
+	/* subscription */
+	uint32_t sub_events, sub_every, sub_enc;
+	uint64_t frame_tick, frames_sent, frames_dropped;
+	uint32_t *prev; /* the last frame queued (RDC_ENC_DELTA base) */
+	uint32_t prev_w, prev_h;
+};
+
+struct rdcd_listener {
+	int fd;
+	bool tcp, need_token;
+	char path[sizeof(((struct sockaddr_un *)0)->sun_path)];
+	char uri[160];
+};
+
+struct rdcd {
+	/* the device: a sim: handle, maybe wrapped by a recorder */
+	rdc_dev *dev;
+	struct rdc_hw *hw;
+	struct rdc_rec *rec;
+	uint32_t vram_size;
+	enum rdc_run_mode mode;
+
+	struct rdcd_listener lis[RDCD_MAX_LISTEN];
+	unsigned int nlis;
+	struct rdcd_client *clients;
+	unsigned int nclients;
+	uint32_t next_id;
+	struct rdcd_client *ctl; /* the controlling client, or NULL */
+
+	uint8_t token[RDC_PROTO_MAX_TOKEN];
+	uint32_t token_len;
+	bool have_token;
+
+	int log_level;
+	uint32_t last_irq;
+	uint64_t frames;
+
+	/* pacing: simulated time pace_sim0 was wall time pace_wall0 */
+	uint64_t pace_wall0_ns, pace_sim0;
+};
+
+void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+
+/* serve.c */
+int rdcd_device_open(struct rdcd *d);
+void rdcd_device_close(struct rdcd *d);
+struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
+				    const char *peer);
+void rdcd_client_free(struct rdcd *d, struct rdcd_client *c);
+bool rdcd_client_wants_read(const struct rdcd_client *c);
+void rdcd_client_read(struct rdcd *d, struct rdcd_client *c);
+void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c);
+/* After simulated time moved: finish pending requests, push IRQ events. */
+void rdcd_after_advance(struct rdcd *d);
+bool rdcd_has_pending(const struct rdcd *d);
+
+#endif /* RDCD_H */

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * XRGB8888 to the V4L2 formats the v4l2 sink offers.  Each converter
+ * walks a row at a time with no per-pixel branches so the compiler can
+ * vectorise it; bench/sink_bench.c measures them against memcpy.
+ */
+#include <linux/videodev2.h>
+#include <string.h>
+
+#include "sink_priv.h"
+
+#define XRGB_R(p) (((p) >> 16) & 0xffu)
+#define XRGB_G(p) (((p) >> 8) & 0xffu)
+#define XRGB_B(p) ((p) & 0xffu)
+
+/*
+ * BT.601 limited range in 8-bit fixed point (ITU-R BT.601 coefficients
+ * times 256, rounded so that each row of the matrix sums to 219 or 0):
+ *   Y = (( 66 R + 129 G +  25 B + 128) >> 8) +  16
+ *   U = ((-38 R -  74 G + 112 B + 128) >> 8) + 128
+ *   V = ((112 R -  94 G -  18 B + 128) >> 8) + 128
+ * The offsets are folded in before the shift so the shifted value is never
+ * negative.
+ */
+#define YUV_SHIFT 8
+#define YUV_ROUND (1 << (YUV_SHIFT - 1))
+#define YUV_Y_OFF 16
+#define YUV_C_OFF 128
+
+static inline uint8_t yuv_y(uint32_t r, uint32_t g, uint32_t b)
+{
+	return (uint8_t)(((66 * r + 129 * g + 25 * b + YUV_ROUND) >> YUV_SHIFT) +
+			 YUV_Y_OFF);
+}
+
+/* U and V of a pair from its summed components: one more bit of shift. */
+static inline uint8_t yuv_u2(int r2, int g2, int b2)
+{
+	return (uint8_t)((-38 * r2 - 74 * g2 + 112 * b2 + 2 * YUV_ROUND +
+			  (YUV_C_OFF << (YUV_SHIFT + 1))) >>
+			 (YUV_SHIFT + 1));
+}
+
+static inline uint8_t yuv_v2(int r2, int g2, int b2)
+{
+	return (uint8_t)((112 * r2 - 94 * g2 - 18 * b2 + 2 * YUV_ROUND +
+			  (YUV_C_OFF << (YUV_SHIFT + 1))) >>
+			 (YUV_SHIFT + 1));
+}
+
+static const struct {
+	const char *name;
+	uint32_t fourcc;
+	uint32_t bytes_pp;
+} sink_fmts[RDC_SINK_FMT_COUNT] = {
+	[RDC_SINK_FMT_BGR32] = { "bgr32", V4L2_PIX_FMT_BGR32, 4 },
+	[RDC_SINK_FMT_XRGB32] = { "xrgb32", V4L2_PIX_FMT_XRGB32, 4 },
+	[RDC_SINK_FMT_RGB24] = { "rgb24", V4L2_PIX_FMT_RGB24, 3 },
+	[RDC_SINK_FMT_YUYV] = { "yuyv", V4L2_PIX_FMT_YUYV, 2 },
+};
+
+int rdc_sink_fmt_by_name(const char *name)
+{
+	for (int i = 0; name && i < RDC_SINK_FMT_COUNT; i++)
+		if (!strcasecmp(name, sink_fmts[i].name))
+			return i;
+	return -1;
+}
+
+const char *rdc_sink_fmt_name(int fmt)
+{
+	return fmt >= 0 && fmt < RDC_SINK_FMT_COUNT ? sink_fmts[fmt].name
+						    : NULL;
+}
+
+uint32_t rdc_sink_fmt_fourcc(int fmt)
+{
+	return fmt >= 0 && fmt < RDC_SINK_FMT_COUNT ? sink_fmts[fmt].fourcc : 0;
+}
+
+uint32_t rdc_sink_fmt_fourcc_alt(int fmt)
+{
+	/* The deprecated RGB32 ('RGB4') has XRGB32's byte order, and is the
+	 * only name v4l2loopback 0.12.7 knows it by. */
+	return fmt == RDC_SINK_FMT_XRGB32 ? V4L2_PIX_FMT_RGB32 : 0;
+}
+
+int rdc_sink_fmt_by_fourcc(uint32_t fourcc)
+{
+	for (int i = 0; i < RDC_SINK_FMT_COUNT; i++)
+		if (fourcc == sink_fmts[i].fourcc ||
+		    (fourcc && fourcc == rdc_sink_fmt_fourcc_alt(i)))
+			return i;
+	return -1;
+}
+
+size_t rdc_sink_fmt_bytesperline(int fmt, uint32_t width)
+{
+	if (fmt < 0 || fmt >= RDC_SINK_FMT_COUNT)
+		return 0;
+	if (fmt == RDC_SINK_FMT_YUYV)
+		width += width & 1;
+	return (size_t)width * sink_fmts[fmt].bytes_pp;
+}
+
+static void row_bgr32(uint8_t *d, const uint32_t *s, uint32_t w)
+{
+	/* Host-order 0x00RRGGBB words are B, G, R, X bytes on little-endian
+	 * hosts: the frame already is BGR32. */
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+	memcpy(d, s, (size_t)w * 4);
+#else
+	for (uint32_t x = 0; x < w; x++) {
+		d[4 * x + 0] = (uint8_t)XRGB_B(s[x]);
+		d[4 * x + 1] = (uint8_t)XRGB_G(s[x]);
+		d[4 * x + 2] = (uint8_t)XRGB_R(s[x]);
+		d[4 * x + 3] = 0;
+	}
+#endif
+}
+
+static void row_xrgb32(uint8_t *d, const uint32_t *s, uint32_t w)
+{
+	/* X, R, G, B in memory is 0x00RRGGBB stored big-endian. */
+	for (uint32_t x = 0; x < w; x++) {
+		uint32_t be = __builtin_bswap32(s[x] & 0x00ffffffu);
+
+#if __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+		be = s[x] & 0x00ffffffu;
+#endif
+		memcpy(d + 4 * x, &be, 4);
+	}
+}
+
+static void row_rgb24(uint8_t *d, const uint32_t *s, uint32_t w)
+{
+	uint32_t x = 0;
+
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+	/* One 4-byte store a pixel (R, G, B, then a byte the next pixel
+	 * overwrites); the last pixel of the row goes byte by byte so
+	 * nothing lands past the row. */
+	for (; x + 1 < w; x++) {
+		uint32_t v = __builtin_bswap32(s[x]) >> 8;
+
+		memcpy(d + 3 * x, &v, 4);
+	}
+#endif
+	for (; x < w; x++) {
+		d[3 * x + 0] = (uint8_t)XRGB_R(s[x]);
+		d[3 * x + 1] = (uint8_t)XRGB_G(s[x]);
+		d[3 * x + 2] = (uint8_t)XRGB_B(s[x]);
+	}
+}
+
+static void row_yuyv(uint8_t *d, const uint32_t *s, uint32_t w)
+{
+	uint32_t pairs = (w + 1) / 2;
+
+	for (uint32_t i = 0; i < pairs; i++) {
+		uint32_t p0 = s[2 * i];
+		/* An odd last pixel pairs with itself. */
+		uint32_t p1 = s[2 * i + 1 < w ? 2 * i + 1 : 2 * i];
+		int r2 = (int)(XRGB_R(p0) + XRGB_R(p1));
+		int g2 = (int)(XRGB_G(p0) + XRGB_G(p1));
+		int b2 = (int)(XRGB_B(p0) + XRGB_B(p1));
+
+		uint8_t m[4] = { yuv_y(XRGB_R(p0), XRGB_G(p0), XRGB_B(p0)),
+				 yuv_u2(r2, g2, b2),
+				 yuv_y(XRGB_R(p1), XRGB_G(p1), XRGB_B(p1)),
+				 yuv_v2(r2, g2, b2) };
+
+		memcpy(d + 4 * i, m, sizeof(m));
+	}
+}
+
+int rdc_sink_convert(int fmt, void *dst, size_t dst_bpl,
+		     const struct rdc_frame *f)
+{
+	void (*row)(uint8_t *d, const uint32_t *s, uint32_t w);
+	size_t bpl = rdc_sink_fmt_bytesperline(fmt, f ? f->width : 0);
+
+	if (!dst || !f || !f->xrgb || !bpl || dst_bpl < bpl ||
+	    f->stride < f->width)
+		return RDC_E_INVAL;
+	switch (fmt) {
+	case RDC_SINK_FMT_BGR32:
+		row = row_bgr32;
+		break;
+	case RDC_SINK_FMT_XRGB32:
+		row = row_xrgb32;
+		break;
+	case RDC_SINK_FMT_RGB24:
+		row = row_rgb24;
+		break;
+	default:
+		row = row_yuyv;
+		break;
+	}
+	for (uint32_t y = 0; y < f->height; y++)
+		row((uint8_t *)dst + y * dst_bpl, f->xrgb + y * f->stride,
+		    f->width);
+	return 0;
+}

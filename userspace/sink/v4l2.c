@@ -1,0 +1,340 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The v4l2 sink: frames to a V4L2 output device, in practice a
+ * v4l2loopback device that cameras' readers (ffmpeg, OBS, browsers)
+ * capture from.
+ *
+ * What v4l2loopback (0.12.7, Debian 12) does that shapes this file:
+ * - The OUTPUT format can only change while nobody holds the device: once
+ *   a writer has written, S_FMT quietly answers with the format in force
+ *   until every opener, readers included, has closed.  So when the mode
+ *   changes and S_FMT does not give the new size, the sink closes its own
+ *   descriptor (so the device can come free when the readers let go) and
+ *   tries again every RDC_V4L2_REOPEN_EVERY frames.
+ * - sizeimage comes back page-aligned; readers (ffmpeg) expect exactly
+ *   bytesperline * height bytes in a buffer, so that is what one write()
+ *   carries, never sizeimage.
+ * - write() takes the whole frame or fails; the descriptor is non-blocking
+ *   so a device that cannot take a frame costs a dropped frame, not a
+ *   stalled simulation.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <linux/videodev2.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include "sink_priv.h"
+
+struct v4l2_sink {
+	struct rdc_v4l2_io io;
+	char *path;
+	int fmt; /* enum rdc_sink_fmt */
+	int fd;	 /* -1 while the device is away */
+	uint32_t away_frames;
+	/* Negotiated: 0 x 0 until S_FMT gave what was asked. */
+	uint32_t width, height;
+	size_t bpl, frame_bytes;
+	uint32_t ival_num, ival_den;
+	uint8_t *buf;
+	size_t buf_cap;
+};
+
+static int sys_open(const char *path, int flags)
+{
+	return open(path, flags);
+}
+
+static int sys_ioctl(int fd, unsigned long req, void *arg)
+{
+	int ret;
+
+	do
+		ret = ioctl(fd, req, arg);
+	while (ret < 0 && errno == EINTR);
+	return ret;
+}
+
+static ssize_t sys_write(int fd, const void *buf, size_t len)
+{
+	return write(fd, buf, len);
+}
+
+static int sys_close(int fd)
+{
+	return close(fd);
+}
+
+static const struct rdc_v4l2_io sys_io = {
+	.open = sys_open,
+	.ioctl = sys_ioctl,
+	.write = sys_write,
+	.close = sys_close,
+};
+
+static void v4l2_drop_fd(struct v4l2_sink *v)
+{
+	if (v->fd >= 0)
+		v->io.close(v->fd);
+	v->fd = -1;
+	v->away_frames = 0;
+	v->width = v->height = 0;
+	v->ival_num = v->ival_den = 0;
+}
+
+/* Open the device and check it is a V4L2 output that takes write(). */
+static int v4l2_connect(struct v4l2_sink *v)
+{
+	struct v4l2_capability cap;
+	uint32_t caps;
+	int fd = v->io.open(v->path, O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+
+	if (fd < 0)
+		return RDC_E_FILE;
+	memset(&cap, 0, sizeof(cap));
+	if (v->io.ioctl(fd, VIDIOC_QUERYCAP, &cap) < 0) {
+		v->io.close(fd);
+		return RDC_E_NOSYS;
+	}
+	caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps
+							  : cap.capabilities;
+	if (!(caps & V4L2_CAP_VIDEO_OUTPUT) || !(caps & V4L2_CAP_READWRITE)) {
+		v->io.close(fd);
+		return RDC_E_NOSYS;
+	}
+	v->fd = fd;
+	v->away_frames = 0;
+	v->width = v->height = 0;
+	v->ival_num = v->ival_den = 0;
+	return 0;
+}
+
+static void v4l2_set_interval(rdc_sink *s, const struct rdc_frame *f)
+{
+	struct v4l2_sink *v = s->priv;
+	struct v4l2_streamparm parm;
+
+	if (!f->interval_num || !f->interval_den)
+		return;
+	if (f->interval_num == v->ival_num && f->interval_den == v->ival_den)
+		return;
+	memset(&parm, 0, sizeof(parm));
+	parm.type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
+	parm.parm.output.timeperframe.numerator = f->interval_num;
+	parm.parm.output.timeperframe.denominator = f->interval_den;
+	/* A device without frame-interval support still streams. */
+	v->io.ioctl(v->fd, VIDIOC_S_PARM, &parm);
+	v->ival_num = f->interval_num;
+	v->ival_den = f->interval_den;
+}
+
+/* S_FMT; true when the device took exactly this size and fourcc. */
+static bool v4l2_try_fourcc(struct v4l2_sink *v, const struct rdc_frame *f,
+			    uint32_t w, size_t bpl, uint32_t fourcc,
+			    struct v4l2_format *vf)
+{
+	memset(vf, 0, sizeof(*vf));
+	vf->type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
+	vf->fmt.pix.width = w;
+	vf->fmt.pix.height = f->height;
+	vf->fmt.pix.pixelformat = fourcc;
+	vf->fmt.pix.field = V4L2_FIELD_NONE;
+	vf->fmt.pix.bytesperline = (uint32_t)bpl;
+	vf->fmt.pix.sizeimage = (uint32_t)(bpl * f->height);
+	vf->fmt.pix.colorspace = V4L2_COLORSPACE_SRGB;
+	if (v->io.ioctl(v->fd, VIDIOC_S_FMT, vf) < 0)
+		return false;
+	return vf->fmt.pix.width == w && vf->fmt.pix.height == f->height &&
+	       vf->fmt.pix.pixelformat == fourcc;
+}
+
+/*
+ * S_FMT for the frame's size.  Returns 0 when the device took it, 1 when
+ * it did not (held in another format by readers of the previous mode, or
+ * refused), a negative error otherwise.
+ */
+static int v4l2_negotiate(rdc_sink *s, const struct rdc_frame *f)
+{
+	struct v4l2_sink *v = s->priv;
+	size_t bpl = rdc_sink_fmt_bytesperline(v->fmt, f->width);
+	uint32_t w = f->width + (v->fmt == RDC_SINK_FMT_YUYV ? f->width & 1 : 0);
+	uint32_t alt = rdc_sink_fmt_fourcc_alt(v->fmt);
+	struct v4l2_format vf;
+
+	if (!v4l2_try_fourcc(v, f, w, bpl, rdc_sink_fmt_fourcc(v->fmt), &vf) &&
+	    (!alt || !v4l2_try_fourcc(v, f, w, bpl, alt, &vf)))
+		return 1;
+	/* Keep the device's row pitch when it pads rows; never less. */
+	if (vf.fmt.pix.bytesperline > bpl &&
+	    vf.fmt.pix.bytesperline <= bpl + RDC_CRTC_MAX_DISPLAY)
+		bpl = vf.fmt.pix.bytesperline;
+	if (bpl * f->height > v->buf_cap) {
+		uint8_t *nb = realloc(v->buf, bpl * f->height);
+
+		if (!nb)
+			return RDC_E_NOMEM;
+		v->buf = nb;
+		v->buf_cap = bpl * f->height;
+	}
+	/* Rows padded by the device stay zero rather than stale. */
+	memset(v->buf, 0, bpl * f->height);
+	v->width = f->width;
+	v->height = f->height;
+	v->bpl = bpl;
+	v->frame_bytes = bpl * f->height;
+	v->ival_num = v->ival_den = 0;
+	s->st.renegotiations++;
+	return 0;
+}
+
+static bool v4l2_gone(int err)
+{
+	return err == ENODEV || err == ENXIO || err == EIO || err == EPIPE ||
+	       err == EBADF;
+}
+
+static int v4l2_frame(rdc_sink *s, const struct rdc_frame *f)
+{
+	struct v4l2_sink *v = s->priv;
+	ssize_t n;
+	int ret;
+
+	if (v->fd < 0) {
+		/* Retry only now and then: open() on a vanished node is
+		 * cheap, but S_FMT on a held device is not worth every
+		 * frame. */
+		if (++v->away_frames < RDC_V4L2_REOPEN_EVERY) {
+			s->st.dropped++;
+			return 0;
+		}
+		v->away_frames = 0;
+		if (v4l2_connect(v)) {
+			s->st.dropped++;
+			return 0;
+		}
+		s->st.reopens++;
+	}
+	if (f->width != v->width || f->height != v->height) {
+		ret = v4l2_negotiate(s, f);
+		if (ret < 0)
+			return ret;
+		if (ret) {
+			/* Held in the old format, or refused: let go so the
+			 * device can come free, and try again later. */
+			v4l2_drop_fd(v);
+			s->st.dropped++;
+			return 0;
+		}
+	}
+	v4l2_set_interval(s, f);
+	ret = rdc_sink_convert(v->fmt, v->buf, v->bpl, f);
+	if (ret)
+		return ret;
+	n = v->io.write(v->fd, v->buf, v->frame_bytes);
+	if (n == (ssize_t)v->frame_bytes) {
+		s->st.written++;
+		return 0;
+	}
+	s->st.dropped++;
+	if (n < 0 && v4l2_gone(errno))
+		v4l2_drop_fd(v);
+	return 0;
+}
+
+static void v4l2_close(rdc_sink *s)
+{
+	struct v4l2_sink *v = s->priv;
+
+	if (!v)
+		return;
+	v4l2_drop_fd(v);
+	free(v->buf);
+	free(v->path);
+	free(v);
+	s->priv = NULL;
+}
+
+static int v4l2_parse(struct v4l2_sink *v, const char *args)
+{
+	char *dup = strdup(args), *cur, *key, *val;
+	int ret;
+
+	if (!dup)
+		return RDC_E_NOMEM;
+	cur = strchr(dup, ',');
+	if (cur)
+		*cur++ = '\0';
+	if (!dup[0]) {
+		free(dup);
+		return RDC_E_URI;
+	}
+	v->path = strdup(dup);
+	ret = v->path ? 0 : RDC_E_NOMEM;
+	while (!ret && (ret = rdc_sink_opt_next(&cur, &key, &val)) > 0) {
+		if (!strcmp(key, "format"))
+			v->fmt = rdc_sink_fmt_by_name(val);
+		else
+			v->fmt = -1;
+		ret = v->fmt < 0 ? RDC_E_URI : 0;
+	}
+	free(dup);
+	return ret;
+}
+
+int rdc_sink_v4l2_open_io(const char *args, const struct rdc_v4l2_io *io,
+			  rdc_sink **out)
+{
+	struct v4l2_sink *v;
+	rdc_sink *s;
+	int ret;
+
+	if (!args || !io || !out)
+		return RDC_E_INVAL;
+	*out = NULL;
+	s = calloc(1, sizeof(*s));
+	v = calloc(1, sizeof(*v));
+	if (!s || !v) {
+		free(s);
+		free(v);
+		return RDC_E_NOMEM;
+	}
+	s->ops = &rdc_sink_v4l2_ops;
+	s->priv = v;
+	v->io = *io;
+	v->fd = -1;
+	v->fmt = RDC_SINK_FMT_BGR32;
+	ret = v4l2_parse(v, args);
+	/* A missing or wrong device at start is the user's mistake: say so
+	 * now rather than drop every frame. */
+	if (!ret)
+		ret = v4l2_connect(v);
+	if (ret) {
+		rdc_sink_close(s);
+		return ret;
+	}
+	*out = s;
+	return 0;
+}
+
+static int v4l2_open(rdc_sink *s, const char *args)
+{
+	rdc_sink *tmp;
+	int ret = rdc_sink_v4l2_open_io(args, &sys_io, &tmp);
+
+	if (ret)
+		return ret;
+	/* Move the state into the sink the factory made. */
+	s->priv = tmp->priv;
+	tmp->priv = NULL;
+	free(tmp);
+	return 0;
+}
+
+const struct rdc_sink_ops rdc_sink_v4l2_ops = {
+	.kind = "v4l2",
+	.open = v4l2_open,
+	.frame = v4l2_frame,
+	.close = v4l2_close,
+};
