@@ -51,7 +51,7 @@ TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
-	bench-sink vm-test
+	bench-sink vm-test bench-net fuzz fuzz-long
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a
 
 help:
@@ -62,6 +62,8 @@ help:
 	@echo "make freestanding compile hw-sim/ and firmware-model/ with no libc headers"
 	@echo "make speed        time a full-screen fill through the command path against memset"
 	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
+	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
+	@echo "make fuzz         short libFuzzer run of the protocol parser (fuzz-long: 10 min)"
 	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/*"
 
 deps:
@@ -105,6 +107,7 @@ demo: deps
 
 check test: deps
 	$(MAKE) $(TEST_BINS) $(O)/san/rdcctl $(O)/san/rdcd freestanding $(VM_BINS)
+	$(MAKE) fuzz
 	@vm=0; tests/vm/run.sh --auto $(O) || vm=1; \
 	tests/run.sh $(O)/san && exit $$vm
 
@@ -118,6 +121,33 @@ bench: $(O)/rel/rdc-bench $(O)/rel/sink-bench
 
 $(O)/rel/sink-bench: $(O)/rel/bench/sink_bench.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+# rdcd's figures (JSON lines): submit throughput, register-read round
+# trip, 1024x768 frame subscription unpaced.
+$(O)/rel/net_bench: $(O)/rel/bench/net_bench.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+bench-net: $(O)/rel/net_bench $(O)/rel/rdcd
+	$(O)/rel/net_bench $(O)/rel/rdcd
+
+# libFuzzer on the protocol parser (needs clang).  `make fuzz` is the short
+# run `make check` does; `make fuzz-long` searches for ten minutes and keeps
+# its corpus in $(O)/fuzz/corpus.
+FUZZ_CC ?= clang
+FUZZ_CFLAGS := -std=gnu11 -g -O1 -fsanitize=fuzzer,address,undefined \
+	-fno-sanitize-recover=all $(INC) -D_GNU_SOURCE
+FUZZ_RUNS ?= 1000000
+$(O)/fuzz/fuzz_proto: tests/fuzz/fuzz_proto.c userspace/lib/proto.c \
+		userspace/include/rdc_proto.h
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) tests/fuzz/fuzz_proto.c userspace/lib/proto.c -o $@
+
+fuzz: $(O)/fuzz/fuzz_proto
+	$(O)/fuzz/fuzz_proto -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
+
+fuzz-long: $(O)/fuzz/fuzz_proto
+	@mkdir -p $(O)/fuzz/corpus
+	$(O)/fuzz/fuzz_proto -max_total_time=600 -max_len=65536 $(O)/fuzz/corpus
 
 # The v4l2 sink's conversions against memcpy, per frame.
 bench-sink: $(O)/rel/sink-bench

@@ -17,13 +17,11 @@
 #include "dp_int.h"
 #include "ref_aa.h"
 
-uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst,
-		      uint32_t a)
+uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst, uint32_t a)
 {
 	/* channel fields (shift, width), most significant first */
-	static const uint8_t f565[][2] = { { 11, 5 }, { 5, 6 }, { 0, 5 } };
-	static const uint8_t f888[][2] = { { 24, 8 }, { 16, 8 }, { 8, 8 },
-					   { 0, 8 } };
+	static const uint8_t f565[][2] = {{11, 5}, {5, 6}, {0, 5}};
+	static const uint8_t f888[][2] = {{24, 8}, {16, 8}, {8, 8}, {0, 8}};
 	const uint8_t(*f)[2];
 	unsigned int n, i;
 	uint32_t r = 0;
@@ -47,7 +45,9 @@ uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst,
 		uint32_t s = (src >> f[i][0]) & m, d = (dst >> f[i][0]) & m;
 
 		r |= ((s * a + d * (RDC_ALPHA_OPAQUE - a) +
-		       RDC_ALPHA_OPAQUE / 2) / RDC_ALPHA_OPAQUE) << f[i][0];
+		       RDC_ALPHA_OPAQUE / 2) /
+		      RDC_ALPHA_OPAQUE)
+		     << f[i][0];
 	}
 	return r;
 }
@@ -66,7 +66,8 @@ static uint32_t aa_value(const struct rdc_dp *dp, uint32_t cov, uint32_t d,
 
 	if (rdc_format_indexed(st->dst.format))
 		v = st->fg + ((RDC_AA_FULL - cov) * (st->aa_ramp - 1) +
-			      RDC_AA_FULL / 2) / RDC_AA_FULL;
+			      RDC_AA_FULL / 2) /
+				     RDC_AA_FULL;
 	else
 		v = rdc_dp_blend(st->dst.format, st->fg, d, cov);
 	return rdc_rop_apply(st->rop, v & mask, d) & mask;
@@ -162,10 +163,9 @@ static void aa_col(struct rdc_dp *dp, const struct rdc_rect *c, int32_t x,
 	cov += lo - ya;
 	n = (uint32_t)(hi - lo);
 	bit = (uint32_t)x * bpp;
-	p = rdc_port_column(dp->hw,
-			    s->base + (uint32_t)lo * s->stride + bit / 8,
-			    s->stride, n, (bpp + 7) / 8,
-			    aa_kind(dp, cov, n, sub, sub));
+	p = rdc_port_column(
+		dp->hw, s->base + (uint32_t)lo * s->stride + bit / 8, s->stride,
+		n, (bpp + 7) / 8, aa_kind(dp, cov, n, sub, sub));
 	if (!p)
 		return;
 	for (i = 0; i < n; i++) {
@@ -224,7 +224,8 @@ static void aa_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 	rem = n ? ilo * m % n : 0;
 	run = ilo;
 	for (i = ilo; i <= ihi; i++) {
-		uint32_t f = n ? (uint32_t)((RDC_AA_FULL * rem + n / 2) / n) : 0;
+		uint32_t f =
+			n ? (uint32_t)((RDC_AA_FULL * rem + n / 2) / n) : 0;
 		int64_t nj = j;
 
 		hi[k] = (uint8_t)(RDC_AA_FULL - f);
@@ -238,7 +239,8 @@ static void aa_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 			}
 		}
 		if (nj != j || i == ihi || k == RDC_DP_CHUNK) {
-			int32_t va = v0 + sv * (int32_t)j, ua = u0 + (int32_t)run;
+			int32_t va = v0 + sv * (int32_t)j,
+				ua = u0 + (int32_t)run;
 
 			if (xmajor) {
 				aa_span(dp, &c, va, ua, k, hi);
@@ -255,9 +257,9 @@ static void aa_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 }
 
 /* Pixels cx + [a, b] of row y, at row offset t from the centre. */
-static void aa_ell_span(struct rdc_dp *dp, const struct rdc_rect *c,
-			int32_t y, int32_t cx, int32_t a, int32_t b,
-			uint32_t rx, uint32_t ry, uint32_t t)
+static void aa_ell_span(struct rdc_dp *dp, const struct rdc_rect *c, int32_t y,
+			int32_t cx, int32_t a, int32_t b, uint32_t rx,
+			uint32_t ry, uint32_t t)
 {
 	int64_t xa = RDC_MAX((int64_t)cx + a, (int64_t)c->x0);
 	int64_t xb = RDC_MIN((int64_t)cx + b, (int64_t)c->x1 - 1);
@@ -265,7 +267,8 @@ static void aa_ell_span(struct rdc_dp *dp, const struct rdc_rect *c,
 
 	while (xa <= xb) {
 		uint32_t n = (uint32_t)RDC_MIN(xb - xa + 1,
-					       (int64_t)RDC_DP_CHUNK), i;
+					       (int64_t)RDC_DP_CHUNK),
+			 i;
 
 		for (i = 0; i < n; i++) {
 			int64_t dx = xa + i - cx;
@@ -297,22 +300,22 @@ static void aa_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 			cx + (int32_t)rx, cy + (int32_t)ry);
 		return;
 	}
-	if (c.x0 >= c.x1 || c.y0 >= c.y1 ||
-	    (int64_t)cx + rx + 1 < c.x0 || (int64_t)cx - rx - 1 >= c.x1 ||
-	    (int64_t)cy + ry + 1 < c.y0 || (int64_t)cy - ry - 1 >= c.y1)
+	if (c.x0 >= c.x1 || c.y0 >= c.y1 || (int64_t)cx + rx + 1 < c.x0 ||
+	    (int64_t)cx - rx - 1 >= c.x1 || (int64_t)cy + ry + 1 < c.y0 ||
+	    (int64_t)cy - ry - 1 >= c.y1)
 		return;
 	for (t = 0; t <= ry + 1; t++) {
-		int32_t rows[2] = { cy - (int32_t)t, cy + (int32_t)t };
+		int32_t rows[2] = {cy - (int32_t)t, cy + (int32_t)t};
 		uint32_t xs = 0, xl, xr, r, nrows = t ? 2 : 1;
 
 		if ((rows[0] < c.y0 || rows[0] >= c.y1) &&
 		    (rows[1] < c.y0 || rows[1] >= c.y1))
 			continue;
 		if (t <= ry)
-			xs = (uint32_t)rdc_aa_isqrt((uint64_t)rx2 *
-						    (uint64_t)(ry2 -
-							       (int64_t)t * t) /
-						    (uint64_t)ry2);
+			xs = (uint32_t)rdc_aa_isqrt(
+				(uint64_t)rx2 *
+				(uint64_t)(ry2 - (int64_t)t * t) /
+				(uint64_t)ry2);
 		xs = RDC_MIN(xs, rx + 1);
 		if (rdc_aa_ellipse_cov(rx, ry, xs, t)) {
 			xl = xs;
@@ -361,8 +364,8 @@ uint32_t rdc_dp_aa_cmd(struct rdc_dp *dp, uint32_t op, const uint32_t *a)
 		ry = RDC_H(a[1]);
 		break;
 	}
-	if (rx > RDC_SIZE_MAX || ry > RDC_SIZE_MAX ||
-	    !dp_xform(dp, &x0, &y0) || !dp_xform_size(dp, &rx, &ry))
+	if (rx > RDC_SIZE_MAX || ry > RDC_SIZE_MAX || !dp_xform(dp, &x0, &y0) ||
+	    !dp_xform_size(dp, &rx, &ry))
 		return RDC_ERR_RANGE;
 	aa_ellipse(dp, x0, y0, rx, ry);
 	return RDC_ERR_NONE;

@@ -90,6 +90,7 @@ struct arc_ctx {
 	struct rdc_dp *dp;
 	uint32_t mode;
 	bool full, wide; /* full turn; sweep over half a turn */
+	bool narrow; /* end points rounded onto one ray: the sector is it */
 	int64_t sx, sy, ex, ey; /* end points, y up, 14 fractional bits */
 	int32_t cx, cy;
 };
@@ -113,7 +114,13 @@ static bool arc_in(const struct arc_ctx *ac, int32_t dx, int32_t dy)
 				 px - ac->sx, py - ac->sy) <= 0;
 	a = arc_cross(ac->sx, ac->sy, px, py) >= 0;
 	b = arc_cross(px, py, ac->ex, ac->ey) >= 0;
-	return ac->wide ? a || b : a && b;
+	if (ac->wide)
+		return a || b;
+	/* two half-planes meet in the sector, and in the opposite ray too
+	 * when the end points' directions coincide */
+	if (ac->narrow && ac->sx * px + ac->sy * py < 0)
+		return false;
+	return a && b;
 }
 
 /* Pixels xa..xb of row cy + dy that pass the test, as spans. */
@@ -135,8 +142,13 @@ static void arc_run(const struct arc_ctx *ac, int32_t dy, int32_t xa,
 			start = x;
 			open = true;
 		} else if (!in && open) {
-			rdc_dp_span(ac->dp, ac->cy + dy, ac->cx + start,
-				    ac->cx + x - 1);
+			/* fills take the pattern, the outline is FG */
+			if (ac->mode == RDC_ARC_OUTLINE)
+				rdc_dp_span(ac->dp, ac->cy + dy,
+					    ac->cx + start, ac->cx + x - 1);
+			else
+				dp_fill_span(ac->dp, ac->cx + start,
+					     ac->cx + x - 1, ac->cy + dy);
 			open = false;
 		}
 	}
@@ -243,6 +255,8 @@ void dp_arc(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 	ac.sy = (int64_t)ry * dp_sin(start) / (1 << ARC_VEC_SHIFT);
 	ac.ex = (int64_t)rx * dp_cos(end) / (1 << ARC_VEC_SHIFT);
 	ac.ey = (int64_t)ry * dp_sin(end) / (1 << ARC_VEC_SHIFT);
+	ac.narrow = sweep < ARC_HALF &&
+		    arc_cross(ac.sx, ac.sy, ac.ex, ac.ey) <= 0;
 	arc_ellipse(&ac, rx, ry, mode != RDC_ARC_OUTLINE);
 }
 

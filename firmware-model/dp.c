@@ -315,7 +315,7 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 	case RDC_OP_ARC:
 		return dp_cmd_arc(dp, fl, a);
 	case RDC_OP_FILL_POLYGON:
-		return dp_cmd_polygon(dp, op, fl, len, a);
+		return dp_cmd_fill_polygon(dp, fl, len, a);
 	case RDC_OP_FLOOD_FILL:
 		return dp_cmd_flood(dp, fl, len, a);
 	case RDC_OP_TRIANGLE:

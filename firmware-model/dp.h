@@ -41,22 +41,28 @@ struct rdc_dp_state {
 	struct rdc_rect clip;
 	struct rdc_surface dst, src;
 
-	/* SET_PATTERN */
+	/* SET_PATTERN: the fill style of filled primitives (pattern.c) */
 	uint32_t pat_mode; /* enum rdc_pattern_mode */
 	uint8_t pat_mono[8];
 	uint32_t pat_color[64];
-	/* SET_PEN, SET_DASH */
+	/* SET_PEN: width 1..RDC_PEN_MAX_WIDTH, enum rdc_cap, enum rdc_join.
+	 * SET_DASH: bit (step + offset) % len of bits draws a step of a
+	 * path; len 0 is solid. */
 	uint32_t pen_width, pen_cap, pen_join;
 	uint32_t dash_bits, dash_len, dash_offset;
 	/* SET_ALPHA, SET_COLORKEY, SET_AA_RAMP */
 	uint32_t alpha;
 	uint32_t colorkey, colorkey_on;
 	uint32_t aa_ramp;
-	/* SET_TRANSFORM / SET_VIEWPORT: m[row][col], signed 15.16 */
+	/* SET_TRANSFORM / SET_VIEWPORT: m[row][col], signed 15.16, applied
+	 * by dp_xform; xf_identity caches "xf is the identity" so the
+	 * common case costs nothing */
 	int32_t xf[3][3];
 	bool xf_identity;
 	/* SET_ZBUF */
-	uint32_t z_base, z_stride, z_flags; /* z_flags 0: off */
+	/* SET_ZBUF: z_stride 0 = no depth surface; z_flags RDC_Z_TEST |
+	 * RDC_Z_WRITE, 0 = the surface is only cleared (CLEAR_Z) */
+	uint32_t z_base, z_stride, z_flags;
 };
 
 enum rdc_dp_phase {
@@ -115,7 +121,8 @@ struct rdc_dp {
 	uint16_t poly_et[RDC_SIZE_MAX];
 	uint16_t poly_aet[RDC_DP_POLY_VERTS];
 
-	/* FLOOD_FILL (flood.c): pending spans, and rows being scanned */
+	/* FLOOD_FILL (flood.c): pending spans, and rows being scanned;
+	 * TRIANGLE (tri.c) keeps a run's depths in flood_row[0] */
 	struct rdc_dp_fseg {
 		int16_t y, xl, xr, dy;
 	} flood_stk[RDC_DP_FLOOD_STACK];

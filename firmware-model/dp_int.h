@@ -47,7 +47,8 @@ void rdc_dp_px_store(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v);
  * Anti-aliasing (aa.c).  rdc_dp_aa_cmd checks, transforms and draws
  * AA_LINE, AA_CIRCLE or AA_ELLIPSE with arguments a; returns an enum
  * rdc_err.  rdc_dp_blend mixes src over dst with weight a / 255 per
- * channel of an RGB format: (s * a + d * (255 - a) + 127) / 255.
+ * channel of an RGB format: (s * a + d * (255 - a) + 127) / 255; for an
+ * indexed format it picks src when a >= RDC_ALPHA_THRESHOLD, else dst.
  */
 uint32_t rdc_dp_aa_cmd(struct rdc_dp *dp, uint32_t op, const uint32_t *a);
 uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst,
@@ -79,8 +80,8 @@ bool dp_pat_value(const struct rdc_dp *dp, int32_t x, int32_t y, uint32_t *v);
  * len is the argument count, a the arguments, flags the header's. */
 uint32_t dp_cmd_set_pattern(struct rdc_dp *dp, uint32_t mode, uint32_t len,
 			    const uint32_t *a);
-uint32_t dp_cmd_polygon(struct rdc_dp *dp, uint32_t op, uint32_t flags,
-			uint32_t len, const uint32_t *a);
+uint32_t dp_cmd_fill_polygon(struct rdc_dp *dp, uint32_t flags, uint32_t len,
+			     const uint32_t *a);
 uint32_t dp_cmd_flood(struct rdc_dp *dp, uint32_t flags, uint32_t len,
 		      const uint32_t *a);
 uint32_t dp_cmd_triangle(struct rdc_dp *dp, uint32_t flags, const uint32_t *a);
@@ -165,6 +166,10 @@ void dp_stroke_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 /* Width 1, no dash: the plain midpoint line. */
 bool dp_pen_plain(const struct rdc_dp *dp);
 uint64_t dp_isqrt(uint64_t v);
+/* Fill a convex polygon of 24.8 vertices by pixel centres, left and top
+ * edges inclusive (the stroker's pieces). */
+void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
+			unsigned int n);
 
 /* ARC (arc.c): sine and cosine of a 1/65536-turn angle in 16.16. */
 int32_t dp_sin(uint32_t a);

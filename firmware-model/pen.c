@@ -16,7 +16,6 @@
 
 #define PEN_FRAC 8 /* fractional bits of the stroke geometry */
 #define PEN_ONE (1 << PEN_FRAC)
-#define PEN_MAX_VERTS 8 /* convex pieces: quads, triangles */
 /* Miters longer than this many half-widths turn into bevels: with unit
  * normals n1, n2 the miter is h * sqrt(2 / (1 + n1.n2)), so a limit of 4
  * is 1 + n1.n2 >= 1/8. */
@@ -63,8 +62,8 @@ uint64_t dp_isqrt(uint64_t v)
  * rightmost crossing: the top-left rule, so two pieces sharing an edge do
  * not both take the pixels on it.
  */
-static void pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
-			    unsigned int n)
+void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
+			unsigned int n)
 {
 	struct rdc_rect c = rdc_dp_eff_clip(dp);
 	int64_t ymin = v[0].y, ymax = v[0].y, y, y0, y1;
@@ -185,7 +184,7 @@ static void pen_cap(struct rdc_dp *dp, struct pen_vec p, struct pen_vec nrm,
 		q[1] = pt_add(q[0], dir, 1);
 		q[3] = pt_add(p, nrm, -1);
 		q[2] = pt_add(q[3], dir, 1);
-		pen_fill_convex(dp, q, 4);
+		dp_pen_fill_convex(dp, q, 4);
 		break;
 	default:
 		break;
@@ -199,7 +198,7 @@ static void pen_body(struct rdc_dp *dp, struct pen_vec a, struct pen_vec b,
 	struct pen_vec q[4] = { pt_add(a, nrm, 1), pt_add(b, nrm, 1),
 			       pt_add(b, nrm, -1), pt_add(a, nrm, -1) };
 
-	pen_fill_convex(dp, q, 4);
+	dp_pen_fill_convex(dp, q, 4);
 }
 
 /* A dot where a stroke has no length: round and square pens leave their
@@ -216,7 +215,7 @@ static void pen_dot(struct rdc_dp *dp, struct pen_vec p)
 			pt_add(pt_add(p, nrm, -1), dir, -1),
 		};
 
-		pen_fill_convex(dp, q, 4);
+		dp_pen_fill_convex(dp, q, 4);
 	} else if (dp->st.pen_cap == RDC_CAP_ROUND) {
 		pen_disk(dp, p, pen_half(dp));
 	}
@@ -259,11 +258,11 @@ static void pen_join(struct rdc_dp *dp, struct pen_vec v, struct pen_vec n1,
 		q[2].x = v.x + s * pen_div_round((n1.x + n2.x) * h2, h2 + dot);
 		q[2].y = v.y + s * pen_div_round((n1.y + n2.y) * h2, h2 + dot);
 		q[3] = pt_add(v, n2, s);
-		pen_fill_convex(dp, q, 4);
+		dp_pen_fill_convex(dp, q, 4);
 		return;
 	}
 	q[2] = pt_add(v, n2, s);
-	pen_fill_convex(dp, q, 3);
+	dp_pen_fill_convex(dp, q, 3);
 }
 
 static bool dash_on(const struct rdc_dp *dp, int64_t g)

@@ -196,10 +196,14 @@ static int32_t fx_row(int64_t v)
 	return (int32_t)div_floor64(v - FX_HALF + FX_ONE - 1, FX_ONE);
 }
 
-/* Put the edge a -> b into the edge table; false if it covers no row. */
+/*
+ * Put the edge a -> b into the edge table's bucket of its first row (no
+ * entry if it covers no row of the clip), widening [*ylo, *yhi) to its
+ * rows.
+ */
 static void et_add(struct rdc_dp *dp, const struct pctx *pc,
 		   const struct rdc_dp_pvert *a, const struct rdc_dp_pvert *b,
-		   uint32_t *ne)
+		   uint32_t *ne, int32_t *ylo, int32_t *yhi)
 {
 	const struct rdc_rect *c = &pc->c;
 	struct rdc_dp_edge *e;
@@ -242,6 +246,8 @@ static void et_add(struct rdc_dp *dp, const struct pctx *pc,
 	e->next = dp->poly_et[r0 - c->y0];
 	dp->poly_et[r0 - c->y0] = (uint16_t)*ne;
 	(*ne)++;
+	*ylo = RDC_MIN(*ylo, r0);
+	*yhi = RDC_MAX(*yhi, r1);
 }
 
 static bool pts_ok(const int32_t *xy, uint32_t n)
@@ -274,7 +280,7 @@ void dp_poly_scan(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
 	struct rdc_dp_pvert *v;
 	uint32_t m, i, ne = 0, na = 0, rows;
 	unsigned int plane, cur = 0;
-	int32_t y;
+	int32_t y, ylo, yhi;
 
 	if (n < 3 || n > RDC_DP_POLY_VERTS || !pts_ok(xy, n))
 		return;
@@ -313,12 +319,15 @@ void dp_poly_scan(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
 	rows = (uint32_t)(pc.c.y1 - pc.c.y0);
 	for (i = 0; i < rows; i++)
 		dp->poly_et[i] = ET_NONE;
+	ylo = pc.c.y1;
+	yhi = pc.c.y0;
 	for (i = 0; i < m; i++)
-		et_add(dp, &pc, &v[i], &v[i + 1 == m ? 0 : i + 1], &ne);
+		et_add(dp, &pc, &v[i], &v[i + 1 == m ? 0 : i + 1], &ne, &ylo,
+		       &yhi);
 	if (!ne)
 		return;
 
-	for (y = pc.c.y0; y < pc.c.y1; y++) {
+	for (y = ylo; y < yhi; y++) {
 		uint32_t k, j, e;
 		int32_t w = 0, start = 0, ps = 0, pe = 0;
 		bool open = false;
@@ -413,13 +422,11 @@ static uint32_t load_points(struct rdc_dp *dp, uint32_t len, const uint32_t *a)
 	return RDC_ERR_NONE;
 }
 
-uint32_t dp_cmd_polygon(struct rdc_dp *dp, uint32_t op, uint32_t flags,
-			uint32_t len, const uint32_t *a)
+uint32_t dp_cmd_fill_polygon(struct rdc_dp *dp, uint32_t flags, uint32_t len,
+			     const uint32_t *a)
 {
 	uint32_t err;
 
-	if (op != RDC_OP_FILL_POLYGON)
-		return RDC_ERR_OPCODE;
 	if (len < 3)
 		return RDC_ERR_LENGTH;
 	if (flags & ~RDC_FILL_NONZERO)

@@ -67,7 +67,9 @@
 #define RDC_REG_ERR_CODE 0x020 /* R   last error (enum rdc_err); cleared by
 				   writing RDC_IRQ_ERROR to IRQ_STATUS */
 #define RDC_REG_ERR_INFO 0x024 /* R   header word of the offending command,
-				   or the register offset for host errors */
+				   the register offset for host errors, or
+				   the VRAM address of a display-list word
+				   that could not be fetched */
 #define RDC_REG_PINS 0x028 /* R   pin levels */
 #define   RDC_PIN_TE BIT(0) /* out: high during vertical blanking */
 #define   RDC_PIN_IRQ BIT(1) /* out: high while an enabled IRQ is raised */
@@ -313,10 +315,15 @@ enum rdc_opcode {
 				   [13:8] offset; the dash continues along
 				   a polyline */
 	RDC_OP_SET_ALPHA = 0x19, /* 0..255: global alpha of BLIT and
-				    HOST_BLIT (255 = opaque) */
+				    HOST_BLIT (255 = opaque): the ROP's
+				    result is blended over DST per channel
+				    in RGB formats; indexed formats draw
+				    only at >= RDC_ALPHA_THRESHOLD */
 	RDC_OP_SET_COLORKEY = 0x1a, /* key pixel value; flags
 				       RDC_COLORKEY_ENABLE: source pixels
-				       equal to the key are not drawn */
+				       equal to the key (compared in the
+				       source format, before the ROP) are
+				       not drawn */
 	RDC_OP_SET_TRANSFORM = 0x1b, /* 9 words m00 m01 m02 m10 m11 m12 m20
 					m21 m22, signed 15.16 fixed point,
 					or none for the identity */
@@ -324,7 +331,9 @@ enum rdc_opcode {
 				       signed 15.16), xy0 xy1 (viewport,
 				       pixels): sets the transform */
 	RDC_OP_SET_AA_RAMP = 0x1d, /* 2..256 CLUT entries from the FG index
-				      for anti-aliasing in indexed formats */
+				      for anti-aliasing in indexed formats:
+				      FG at full coverage, FG + n - 1 the
+				      faintest */
 	RDC_OP_SET_ZBUF = 0x1e, /* base, stride: 16-bit depth surface the
 				   size of DST; flags RDC_Z_TEST | RDC_Z_WRITE;
 				   no words: depth buffering off */

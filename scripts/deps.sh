@@ -5,7 +5,7 @@
 # anyone else it prints the one apt-get line to run and fails.
 set -e
 
-PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev"
+PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev"
 
 missing=""
 for p in $PKGS; do

@@ -16,9 +16,8 @@
 /* Channel fields (shift, width) of the RGB formats, from rdc_regs.h. */
 static unsigned int aa_fields(uint32_t fmt, uint32_t f[4][2])
 {
-	static const uint32_t f565[3][2] = { { 11, 5 }, { 5, 6 }, { 0, 5 } };
-	static const uint32_t f888[4][2] = { { 24, 8 }, { 16, 8 }, { 8, 8 },
-					     { 0, 8 } };
+	static const uint32_t f565[3][2] = {{11, 5}, {5, 6}, {0, 5}};
+	static const uint32_t f888[4][2] = {{24, 8}, {16, 8}, {8, 8}, {0, 8}};
 
 	if (fmt == RDC_FMT_RGB565) {
 		memcpy(f, f565, sizeof(f565));
@@ -33,8 +32,7 @@ static unsigned int aa_fields(uint32_t fmt, uint32_t f[4][2])
 }
 
 /* docs/commands.md: each channel (s a + d (255 - a) + 127) / 255. */
-static uint32_t aa_model_blend(uint32_t fmt, uint32_t s, uint32_t d,
-			       uint32_t a)
+static uint32_t aa_model_blend(uint32_t fmt, uint32_t s, uint32_t d, uint32_t a)
 {
 	uint32_t f[4][2], r = 0, i, n = aa_fields(fmt, f);
 
@@ -94,7 +92,7 @@ enum { P_LINE, P_CIRCLE, P_ELLIPSE };
 
 static void aa_scene(struct tdp *t, uint32_t *seed, uint32_t *hash)
 {
-	struct aa_model m = { 0 };
+	struct aa_model m = {0};
 	uint32_t fmt = tdp_rand(seed) % RDC_FMT_COUNT, i, kind;
 	int32_t x0 = tdp_range(seed, -60, AA_W + 60);
 	int32_t y0 = tdp_range(seed, -60, AA_H + 60);
@@ -103,6 +101,18 @@ static void aa_scene(struct tdp *t, uint32_t *seed, uint32_t *hash)
 	uint32_t rx = (uint32_t)tdp_range(seed, 0, 130);
 	uint32_t ry = (uint32_t)tdp_range(seed, 0, 130);
 	size_t bytes;
+
+	/* now and then a very flat ellipse, long past the surface */
+	if (tdp_rand(seed) % 6 == 0) {
+		rx = (uint32_t)tdp_range(seed, 1, 3000);
+		ry = (uint32_t)tdp_range(seed, 0, 4);
+		if (tdp_rand(seed) & 1) {
+			uint32_t sw = rx;
+
+			rx = ry;
+			ry = sw;
+		}
+	}
 
 	m.s.base = 4096;
 	m.s.width = AA_W;
@@ -232,7 +242,7 @@ static void test_aa_line_intensity(void **state)
 static void test_aa_circle_intensity(void **state)
 {
 	struct tdp *t = *state;
-	static const uint32_t radii[] = { 8, 30, 100, 200 };
+	static const uint32_t radii[] = {8, 30, 100, 200};
 	uint32_t i;
 
 	TDP_CMD(t, RDC_OP_SET_FG, 0x00ffffffu);
@@ -265,7 +275,7 @@ static void test_aa_symmetry(void **state)
 		uint32_t rx = (uint32_t)tdp_range(&seed, 1, 150);
 		uint32_t ry = (uint32_t)tdp_range(&seed, 1, 150);
 		int32_t dx, dy;
-		struct rdc_surface s = { 0, 2560, 640, 480, RDC_FMT_XRGB8888 };
+		struct rdc_surface s = {0, 2560, 640, 480, RDC_FMT_XRGB8888};
 
 		/* a line is the same pixels both ways round */
 		aa_clear(t);
@@ -288,22 +298,22 @@ static void test_aa_symmetry(void **state)
 				uint32_t v = tdp_get(t->vram, &s, 320 + dx,
 						     240 + dy);
 
-				assert_int_equal(v, tdp_get(t->vram, &s,
-							    320 - dx,
-							    240 + dy));
-				assert_int_equal(v, tdp_get(t->vram, &s,
-							    320 + dx,
-							    240 - dy));
+				assert_int_equal(v,
+						 tdp_get(t->vram, &s, 320 - dx,
+							 240 + dy));
+				assert_int_equal(v,
+						 tdp_get(t->vram, &s, 320 + dx,
+							 240 - dy));
 			}
 		aa_clear(t);
 		TDP_CMD(t, RDC_OP_AA_CIRCLE, RDC_XY(320, 240), rx);
 		tdp_drain(t);
 		for (dy = 0; dy <= (int32_t)rx + 1 && dy < 240; dy++)
 			for (dx = 0; dx <= (int32_t)rx + 1 && dx < 240; dx++)
-				assert_int_equal(
-					tdp_get(t->vram, &s, 320 + dx, 240 + dy),
-					tdp_get(t->vram, &s, 320 + dy,
-						240 + dx));
+				assert_int_equal(tdp_get(t->vram, &s, 320 + dx,
+							 240 + dy),
+						 tdp_get(t->vram, &s, 320 + dy,
+							 240 + dx));
 	}
 	free(a);
 }
@@ -312,7 +322,7 @@ static void test_aa_symmetry(void **state)
 static void test_aa_ends(void **state)
 {
 	struct tdp *t = *state;
-	struct rdc_surface s = { 0, 2560, 640, 480, RDC_FMT_XRGB8888 };
+	struct rdc_surface s = {0, 2560, 640, 480, RDC_FMT_XRGB8888};
 
 	aa_clear(t);
 	TDP_CMD(t, RDC_OP_SET_FG, 0x00123456u);
@@ -374,7 +384,8 @@ static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind,
 
 		if (be > end)
 			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES; b++) {
+		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES;
+		     b++) {
 			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
 						  RDC_DRAM_ROW_BYTES);
 
@@ -384,9 +395,8 @@ static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind,
 				*open = row;
 			}
 			if (kind == K_RMW ||
-			    (kind == K_WRITE &&
-			     ((b == first_beat && head) ||
-			      (b == last_beat && tail))))
+			    (kind == K_WRITE && ((b == first_beat && head) ||
+						 (b == last_beat && tail))))
 				rmw++;
 		}
 		cost += beats * RDC_T_BEAT;
@@ -425,8 +435,8 @@ static void test_aa_cycles(void **state)
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (y = 10; y <= 20; y++)
-		want += bus_span(&open, 5 * 4 + (uint64_t)y * 2560, 4, K_RMW,
-				 0, 0);
+		want += bus_span(&open, 5 * 4 + (uint64_t)y * 2560, 4, K_RMW, 0,
+				 0);
 	TDP_CMD(t, RDC_OP_AA_LINE, RDC_XY(5, 20), RDC_XY(5, 10));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -448,8 +458,8 @@ static void test_aa_cycles(void **state)
 static void test_aa_cycles_indexed(void **state)
 {
 	struct tdp *t = *state;
-	struct rdc_surface s8 = { 0, 640, 640, 480, RDC_FMT_I8 };
-	struct rdc_surface s4 = { 0, 320, 640, 480, RDC_FMT_I4 };
+	struct rdc_surface s8 = {0, 640, 640, 480, RDC_FMT_I8};
+	struct rdc_surface s4 = {0, 320, 640, 480, RDC_FMT_I4};
 	uint32_t open;
 	uint64_t want;
 
@@ -485,8 +495,8 @@ static void aa_expect(struct tdp *t, uint32_t err, uint32_t h0)
 static void test_aa_bad_args(void **state)
 {
 	struct tdp *t = *state;
-	const uint32_t one[1] = { RDC_XY(5, 5) };
-	const uint32_t three[3] = { RDC_XY(5, 5), RDC_XY(9, 9), 0 };
+	const uint32_t one[1] = {RDC_XY(5, 5)};
+	const uint32_t three[3] = {RDC_XY(5, 5), RDC_XY(9, 9), 0};
 	uint32_t h0;
 
 	aa_clear(t);

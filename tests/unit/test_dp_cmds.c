@@ -88,9 +88,11 @@ static void test_bad_opcodes(void **state)
 		     RDC_XY(0, 0), RDC_WH(100, 100));
 	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x09, 0, 0));
 	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x39, 0, 2), fill, 0);
-	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(RDC_OP_CALL, 0, 1), 0);
-	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(RDC_OP_RET, 0, 0));
-	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(RDC_OP_JUMP, 0, 1), 0);
+	/* display-list control with nothing to call or return to */
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_CALL, 0, 1), 2);
+	EXPECT_ERROR(t, RDC_ERR_STACK, RDC_CMD(RDC_OP_RET, 0, 0));
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_JUMP, 0, 1),
+		     0xfffffffcu);
 	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0xff, 0xff, 0));
 	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(1, 1));
 	tdp_drain(t);

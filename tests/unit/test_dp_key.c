@@ -7,16 +7,15 @@
  */
 #include "test_dp_common.h"
 
-#define KS_W 96
-#define KS_H 64
+#define KS_W	 96
+#define KS_H	 64
 #define SRC_BASE 0x100000u
 #define DST_BASE 0x200000u
 
 static uint32_t km_fields(uint32_t fmt, uint32_t f[4][2])
 {
-	static const uint32_t f565[3][2] = { { 11, 5 }, { 5, 6 }, { 0, 5 } };
-	static const uint32_t f888[4][2] = { { 24, 8 }, { 16, 8 }, { 8, 8 },
-					     { 0, 8 } };
+	static const uint32_t f565[3][2] = {{11, 5}, {5, 6}, {0, 5}};
+	static const uint32_t f888[4][2] = {{24, 8}, {16, 8}, {8, 8}, {0, 8}};
 
 	if (fmt == RDC_FMT_RGB565) {
 		memcpy(f, f565, sizeof(f565));
@@ -77,8 +76,8 @@ static void kscene_random(struct kscene *k, uint32_t *seed)
 	k->key_on = tdp_rand(seed) % 4 != 0;
 	k->alpha = tdp_rand(seed) % 3 ? tdp_rand(seed) % 256 : 255;
 	k->rop = tdp_rand(seed) % 3 ? RDC_ROP_COPY : tdp_rand(seed) % 16;
-	k->src = (struct rdc_surface){ SRC_BASE, 0, KS_W, KS_H, k->fmt };
-	k->dst = (struct rdc_surface){ DST_BASE, 0, KS_W, KS_H, k->fmt };
+	k->src = (struct rdc_surface){SRC_BASE, 0, KS_W, KS_H, k->fmt};
+	k->dst = (struct rdc_surface){DST_BASE, 0, KS_W, KS_H, k->fmt};
 	k->src.stride = (KS_W * tdp_bpp(k->fmt) + 7) / 8;
 	k->dst.stride = k->src.stride + 8;
 	k->sx = tdp_range(seed, -10, KS_W - 5);
@@ -98,8 +97,8 @@ static void kscene_fill(struct tdp *t, struct kscene *k, uint32_t *seed)
 	k->key = tdp_rand(seed);
 	for (y = 0; y < KS_H; y++)
 		for (x = 0; x < KS_W; x++) {
-			uint32_t v = tdp_rand(seed) % 3 ? tdp_rand(seed) :
-							  k->key;
+			uint32_t v =
+				tdp_rand(seed) % 3 ? tdp_rand(seed) : k->key;
 
 			tdp_put(t->vram, &k->src, x, y, v & mask);
 			tdp_put(t->vram, &k->dst, x, y, tdp_rand(seed));
@@ -112,8 +111,8 @@ static void kscene_state(struct tdp *t, const struct kscene *k)
 	tdp_set_surface(t, RDC_OP_SET_DST, &k->dst);
 	TDP_CMD(t, RDC_OP_SET_ROP, k->rop);
 	TDP_CMD(t, RDC_OP_SET_ALPHA, k->alpha);
-	tdp_cmd(t, RDC_OP_SET_COLORKEY, k->key_on ? RDC_COLORKEY_ENABLE : 0,
-		1, &k->key);
+	tdp_cmd(t, RDC_OP_SET_COLORKEY, k->key_on ? RDC_COLORKEY_ENABLE : 0, 1,
+		&k->key);
 }
 
 /* The whole expected VRAM after the blit, source pixel by source pixel. */
@@ -124,8 +123,10 @@ static void kscene_model(const struct kscene *k, uint8_t *m,
 
 	for (j = 0; j < k->h; j++)
 		for (i = 0; i < k->w; i++) {
-			int32_t sx = k->sx + (int32_t)i, sy = k->sy + (int32_t)j;
-			int32_t dx = k->dx + (int32_t)i, dy = k->dy + (int32_t)j;
+			int32_t sx = k->sx + (int32_t)i,
+				sy = k->sy + (int32_t)j;
+			int32_t dx = k->dx + (int32_t)i,
+				dy = k->dy + (int32_t)j;
 			uint32_t v;
 
 			if (sx < 0 || sy < 0 || sx >= KS_W || sy >= KS_H ||
@@ -221,7 +222,7 @@ static void test_key_host_vs_model(void **state)
 static void test_key_extremes(void **state)
 {
 	struct tdp *t = *state;
-	struct rdc_surface s = { 0, 2560, 640, 480, RDC_FMT_XRGB8888 };
+	struct rdc_surface s = {0, 2560, 640, 480, RDC_FMT_XRGB8888};
 	const uint32_t key = 0x00ff00ffu;
 
 	tdp_put(t->vram, &s, 0, 0, 0x00102030u);
@@ -251,7 +252,7 @@ static void test_key_extremes(void **state)
 static void test_key_bad_args(void **state)
 {
 	struct tdp *t = *state;
-	const uint32_t two[2] = { 0, 0 };
+	const uint32_t two[2] = {0, 0};
 
 	TDP_CMD(t, RDC_OP_SET_ALPHA, 256);
 	tdp_drain(t);
@@ -287,7 +288,8 @@ static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind)
 
 		if (be > end)
 			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES; b++) {
+		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES;
+		     b++) {
 			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
 						  RDC_DRAM_ROW_BYTES);
 

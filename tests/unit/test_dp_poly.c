@@ -37,10 +37,12 @@ static void test_random_vs_ref(void **state)
 		uint32_t fmt = tdp_rand(&rng) % RDC_FMT_COUNT;
 		struct rdc_surface s = tpp_surface(fmt, W, H);
 		uint32_t n = (uint32_t)tdp_range(&rng, 3, 14), fg, fl;
-		int32_t xy[2 * 14], span = iter % 5 == 0 ? 16000 : 30;
+		int32_t xy[2 * 120], span = iter % 5 == 0 ? 16000 : 30;
 		struct rdc_rect c = { 0, 0, W, H };
 		int32_t x, y;
 
+		if (iter % 7 == 3) /* many edges active on a row */
+			n = 120;
 		tpp_dst(t, &s);
 		random_poly(&rng, xy, n, span);
 		if (span > 1000) /* keep some of it on screen */

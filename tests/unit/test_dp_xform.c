@@ -273,6 +273,30 @@ static void test_translation_property(void **state)
 	tdp_free(u);
 }
 
+/* State commands cost their fetch and decode only. */
+static void test_cycles(void **state)
+{
+	struct tdp *t = *state;
+
+	set_matrix(t, ONE, 0, 0, 0, ONE, 0, 0, 0, ONE);
+	tdp_drain(t);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES),
+			 10 * RDC_T_FIFO_WORD + RDC_T_DECODE);
+	TDP_CMD(t, RDC_OP_SET_VIEWPORT, 0, 0, ONE, ONE, RDC_XY(0, 0),
+		RDC_XY(10, 10));
+	tdp_drain(t);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES),
+			 7 * RDC_T_FIFO_WORD + RDC_T_DECODE);
+	TDP_CMD(t, RDC_OP_SET_PEN, 3);
+	tdp_drain(t);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES),
+			 2 * RDC_T_FIFO_WORD + RDC_T_DECODE);
+	TDP_CMD(t, RDC_OP_SET_DASH, 3, 2);
+	tdp_drain(t);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES),
+			 3 * RDC_T_FIFO_WORD + RDC_T_DECODE);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -280,6 +304,7 @@ int main(void)
 		TDP_TEST(test_known_points),
 		TDP_TEST(test_viewport),
 		TDP_TEST(test_translation_property),
+		TDP_TEST(test_cycles),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

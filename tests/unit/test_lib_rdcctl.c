@@ -83,8 +83,11 @@ static void test_errors_and_exit_codes(void **state)
 	assert_int_equal(ctl("frobnicate"), 2);
 	assert_int_equal(ctl("run --bogus x"), 2);
 	assert_int_equal(ctl("run /nonexistent.rdl"), 1);
-	assert_int_equal(ctl("--uri unix:/x stats"), 1);
+	assert_int_equal(ctl("--uri usb: stats"), 1);
 	assert_non_null(strstr(out, "not supported"));
+	/* nobody listening there */
+	assert_int_equal(ctl("--connect unix:/nonexistent-dir/x stats"), 1);
+	assert_non_null(strstr(out, "transport failure"));
 	assert_int_equal(ctl("--uri nope: stats"), 1);
 
 	fd = mkstemp(path);

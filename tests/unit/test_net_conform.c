@@ -253,7 +253,7 @@ static void test_conform_scenes(void **state)
 	char *list[CONF_MAX_SCENES];
 	DIR *dir = opendir(CONF_SCENE_DIR);
 	struct dirent *e;
-	size_t n = 0, failed = 0;
+	size_t n = 0, failed = 0, compared = 0;
 
 	(void)state;
 	assert_non_null(dir);
@@ -274,8 +274,9 @@ static void test_conform_scenes(void **state)
 		struct netd d;
 
 		scene_run("sim:", list[i], &ref);
-		if (ref.ret) /* a scene another change broke: not ours */
+		if (ref.ret) /* fails on sim: too: test_golden's business */
 			continue;
+		compared++;
 		for (int tcp = 0; tcp < 2; tcp++) {
 			assert_int_equal(netd_start(&d, conf_stepped), 0);
 			scene_run(tcp ? d.tcp_uri : d.unix_uri, list[i], &got);
@@ -292,6 +293,7 @@ static void test_conform_scenes(void **state)
 		}
 	}
 	assert_int_equal(failed, 0);
+	assert_true(compared > n / 2);
 }
 
 int main(void)

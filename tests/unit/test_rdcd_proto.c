@@ -355,6 +355,30 @@ static void test_many_clients(void **state)
 					 RDC_ST_OK);
 		}
 	}
+	/* the last one floods requests and never reads a reply */
+	fds[LOAD_CLIENTS - 1] = hello_fd(&d, 0);
+	assert_true(fds[LOAD_CLIENTS - 1] >= 0);
+	{
+		uint8_t ping[RDC_PROTO_HDR_SIZE];
+		struct rdc_proto_hdr ph = {.type = RDC_MSG_PING};
+		int flags = fcntl(fds[LOAD_CLIENTS - 1], F_GETFL);
+		int sent = 0;
+
+		rdc_proto_hdr_encode(ping, &ph);
+		fcntl(fds[LOAD_CLIENTS - 1], F_SETFL, flags | O_NONBLOCK);
+		/* until the daemon stops taking them: it throttles, not grows */
+		for (int k = 0; k < 2000000; k++) {
+			if (send(fds[LOAD_CLIENTS - 1], ping, sizeof(ping),
+				 MSG_NOSIGNAL) != (ssize_t)sizeof(ping)) {
+				netd_sleep_ms(1);
+				if (send(fds[LOAD_CLIENTS - 1], ping,
+					 sizeof(ping), MSG_NOSIGNAL) < 0)
+					break;
+			}
+			sent++;
+		}
+		assert_true(sent < 2000000);
+	}
 	b = rdc_batch_new();
 	assert_non_null(b);
 	for (uint32_t round = 1; round <= 20; round++) {
@@ -406,7 +430,7 @@ static void test_many_clients(void **state)
 	}
 	rdc_batch_free(b);
 	rdc_close(dev);
-	for (int i = 0; i < LOAD_CLIENTS - 1; i++)
+	for (int i = 0; i < LOAD_CLIENTS; i++)
 		close(fds[i]);
 	assert_int_equal(netd_stop(&d), 0);
 }
@@ -417,7 +441,7 @@ static void test_subscribe(void **state)
 	static const char *const args[] = {"--stepped", "-q", NULL};
 	static uint32_t grab[640 * 480], ev_pix[640 * 480];
 	uint32_t w, h, crc_grab = 0;
-	rdc_dev *dev = NULL, *obs[3];
+	rdc_dev *dev = NULL, *obs[3], *irq = NULL;
 	struct rdc_event ev;
 	struct netd d;
 	rdc_batch *b;
@@ -434,6 +458,8 @@ static void test_subscribe(void **state)
 	}
 	assert_int_equal(rdc_subscribe(obs[0], RDC_EVENT_FRAME, 0, 0),
 			 RDC_E_INVAL);
+	assert_int_equal(rdc_open(uri, &irq), 0);
+	assert_int_equal(rdc_subscribe(irq, RDC_EVENT_IRQ, 0, 0), 0);
 	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60,
 				      RDC_FMT_XRGB8888, 0),
 			 0);
@@ -475,6 +501,19 @@ static void test_subscribe(void **state)
 		assert_int_equal(ev.dropped, 0);
 		rdc_close(obs[enc]);
 	}
+	/* interrupts: the fence of rdc_finish, the vblanks of frame_wait */
+	{
+		uint32_t seen = 0;
+
+		while (rdc_event_next(irq, &ev, NULL, 0, 2000) == 0) {
+			assert_int_equal(ev.type, RDC_EVENT_IRQ);
+			assert_true(ev.time > 0);
+			seen |= ev.irq;
+		}
+		assert_true(seen & RDC_IRQ_VBLANK);
+		assert_true(seen & RDC_IRQ_FENCE);
+	}
+	rdc_close(irq);
 	rdc_batch_free(b);
 	rdc_close(dev);
 	assert_int_equal(netd_stop(&d), 0);

@@ -27,7 +27,13 @@ mount -t 9p -o trans=virtio,version=9p2000.L,ro,cache=loose hostroot /host ||
 mount --bind /proc /host/proc
 mount --bind /sys /host/sys
 mount --bind /dev /host/dev
-mount -t tmpfs tmp /host/tmp
+# Scratch space for the tests: a tmpfs over /tmp, or over /run when the
+# tree itself lives under /tmp (it would be hidden).
+case "$RDC_TREE/ $RDC_BUILD/" in
+/tmp/* | *" /tmp/"*) scratch=/run ;;
+*) scratch=/tmp ;;
+esac
+mount -t tmpfs tmp "/host$scratch"
 
 for t in $RDC_TESTS; do
 	f=/host$RDC_TREE/tests/vm/tests/$t.sh
@@ -45,7 +51,7 @@ for t in $RDC_TESTS; do
 	if [ $rc = 0 ]; then
 		( chroot /host /usr/bin/env -i \
 			PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
-			HOME=/tmp TMPDIR=/tmp RDC_TREE="$RDC_TREE" \
+			HOME=$scratch TMPDIR=$scratch RDC_TREE="$RDC_TREE" \
 			RDC_BUILD="$RDC_BUILD" /bin/sh "$RDC_TREE/tests/vm/tests/$t.sh" 2>&1
 		  echo $? >/tmp/rc ) | sed "s/^/RDC-VM-OUT $t: /"
 		rc=$(cat /tmp/rc)

@@ -9,6 +9,7 @@ RDCCTL=$B/rdcctl
 READ=$B/v4l2_read
 SCENES=$RDC_TREE/tests/vm/scenes
 DEV=/dev/video0
+T=${TMPDIR:-/tmp}
 n=0
 failed=0
 WRITER=""
@@ -18,18 +19,18 @@ check() {
 	desc=$1
 	shift
 	n=$((n + 1))
-	if "$@" >/tmp/check.out 2>&1; then
+	if "$@" >$T/check.out 2>&1; then
 		echo "ok $n - $desc"
 	else
 		echo "not ok $n - $desc"
 		failed=$((failed + 1))
 	fi
-	sed 's/^/    /' /tmp/check.out
+	sed 's/^/    /' $T/check.out
 }
 
 # The frame source writing into $DEV; arguments are rdcctl stream's.
 writer_start() {
-	"$RDCCTL" stream --v4l2 "$DEV" "$@" >/tmp/writer.log 2>&1 &
+	"$RDCCTL" stream --v4l2 "$DEV" "$@" >$T/writer.log 2>&1 &
 	WRITER=$!
 }
 
@@ -41,7 +42,7 @@ writer_stop() {
 	[ -n "$WRITER" ] || return 0
 	kill "$WRITER" 2>/dev/null
 	wait "$WRITER"
-	sed 's/^/    writer: /' /tmp/writer.log
+	sed 's/^/    writer: /' $T/writer.log
 	WRITER=""
 }
 

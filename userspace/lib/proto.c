@@ -273,8 +273,15 @@ size_t rdc_proto_frame_encode(uint8_t *out, size_t cap, uint32_t enc,
 	case RDC_ENC_RAW:
 		if (cap < n * 4)
 			return 0;
+		if (!n)
+			return 0;
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+		/* the wire order already: frames are big, skip the loop */
+		memcpy(out, pix, n * 4);
+#else
 		for (size_t i = 0; i < n; i++)
 			rdc_proto_put32(out + 4 * i, pix[i]);
+#endif
 		return n * 4;
 	case RDC_ENC_RLE:
 		return rle_encode(out, cap, pix, n, &runs);
@@ -341,8 +348,13 @@ int rdc_proto_frame_decode(uint32_t *pix, uint32_t w, uint32_t h,
 	case RDC_ENC_RAW:
 		if (len != n * 4)
 			return -1;
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+		if (n)
+			memcpy(pix, data, n * 4);
+#else
 		for (size_t i = 0; i < n; i++)
 			pix[i] = rdc_proto_get32(data + 4 * i);
+#endif
 		return 0;
 	case RDC_ENC_RLE:
 		if (n == 0)

@@ -89,7 +89,8 @@ static int stream_parse(int argc, char **argv, struct stream_opts *o)
 			return -1;
 		}
 		i++;
-		if (!strcmp(a, "--from") || !strcmp(a, "--uri")) {
+		if (!strcmp(a, "--from") || !strcmp(a, "--uri") ||
+		    !strcmp(a, "--connect")) {
 			o->uri = v;
 		} else if (!strcmp(a, "--v4l2")) {
 			o->v4l2 = v;
@@ -340,17 +341,21 @@ int rdcctl_stream_main(int argc, char **argv)
 	struct sigaction sa;
 	rdc_dev *dev;
 
-	/* Leading --uri options belong to rdcctl; then the command. */
-	while (i < argc && (!strcmp(argv[i], "--uri") ||
-			    !strncmp(argv[i], "--uri=", 6))) {
-		if (argv[i][5] == '=') {
-			o.uri = argv[i] + 6;
+	/* Leading --uri/--connect options belong to rdcctl; then the
+	 * command. */
+	while (i < argc) {
+		const char *a = argv[i];
+
+		if (!strncmp(a, "--uri=", 6) || !strncmp(a, "--connect=", 10)) {
+			o.uri = strchr(a, '=') + 1;
 			i++;
-		} else if (i + 1 < argc) {
+		} else if (!strcmp(a, "--uri") || !strcmp(a, "--connect")) {
+			if (i + 1 >= argc)
+				return -1;
 			o.uri = argv[i + 1];
 			i += 2;
 		} else {
-			return -1;
+			break;
 		}
 	}
 	if (i >= argc || strcmp(argv[i], "stream"))

@@ -351,8 +351,10 @@ static uint8_t *rdcd_reply(struct rdcd *d, struct rdcd_client *c,
 		return NULL;
 	}
 	rdcd_obuf_hdr(b, req->type, RDC_MSGF_REPLY, req->seq, status);
-	if (n)
+	if (n && p)
 		memcpy(b->data + RDC_PROTO_HDR_SIZE, p, n);
+	else if (n)
+		memset(b->data + RDC_PROTO_HDR_SIZE, 0, n);
 	rdcd_queue(c, b);
 	/* not worth a line: the answers of ordinary polling and sizing */
 	if (status != RDC_ST_OK && status != RDC_ST_NOFRAME &&

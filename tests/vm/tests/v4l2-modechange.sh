@@ -14,6 +14,6 @@ check "reader sees 320x200 then 640x480, every frame exact" \
 	--stall-ms 400 --timeout 120
 check "writer still running" writer_alive
 writer_stop
-grep -q 'renegotiations [2-9]' /tmp/writer.log
+grep -q 'renegotiations [2-9]' $T/writer.log
 check "writer renegotiated" [ $? -eq 0 ]
 finish

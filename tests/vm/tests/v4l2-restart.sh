@@ -21,13 +21,13 @@ check "a new reader gets 20 exact frames" \
 	"$READ" --device "$DEV" --expect "$scene" --frames 20 --timeout 60
 
 "$READ" --device "$DEV" --expect "$scene" --frames 80 --stall-ms 3000 \
-	--timeout 90 >/tmp/reader.log 2>&1 &
+	--timeout 90 >$T/reader.log 2>&1 &
 reader=$!
 sleep 1
 writer_stop
 writer_start --script "$scene"
 wait $reader
 check "a reader across a writer restart gets 80 exact frames" [ $? -eq 0 ]
-sed 's/^/    reader: /' /tmp/reader.log
+sed 's/^/    reader: /' $T/reader.log
 check "restarted writer streams" writer_alive
 finish

@@ -8,10 +8,10 @@
 
 scene=$SCENES/stream_a.rdl
 ffmpeg_frames() {
-	rm -f /tmp/ff.raw
+	rm -f $T/ff.raw
 	ffmpeg -nostdin -hide_banner -loglevel error -f v4l2 -i "$DEV" \
-		-frames:v 10 -c:v rawvideo -f rawvideo -y /tmp/ff.raw &&
-		"$READ" --raw /tmp/ff.raw --format "$1" --expect "$scene" --frames 10
+		-frames:v 10 -c:v rawvideo -f rawvideo -y $T/ff.raw &&
+		"$READ" --raw $T/ff.raw --format "$1" --expect "$scene" --frames 10
 }
 
 for fmt in bgr32 xrgb32 rgb24 yuyv; do

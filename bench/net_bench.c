@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * rdcd speed, over a UNIX socket, one JSON line per figure:
+ *  - batched submit throughput: small commands (1x1 FILL_RECT with its
+ *    colour, 4 words) per wall second, the daemon running unpaced;
+ *  - round trip of a register read: mean, median and 99th percentile;
+ *  - a subscriber to 1024x768 frames, daemon unpaced: frames received
+ *    per wall second and frames dropped for it.
+ * Usage: net_bench PATH/TO/rdcd  (`make bench-net` builds and runs it).
+ */
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "rdc.h"
+
+#define BENCH_BATCH 1024     /* commands per submit */
+#define BENCH_SUBMIT_S 2.0   /* seconds of submitting */
+#define BENCH_RTT_N 20000    /* register reads */
+#define BENCH_FRAMES_S 3.0   /* seconds of watching frames */
+
+static double now_s(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static pid_t start_daemon(const char *rdcd, const char *dir, char *uri,
+			  size_t cap)
+{
+	char sock[200], ready[200], lis[220];
+	pid_t pid;
+
+	snprintf(sock, sizeof(sock), "%s/rdc.sock", dir);
+	snprintf(ready, sizeof(ready), "%s/ready", dir);
+	snprintf(lis, sizeof(lis), "unix:%s", sock);
+	snprintf(uri, cap, "unix:%s", sock);
+	pid = fork();
+	if (pid == 0) {
+		execl(rdcd, rdcd, "--fast", "-q", "--listen", lis,
+		      "--ready-file", ready, (char *)NULL);
+		_exit(127);
+	}
+	for (int i = 0; i < 1000; i++) {
+		struct timespec ts = {0, 10000000};
+
+		if (access(ready, F_OK) == 0)
+			return pid;
+		nanosleep(&ts, NULL);
+	}
+	kill(pid, SIGTERM);
+	return -1;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return x < y ? -1 : x > y;
+}
+
+static void bench_submit(rdc_dev *dev)
+{
+	rdc_batch *b = rdc_batch_new();
+	double t0, t;
+	uint64_t cmds = 0;
+
+	for (int i = 0; i < BENCH_BATCH; i++) {
+		rdc_batch_fg(b, (uint32_t)i);
+		rdc_batch_fill_rect(b, i % 1000, i % 700, 1, 1);
+	}
+	t0 = now_s();
+	do {
+		size_t n;
+		const uint32_t *w = rdc_batch_words(b, &n);
+
+		if (rdc_submit(dev, w, n))
+			break;
+		cmds += 2 * BENCH_BATCH;
+		t = now_s();
+	} while (t - t0 < BENCH_SUBMIT_S);
+	rdc_finish(dev);
+	t = now_s();
+	printf("{\"bench\":\"submit\",\"transport\":\"unix\",\"batch_cmds\":%d,"
+	       "\"commands\":%llu,\"seconds\":%.3f,\"commands_per_s\":%.0f}\n",
+	       2 * BENCH_BATCH, (unsigned long long)cmds, t - t0,
+	       (double)cmds / (t - t0));
+	rdc_batch_free(b);
+}
+
+static void bench_rtt(rdc_dev *dev)
+{
+	static double lat[BENCH_RTT_N];
+	double sum = 0;
+	uint32_t v;
+
+	for (int i = 0; i < BENCH_RTT_N; i++) {
+		double t0 = now_s();
+
+		rdc_reg_read(dev, RDC_REG_ID, &v);
+		lat[i] = now_s() - t0;
+		sum += lat[i];
+	}
+	qsort(lat, BENCH_RTT_N, sizeof(*lat), cmp_double);
+	printf("{\"bench\":\"reg_read_rtt\",\"transport\":\"unix\",\"n\":%d,"
+	       "\"mean_us\":%.2f,\"p50_us\":%.2f,\"p99_us\":%.2f}\n",
+	       BENCH_RTT_N, sum / BENCH_RTT_N * 1e6, lat[BENCH_RTT_N / 2] * 1e6,
+	       lat[BENCH_RTT_N * 99 / 100] * 1e6);
+}
+
+static void bench_frames(const char *uri)
+{
+	static uint32_t pix[1024 * 768];
+	char obs_uri[300];
+	rdc_dev *obs;
+	struct rdc_event ev = {0};
+	uint64_t first = 0, got = 0;
+	double t0, t;
+
+	snprintf(obs_uri, sizeof(obs_uri), "%s?observe", uri);
+	if (rdc_open(obs_uri, &obs))
+		return;
+	for (uint32_t enc = 0; enc <= RDC_FRAME_DELTA; enc++) {
+		rdc_subscribe(obs, RDC_EVENT_FRAME, 1, enc);
+		got = 0;
+		ev.dropped = 0;
+		/* the first frame starts the clock */
+		if (rdc_event_next(obs, &ev, pix, RDC_ARRAY_SIZE(pix), 5000))
+			break;
+		first = ev.number;
+		{
+			uint32_t d0 = ev.dropped;
+
+			t0 = now_s();
+			do {
+				if (rdc_event_next(obs, &ev, pix,
+						   RDC_ARRAY_SIZE(pix), 5000))
+					break;
+				got++;
+				t = now_s();
+			} while (t - t0 < BENCH_FRAMES_S);
+			printf("{\"bench\":\"frames\",\"transport\":\"unix\","
+			       "\"size\":\"1024x768\",\"encoding\":\"%s\","
+			       "\"received\":%llu,\"seconds\":%.3f,"
+			       "\"received_fps\":%.1f,\"simulated_fps\":%.1f,"
+			       "\"dropped\":%u,\"ok_60fps_no_drops\":%s}\n",
+			       enc == 0 ? "raw" : enc == 1 ? "rle" : "delta",
+			       (unsigned long long)got, t - t0,
+			       (double)got / (t - t0),
+			       (double)(ev.number - first) / (t - t0),
+			       ev.dropped - d0,
+			       (double)got / (t - t0) >= 60.0 &&
+					       ev.dropped == d0
+				       ? "true"
+				       : "false");
+		}
+	}
+	rdc_close(obs);
+}
+
+int main(int argc, char **argv)
+{
+	char dir[] = "/tmp/rdc-bench-XXXXXX", uri[300], path[300];
+	rdc_dev *dev;
+	pid_t pid;
+	int st;
+
+	if (argc != 2) {
+		fprintf(stderr, "usage: net_bench PATH/TO/rdcd\n");
+		return 2;
+	}
+	if (!mkdtemp(dir))
+		return 1;
+	pid = start_daemon(argv[1], dir, uri, sizeof(uri));
+	if (pid < 0 || rdc_open(uri, &dev)) {
+		fprintf(stderr, "net_bench: cannot start %s\n", argv[1]);
+		return 1;
+	}
+	rdc_mode_set(dev, RDC_PRESET_1024x768_60, RDC_FMT_XRGB8888, 0);
+	rdc_finish(dev);
+	bench_submit(dev);
+	bench_rtt(dev);
+	{
+		/* something on screen, so that frames are not uniform */
+		rdc_batch *b = rdc_batch_new();
+
+		for (int i = 0; i < 200; i++) {
+			rdc_batch_fg(b, (uint32_t)i * 0x010203u);
+			rdc_batch_line(b, i * 5, 0, 1023 - i * 5, 767);
+		}
+		rdc_batch_text(b, 10, 10, "rdcd bench", 10, 0);
+		rdc_batch_submit(dev, b);
+		rdc_batch_free(b);
+		rdc_finish(dev);
+	}
+	bench_frames(uri);
+	rdc_close(dev);
+	kill(pid, SIGTERM);
+	waitpid(pid, &st, 0);
+	snprintf(path, sizeof(path), "%s/ready", dir);
+	unlink(path);
+	rmdir(dir);
+	return 0;
+}
