@@ -412,7 +412,7 @@ static uint32_t list_enter(struct rdc_dp *dp, uint32_t op, uint32_t addr)
 	return RDC_ERR_NONE;
 }
 
-static uint32_t list_ret(struct rdc_dp *dp)
+static uint32_t list_return(struct rdc_dp *dp)
 {
 	if (!dp->list_depth)
 		return RDC_ERR_STACK;
@@ -587,7 +587,7 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 	case RDC_OP_JUMP:
 		return list_enter(dp, op, a[0]);
 	case RDC_OP_RET:
-		return list_ret(dp);
+		return list_return(dp);
 	default:
 		break;
 	}

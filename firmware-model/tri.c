@@ -59,10 +59,12 @@ uint32_t dp_cmd_set_zbuf(struct rdc_dp *dp, uint32_t flags, uint32_t len,
 	if (flags & ~(RDC_Z_TEST | RDC_Z_WRITE))
 		return RDC_ERR_ARG;
 	if (len == 0) {
+		if (flags)
+			return RDC_ERR_ARG;
 		dp->st.z_base = 0;
 		dp->st.z_stride = 0;
 		dp->st.z_flags = 0;
-		return flags ? RDC_ERR_ARG : RDC_ERR_NONE;
+		return RDC_ERR_NONE;
 	}
 	if (len != 2)
 		return RDC_ERR_LENGTH;

@@ -340,6 +340,24 @@ static void test_bad_args(void **state)
 	s.height = H;
 	tdp_set_surface(t, RDC_OP_SET_DST, &s);
 
+	/* a rejected SET_ZBUF keeps the depth surface it had */
+	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_WRITE, 2,
+		(const uint32_t[]){ ZBASE, 2 * W });
+	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST, 0, NULL);
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_ARG);
+	tdp_clear_err(t);
+	tdp_cmd(t, RDC_OP_SET_ZBUF, 0, 2, (const uint32_t[]){ big, 2 * W });
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_SURFACE);
+	tdp_clear_err(t);
+	TDP_CMD(t, RDC_OP_CLEAR_Z, 7);
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), 0);
+	assert_int_equal(zget(t, 2 * W, W - 1, H - 1), 7);
+	tdp_cmd(t, RDC_OP_SET_ZBUF, 0, 0, NULL);
+	tdp_drain(t);
+
 	/* degenerate triangles: nothing, no error */
 	tdp_clear_err(t);
 	memcpy(a, ok, sizeof(a));

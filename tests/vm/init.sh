@@ -4,7 +4,8 @@
 # host's root read-only over 9p at /host, then for each test load the
 # modules its "# vm-module:" lines name, run it chrooted into the host
 # root, unload them, and report on the console:
-#   RDC-VM-OUT NAME: a line the test printed
+#   RDC-VM-BEGIN NAME
+#   (what the test printed)
 #   RDC-VM-RESULT NAME STATUS
 /bin/busybox --install -s /bin
 export PATH=/bin
@@ -23,7 +24,7 @@ for m in virtio_pci 9pnet_virtio 9p; do
 	modprobe "$m"
 done
 mount -t 9p -o trans=virtio,version=9p2000.L,ro,cache=loose hostroot /host ||
-	echo "RDC-VM-OUT init: cannot mount the host's root"
+	echo "cannot mount the host's root"
 mount --bind /proc /host/proc
 mount --bind /sys /host/sys
 mount --bind /dev /host/dev
@@ -39,25 +40,26 @@ for t in $RDC_TESTS; do
 	f=/host$RDC_TREE/tests/vm/tests/$t.sh
 	loaded=""
 	rc=0
+	echo "RDC-VM-BEGIN $t"
 	sed -n 's/^# vm-module: *//p' "$f" >/tmp/mods
 	while read -r name args; do
 		if modprobe "$name" $args; then
 			loaded="$name $loaded"
 		else
-			echo "RDC-VM-OUT $t: modprobe $name failed"
+			echo "modprobe $name failed"
 			rc=1
 		fi
 	done </tmp/mods
 	if [ $rc = 0 ]; then
-		( chroot /host /usr/bin/env -i \
+		chroot /host /usr/bin/env -i \
 			PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
 			HOME=$scratch TMPDIR=$scratch RDC_TREE="$RDC_TREE" \
-			RDC_BUILD="$RDC_BUILD" /bin/sh "$RDC_TREE/tests/vm/tests/$t.sh" 2>&1
-		  echo $? >/tmp/rc ) | sed "s/^/RDC-VM-OUT $t: /"
-		rc=$(cat /tmp/rc)
+			RDC_BUILD="$RDC_BUILD" /bin/sh "$RDC_TREE/tests/vm/tests/$t.sh" \
+			</dev/null 2>&1
+		rc=$?
 	fi
 	for m in $loaded; do
-		modprobe -r "$m" || echo "RDC-VM-OUT $t: cannot unload $m"
+		modprobe -r "$m" || echo "cannot unload $m"
 	done
 	echo "RDC-VM-RESULT $t $rc"
 done

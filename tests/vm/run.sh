@@ -16,6 +16,8 @@
 # RDC_VM_TESTS="name ..." runs a subset; RDC_VM_TIMEOUT bounds the boot
 # (seconds, default 900); RDC_VM_ACCEL=tcg|kvm overrides the probe.
 set -u
+# Run from make: its variables (O=, -j) must not reach Kbuild's make.
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 
 auto=0
 if [ "${1:-}" = --auto ]; then
@@ -159,7 +161,10 @@ set -- $TESTS
 echo "1..$#"
 for n in $TESTS; do
 	i=$((i + 1))
-	sed -n "s/^RDC-VM-OUT $n: /# /p" "$LOG" | tr -d '\r'
+	tr -d '\r' <"$LOG" | awk -v t="$n" '
+		$1 == "RDC-VM-RESULT" && $2 == t { on = 0 }
+		on { print "# " $0 }
+		$1 == "RDC-VM-BEGIN" && $2 == t { on = 1 }'
 	res=$(sed -n "s/^RDC-VM-RESULT $n \([0-9]*\).*/\1/p" "$LOG" | tr -d '\r' | tail -n 1)
 	case $res in
 	0) echo "ok $i - $n"; pass=$((pass + 1)) ;;

@@ -5,6 +5,9 @@
 # .deb is unpacked, never installed, so dkms builds nothing for the
 # running kernel.
 set -e
+# Not the outer make's variables (O=, -j...): they mean other things to
+# Kbuild.
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES O
 kver=$1
 out=$2
 ko=$out/src/v4l2loopback.ko
