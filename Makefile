@@ -156,7 +156,7 @@ bench-sink: $(O)/rel/sink-bench
 # The VM tests (tests/vm/README.md): Debian's kernel under QEMU runs the
 # programs below against v4l2loopback.  `make check` runs them when QEMU
 # can run here and skips them, saying why, when it cannot.
-VM_BINS := $(O)/rel/rdcctl $(O)/rel/v4l2_read
+VM_BINS := $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/v4l2_read
 $(O)/rel/v4l2_read: $(O)/rel/tests/vm/v4l2_read.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 

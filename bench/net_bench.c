@@ -5,7 +5,8 @@
  *    colour, 4 words) per wall second, the daemon running unpaced;
  *  - round trip of a register read: mean, median and 99th percentile;
  *  - a subscriber to 1024x768 frames, daemon unpaced: frames received
- *    per wall second and frames dropped for it.
+ *    per wall second and frames dropped for it, in each encoding;
+ *  - the same, daemon paced: 60 frames per wall second expected.
  * Usage: net_bench PATH/TO/rdcd  (`make bench-net` builds and runs it).
  */
 #include <signal.h>
@@ -32,8 +33,8 @@ static double now_s(void)
 	return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-static pid_t start_daemon(const char *rdcd, const char *dir, char *uri,
-			  size_t cap)
+static pid_t start_daemon(const char *rdcd, const char *dir, const char *mode,
+			  char *uri, size_t cap)
 {
 	char sock[200], ready[200], lis[220];
 	pid_t pid;
@@ -44,8 +45,8 @@ static pid_t start_daemon(const char *rdcd, const char *dir, char *uri,
 	snprintf(uri, cap, "unix:%s", sock);
 	pid = fork();
 	if (pid == 0) {
-		execl(rdcd, rdcd, "--fast", "-q", "--listen", lis,
-		      "--ready-file", ready, (char *)NULL);
+		execl(rdcd, rdcd, mode, "-q", "--listen", lis, "--ready-file",
+		      ready, (char *)NULL);
 		_exit(127);
 	}
 	for (int i = 0; i < 1000; i++) {
@@ -165,6 +166,40 @@ static void bench_frames(const char *uri)
 	rdc_close(obs);
 }
 
+static void bench_paced(rdc_dev *dev, const char *uri)
+{
+	static uint32_t pix[1024 * 768];
+	char obs_uri[300];
+	struct rdc_event ev = {0};
+	rdc_dev *obs;
+	uint64_t got = 0, first;
+	double t0, t;
+
+	(void)dev;
+	snprintf(obs_uri, sizeof(obs_uri), "%s?observe", uri);
+	if (rdc_open(obs_uri, &obs))
+		return;
+	rdc_subscribe(obs, RDC_EVENT_FRAME, 1, RDC_FRAME_DELTA);
+	if (rdc_event_next(obs, &ev, pix, RDC_ARRAY_SIZE(pix), 5000)) {
+		rdc_close(obs);
+		return;
+	}
+	first = ev.number;
+	t0 = now_s();
+	do {
+		if (rdc_event_next(obs, &ev, pix, RDC_ARRAY_SIZE(pix), 5000))
+			break;
+		got++;
+		t = now_s();
+	} while (t - t0 < BENCH_FRAMES_S);
+	printf("{\"bench\":\"frames_paced\",\"transport\":\"unix\","
+	       "\"size\":\"1024x768@60\",\"received_fps\":%.1f,"
+	       "\"simulated_fps\":%.1f,\"dropped\":%u}\n",
+	       (double)got / (t - t0), (double)(ev.number - first) / (t - t0),
+	       ev.dropped);
+	rdc_close(obs);
+}
+
 int main(int argc, char **argv)
 {
 	char dir[] = "/tmp/rdc-bench-XXXXXX", uri[300], path[300];
@@ -178,7 +213,7 @@ int main(int argc, char **argv)
 	}
 	if (!mkdtemp(dir))
 		return 1;
-	pid = start_daemon(argv[1], dir, uri, sizeof(uri));
+	pid = start_daemon(argv[1], dir, "--fast", uri, sizeof(uri));
 	if (pid < 0 || rdc_open(uri, &dev)) {
 		fprintf(stderr, "net_bench: cannot start %s\n", argv[1]);
 		return 1;
@@ -205,6 +240,18 @@ int main(int argc, char **argv)
 	kill(pid, SIGTERM);
 	waitpid(pid, &st, 0);
 	snprintf(path, sizeof(path), "%s/ready", dir);
+	unlink(path);
+	/* paced: a 60 Hz mode should give 60 frames per wall second */
+	pid = start_daemon(argv[1], dir, "-q", uri, sizeof(uri));
+	if (pid > 0 && !rdc_open(uri, &dev)) {
+		rdc_mode_set(dev, RDC_PRESET_1024x768_60, RDC_FMT_XRGB8888, 0);
+		bench_paced(dev, uri);
+		rdc_close(dev);
+	}
+	if (pid > 0) {
+		kill(pid, SIGTERM);
+		waitpid(pid, &st, 0);
+	}
 	unlink(path);
 	rmdir(dir);
 	return 0;

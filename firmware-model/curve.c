@@ -50,6 +50,13 @@ static int64_t cv_leg(int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 	return RDC_MAX(cv_abs(x1 - x0), cv_abs(y1 - y0));
 }
 
+/* Length of the control polygon x[0..3], y[0..3]. */
+static int64_t cv_polygon(const int32_t *x, const int32_t *y)
+{
+	return cv_leg(x[0], y[0], x[1], y[1]) + cv_leg(x[1], y[1], x[2], y[2]) +
+	       cv_leg(x[2], y[2], x[3], y[3]);
+}
+
 /* Steps for a control polygon of length len: from the flags, else one
  * per CV_PX_PER_STEP pixels, at least 1 and at most the cap. */
 static uint32_t cv_steps(uint32_t fl, int64_t len)
@@ -151,6 +158,7 @@ uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 	int32_t x[4], y[4];
 	struct cv_poly px, py;
 	struct cv_trace tr;
+	int64_t plen;
 	uint32_t i, k, n, np = op == RDC_OP_HERMITE ? 2 : len;
 
 	if (op == RDC_OP_BSPLINE ? len < 4 : len != 4)
@@ -178,17 +186,16 @@ uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		if (op == RDC_OP_BEZIER) {
 			cv_bezier(&px, x[0], x[1], x[2], x[3]);
 			cv_bezier(&py, y[0], y[1], y[2], y[3]);
-			n = cv_steps(fl, cv_leg(x[0], y[0], x[1], y[1]) +
-						 cv_leg(x[1], y[1], x[2], y[2]) +
-						 cv_leg(x[2], y[2], x[3], y[3]));
+			n = cv_steps(fl, cv_polygon(x, y));
 			cv_trace_poly(&tr, &px, &py, n, 0, x[3], y[3]);
 		} else {
 			/* the Bezier legs of the same curve: t0/3, t1/3 */
 			cv_hermite(&px, x[0], x[1], x[2], x[3]);
 			cv_hermite(&py, y[0], y[1], y[2], y[3]);
-			n = cv_steps(fl, cv_leg(x[0], y[0], x[1], y[1]) +
-						 (cv_leg(0, 0, x[2], y[2]) +
-						  cv_leg(0, 0, x[3], y[3])) / 3);
+			plen = cv_leg(x[0], y[0], x[1], y[1]) +
+			       (cv_leg(0, 0, x[2], y[2]) +
+				cv_leg(0, 0, x[3], y[3])) / 3;
+			n = cv_steps(fl, plen);
 			cv_trace_poly(&tr, &px, &py, n, 0, x[1], y[1]);
 		}
 		dp_stroke_end(&tr.sk, false);
@@ -212,9 +219,7 @@ uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		dp_xform(dp, &x[3], &y[3]);
 		cv_bspline(&px, x[0], x[1], x[2], x[3]);
 		cv_bspline(&py, y[0], y[1], y[2], y[3]);
-		n = cv_steps(fl, cv_leg(x[0], y[0], x[1], y[1]) +
-					 cv_leg(x[1], y[1], x[2], y[2]) +
-					 cv_leg(x[2], y[2], x[3], y[3]));
+		n = cv_steps(fl, cv_polygon(x, y));
 		ex = (int32_t)cv_div_round((int64_t)x[1] + 4 * (int64_t)x[2] +
 						   x[3], 6);
 		ey = (int32_t)cv_div_round((int64_t)y[1] + 4 * (int64_t)y[2] +

@@ -30,6 +30,18 @@ struct rdc_surface {
 	uint32_t format; /* enum rdc_format */
 };
 
+/*
+ * A piece of a wide stroke in 24.8 fixed point (integers are pixel
+ * centres): a convex polygon of n = 3 or 4 vertices, or with n = 0 the
+ * disk of centre (x[0], y[0]) and radius x[1].  y0..y1: its rows.
+ */
+#define RDC_DP_PEN_PIECES 256u
+struct rdc_pen_piece {
+	int64_t x[4], y[4];
+	uint32_t n;
+	int32_t y0, y1;
+};
+
 /* Clip rectangle: x0 <= x < x1, y0 <= y < y1. */
 struct rdc_rect {
 	int32_t x0, y0, x1, y1;
@@ -100,6 +112,12 @@ struct rdc_dp {
 	/* READBACK words packed but not yet pushed to RDATA */
 	uint32_t rb_buf[RDC_DP_RB_CHUNK];
 	uint32_t rb_pos, rb_len;
+
+	/* Wide strokes (pen.c): the convex pieces and disks waiting to be
+	 * drawn as one union, row by row, and one row's spans of them */
+	struct rdc_pen_piece pen_piece[RDC_DP_PEN_PIECES];
+	uint32_t pen_npieces;
+	int32_t pen_span[RDC_DP_PEN_PIECES][2];
 
 	/* AA_* (aa.c): 8-bit coverage of the pixels of the two runs a Wu
 	 * line builds at once (0: pixel left alone, 255: full FG) */

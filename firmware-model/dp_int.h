@@ -166,10 +166,12 @@ void dp_stroke_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 /* Width 1, no dash: the plain midpoint line. */
 bool dp_pen_plain(const struct rdc_dp *dp);
 uint64_t dp_isqrt(uint64_t v);
-/* Fill a convex polygon of 24.8 vertices by pixel centres, left and top
- * edges inclusive (the stroker's pieces). */
+/* Queue a convex polygon of 3 or 4 vertices in 24.8 for the stroke's
+ * union; dp_pen_flush draws the queue by pixel centres, left and top
+ * edges inclusive, each covered pixel once. */
 void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
 			unsigned int n);
+void dp_pen_flush(struct rdc_dp *dp);
 
 /* ARC (arc.c): sine and cosine of a 1/65536-turn angle in 16.16. */
 int32_t dp_sin(uint32_t a);

@@ -5,12 +5,13 @@
  *
  * Width 1 without a dash is the midpoint line of raster.c, unchanged.  A
  * dash selects which steps of those same lines are drawn.  Wider pens
- * build each segment, cap and join as a convex piece in 24.8 fixed point
- * and fill it by pixel centres (a centre exactly on an edge belongs to the
- * piece when the edge is a left or top one).  The pieces of one stroke are
- * filled one after another, so where they overlap (a join over its two
- * segments, a cap over its segment, a stroke crossing itself) a pixel is
- * written more than once: ROPs that read the destination show the overlap.
+ * build each segment, cap and join as a convex piece (or a disk) in 24.8
+ * fixed point and queue it; at the end of the stroke the queue is drawn
+ * row by row as the union of its pieces' spans by pixel centres (a centre
+ * exactly on an edge belongs to a piece when the edge is a left or top
+ * one), so joins, caps and self-crossings write each pixel once.  A stroke
+ * of more than RDC_DP_PEN_PIECES pieces is drawn in batches of that many;
+ * only pieces of different batches may overlap.
  */
 #include "dp_int.h"
 
@@ -56,87 +57,181 @@ uint64_t dp_isqrt(uint64_t v)
 }
 
 /*
- * Fill a convex polygon by pixel centres.  Row y samples Y = y * PEN_ONE;
- * each edge counts for ya <= Y < yb (its top end in, its bottom end out)
- * and a row covers the pixels with xl <= X < xr between its leftmost and
- * rightmost crossing: the top-left rule, so two pieces sharing an edge do
- * not both take the pixels on it.
+ * Row y of a convex polygon, by pixel centres: row y samples Y = y *
+ * PEN_ONE; each edge counts for ya <= Y < yb (its top end in, its bottom
+ * end out) and the row covers the pixels with xl <= X < xr between its
+ * leftmost and rightmost crossing: the top-left rule, so two pieces
+ * sharing an edge do not both take the pixels on it.  Returns the pixel
+ * range [*xa, *xb), false when empty.
  */
+static bool convex_row(const int64_t *vx, const int64_t *vy, unsigned int n,
+		       int64_t y, int64_t *xa, int64_t *xb)
+{
+	int64_t sy = y * PEN_ONE, xl = 0, xr = 0;
+	bool any = false;
+	unsigned int i;
+
+	for (i = 0; i < n; i++) {
+		unsigned int a = i, b = (i + 1) % n, t;
+		int64_t dy, x;
+
+		if (vy[a] == vy[b])
+			continue;
+		if (vy[a] > vy[b]) {
+			t = a;
+			a = b;
+			b = t;
+		}
+		if (sy < vy[a] || sy >= vy[b])
+			continue;
+		dy = vy[b] - vy[a];
+		/* first pixel whose centre is at or right of the crossing:
+		 * ceil(x_cross / PEN_ONE) */
+		x = pen_div_ceil(vx[a] * dy + (sy - vy[a]) * (vx[b] - vx[a]),
+				 dy * PEN_ONE);
+		xl = any ? RDC_MIN(xl, x) : x;
+		xr = any ? RDC_MAX(xr, x) : x;
+		any = true;
+	}
+	*xa = xl;
+	*xb = xr;
+	return any && xl < xr;
+}
+
+/* Row y of the disk of radius r at (px, py): the centres strictly inside
+ * it, as [*xa, *xb). */
+static bool disk_row(int64_t px, int64_t py, int64_t r, int64_t y,
+		     int64_t *xa, int64_t *xb)
+{
+	int64_t dy = y * PEN_ONE - py, d = r * r - dy * dy, s;
+
+	if (d <= 0)
+		return false;
+	s = (int64_t)dp_isqrt((uint64_t)d);
+	if (s * s == d)
+		s--; /* |dx| < sqrt(d) */
+	*xa = pen_div_ceil(px - s, PEN_ONE);
+	*xb = pen_div_floor(px + s, PEN_ONE) + 1;
+	return *xa < *xb;
+}
+
+static bool piece_row(const struct rdc_pen_piece *pc, int64_t y, int64_t *xa,
+		      int64_t *xb)
+{
+	if (!pc->n)
+		return disk_row(pc->x[0], pc->y[0], pc->x[1], y, xa, xb);
+	return convex_row(pc->x, pc->y, pc->n, y, xa, xb);
+}
+
+/*
+ * Draw the buffered pieces as one union: row by row, their spans sorted
+ * and merged, so a pixel covered by several pieces is written once.
+ */
+void dp_pen_flush(struct rdc_dp *dp)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	uint32_t n = dp->pen_npieces, i, k, m;
+	int32_t y, y0 = 0, y1 = -1;
+
+	dp->pen_npieces = 0;
+	for (i = 0; i < n; i++) {
+		const struct rdc_pen_piece *pc = &dp->pen_piece[i];
+
+		if (pc->y0 > pc->y1)
+			continue;
+		y0 = y1 < y0 ? pc->y0 : RDC_MIN(y0, pc->y0);
+		y1 = RDC_MAX(y1, pc->y1);
+	}
+	for (y = y0; y <= y1; y++) {
+		int32_t (*sp)[2] = dp->pen_span;
+
+		for (i = 0, m = 0; i < n; i++) {
+			const struct rdc_pen_piece *pc = &dp->pen_piece[i];
+			int64_t xa, xb;
+
+			if (y < pc->y0 || y > pc->y1 ||
+			    !piece_row(pc, y, &xa, &xb))
+				continue;
+			xa = RDC_MAX(xa, (int64_t)c.x0);
+			xb = RDC_MIN(xb, (int64_t)c.x1);
+			if (xa >= xb)
+				continue;
+			/* insertion by start: a few spans a row */
+			for (k = m; k > 0 && sp[k - 1][0] > xa; k--) {
+				sp[k][0] = sp[k - 1][0];
+				sp[k][1] = sp[k - 1][1];
+			}
+			sp[k][0] = (int32_t)xa;
+			sp[k][1] = (int32_t)xb;
+			m++;
+		}
+		for (i = 0; i < m; i = k) {
+			int32_t xa = sp[i][0], xb = sp[i][1];
+
+			for (k = i + 1; k < m && sp[k][0] <= xb; k++)
+				xb = RDC_MAX(xb, sp[k][1]);
+			rdc_dp_span(dp, y, xa, xb - 1);
+		}
+	}
+}
+
+/* Queue a piece; its rows are limited to the clip, so pieces off the
+ * surface cost nothing. */
+static struct rdc_pen_piece *pen_queue(struct rdc_dp *dp, int64_t ymin,
+				       int64_t ymax)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	struct rdc_pen_piece *pc;
+	int64_t y0 = RDC_MAX(ymin, (int64_t)c.y0);
+	int64_t y1 = RDC_MIN(ymax, (int64_t)c.y1 - 1);
+
+	if (y0 > y1 || c.x0 >= c.x1)
+		return NULL;
+	if (dp->pen_npieces == RDC_DP_PEN_PIECES)
+		dp_pen_flush(dp);
+	pc = &dp->pen_piece[dp->pen_npieces++];
+	pc->y0 = (int32_t)y0;
+	pc->y1 = (int32_t)y1;
+	return pc;
+}
+
 void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
 			unsigned int n)
 {
-	struct rdc_rect c = rdc_dp_eff_clip(dp);
-	int64_t ymin = v[0].y, ymax = v[0].y, y, y0, y1;
+	int64_t ymin = v[0].y, ymax = v[0].y;
+	struct rdc_pen_piece *pc;
 	unsigned int i;
 
-	if (n < 3 || c.x0 >= c.x1 || c.y0 >= c.y1)
+	if (n < 3 || n > RDC_ARRAY_SIZE(pc->x))
 		return;
 	for (i = 1; i < n; i++) {
 		ymin = RDC_MIN(ymin, v[i].y);
 		ymax = RDC_MAX(ymax, v[i].y);
 	}
-	y0 = RDC_MAX(pen_div_ceil(ymin, PEN_ONE), (int64_t)c.y0);
-	y1 = RDC_MIN(pen_div_ceil(ymax, PEN_ONE) - 1, (int64_t)c.y1 - 1);
-	for (y = y0; y <= y1; y++) {
-		int64_t sy = y * PEN_ONE, xl = INT64_MAX, xr = INT64_MIN;
-
-		for (i = 0; i < n; i++) {
-			const struct pen_vec *a = &v[i], *b = &v[(i + 1) % n];
-			int64_t dy, xa;
-
-			if (a->y == b->y)
-				continue;
-			if (a->y > b->y) {
-				const struct pen_vec *t = a;
-
-				a = b;
-				b = t;
-			}
-			if (sy < a->y || sy >= b->y)
-				continue;
-			dy = b->y - a->y;
-			/* first pixel whose centre is at or right of the
-			 * crossing: ceil(x_cross / PEN_ONE) */
-			xa = pen_div_ceil(a->x * dy + (sy - a->y) * (b->x - a->x),
-					  dy * PEN_ONE);
-			xl = RDC_MIN(xl, xa);
-			xr = RDC_MAX(xr, xa);
-		}
-		if (xl >= xr)
-			continue;
-		xl = RDC_MAX(xl, (int64_t)c.x0);
-		xr = RDC_MIN(xr, (int64_t)c.x1);
-		if (xl < xr)
-			rdc_dp_span(dp, (int32_t)y, (int32_t)xl,
-				    (int32_t)(xr - 1));
+	pc = pen_queue(dp, pen_div_ceil(ymin, PEN_ONE),
+		       pen_div_ceil(ymax, PEN_ONE) - 1);
+	if (!pc)
+		return;
+	pc->n = n;
+	for (i = 0; i < n; i++) {
+		pc->x[i] = v[i].x;
+		pc->y[i] = v[i].y;
 	}
 }
 
-/* Disk of radius r (24.8) at p: the centres strictly inside it. */
+/* Disk of radius r (24.8) at p. */
 static void pen_disk(struct rdc_dp *dp, struct pen_vec p, int64_t r)
 {
-	struct rdc_rect c = rdc_dp_eff_clip(dp);
-	int64_t y, y0, y1;
+	struct rdc_pen_piece *pc = pen_queue(dp, pen_div_floor(p.y - r,
+							       PEN_ONE),
+					     pen_div_ceil(p.y + r, PEN_ONE));
 
-	if (c.x0 >= c.x1 || c.y0 >= c.y1)
+	if (!pc)
 		return;
-	y0 = RDC_MAX(pen_div_floor(p.y - r, PEN_ONE), (int64_t)c.y0);
-	y1 = RDC_MIN(pen_div_ceil(p.y + r, PEN_ONE), (int64_t)c.y1 - 1);
-	for (y = y0; y <= y1; y++) {
-		int64_t dy = y * PEN_ONE - p.y, d = r * r - dy * dy, s, xa, xb;
-
-		if (d <= 0)
-			continue;
-		s = (int64_t)dp_isqrt((uint64_t)d);
-		if (s * s == d)
-			s--; /* |dx| < sqrt(d) */
-		xa = pen_div_ceil(p.x - s, PEN_ONE);
-		xb = pen_div_floor(p.x + s, PEN_ONE);
-		xa = RDC_MAX(xa, (int64_t)c.x0);
-		xb = RDC_MIN(xb, (int64_t)c.x1 - 1);
-		if (xa <= xb)
-			rdc_dp_span(dp, (int32_t)y, (int32_t)xa, (int32_t)xb);
-	}
+	pc->n = 0;
+	pc->x[0] = p.x;
+	pc->y[0] = p.y;
+	pc->x[1] = r;
 }
 
 static int64_t pen_half(const struct rdc_dp *dp)
@@ -395,7 +490,8 @@ void dp_stroke_point(struct dp_stroke *sk, int32_t x, int32_t y)
 	sk->count++;
 }
 
-void dp_stroke_end(struct dp_stroke *sk, bool closed)
+/* The end of a stroke: draw, then flush the queued pieces. */
+static void stroke_finish(struct dp_stroke *sk, bool closed)
 {
 	struct rdc_dp *dp = sk->dp;
 
@@ -537,4 +633,10 @@ void dp_stroke_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 bool dp_pen_plain(const struct rdc_dp *dp)
 {
 	return dp->st.pen_width <= 1 && !dp->st.dash_len;
+}
+
+void dp_stroke_end(struct dp_stroke *sk, bool closed)
+{
+	stroke_finish(sk, closed);
+	dp_pen_flush(sk->dp);
 }

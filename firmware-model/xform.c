@@ -15,6 +15,9 @@
 /* Widest input coordinate dp_xform accepts: keeps |entry * coordinate|
  * below 2^51, so three such terms cannot overflow 64 bits. */
 #define XF_IN_MAX (1 << 20)
+/* int32_t's range, spelled out: the kernel has no XF_S32_MAX */
+#define XF_S32_MAX ((int64_t)0x7fffffff)
+#define XF_S32_MIN (-XF_S32_MAX - 1)
 
 /* floor(n / d) for d > 0: C division truncates towards zero. */
 static int64_t div_floor(int64_t n, int64_t d)
@@ -138,10 +141,10 @@ static bool vp_axis(int32_t w0, int32_t w1, int32_t v0, int32_t v1,
 	} else {
 		s = div_round(((int64_t)v1 - v0) * XF_ONE * XF_ONE, dw);
 	}
-	if (s < INT32_MIN || s > INT32_MAX)
+	if (s < XF_S32_MIN || s > XF_S32_MAX)
 		return false;
 	o = (int64_t)v0 * XF_ONE - div_round(s * w0, XF_ONE);
-	if (o < INT32_MIN || o > INT32_MAX)
+	if (o < XF_S32_MIN || o > XF_S32_MAX)
 		return false;
 	*scale = (int32_t)s;
 	*offset = (int32_t)o;

@@ -87,6 +87,26 @@ static void test_bad_args(void **state)
 	tdp_drain(t);
 	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
 	assert_true(count_set(t) > 0);
+	/* the longest polygon with the widest pen: many batches of pieces */
+	{
+		static uint32_t many[RDC_CMD_MAX_ARGS];
+		uint32_t i, seed = 1;
+
+		for (i = 0; i < RDC_CMD_MAX_ARGS; i++)
+			many[i] = RDC_XY(tdp_range(&seed, -200, W + 200),
+					 tdp_range(&seed, -200, H + 200));
+		TDP_CMD(t, RDC_OP_SET_PEN,
+			pen_word(RDC_PEN_MAX_WIDTH, RDC_CAP_ROUND,
+				 RDC_JOIN_MITER));
+		tdp_cmd(t, RDC_OP_POLYGON, 0, RDC_CMD_MAX_ARGS, many);
+		TDP_CMD(t, RDC_OP_SET_DASH, 0x0f, 7);
+		tdp_cmd(t, RDC_OP_POLYLINE, 0, RDC_CMD_MAX_ARGS / 8, many);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+		TDP_CMD(t, RDC_OP_SET_DASH, 0, 0);
+		TDP_CMD(t, RDC_OP_SET_PEN, 1);
+		tdp_drain(t);
+	}
 }
 
 /* A horizontal butt line of width w covers centres within w/2 of it:
@@ -345,6 +365,42 @@ static void test_rect_frame(void **state)
 		}
 }
 
+/*
+ * A wide stroke is one union: drawn with XOR onto black it lights exactly
+ * the pixels COPY lights (an overlap written twice would go dark again),
+ * for every cap and join, dashed or not, across a self-crossing.
+ */
+static void test_thick_once(void **state)
+{
+	struct tdp *t = *state, *u = tdp_new();
+	uint32_t k;
+	int x, y;
+
+	for (k = 0; k < 18; k++) {
+		uint32_t pen = pen_word(3 + k % 11, k % 3, (k / 3) % 3);
+
+		clear(t);
+		clear(u);
+		TDP_CMD(u, RDC_OP_SET_ROP, RDC_ROP_XOR);
+		TDP_CMD(t, RDC_OP_SET_PEN, pen);
+		TDP_CMD(u, RDC_OP_SET_PEN, pen);
+		TDP_CMD(t, RDC_OP_SET_DASH, 0x3f, k >= 9 ? 9 : 0);
+		TDP_CMD(u, RDC_OP_SET_DASH, 0x3f, k >= 9 ? 9 : 0);
+		TDP_CMD(t, RDC_OP_POLYLINE, RDC_XY(20, 20), RDC_XY(200, 150),
+			RDC_XY(60, 180), RDC_XY(150, 10), RDC_XY(160, 12));
+		TDP_CMD(u, RDC_OP_POLYLINE, RDC_XY(20, 20), RDC_XY(200, 150),
+			RDC_XY(60, 180), RDC_XY(150, 10), RDC_XY(160, 12));
+		tdp_drain(t);
+		tdp_drain(u);
+		for (y = 0; y < 240; y++)
+			for (x = 0; x < 240; x++)
+				assert_int_equal(px(t, x, y) != 0,
+						 px(u, x, y) != 0);
+		assert_true(count_set(t) > 500);
+	}
+	tdp_free(u);
+}
+
 /* ---- cycle counts ------------------------------------------------------ */
 
 enum { PK_WRITE, PK_RMW };
@@ -429,6 +485,7 @@ int main(void)
 		TDP_TEST(test_dash_polyline),
 		TDP_TEST(test_polygon_once),
 		TDP_TEST(test_rect_frame),
+		TDP_TEST(test_thick_once),
 		TDP_TEST(test_cycles),
 	};
 

@@ -70,6 +70,7 @@ static void test_convex(void **state)
 		}
 		pr_clear(t);
 		dp_pen_fill_convex(&t->dp, v, n);
+		dp_pen_flush(&t->dp);
 		rdc_ref_convex(xy, n, 8, pr_plot, pr_ref);
 		pr_compare(t);
 	}

@@ -28,8 +28,9 @@ static struct fake_dev {
 	bool output;	 /* announces VIDEO_OUTPUT */
 	bool held;	 /* a reader holds the format in force */
 	bool old_names;	 /* knows XRGB32 only as RGB32, as 0.12.7 */
+	bool loopback;	 /* driver "v4l2 loopback" */
 	int write_errno; /* next write fails with this, once */
-	int opens, closes, s_fmts, s_parms, writes;
+	int opens, closes, s_fmts, s_parms, writes, streamons;
 	bool open_now;
 	struct v4l2_pix_format pix; /* in force */
 	struct v4l2_fract tpf;
@@ -62,6 +63,8 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
 	if (req == VIDIOC_QUERYCAP) {
 		struct v4l2_capability *c = arg;
 
+		if (fk.loopback)
+			strcpy((char *)c->driver, "v4l2 loopback");
 		c->capabilities = V4L2_CAP_DEVICE_CAPS | V4L2_CAP_READWRITE |
 				  V4L2_CAP_VIDEO_OUTPUT | V4L2_CAP_VIDEO_CAPTURE;
 		c->device_caps = V4L2_CAP_READWRITE |
@@ -92,6 +95,11 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
 		f->fmt.pix.sizeimage = (f->fmt.pix.bytesperline *
 						f->fmt.pix.height +
 					FAKE_PAGE - 1) & ~(FAKE_PAGE - 1);
+		return 0;
+	}
+	if (req == VIDIOC_STREAMON) {
+		assert_int_equal(*(int *)arg, V4L2_BUF_TYPE_VIDEO_OUTPUT);
+		fk.streamons++;
 		return 0;
 	}
 	if (req == VIDIOC_S_PARM) {
@@ -204,6 +212,12 @@ static void test_v4l2_open_errors(void **state)
 	assert_int_equal(rdc_sink_v4l2_open_io("/dev/video7", &fake_io, &s),
 			 RDC_E_NOSYS);
 	assert_int_equal(fk.opens, fk.closes);
+	/* v4l2loopback (exclusive_caps=1) hides OUTPUT after a write()
+	 * writer has been; it still takes one. */
+	fk.loopback = true;
+	assert_int_equal(rdc_sink_v4l2_open_io("/dev/video7", &fake_io, &s), 0);
+	rdc_sink_close(s);
+	fk.loopback = false;
 	fk.output = true;
 	assert_int_equal(rdc_sink_v4l2_open_io("/dev/video7,format=nv12",
 					       &fake_io, &s),
@@ -248,6 +262,8 @@ static void test_v4l2_formats_and_size(void **state)
 			assert_int_equal(rdc_sink_frame(s, &p.f), 0);
 		}
 		assert_int_equal(fk.s_fmts, 1);
+		/* v4l2loopback takes the writer for one after STREAMON */
+		assert_int_equal(fk.streamons, 1);
 		assert_int_equal(fk.pix.width, 320);
 		assert_int_equal(fk.pix.height, 240);
 		assert_int_equal(fk.pix.pixelformat,
@@ -455,6 +471,19 @@ static void test_v4l2_interval_from_device(void **state)
 	assert_int_equal(num, 1);
 	assert_int_equal(den, 70);
 	rdc_close(dev);
+	/* CEA-861 1080p60: 2200 x 1125 at 148.5 MHz is exactly 1/60 s. */
+	assert_int_equal(rdc_sink_interval_timing(2200, 1125, 148500, &num,
+						  &den),
+			 0);
+	assert_int_equal(num, 1);
+	assert_int_equal(den, 60);
+	assert_int_equal(rdc_sink_interval_timing(0, 1125, 148500, &num, &den),
+			 RDC_E_RANGE);
+	assert_int_equal(rdc_sink_interval_timing(2200, 1125, 0, &num, &den),
+			 RDC_E_RANGE);
+	assert_int_equal(rdc_sink_interval_timing(RDC_CRTC_MAX_TOTAL + 1, 1,
+						  1000, &num, &den),
+			 RDC_E_RANGE);
 }
 
 int main(void)

@@ -20,6 +20,7 @@ if grep -q rdc.probe=1 /proc/cmdline; then
 fi
 
 . /vm.conf
+echo # the firmware leaves escape sequences on the line
 for m in virtio_pci 9pnet_virtio 9p; do
 	modprobe "$m"
 done

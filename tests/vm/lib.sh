@@ -57,6 +57,15 @@ wait_device() {
 	return 1
 }
 
+# ffmpeg_frames FORMAT SCENE N: ffmpeg -f v4l2 captures N frames from $DEV,
+# each must be SCENE's picture in FORMAT, byte for byte.
+ffmpeg_frames() {
+	rm -f "$T/ff.raw"
+	ffmpeg -nostdin -hide_banner -loglevel error -f v4l2 -i "$DEV" \
+		-frames:v "$3" -c:v rawvideo -f rawvideo -y "$T/ff.raw" &&
+		"$READ" --raw "$T/ff.raw" --format "$1" --expect "$2" --frames "$3"
+}
+
 finish() {
 	writer_stop
 	echo "1..$n"

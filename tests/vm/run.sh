@@ -161,17 +161,18 @@ set -- $TESTS
 echo "1..$#"
 for n in $TESTS; do
 	i=$((i + 1))
-	tr -d '\r' <"$LOG" | awk -v t="$n" '
-		$1 == "RDC-VM-RESULT" && $2 == t { on = 0 }
-		on { print "# " $0 }
-		$1 == "RDC-VM-BEGIN" && $2 == t { on = 1 }'
-	res=$(sed -n "s/^RDC-VM-RESULT $n \([0-9]*\).*/\1/p" "$LOG" | tr -d '\r' | tail -n 1)
+	res=$(tr -d '\r' <"$LOG" | sed -n "s/.*RDC-VM-RESULT $n \([0-9]*\).*/\1/p" | tail -n 1)
 	case $res in
 	0) echo "ok $i - $n"; pass=$((pass + 1)) ;;
-	77) echo "ok $i - $n # SKIP"; ;;
+	77) echo "ok $i - $n # SKIP" ;;
 	"") echo "not ok $i - $n (no result: guest died? qemu status $qrc)"; fail=$((fail + 1)) ;;
 	*) echo "not ok $i - $n (exit $res)"; fail=$((fail + 1)) ;;
 	esac
+	# What the test printed, as TAP diagnostics.
+	tr -d '\r' <"$LOG" | awk -v b="RDC-VM-BEGIN $n" -v r="RDC-VM-RESULT $n " '
+		index($0, r) { on = 0 }
+		on { print "    " $0 }
+		index($0, b) == length($0) - length(b) + 1 { on = 1 }'
 done
 if [ $fail -ne 0 ]; then
 	echo "# last console lines:"

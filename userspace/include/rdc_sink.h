@@ -88,6 +88,9 @@ int rdc_sink_have_vnc(void);
  * any backend (register reads only).
  */
 int rdc_sink_interval(rdc_dev *dev, uint32_t *num, uint32_t *den);
+/* The same from the timing itself (a source that holds the chip). */
+int rdc_sink_interval_timing(uint32_t h_total, uint32_t v_total,
+			     uint32_t pixclk_khz, uint32_t *num, uint32_t *den);
 
 /* ---- Pixel conversion (the v4l2 sink's, exposed for tests and bench) ---- */
 enum rdc_sink_fmt {

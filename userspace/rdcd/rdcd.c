@@ -96,6 +96,7 @@ static uint64_t rdcd_wall_ns(void)
 static int rdcd_mkdir_parent(const char *path)
 {
 	char dir[sizeof(((struct sockaddr_un *)0)->sun_path)];
+	struct stat st;
 	char *slash;
 
 	snprintf(dir, sizeof(dir), "%s", path);
@@ -105,6 +106,14 @@ static int rdcd_mkdir_parent(const char *path)
 	*slash = 0;
 	if (mkdir(dir, 0700) && errno != EEXIST)
 		return -1;
+	/* /tmp is shared: a directory someone else made is not ours to use */
+	if (lstat(dir, &st))
+		return -1;
+	if (!S_ISDIR(st.st_mode) || st.st_uid != geteuid() ||
+	    (st.st_mode & 0022)) {
+		errno = EPERM;
+		return -1;
+	}
 	return 0;
 }
 

@@ -638,7 +638,9 @@ static void rdcd_frame_grab(struct rdcd *d, struct rdcd_client *c,
 	uint32_t enc = rdc_proto_get32(pl), max = rdc_proto_get32(pl + 4);
 	uint32_t w = 0, ht = 0;
 	const uint32_t *pix = rdc_hw_frame(d->hw, &w, &ht);
-	struct rdc_proto_frame f = {.number = d->frames};
+	/* FRAME_COUNT counts the frame that just completed */
+	struct rdc_proto_frame f = {
+		.number = rdc_hw_read(d->hw, RDC_REG_FRAME_COUNT) - 1u};
 	struct rdcd_obuf *b;
 	uint8_t fh[RDC_PROTO_FRAME_HDR];
 
@@ -723,7 +725,7 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 {
 	const uint8_t *pl = *body;
 	uint8_t out[8];
-	uint32_t v;
+	uint32_t v = 0;
 	int ret, st;
 
 	if (h->type == RDC_MSG_HELLO) {

@@ -147,10 +147,31 @@ static uint64_t gcd64(uint64_t a, uint64_t b)
 
 #define HZ_PER_KHZ 1000u
 
+int rdc_sink_interval_timing(uint32_t h_total, uint32_t v_total,
+			     uint32_t pixclk_khz, uint32_t *num, uint32_t *den)
+{
+	uint64_t n, d, g;
+
+	if (!num || !den)
+		return RDC_E_INVAL;
+	if (!h_total || !v_total || !pixclk_khz ||
+	    h_total > RDC_CRTC_MAX_TOTAL || v_total > RDC_CRTC_MAX_TOTAL)
+		return RDC_E_RANGE;
+	n = (uint64_t)h_total * v_total;
+	d = (uint64_t)pixclk_khz * HZ_PER_KHZ;
+	g = gcd64(n, d);
+	/* 4096 * 4096 fits 32 bits; so does any pixel clock in Hz below
+	 * 4.29 GHz, and reducing only makes both smaller. */
+	if (n / g > UINT32_MAX || d / g > UINT32_MAX)
+		return RDC_E_RANGE;
+	*num = (uint32_t)(n / g);
+	*den = (uint32_t)(d / g);
+	return 0;
+}
+
 int rdc_sink_interval(rdc_dev *dev, uint32_t *num, uint32_t *den)
 {
 	uint32_t ht, vt, khz;
-	uint64_t n, d, g;
 	int ret;
 
 	if (!dev || !num || !den)
@@ -162,16 +183,5 @@ int rdc_sink_interval(rdc_dev *dev, uint32_t *num, uint32_t *den)
 		ret = rdc_reg_read(dev, RDC_REG_PIXCLK_KHZ, &khz);
 	if (ret)
 		return ret;
-	if (!ht || !vt || !khz || ht > RDC_CRTC_MAX_TOTAL ||
-	    vt > RDC_CRTC_MAX_TOTAL)
-		return RDC_E_RANGE;
-	n = (uint64_t)ht * vt;
-	d = (uint64_t)khz * HZ_PER_KHZ;
-	g = gcd64(n, d);
-	n /= g;
-	d /= g;
-	/* 4096 * 4096 and 400 MHz both fit 32 bits; reduced, they still do. */
-	*num = (uint32_t)n;
-	*den = (uint32_t)d;
-	return 0;
+	return rdc_sink_interval_timing(ht, vt, khz, num, den);
 }

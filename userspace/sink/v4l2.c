@@ -14,6 +14,8 @@
  * - sizeimage comes back page-aligned; readers (ffmpeg) expect exactly
  *   bytesperline * height bytes in a buffer, so that is what one write()
  *   carries, never sizeimage.
+ * - It announces OUTPUT (and lets S_FMT through) only while it believes a
+ *   writer may come, which it learns from STREAMON, not from write().
  * - write() takes the whole frame or fails; the descriptor is non-blocking
  *   so a device that cannot take a frame costs a dropped frame, not a
  *   stalled simulation.
@@ -27,6 +29,8 @@
 #include <unistd.h>
 
 #include "sink_priv.h"
+
+#define V4L2LOOPBACK_DRIVER "v4l2 loopback"
 
 struct v4l2_sink {
 	struct rdc_v4l2_io io;
@@ -100,6 +104,12 @@ static int v4l2_connect(struct v4l2_sink *v)
 	}
 	caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps
 							  : cap.capabilities;
+	/* v4l2loopback's caps tell its state, not what it can do: with
+	 * exclusive_caps=1 it stops announcing OUTPUT once a write() writer
+	 * has been, and a new writer must still get in. */
+	if (!strncmp((const char *)cap.driver, V4L2LOOPBACK_DRIVER,
+		     sizeof(cap.driver)))
+		caps |= V4L2_CAP_VIDEO_OUTPUT;
 	if (!(caps & V4L2_CAP_VIDEO_OUTPUT) || !(caps & V4L2_CAP_READWRITE)) {
 		v->io.close(fd);
 		return RDC_E_NOSYS;
@@ -161,11 +171,19 @@ static int v4l2_negotiate(rdc_sink *s, const struct rdc_frame *f)
 	size_t bpl = rdc_sink_fmt_bytesperline(v->fmt, f->width);
 	uint32_t w = f->width + (v->fmt == RDC_SINK_FMT_YUYV ? f->width & 1 : 0);
 	uint32_t alt = rdc_sink_fmt_fourcc_alt(v->fmt);
+	int out_type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
 	struct v4l2_format vf;
 
 	if (!v4l2_try_fourcc(v, f, w, bpl, rdc_sink_fmt_fourcc(v->fmt), &vf) &&
 	    (!alt || !v4l2_try_fourcc(v, f, w, bpl, alt, &vf)))
 		return 1;
+	/*
+	 * Frames still go by write(), but v4l2loopback only counts an opener
+	 * as its writer after STREAMON; only then does it announce OUTPUT
+	 * again once we close, which the next S_FMT (after a mode change, a
+	 * restart) needs.  Devices without streaming ignore it.
+	 */
+	v->io.ioctl(v->fd, VIDIOC_STREAMON, &out_type);
 	/* Keep the device's row pitch when it pads rows; never less. */
 	if (vf.fmt.pix.bytesperline > bpl &&
 	    vf.fmt.pix.bytesperline <= bpl + RDC_CRTC_MAX_DISPLAY)

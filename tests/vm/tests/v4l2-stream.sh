@@ -7,20 +7,14 @@
 . "$RDC_TREE/tests/vm/lib.sh"
 
 scene=$SCENES/stream_a.rdl
-ffmpeg_frames() {
-	rm -f $T/ff.raw
-	ffmpeg -nostdin -hide_banner -loglevel error -f v4l2 -i "$DEV" \
-		-frames:v 10 -c:v rawvideo -f rawvideo -y $T/ff.raw &&
-		"$READ" --raw $T/ff.raw --format "$1" --expect "$scene" --frames 10
-}
-
 for fmt in bgr32 xrgb32 rgb24 yuyv; do
 	writer_start --script "$scene" --format "$fmt"
 	check "$fmt: the device gets a format" wait_device 60
 	check "$fmt: own reader, 30 frames exact, mode's interval" \
 		"$READ" --device "$DEV" --expect "$scene" --frames 30 \
 		--check-rate --timeout 60
-	check "$fmt: ffmpeg -f v4l2, 10 frames exact" ffmpeg_frames "$fmt"
+	check "$fmt: ffmpeg -f v4l2, 10 frames exact" \
+		ffmpeg_frames "$fmt" "$scene" 10
 	check "$fmt: writer still running" writer_alive
 	writer_stop
 done
