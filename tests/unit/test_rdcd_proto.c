@@ -108,6 +108,22 @@ static void test_bad_messages(void **state)
 			 RDC_ST_OK);
 	assert_int_equal(rdc_proto_get32(b + 8), RDC_ID_VALUE);
 
+	/* time moves by a step; a power cycle is a new chip at time 0 */
+	rdc_proto_put64(b, 1000);
+	assert_int_equal(netd_call(fd, RDC_MSG_STEP, 20, b, 8, NULL, 0),
+			 RDC_ST_OK);
+	rdc_proto_put32(b, RDC_REG_TIME_LO);
+	assert_int_equal(netd_call(fd, RDC_MSG_REG_READ, 21, b, 4, b + 8, 4),
+			 RDC_ST_OK);
+	assert_true(rdc_proto_get32(b + 8) >= 1000);
+	rdc_proto_put32(b, RDC_RESET_POWER);
+	assert_int_equal(netd_call(fd, RDC_MSG_RESET, 22, b, 4, NULL, 0),
+			 RDC_ST_OK);
+	rdc_proto_put32(b, RDC_REG_TIME_LO);
+	assert_int_equal(netd_call(fd, RDC_MSG_REG_READ, 23, b, 4, b + 8, 4),
+			 RDC_ST_OK);
+	assert_int_equal(rdc_proto_get32(b + 8), 0);
+
 	/* oversized: answered, then the connection is closed */
 	{
 		uint8_t h[RDC_PROTO_HDR_SIZE];
@@ -586,6 +602,68 @@ static void test_record_replay(void **state)
 	}
 }
 
+/*
+ * Seeded random requests, sizes near the right ones, registers inside the
+ * window half the time: whatever they do to the chip, every one is
+ * answered in order and the daemon survives them (under the sanitizers).
+ */
+static void test_random_requests(void **state)
+{
+	static const uint32_t size_of[] = {
+		[RDC_MSG_REG_READ] = 4,	 [RDC_MSG_REG_WRITE] = 8,
+		[RDC_MSG_VRAM_READ] = 8, [RDC_MSG_VRAM_WRITE] = 12,
+		[RDC_MSG_SUBMIT] = 32,	 [RDC_MSG_WAIT] = RDC_PROTO_WAIT_SIZE,
+		[RDC_MSG_STEP] = 8,	 [RDC_MSG_FRAME_GRAB] = 8,
+		[RDC_MSG_SUBSCRIBE] = 12, [RDC_MSG_STATS] = 0,
+		[RDC_MSG_RESET] = 4,	 [RDC_MSG_CLAIM] = 0,
+		[RDC_MSG_RELEASE] = 0,	 [RDC_MSG_PING] = 0,
+	};
+	uint32_t seed = 20261122;
+	uint8_t pl[64];
+	struct netd d;
+	int fd;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args_stepped), 0);
+	fd = hello_fd(&d, RDC_HELLO_CONTROL);
+	assert_true(fd >= 0);
+	for (uint32_t seq = 100; seq < 1100; seq++) {
+		uint16_t type;
+		uint32_t len;
+		int st;
+
+		seed = seed * 1103515245u + 12345u;
+		type = (uint16_t)(2 + (seed >> 16) % 15); /* 2..16 */
+		seed = seed * 1103515245u + 12345u;
+		len = type < RDC_ARRAY_SIZE(size_of) ? size_of[type] : 4;
+		if ((seed >> 16) % 8 == 0)
+			len = (seed >> 20) % 48; /* a wrong size */
+		for (size_t i = 0; i < sizeof(pl); i++) {
+			seed = seed * 1103515245u + 12345u;
+			pl[i] = (uint8_t)(seed >> 16);
+		}
+		if ((seed >> 8) & 1) /* a register inside the window */
+			rdc_proto_put32(pl, (rdc_proto_get32(pl) & 0x3fc));
+		if (type == RDC_MSG_WAIT || type == RDC_MSG_STEP)
+			rdc_proto_put64(pl, 1 + seed % 5000); /* short */
+		if (type == RDC_MSG_WAIT) {
+			rdc_proto_put32(pl + 8, (seed >> 3) & 1);
+			for (int t = 0; t < 2; t++) {
+				uint8_t *term = pl + 12 + 16 * t;
+
+				rdc_proto_put32(term, rdc_proto_get32(term) % 5);
+				rdc_proto_put32(term + 4,
+						rdc_proto_get32(term + 4) & 0x3fc);
+			}
+		}
+		st = netd_call(fd, type, seq, pl, len, NULL, 0);
+		assert_true(st >= 0 && st < RDC_ST_COUNT_);
+	}
+	close(fd);
+	assert_serving(&d);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
 /* Paced mode: time follows the wall clock; waits complete there too. */
 static void test_paced(void **state)
 {
@@ -624,6 +702,7 @@ int main(void)
 		cmocka_unit_test(test_many_clients),
 		cmocka_unit_test(test_subscribe),
 		cmocka_unit_test(test_record_replay),
+		cmocka_unit_test(test_random_requests),
 		cmocka_unit_test(test_paced),
 	};
 
