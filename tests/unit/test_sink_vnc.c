@@ -216,6 +216,16 @@ static void test_vnc_updates(void **state)
 	assert_int_equal(ymax, 13);
 	assert_memory_equal(seen, px, sizeof(px));
 
+	/* A mode change: the server takes the new size (viewers without
+	 * DesktopSize are let go by libvncserver), and the next frame of
+	 * that size is taken too. */
+	f.width = VW / 2;
+	f.height = VH / 3;
+	f.stride = VW;
+	assert_int_equal(rdc_sink_frame(c.s, &f), 0);
+	assert_int_equal(rdc_sink_frame(c.s, &f), 0);
+	assert_int_equal(rdc_sink_poll(c.s), 0);
+
 	close(c.fd);
 	rdc_sink_close(c.s);
 }

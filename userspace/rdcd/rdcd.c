@@ -78,6 +78,12 @@ static void usage(FILE *f)
 	      "  --token FILE     TCP clients must present this file's contents\n"
 	      "  --group          socket mode 0660 instead of 0600\n"
 	      "  --ready-file F   once listening, write the listen URIs to F\n"
+	      "  --v4l2 DEV       frames to a v4l2loopback device (DEV[,format=\n"
+	      "                   bgr32|xrgb32|rgb24|yuyv])\n"
+	      "  --png DIR        every 60th frame as DIR/frame-N.png\n"
+	      "                   (DIR,every=N for another N)\n"
+	      "  --vnc PORT       a VNC server on 127.0.0.1:PORT\n"
+	      "  --sink SPEC      any frame sink (userspace/include/rdc_sink.h)\n"
 	      "  -v, -q           more, less logging (stderr)\n"
 	      "  -h, --help       this text\n",
 	      f);
@@ -428,7 +434,33 @@ struct rdcd_opts {
 	const char *mode, *record, *token, *ready;
 	uint32_t vram;
 	bool group;
+	char *sinks[RDCD_MAX_SINKS];
+	unsigned int nsinks;
 };
+
+/* A PNG a second at 60 Hz unless the spec says otherwise. */
+#define RDCD_PNG_EVERY 60
+
+static int rdcd_sink_opt(struct rdcd_opts *o, const char *opt,
+			 const char *val)
+{
+	const char *kind = !strcmp(opt, "--v4l2") ? "v4l2:"
+			   : !strcmp(opt, "--png") ? "png:"
+			   : !strcmp(opt, "--vnc") ? "vnc:" : "";
+	bool png_every = kind[0] == 'p' && !strstr(val, "every=");
+	char *spec;
+
+	if (o->nsinks == RDCD_MAX_SINKS) {
+		fprintf(stderr, "rdcd: too many frame sinks\n");
+		return -1;
+	}
+	if ((png_every ? asprintf(&spec, "%s%s,every=%d", kind, val,
+				  RDCD_PNG_EVERY)
+		       : asprintf(&spec, "%s%s", kind, val)) < 0)
+		return -1;
+	o->sinks[o->nsinks++] = spec;
+	return 0;
+}
 
 static int parse_size(const char *s, uint32_t *out)
 {
@@ -467,6 +499,15 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 			d->log_level++;
 		} else if (!strcmp(a, "-q")) {
 			d->log_level--;
+		} else if (!strcmp(a, "--v4l2") || !strcmp(a, "--png") ||
+			   !strcmp(a, "--vnc") || !strcmp(a, "--sink")) {
+			if (!val) {
+				fprintf(stderr, "rdcd: %s needs a value\n", a);
+				return -1;
+			}
+			i++;
+			if (rdcd_sink_opt(o, a, val))
+				return -1;
 		} else if (!strcmp(a, "--listen") || !strcmp(a, "--mode") ||
 			   !strcmp(a, "--vram") || !strcmp(a, "--record") ||
 			   !strcmp(a, "--token") || !strcmp(a, "--ready-file")) {
@@ -563,6 +604,8 @@ static void rdcd_loop(struct rdcd *d)
 		}
 		if (rdcd_advance(d))
 			rdcd_after_advance(d);
+		for (unsigned int i = 0; i < d->nsinks; i++)
+			rdc_sink_poll(d->sinks[i]); /* VNC clients */
 		/* Replies go out at once: most clients wait for them. */
 		for (struct rdcd_client *c = d->clients, *next; c; c = next) {
 			next = c->next;
@@ -615,6 +658,16 @@ int main(int argc, char **argv)
 		return 1;
 	}
 	ret = 1;
+	for (unsigned int i = 0; i < o.nsinks; i++) {
+		int err = rdc_sink_open(o.sinks[i], &d.sinks[d.nsinks]);
+
+		if (err) {
+			rdcd_log(&d, RDCD_LOG_ERR, "sink %s: %s", o.sinks[i],
+				 rdc_strerror(err));
+			goto out;
+		}
+		d.nsinks++;
+	}
 	if (o.mode) {
 		int p = rdc_preset_by_name(o.mode);
 		int err = p < 0 ? RDC_E_INVAL
@@ -659,5 +712,9 @@ out:
 			unlink(d.lis[i].path);
 	}
 	rdcd_device_close(&d);
+	for (unsigned int i = 0; i < d.nsinks; i++)
+		rdc_sink_close(d.sinks[i]);
+	for (unsigned int i = 0; i < o.nsinks; i++)
+		free(o.sinks[i]);
 	return ret;
 }

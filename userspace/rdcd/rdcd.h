@@ -12,6 +12,7 @@
 
 #include "rdc_priv.h"
 #include "rdc_proto.h"
+#include "rdc_sink.h"
 
 #define RDCD_MAX_LISTEN 8
 #define RDCD_MAX_CLIENTS 128
@@ -23,6 +24,8 @@
 #define RDCD_MAX_QUEUED_FRAMES 2u
 /* Longest wait or step a client may ask for: one simulated minute. */
 #define RDCD_MAX_BUDGET_S 60u
+/* Frame sinks (--v4l2, --png, --vnc, --sink). */
+#define RDCD_MAX_SINKS 8
 
 enum rdcd_log_level { RDCD_LOG_ERR, RDCD_LOG_WARN, RDCD_LOG_INFO,
 		      RDCD_LOG_DEBUG };
@@ -99,6 +102,10 @@ struct rdcd {
 	int log_level;
 	uint32_t last_irq;
 	uint64_t frames;
+
+	/* every frame also goes to these */
+	rdc_sink *sinks[RDCD_MAX_SINKS];
+	unsigned int nsinks;
 
 	/* pacing: simulated time pace_sim0 was wall time pace_wall0 */
 	uint64_t pace_wall0_ns, pace_sim0;

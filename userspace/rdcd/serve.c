@@ -193,6 +193,27 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 		 (unsigned long long)number);
 }
 
+/* Sinks never stall the device: they drop what they cannot take. */
+static void rdcd_frame_to_sinks(struct rdcd *d, const uint32_t *xrgb,
+				uint32_t w, uint32_t h, uint64_t number)
+{
+	const struct rdc_timing *t = &d->hw->crtc.cur;
+	struct rdc_frame f = {.xrgb = xrgb, .width = w, .height = h,
+			      .stride = w, .seq = number};
+
+	if (rdc_sink_interval_timing(t->h_total, t->v_total, t->pixclk_khz,
+				     &f.interval_num, &f.interval_den))
+		f.interval_num = f.interval_den = 0;
+	for (unsigned int i = 0; i < d->nsinks; i++) {
+		int ret = rdc_sink_frame(d->sinks[i], &f);
+
+		if (ret)
+			rdcd_log(d, RDCD_LOG_WARN, "%s sink: frame %llu: %s",
+				 rdc_sink_kind(d->sinks[i]),
+				 (unsigned long long)number, rdc_strerror(ret));
+	}
+}
+
 /*
  * THE frame path: the chip calls this with every frame it completes, at
  * the start of vertical blanking.  Everything that consumes frames
@@ -206,6 +227,8 @@ static void rdcd_on_frame(void *ctx, const uint32_t *xrgb, uint32_t w,
 	d->frames++;
 	for (struct rdcd_client *c = d->clients; c; c = c->next)
 		rdcd_frame_to_client(d, c, xrgb, w, h, number);
+	if (d->nsinks)
+		rdcd_frame_to_sinks(d, xrgb, w, h, number);
 }
 
 /* ---- Device -------------------------------------------------------------- */

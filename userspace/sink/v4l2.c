@@ -177,6 +177,10 @@ static int v4l2_negotiate(rdc_sink *s, const struct rdc_frame *f)
 	if (!v4l2_try_fourcc(v, f, w, bpl, rdc_sink_fmt_fourcc(v->fmt), &vf) &&
 	    (!alt || !v4l2_try_fourcc(v, f, w, bpl, alt, &vf)))
 		return 1;
+	/* The interval before STREAMON: once that makes the device ready,
+	 * readers may ask for it. */
+	v->ival_num = v->ival_den = 0;
+	v4l2_set_interval(s, f);
 	/*
 	 * Frames still go by write(), but v4l2loopback only counts an opener
 	 * as its writer after STREAMON; only then does it announce OUTPUT
@@ -202,7 +206,6 @@ static int v4l2_negotiate(rdc_sink *s, const struct rdc_frame *f)
 	v->height = f->height;
 	v->bpl = bpl;
 	v->frame_bytes = bpl * f->height;
-	v->ival_num = v->ival_den = 0;
 	s->st.renegotiations++;
 	return 0;
 }
