@@ -5,6 +5,8 @@
  * tokens, control passing between clients, and the daemon still serving
  * everyone else afterwards and exiting cleanly (under ASan: no leaks).
  */
+#include <dirent.h>
+#include <png.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -691,6 +693,88 @@ static void test_paced(void **state)
 	assert_int_equal(netd_stop(&d), 0);
 }
 
+/* Names of the PNG stills in `dir`: how many, and the last one found. */
+static int png_stills(const char *dir, char *last, size_t cap)
+{
+	DIR *d = opendir(dir);
+	struct dirent *e;
+	int n = 0;
+
+	if (!d)
+		return -1;
+	while ((e = readdir(d))) {
+		size_t len = strlen(e->d_name);
+
+		if (len > 4 && !strcmp(e->d_name + len - 4, ".png")) {
+			snprintf(last, cap, "%s/%s", dir, e->d_name);
+			n++;
+		}
+	}
+	closedir(d);
+	return n;
+}
+
+/*
+ * SIGUSR1 asks rdcd's sinks for the next frame as a still: with
+ * `--png DIR,every=0` nothing is written until the signal, then exactly
+ * one PNG holding the screen as the client drew it.
+ */
+static void test_snapshot_signal(void **state)
+{
+	char dir[] = "/tmp/rdcd-snap-XXXXXX", spec[64], path[256] = "";
+	const char *args[] = {"--fast", "-q", "--mode", "320x200", "--png",
+			      spec, NULL};
+	png_image img = {.version = PNG_IMAGE_VERSION};
+	uint32_t *pix;
+	rdc_batch *b;
+	rdc_dev *dev = NULL;
+	struct netd d;
+	int n = 0;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(spec, sizeof(spec), "%s,every=0", dir);
+	assert_int_equal(netd_start(&d, args), 0);
+	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
+	b = rdc_batch_new();
+	assert_non_null(b);
+	assert_int_equal(rdc_batch_fg(b, 0x00ff4020), 0);
+	assert_int_equal(rdc_batch_fill_rect(b, 0, 0, 320, 200), 0);
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	assert_int_equal(rdc_finish(dev), 0);
+	assert_int_equal(rdc_vblank_wait(dev), 0);
+	assert_int_equal(rdc_vblank_wait(dev), 0);
+	assert_int_equal(png_stills(dir, path, sizeof(path)), 0);
+
+	assert_int_equal(kill(d.pid, SIGUSR1), 0);
+	for (int waited = 0; waited < NETD_IO_MS && n < 1; waited += 20) {
+		netd_sleep_ms(20);
+		n = png_stills(dir, path, sizeof(path));
+	}
+	assert_int_equal(n, 1);
+	/* the daemon keeps running frames: still just the one */
+	assert_int_equal(rdc_vblank_wait(dev), 0);
+	assert_int_equal(rdc_vblank_wait(dev), 0);
+	assert_int_equal(png_stills(dir, path, sizeof(path)), 1);
+
+	assert_true(png_image_begin_read_from_file(&img, path));
+	img.format = PNG_FORMAT_BGRA;
+	assert_int_equal(img.width, 320);
+	assert_int_equal(img.height, 200);
+	pix = malloc(PNG_IMAGE_SIZE(img));
+	assert_non_null(pix);
+	assert_true(png_image_finish_read(&img, NULL, pix, 0, NULL));
+	for (size_t i = 0; i < 320 * 200; i++)
+		if ((pix[i] & 0x00ffffffu) != 0x00ff4020u)
+			fail_msg("pixel %zu is %08x", i, pix[i]);
+	free(pix);
+	unlink(path);
+	rmdir(dir);
+	rdc_batch_free(b);
+	rdc_close(dev);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -704,6 +788,7 @@ int main(void)
 		cmocka_unit_test(test_record_replay),
 		cmocka_unit_test(test_random_requests),
 		cmocka_unit_test(test_paced),
+		cmocka_unit_test(test_snapshot_signal),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -36,10 +36,31 @@
 #define RDCD_PACE_SLACK (RDC_DEFAULT_CORE_HZ / 10u)
 
 static volatile sig_atomic_t rdcd_stop;
+static volatile sig_atomic_t rdcd_snap;
 
 static void rdcd_on_signal(int sig)
 {
 	rdcd_stop = sig;
+}
+
+static void rdcd_on_snapshot(int sig)
+{
+	(void)sig;
+	rdcd_snap = 1;
+}
+
+/* SIGUSR1: the next frame as a still, in every sink that makes stills. */
+static void rdcd_snapshot(struct rdcd *d)
+{
+	unsigned int n = 0;
+
+	rdcd_snap = 0;
+	for (unsigned int i = 0; i < d->nsinks; i++)
+		if (!rdc_sink_snapshot(d->sinks[i]))
+			n++;
+	rdcd_log(d, n ? RDCD_LOG_INFO : RDCD_LOG_WARN,
+		 "snapshot requested: %u sink%s will keep the next frame", n,
+		 n == 1 ? "" : "s");
 }
 
 void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
@@ -81,7 +102,9 @@ static void usage(FILE *f)
 	      "  --v4l2 DEV       frames to a v4l2loopback device (DEV[,format=\n"
 	      "                   bgr32|xrgb32|rgb24|yuyv])\n"
 	      "  --png DIR        every 60th frame as DIR/frame-N.png\n"
-	      "                   (DIR,every=N for another N)\n"
+	      "                   (DIR,every=N for another N; every=0: only\n"
+	      "                   on SIGUSR1, which asks every sink for the\n"
+	      "                   next frame as a still)\n"
 	      "  --vnc PORT       a VNC server on 127.0.0.1:PORT\n"
 	      "  --sink SPEC      any frame sink (userspace/include/rdc_sink.h)\n"
 	      "  -v, -q           more, less logging (stderr)\n"
@@ -602,6 +625,8 @@ static void rdcd_loop(struct rdcd *d)
 					c->dead = true;
 			}
 		}
+		if (rdcd_snap)
+			rdcd_snapshot(d);
 		if (rdcd_advance(d))
 			rdcd_after_advance(d);
 		for (unsigned int i = 0; i < d->nsinks; i++)
@@ -624,6 +649,7 @@ int main(int argc, char **argv)
 			 .mode = RDC_RUN_PACED};
 	struct rdcd_opts o = {0};
 	struct sigaction sa = {.sa_handler = rdcd_on_signal};
+	struct sigaction snap = {.sa_handler = rdcd_on_snapshot};
 	sigset_t block;
 	int ret = 1;
 
@@ -637,9 +663,11 @@ int main(int argc, char **argv)
 	sigemptyset(&block);
 	sigaddset(&block, SIGINT);
 	sigaddset(&block, SIGTERM);
+	sigaddset(&block, SIGUSR1);
 	sigprocmask(SIG_BLOCK, &block, NULL);
 	sigaction(SIGINT, &sa, NULL);
 	sigaction(SIGTERM, &sa, NULL);
+	sigaction(SIGUSR1, &snap, NULL);
 	signal(SIGPIPE, SIG_IGN);
 
 	if (o.record) {
