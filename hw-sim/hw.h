@@ -268,6 +268,60 @@ void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t);
  */
 int rdc_hw_run_until_idle(struct rdc_hw *hw, uint64_t t);
 
+/*
+ * Host waits (hw-sim/wait.c): let the chip run until a register condition
+ * holds, the way every host of the core waits (librdc's sim: backend, the
+ * kernel driver), so the same waits end at the same cycle everywhere.
+ * The wait ends when ANY term holds.  Between checks the chip runs a slice
+ * of simulated time that starts at RDC_WAIT_SLICE_FIRST cycles and doubles
+ * up to RDC_WAIT_SLICE_MAX; a wait that needs the DP (a fence, the FIFO
+ * draining) runs with rdc_hw_run_until_idle, so it ends at the exact
+ * cycle the DP ran out of work.
+ */
+enum rdc_wait_test {
+	RDC_WAIT_TEST_NONE,	/* unused term */
+	RDC_WAIT_TEST_GE,	/* (reg & mask) >= value, unsigned */
+	RDC_WAIT_TEST_WRAP_GE,	/* (int32_t)((reg & mask) - value) >= 0 */
+	RDC_WAIT_TEST_EQ,	/* (reg & mask) == value */
+};
+
+#define RDC_WAIT_TEST_TERMS 2
+#define RDC_WAIT_SLICE_FIRST 16u
+#define RDC_WAIT_SLICE_MAX 16384u
+
+struct rdc_wait_cond {
+	uint32_t test; /* enum rdc_wait_test */
+	uint32_t reg, mask, value;
+};
+
+struct rdc_hw_wait {
+	struct rdc_wait_cond term[RDC_WAIT_TEST_TERMS];
+	bool needs_dp; /* RDC_HW_WAIT_HALTED if the DP halts */
+	uint64_t budget; /* simulated cycles from the start */
+	/* progress, set by rdc_hw_wait_begin */
+	uint64_t start, slice;
+};
+
+enum rdc_hw_wait_result {
+	RDC_HW_WAIT_DONE,    /* a term holds */
+	RDC_HW_WAIT_MORE,    /* `work` cycles ran: call rdc_hw_wait_run again */
+	RDC_HW_WAIT_TIMEOUT, /* the budget ran out */
+	RDC_HW_WAIT_HALTED,  /* needs_dp and the DP halted */
+};
+
+/* Whether one term holds now (reads the register as the host would). */
+bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c);
+/* Start a wait at hw->now (terms, needs_dp and budget already set). */
+void rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w);
+/*
+ * Go on with a wait for at most about `work` cycles (RDC_NEVER: until it
+ * ends).  Stopping and resuming never changes where the wait ends: a
+ * caller that must not hold a lock for long (a kernel spinlock, a daemon
+ * serving others) runs it in pieces and gets the same cycle.
+ */
+enum rdc_hw_wait_result rdc_hw_wait_run(struct rdc_hw *hw,
+					struct rdc_hw_wait *w, uint64_t work);
+
 /* Drive the input pins (RDC_PIN_RESET_N, RDC_PIN_BL_EN). */
 void rdc_hw_set_pins(struct rdc_hw *hw, uint32_t pins_in);
 uint32_t rdc_hw_pins(struct rdc_hw *hw);

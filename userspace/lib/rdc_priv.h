@@ -47,6 +47,35 @@ struct rdc_wait {
 /* Ten simulated seconds of the default 100 MHz core clock. */
 #define RDC_WAIT_BUDGET_DEFAULT (10ull * RDC_DEFAULT_CORE_HZ)
 
+_Static_assert(RDC_WAIT_TERMS == RDC_WAIT_TEST_TERMS, "one wait, two forms");
+
+/* The chip's form of a wait (hw-sim/wait.c), budget defaulted. */
+static inline void rdc_wait_to_hw(const struct rdc_wait *w,
+				  struct rdc_hw_wait *out)
+{
+	static const uint32_t test[] = {
+		[RDC_WAIT_NONE] = RDC_WAIT_TEST_NONE,
+		[RDC_WAIT_GE] = RDC_WAIT_TEST_GE,
+		[RDC_WAIT_WRAP_GE] = RDC_WAIT_TEST_WRAP_GE,
+		[RDC_WAIT_EQ] = RDC_WAIT_TEST_EQ,
+	};
+
+	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+		const struct rdc_wait_term *t = &w->term[i];
+
+		out->term[i] = (struct rdc_wait_cond){
+			.test = (unsigned int)t->kind < RDC_ARRAY_SIZE(test)
+					? test[t->kind]
+					: RDC_WAIT_TEST_NONE,
+			.reg = t->reg,
+			.mask = t->mask,
+			.value = t->value,
+		};
+	}
+	out->needs_dp = w->needs_dp;
+	out->budget = w->budget ? w->budget : RDC_WAIT_BUDGET_DEFAULT;
+}
+
 struct rdc_backend {
 	/* URI scheme without the colon, e.g. "sim". */
 	const char *scheme;
@@ -110,6 +139,7 @@ struct rdc_backend {
 extern const struct rdc_backend rdc_backend_sim;
 extern const struct rdc_backend rdc_backend_unix; /* net.c */
 extern const struct rdc_backend rdc_backend_tcp;  /* net.c */
+extern const struct rdc_backend rdc_backend_fbdev; /* fbdev.c, rdcfb.ko */
 
 /*
  * The chip behind a "sim:" handle, NULL for any other backend: rdcd owns

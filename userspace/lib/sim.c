@@ -25,8 +25,6 @@
  * frame is ~1.7 M cycles at 640x480) return up to one slice after the
  * event; slices start short and double up to a cap.
  */
-#define SIM_SLICE_FIRST	 16u
-#define SIM_SLICE_MAX	 16384u
 
 struct sim {
 	struct rdc_hw hw;
@@ -173,52 +171,20 @@ static int sim_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 							       : 0;
 }
 
-static bool sim_term_holds(struct rdc_hw *hw, const struct rdc_wait_term *t)
-{
-	uint32_t v;
-
-	if (t->kind == RDC_WAIT_NONE)
-		return false;
-	v = rdc_hw_read(hw, t->reg) & t->mask;
-	switch (t->kind) {
-	case RDC_WAIT_GE:
-		return v >= t->value;
-	case RDC_WAIT_WRAP_GE:
-		return (int32_t)(v - t->value) >= 0;
-	case RDC_WAIT_EQ:
-		return v == t->value;
-	default:
-		return false;
-	}
-}
-
 static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 {
 	struct rdc_hw *hw = &sim_of(dev)->hw;
-	uint64_t budget = w->budget ? w->budget : RDC_WAIT_BUDGET_DEFAULT;
-	uint64_t start = hw->now;
-	uint64_t slice = SIM_SLICE_FIRST;
+	struct rdc_hw_wait hw_w;
 
-	for (;;) {
-		uint64_t before = hw->now;
-
-		for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++)
-			if (sim_term_holds(hw, &w->term[i]))
-				return 0;
-		/*
-		 * STATUS reflects the DP as of its last run: after a RESUME it
-		 * reads halted until the chip has run, so judge only then.
-		 */
-		if (w->needs_dp && hw->now != start &&
-		    (rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED))
-			return RDC_E_HALTED;
-		if (hw->now - start >= budget)
-			return RDC_E_TIMEOUT;
-		if (!w->needs_dp || !rdc_hw_run_until_idle(hw, hw->now + slice) ||
-		    hw->now == before)
-			rdc_hw_run_until(hw, hw->now + slice);
-		if (slice < SIM_SLICE_MAX)
-			slice *= 2;
+	rdc_wait_to_hw(w, &hw_w);
+	rdc_hw_wait_begin(hw, &hw_w);
+	switch (rdc_hw_wait_run(hw, &hw_w, RDC_NEVER)) {
+	case RDC_HW_WAIT_DONE:
+		return 0;
+	case RDC_HW_WAIT_HALTED:
+		return RDC_E_HALTED;
+	default:
+		return RDC_E_TIMEOUT;
 	}
 }
 

@@ -493,25 +493,6 @@ static int rdcd_wait_from_proto(const uint8_t *pl, size_t len,
 	return 0;
 }
 
-static bool rdcd_term_holds(struct rdc_hw *hw, const struct rdc_wait_term *t)
-{
-	uint32_t v;
-
-	if (t->kind == RDC_WAIT_NONE)
-		return false;
-	v = rdc_hw_read(hw, t->reg) & t->mask;
-	switch (t->kind) {
-	case RDC_WAIT_GE:
-		return v >= t->value;
-	case RDC_WAIT_WRAP_GE:
-		return (int32_t)(v - t->value) >= 0;
-	case RDC_WAIT_EQ:
-		return v == t->value;
-	default:
-		return false;
-	}
-}
-
 static bool rdcd_halted(struct rdcd *d)
 {
 	return rdc_hw_read(d->hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED;
@@ -552,19 +533,19 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 		}
 		break;
 	case RDCD_PEND_WAIT: {
-		const struct rdc_wait *w = &c->pend_wait;
-		uint64_t budget = w->budget ? w->budget
-					    : RDC_WAIT_BUDGET_DEFAULT;
+		struct rdc_hw_wait w;
 		bool hold = false;
 
-		for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++)
-			hold |= rdcd_term_holds(d->hw, &w->term[i]);
+		/* time moves with the daemon's clock: only the checks here */
+		rdc_wait_to_hw(&c->pend_wait, &w);
+		for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++)
+			hold |= rdc_hw_cond_holds(d->hw, &w.term[i]);
 		if (hold)
 			break;
-		if (w->needs_dp && d->hw->now != c->pend_start &&
+		if (w.needs_dp && d->hw->now != c->pend_start &&
 		    rdcd_halted(d))
 			ret = RDC_E_HALTED;
-		else if (d->hw->now - c->pend_start >= budget)
+		else if (d->hw->now - c->pend_start >= w.budget)
 			ret = RDC_E_TIMEOUT;
 		else
 			return false;

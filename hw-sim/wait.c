@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Host waits on a register condition (see hw.h).  One implementation for
+ * every host of the core, so that a script waiting through librdc's sim:
+ * backend and the same script waiting through the kernel driver end their
+ * waits at the same cycle and give the same frames and cycle counts.
+ */
+#include "hw.h"
+
+bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c)
+{
+	uint32_t v;
+
+	if (c->test == RDC_WAIT_TEST_NONE)
+		return false;
+	v = rdc_hw_read(hw, c->reg) & c->mask;
+	switch (c->test) {
+	case RDC_WAIT_TEST_GE:
+		return v >= c->value;
+	case RDC_WAIT_TEST_WRAP_GE:
+		return (int32_t)(v - c->value) >= 0;
+	case RDC_WAIT_TEST_EQ:
+		return v == c->value;
+	default:
+		return false;
+	}
+}
+
+void rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w)
+{
+	w->start = hw->now;
+	w->slice = RDC_WAIT_SLICE_FIRST;
+}
+
+enum rdc_hw_wait_result rdc_hw_wait_run(struct rdc_hw *hw,
+					struct rdc_hw_wait *w, uint64_t work)
+{
+	uint64_t from = hw->now;
+
+	for (;;) {
+		uint64_t before = hw->now;
+
+		for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++)
+			if (rdc_hw_cond_holds(hw, &w->term[i]))
+				return RDC_HW_WAIT_DONE;
+		/*
+		 * STATUS reflects the DP as of its last run: after a RESUME it
+		 * reads halted until the chip has run, so judge only then.
+		 */
+		if (w->needs_dp && hw->now != w->start &&
+		    (rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED))
+			return RDC_HW_WAIT_HALTED;
+		if (hw->now - w->start >= w->budget)
+			return RDC_HW_WAIT_TIMEOUT;
+		if (!w->needs_dp ||
+		    !rdc_hw_run_until_idle(hw, hw->now + w->slice) ||
+		    hw->now == before)
+			rdc_hw_run_until(hw, hw->now + w->slice);
+		if (w->slice < RDC_WAIT_SLICE_MAX)
+			w->slice *= 2;
+		/* between two checks, so a resumed wait goes on unchanged */
+		if (work != RDC_NEVER && hw->now - from >= work)
+			return RDC_HW_WAIT_MORE;
+	}
+}
