@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "rdc.h"
+#include "rdc_priv.h" /* the wait kinds the protocol carries */
 #include "test_net_common.h"
 
 static const char *const args_stepped[] = {"--stepped", "-v", NULL};
@@ -775,6 +776,62 @@ static void test_snapshot_signal(void **state)
 	assert_int_equal(netd_stop(&d), 0);
 }
 
+/*
+ * Stepped mode: a long wait of the controlling client moves time in
+ * pieces, and the others are answered meanwhile (they see time move);
+ * the controller hanging up mid-wait leaves a trace that still replays.
+ */
+static void test_stepped_wait_serves_others(void **state)
+{
+	char trace[200];
+	const char *args[] = {"--stepped", "-q", "--record", trace, NULL};
+	struct rdc_proto_wait pw = {.budget = 60ull * 100000000ull};
+	struct rdc_replay_result res;
+	uint8_t b[RDC_PROTO_WAIT_SIZE], v[4];
+	uint32_t f0 = 0, f1 = 0;
+	struct pollfd p;
+	struct netd d;
+	int ctl, obs;
+
+	(void)state;
+	snprintf(trace, sizeof(trace), "/tmp/rdcd-trace-w-%d", (int)getpid());
+	assert_int_equal(netd_start(&d, args), 0);
+	ctl = hello_fd(&d, RDC_HELLO_CONTROL);
+	obs = hello_fd(&d, 0);
+	assert_true(ctl >= 0 && obs >= 0);
+	/* a fence value nobody writes: only the budget would end it */
+	pw.term[0].kind = RDC_WAIT_EQ;
+	pw.term[0].reg = RDC_REG_FENCE;
+	pw.term[0].mask = ~0u;
+	pw.term[0].value = 0xdeadbeefu;
+	rdc_proto_wait_encode(b, &pw);
+	assert_int_equal(netd_send(ctl, RDC_MSG_WAIT, 1, b, sizeof(b)), 0);
+
+	rdc_proto_put32(b, RDC_REG_FRAME_COUNT);
+	assert_int_equal(netd_call(obs, RDC_MSG_REG_READ, 2, b, 4, v, 4),
+			 RDC_ST_OK);
+	f0 = rdc_proto_get32(v);
+	for (int waited = 0; waited < NETD_IO_MS && f1 <= f0; waited += 10) {
+		netd_sleep_ms(10);
+		assert_int_equal(netd_call(obs, RDC_MSG_REG_READ, 3, b, 4, v,
+					   4),
+				 RDC_ST_OK);
+		f1 = rdc_proto_get32(v);
+	}
+	assert_true(f1 > f0); /* the wait is moving time, a piece at a time */
+	p = (struct pollfd){.fd = ctl, .events = POLLIN};
+	assert_int_equal(poll(&p, 1, 0), 0); /* and has not answered yet */
+	close(ctl);
+	assert_serving(&d);
+	close(obs);
+	assert_int_equal(netd_stop(&d), 0);
+
+	assert_int_equal(rdc_replay_file(trace, &res, NULL), 0);
+	assert_int_equal(res.mismatches, 0);
+	assert_true(res.time > 0);
+	unlink(trace);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -789,6 +846,7 @@ int main(void)
 		cmocka_unit_test(test_random_requests),
 		cmocka_unit_test(test_paced),
 		cmocka_unit_test(test_snapshot_signal),
+		cmocka_unit_test(test_stepped_wait_serves_others),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -160,6 +160,13 @@ void rdc_rec_attach(struct rdc_rec *rec, rdc_dev *dev);
 void rdc_rec_power(struct rdc_rec *rec);
 /* Write the end record (`dev` attached, or NULL), flush and free. */
 int rdc_rec_close(struct rdc_rec *rec, rdc_dev *dev);
+/*
+ * Time moved on the chip directly, not through the wrapped handle, from
+ * simulated time `from` on (rdcd runs long waits in pieces): the trace
+ * writes it as a step, in its place, before its next record.  NULL rec:
+ * nothing.
+ */
+void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from);
 
 struct rdc_dev {
 	const struct rdc_backend *be;

@@ -49,6 +49,9 @@ struct rdc_rec {
 	const struct rdc_backend *inner;
 	void *inner_priv;
 	struct rdc_hw *hw;
+	/* time moved on the chip directly since moved_from (rdc_rec_time_moved) */
+	bool moved;
+	uint64_t moved_from;
 };
 
 static const struct rdc_backend rdc_backend_rec;
@@ -59,10 +62,30 @@ static void rec_put(struct rdc_rec *r, const void *p, size_t n)
 		r->err = RDC_E_FILE;
 }
 
+/* A STEP record for time that moved at `t`, outside the handle. */
+static void rec_step_put(struct rdc_rec *r, uint64_t t, uint64_t cycles)
+{
+	uint8_t b[17];
+
+	b[0] = REC_STEP;
+	rdc_proto_put64(b + 1, t);
+	rdc_proto_put64(b + 9, cycles);
+	rec_put(r, b, sizeof(b));
+}
+
+/* Time that moved outside the handle, as a step, before the next record. */
+static void rec_flush_moved(struct rdc_rec *r)
+{
+	if (r->moved && r->hw && r->hw->now > r->moved_from)
+		rec_step_put(r, r->moved_from, r->hw->now - r->moved_from);
+	r->moved = false;
+}
+
 static void rec_head(struct rdc_rec *r, uint8_t op)
 {
 	uint8_t b[9];
 
+	rec_flush_moved(r);
 	b[0] = op;
 	rdc_proto_put64(b + 1, r->hw ? r->hw->now : 0);
 	rec_put(r, b, sizeof(b));
@@ -155,9 +178,13 @@ static void rec_be_close(rdc_dev *dev)
 static int rec_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 {
 	struct rdc_rec *r = dev->priv;
-	uint64_t t = r->hw->now;
-	int ret = REC_INNER(dev, r, reg_read(dev, reg, val));
 	uint8_t b[17];
+	uint64_t t;
+	int ret;
+
+	rec_flush_moved(r);
+	t = r->hw->now;
+	ret = REC_INNER(dev, r, reg_read(dev, reg, val));
 
 	b[0] = REC_REG_READ;
 	rdc_proto_put64(b + 1, t);
@@ -227,6 +254,14 @@ static int rec_step(rdc_dev *dev, uint64_t cycles)
 	rdc_proto_put64(b, cycles);
 	rec_put(r, b, sizeof(b));
 	return REC_INNER(dev, r, step(dev, cycles));
+}
+
+void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from)
+{
+	if (rec && !rec->moved) {
+		rec->moved = true;
+		rec->moved_from = from;
+	}
 }
 
 static int rec_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,

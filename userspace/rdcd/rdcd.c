@@ -441,7 +441,8 @@ static bool rdcd_advance(struct rdcd *d)
 		break;
 	}
 	default:
-		return false;
+		/* stepped: time moves only in a pending wait's next piece */
+		return rdcd_has_pending(d);
 	}
 	if (target <= now)
 		return false;
@@ -598,7 +599,7 @@ static void rdcd_loop(struct rdcd *d)
 		if (d->mode == RDC_RUN_PACED) {
 			ts.tv_nsec = RDCD_TICK_MS * 1000000L;
 			tmo = &ts;
-		} else if (d->mode == RDC_RUN_FAST) {
+		} else if (d->mode == RDC_RUN_FAST || rdcd_has_pending(d)) {
 			tmo = &ts; /* zero: just look */
 		}
 		/* Signals are blocked except inside ppoll: none is missed. */

@@ -26,6 +26,9 @@
 #define RDCD_MAX_BUDGET_S 60u
 /* Frame sinks (--v4l2, --png, --vnc, --sink). */
 #define RDCD_MAX_SINKS 8
+/* Stepped mode: simulated cycles a pending wait runs per turn of the loop
+ * (1 ms of the default core clock) before the others are served again. */
+#define RDCD_WAIT_PIECE (RDC_DEFAULT_CORE_HZ / 1000u)
 
 enum rdcd_log_level { RDCD_LOG_ERR, RDCD_LOG_WARN, RDCD_LOG_INFO,
 		      RDCD_LOG_DEBUG };
@@ -58,12 +61,13 @@ struct rdcd_client {
 	size_t out_bytes;
 	uint32_t out_frames;
 
-	/* a request that waits for the device (paced and fast modes) */
+	/* a request that waits for the device */
 	enum rdcd_pending pend;
 	struct rdc_proto_hdr pend_hdr;
 	uint8_t *pend_words; /* SUBMIT payload, little-endian words */
 	size_t pend_n, pend_done;
 	struct rdc_wait pend_wait;
+	struct rdc_hw_wait pend_hw; /* stepped mode: the wait moves time */
 	uint64_t pend_start, pend_target;
 
 	/* subscription */

@@ -308,6 +308,7 @@ void rdcd_client_free(struct rdcd *d, struct rdcd_client *c)
 	if (c->pend != RDCD_PEND_NONE)
 		rdcd_log(d, RDCD_LOG_WARN,
 			 "client %u: left with a request pending", c->id);
+
 	rdcd_log(d, RDCD_LOG_INFO, "client %u disconnected", c->id);
 	close(c->fd);
 	while (c->out_head) {
@@ -499,8 +500,36 @@ static bool rdcd_halted(struct rdcd *d)
 }
 
 /*
- * Progress on a pending request (paced and fast modes).  Returns true
- * when it finished and was answered.
+ * Stepped mode: the controlling client's wait moves time itself, a piece
+ * per turn of the daemon's loop so that everyone else is served between
+ * pieces; where it ends does not depend on the pieces (hw-sim/wait.c).
+ * 1 while it goes on, else its result.  The trace records the time it
+ * moved as steps, between whatever the others did meanwhile.
+ */
+static int rdcd_stepped_wait(struct rdcd *d, struct rdcd_client *c)
+{
+	int ret;
+
+	rdc_rec_time_moved(d->rec, d->hw->now);
+	switch (rdc_hw_wait_run(d->hw, &c->pend_hw, RDCD_WAIT_PIECE)) {
+	case RDC_HW_WAIT_MORE:
+		return 1;
+	case RDC_HW_WAIT_DONE:
+		ret = 0;
+		break;
+	case RDC_HW_WAIT_HALTED:
+		ret = RDC_E_HALTED;
+		break;
+	default:
+		ret = RDC_E_TIMEOUT;
+		break;
+	}
+	return ret;
+}
+
+/*
+ * Progress on a pending request.  Returns true when it finished and was
+ * answered.
  */
 static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 {
@@ -535,6 +564,13 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 	case RDCD_PEND_WAIT: {
 		struct rdc_hw_wait w;
 		bool hold = false;
+
+		if (d->mode == RDC_RUN_STEPPED) {
+			ret = rdcd_stepped_wait(d, c);
+			if (ret > 0)
+				return false;
+			break;
+		}
 
 		/* time moves with the daemon's clock: only the checks here */
 		rdc_wait_to_hw(&c->pend_wait, &w);
@@ -796,17 +832,16 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 			rdcd_reply(d, c, h, (uint32_t)st, NULL, 0);
 			break;
 		}
-		if (d->mode == RDC_RUN_STEPPED) {
-			ret = d->dev->be->wait(d->dev, &w);
-			rdcd_reply_err(d, c, h, ret);
-			rdcd_irq_events(d);
-			break;
-		}
 		c->pend = RDCD_PEND_WAIT;
 		c->pend_hdr = *h;
 		c->pend_wait = w;
 		c->pend_start = d->hw->now;
-		rdcd_pending_step(d, c);
+		if (d->mode == RDC_RUN_STEPPED) {
+			rdc_wait_to_hw(&w, &c->pend_hw);
+			rdc_hw_wait_begin(d->hw, &c->pend_hw);
+		}
+		if (rdcd_pending_step(d, c))
+			rdcd_irq_events(d);
 		break;
 	}
 	case RDC_MSG_STEP: {
