@@ -88,6 +88,12 @@ enum rdc_dp_phase {
 struct rdc_dp {
 	struct rdc_hw *hw;
 	struct rdc_dp_state st;
+	/*
+	 * Draw with the plain per-pixel loops only, never a fast path (set
+	 * by tests, which check that both give the same pixels, cycles and
+	 * counters; a chip reset keeps it).
+	 */
+	bool ref_paths;
 
 	/* decoder */
 	enum rdc_dp_phase phase;
@@ -145,6 +151,18 @@ struct rdc_dp {
 		int16_t y, xl, xr, dy;
 	} flood_stk[RDC_DP_FLOOD_STACK];
 	uint32_t flood_row[3][RDC_DP_CHUNK];
+
+	/* Solid runs (lines, outlines, fills) queued for rdc_port_runs;
+	 * queue_spans: solid spans and columns go to the queue (raster.c) */
+	struct rdc_port_run runs[RDC_DP_CHUNK];
+	uint32_t nruns;
+	bool queue_spans;
+	/* Opaque MONO/TEXT in XRGB8888: the four pixels (VRAM bytes) of
+	 * each 4-bit group of glyph bits, for FG nibble_fg and BG nibble_bg
+	 * (valid once nibble_ok) */
+	uint8_t nibble_px[16][16];
+	uint32_t nibble_fg, nibble_bg;
+	bool nibble_ok;
 };
 
 /* Initialise and connect to the chip (rdc_hw_set_dp). */

@@ -23,6 +23,18 @@ void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
  * max(|dx|, |dy|) being (x1, y1): dashes draw their pieces with it. */
 void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		       int32_t y1, int64_t first, int64_t last);
+/*
+ * Between rdc_dp_queue_begin and rdc_dp_queue_end, solid FG spans and
+ * columns (span_fill, col_fill, an unpatterned dp_fill_span) are queued
+ * and charged in bulk (rdc_port_runs), in their order, with the same
+ * pixels and cycles; begin does nothing where the queue cannot be used.
+ * Nothing else may touch VRAM in between.  rdc_dp_queue_span is
+ * dp_fill_span's way in: [xa, xb] of row y, inside the clip.
+ */
+void rdc_dp_queue_begin(struct rdc_dp *dp);
+void rdc_dp_queue_end(struct rdc_dp *dp);
+void rdc_dp_queue_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb);
+
 /* Solid FG span [xa, xb] of row y, clipped. */
 void rdc_dp_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb);
 /*

@@ -51,8 +51,11 @@ void dp_fill_span(struct rdc_dp *dp, int32_t x0, int32_t x1, int32_t y)
 	if (x0 > x1)
 		return;
 	if (dp->st.pat_mode == RDC_PAT_NONE) {
-		rdc_dp_span_px(dp, y, x0, (uint32_t)(x1 - x0 + 1), dp->st.fg,
-			       NULL, NULL);
+		if (dp->queue_spans)
+			rdc_dp_queue_span(dp, y, x0, x1);
+		else
+			rdc_dp_span_px(dp, y, x0, (uint32_t)(x1 - x0 + 1),
+				       dp->st.fg, NULL, NULL);
 		return;
 	}
 	for (x = x0; x <= x1; x += (int32_t)RDC_DP_CHUNK) {

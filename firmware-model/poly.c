@@ -394,13 +394,19 @@ static void fill_span_cb(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb,
 			 void *ctx)
 {
 	(void)ctx;
-	dp_fill_span(dp, xa, xb, y);
+	/* the run is inside the clip: queued as is when it can be */
+	if (dp->queue_spans)
+		rdc_dp_queue_span(dp, y, xa, xb);
+	else
+		dp_fill_span(dp, xa, xb, y);
 }
 
 void dp_fill_poly(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
 		  bool nonzero)
 {
+	rdc_dp_queue_begin(dp);
 	dp_poly_scan(dp, xy, n, nonzero, fill_span_cb, NULL);
+	rdc_dp_queue_end(dp);
 }
 
 /* Transform the command's points into dp->poly_xy. */

@@ -98,18 +98,28 @@ static uint32_t word_px(const uint32_t *w, unsigned int bpp, uint32_t bit)
  * block the compiler turns into wide stores. */
 static void fill32(uint8_t *p, uint32_t v, uint32_t n)
 {
-	uint8_t pat[FILL_BLOCK];
 	size_t len = (size_t)n * 4, i;
+	uint8_t pair[8];
+	uint64_t v2;
 
 	if ((v & 0xff) * 0x01010101u == v) {
 		rdc_memset(p, (int)(v & 0xff), len);
 		return;
 	}
-	for (i = 0; i < FILL_BLOCK; i += 4)
-		rdc_st32(pat + i, v);
-	for (i = 0; i + FILL_BLOCK <= len; i += FILL_BLOCK)
-		rdc_memcpy(p + i, pat, FILL_BLOCK);
-	rdc_memcpy(p + i, pat, len - i);
+	if (len < FILL_BLOCK) {
+		for (i = 0; i < len; i += 4)
+			rdc_st32(p + i, v);
+		return;
+	}
+	/* one block by 8-byte stores, then doubling copies of it */
+	rdc_st32(pair, v);
+	rdc_st32(pair + 4, v);
+	rdc_memcpy(&v2, pair, sizeof(v2));
+	for (i = 0; i < FILL_BLOCK; i += sizeof(v2))
+		rdc_memcpy(p + i, &v2, sizeof(v2));
+	for (; i * 2 <= len; i *= 2)
+		rdc_memcpy(p + i, p, i);
+	rdc_memcpy(p + i, p, len - i);
 }
 
 /*
@@ -165,6 +175,33 @@ static void span_emit(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 		}
 	}
 
+	if (vals && !on && bpp >= 8 && !dp->ref_paths &&
+	    (rop == RDC_ROP_COPY || rop == RDC_ROP_COPY_INVERTED)) {
+		/* Staged pixels over a destination the ROP ignores. */
+		uint32_t inv = rop == RDC_ROP_COPY ? 0 : mask;
+
+		switch (bpp) {
+		case 32:
+			for (i = 0; i < n; i++)
+				rdc_st32(p + 4 * i, vals[i] ^ inv);
+			break;
+		case 24:
+			for (i = 0; i < n; i++)
+				rdc_st24(p + 3 * i, (vals[i] ^ inv) & mask);
+			break;
+		case 16:
+			for (i = 0; i < n; i++)
+				rdc_st16(p + 2 * i, (vals[i] ^ inv) & mask);
+			break;
+		default:
+			for (i = 0; i < n; i++)
+				p[i] = (uint8_t)(vals[i] ^ inv);
+			break;
+		}
+		hw->perf.pixels += n;
+		return;
+	}
+
 	for (i = 0; i < n; i++) {
 		uint32_t bit = first + i * bpp, s_px, d_px;
 
@@ -179,6 +216,171 @@ static void span_emit(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 	hw->perf.pixels += cnt;
 }
 
+/*
+ * Queued solid runs.  Lines and outlines are many runs of a few pixels;
+ * rather than a port call each, they are queued in dp->runs and charged
+ * together by rdc_port_runs, which takes them for as long as no scanout
+ * event falls inside; the run it stops at goes through the port call the
+ * per-run path would make.  Each run is charged and written exactly as
+ * span_fill / col_fill would, so pixels, cycles and counters are the same.
+ * Only for DST formats of whole bytes, pixel-aligned (a pixel never
+ * straddles a burst, so a one-pixel column is a one-pixel span).
+ */
+static bool runs_ok(const struct rdc_dp *dp)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	unsigned int bpp = rdc_format_bpp(s->format);
+
+	return !dp->ref_paths && (bpp == 8 || bpp == 16 || bpp == 32) &&
+	       s->base % (bpp / 8) == 0 && s->stride % (bpp / 8) == 0;
+}
+
+/* The pixels of run r at p with colour fg through the ROP. */
+static void run_write(struct rdc_dp *dp, uint8_t *p,
+		      const struct rdc_port_run *r, uint32_t fg)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	unsigned int bpp = rdc_format_bpp(s->format), rop = dp->st.rop;
+	uint32_t mask = fmt_mask(bpp), bytes = bpp / 8, k;
+	uint32_t n = r->count == 1 ? r->len / bytes : r->count;
+	uint32_t step = r->count == 1 ? bytes : s->stride;
+
+	if (!rdc_rop_reads_dst(rop)) {
+		uint32_t v = rdc_rop_apply(rop, fg, 0) & mask;
+
+		if (bpp == 32 && r->count == 1) {
+			fill32(p, v, n);
+		} else if (bpp == 8 && r->count == 1) {
+			rdc_memset(p, (int)v, n);
+		} else if (bpp == 32) {
+			for (k = 0; k < n; k++, p += step)
+				rdc_st32(p, v);
+		} else if (bpp == 16) {
+			for (k = 0; k < n; k++, p += step)
+				rdc_st16(p, v);
+		} else {
+			for (k = 0; k < n; k++, p += step)
+				*p = (uint8_t)v;
+		}
+	} else {
+		for (k = 0; k < n; k++, p += step)
+			px_st(p, bpp, 0,
+			      rdc_rop_apply(rop, fg, px_ld(p, bpp, 0)) & mask);
+	}
+	dp->hw->perf.pixels += n;
+}
+
+/* Runs [first, first + n) charged by rdc_port_runs, their bytes at p. */
+static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
+		       uint32_t n)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	const struct rdc_port_run *r = dp->runs + first, *end = r + n;
+	uint32_t stride = s->stride, v, k, staged = 0;
+	uint64_t pixels = 0;
+
+	if (rdc_format_bpp(s->format) != 32 || rdc_rop_reads_dst(dp->st.rop)) {
+		for (; r < end; r++)
+			run_write(dp, p + r->addr, r, dp->st.fg);
+		return;
+	}
+	/*
+	 * XRGB8888 over a destination the ROP ignores: plain stores, and
+	 * rows of a block or more copied from one row of the colour staged
+	 * in dp->px (one memcpy a row, the fill's memset speed).
+	 */
+	v = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
+	for (; r < end; r++) {
+		uint8_t *q = p + r->addr;
+
+		if (r->count == 1 && r->len < FILL_BLOCK) {
+			for (k = 0; k < r->len; k += 4)
+				rdc_st32(q + k, v);
+			pixels += r->len / 4;
+			continue;
+		}
+		if (r->count == 1) {
+			if (r->len <= sizeof(dp->px)) {
+				if (staged < r->len) {
+					fill32((uint8_t *)dp->px, v,
+					       r->len / 4);
+					staged = r->len;
+				}
+				rdc_memcpy(q, dp->px, r->len);
+			} else {
+				fill32(q, v, r->len / 4);
+			}
+			pixels += r->len / 4;
+			continue;
+		}
+		for (k = 0; k < r->count; k++, q += stride)
+			rdc_st32(q, v);
+		pixels += r->count;
+	}
+	dp->hw->perf.pixels += pixels;
+}
+
+static void runs_flush(struct rdc_dp *dp)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	struct rdc_hw *hw = dp->hw;
+	unsigned int kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW :
+							     RDC_BUS_WRITE;
+	uint32_t fg = dp->st.fg, i = 0, done;
+	const struct rdc_port_run *r;
+	uint8_t *p;
+
+	while (i < dp->nruns) {
+		p = rdc_port_runs(hw, dp->runs + i, dp->nruns - i, s->stride,
+				  kind, &done);
+		runs_write(dp, p, i, done);
+		i += done;
+		if (i == dp->nruns)
+			break;
+		r = &dp->runs[i++];
+		if (r->count == 1)
+			p = rdc_port_span(hw, r->addr, r->len, kind);
+		else
+			p = rdc_port_column(hw, r->addr, s->stride, r->count,
+					    r->len, kind);
+		if (p)
+			run_write(dp, p, r, fg);
+	}
+	dp->nruns = 0;
+}
+
+void rdc_dp_queue_begin(struct rdc_dp *dp)
+{
+	dp->queue_spans = runs_ok(dp) && dp->st.pat_mode == RDC_PAT_NONE;
+}
+
+void rdc_dp_queue_end(struct rdc_dp *dp)
+{
+	if (dp->queue_spans)
+		runs_flush(dp);
+	dp->queue_spans = false;
+}
+
+/* Queue count pixels down from x, y (count 1: n pixels across). */
+static void queue_run(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t n,
+		      uint32_t count)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	uint32_t bytes = rdc_format_bpp(s->format) / 8;
+	struct rdc_port_run *r = &dp->runs[dp->nruns];
+
+	r->addr = s->base + (uint32_t)y * s->stride + (uint32_t)x * bytes;
+	r->len = n * bytes;
+	r->count = count;
+	if (++dp->nruns == RDC_DP_CHUNK)
+		runs_flush(dp);
+}
+
+void rdc_dp_queue_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb)
+{
+	queue_run(dp, xa, y, (uint32_t)(xb - xa + 1), 1);
+}
+
 /* Solid span [xa, xb] of row y, clipped here. */
 static void span_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t y,
 		      int32_t xa, int32_t xb, uint32_t colour)
@@ -189,7 +391,11 @@ static void span_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t y,
 	xb = RDC_MIN(xb, c->x1 - 1);
 	if (xa > xb)
 		return;
-	span_emit(dp, y, xa, (uint32_t)(xb - xa + 1), colour, NULL, NULL);
+	if (dp->queue_spans)
+		queue_run(dp, xa, y, (uint32_t)(xb - xa + 1), 1);
+	else
+		span_emit(dp, y, xa, (uint32_t)(xb - xa + 1), colour, NULL,
+			  NULL);
 }
 
 /* Solid vertical run [ya, yb] of column x, clipped here. */
@@ -210,6 +416,11 @@ static void col_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t x,
 	yb = RDC_MIN(yb, c->y1 - 1);
 	if (ya > yb)
 		return;
+	if (dp->queue_spans) {
+		/* one pixel is a span; pixel-aligned, it costs the same */
+		queue_run(dp, x, ya, 1, (uint32_t)(yb - ya + 1));
+		return;
+	}
 	if (ya == yb) {
 		span_emit(dp, ya, x, 1, colour, NULL, NULL);
 		return;
@@ -327,6 +538,64 @@ void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 			  n - (skip_last ? 1 : 0));
 }
 
+/*
+ * rdc_dp_line_steps' loop with its runs queued: the same runs, clipped
+ * the same way, as span_fill / col_fill would draw them.
+ */
+static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c,
+		       bool xmajor, int32_t u0, int32_t v0, int32_t sv,
+		       int64_t n, int64_t m, int64_t ilo, int64_t ihi,
+		       int64_t j, int64_t rem)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	uint32_t bytes = rdc_format_bpp(s->format) / 8;
+	int64_t i = ilo, run;
+
+	/* one run a pass: step on until the minor axis moves */
+	for (; i <= ihi; i++, j++) {
+		int32_t v, a, b;
+		struct rdc_port_run *r;
+
+		for (run = i; i < ihi; i++) {
+			rem += 2 * m;
+			if (rem >= 2 * n) {
+				rem -= 2 * n;
+				break;
+			}
+		}
+		v = v0 + sv * (int32_t)j;
+		a = u0 + (int32_t)run;
+		b = u0 + (int32_t)i;
+		r = &dp->runs[dp->nruns];
+		if (xmajor) {
+			if (v < c->y0 || v >= c->y1)
+				continue;
+			a = RDC_MAX(a, c->x0);
+			b = RDC_MIN(b, c->x1 - 1);
+			if (a > b)
+				continue;
+			r->addr = s->base + (uint32_t)v * s->stride +
+				  (uint32_t)a * bytes;
+			r->len = (uint32_t)(b - a + 1) * bytes;
+			r->count = 1;
+		} else {
+			if (v < c->x0 || v >= c->x1)
+				continue;
+			a = RDC_MAX(a, c->y0);
+			b = RDC_MIN(b, c->y1 - 1);
+			if (a > b)
+				continue;
+			r->addr = s->base + (uint32_t)a * s->stride +
+				  (uint32_t)v * bytes;
+			r->len = bytes;
+			r->count = (uint32_t)(b - a + 1);
+		}
+		if (++dp->nruns == RDC_DP_CHUNK)
+			runs_flush(dp);
+	}
+	runs_flush(dp);
+}
+
 void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		       int32_t y1, int64_t first, int64_t last)
 {
@@ -389,6 +658,10 @@ void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		rem = 0;
 	}
 	run = ilo;
+	if (runs_ok(dp)) {
+		line_queue(dp, &c, xmajor, u0, v0, sv, n, m, ilo, ihi, j, rem);
+		return;
+	}
 	for (i = ilo; i <= ihi; i++) {
 		int64_t nj = j;
 
@@ -423,9 +696,21 @@ void rdc_dp_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 
 	if (!w || !h)
 		return;
+	rdc_dp_queue_begin(dp);
+	if (fill && dp->queue_spans) {
+		/* dp_fill_span's clipping, once for all rows */
+		int32_t xa = RDC_MAX(x, c.x0), xb = RDC_MIN(xr, c.x1 - 1);
+
+		for (r = RDC_MAX(y, c.y0); xa <= xb && r <= RDC_MIN(yb, c.y1 - 1);
+		     r++)
+			queue_run(dp, xa, r, (uint32_t)(xb - xa + 1), 1);
+		rdc_dp_queue_end(dp);
+		return;
+	}
 	if (fill) {
 		for (r = RDC_MAX(y, c.y0); r <= RDC_MIN(yb, c.y1 - 1); r++)
 			dp_fill_span(dp, x, xr, r);
+		rdc_dp_queue_end(dp);
 		return;
 	}
 	/* Each pixel once: full top and bottom rows, sides between them. */
@@ -437,6 +722,7 @@ void rdc_dp_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		if (w > 1)
 			col_fill(dp, &c, xr, y + 1, yb - 1, fg);
 	}
+	rdc_dp_queue_end(dp);
 }
 
 /*
@@ -454,9 +740,10 @@ static void quad_row(struct rdc_dp *dp, const struct rdc_rect *c, int32_t cx,
 	uint32_t fg = dp->st.fg;
 
 	for (k = 0; k < nrows; k++) {
-		if (fill) {
+		if (fill && !dp->queue_spans) {
 			dp_fill_span(dp, cx - hi, cx + hi, rows[k]);
-		} else if (amin == 0) {
+		} else if (fill || amin == 0) {
+			/* (queued, a solid fill is dp_fill_span's span) */
 			span_fill(dp, c, rows[k], cx - hi, cx + hi, fg);
 		} else {
 			span_fill(dp, c, rows[k], cx - hi, cx - lo, fg);
@@ -491,6 +778,7 @@ void rdc_dp_circle(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t r,
 	if (cx + (int32_t)r < c.x0 || cx - (int32_t)r >= c.x1 ||
 	    cy + (int32_t)r < c.y0 || cy - (int32_t)r >= c.y1)
 		return;
+	rdc_dp_queue_begin(dp);
 	while (a <= b) {
 		uint32_t na = a + 1, nb = b;
 
@@ -509,6 +797,7 @@ void rdc_dp_circle(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t r,
 		a = na;
 		b = nb;
 	}
+	rdc_dp_queue_end(dp);
 }
 
 struct quad_acc {
@@ -574,6 +863,7 @@ void rdc_dp_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 	    cy + (int32_t)ry < c.y0 || cy - (int32_t)ry >= c.y1)
 		return;
 
+	rdc_dp_queue_begin(dp);
 	quad_pt(&q, 0, ry);
 	p = 4 * ry2 - 4 * rx2 * ry + rx2;
 	while (px < py) {
@@ -603,6 +893,7 @@ void rdc_dp_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 		quad_pt(&q, (uint32_t)x, (uint32_t)y);
 	}
 	quad_row(dp, &c, cx, cy, q.t, q.amin, q.amax, fill);
+	rdc_dp_queue_end(dp);
 }
 
 /*
@@ -683,6 +974,94 @@ static void blit_span(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n)
 	dp->hw->perf.pixels += cnt;
 }
 
+/*
+ * d[i] = rop(s[i], d[i]) for len bytes.  The ROPs are bitwise, so for
+ * pixels of whole bytes this is the per-pixel ROP; the switch is outside
+ * the loop so each case is a plain loop the compiler can widen.
+ */
+#define ROP_BLOCK 32u
+#define ROP_BYTES_CASE(r)                                                      \
+	case r:                                                                \
+		for (; len >= ROP_BLOCK; len -= ROP_BLOCK) {                   \
+			for (i = 0; i < ROP_BLOCK; i++)                        \
+				d[i] = (uint8_t)rdc_rop_apply(r, s[i], d[i]);  \
+			d += ROP_BLOCK;                                        \
+			s += ROP_BLOCK;                                        \
+		}                                                              \
+		for (i = 0; i < len; i++)                                      \
+			d[i] = (uint8_t)rdc_rop_apply(r, s[i], d[i]);          \
+		break
+
+/*
+ * d and s do not overlap; blocks of a fixed size with restrict let the
+ * compiler use wide registers (kept out of line, where restrict holds).
+ */
+static __attribute__((__noinline__)) void
+rop_bytes(uint8_t *restrict d, const uint8_t *restrict s, uint32_t len,
+	  unsigned int rop)
+{
+	uint32_t i;
+
+	switch (rop) {
+	case RDC_ROP_COPY:
+		rdc_memcpy(d, s, len);
+		break;
+	ROP_BYTES_CASE(RDC_ROP_CLEAR);
+	ROP_BYTES_CASE(RDC_ROP_AND);
+	ROP_BYTES_CASE(RDC_ROP_AND_REVERSE);
+	ROP_BYTES_CASE(RDC_ROP_AND_INVERTED);
+	ROP_BYTES_CASE(RDC_ROP_NOOP);
+	ROP_BYTES_CASE(RDC_ROP_XOR);
+	ROP_BYTES_CASE(RDC_ROP_OR);
+	ROP_BYTES_CASE(RDC_ROP_NOR);
+	ROP_BYTES_CASE(RDC_ROP_EQUIV);
+	ROP_BYTES_CASE(RDC_ROP_INVERT);
+	ROP_BYTES_CASE(RDC_ROP_OR_REVERSE);
+	ROP_BYTES_CASE(RDC_ROP_COPY_INVERTED);
+	ROP_BYTES_CASE(RDC_ROP_OR_INVERTED);
+	ROP_BYTES_CASE(RDC_ROP_NAND);
+	default:
+		ROP_BYTES_CASE(RDC_ROP_SET);
+	}
+}
+
+/*
+ * BLIT's fast path, for SRC and DST of the same whole-byte format with no
+ * colour key and no blend: n pixels read from saddr go to DST row y from
+ * xa through the ROP byte by byte, charged as the read span and the write
+ * span, then moved straight from SRC to DST when the two do not
+ * overlap (memmove for COPY even when they do); an overlapping ROP stages
+ * the source first, as the per-pixel path does.
+ */
+static void blit_row(struct rdc_dp *dp, uint32_t saddr, int32_t y, int32_t xa,
+		     uint32_t n)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	uint32_t bytes = rdc_format_bpp(s->format) / 8, len = n * bytes;
+	unsigned int rop = dp->st.rop;
+	const uint8_t *src;
+	uint8_t *p;
+
+	p = rdc_port_span_pair(dp->hw, saddr,
+			       s->base + (uint32_t)y * s->stride +
+				       (uint32_t)xa * bytes,
+			       len,
+			       rdc_rop_reads_dst(rop) ? RDC_BUS_RMW :
+							RDC_BUS_WRITE,
+			       &src);
+	if (!p)
+		return;
+	if (rop == RDC_ROP_COPY) {
+		rdc_memmove(p, src, len);
+	} else if (src + len <= p || p + len <= src) {
+		rop_bytes(p, src, len, rop);
+	} else {
+		rdc_memcpy(dp->px, src, len);
+		rop_bytes(p, (const uint8_t *)dp->px, len, rop);
+	}
+	dp->hw->perf.pixels += n;
+}
+
 /* Does the global alpha let a BLIT or HOST_BLIT draw at all? */
 static bool blit_drawn(const struct rdc_dp *dp)
 {
@@ -698,7 +1077,7 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 	unsigned int bpp = rdc_format_bpp(ss->format);
 	int64_t sx = sx32, sy = sy32, dx = dx32, dy = dy32, w = w32, h = h32;
 	uint64_t sbit, dbit;
-	bool back;
+	bool back, fast;
 	int64_t k;
 
 	if (!blit_drawn(dp) ||
@@ -709,6 +1088,10 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 	dbit = (uint64_t)ds->base * 8 + (uint64_t)dy * ds->stride * 8 +
 	       (uint64_t)dx * bpp;
 	back = dbit > sbit;
+	fast = !dp->ref_paths && ss->format == ds->format && bpp >= 8 &&
+	       !dp->st.colorkey_on &&
+	       (dp->st.alpha == RDC_ALPHA_OPAQUE ||
+		rdc_format_indexed(ds->format));
 
 	for (k = 0; k < h; k++) {
 		int64_t row = back ? h - 1 - k : k;
@@ -726,6 +1109,11 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 			const uint8_t *p;
 			uint32_t i;
 
+			if (fast) {
+				blit_row(dp, addr, (int32_t)(dy + row),
+					 (int32_t)(dx + off), n);
+				continue;
+			}
 			p = rdc_port_span(dp->hw, addr,
 					  (uint32_t)((b1 + 7) / 8 - b0 / 8),
 					  RDC_BUS_READ);
@@ -756,6 +1144,166 @@ struct row_src {
 
 enum { SRC_HOST, SRC_MONO, SRC_TEXT };
 
+/* Byte k (8 pixels, bit 7 leftmost) of row r of a MONO or TEXT source. */
+static inline uint32_t bits_byte(const struct row_src *rs, uint32_t r,
+				 uint32_t k)
+{
+	if (rs->kind == SRC_MONO)
+		return word_byte(rs->data + (size_t)r * rs->wpr, k);
+	return rdc_font8x16[word_byte(rs->data, k) * 16 + r];
+}
+
+/*
+ * Stage pixels [bx, bx + n) of row r of a MONO or TEXT source as FG/BG
+ * in dp->px (set bits in dp->on): a byte of bits is fetched once for its
+ * eight pixels.
+ */
+static void bits_expand(struct rdc_dp *dp, const struct row_src *rs,
+			uint32_t r, uint32_t bx, uint32_t n)
+{
+	uint32_t i = 0, fg = rs->fg, bg = rs->bg;
+
+	while (i < n) {
+		uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
+		unsigned int b = (bx + i) % 8;
+
+		for (; b < 8 && i < n; b++, i++) {
+			uint32_t set = (byte >> (7 - b)) & 1;
+
+			dp->px[i] = set ? fg : bg;
+			dp->on[i] = (uint8_t)set;
+		}
+	}
+}
+
+/*
+ * Pixels [bx, bx + n) of row r of a MONO or TEXT source as XRGB8888 at q,
+ * FG and BG both written: with `table`, whole bytes of bits as two
+ * 4-pixel groups from dp->nibble_px (nibble_fill); otherwise, and at the
+ * ragged ends, pixel by pixel.
+ */
+#define BIT_PX(q, k)                                                           \
+	rdc_st32((q) + 4 * (k), bg ^ (diff & -((byte >> (7 - (k))) & 1)))
+
+static void bits_write32(struct rdc_dp *dp, uint8_t *q,
+			 const struct row_src *rs, uint32_t r, uint32_t bx,
+			 uint32_t n, bool table)
+{
+	uint32_t i = 0, bg = rs->bg, diff = rs->fg ^ rs->bg;
+	unsigned int b;
+
+	while (i < n) {
+		uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
+
+		b = (bx + i) % 8;
+		/* a set bit turns BG into FG: bg ^ (diff & -bit) */
+		if (b == 0 && n - i >= 8) {
+			if (table) {
+				rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
+				rdc_memcpy(q + 16, dp->nibble_px[byte & 15],
+					   16);
+				q += 32;
+			} else {
+				/* written out: constant shifts, no loop */
+				BIT_PX(q, 0);
+				BIT_PX(q, 1);
+				BIT_PX(q, 2);
+				BIT_PX(q, 3);
+				BIT_PX(q, 4);
+				BIT_PX(q, 5);
+				BIT_PX(q, 6);
+				BIT_PX(q, 7);
+				q += 32;
+			}
+			i += 8;
+			continue;
+		}
+		for (; b < 8 && i < n; b++, i++, q += 4)
+			rdc_st32(q, bg ^ (diff & -((byte >> (7 - b)) & 1)));
+	}
+}
+
+/*
+ * dp->nibble_px for FG and BG (group v's pixel k is FG if bit 3 - k is
+ * set), unless it holds them already.  False where rows of `n` pixels are
+ * too short to repay building it (a byte of bits is two lookups instead
+ * of eight selects; the table is 64 stores).
+ */
+#define NIBBLE_MIN_PX 32u
+
+static bool nibble_fill(struct rdc_dp *dp, uint32_t fg, uint32_t bg,
+			uint32_t n)
+{
+	unsigned int v, k;
+
+	if (dp->nibble_ok && dp->nibble_fg == fg && dp->nibble_bg == bg)
+		return true;
+	if (n < NIBBLE_MIN_PX)
+		return false;
+	for (v = 0; v < 16; v++)
+		for (k = 0; k < 4; k++)
+			rdc_st32(dp->nibble_px[v] + 4 * k,
+				 (v >> (3 - k)) & 1 ? fg : bg);
+	dp->nibble_fg = fg;
+	dp->nibble_bg = bg;
+	dp->nibble_ok = true;
+	return true;
+}
+
+/*
+ * Opaque MONO and TEXT rows in XRGB8888 with ROP COPY, the console's
+ * case: the rows [ya, yb) of pixels [xa, xb) go to rdc_port_runs as one
+ * span each and are expanded straight into VRAM; a row the scanout
+ * interrupts is charged on its own by rdc_port_span, as span_emit would.
+ * Same spans, same order, same bytes.
+ */
+static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
+			int64_t xb, int64_t ya, int64_t yb,
+			const struct row_src *rs)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	uint32_t n = (uint32_t)(xb - xa), bx = (uint32_t)(xa - x);
+	uint32_t i, done, nr;
+	int64_t row = ya;
+	bool table;
+	uint8_t *p;
+
+	table = nibble_fill(dp, rs->fg, rs->bg, n);
+	while (row < yb) {
+		nr = (uint32_t)RDC_MIN(yb - row, (int64_t)RDC_DP_CHUNK);
+		for (i = 0; i < nr; i++) {
+			dp->runs[i].addr = s->base +
+					   (uint32_t)(row + i) * s->stride +
+					   (uint32_t)xa * 4;
+			dp->runs[i].len = n * 4;
+			dp->runs[i].count = 1;
+		}
+		i = 0;
+		while (i < nr) {
+			p = rdc_port_runs(dp->hw, dp->runs + i, nr - i,
+					  s->stride, RDC_BUS_WRITE, &done);
+			for (; done; done--, i++) {
+				bits_write32(dp, p + dp->runs[i].addr, rs,
+					     (uint32_t)(row + i - y), bx, n,
+					     table);
+				dp->hw->perf.pixels += n;
+			}
+			if (i == nr)
+				break;
+			/* the span span_emit would charge, then the same bytes */
+			p = rdc_port_span(dp->hw, dp->runs[i].addr,
+					  dp->runs[i].len, RDC_BUS_WRITE);
+			if (p) {
+				bits_write32(dp, p, rs, (uint32_t)(row + i - y),
+					     bx, n, table);
+				dp->hw->perf.pixels += n;
+			}
+			i++;
+		}
+		row += nr;
+	}
+}
+
 static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		      uint32_t h, const struct row_src *rs)
 {
@@ -766,6 +1314,13 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 	int64_t yb = RDC_MIN((int64_t)y + h, (int64_t)c.y1);
 	int64_t row, col;
 
+	if (rs->kind != SRC_HOST && !rs->transparent && !dp->ref_paths &&
+	    dp->st.rop == RDC_ROP_COPY && dp->st.dst.format == RDC_FMT_XRGB8888 &&
+	    xa < xb && xb - xa <= (int64_t)RDC_DP_CHUNK) {
+		rows_text32(dp, x, y, xa, xb, ya, yb, rs);
+		return;
+	}
+
 	for (row = ya; row < yb; row++) {
 		uint32_t r = (uint32_t)(row - y);
 
@@ -774,6 +1329,12 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 						       (int64_t)RDC_DP_CHUNK);
 			uint32_t i;
 
+			if (rs->kind != SRC_HOST && !dp->ref_paths) {
+				bits_expand(dp, rs, r, (uint32_t)(col - x), n);
+				span_emit(dp, (int32_t)row, (int32_t)col, n, 0,
+					  dp->px, rs->transparent ? dp->on : NULL);
+				continue;
+			}
 			for (i = 0; i < n; i++) {
 				uint32_t bx = (uint32_t)(col - x) + i;
 				uint32_t bit;

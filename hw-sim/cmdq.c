@@ -33,6 +33,27 @@ void rdc_fifo_push(struct rdc_hw *hw, uint32_t word)
 	hw->fifo_count++;
 }
 
+uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words,
+			  uint32_t n)
+{
+	uint32_t i;
+
+	if (hw->in_reset)
+		return n;
+	n = RDC_MIN(n, RDC_FIFO_DEPTH - hw->fifo_count);
+	if (hw->trace_fn) {
+		for (i = 0; i < n; i++)
+			rdc_hw_write(hw, RDC_REG_FIFO_DATA, words[i]);
+		return n;
+	}
+	rdc_crtc_catch_up(hw, hw->now);
+	for (i = 0; i < n; i++)
+		hw->fifo[(hw->fifo_head + hw->fifo_count + i) % RDC_FIFO_DEPTH] =
+			words[i];
+	hw->fifo_count += n;
+	return n;
+}
+
 uint32_t rdc_rdata_pop(struct rdc_hw *hw)
 {
 	uint32_t w;

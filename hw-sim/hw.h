@@ -245,6 +245,14 @@ void rdc_hw_reset(struct rdc_hw *hw);
  */
 uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg);
 void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
+/*
+ * Command words for FIFO_DATA in bulk: the same as rdc_hw_write of each
+ * word in turn at hw->now (trace points included), except that it stops
+ * at a full FIFO instead of overflowing.  Returns how many words were
+ * taken (all of them while RESET_N holds the chip, which ignores writes).
+ */
+uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words,
+			  uint32_t n);
 
 /* Host access to VRAM through the aperture, at hw->now (not charged to the
  * DP).  Return 0, or -1 if the range leaves VRAM (nothing is copied). */
@@ -378,6 +386,44 @@ uint8_t *rdc_port_span(struct rdc_hw *hw, uint32_t addr, uint32_t len,
  */
 uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 			 uint32_t count, uint32_t len, unsigned int kind);
+
+/*
+ * A read of [raddr, raddr + len) then an access of `kind` to [waddr, waddr
+ * + len), charged exactly as the two rdc_port_span calls would be (a copy
+ * from one place of VRAM to another).  *src gets the read's pointer (NULL
+ * if it failed: nothing charged, nothing written); the write's pointer is
+ * returned (NULL if it failed, the read still charged).  Both stay valid
+ * until the next port call, so the bytes can move without staging.
+ */
+uint8_t *rdc_port_span_pair(struct rdc_hw *hw, uint32_t raddr, uint32_t waddr,
+			    uint32_t len, unsigned int kind,
+			    const uint8_t **src);
+
+/*
+ * A run of accesses for rdc_port_runs: count == 1 is the span
+ * rdc_port_span(addr, len), count > 1 the column rdc_port_column(addr,
+ * stride, count, len).
+ */
+struct rdc_port_run {
+	uint32_t addr, len, count;
+};
+
+/*
+ * Charge runs r[0], r[1], ... in order, each exactly as its rdc_port_span
+ * or rdc_port_column call would be, for as long as no scanout event (a
+ * fetch window, a line start) can fall inside one: a run is charged
+ * whole or not at all.  *done is set to how many runs were charged, and
+ * the return value p addresses their bytes as p + addr (valid until the
+ * next port call).  The caller writes their pixels (no fetch can have
+ * seen any of them), passes the next run to rdc_port_span /
+ * rdc_port_column itself (which wait for scanout, or refuse a run that
+ * leaves VRAM), and calls again with the rest.  Lines, outlines and glyph
+ * rows are many short runs: this is their per-run cost without a call
+ * each.
+ */
+uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
+		       uint32_t n, uint32_t stride, unsigned int kind,
+		       uint32_t *done);
 
 /* Charge `cycles` of DP-internal work (decode, setup); no bus use. */
 void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles);

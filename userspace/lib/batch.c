@@ -267,6 +267,11 @@ int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 	p[0] = RDC_XY(x, y);
 	p[1] = RDC_WH(w, h);
 	p += 2;
+	if (row_bytes == 1) { /* 8-pixel glyphs, the console's case */
+		for (size_t r = 0; r < h; r++)
+			*p++ = bits[r];
+		return 0;
+	}
 	for (size_t r = 0; r < h; r++) {
 		for (size_t k = 0; k < row_words; k++) {
 			uint8_t pad[4] = {0};

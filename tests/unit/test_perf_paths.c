@@ -1,0 +1,606 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The fast paths against the plain ones.  Two chips get the same command
+ * stream, one with the display processor's fast paths (queued runs for
+ * lines and glyph rows, byte-wise blits, staged-pixel stores) and one with
+ * dp.ref_paths set, which keeps it on the per-pixel loops.  Scanout runs
+ * on both, so fetch windows and line starts interrupt the queued runs at
+ * random points.  After every batch the two must agree on every VRAM
+ * byte, the simulated time, every performance counter and the last
+ * scanned-out frame (which shows exactly when each pixel was written).
+ *
+ * The bus model's bulk entries are checked the same way against the
+ * per-access calls they stand for, and the XRGB8888 scanout conversion and
+ * the solid fill against a pixel model written from rdc_regs.h.
+ */
+#include "test_dp_common.h"
+#include "rdc.h"
+
+#define TP_CHIPS 2
+#define TP_W 320
+#define TP_H 200
+#define TP_BATCH 40
+#define TP_ROUNDS 12
+
+struct tp_pair {
+	struct tdp *c[TP_CHIPS]; /* [0] fast paths, [1] reference */
+};
+
+/* A chip with scanout on and the DP enabled: 320x200 XRGB8888 at 0. */
+static struct tdp *tp_chip(bool ref)
+{
+	struct tdp *t = tdp_new();
+
+	t->dp.ref_paths = ref;
+	rdc_hw_write(&t->hw, RDC_REG_MODE_PRESET, RDC_PRESET_320x200_70);
+	rdc_hw_write(&t->hw, RDC_REG_FB_BASE, 0);
+	rdc_hw_write(&t->hw, RDC_REG_FB_FORMAT, RDC_FMT_XRGB8888);
+	rdc_hw_write(&t->hw, RDC_REG_FB_STRIDE, TP_W * 4);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
+	return t;
+}
+
+static int tp_setup(void **state)
+{
+	struct tp_pair *p = calloc(1, sizeof(*p));
+
+	assert_non_null(p);
+	p->c[0] = tp_chip(false);
+	p->c[1] = tp_chip(true);
+	*state = p;
+	return 0;
+}
+
+static int tp_teardown(void **state)
+{
+	struct tp_pair *p = *state;
+
+	tdp_free(p->c[0]);
+	tdp_free(p->c[1]);
+	free(p);
+	return 0;
+}
+
+static void tp_cmd(struct tp_pair *p, uint32_t op, uint32_t flags,
+		   unsigned int n, const uint32_t *a)
+{
+	unsigned int i;
+
+	for (i = 0; i < TP_CHIPS; i++)
+		tdp_cmd(p->c[i], op, flags, n, a);
+}
+
+#define TP_CMD(p, op, ...)                                                     \
+	do {                                                                   \
+		const uint32_t tp_a_[] = { __VA_ARGS__ };                      \
+		tp_cmd((p), (op), 0, RDC_ARRAY_SIZE(tp_a_), tp_a_);            \
+	} while (0)
+
+/* Drain both and compare everything observable. */
+static void tp_check(struct tp_pair *p)
+{
+	struct tdp *a = p->c[0], *b = p->c[1];
+	const uint32_t *fa, *fb;
+	uint32_t wa, ha, wb, hb;
+
+	tdp_drain(a);
+	tdp_drain(b);
+	assert_memory_equal(a->vram, b->vram, TDP_VRAM_SIZE);
+	assert_int_equal(a->hw.now, b->hw.now);
+	assert_int_equal(a->hw.perf.busy, b->hw.perf.busy);
+	assert_int_equal(a->hw.perf.stall, b->hw.perf.stall);
+	assert_int_equal(a->hw.perf.pixels, b->hw.perf.pixels);
+	assert_int_equal(a->hw.perf.cmds, b->hw.perf.cmds);
+	assert_int_equal(a->hw.bus.open_row, b->hw.bus.open_row);
+	assert_int_equal(tdp_err(a), tdp_err(b));
+	fa = rdc_hw_frame(&a->hw, &wa, &ha);
+	fb = rdc_hw_frame(&b->hw, &wb, &hb);
+	assert_int_equal(wa, wb);
+	assert_int_equal(ha, hb);
+	if (fa && fb)
+		assert_memory_equal(fa, fb, (size_t)wa * ha * 4);
+}
+
+/* Scanout must have been seen racing the DP, or the test proves less. */
+static void tp_assert_raced(struct tp_pair *p)
+{
+	assert_true(p->c[0]->hw.perf.stall > 0);
+}
+
+/*
+ * A random DST: the screen, or an offscreen surface of a random format
+ * (whole-byte ones mostly, sub-byte and 24 bpp too, whose runs take the
+ * per-pixel path), sometimes at a base that is not pixel-aligned.
+ */
+static void tp_random_dst(struct tp_pair *p, uint32_t *seed, uint32_t op)
+{
+	static const uint32_t fmts[] = {
+		RDC_FMT_XRGB8888, RDC_FMT_XRGB8888, RDC_FMT_RGB565,
+		RDC_FMT_I8,	  RDC_FMT_RGB888,   RDC_FMT_I4,
+	};
+	struct rdc_surface s = { 0, TP_W * 4, TP_W, TP_H, RDC_FMT_XRGB8888 };
+
+	if (tdp_rand(seed) % 3) {
+		s.format = fmts[tdp_rand(seed) % RDC_ARRAY_SIZE(fmts)];
+		s.width = (uint32_t)tdp_range(seed, 16, TP_W);
+		s.height = (uint32_t)tdp_range(seed, 16, TP_H);
+		s.stride = (s.width * tdp_bpp(s.format) + 7) / 8 +
+			   (uint32_t)tdp_range(seed, 0, 9);
+		s.base = (1u << 20) + (uint32_t)tdp_range(seed, 0, 3) *
+					      (tdp_rand(seed) % 2 ? 1 : 4);
+	}
+	tdp_set_surface(p->c[0], op, &s);
+	tdp_set_surface(p->c[1], op, &s);
+}
+
+static void tp_random_state(struct tp_pair *p, uint32_t *seed)
+{
+	int32_t x0 = tdp_range(seed, -20, 100), y0 = tdp_range(seed, -20, 80);
+
+	TP_CMD(p, RDC_OP_SET_FG, tdp_rand(seed));
+	TP_CMD(p, RDC_OP_SET_BG, tdp_rand(seed));
+	/* COPY half the time: the fast stores; any ROP otherwise */
+	TP_CMD(p, RDC_OP_SET_ROP,
+	       tdp_rand(seed) % 2 ? RDC_ROP_COPY : tdp_rand(seed) % 16);
+	if (tdp_rand(seed) % 2)
+		TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(x0, y0),
+		       RDC_XY(x0 + tdp_range(seed, 0, 300),
+			      y0 + tdp_range(seed, 0, 200)));
+	else
+		TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(0, 0), RDC_XY(TP_W, TP_H));
+}
+
+static uint32_t tp_xy(uint32_t *seed)
+{
+	return RDC_XY(tdp_range(seed, -40, TP_W + 40),
+		      tdp_range(seed, -40, TP_H + 40));
+}
+
+static void test_lines_match(void **state)
+{
+	struct tp_pair *p = *state;
+	uint32_t seed = 0x11e5u;
+	unsigned int round, i;
+
+	for (round = 0; round < TP_ROUNDS; round++) {
+		tp_random_dst(p, &seed, RDC_OP_SET_DST);
+		tp_random_state(p, &seed);
+		for (i = 0; i < TP_BATCH; i++) {
+			uint32_t a = tp_xy(&seed), b = tp_xy(&seed);
+
+			/* some axis-parallel and diagonal ones */
+			if (i % 7 == 1)
+				b = RDC_XY(RDC_X(a), RDC_Y(b));
+			if (i % 7 == 2)
+				b = RDC_XY(RDC_X(a) + 50, RDC_Y(a) + 50);
+			TP_CMD(p, RDC_OP_LINE, a, b);
+			if (i % 5 == 0)
+				TP_CMD(p, RDC_OP_SET_FG, tdp_rand(&seed));
+		}
+		tp_check(p);
+	}
+	tp_assert_raced(p);
+}
+
+static void test_blits_match(void **state)
+{
+	struct tp_pair *p = *state;
+	uint32_t seed = 0xb117u;
+	unsigned int round, i;
+
+	/* something to copy */
+	for (i = 0; i < 60; i++) {
+		TP_CMD(p, RDC_OP_SET_FG, tdp_rand(&seed));
+		TP_CMD(p, RDC_OP_FILL_RECT, tp_xy(&seed),
+		       RDC_WH(tdp_range(&seed, 1, 120), tdp_range(&seed, 1, 90)));
+	}
+	for (round = 0; round < TP_ROUNDS; round++) {
+		tp_random_dst(p, &seed, RDC_OP_SET_DST);
+		/* same format as DST mostly (the fast path), else the screen */
+		if (tdp_rand(&seed) % 4)
+			tp_random_dst(p, &seed, RDC_OP_SET_SRC);
+		tp_random_state(p, &seed);
+		if (tdp_rand(&seed) % 4 == 0) {
+			uint32_t key = tdp_rand(&seed);
+
+			tp_cmd(p, RDC_OP_SET_COLORKEY, RDC_COLORKEY_ENABLE, 1,
+			       &key);
+		} else {
+			TP_CMD(p, RDC_OP_SET_COLORKEY, 0);
+		}
+		TP_CMD(p, RDC_OP_SET_ALPHA,
+		       tdp_rand(&seed) % 4 ? RDC_ALPHA_OPAQUE :
+					     (uint32_t)tdp_range(&seed, 0, 255));
+		for (i = 0; i < TP_BATCH; i++) {
+			/* near each other, so they overlap either way */
+			int32_t sx = tdp_range(&seed, -20, TP_W),
+				sy = tdp_range(&seed, -20, TP_H);
+
+			TP_CMD(p, RDC_OP_BLIT, RDC_XY(sx, sy),
+			       RDC_XY(sx + tdp_range(&seed, -8, 8),
+				      sy + tdp_range(&seed, -8, 8)),
+			       RDC_WH(tdp_range(&seed, 0, 200),
+				      tdp_range(&seed, 0, 120)));
+		}
+		tp_check(p);
+	}
+	tp_assert_raced(p);
+}
+
+static void test_glyphs_match(void **state)
+{
+	struct tp_pair *p = *state;
+	uint32_t seed = 0x7e47u, a[2 + 64];
+	unsigned int round, i, k;
+
+	for (round = 0; round < TP_ROUNDS; round++) {
+		tp_random_dst(p, &seed, RDC_OP_SET_DST);
+		tp_random_state(p, &seed);
+		for (i = 0; i < TP_BATCH; i++) {
+			uint32_t fl = tdp_rand(&seed) % 3 ? 0 :
+							    RDC_MONO_TRANSPARENT;
+			uint32_t w = (uint32_t)tdp_range(&seed, 1, 40);
+			uint32_t h = (uint32_t)tdp_range(&seed, 1, 32);
+			uint32_t words = (w + 31) / 32 * h;
+
+			a[0] = tp_xy(&seed);
+			if (i % 2) { /* TEXT: 1..8 characters */
+				uint32_t n = (uint32_t)tdp_range(&seed, 1, 8);
+
+				a[1] = n;
+				for (k = 0; k < (n + 3) / 4; k++)
+					a[2 + k] = tdp_rand(&seed);
+				tp_cmd(p, RDC_OP_TEXT, fl, 2 + (n + 3) / 4, a);
+				continue;
+			}
+			a[1] = RDC_WH(w, h);
+			for (k = 0; k < words; k++)
+				a[2 + k] = tdp_rand(&seed);
+			tp_cmd(p, RDC_OP_MONO, fl, 2 + words, a);
+		}
+		tp_check(p);
+	}
+	tp_assert_raced(p);
+}
+
+/*
+ * Rectangles, circles, ellipses and polygons, whose solid spans and
+ * columns are queued; a mono pattern now and then keeps them on the
+ * per-span path.
+ */
+static void test_shapes_match(void **state)
+{
+	struct tp_pair *p = *state;
+	uint32_t seed = 0x5a9e5u, a[1 + 16];
+	unsigned int round, i, k, n;
+
+	for (round = 0; round < TP_ROUNDS; round++) {
+		tp_random_dst(p, &seed, RDC_OP_SET_DST);
+		tp_random_state(p, &seed);
+		if (tdp_rand(&seed) % 4 == 0)
+			tp_cmd(p, RDC_OP_SET_PATTERN, RDC_PAT_MONO, 2,
+			       (const uint32_t[]){ tdp_rand(&seed),
+						   tdp_rand(&seed) });
+		else
+			tp_cmd(p, RDC_OP_SET_PATTERN, RDC_PAT_NONE, 0, a);
+		for (i = 0; i < TP_BATCH; i++) {
+			uint32_t xy = tp_xy(&seed);
+			uint32_t wh = RDC_WH(tdp_range(&seed, 0, 150),
+					     tdp_range(&seed, 0, 150));
+			uint32_t r = (uint32_t)tdp_range(&seed, 0, 90);
+
+			switch (i % 7) {
+			case 0:
+				TP_CMD(p, RDC_OP_RECT, xy, wh);
+				break;
+			case 1:
+				TP_CMD(p, RDC_OP_FILL_RECT, xy, wh);
+				break;
+			case 2:
+				TP_CMD(p, RDC_OP_CIRCLE, xy, r);
+				break;
+			case 3:
+				TP_CMD(p, RDC_OP_FILL_CIRCLE, xy, r);
+				break;
+			case 4:
+				TP_CMD(p, RDC_OP_ELLIPSE, xy, wh);
+				break;
+			case 5:
+				TP_CMD(p, RDC_OP_FILL_ELLIPSE, xy, wh);
+				break;
+			default:
+				n = (uint32_t)tdp_range(&seed, 3, 16);
+				for (k = 0; k < n; k++)
+					a[k] = tp_xy(&seed);
+				tp_cmd(p, RDC_OP_FILL_POLYGON,
+				       tdp_rand(&seed) % 2 ? RDC_FILL_NONZERO :
+							     0,
+				       n, a);
+				break;
+			}
+		}
+		tp_check(p);
+	}
+	tp_assert_raced(p);
+}
+
+/* Anti-aliased lines, circles and ellipses (the XRGB8888 blend). */
+static void test_aa_match(void **state)
+{
+	struct tp_pair *p = *state;
+	uint32_t seed = 0xaa11u;
+	unsigned int round, i;
+
+	/* blend over noise, so every channel value meets every coverage */
+	for (i = 0; i < TDP_VRAM_SIZE; i++)
+		p->c[0]->vram[i] = p->c[1]->vram[i] = (uint8_t)tdp_rand(&seed);
+	for (round = 0; round < TP_ROUNDS; round++) {
+		tp_random_dst(p, &seed, RDC_OP_SET_DST);
+		tp_random_state(p, &seed);
+		for (i = 0; i < TP_BATCH; i++) {
+			uint32_t xy = tp_xy(&seed);
+
+			switch (i % 4) {
+			case 0:
+			case 1:
+				TP_CMD(p, RDC_OP_AA_LINE, xy, tp_xy(&seed));
+				break;
+			case 2:
+				TP_CMD(p, RDC_OP_AA_CIRCLE, xy,
+				       (uint32_t)tdp_range(&seed, 0, 80));
+				break;
+			default:
+				TP_CMD(p, RDC_OP_AA_ELLIPSE, xy,
+				       RDC_WH(tdp_range(&seed, 0, 90),
+					      tdp_range(&seed, 0, 90)));
+				break;
+			}
+			if (i % 3 == 0)
+				TP_CMD(p, RDC_OP_SET_FG, tdp_rand(&seed));
+		}
+		tp_check(p);
+	}
+	tp_assert_raced(p);
+}
+
+/*
+ * rdc_port_runs against the per-access calls: chip 0 charges random runs
+ * in bulk (and the run it stops at one by one, as a caller does), chip 1
+ * charges each with rdc_port_span / rdc_port_column.  Same time, same
+ * stalls, same open row, and scanout fetches in between.
+ */
+static void test_port_runs_match(void **state)
+{
+	struct tp_pair *p = *state;
+	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
+	struct rdc_port_run r[32];
+	uint32_t seed = 0x4a45u, round, i, n, done, stride;
+	unsigned int kind;
+
+	for (round = 0; round < 2000; round++) {
+		static const unsigned int kinds[] = {
+			RDC_BUS_READ, RDC_BUS_WRITE, RDC_BUS_RMW,
+			RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL,
+			RDC_BUS_WRITE | RDC_BUS_TAIL_PARTIAL,
+		};
+
+		kind = kinds[tdp_rand(&seed) % RDC_ARRAY_SIZE(kinds)];
+		/* strides below and above a DRAM row, multiples of a beat
+		 * (the closed form) and not */
+		stride = tdp_rand(&seed) % 2 ?
+				 (uint32_t)tdp_range(&seed, 1, 512) * 8 :
+				 (uint32_t)tdp_range(&seed, 1, 5000);
+		n = (uint32_t)tdp_range(&seed, 1, 32);
+		for (i = 0; i < n; i++) {
+			r[i].addr = tdp_rand(&seed) % (TDP_VRAM_SIZE + 64);
+			r[i].len = (uint32_t)tdp_range(&seed, 0, 300);
+			if (tdp_rand(&seed) % 2)
+				r[i].len = (uint32_t)tdp_range(&seed, 1, 8);
+			r[i].count = tdp_rand(&seed) % 2 ?
+					     1 :
+					     (uint32_t)tdp_range(&seed, 0, 40);
+		}
+		i = 0;
+		while (i < n) {
+			rdc_port_runs(a, r + i, n - i, stride, kind, &done);
+			i += done;
+			if (i == n)
+				break;
+			if (r[i].count == 1)
+				rdc_port_span(a, r[i].addr, r[i].len, kind);
+			else
+				rdc_port_column(a, r[i].addr, stride,
+						r[i].count, r[i].len, kind);
+			i++;
+		}
+		for (i = 0; i < n; i++) {
+			if (r[i].count == 1)
+				rdc_port_span(b, r[i].addr, r[i].len, kind);
+			else
+				rdc_port_column(b, r[i].addr, stride,
+						r[i].count, r[i].len, kind);
+		}
+		assert_int_equal(a->now, b->now);
+		assert_int_equal(a->perf.stall, b->perf.stall);
+		assert_int_equal(a->bus.open_row, b->bus.open_row);
+		assert_int_equal(a->crtc.fetch_end, b->crtc.fetch_end);
+		/* idle a little, so the next round starts in another place */
+		rdc_port_idle_until(a, a->now + tdp_rand(&seed) % 3000);
+		rdc_port_idle_until(b, a->now);
+	}
+	assert_true(a->perf.stall > 0);
+}
+
+/* A bulk FIFO push is the register writes it stands for. */
+static void test_fifo_push_match(void **state)
+{
+	struct tp_pair *p = *state;
+	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
+	uint32_t w[RDC_FIFO_DEPTH + 10], i, n, took;
+
+	/* stop the DP so the FIFO fills */
+	rdc_hw_write(a, RDC_REG_CONTROL, RDC_CONTROL_SCANOUT_EN);
+	rdc_hw_write(b, RDC_REG_CONTROL, RDC_CONTROL_SCANOUT_EN);
+	for (i = 0; i < RDC_ARRAY_SIZE(w); i++)
+		w[i] = RDC_CMD(RDC_OP_NOP, 0, 0);
+	n = 100;
+	took = rdc_hw_fifo_push(a, w, n);
+	assert_int_equal(took, n);
+	for (i = 0; i < n; i++)
+		rdc_hw_write(b, RDC_REG_FIFO_DATA, w[i]);
+	assert_int_equal(a->fifo_count, b->fifo_count);
+	/* past full: takes what fits and raises no overflow */
+	took = rdc_hw_fifo_push(a, w, RDC_ARRAY_SIZE(w));
+	assert_int_equal(took, RDC_FIFO_DEPTH - n);
+	assert_int_equal(a->fifo_count, RDC_FIFO_DEPTH);
+	assert_int_equal(rdc_hw_read(a, RDC_REG_ERR_CODE), RDC_ERR_NONE);
+	for (i = 0; i < RDC_FIFO_DEPTH - n; i++)
+		rdc_hw_write(b, RDC_REG_FIFO_DATA, w[i]);
+	assert_memory_equal(a->fifo, b->fifo, sizeof(a->fifo));
+	assert_int_equal(a->fifo_head, b->fifo_head);
+	/* both run the same words to the same cycle */
+	rdc_hw_write(a, RDC_REG_CONTROL,
+		     RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_DP_EN);
+	rdc_hw_write(b, RDC_REG_CONTROL,
+		     RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_DP_EN);
+	tdp_drain(p->c[0]);
+	tdp_drain(p->c[1]);
+	assert_int_equal(a->now, b->now);
+	assert_int_equal(a->perf.cmds, RDC_FIFO_DEPTH);
+	assert_int_equal(a->perf.cmds, b->perf.cmds);
+}
+
+/*
+ * Solid fills of every width up to a few blocks, colours with equal and
+ * unequal bytes: the model writes each pixel.
+ */
+static void test_fill_model(void **state)
+{
+	struct tp_pair *p = *state;
+	struct tdp *t = p->c[0];
+	struct rdc_surface s = { 0, TP_W * 4, TP_W, TP_H, RDC_FMT_XRGB8888 };
+	uint8_t *model = malloc(TDP_VRAM_SIZE);
+	uint32_t seed = 0xf111u, w, y;
+	int32_t x;
+
+	assert_non_null(model);
+	tdp_set_surface(t, RDC_OP_SET_DST, &s);
+	tdp_drain(t);
+	memcpy(model, t->vram, TDP_VRAM_SIZE);
+	for (w = 1; w <= 300; w++) {
+		uint32_t c = w % 3 ? tdp_rand(&seed) : 0x5a5a5a5au;
+		int32_t x0 = tdp_range(&seed, 0, TP_W - 1);
+		int32_t y0 = tdp_range(&seed, 0, TP_H - 3);
+
+		TDP_CMD(t, RDC_OP_SET_FG, c);
+		TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(x0, y0), RDC_WH(w, 2));
+		for (y = 0; y < 2; y++)
+			for (x = x0; x < x0 + (int32_t)w && x < TP_W; x++)
+				tdp_put(model, &s, x, y0 + (int32_t)y, c);
+	}
+	tdp_drain(t);
+	assert_memory_equal(model, t->vram, TDP_VRAM_SIZE);
+	free(model);
+}
+
+/*
+ * XRGB8888 scanout of a width that is not a multiple of the conversion's
+ * block: every pixel is the VRAM word with its X byte cleared.
+ */
+static void test_scanout_xrgb_model(void **state)
+{
+	struct tp_pair *p = *state;
+	struct tdp *t = p->c[0];
+	const uint32_t w = 333, h = 100;
+	uint32_t seed = 0x5ca7u, i, fw, fh;
+	const uint32_t *f;
+	uint64_t start;
+
+	for (i = 0; i < w * h * 4; i++)
+		t->vram[i] = (uint8_t)tdp_rand(&seed);
+	rdc_hw_write(&t->hw, RDC_REG_H_TOTAL, 400);
+	rdc_hw_write(&t->hw, RDC_REG_H_DISPLAY, w);
+	rdc_hw_write(&t->hw, RDC_REG_H_SYNC_START, 340);
+	rdc_hw_write(&t->hw, RDC_REG_H_SYNC_END, 360);
+	rdc_hw_write(&t->hw, RDC_REG_V_TOTAL, 120);
+	rdc_hw_write(&t->hw, RDC_REG_V_DISPLAY, h);
+	rdc_hw_write(&t->hw, RDC_REG_V_SYNC_START, 105);
+	rdc_hw_write(&t->hw, RDC_REG_V_SYNC_END, 110);
+	rdc_hw_write(&t->hw, RDC_REG_FB_STRIDE, w * 4);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
+	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	start = rdc_hw_read(&t->hw, RDC_REG_FRAME_COUNT);
+	for (i = 0; i < TDP_RUN_LIMIT &&
+		    rdc_hw_read(&t->hw, RDC_REG_FRAME_COUNT) < start + 2;
+	     i++)
+		rdc_hw_run_until(&t->hw, t->hw.now + TDP_RUN_STEP);
+	f = rdc_hw_frame(&t->hw, &fw, &fh);
+	assert_non_null(f);
+	assert_int_equal(fw, w);
+	assert_int_equal(fh, h);
+	for (i = 0; i < w * h; i++) {
+		const uint8_t *v = t->vram + 4 * i;
+
+		assert_int_equal(f[i], (uint32_t)v[0] | (uint32_t)v[1] << 8 |
+					       (uint32_t)v[2] << 16);
+	}
+}
+
+/*
+ * MONO rows of at most 8 pixels are encoded a byte to a word: the row's
+ * byte in byte 0 (bit 7 leftmost), the rest zero, as for any width.
+ */
+static void test_batch_mono_narrow(void **state)
+{
+	uint8_t bits[16];
+	uint32_t seed = 0x6e61u, w, r;
+	const uint32_t *words;
+	size_t n;
+
+	(void)state;
+	for (r = 0; r < sizeof(bits); r++)
+		bits[r] = (uint8_t)tdp_rand(&seed);
+	for (w = 1; w <= 8; w++) {
+		rdc_batch *b = rdc_batch_new();
+
+		assert_non_null(b);
+		assert_int_equal(rdc_batch_mono(b, 3, 4, w, 16, bits, 0), 0);
+		words = rdc_batch_words(b, &n);
+		assert_int_equal(n, 3 + 16);
+		assert_int_equal(words[0], RDC_CMD(RDC_OP_MONO, 0, 2 + 16));
+		assert_int_equal(words[2], RDC_WH(w, 16));
+		for (r = 0; r < 16; r++)
+			assert_int_equal(words[3 + r], (uint32_t)bits[r]);
+		rdc_batch_free(b);
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test_setup_teardown(test_lines_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_blits_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_glyphs_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_shapes_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_aa_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_port_runs_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_fifo_push_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_fill_model, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_scanout_xrgb_model,
+						tp_setup, tp_teardown),
+		cmocka_unit_test(test_batch_mono_narrow),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
