@@ -17,7 +17,7 @@ ifneq ($(WERROR),)
 WARN += -Werror
 endif
 
-INC := -Ihw-sim -Ifirmware-model -Iuserspace/include -Iuserspace/lib
+INC := -Ihw-sim -Ifirmware-model -Iuserspace/include -Iuserspace/lib -Idriver
 BASE_CFLAGS := -std=gnu11 $(WARN) $(INC) -D_GNU_SOURCE
 REL_CFLAGS := $(BASE_CFLAGS) -O2 -g
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all \
@@ -51,7 +51,8 @@ TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
-	bench-sink vm-test bench-net fuzz fuzz-long
+	bench-sink vm-test bench-net fuzz fuzz-long bench-peers module \
+	module-clean
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a
 
 help:
@@ -61,10 +62,13 @@ help:
 	@echo "make golden       regenerate tests/golden/golden.txt and write PNGs to $(O)/golden"
 	@echo "make freestanding compile hw-sim/ and firmware-model/ with no libc headers"
 	@echo "make speed        time a full-screen fill through the command path against memset"
+	@echo "make bench        BENCHMARKS.md workloads against the plain-C limits, then rdcd and sinks"
+	@echo "make bench-peers  the same, also against pixman, cairo and SDL2_gfx"
 	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
 	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
 	@echo "make fuzz         short libFuzzer run of the protocol parser (fuzz-long: 10 min)"
 	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/*"
+	@echo "make module       build rdcfb.ko in $(O)/kmod (KDIR= for another kernel)"
 
 deps:
 	@scripts/deps.sh
@@ -114,9 +118,45 @@ check test: deps
 $(O)/rel/rdc-bench: $(O)/rel/bench/rdc_bench.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
-# The workloads of BENCHMARKS.md; BENCH_ARGS="-w fill -r 5" to narrow.
-bench: $(O)/rel/rdc-bench $(O)/rel/sink-bench
+# The workloads of BENCHMARKS.md (bench/README.md), then rdcd's and the
+# v4l2 sink's figures; BENCH_ARGS="-w fill -r 5" to narrow the first part.
+bench: $(O)/rel/rdc-bench $(O)/rel/sink-bench $(O)/rel/net_bench $(O)/rel/rdcd
 	$(O)/rel/rdc-bench $(BENCH_ARGS)
+	@echo "== rdcd over a UNIX socket =="
+	$(O)/rel/net_bench $(O)/rel/rdcd
+	@echo "== v4l2 sink conversion per frame =="
+	$(O)/rel/sink-bench
+
+# The same with the peer libraries (pixman, cairo, SDL2_gfx) whose
+# pkg-config files are found; scripts/deps.sh --peers installs them.
+BENCH_PEERS := pixman-1:PIXMAN:pixman cairo:CAIRO:cairo \
+	SDL2_gfx:SDL2_GFX:sdl2_gfx
+$(O)/rel/rdc-bench-peers: bench/rdc_bench.c bench/bench.h bench/peer_*.c \
+		$(O)/rel/librdc.a
+	@set -e; defs=; srcs=; pkgs=; \
+	for p in $(BENCH_PEERS); do \
+		pc=$${p%%:*}; rest=$${p#*:}; \
+		if $(PKG_CONFIG) --exists $$pc 2>/dev/null; then \
+			defs="$$defs -DBENCH_HAVE_$${rest%%:*}"; \
+			srcs="$$srcs bench/peer_$${rest#*:}.c"; pkgs="$$pkgs $$pc"; \
+		else echo "bench: $$pc not found: that peer is left out"; fi; \
+	done; \
+	cflags=; libs=; if [ -n "$$pkgs" ]; then \
+		cflags=$$($(PKG_CONFIG) --cflags $$pkgs); \
+		libs=$$($(PKG_CONFIG) --libs $$pkgs); fi; \
+	cmd="$(CC) $(REL_CFLAGS) $$defs $$cflags bench/rdc_bench.c $$srcs"; \
+	cmd="$$cmd $(O)/rel/librdc.a $(LIBS) $$libs -lm -o $@"; \
+	echo "$$cmd"; $$cmd
+
+bench-peers:
+	@scripts/deps.sh --peers || \
+		echo "bench: going on with the peers that are installed"
+	$(MAKE) $(O)/rel/rdc-bench-peers $(O)/rel/sink-bench \
+		$(O)/rel/net_bench $(O)/rel/rdcd
+	$(O)/rel/rdc-bench-peers --peers $(BENCH_ARGS)
+	@echo "== rdcd over a UNIX socket =="
+	$(O)/rel/net_bench $(O)/rel/rdcd
+	@echo "== v4l2 sink conversion per frame =="
 	$(O)/rel/sink-bench
 
 $(O)/rel/sink-bench: $(O)/rel/bench/sink_bench.o $(O)/rel/librdc.a
@@ -157,7 +197,15 @@ bench-sink: $(O)/rel/sink-bench
 # programs below against v4l2loopback.  `make check` runs them when QEMU
 # can run here and skips them, saying why, when it cannot.
 VM_BINS := $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/v4l2_read
+VM_BINS += $(O)/rel/rdcfb_tool
+$(O)/rel/rdcfb_tool: $(O)/rel/tests/vm/rdcfb_tool.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 $(O)/rel/v4l2_read: $(O)/rel/tests/vm/v4l2_read.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+VM_BINS += $(O)/rel/fbdev_ioctl $(O)/rel/rdcfb_fuzz
+$(O)/rel/fbdev_ioctl: $(O)/rel/tests/vm/fbdev_ioctl.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+$(O)/rel/rdcfb_fuzz: $(O)/rel/tests/vm/rdcfb_fuzz.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 vm-test: $(VM_BINS)
@@ -181,6 +229,28 @@ freestanding:
 		$(CC) $(FREESTANDING_FLAGS) -c $$f -o $(O)/freestanding/$$(basename $$f .c).o; \
 	done
 	@echo "freestanding: $(words $(CORE_SRCS)) core files compiled without libc headers"
+
+# rdcfb.ko (driver/, docs/driver.md) against the installed
+# linux-headers-amd64's kernel, or KDIR=<kernel build dir>.  Kbuild runs in
+# $(O)/kmod, a tree of links to the sources, so no object lands beside
+# them.  The outer make's variables (O=, -j) mean other things to Kbuild.
+KVER ?= $(shell dpkg-query -W -f='$${Depends}' linux-headers-amd64 2>/dev/null | \
+	sed -n 's/^linux-headers-\([^ ,]*\).*/\1/p')
+KDIR ?= /lib/modules/$(KVER)/build
+KMOD_DIR := $(abspath $(O))/kmod
+module:
+	@test -f "$(KDIR)/Makefile" || { echo "module: no kernel build directory" \
+		"'$(KDIR)' (install linux-headers-amd64, or give KDIR=)"; exit 1; }
+	@set -e; for d in hw-sim firmware-model driver; do \
+		mkdir -p $(KMOD_DIR)/$$d; \
+		ln -sf $(CURDIR)/$$d/*.[ch] $(KMOD_DIR)/$$d/; done; \
+	find $(KMOD_DIR) -xtype l -delete; ln -sf $(CURDIR)/Kbuild $(KMOD_DIR)/Kbuild
+	env -u MAKEFLAGS -u MAKEOVERRIDES -u MFLAGS -u MAKELEVEL \
+		$(MAKE) -C $(KDIR) M=$(KMOD_DIR) modules
+	@echo "module: $(KMOD_DIR)/rdcfb.ko"
+
+module-clean:
+	rm -rf $(KMOD_DIR)
 
 clean:
 	rm -rf $(O) demo.png

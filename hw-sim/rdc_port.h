@@ -18,6 +18,11 @@
 #include <linux/string.h>
 #include <linux/bits.h>
 #include <linux/bitfield.h>
+#include <linux/limits.h>
+/* The kernel spells the <stdint.h> limits U64_MAX and so on. */
+#ifndef UINT64_MAX
+#define UINT64_MAX U64_MAX
+#endif
 #else
 #include <stdint.h>
 #include <stddef.h>

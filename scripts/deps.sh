@@ -6,6 +6,9 @@
 set -e
 
 PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev"
+# `--peers`: also the libraries `make bench-peers` measures rdc against.
+PEER_PKGS="libpixman-1-dev libcairo2-dev libsdl2-gfx-dev"
+[ "$1" = "--peers" ] && PKGS="$PKGS $PEER_PKGS"
 
 missing=""
 for p in $PKGS; do

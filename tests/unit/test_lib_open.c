@@ -68,7 +68,8 @@ static void test_open_bad(void **state)
 	open_fails("unix:/tmp/x.sock?colour=blue", RDC_E_URI);
 	/* reserved for transports that do not exist yet */
 	open_fails("usb:", RDC_E_NOSYS);
-	open_fails("fbdev:/dev/fb0", RDC_E_NOSYS);
+	/* fbdev: (test_fbdev_backend.c): a node that does not exist */
+	open_fails("fbdev:/nonexistent-dir/fb0", RDC_E_FILE);
 	assert_int_equal(rdc_open("sim:", NULL), RDC_E_INVAL);
 }
 

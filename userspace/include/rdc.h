@@ -13,7 +13,13 @@
  *                           by '&': "token=FILE" (else $RDC_TOKEN_FILE),
  *                           "observe" (do not ask for control)
  *                           (docs/protocol.md)
- *   (later: usb:, fbdev:/dev/fbN)
+ *   "fbdev:/dev/fbN"        the RDC-1 that rdcfb.ko simulates in the
+ *                           kernel, through its framebuffer device; VRAM
+ *                           is mapped.  RDC_E_URI if the node is not an
+ *                           rdcfb framebuffer, RDC_E_FILE if it cannot
+ *                           be opened; rdc_sim_step needs the module's
+ *                           clock=stepped (else RDC_E_NOSYS)
+ *   (later: usb:)
  *
  * Errors: every function that can fail returns 0 or a positive count on
  * success and a negative enum rdc_error on failure; rdc_strerror() names

@@ -16,7 +16,6 @@
  * transport is added by giving its entry an open() in a file of its own.
  */
 static const struct rdc_backend rdc_backend_usb = {.scheme = "usb"};
-static const struct rdc_backend rdc_backend_fbdev = {.scheme = "fbdev"};
 
 static const struct rdc_backend *const rdc_backends[] = {
 	&rdc_backend_sim, &rdc_backend_unix,  &rdc_backend_tcp,

@@ -1,0 +1,117 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * rdcfb: the RDC-1 (hw-sim + firmware-model, compiled in unchanged) as a
+ * Linux framebuffer device.  Internal interfaces between the driver's files.
+ *
+ * Locking: chip->lock (a spinlock, IRQs off) guards the simulated chip and
+ * every field below marked "lock".  fbcon draws in atomic context, so
+ * nothing that holds it sleeps, and every hold runs the simulation for a
+ * bounded slice only.  snap_lock (a mutex) guards the frame snapshot that
+ * FRAME and sysfs copy out of.
+ */
+#ifndef RDCFB_H
+#define RDCFB_H
+
+#include <linux/fb.h>
+#include <linux/hrtimer.h>
+#include <linux/mutex.h>
+#include <linux/platform_device.h>
+#include <linux/spinlock.h>
+#include <linux/wait.h>
+#include <linux/workqueue.h>
+
+#include "hw.h"
+#include "dp.h"
+#include "rdcfb_ioctl.h"
+#include "rdcfb_validate.h"
+
+#define RDCFB_NAME "rdcfb"
+#define RDCFB_MAX_DEVICES 8
+
+/* Every mode the CRTC can show fits the frame buffers (as sim:'s). */
+#define RDCFB_FRAME_CAP ((u32)RDC_CRTC_MAX_DISPLAY * RDC_CRTC_MAX_DISPLAY)
+
+/* The pseudo palette fbcon's truecolor colours index. */
+#define RDCFB_PSEUDO_COLOURS 16
+
+struct rdcfb_chip {
+	spinlock_t lock;
+	struct rdc_hw hw; /* lock */
+	struct rdc_dp *dp; /* lock; large, so vmalloc'ed */
+	u8 *vram; /* vmalloc_user: mapped to user space as is */
+	u32 *frame[2];
+	struct device *dev;
+
+	bool stepped; /* clock=stepped: time moves only in WAIT/STEP */
+	bool dying; /* the device is going away: waits end with -ENODEV */
+	bool submitting; /* lock: a SUBMIT has words still to push */
+
+	/* paced clock: hw.now follows wall time from these */
+	struct hrtimer timer;
+	struct work_struct pace_work;
+	ktime_t wall_base; /* lock */
+	u64 sim_base; /* lock */
+	u64 period_ns;
+
+	wait_queue_head_t waitq; /* woken whenever simulated time moved */
+	u64 frames; /* lock: frames completed since load */
+	u64 irqs; /* lock: rising edges of the IRQ pin */
+	bool irq_level; /* lock */
+	/* lock: bumped by anything that may change the DP's drawing state
+	 * behind fb_ops' back
+	 */
+	u32 fb_state_gen;
+
+	struct mutex snap_lock;
+	u32 *snap; /* a copy of the latest frame, snap_lock */
+	u64 snap_seq;
+	u32 snap_w, snap_h, snap_crc;
+};
+
+struct rdcfb_par {
+	struct rdcfb_chip *chip;
+	struct platform_device *pdev;
+	u32 pseudo_palette[RDCFB_PSEUDO_COLOURS];
+	u32 fmt; /* enum rdc_format of the current var */
+	u32 stride;
+	u32 state_gen; /* chip->fb_state_gen when DST/SRC/CLIP were set */
+	bool state_valid;
+	struct dentry *debugfs;
+};
+
+/* rdcfb_chip.c */
+int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
+		    u32 vram_size, bool stepped);
+void rdcfb_chip_start(struct rdcfb_chip *chip);
+void rdcfb_chip_stop(struct rdcfb_chip *chip);
+void rdcfb_chip_free(struct rdcfb_chip *chip);
+u32 rdcfb_reg_read(struct rdcfb_chip *chip, u32 reg);
+void rdcfb_reg_write(struct rdcfb_chip *chip, u32 reg, u32 val);
+int rdcfb_chip_wait(struct rdcfb_chip *chip, const struct rdcfb_wait *w);
+int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles);
+int rdcfb_chip_submit(struct rdcfb_chip *chip, const u32 *words, u32 n);
+int rdcfb_chip_vsync(struct rdcfb_chip *chip);
+void rdcfb_chip_counters(struct rdcfb_chip *chip, struct rdcfb_counters *c);
+int rdcfb_chip_snapshot(struct rdcfb_chip *chip);
+/* Atomic-context helpers for fb_ops, with chip->lock held. */
+bool rdcfb_dp_usable(struct rdcfb_chip *chip);
+int rdcfb_push_locked(struct rdcfb_chip *chip, const u32 *words, u32 n);
+void rdcfb_drain_locked(struct rdcfb_chip *chip);
+void rdcfb_irq_check_locked(struct rdcfb_chip *chip);
+
+
+/* rdcfb_fb.c */
+extern const struct fb_ops rdcfb_ops;
+int rdcfb_fb_setup(struct fb_info *info, const char *mode);
+void rdcfb_fill(struct fb_info *info, const struct fb_fillrect *r);
+void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a);
+void rdcfb_blit(struct fb_info *info, const struct fb_image *img);
+int rdcfb_sync(struct fb_info *info);
+
+/* rdcfb_bench.c */
+void rdcfb_bench_init(struct fb_info *info);
+void rdcfb_bench_exit(struct fb_info *info);
+void rdcfb_bench_module_init(void);
+void rdcfb_bench_module_exit(void);
+
+#endif /* RDCFB_H */

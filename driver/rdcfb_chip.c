@@ -1,0 +1,631 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The simulated RDC-1 inside the kernel: its memory, the two clocks that
+ * move its simulated time, waits, command submission, frames and counters.
+ *
+ * clock=paced: an hrtimer ticks a few times a frame and queues the pacing
+ * work, which runs the chip up to the simulated time that wall time says
+ * it should have reached, in bounded slices (simulating a frame takes
+ * milliseconds: never in hrtimer context, never in one lock hold).
+ * clock=stepped: time moves only inside WAIT, STEP and FBIO_WAITFORVSYNC,
+ * with the core's own wait (hw-sim/wait.c, which librdc's sim: backend uses
+ * too), so the same register writes, submits and waits give the same
+ * frames and cycle counts bit for bit.
+ */
+#include <linux/crc32.h>
+#include <linux/delay.h>
+#include <linux/jiffies.h>
+#include <linux/math64.h>
+#include <linux/sched/signal.h>
+#include <linux/slab.h>
+#include <linux/vmalloc.h>
+
+#include "rdcfb.h"
+
+/* Largest piece of a STEP or of a pacing catch-up in one lock hold. */
+#define RDCFB_RUN_SLICE (1u << 17)
+/* fb_ops run the DP for at most this long per FIFO-full, and this often. */
+#define RDCFB_SYNC_SLICE (1u << 16)
+#define RDCFB_SYNC_TRIES 64u
+/* Pacing ticks per frame, and the tick's bounds. */
+#define RDCFB_PACE_TICKS_PER_FRAME 4u
+#define RDCFB_PACE_MIN_NS (1 * NSEC_PER_MSEC)
+#define RDCFB_PACE_MAX_NS (50 * NSEC_PER_MSEC)
+/* A host that cannot keep up lets simulated time slip past this lag. */
+#define RDCFB_PACE_MAX_LAG_NS (100 * NSEC_PER_MSEC)
+/* WAIT defaults: 10 s of wall time, 10 simulated seconds. */
+#define RDCFB_WAIT_TIMEOUT_MS 10000u
+#define RDCFB_WAIT_BUDGET_S 10u
+/* FBIO_WAITFORVSYNC gives up after this (a blanked screen never has one). */
+#define RDCFB_VSYNC_TIMEOUT_MS 1000u
+/* Frame snapshot: bytes copied per lock hold, attempts before one hold. */
+#define RDCFB_SNAP_CHUNK (64u << 10)
+#define RDCFB_SNAP_TRIES 4u
+
+static void rdcfb_trace(void *ctx, u64 time, unsigned int event, u32 a, u32 b)
+{
+	struct rdcfb_chip *chip = ctx;
+
+	if (event == RDC_TRACE_VBLANK)
+		chip->frames++;
+	else if (event == RDC_TRACE_ERROR)
+		dev_dbg(chip->dev, "error %u info %#x at %llu\n", a, b, time);
+}
+
+/*
+ * The interrupt controller's view: the IRQ pin's rising edges are the
+ * interrupts.  Status stays for the client to read and clear (a driver
+ * that cleared it would change what a client waiting on IRQ_STATUS sees
+ * compared with sim:).
+ */
+void rdcfb_irq_check_locked(struct rdcfb_chip *chip)
+{
+	struct rdc_hw *hw = &chip->hw;
+	u32 pending = hw->irq_status & hw->irq_enable;
+
+	if (pending && !chip->irq_level) {
+		chip->irqs++;
+		dev_dbg(chip->dev, "irq %#x at %llu\n", pending, hw->now);
+	}
+	chip->irq_level = pending != 0;
+}
+
+static u64 rdcfb_ns_to_cycles(struct rdcfb_chip *chip, u64 ns)
+{
+	return mul_u64_u32_div(ns, chip->hw.core_hz, NSEC_PER_SEC);
+}
+
+static void rdcfb_update_period(struct rdcfb_chip *chip)
+{
+	u64 fc = chip->hw.crtc.running ? chip->hw.crtc.frame_cycles : 0;
+	u64 ns = RDCFB_PACE_MAX_NS;
+
+	if (fc)
+		ns = div_u64(mul_u64_u32_div(fc, NSEC_PER_SEC, chip->hw.core_hz),
+			     RDCFB_PACE_TICKS_PER_FRAME);
+	WRITE_ONCE(chip->period_ns,
+		   clamp_t(u64, ns, RDCFB_PACE_MIN_NS, RDCFB_PACE_MAX_NS));
+}
+
+static void rdcfb_pace_work(struct work_struct *work)
+{
+	struct rdcfb_chip *chip = container_of(work, struct rdcfb_chip,
+					       pace_work);
+	struct rdc_hw *hw = &chip->hw;
+	unsigned long flags;
+	u64 target, lag = rdcfb_ns_to_cycles(chip, RDCFB_PACE_MAX_LAG_NS);
+	ktime_t now = ktime_get();
+
+	spin_lock_irqsave(&chip->lock, flags);
+	target = chip->sim_base +
+		 rdcfb_ns_to_cycles(chip,
+				    ktime_to_ns(ktime_sub(now, chip->wall_base)));
+	/*
+	 * Too far behind (a slow host) or ahead (fb_ops ran the DP
+	 * synchronously): start pacing afresh from here.
+	 */
+	if (target > hw->now + lag || hw->now > target + lag) {
+		chip->wall_base = now;
+		chip->sim_base = hw->now;
+		target = hw->now;
+	}
+	while (hw->now < target && !chip->dying) {
+		rdc_hw_run_until(hw, min_t(u64, target,
+					   hw->now + RDCFB_RUN_SLICE));
+		rdcfb_irq_check_locked(chip);
+		spin_unlock_irqrestore(&chip->lock, flags);
+		wake_up_all(&chip->waitq);
+		cond_resched();
+		spin_lock_irqsave(&chip->lock, flags);
+	}
+	rdcfb_update_period(chip);
+	spin_unlock_irqrestore(&chip->lock, flags);
+	wake_up_all(&chip->waitq);
+}
+
+static enum hrtimer_restart rdcfb_tick(struct hrtimer *t)
+{
+	struct rdcfb_chip *chip = container_of(t, struct rdcfb_chip, timer);
+
+	if (READ_ONCE(chip->dying))
+		return HRTIMER_NORESTART;
+	queue_work(system_unbound_wq, &chip->pace_work);
+	hrtimer_forward_now(t, ns_to_ktime(READ_ONCE(chip->period_ns)));
+	return HRTIMER_RESTART;
+}
+
+int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
+		    u32 vram_size, bool stepped)
+{
+	struct rdc_hw_config cfg = { .vram_size = vram_size };
+
+	spin_lock_init(&chip->lock);
+	init_waitqueue_head(&chip->waitq);
+	mutex_init(&chip->snap_lock);
+	INIT_WORK(&chip->pace_work, rdcfb_pace_work);
+	hrtimer_init(&chip->timer, CLOCK_MONOTONIC, HRTIMER_MODE_REL);
+	chip->timer.function = rdcfb_tick;
+	chip->dev = dev;
+	chip->stepped = stepped;
+
+	chip->vram = vmalloc_user(vram_size);
+	chip->dp = vzalloc(sizeof(*chip->dp));
+	chip->frame[0] = vzalloc(array_size(RDCFB_FRAME_CAP, sizeof(u32)));
+	chip->frame[1] = vzalloc(array_size(RDCFB_FRAME_CAP, sizeof(u32)));
+	chip->snap = vzalloc(array_size(RDCFB_FRAME_CAP, sizeof(u32)));
+	if (!chip->vram || !chip->dp || !chip->frame[0] || !chip->frame[1] ||
+	    !chip->snap) {
+		rdcfb_chip_free(chip);
+		return -ENOMEM;
+	}
+	rdc_hw_init(&chip->hw, &cfg, chip->vram, chip->frame[0],
+		    chip->frame[1], RDCFB_FRAME_CAP);
+	rdc_dp_init(chip->dp, &chip->hw);
+	rdc_hw_set_trace(&chip->hw, rdcfb_trace, chip);
+	rdcfb_update_period(chip);
+	return 0;
+}
+
+void rdcfb_chip_start(struct rdcfb_chip *chip)
+{
+	if (chip->stepped)
+		return;
+	chip->wall_base = ktime_get();
+	chip->sim_base = chip->hw.now;
+	hrtimer_start(&chip->timer, ns_to_ktime(chip->period_ns),
+		      HRTIMER_MODE_REL);
+}
+
+/* Stop the clock and end every wait; the chip itself stays until free. */
+void rdcfb_chip_stop(struct rdcfb_chip *chip)
+{
+	unsigned long flags;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	WRITE_ONCE(chip->dying, true);
+	spin_unlock_irqrestore(&chip->lock, flags);
+	hrtimer_cancel(&chip->timer);
+	cancel_work_sync(&chip->pace_work);
+	wake_up_all(&chip->waitq);
+}
+
+void rdcfb_chip_free(struct rdcfb_chip *chip)
+{
+	vfree(chip->snap);
+	vfree(chip->frame[1]);
+	vfree(chip->frame[0]);
+	vfree(chip->dp);
+	vfree(chip->vram);
+	chip->snap = NULL;
+	chip->frame[0] = NULL;
+	chip->frame[1] = NULL;
+	chip->dp = NULL;
+	chip->vram = NULL;
+}
+
+u32 rdcfb_reg_read(struct rdcfb_chip *chip, u32 reg)
+{
+	unsigned long flags;
+	u32 v;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	v = rdc_hw_read(&chip->hw, reg);
+	spin_unlock_irqrestore(&chip->lock, flags);
+	return v;
+}
+
+void rdcfb_reg_write(struct rdcfb_chip *chip, u32 reg, u32 val)
+{
+	unsigned long flags;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	rdc_hw_write(&chip->hw, reg, val);
+	/* CONTROL (reset), FIFO_DATA: the DP's state may no longer be ours */
+	chip->fb_state_gen++;
+	rdcfb_irq_check_locked(chip);
+	if (!chip->stepped)
+		rdcfb_update_period(chip);
+	spin_unlock_irqrestore(&chip->lock, flags);
+}
+
+/* ---- Waits --------------------------------------------------------------- */
+
+/* The ioctl's wait as the core's (hw-sim/wait.c) */
+static void rdcfb_wait_conv(const struct rdcfb_wait *w, u64 budget,
+			    struct rdc_hw_wait *hw_w)
+{
+	unsigned int i;
+
+	BUILD_BUG_ON(RDCFB_WAIT_TERMS != RDC_WAIT_TEST_TERMS);
+	BUILD_BUG_ON(RDCFB_WAIT_GE != RDC_WAIT_TEST_GE ||
+		     RDCFB_WAIT_WRAP_GE != RDC_WAIT_TEST_WRAP_GE ||
+		     RDCFB_WAIT_EQ != RDC_WAIT_TEST_EQ);
+	memset(hw_w, 0, sizeof(*hw_w));
+	for (i = 0; i < RDCFB_WAIT_TERMS; i++) {
+		hw_w->term[i].test = w->term[i].kind;
+		hw_w->term[i].reg = w->term[i].reg;
+		hw_w->term[i].mask = w->term[i].mask;
+		hw_w->term[i].value = w->term[i].value;
+	}
+	hw_w->needs_dp = w->flags & RDCFB_WAIT_NEEDS_DP;
+	hw_w->budget = budget;
+}
+
+/*
+ * One look at a paced wait's condition, with the lock held: 0 it holds,
+ * -EIO the DP halted (a needs-DP wait), -ETIMEDOUT the budget is spent,
+ * 1 not yet.  The order is the core's (hw-sim/wait.c).
+ */
+static int rdcfb_wait_check(struct rdcfb_chip *chip,
+			    const struct rdc_hw_wait *w)
+{
+	struct rdc_hw *hw = &chip->hw;
+	unsigned int i;
+
+	for (i = 0; i < RDC_WAIT_TEST_TERMS; i++)
+		if (rdc_hw_cond_holds(hw, &w->term[i]))
+			return 0;
+	/* STATUS tells the DP's state as of its last run: judge after one */
+	if (w->needs_dp && hw->now != w->start &&
+	    (rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED))
+		return -EIO;
+	if (hw->now - w->start >= w->budget)
+		return -ETIMEDOUT;
+	return 1;
+}
+
+/*
+ * Stepped: the core's wait, run in pieces of RDCFB_RUN_SLICE cycles with
+ * the lock dropped between them (which never changes where it ends).
+ */
+static int rdcfb_wait_stepped(struct rdcfb_chip *chip, struct rdc_hw_wait *w)
+{
+	struct rdc_hw *hw = &chip->hw;
+	enum rdc_hw_wait_result res;
+	unsigned long flags;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	rdc_hw_wait_begin(hw, w);
+	for (;;) {
+		res = rdc_hw_wait_run(hw, w, RDCFB_RUN_SLICE);
+		rdcfb_irq_check_locked(chip);
+		if (res != RDC_HW_WAIT_MORE)
+			break;
+		spin_unlock_irqrestore(&chip->lock, flags);
+		if (fatal_signal_pending(current))
+			return -EINTR;
+		if (READ_ONCE(chip->dying))
+			return -ENODEV;
+		cond_resched();
+		spin_lock_irqsave(&chip->lock, flags);
+	}
+	spin_unlock_irqrestore(&chip->lock, flags);
+	wake_up_all(&chip->waitq);
+	switch (res) {
+	case RDC_HW_WAIT_DONE:
+		return 0;
+	case RDC_HW_WAIT_HALTED:
+		return -EIO;
+	default:
+		return -ETIMEDOUT;
+	}
+}
+
+/*
+ * Paced: sleep until the pacing work has moved time, and look again.
+ * SUBMIT's waits for FIFO room take only fatal signals: words of the
+ * buffer are in the FIFO already, and a restarted ioctl would queue them
+ * twice.
+ */
+static int rdcfb_wait_paced(struct rdcfb_chip *chip, struct rdc_hw_wait *w,
+			    u32 timeout_ms, bool interruptible)
+{
+	unsigned long deadline = jiffies +
+		msecs_to_jiffies(timeout_ms ? timeout_ms : RDCFB_WAIT_TIMEOUT_MS);
+	unsigned long flags;
+	u64 seen;
+	long left;
+	int ret;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	rdc_hw_wait_begin(&chip->hw, w);
+	spin_unlock_irqrestore(&chip->lock, flags);
+	for (;;) {
+		spin_lock_irqsave(&chip->lock, flags);
+		seen = chip->hw.now;
+		ret = rdcfb_wait_check(chip, w);
+		spin_unlock_irqrestore(&chip->lock, flags);
+		if (ret <= 0)
+			return ret;
+		left = (long)(deadline - jiffies);
+		if (left <= 0)
+			return -ETIMEDOUT;
+		if (interruptible)
+			left = wait_event_interruptible_timeout(chip->waitq,
+					READ_ONCE(chip->hw.now) != seen ||
+					READ_ONCE(chip->dying), left);
+		else
+			left = wait_event_killable_timeout(chip->waitq,
+					READ_ONCE(chip->hw.now) != seen ||
+					READ_ONCE(chip->dying), left);
+		if (left < 0)
+			return left;
+		if (READ_ONCE(chip->dying))
+			return -ENODEV;
+	}
+}
+
+static int rdcfb_chip_wait_sig(struct rdcfb_chip *chip,
+			       const struct rdcfb_wait *w, bool interruptible)
+{
+	u64 budget = w->budget ? w->budget :
+				 (u64)RDCFB_WAIT_BUDGET_S * chip->hw.core_hz;
+	struct rdc_hw_wait hw_w;
+	unsigned int i;
+
+	for (i = 0; i < RDCFB_WAIT_TERMS; i++)
+		if (w->term[i].kind > RDCFB_WAIT_EQ)
+			return -EINVAL;
+	if (w->flags & ~RDCFB_WAIT_NEEDS_DP)
+		return -EINVAL;
+	if (READ_ONCE(chip->dying))
+		return -ENODEV;
+	rdcfb_wait_conv(w, budget, &hw_w);
+	return chip->stepped ? rdcfb_wait_stepped(chip, &hw_w) :
+			       rdcfb_wait_paced(chip, &hw_w, w->timeout_ms,
+						interruptible);
+}
+
+int rdcfb_chip_wait(struct rdcfb_chip *chip, const struct rdcfb_wait *w)
+{
+	return rdcfb_chip_wait_sig(chip, w, true);
+}
+
+int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles)
+{
+	struct rdc_hw *hw = &chip->hw;
+	unsigned long flags;
+	u64 end;
+
+	if (!chip->stepped)
+		return -EPERM;
+	spin_lock_irqsave(&chip->lock, flags);
+	if (cycles > U64_MAX - hw->now) {
+		spin_unlock_irqrestore(&chip->lock, flags);
+		return -ERANGE;
+	}
+	end = hw->now + cycles;
+	/*
+	 * In pieces, so one STEP never holds the lock for long; the chip
+	 * gives the same result run in pieces as in one go.
+	 */
+	while (hw->now < end) {
+		rdc_hw_run_until(hw, min_t(u64, end,
+					   hw->now + RDCFB_RUN_SLICE));
+		rdcfb_irq_check_locked(chip);
+		spin_unlock_irqrestore(&chip->lock, flags);
+		if (fatal_signal_pending(current))
+			return -EINTR;
+		if (READ_ONCE(chip->dying))
+			return -ENODEV;
+		cond_resched();
+		spin_lock_irqsave(&chip->lock, flags);
+	}
+	spin_unlock_irqrestore(&chip->lock, flags);
+	wake_up_all(&chip->waitq);
+	return 0;
+}
+
+int rdcfb_chip_vsync(struct rdcfb_chip *chip)
+{
+	struct rdcfb_wait w = {
+		.term[0] = { .kind = RDCFB_WAIT_WRAP_GE,
+			     .reg = RDC_REG_FRAME_COUNT,
+			     .mask = ~0u },
+		.timeout_ms = RDCFB_VSYNC_TIMEOUT_MS,
+	};
+	struct rdc_hw *hw = &chip->hw;
+	unsigned long flags;
+	u64 next;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	next = rdc_port_next_vblank(hw);
+	w.term[0].value = rdc_hw_read(hw, RDC_REG_FRAME_COUNT) + 1;
+	/* the budget reaches just past the next vblank */
+	w.budget = next - hw->now + 1;
+	spin_unlock_irqrestore(&chip->lock, flags);
+	if (next == RDC_NEVER)
+		return -ETIMEDOUT;
+	return rdcfb_chip_wait(chip, &w);
+}
+
+/* ---- Submission ---------------------------------------------------------- */
+
+/*
+ * Push validated words into the FIFO as librdc's core does for a backend
+ * without a submit op: as many as FIFO_FREE says, then wait (a needs-DP
+ * wait) for half a FIFO.  The words of one SUBMIT go in under the lock in
+ * runs, so fb_ops (which see chip->submitting) keep out of the middle of
+ * a command.
+ */
+int rdcfb_chip_submit(struct rdcfb_chip *chip, const u32 *words, u32 n)
+{
+	struct rdc_hw *hw = &chip->hw;
+	unsigned long flags;
+	u32 free_words;
+	int ret = 0;
+
+	while (n) {
+		spin_lock_irqsave(&chip->lock, flags);
+		chip->fb_state_gen++;
+		free_words = rdc_hw_read(hw, RDC_REG_FIFO_FREE);
+		for (; free_words && n; free_words--, n--, words++)
+			rdc_hw_write(hw, RDC_REG_FIFO_DATA, *words);
+		chip->submitting = n != 0;
+		spin_unlock_irqrestore(&chip->lock, flags);
+		if (n) {
+			struct rdcfb_wait w = {
+				.term[0] = { .kind = RDCFB_WAIT_GE,
+					     .reg = RDC_REG_FIFO_FREE,
+					     .mask = ~0u,
+					     .value = min_t(u32, n,
+							    RDC_FIFO_DEPTH / 2) },
+				.flags = RDCFB_WAIT_NEEDS_DP,
+			};
+
+			ret = rdcfb_chip_wait_sig(chip, &w, false);
+			if (ret)
+				break;
+		}
+	}
+	spin_lock_irqsave(&chip->lock, flags);
+	chip->submitting = false;
+	spin_unlock_irqrestore(&chip->lock, flags);
+	return ret;
+}
+
+/* ---- fb_ops' side: atomic context, chip->lock held ----------------------- */
+
+/*
+ * Can the DP take fb_ops' commands: enabled, not halted, and no client's
+ * command half in the FIFO?
+ */
+bool rdcfb_dp_usable(struct rdcfb_chip *chip)
+{
+	struct rdc_hw *hw = &chip->hw;
+
+	return !chip->submitting && !hw->in_reset &&
+	       (hw->control & RDC_CONTROL_DP_EN) &&
+	       !(hw->dp_status & RDC_STATUS_DP_HALTED) && !chip->dying;
+}
+
+/*
+ * Queue words; when the FIFO is full, run the DP for a bounded slice as a
+ * driver would poll FIFO_FREE.  The caller checked rdcfb_dp_usable.
+ */
+int rdcfb_push_locked(struct rdcfb_chip *chip, const u32 *words, u32 n)
+{
+	struct rdc_hw *hw = &chip->hw;
+	unsigned int tries = 0;
+	u32 free_words;
+
+	while (n) {
+		free_words = rdc_hw_read(hw, RDC_REG_FIFO_FREE);
+		if (!free_words) {
+			if (++tries > RDCFB_SYNC_TRIES ||
+			    (hw->dp_status & RDC_STATUS_DP_HALTED))
+				return -ETIMEDOUT;
+			rdc_hw_run_until_idle(hw, hw->now + RDCFB_SYNC_SLICE);
+			rdcfb_irq_check_locked(chip);
+			continue;
+		}
+		for (; free_words && n; free_words--, n--, words++)
+			rdc_hw_write(hw, RDC_REG_FIFO_DATA, *words);
+	}
+	return 0;
+}
+
+/* Run the DP until it has nothing left it can do (bounded). */
+void rdcfb_drain_locked(struct rdcfb_chip *chip)
+{
+	struct rdc_hw *hw = &chip->hw;
+	unsigned int tries;
+
+	for (tries = 0; tries < RDCFB_SYNC_TRIES; tries++) {
+		if (rdc_hw_run_until_idle(hw, hw->now + RDCFB_SYNC_SLICE))
+			break;
+	}
+	rdcfb_irq_check_locked(chip);
+}
+
+/* ---- Counters and frames ------------------------------------------------- */
+
+void rdcfb_chip_counters(struct rdcfb_chip *chip, struct rdcfb_counters *c)
+{
+	struct rdc_hw *hw = &chip->hw;
+	unsigned long flags;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	c->now = hw->now;
+	c->busy = hw->perf.busy;
+	c->stall = hw->perf.stall;
+	c->pixels = hw->perf.pixels;
+	c->cmds = hw->perf.cmds;
+	c->last_cycles = hw->perf.last_cycles;
+	c->last_opcode = hw->perf.last_opcode;
+	c->fence = hw->fence;
+	c->frames = (u32)chip->frames;
+	c->reserved = 0;
+	spin_unlock_irqrestore(&chip->lock, flags);
+}
+
+/* zlib's CRC-32 of the pixels as little-endian bytes. */
+static u32 rdcfb_crc(const u32 *px, size_t count)
+{
+	__le32 buf[64];
+	u32 crc = ~0u;
+	size_t i, k;
+
+	for (i = 0; i < count; i += k) {
+		for (k = 0; k < ARRAY_SIZE(buf) && i + k < count; k++)
+			buf[k] = cpu_to_le32(px[i + k]);
+		crc = crc32_le(crc, (const u8 *)buf, k * sizeof(buf[0]));
+	}
+	return ~crc;
+}
+
+/*
+ * Copy the latest complete frame to chip->snap (snap_lock held).  It is
+ * copied in pieces with the lock dropped between them; a frame completed
+ * meanwhile (the buffers swap) means a retry, the last one in one hold.
+ * Returns 0, or -EAGAIN before the first frame.
+ */
+int rdcfb_chip_snapshot(struct rdcfb_chip *chip)
+{
+	unsigned long flags;
+	unsigned int tries;
+	const u32 *f;
+	u32 w, h;
+	size_t bytes, off;
+	u64 seq;
+
+	lockdep_assert_held(&chip->snap_lock);
+	for (tries = 0; tries < RDCFB_SNAP_TRIES; tries++) {
+		spin_lock_irqsave(&chip->lock, flags);
+		f = rdc_hw_frame(&chip->hw, &w, &h);
+		seq = chip->frames;
+		if (!f) {
+			spin_unlock_irqrestore(&chip->lock, flags);
+			chip->snap_seq = 0;
+			return -EAGAIN;
+		}
+		if (seq == chip->snap_seq && w == chip->snap_w &&
+		    h == chip->snap_h) {
+			spin_unlock_irqrestore(&chip->lock, flags);
+			return 0;
+		}
+		bytes = (size_t)w * h * sizeof(u32);
+		for (off = 0; off < bytes; off += RDCFB_SNAP_CHUNK) {
+			size_t len = min_t(size_t, RDCFB_SNAP_CHUNK, bytes - off);
+
+			memcpy((u8 *)chip->snap + off, (const u8 *)f + off, len);
+			if (tries + 1 == RDCFB_SNAP_TRIES)
+				continue;
+			spin_unlock_irqrestore(&chip->lock, flags);
+			cond_resched();
+			spin_lock_irqsave(&chip->lock, flags);
+			if (chip->frames != seq)
+				break;
+		}
+		if (chip->frames == seq) {
+			spin_unlock_irqrestore(&chip->lock, flags);
+			chip->snap_seq = seq;
+			chip->snap_w = w;
+			chip->snap_h = h;
+			chip->snap_crc = rdcfb_crc(chip->snap, (size_t)w * h);
+			return 0;
+		}
+		spin_unlock_irqrestore(&chip->lock, flags);
+	}
+	return -EAGAIN;
+}

@@ -1,0 +1,805 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * fb_ops on the simulated RDC-1: modes program the CRTC, the palette is
+ * the CLUT, pan writes the latched base, blank drives the scanout enable,
+ * and fbcon's fillrect, copyarea and imageblit become display-processor
+ * commands (FILL_RECT, BLIT, MONO / HOST_BLIT), so the console is drawn by
+ * the DP and its cycles are counted.  The private ioctls of rdcfb_ioctl.h
+ * live here too.
+ */
+#include <linux/fb.h>
+#include <linux/minmax.h>
+#include <linux/mm.h>
+#include <linux/slab.h>
+#include <linux/uaccess.h>
+#include <linux/vmalloc.h>
+
+#include "rdcfb.h"
+
+#define RDCFB_PS_PER_KHZ 1000000000u /* picoseconds times kHz */
+/* A var's pixel clock within this many per mille of a preset's is it. */
+#define RDCFB_PIXCLK_SLACK_PERMILLE 5u
+/* Command words staged on the stack before they go to the FIFO. */
+#define RDCFB_STAGE_WORDS 32u
+/* The argument words ahead of the data of MONO / HOST_BLIT. */
+#define RDCFB_DATA_ARGS 2u
+#define RDCFB_BITS_PER_WORD 32u
+
+static u32 rdcfb_fmt_of(const struct fb_var_screeninfo *var)
+{
+	if (var->bits_per_pixel <= 8)
+		return RDC_FMT_I8;
+	if (var->bits_per_pixel <= 16)
+		return RDC_FMT_RGB565;
+	return RDC_FMT_XRGB8888;
+}
+
+static u32 rdcfb_stride(u32 fmt, u32 width)
+{
+	return ALIGN(rdc_format_row_bytes(fmt, width), sizeof(u32));
+}
+
+static void rdcfb_set_bitfields(struct fb_var_screeninfo *var, u32 fmt)
+{
+	static const struct fb_bitfield none = { 0 };
+
+	var->transp = none;
+	var->grayscale = 0;
+	var->nonstd = 0;
+	switch (fmt) {
+	case RDC_FMT_I8:
+		var->bits_per_pixel = 8;
+		var->red = (struct fb_bitfield){ 0, 8, 0 };
+		var->green = var->red;
+		var->blue = var->red;
+		break;
+	case RDC_FMT_RGB565:
+		var->bits_per_pixel = 16;
+		var->red = (struct fb_bitfield){ 11, 5, 0 };
+		var->green = (struct fb_bitfield){ 5, 6, 0 };
+		var->blue = (struct fb_bitfield){ 0, 5, 0 };
+		break;
+	default:
+		var->bits_per_pixel = 32;
+		var->red = (struct fb_bitfield){ 16, 8, 0 };
+		var->green = (struct fb_bitfield){ 8, 8, 0 };
+		var->blue = (struct fb_bitfield){ 0, 8, 0 };
+		break;
+	}
+}
+
+static void rdcfb_timing_to_var(const struct rdc_timing *t,
+				struct fb_var_screeninfo *var)
+{
+	var->xres = t->h_display;
+	var->yres = t->v_display;
+	var->pixclock = DIV_ROUND_CLOSEST(RDCFB_PS_PER_KHZ, t->pixclk_khz);
+	var->right_margin = t->h_sync_start - t->h_display;
+	var->hsync_len = t->h_sync_end - t->h_sync_start;
+	var->left_margin = t->h_total - t->h_sync_end;
+	var->lower_margin = t->v_sync_start - t->v_display;
+	var->vsync_len = t->v_sync_end - t->v_sync_start;
+	var->upper_margin = t->v_total - t->v_sync_end;
+	var->sync = 0;
+	if (t->flags & RDC_CRTC_HSYNC_POS)
+		var->sync |= FB_SYNC_HOR_HIGH_ACT;
+	if (t->flags & RDC_CRTC_VSYNC_POS)
+		var->sync |= FB_SYNC_VERT_HIGH_ACT;
+	var->vmode = FB_VMODE_NONINTERLACED;
+}
+
+/* The preset of this size, 0, or -ENOENT. */
+static int rdcfb_preset_of(u32 xres, u32 yres, struct rdc_timing *t)
+{
+	u32 p;
+
+	for (p = 0; p < RDC_PRESET_COUNT; p++)
+		if (!rdc_preset_timing(p, t) && t->h_display == xres &&
+		    t->v_display == yres)
+			return 0;
+	return -ENOENT;
+}
+
+/*
+ * The CRTC timing a var asks for: its own (pixclock, margins, sync
+ * lengths) when it gives a pixel clock, else the preset of its size.  The
+ * checks are the chip's (hw.h: timing validation at latch), so a mode
+ * check_var accepts is never refused at the latch.
+ */
+static int rdcfb_var_timing(const struct fb_var_screeninfo *var,
+			    struct rdc_timing *t)
+{
+	struct rdc_timing p;
+	u64 h[4], v[4];
+	u32 khz;
+
+	if (!var->pixclock)
+		return rdcfb_preset_of(var->xres, var->yres, t) ? -EINVAL : 0;
+	khz = DIV_ROUND_CLOSEST(RDCFB_PS_PER_KHZ, var->pixclock);
+	h[0] = var->xres;
+	h[1] = h[0] + var->right_margin;
+	h[2] = h[1] + var->hsync_len;
+	h[3] = h[2] + var->left_margin;
+	v[0] = var->yres;
+	v[1] = v[0] + var->lower_margin;
+	v[2] = v[1] + var->vsync_len;
+	v[3] = v[2] + var->upper_margin;
+	if (!h[0] || !v[0] || h[0] > RDC_CRTC_MAX_DISPLAY ||
+	    v[0] > RDC_CRTC_MAX_DISPLAY || h[3] > RDC_CRTC_MAX_TOTAL ||
+	    v[3] > RDC_CRTC_MAX_TOTAL || v[0] >= v[3] ||
+	    khz < RDC_PIXCLK_MIN_KHZ || khz > RDC_PIXCLK_MAX_KHZ ||
+	    h[0] * v[0] > RDCFB_FRAME_CAP)
+		return -EINVAL;
+	/* a line must last at least one core cycle */
+	if (h[3] * RDC_DEFAULT_CORE_HZ < (u64)khz * 1000)
+		return -EINVAL;
+	*t = (struct rdc_timing){
+		.h_display = h[0], .h_sync_start = h[1],
+		.h_sync_end = h[2], .h_total = h[3],
+		.v_display = v[0], .v_sync_start = v[1],
+		.v_sync_end = v[2], .v_total = v[3],
+		.pixclk_khz = khz,
+	};
+	if (var->sync & FB_SYNC_HOR_HIGH_ACT)
+		t->flags |= RDC_CRTC_HSYNC_POS;
+	if (var->sync & FB_SYNC_VERT_HIGH_ACT)
+		t->flags |= RDC_CRTC_VSYNC_POS;
+	/* picoseconds lose the preset's exact kHz: give it back */
+	if (!rdcfb_preset_of(t->h_display, t->v_display, &p) &&
+	    p.h_total == t->h_total && p.v_total == t->v_total &&
+	    p.h_sync_start == t->h_sync_start &&
+	    p.h_sync_end == t->h_sync_end &&
+	    p.v_sync_start == t->v_sync_start &&
+	    p.v_sync_end == t->v_sync_end &&
+	    abs((int)p.pixclk_khz - (int)khz) * 1000 <=
+		    (int)(p.pixclk_khz * RDCFB_PIXCLK_SLACK_PERMILLE))
+		t->pixclk_khz = p.pixclk_khz;
+	return 0;
+}
+
+static int rdcfb_check_var(struct fb_var_screeninfo *var, struct fb_info *info)
+{
+	struct rdcfb_par *par = info->par;
+	u32 vram = par->chip->hw.vram_size, fmt, stride;
+	struct rdc_timing t;
+
+	if ((var->vmode & FB_VMODE_MASK) != FB_VMODE_NONINTERLACED ||
+	    var->bits_per_pixel > 32)
+		return -EINVAL;
+	if (rdcfb_var_timing(var, &t))
+		return -EINVAL;
+	fmt = rdcfb_fmt_of(var);
+	var->xres_virtual = max(var->xres_virtual, var->xres);
+	var->yres_virtual = max(var->yres_virtual, var->yres);
+	if (var->xres_virtual > RDC_SIZE_MAX)
+		return -EINVAL;
+	stride = rdcfb_stride(fmt, var->xres_virtual);
+	if ((u64)stride * var->yres > vram)
+		return -ENOMEM;
+	/* a taller virtual screen than VRAM (or the DP) holds shrinks */
+	var->yres_virtual = min3(var->yres_virtual, vram / stride,
+				 (u32)RDC_SIZE_MAX);
+	if (var->xoffset > var->xres_virtual - var->xres ||
+	    var->yoffset > var->yres_virtual - var->yres)
+		return -EINVAL;
+	rdcfb_set_bitfields(var, fmt);
+	var->vmode = FB_VMODE_NONINTERLACED;
+	var->height = -1;
+	var->width = -1;
+	var->accel_flags = 0;
+	rdcfb_timing_to_var(&t, var);
+	return 0;
+}
+
+static u32 rdcfb_base(const struct rdcfb_par *par,
+		      const struct fb_var_screeninfo *var)
+{
+	return var->yoffset * par->stride +
+	       rdc_format_row_bytes(par->fmt, var->xoffset);
+}
+
+static int rdcfb_set_par(struct fb_info *info)
+{
+	static const u32 timing_regs[] = {
+		RDC_REG_H_TOTAL, RDC_REG_H_DISPLAY, RDC_REG_H_SYNC_START,
+		RDC_REG_H_SYNC_END, RDC_REG_V_TOTAL, RDC_REG_V_DISPLAY,
+		RDC_REG_V_SYNC_START, RDC_REG_V_SYNC_END, RDC_REG_PIXCLK_KHZ,
+		RDC_REG_CRTC_FLAGS,
+	};
+	struct rdcfb_par *par = info->par;
+	struct rdcfb_chip *chip = par->chip;
+	struct rdc_timing t;
+	unsigned long flags;
+	u32 val[ARRAY_SIZE(timing_regs)];
+	unsigned int i;
+
+	if (rdcfb_var_timing(&info->var, &t))
+		return -EINVAL;
+	par->fmt = rdcfb_fmt_of(&info->var);
+	par->stride = rdcfb_stride(par->fmt, info->var.xres_virtual);
+	info->fix.line_length = par->stride;
+	info->fix.visual = par->fmt == RDC_FMT_I8 ? FB_VISUAL_PSEUDOCOLOR :
+						    FB_VISUAL_TRUECOLOR;
+	val[0] = t.h_total;
+	val[1] = t.h_display;
+	val[2] = t.h_sync_start;
+	val[3] = t.h_sync_end;
+	val[4] = t.v_total;
+	val[5] = t.v_display;
+	val[6] = t.v_sync_start;
+	val[7] = t.v_sync_end;
+	val[8] = t.pixclk_khz;
+	val[9] = t.flags;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	rdc_hw_write(&chip->hw, RDC_REG_FB_FORMAT, par->fmt);
+	rdc_hw_write(&chip->hw, RDC_REG_FB_STRIDE, par->stride);
+	rdc_hw_write(&chip->hw, RDC_REG_FB_BASE, rdcfb_base(par, &info->var));
+	for (i = 0; i < ARRAY_SIZE(timing_regs); i++)
+		rdc_hw_write(&chip->hw, timing_regs[i], val[i]);
+	par->state_valid = false;
+	spin_unlock_irqrestore(&chip->lock, flags);
+	dev_dbg(chip->dev, "mode %ux%u (%ux%u virtual) format %u stride %u\n",
+		t.h_display, t.v_display, info->var.xres_virtual,
+		info->var.yres_virtual, par->fmt, par->stride);
+	return 0;
+}
+
+static u32 rdcfb_pack(u32 fmt, u32 r, u32 g, u32 b)
+{
+	if (fmt == RDC_FMT_RGB565)
+		return (r >> 11) << 11 | (g >> 10) << 5 | b >> 11;
+	return (r >> 8) << 16 | (g >> 8) << 8 | b >> 8;
+}
+
+static void rdcfb_clut_write_locked(struct rdcfb_chip *chip, u32 regno,
+				    u32 r, u32 g, u32 b)
+{
+	rdc_hw_write(&chip->hw, RDC_REG_CLUT_INDEX, regno);
+	rdc_hw_write(&chip->hw, RDC_REG_CLUT_DATA,
+		     rdcfb_pack(RDC_FMT_XRGB8888, r, g, b));
+}
+
+static int rdcfb_setcolreg(unsigned int regno, unsigned int red,
+			   unsigned int green, unsigned int blue,
+			   unsigned int transp, struct fb_info *info)
+{
+	struct rdcfb_par *par = info->par;
+	unsigned long flags;
+
+	if (regno >= RDC_CLUT_ENTRIES)
+		return -EINVAL;
+	if (info->fix.visual == FB_VISUAL_PSEUDOCOLOR) {
+		spin_lock_irqsave(&par->chip->lock, flags);
+		rdcfb_clut_write_locked(par->chip, regno, red, green, blue);
+		spin_unlock_irqrestore(&par->chip->lock, flags);
+	} else if (regno < RDCFB_PSEUDO_COLOURS) {
+		par->pseudo_palette[regno] = rdcfb_pack(par->fmt, red, green,
+							blue);
+	}
+	return 0;
+}
+
+/* The whole map in one lock hold: one CLUT_INDEX write, then the data. */
+static int rdcfb_setcmap(struct fb_cmap *cmap, struct fb_info *info)
+{
+	struct rdcfb_par *par = info->par;
+	unsigned long flags;
+	u32 i;
+
+	if (cmap->start >= RDC_CLUT_ENTRIES ||
+	    cmap->len > RDC_CLUT_ENTRIES - cmap->start)
+		return -EINVAL;
+	if (info->fix.visual != FB_VISUAL_PSEUDOCOLOR) {
+		for (i = 0; i < cmap->len; i++)
+			rdcfb_setcolreg(cmap->start + i, cmap->red[i],
+					cmap->green[i], cmap->blue[i], 0, info);
+		return 0;
+	}
+	spin_lock_irqsave(&par->chip->lock, flags);
+	rdc_hw_write(&par->chip->hw, RDC_REG_CLUT_INDEX, cmap->start);
+	for (i = 0; i < cmap->len; i++)
+		rdc_hw_write(&par->chip->hw, RDC_REG_CLUT_DATA,
+			     rdcfb_pack(RDC_FMT_XRGB8888, cmap->red[i],
+					cmap->green[i], cmap->blue[i]));
+	spin_unlock_irqrestore(&par->chip->lock, flags);
+	return 0;
+}
+
+static int rdcfb_pan_display(struct fb_var_screeninfo *var,
+			     struct fb_info *info)
+{
+	struct rdcfb_par *par = info->par;
+	unsigned long flags;
+
+	if (var->xoffset > info->var.xres_virtual - info->var.xres ||
+	    var->yoffset > info->var.yres_virtual - info->var.yres)
+		return -EINVAL;
+	spin_lock_irqsave(&par->chip->lock, flags);
+	rdc_hw_write(&par->chip->hw, RDC_REG_FB_BASE, rdcfb_base(par, var));
+	spin_unlock_irqrestore(&par->chip->lock, flags);
+	return 0;
+}
+
+static int rdcfb_blank(int blank, struct fb_info *info)
+{
+	struct rdcfb_par *par = info->par;
+	struct rdc_hw *hw = &par->chip->hw;
+	unsigned long flags;
+	u32 ctl, pins;
+
+	spin_lock_irqsave(&par->chip->lock, flags);
+	ctl = rdc_hw_read(hw, RDC_REG_CONTROL) &
+	      ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
+	pins = hw->pins_in;
+	if (blank == FB_BLANK_UNBLANK) {
+		ctl |= RDC_CONTROL_SCANOUT_EN;
+		pins |= RDC_PIN_BL_EN;
+	} else {
+		ctl &= ~RDC_CONTROL_SCANOUT_EN;
+		pins &= ~RDC_PIN_BL_EN;
+	}
+	rdc_hw_write(hw, RDC_REG_CONTROL, ctl);
+	rdc_hw_set_pins(hw, pins);
+	spin_unlock_irqrestore(&par->chip->lock, flags);
+	return 0;
+}
+
+static int rdcfb_mmap(struct fb_info *info, struct vm_area_struct *vma)
+{
+	struct rdcfb_par *par = info->par;
+
+	return remap_vmalloc_range(vma, par->chip->vram, vma->vm_pgoff);
+}
+
+/* ---- Drawing ------------------------------------------------------------- */
+
+/* Command words on their way to the FIFO, staged a few at a time. */
+struct rdcfb_stage {
+	struct rdcfb_chip *chip;
+	u32 w[RDCFB_STAGE_WORDS];
+	u32 n;
+	int err;
+	u32 acc; /* a data word being filled byte by byte */
+	u32 acc_bits;
+};
+
+static void rdcfb_flush(struct rdcfb_stage *s)
+{
+	if (s->n && !s->err)
+		s->err = rdcfb_push_locked(s->chip, s->w, s->n);
+	s->n = 0;
+}
+
+static void rdcfb_put(struct rdcfb_stage *s, u32 word)
+{
+	if (s->n == RDCFB_STAGE_WORDS)
+		rdcfb_flush(s);
+	s->w[s->n++] = word;
+}
+
+/* Data bytes go into words little-endian (byte 0 in bits 7:0). */
+static void rdcfb_put_bits(struct rdcfb_stage *s, u32 v, u32 bits)
+{
+	s->acc |= v << s->acc_bits;
+	s->acc_bits += bits;
+	if (s->acc_bits == RDCFB_BITS_PER_WORD) {
+		rdcfb_put(s, s->acc);
+		s->acc = 0;
+		s->acc_bits = 0;
+	}
+}
+
+/* End a data row: it is padded to a word. */
+static void rdcfb_end_row(struct rdcfb_stage *s)
+{
+	if (s->acc_bits)
+		rdcfb_put(s, s->acc);
+	s->acc = 0;
+	s->acc_bits = 0;
+}
+
+/*
+ * Claim the DP for an fb op (chip->lock held).  The DP state fb_ops rely
+ * on is set again whenever a client may have changed it: the visible
+ * surface as DST and SRC, a clip of all of it, and no pattern, transform,
+ * alpha or colour key.  Returns false if the DP cannot take commands now:
+ * the op then draws with the CPU after the queued commands ran.
+ */
+static bool rdcfb_begin(struct fb_info *info, struct rdcfb_stage *s)
+{
+	struct rdcfb_par *par = info->par;
+	struct rdcfb_chip *chip = par->chip;
+	u32 wh = RDC_WH(info->var.xres_virtual, info->var.yres_virtual);
+	int k;
+
+	s->chip = chip;
+	s->n = 0;
+	s->err = 0;
+	s->acc = 0;
+	s->acc_bits = 0;
+	if (!rdcfb_dp_usable(chip)) {
+		if ((chip->hw.control & RDC_CONTROL_DP_EN) &&
+		    !(chip->hw.dp_status & RDC_STATUS_DP_HALTED))
+			rdcfb_drain_locked(chip);
+		return false;
+	}
+	if (par->state_valid && par->state_gen == chip->fb_state_gen)
+		return true;
+	for (k = 0; k < 2; k++) {
+		rdcfb_put(s, RDC_CMD(k ? RDC_OP_SET_SRC : RDC_OP_SET_DST, 0, 4));
+		rdcfb_put(s, 0);
+		rdcfb_put(s, par->stride);
+		rdcfb_put(s, wh);
+		rdcfb_put(s, par->fmt);
+	}
+	rdcfb_put(s, RDC_CMD(RDC_OP_SET_CLIP, 0, 2));
+	rdcfb_put(s, RDC_XY(0, 0));
+	rdcfb_put(s, RDC_XY(info->var.xres_virtual, info->var.yres_virtual));
+	rdcfb_put(s, RDC_CMD(RDC_OP_SET_PATTERN, RDC_PAT_NONE, 0));
+	rdcfb_put(s, RDC_CMD(RDC_OP_SET_TRANSFORM, 0, 0));
+	rdcfb_put(s, RDC_CMD(RDC_OP_SET_ALPHA, 0, 1));
+	rdcfb_put(s, RDC_ALPHA_OPAQUE);
+	rdcfb_put(s, RDC_CMD(RDC_OP_SET_COLORKEY, 0, 1));
+	rdcfb_put(s, 0);
+	par->state_valid = true;
+	par->state_gen = chip->fb_state_gen;
+	return true;
+}
+
+static void rdcfb_end(struct fb_info *info, struct rdcfb_stage *s)
+{
+	struct rdcfb_par *par = info->par;
+
+	rdcfb_flush(s);
+	if (s->err) {
+		/* a command may be cut short: set everything again next time */
+		par->state_valid = false;
+		dev_dbg(par->chip->dev, "fb op dropped: %d\n", s->err);
+	}
+}
+
+static u32 rdcfb_colour(struct fb_info *info, u32 idx)
+{
+	struct rdcfb_par *par = info->par;
+	u32 n = info->pseudo_palette == par->pseudo_palette ?
+			RDCFB_PSEUDO_COLOURS : RDC_CLUT_ENTRIES;
+
+	if (info->fix.visual != FB_VISUAL_TRUECOLOR)
+		return idx;
+	return idx < n ? ((const u32 *)info->pseudo_palette)[idx] : 0;
+}
+
+void rdcfb_fill(struct fb_info *info, const struct fb_fillrect *r)
+{
+	struct rdcfb_par *par = info->par;
+	struct rdcfb_stage s;
+	unsigned long flags;
+
+	if (!r->width || !r->height)
+		return;
+	spin_lock_irqsave(&par->chip->lock, flags);
+	if (!rdcfb_begin(info, &s)) {
+		spin_unlock_irqrestore(&par->chip->lock, flags);
+		sys_fillrect(info, r);
+		return;
+	}
+	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
+	rdcfb_put(&s, r->rop == ROP_XOR ? RDC_ROP_XOR : RDC_ROP_COPY);
+	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+	rdcfb_put(&s, rdcfb_colour(info, r->color));
+	rdcfb_put(&s, RDC_CMD(RDC_OP_FILL_RECT, 0, 2));
+	rdcfb_put(&s, RDC_XY(r->dx, r->dy));
+	rdcfb_put(&s, RDC_WH(r->width, r->height));
+	rdcfb_end(info, &s);
+	spin_unlock_irqrestore(&par->chip->lock, flags);
+}
+
+void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a)
+{
+	struct rdcfb_par *par = info->par;
+	struct rdcfb_stage s;
+	unsigned long flags;
+
+	if (!a->width || !a->height)
+		return;
+	spin_lock_irqsave(&par->chip->lock, flags);
+	if (!rdcfb_begin(info, &s)) {
+		spin_unlock_irqrestore(&par->chip->lock, flags);
+		sys_copyarea(info, a);
+		return;
+	}
+	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
+	rdcfb_put(&s, RDC_ROP_COPY);
+	rdcfb_put(&s, RDC_CMD(RDC_OP_BLIT, 0, 3));
+	rdcfb_put(&s, RDC_XY(a->sx, a->sy));
+	rdcfb_put(&s, RDC_XY(a->dx, a->dy));
+	rdcfb_put(&s, RDC_WH(a->width, a->height));
+	rdcfb_end(info, &s);
+	spin_unlock_irqrestore(&par->chip->lock, flags);
+}
+
+/*
+ * A 1 bpp image (glyphs) is MONO with FG/BG; an 8 bpp one (the logo) is
+ * HOST_BLIT of its pixels looked up as cfb_imageblit would.  Tall images
+ * go as several commands, each under RDC_CMD_MAX_ARGS.
+ */
+static void rdcfb_image_cmds(struct fb_info *info, struct rdcfb_stage *s,
+			     const struct fb_image *img)
+{
+	struct rdcfb_par *par = info->par;
+	bool mono = img->depth == 1;
+	u32 bpp = mono ? 1 : rdc_format_bpp(par->fmt);
+	u32 wpr = DIV_ROUND_UP(img->width * bpp, RDCFB_BITS_PER_WORD);
+	u32 band = (RDC_CMD_MAX_ARGS - RDCFB_DATA_ARGS) / wpr;
+	u32 src_pitch = mono ? DIV_ROUND_UP(img->width, 8) : img->width;
+	u32 y0, y, x, rows;
+
+	for (y0 = 0; y0 < img->height && !s->err; y0 += rows) {
+		rows = min(band, img->height - y0);
+		rdcfb_put(s, RDC_CMD(mono ? RDC_OP_MONO : RDC_OP_HOST_BLIT, 0,
+				     RDCFB_DATA_ARGS + rows * wpr));
+		rdcfb_put(s, RDC_XY(img->dx, img->dy + y0));
+		rdcfb_put(s, RDC_WH(img->width, rows));
+		for (y = y0; y < y0 + rows; y++) {
+			const u8 *src = (const u8 *)img->data + y * src_pitch;
+
+			if (mono) {
+				for (x = 0; x < src_pitch; x++)
+					rdcfb_put_bits(s, src[x], 8);
+			} else {
+				for (x = 0; x < img->width; x++)
+					rdcfb_put_bits(s,
+						rdcfb_colour(info, src[x]) &
+						GENMASK(bpp - 1, 0), bpp);
+			}
+			rdcfb_end_row(s);
+		}
+	}
+}
+
+void rdcfb_blit(struct fb_info *info, const struct fb_image *img)
+{
+	struct rdcfb_par *par = info->par;
+	struct rdcfb_stage s;
+	unsigned long flags;
+
+	if (!img->width || !img->height)
+		return;
+	spin_lock_irqsave(&par->chip->lock, flags);
+	if ((img->depth != 1 && img->depth != 8) ||
+	    !rdcfb_begin(info, &s)) {
+		/* the CPU draws: after what the DP has queued */
+		if (rdcfb_dp_usable(par->chip))
+			rdcfb_drain_locked(par->chip);
+		spin_unlock_irqrestore(&par->chip->lock, flags);
+		sys_imageblit(info, img);
+		return;
+	}
+	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
+	rdcfb_put(&s, RDC_ROP_COPY);
+	if (img->depth == 1) {
+		rdcfb_put(&s, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+		rdcfb_put(&s, rdcfb_colour(info, img->fg_color));
+		rdcfb_put(&s, RDC_CMD(RDC_OP_SET_BG, 0, 1));
+		rdcfb_put(&s, rdcfb_colour(info, img->bg_color));
+	}
+	rdcfb_image_cmds(info, &s, img);
+	rdcfb_end(info, &s);
+	spin_unlock_irqrestore(&par->chip->lock, flags);
+}
+
+/* Before the CPU touches VRAM (read/write on /dev/fbN): let the DP finish. */
+int rdcfb_sync(struct fb_info *info)
+{
+	struct rdcfb_par *par = info->par;
+	unsigned long flags;
+
+	spin_lock_irqsave(&par->chip->lock, flags);
+	if ((par->chip->hw.control & RDC_CONTROL_DP_EN) &&
+	    !(par->chip->hw.dp_status & RDC_STATUS_DP_HALTED))
+		rdcfb_drain_locked(par->chip);
+	spin_unlock_irqrestore(&par->chip->lock, flags);
+	return 0;
+}
+
+/* ---- Private ioctls ------------------------------------------------------ */
+
+static int rdcfb_ioc_reg(struct rdcfb_chip *chip, unsigned int cmd,
+			 void __user *arg)
+{
+	struct rdcfb_reg r;
+
+	if (copy_from_user(&r, arg, sizeof(r)))
+		return -EFAULT;
+	if (r.reg % sizeof(u32) || r.reg >= RDC_REG_WINDOW)
+		return -EINVAL;
+	if (cmd == RDCFB_IOC_REG_WRITE) {
+		rdcfb_reg_write(chip, r.reg, r.val);
+		return 0;
+	}
+	r.val = rdcfb_reg_read(chip, r.reg);
+	return copy_to_user(arg, &r, sizeof(r)) ? -EFAULT : 0;
+}
+
+static int rdcfb_ioc_submit(struct rdcfb_chip *chip, void __user *arg)
+{
+	struct rdcfb_submit s;
+	u32 *words;
+	int ret;
+
+	if (copy_from_user(&s, arg, sizeof(s)))
+		return -EFAULT;
+	if (s.flags || s.reserved)
+		return -EINVAL;
+	if (s.count > RDCFB_SUBMIT_MAX_WORDS)
+		return -E2BIG;
+	if (!s.count)
+		return 0;
+	words = kvmalloc_array(s.count, sizeof(u32), GFP_KERNEL);
+	if (!words)
+		return -ENOMEM;
+	if (copy_from_user(words, u64_to_user_ptr(s.words),
+			   (size_t)s.count * sizeof(u32))) {
+		ret = -EFAULT;
+		goto out;
+	}
+	ret = rdcfb_validate(words, s.count, chip->hw.vram_size, &s.bad_word);
+	if (ret) {
+		dev_dbg(chip->dev, "submit refused at word %u of %u\n",
+			s.bad_word, s.count);
+		if (copy_to_user(arg, &s, sizeof(s)))
+			ret = -EFAULT;
+		goto out;
+	}
+	ret = rdcfb_chip_submit(chip, words, s.count);
+out:
+	kvfree(words);
+	return ret;
+}
+
+static int rdcfb_ioc_frame(struct rdcfb_chip *chip, void __user *arg)
+{
+	struct rdcfb_frame f;
+	size_t bytes;
+	int ret;
+
+	if (copy_from_user(&f, arg, sizeof(f)))
+		return -EFAULT;
+	if (f.reserved)
+		return -EINVAL;
+	mutex_lock(&chip->snap_lock);
+	ret = rdcfb_chip_snapshot(chip);
+	if (ret) {
+		f.seq = 0;
+		f.width = 0;
+		f.height = 0;
+		f.crc32 = 0;
+	} else {
+		f.seq = (u32)chip->snap_seq;
+		f.width = chip->snap_w;
+		f.height = chip->snap_h;
+		f.crc32 = chip->snap_crc;
+		bytes = (size_t)f.width * f.height * sizeof(u32);
+		if (f.pixels && f.cap < (u64)f.width * f.height)
+			ret = -E2BIG;
+		else if (f.pixels && copy_to_user(u64_to_user_ptr(f.pixels),
+						  chip->snap, bytes))
+			ret = -EFAULT;
+	}
+	mutex_unlock(&chip->snap_lock);
+	if (copy_to_user(arg, &f, sizeof(f)))
+		return -EFAULT;
+	return ret;
+}
+
+static int rdcfb_ioctl(struct fb_info *info, unsigned int cmd,
+		       unsigned long arg)
+{
+	struct rdcfb_par *par = info->par;
+	struct rdcfb_chip *chip = par->chip;
+	void __user *argp = (void __user *)arg;
+	struct rdcfb_counters c;
+	struct rdcfb_wait w;
+	struct rdcfb_step st;
+	u32 crtc;
+
+	if (READ_ONCE(chip->dying))
+		return -ENODEV;
+	switch (cmd) {
+	case FBIO_WAITFORVSYNC:
+		if (get_user(crtc, (u32 __user *)argp))
+			return -EFAULT;
+		return crtc ? -ENODEV : rdcfb_chip_vsync(chip);
+	case RDCFB_IOC_REG_READ:
+	case RDCFB_IOC_REG_WRITE:
+		return rdcfb_ioc_reg(chip, cmd, argp);
+	case RDCFB_IOC_SUBMIT:
+		return rdcfb_ioc_submit(chip, argp);
+	case RDCFB_IOC_WAIT:
+		if (copy_from_user(&w, argp, sizeof(w)))
+			return -EFAULT;
+		return rdcfb_chip_wait(chip, &w);
+	case RDCFB_IOC_STEP:
+		if (copy_from_user(&st, argp, sizeof(st)))
+			return -EFAULT;
+		return rdcfb_chip_step(chip, st.cycles);
+	case RDCFB_IOC_COUNTERS:
+		rdcfb_chip_counters(chip, &c);
+		return copy_to_user(argp, &c, sizeof(c)) ? -EFAULT : 0;
+	case RDCFB_IOC_FRAME:
+		return rdcfb_ioc_frame(chip, argp);
+	default:
+		return -ENOTTY;
+	}
+}
+
+static void rdcfb_destroy(struct fb_info *info)
+{
+	struct rdcfb_par *par = info->par;
+
+	rdcfb_chip_free(par->chip);
+	kfree(par->chip);
+	fb_dealloc_cmap(&info->cmap);
+	framebuffer_release(info);
+}
+
+const struct fb_ops rdcfb_ops = {
+	.owner = THIS_MODULE,
+	.fb_read = fb_sys_read,
+	.fb_write = fb_sys_write,
+	.fb_check_var = rdcfb_check_var,
+	.fb_set_par = rdcfb_set_par,
+	.fb_setcolreg = rdcfb_setcolreg,
+	.fb_setcmap = rdcfb_setcmap,
+	.fb_blank = rdcfb_blank,
+	.fb_pan_display = rdcfb_pan_display,
+	.fb_fillrect = rdcfb_fill,
+	.fb_copyarea = rdcfb_copy,
+	.fb_imageblit = rdcfb_blit,
+	.fb_sync = rdcfb_sync,
+	.fb_ioctl = rdcfb_ioctl,
+	.fb_compat_ioctl = rdcfb_ioctl,
+	.fb_mmap = rdcfb_mmap,
+	.fb_destroy = rdcfb_destroy,
+};
+
+/* "640x480", "800x600-16": a size with a preset, and bits per pixel. */
+int rdcfb_fb_setup(struct fb_info *info, const char *mode)
+{
+	struct rdcfb_par *par = info->par;
+	struct fb_var_screeninfo var = { 0 };
+	struct rdc_timing t;
+	u32 w, h, bpp = 32;
+	int ret;
+
+	if (sscanf(mode, "%ux%u-%u", &w, &h, &bpp) < 2 ||
+	    rdcfb_preset_of(w, h, &t))
+		return -EINVAL;
+	info->fbops = &rdcfb_ops;
+	info->screen_buffer = par->chip->vram;
+	info->screen_size = par->chip->hw.vram_size;
+	info->pseudo_palette = par->pseudo_palette;
+	info->flags = FBINFO_DEFAULT | FBINFO_VIRTFB | FBINFO_READS_FAST |
+		      FBINFO_HWACCEL_FILLRECT | FBINFO_HWACCEL_COPYAREA |
+		      FBINFO_HWACCEL_IMAGEBLIT | FBINFO_HWACCEL_YPAN;
+	strscpy(info->fix.id, RDCFB_ID, sizeof(info->fix.id));
+	info->fix.type = FB_TYPE_PACKED_PIXELS;
+	info->fix.ypanstep = 1;
+	info->fix.accel = FB_ACCEL_NONE;
+	info->fix.smem_len = par->chip->hw.vram_size;
+	ret = fb_alloc_cmap(&info->cmap, RDC_CLUT_ENTRIES, 0);
+	if (ret)
+		return ret;
+	rdcfb_timing_to_var(&t, &var);
+	var.bits_per_pixel = bpp;
+	var.activate = FB_ACTIVATE_NOW;
+	ret = rdcfb_check_var(&var, info);
+	if (!ret) {
+		info->var = var;
+		ret = rdcfb_set_par(info);
+	}
+	if (ret)
+		fb_dealloc_cmap(&info->cmap);
+	return ret;
+}

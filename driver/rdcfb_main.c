@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * rdcfb: a simulated RDC-1 raster display controller as a Linux
+ * framebuffer device, as vkms simulates its display.  The chip (hw-sim/)
+ * and its display processor's firmware (firmware-model/) are compiled in
+ * unchanged; this file holds the module parameters, the platform devices
+ * and driver, and the counters in sysfs.
+ */
+#include <linux/kernel.h>
+#include <linux/module.h>
+#include <linux/moduleparam.h>
+#include <linux/slab.h>
+#include <linux/string.h>
+
+#include "rdcfb.h"
+
+#define RDCFB_VRAM_MIN (1u << 20) /* holds 640x480 at 8 bpp, and more */
+#define RDCFB_VRAM_MAX (256u << 20)
+
+static char *vram = "16M";
+module_param(vram, charp, 0444);
+MODULE_PARM_DESC(vram, "VRAM size per device, e.g. 16M (1M..256M)");
+
+static char *mode = "640x480-32";
+module_param(mode, charp, 0444);
+MODULE_PARM_DESC(mode,
+		 "Initial mode WxH[-bpp]: a preset size, 8/16/32 bpp (640x480-32)");
+
+static unsigned int devices = 1;
+module_param(devices, uint, 0444);
+MODULE_PARM_DESC(devices, "Number of devices (1..8)");
+
+static char *clock = "paced";
+module_param(clock, charp, 0444);
+MODULE_PARM_DESC(clock,
+		 "paced (follows wall time) or stepped (moves only in waits)");
+
+static u32 rdcfb_vram_bytes;
+static bool rdcfb_stepped;
+static struct platform_device *rdcfb_pdev[RDCFB_MAX_DEVICES];
+
+/* ---- sysfs: the counters ------------------------------------------------- */
+
+static struct rdcfb_chip *rdcfb_chip_of(struct device *dev)
+{
+	struct fb_info *info = dev_get_drvdata(dev);
+
+	return ((struct rdcfb_par *)info->par)->chip;
+}
+
+#define RDCFB_COUNTER_ATTR(name, expr)                                      \
+	static ssize_t name##_show(struct device *dev,                      \
+				   struct device_attribute *attr, char *buf) \
+	{                                                                   \
+		struct rdcfb_counters c;                                    \
+									    \
+		rdcfb_chip_counters(rdcfb_chip_of(dev), &c);                \
+		return sysfs_emit(buf, "%llu\n", (unsigned long long)(expr)); \
+	}                                                                   \
+	static DEVICE_ATTR_RO(name)
+
+RDCFB_COUNTER_ATTR(busy_cycles, c.busy);
+RDCFB_COUNTER_ATTR(stall_cycles, c.stall);
+RDCFB_COUNTER_ATTR(pixels, c.pixels);
+RDCFB_COUNTER_ATTR(cmds, c.cmds);
+RDCFB_COUNTER_ATTR(frames, c.frames);
+RDCFB_COUNTER_ATTR(now, c.now);
+
+static ssize_t frame_crc_show(struct device *dev, struct device_attribute *attr,
+			      char *buf)
+{
+	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
+	ssize_t ret;
+
+	mutex_lock(&chip->snap_lock);
+	ret = rdcfb_chip_snapshot(chip);
+	if (!ret)
+		ret = sysfs_emit(buf, "%08x %u %ux%u\n", chip->snap_crc,
+				 (u32)chip->snap_seq, chip->snap_w,
+				 chip->snap_h);
+	mutex_unlock(&chip->snap_lock);
+	return ret;
+}
+static DEVICE_ATTR_RO(frame_crc);
+
+static struct attribute *rdcfb_attrs[] = {
+	&dev_attr_busy_cycles.attr,
+	&dev_attr_stall_cycles.attr,
+	&dev_attr_pixels.attr,
+	&dev_attr_cmds.attr,
+	&dev_attr_frames.attr,
+	&dev_attr_now.attr,
+	&dev_attr_frame_crc.attr,
+	NULL,
+};
+ATTRIBUTE_GROUPS(rdcfb);
+
+/* ---- platform driver ----------------------------------------------------- */
+
+static int rdcfb_probe(struct platform_device *pdev)
+{
+	struct rdcfb_chip *chip;
+	struct rdcfb_par *par;
+	struct fb_info *info;
+	int ret;
+
+	chip = kzalloc(sizeof(*chip), GFP_KERNEL);
+	if (!chip)
+		return -ENOMEM;
+	ret = rdcfb_chip_init(chip, &pdev->dev, rdcfb_vram_bytes,
+			      rdcfb_stepped);
+	if (ret)
+		goto err_chip;
+	info = framebuffer_alloc(sizeof(*par), &pdev->dev);
+	if (!info) {
+		ret = -ENOMEM;
+		goto err_free;
+	}
+	par = info->par;
+	par->chip = chip;
+	par->pdev = pdev;
+	ret = rdcfb_fb_setup(info, mode);
+	if (ret) {
+		dev_err(&pdev->dev, "mode \"%s\" refused: %d\n", mode, ret);
+		goto err_info;
+	}
+	platform_set_drvdata(pdev, info);
+	rdcfb_chip_start(chip);
+	/* from here on info owns chip: fb_destroy frees both */
+	ret = register_framebuffer(info);
+	if (ret)
+		goto err_stop;
+	rdcfb_bench_init(info);
+	fb_info(info, "%s: %ux%u, %u KiB VRAM, %s clock\n", info->fix.id,
+		info->var.xres, info->var.yres, rdcfb_vram_bytes >> 10,
+		rdcfb_stepped ? "stepped" : "paced");
+	return 0;
+
+err_stop:
+	rdcfb_chip_stop(chip);
+	fb_dealloc_cmap(&info->cmap);
+err_info:
+	framebuffer_release(info);
+err_free:
+	rdcfb_chip_free(chip);
+err_chip:
+	kfree(chip);
+	return ret;
+}
+
+/*
+ * Clients may still hold /dev/fbN open or mapped: unregister_framebuffer
+ * only drops the registration's reference, and fb_destroy frees the chip
+ * and VRAM when the last client lets go (mapped VRAM pages hold their own
+ * references).  Their ioctls meanwhile answer -ENODEV.  The module itself
+ * cannot go while a client holds the device: fb_open pins it.
+ */
+static int rdcfb_remove(struct platform_device *pdev)
+{
+	struct fb_info *info = platform_get_drvdata(pdev);
+	struct rdcfb_par *par = info->par;
+
+	rdcfb_bench_exit(info);
+	rdcfb_chip_stop(par->chip);
+	unregister_framebuffer(info);
+	return 0;
+}
+
+static struct platform_driver rdcfb_driver = {
+	.probe = rdcfb_probe,
+	.remove = rdcfb_remove,
+	.driver = {
+		.name = RDCFB_NAME,
+		.dev_groups = rdcfb_groups,
+	},
+};
+
+static void rdcfb_unregister_devices(void)
+{
+	int i;
+
+	for (i = RDCFB_MAX_DEVICES - 1; i >= 0; i--) {
+		if (rdcfb_pdev[i])
+			platform_device_unregister(rdcfb_pdev[i]);
+		rdcfb_pdev[i] = NULL;
+	}
+}
+
+static int __init rdcfb_init(void)
+{
+	unsigned long long size;
+	char *end;
+	unsigned int i;
+	int ret;
+
+	size = memparse(vram, &end);
+	if (*end || size < RDCFB_VRAM_MIN || size > RDCFB_VRAM_MAX) {
+		pr_err("rdcfb: vram=%s: want %u..%u bytes\n", vram,
+		       RDCFB_VRAM_MIN, RDCFB_VRAM_MAX);
+		return -EINVAL;
+	}
+	/* mmap hands out whole pages of it */
+	rdcfb_vram_bytes = PAGE_ALIGN(size);
+	if (!strcmp(clock, "stepped")) {
+		rdcfb_stepped = true;
+	} else if (strcmp(clock, "paced")) {
+		pr_err("rdcfb: clock=%s: want paced or stepped\n", clock);
+		return -EINVAL;
+	}
+	if (!devices || devices > RDCFB_MAX_DEVICES) {
+		pr_err("rdcfb: devices=%u: want 1..%u\n", devices,
+		       RDCFB_MAX_DEVICES);
+		return -EINVAL;
+	}
+	rdcfb_bench_module_init();
+	ret = platform_driver_register(&rdcfb_driver);
+	if (ret) {
+		rdcfb_bench_module_exit();
+		return ret;
+	}
+	for (i = 0; i < devices; i++) {
+		rdcfb_pdev[i] = platform_device_register_simple(RDCFB_NAME, i,
+								NULL, 0);
+		if (IS_ERR(rdcfb_pdev[i])) {
+			ret = PTR_ERR(rdcfb_pdev[i]);
+			rdcfb_pdev[i] = NULL;
+			rdcfb_unregister_devices();
+			platform_driver_unregister(&rdcfb_driver);
+			rdcfb_bench_module_exit();
+			return ret;
+		}
+	}
+	return 0;
+}
+
+static void __exit rdcfb_exit(void)
+{
+	rdcfb_unregister_devices();
+	platform_driver_unregister(&rdcfb_driver);
+	rdcfb_bench_module_exit();
+}
+
+module_init(rdcfb_init);
+module_exit(rdcfb_exit);
+
+MODULE_DESCRIPTION("Simulated RDC-1 raster display controller framebuffer");
+MODULE_LICENSE("GPL");
