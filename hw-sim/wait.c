@@ -52,9 +52,15 @@ enum rdc_hw_wait_result rdc_hw_wait_run(struct rdc_hw *hw,
 			return RDC_HW_WAIT_HALTED;
 		if (hw->now - w->start >= w->budget)
 			return RDC_HW_WAIT_TIMEOUT;
+		/*
+		 * A wait on the DP stops where it runs out of work, so the
+		 * host resumes at that cycle; only a DP already idle (the
+		 * condition needs something else: vblank, the budget) lets
+		 * time run a whole slice.
+		 */
 		if (!w->needs_dp ||
-		    !rdc_hw_run_until_idle(hw, hw->now + w->slice) ||
-		    hw->now == before)
+		    (rdc_hw_run_until_idle(hw, hw->now + w->slice) &&
+		     hw->now == before))
 			rdc_hw_run_until(hw, hw->now + w->slice);
 		if (w->slice < RDC_WAIT_SLICE_MAX)
 			w->slice *= 2;

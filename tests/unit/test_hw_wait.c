@@ -83,6 +83,34 @@ static void test_wait_pieces_same_cycle(void **state)
 	tdp_free(b);
 }
 
+/*
+ * A fence wait ends at the cycle the DP ran out of work, the one
+ * rdc_hw_run_until_idle stops at on a twin chip: not a slice later.
+ */
+static void test_wait_fence_exact(void **state)
+{
+	struct tdp *a = *state, *b = tdp_new();
+	struct tdp *c[2] = {a, b};
+	struct rdc_hw_wait w;
+
+	/* one command before the fence: each run overshoots into a whole one */
+	for (unsigned int i = 0; i < 2; i++) {
+		rdc_hw_write(&c[i]->hw, RDC_REG_CONTROL,
+			     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
+		TDP_CMD(c[i], RDC_OP_FILL_RECT, RDC_XY(10, 20), RDC_WH(30, 20));
+		TDP_CMD(c[i], RDC_OP_FENCE, 7);
+	}
+	wait_fence(&w);
+	rdc_hw_wait_begin(&a->hw, &w);
+	assert_int_equal(rdc_hw_wait_run(&a->hw, &w, RDC_NEVER),
+			 RDC_HW_WAIT_DONE);
+	assert_int_equal(rdc_hw_run_until_idle(&b->hw, b->hw.now + 100000000),
+			 1);
+	assert_int_equal(rdc_hw_read(&b->hw, RDC_REG_FENCE), 7);
+	assert_int_equal(a->hw.now, b->hw.now);
+	tdp_free(b);
+}
+
 static void test_wait_budget(void **state)
 {
 	struct tdp *t = *state;
@@ -140,6 +168,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		TDP_TEST(test_wait_pieces_same_cycle),
+		TDP_TEST(test_wait_fence_exact),
 		TDP_TEST(test_wait_budget),
 		TDP_TEST(test_wait_halted),
 		TDP_TEST(test_wait_terms),
