@@ -52,7 +52,7 @@ TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
 	bench-sink vm-test bench-net fuzz fuzz-long bench-peers module \
-	module-clean
+	module-clean checkpatch
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a
 
 help:
@@ -69,6 +69,7 @@ help:
 	@echo "make fuzz         short libFuzzer run of the protocol parser (fuzz-long: 10 min)"
 	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/*"
 	@echo "make module       build rdcfb.ko in $(O)/kmod (KDIR= for another kernel)"
+	@echo "make checkpatch   the kernel's checkpatch.pl over driver/ and the core"
 
 deps:
 	@scripts/deps.sh
@@ -251,6 +252,22 @@ module:
 
 module-clean:
 	rm -rf $(KMOD_DIR)
+
+# checkpatch.pl over driver/ and the core the module compiles.  Debian
+# ships it in linux-source-6.1, not in the headers: extracted from there
+# once, or CHECKPATCH= names one.
+CHECKPATCH ?= $(O)/checkpatch/scripts/checkpatch.pl
+checkpatch:
+	@test -f $(CHECKPATCH) || { \
+		tar=$$(ls /usr/src/linux-source-*.tar.xz 2>/dev/null | tail -n 1); \
+		test -n "$$tar" || { echo "checkpatch: apt-get install" \
+			"linux-source-6.1, or give CHECKPATCH="; exit 1; }; \
+		mkdir -p $(O)/checkpatch; \
+		tar -xJf $$tar -C $(O)/checkpatch --strip-components=1 \
+			--wildcards '*/scripts/checkpatch.pl' \
+			'*/scripts/spelling.txt' '*/scripts/const_structs.checkpatch'; }
+	perl $(CHECKPATCH) --no-tree --terse --show-types -f \
+		driver/*.[ch] hw-sim/*.[ch] firmware-model/*.[ch] Kbuild
 
 clean:
 	rm -rf $(O) demo.png

@@ -237,9 +237,9 @@ static void rdcfb_wait_conv(const struct rdcfb_wait *w, u64 budget,
 	unsigned int i;
 
 	BUILD_BUG_ON(RDCFB_WAIT_TERMS != RDC_WAIT_TEST_TERMS);
-	BUILD_BUG_ON(RDCFB_WAIT_GE != RDC_WAIT_TEST_GE ||
-		     RDCFB_WAIT_WRAP_GE != RDC_WAIT_TEST_WRAP_GE ||
-		     RDCFB_WAIT_EQ != RDC_WAIT_TEST_EQ);
+	BUILD_BUG_ON(RDCFB_WAIT_GE != RDC_WAIT_TEST_GE);
+	BUILD_BUG_ON(RDCFB_WAIT_WRAP_GE != RDC_WAIT_TEST_WRAP_GE);
+	BUILD_BUG_ON(RDCFB_WAIT_EQ != RDC_WAIT_TEST_EQ);
 	memset(hw_w, 0, sizeof(*hw_w));
 	for (i = 0; i < RDCFB_WAIT_TERMS; i++) {
 		hw_w->term[i].test = w->term[i].kind;

@@ -21,9 +21,11 @@
 #define SIN_BITS 8 /* log2 of the table's steps per quarter turn */
 #define SIN_STEP (ARC_QUARTER >> SIN_BITS)
 #define SIN_ONE 65536 /* 1.0 in the table */
-/* The sector tests work with unit vectors of 14 fractional bits, so a
- * radius (< 2^15) times a vector and times a pixel offset stay far below
- * 2^63 even in the chord test's differences. */
+/*
+ * The sector tests work with unit vectors of 14 fractional bits, so a radius (<
+ * 2^15) times a vector and times a pixel offset stay far below 2^63 even in the
+ * chord test's differences.
+ */
 #define ARC_VEC_SHIFT 2
 #define ARC_PIX_ONE (SIN_ONE >> ARC_VEC_SHIFT) /* a pixel, same scale */
 
@@ -116,8 +118,10 @@ static bool arc_in(const struct arc_ctx *ac, int32_t dx, int32_t dy)
 	b = arc_cross(px, py, ac->ex, ac->ey) >= 0;
 	if (ac->wide)
 		return a || b;
-	/* two half-planes meet in the sector, and in the opposite ray too
-	 * when the end points' directions coincide */
+	/*
+	 * two half-planes meet in the sector, and in the opposite ray too when
+	 * the end points' directions coincide
+	 */
 	if (ac->narrow && ac->sx * px + ac->sy * py < 0)
 		return false;
 	return a && b;

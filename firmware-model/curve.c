@@ -57,8 +57,10 @@ static int64_t cv_polygon(const int32_t *x, const int32_t *y)
 	       cv_leg(x[2], y[2], x[3], y[3]);
 }
 
-/* Steps for a control polygon of length len: from the flags, else one
- * per CV_PX_PER_STEP pixels, at least 1 and at most the cap. */
+/*
+ * Steps for a control polygon of length len: from the flags, else one per
+ * CV_PX_PER_STEP pixels, at least 1 and at most the cap.
+ */
 static uint32_t cv_steps(uint32_t fl, int64_t len)
 {
 	int64_t n;
@@ -163,8 +165,10 @@ uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 
 	if (op == RDC_OP_BSPLINE ? len < 4 : len != 4)
 		return RDC_ERR_LENGTH;
-	/* every control point must transform; HERMITE's tangents are
-	 * vectors and take the linear part only */
+	/*
+	 * every control point must transform; HERMITE's tangents are vectors
+	 * and take the linear part only
+	 */
 	for (i = 0; i < len; i++) {
 		int32_t vx = RDC_X(a[i]), vy = RDC_Y(a[i]);
 

@@ -17,9 +17,11 @@
 
 #define PEN_FRAC 8 /* fractional bits of the stroke geometry */
 #define PEN_ONE (1 << PEN_FRAC)
-/* Miters longer than this many half-widths turn into bevels: with unit
- * normals n1, n2 the miter is h * sqrt(2 / (1 + n1.n2)), so a limit of 4
- * is 1 + n1.n2 >= 1/8. */
+/*
+ * Miters longer than this many half-widths turn into bevels: with unit normals
+ * n1, n2 the miter is h * sqrt(2 / (1 + n1.n2)), so a limit of 4 is 1 + n1.n2
+ * >= 1/8.
+ */
 #define PEN_MITER_DIV 8
 
 static int64_t pen_div_floor(int64_t a, int64_t b)
@@ -85,8 +87,10 @@ static bool convex_row(const int64_t *vx, const int64_t *vy, unsigned int n,
 		if (sy < vy[a] || sy >= vy[b])
 			continue;
 		dy = vy[b] - vy[a];
-		/* first pixel whose centre is at or right of the crossing:
-		 * ceil(x_cross / PEN_ONE) */
+		/*
+		 * first pixel whose centre is at or right of the crossing:
+		 * ceil(x_cross / PEN_ONE)
+		 */
 		x = pen_div_ceil(vx[a] * dy + (sy - vy[a]) * (vx[b] - vx[a]),
 				 dy * PEN_ONE);
 		xl = any ? RDC_MIN(xl, x) : x;
@@ -98,8 +102,10 @@ static bool convex_row(const int64_t *vx, const int64_t *vy, unsigned int n,
 	return any && xl < xr;
 }
 
-/* Row y of the disk of radius r at (px, py): the centres strictly inside
- * it, as [*xa, *xb). */
+/*
+ * Row y of the disk of radius r at (px, py): the centres strictly inside it, as
+ * [*xa, *xb).
+ */
 static bool disk_row(int64_t px, int64_t py, int64_t r, int64_t y,
 		     int64_t *xa, int64_t *xb)
 {
@@ -175,8 +181,10 @@ void dp_pen_flush(struct rdc_dp *dp)
 	}
 }
 
-/* Queue a piece; its rows are limited to the clip, so pieces off the
- * surface cost nothing. */
+/*
+ * Queue a piece; its rows are limited to the clip, so pieces off the surface
+ * cost nothing.
+ */
 static struct rdc_pen_piece *pen_queue(struct rdc_dp *dp, int64_t ymin,
 				       int64_t ymax)
 {
@@ -244,8 +252,10 @@ static void pen_axes(struct pen_vec a, struct pen_vec b, int64_t h,
 		     struct pen_vec *nrm, struct pen_vec *dir)
 {
 	int64_t dx = b.x - a.x, dy = b.y - a.y;
-	/* |d| in 24.8 units; the operands are below 2^25 so the square
-	 * fits 64 bits with room */
+	/*
+	 * |d| in 24.8 units; the operands are below 2^25 so the square fits 64
+	 * bits with room
+	 */
 	int64_t len = (int64_t)dp_isqrt((uint64_t)(dx * dx + dy * dy));
 
 	if (!len)
@@ -263,8 +273,10 @@ static struct pen_vec pt_add(struct pen_vec a, struct pen_vec b, int s)
 	return r;
 }
 
-/* A cap at p for a stroke leaving p in direction -dir (dir points into
- * the segment's outside). */
+/*
+ * A cap at p for a stroke leaving p in direction -dir (dir points into the
+ * segment's outside).
+ */
 static void pen_cap(struct rdc_dp *dp, struct pen_vec p, struct pen_vec nrm,
 		    struct pen_vec dir)
 {
@@ -296,8 +308,10 @@ static void pen_body(struct rdc_dp *dp, struct pen_vec a, struct pen_vec b,
 	dp_pen_fill_convex(dp, q, 4);
 }
 
-/* A dot where a stroke has no length: round and square pens leave their
- * cap shape, butt pens nothing. */
+/*
+ * A dot where a stroke has no length: round and square pens leave their cap
+ * shape, butt pens nothing.
+ */
 static void pen_dot(struct rdc_dp *dp, struct pen_vec p)
 {
 	struct pen_vec nrm = { 0, pen_half(dp) }, dir = { pen_half(dp), 0 };
@@ -331,8 +345,10 @@ static void pen_piece(struct rdc_dp *dp, struct pen_vec a, struct pen_vec b)
 	pen_cap(dp, b, nrm, dir);
 }
 
-/* The join at v between a segment with normal n1 and one with n2, both
- * h long; turn = cross(d1, d2) tells the outer side. */
+/*
+ * The join at v between a segment with normal n1 and one with n2, both h long;
+ * turn = cross(d1, d2) tells the outer side.
+ */
 static void pen_join(struct rdc_dp *dp, struct pen_vec v, struct pen_vec n1,
 		     struct pen_vec n2, int64_t turn)
 {
@@ -418,8 +434,10 @@ static void seg_draw(struct dp_stroke *sk, int32_t x0, int32_t y0, int32_t x1,
 			struct pen_vec a = pen_pixel(x0, y0);
 			struct pen_vec b = pen_pixel(x1, y1);
 
-			/* A dash running on through the vertex starts at
-			 * it, not one step past it. */
+			/*
+			 * A dash running on through the vertex starts at it,
+			 * not one step past it.
+			 */
 			int64_t s = i == 1 && skip_first &&
 						dash_on(dp, sk->base) ? 0 : i;
 
@@ -476,8 +494,10 @@ void dp_stroke_point(struct dp_stroke *sk, int32_t x, int32_t y)
 		if (x != sk->px || y != sk->py)
 			thick_point(sk, x, y);
 	} else {
-		/* Width 1 draws a segment once the next point shows it is
-		 * not the closing one; dashed thick segments likewise. */
+		/*
+		 * Width 1 draws a segment once the next point shows it is not
+		 * the closing one; dashed thick segments likewise.
+		 */
 		if (sk->pending)
 			seg_draw(sk, sk->qx, sk->qy, sk->px, sk->py,
 				 sk->count > 2, false);
@@ -562,8 +582,7 @@ void dp_pen_reset(struct rdc_dp_state *st)
 	st->dash_offset = 0;
 }
 
-/* Transform and check every vertex first: a rejected command draws
- * nothing. */
+/* Transform and check every vertex first: a rejected command draws nothing. */
 static bool pts_ok(const struct rdc_dp *dp, const uint32_t *a, uint32_t n)
 {
 	uint32_t i;
@@ -611,8 +630,10 @@ uint32_t dp_cmd_stroke(struct rdc_dp *dp, uint32_t op, uint32_t len,
 	return RDC_ERR_NONE;
 }
 
-/* A RECT outline drawn by a wide or dashed pen: its corner pixels'
- * centres as a closed path, clockwise on screen from the top left. */
+/*
+ * A RECT outline drawn by a wide or dashed pen: its corner pixels' centres as a
+ * closed path, clockwise on screen from the top left.
+ */
 void dp_stroke_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		    uint32_t h)
 {

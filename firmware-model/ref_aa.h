@@ -39,8 +39,10 @@ uint32_t rdc_aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x, uint32_t y);
 void rdc_ref_aa_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
 		     rdc_ref_aa_fn plot, void *ctx);
 
-/* Every pixel of the bounding box with rdc_aa_ellipse_cov > 0; a zero
- * radius gives the Wu line between the two extreme points. */
+/*
+ * Every pixel of the bounding box with rdc_aa_ellipse_cov > 0; a zero radius
+ * gives the Wu line between the two extreme points.
+ */
 void rdc_ref_aa_ellipse(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 			rdc_ref_aa_fn plot, void *ctx);
 

@@ -73,11 +73,16 @@ void rdc_ref_dash_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
 
 	/* the canonical start, as the line itself picks it */
 	if (rev) {
-		sx = x1, sy = y1, ex = x0, ey = y0;
+		sx = x1;
+		sy = y1;
+		ex = x0;
+		ey = y0;
 	}
 	for (i = 0; i <= n; i++) {
-		/* step i of the canonical line, i.e. step n - i from (x0, y0)
-		 * when reversed: j(i) = floor((2 i m + n) / (2 n)) */
+		/*
+		 * step i of the canonical line, i.e. step n - i from (x0, y0)
+		 * when reversed: j(i) = floor((2 i m + n) / (2 n))
+		 */
 		int64_t k = rev ? n - i : i, j, m, u, v;
 
 		if (len && !((bits >> ((uint64_t)(k + offset) % len)) & 1))
@@ -97,8 +102,10 @@ void rdc_ref_dash_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
 	}
 }
 
-/* Pseudo-angle of (x, y), y up, as quadrant q and fraction num / den in
- * [0, 1): monotone in the true angle. */
+/*
+ * Pseudo-angle of (x, y), y up, as quadrant q and fraction num / den in [0, 1):
+ * monotone in the true angle.
+ */
 struct rl_angle {
 	int q;
 	int64_t num, den;
@@ -109,13 +116,21 @@ static struct rl_angle rl_pseudo(int64_t x, int64_t y)
 	struct rl_angle a;
 
 	if (y >= 0 && x > 0) {
-		a.q = 0, a.num = y, a.den = x + y;
+		a.q = 0;
+		a.num = y;
+		a.den = x + y;
 	} else if (x <= 0 && y > 0) {
-		a.q = 1, a.num = -x, a.den = -x + y;
+		a.q = 1;
+		a.num = -x;
+		a.den = -x + y;
 	} else if (y <= 0 && x < 0) {
-		a.q = 2, a.num = -y, a.den = -x - y;
+		a.q = 2;
+		a.num = -y;
+		a.den = -x - y;
 	} else {
-		a.q = 3, a.num = x, a.den = x - y;
+		a.q = 3;
+		a.num = x;
+		a.den = x - y;
 	}
 	return a;
 }

@@ -15,8 +15,10 @@
  */
 void rdc_ref_convex(const int64_t *xy, uint32_t n, unsigned int frac,
 		    rdc_ref_plot_fn plot, void *ctx);
-/* Midpoint line with a dash: step i from (x0, y0) is plotted when bit
- * (i + offset) % len of bits is set (len 0: all). */
+/*
+ * Midpoint line with a dash: step i from (x0, y0) is plotted when bit (i +
+ * offset) % len of bits is set (len 0: all).
+ */
 void rdc_ref_dash_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
 		       uint32_t bits, uint32_t len, uint32_t offset,
 		       rdc_ref_plot_fn plot, void *ctx);

@@ -12,8 +12,10 @@
 #include "dp_int.h"
 
 #define XF_ONE (1 << 16) /* 1.0 in 15.16 */
-/* Widest input coordinate dp_xform accepts: keeps |entry * coordinate|
- * below 2^51, so three such terms cannot overflow 64 bits. */
+/*
+ * Widest input coordinate dp_xform accepts: keeps |entry * coordinate| below
+ * 2^51, so three such terms cannot overflow 64 bits.
+ */
 #define XF_IN_MAX (1 << 20)
 /* int32_t's range, spelled out: the kernel has no XF_S32_MAX */
 #define XF_S32_MAX ((int64_t)0x7fffffff)
@@ -167,8 +169,10 @@ uint32_t dp_cmd_set_viewport(struct rdc_dp *dp, uint32_t len,
 		return RDC_ERR_RANGE;
 	if (wx0 == wx1 || wy0 == wy1)
 		return RDC_ERR_ARG;
-	/* World y grows upwards, screen y downwards: the window's bottom
-	 * edge wy0 lands on the viewport's bottom row y1. */
+	/*
+	 * World y grows upwards, screen y downwards: the window's bottom edge
+	 * wy0 lands on the viewport's bottom row y1.
+	 */
 	if (!vp_axis(wx0, wx1, RDC_X(a[4]), RDC_X(a[5]), &sx, &ox) ||
 	    !vp_axis(wy0, wy1, RDC_Y(a[5]), RDC_Y(a[4]), &sy, &oy))
 		return RDC_ERR_RANGE;

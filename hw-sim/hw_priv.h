@@ -20,8 +20,10 @@ static inline void rdc_trace(struct rdc_hw *hw, unsigned int event, uint32_t a,
 /* bus.c: charge a VRAM access at hw->now, racing scanout; advances now. */
 void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 		    unsigned int kind);
-/* Cost of one read of [addr, addr + len) as bursts, from open row *row;
- * *row is left at the last row touched.  Used by the scanout fetch. */
+/*
+ * Cost of one read of [addr, addr + len) as bursts, from open row *row; *row is
+ * left at the last row touched.  Used by the scanout fetch.
+ */
 uint64_t rdc_bus_read_cost(uint32_t *row, uint64_t addr, uint64_t len);
 
 /* crtc.c */

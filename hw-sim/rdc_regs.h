@@ -64,12 +64,15 @@
 #define   RDC_IRQ_ERROR BIT(4) /* ERR_CODE was set */
 #define   RDC_IRQ_ALL GENMASK(4, 0)
 
-#define RDC_REG_ERR_CODE 0x020 /* R   last error (enum rdc_err); cleared by
-				   writing RDC_IRQ_ERROR to IRQ_STATUS */
-#define RDC_REG_ERR_INFO 0x024 /* R   header word of the offending command,
-				   the register offset for host errors, or
-				   the VRAM address of a display-list word
-				   that could not be fetched */
+/*
+ * R   last error (enum rdc_err); cleared by writing RDC_IRQ_ERROR to IRQ_STATUS
+ */
+#define RDC_REG_ERR_CODE 0x020
+/*
+ * R   header word of the offending command, the register offset for host
+ * errors, or the VRAM address of a display-list word that could not be fetched
+ */
+#define RDC_REG_ERR_INFO 0x024
 #define RDC_REG_PINS 0x028 /* R   pin levels */
 #define   RDC_PIN_TE BIT(0) /* out: high during vertical blanking */
 #define   RDC_PIN_IRQ BIT(1) /* out: high while an enabled IRQ is raised */
@@ -104,9 +107,11 @@
 #define   RDC_BEAM_X GENMASK(15, 0)
 #define   RDC_BEAM_Y GENMASK(31, 16)
 #define RDC_REG_FRAME_COUNT 0x13c /* R   vblanks since reset */
-#define RDC_REG_MODE_PRESET 0x140 /* W   load enum rdc_preset into the
-				   timing shadows (and FB_STRIDE for the
-				   current FB_FORMAT); reads the last one */
+/*
+ * W   load enum rdc_preset into the timing shadows (and FB_STRIDE for the
+ * current FB_FORMAT); reads the last one
+ */
+#define RDC_REG_MODE_PRESET 0x140
 
 #define RDC_CRTC_MAX_TOTAL 4096
 #define RDC_CRTC_MAX_DISPLAY 2048
@@ -115,8 +120,8 @@
 
 /* ---- Colour lookup table ------------------------------------------------ */
 #define RDC_REG_CLUT_INDEX 0x180 /* RW  next entry for CLUT_DATA, 0..255 */
-#define RDC_REG_CLUT_DATA 0x184 /* RW  0x00RRGGBB; index++ (wraps at 256)
-				   after each read or write */
+/* RW  0x00RRGGBB; index++ (wraps at 256) after each read or write */
+#define RDC_REG_CLUT_DATA 0x184
 #define RDC_CLUT_ENTRIES 256
 
 /* ---- Hardware cursor ---------------------------------------------------- */
@@ -133,16 +138,19 @@
 #define RDC_CURSOR_BYTES (RDC_CURSOR_SIZE * RDC_CURSOR_SIZE / 4)
 
 /* ---- Command queue ------------------------------------------------------ */
-#define RDC_REG_FIFO_DATA 0x200 /* W   push one command word; a write to a
-				   full FIFO is dropped: RDC_ERR_FIFO_OVERFLOW */
+/*
+ * W   push one command word; a write to a full FIFO is dropped:
+ * RDC_ERR_FIFO_OVERFLOW
+ */
+#define RDC_REG_FIFO_DATA 0x200
 #define RDC_REG_FIFO_FREE 0x204 /* R   free words */
 #define RDC_REG_FIFO_LOWWATER 0x208 /* RW  RDC_IRQ_FIFO_LOW at this level */
 #define RDC_REG_RING_BASE 0x20c /* RW  VRAM byte address, 4-aligned */
 #define RDC_REG_RING_SIZE 0x210 /* RW  bytes, multiple of 4, >= 16 */
-#define RDC_REG_RING_HEAD 0x214 /* RW  byte offset the DP reads next; host
-				   writes only while RING_EN is 0 */
-#define RDC_REG_RING_TAIL 0x218 /* RW  byte offset after the last word the
-				   host has written */
+/* RW  byte offset the DP reads next; host writes only while RING_EN is 0 */
+#define RDC_REG_RING_HEAD 0x214
+/* RW  byte offset after the last word the host has written */
+#define RDC_REG_RING_TAIL 0x218
 #define RDC_REG_FENCE 0x21c /* R   value of the last FENCE executed */
 #define RDC_REG_RDATA 0x220 /* R   pop one readback word (0 if empty) */
 #define RDC_REG_RDATA_COUNT 0x224 /* R   readback words waiting */
@@ -201,10 +209,11 @@ static inline uint32_t rdc_format_row_bytes(unsigned int fmt, uint32_t width)
 	return (uint32_t)(((uint64_t)width * rdc_format_bpp(fmt) + 7) / 8);
 }
 
-/* ---- Mode presets --------------------------------------------------------
+/*
+ * ---- Mode presets --------------------------------------------------------
  * Pixel clock = H_TOTAL * V_TOTAL * refresh.  VESA DMT / CEA-861 timings;
- * 320x200 is VGA mode 13h's 70 Hz frame without line doubling
- * (400 * 225 * 70 Hz = 6.3 MHz).
+ * 320x200 is VGA mode 13h's 70 Hz frame without line doubling (400 * 225 * 70
+ * Hz = 6.3 MHz).
  */
 enum rdc_preset {
 	RDC_PRESET_320x200_70 = 0,
@@ -225,32 +234,34 @@ enum rdc_err {
 	RDC_ERR_SURFACE = 4, /* surface leaves VRAM, or bad format/stride */
 	RDC_ERR_RING = 5, /* ring base/size/head/tail out of range */
 	RDC_ERR_FIFO_OVERFLOW = 6, /* host wrote FIFO_DATA while full */
-	RDC_ERR_REG = 7, /* bad register in a REG_WRITE command, or a host
-			    access outside the register window / to a R reg */
+	/*
+	 * bad register in a REG_WRITE command, or a host access outside the
+	 * register window / to a R reg
+	 */
+	RDC_ERR_REG = 7,
 	RDC_ERR_ARG = 8, /* bad enumerated argument (ROP, format, ...) */
 	RDC_ERR_MODE = 9, /* CRTC timing refused at latch */
-	RDC_ERR_STACK = 10, /* display-list nesting too deep, or RET outside
-			       a list */
+	/* display-list nesting too deep, or RET outside a list */
+	RDC_ERR_STACK = 10,
 	RDC_ERR_COUNT
 };
 
-/* ---- Commands ------------------------------------------------------------
- * docs/commands.md is the full reference (semantics and cycle costs).
- * A command is a header word followed by RDC_CMD_LEN(header) argument
- * words.  Points pack x in [15:0] and y in [31:16], both signed 16-bit;
- * sizes pack w in [15:0] and h in [31:16], unsigned.  Coordinates must lie
- * in [RDC_COORD_MIN, RDC_COORD_MAX] and sizes/radii in [0, RDC_SIZE_MAX],
- * else RDC_ERR_RANGE.  Colours are raw pixel values of the target format
- * (a CLUT index for indexed formats).
- *
- * On error the DP sets ERR_CODE/ERR_INFO, raises RDC_IRQ_ERROR and skips
- * the command (its argument words are consumed), or with
+/*
+ * ---- Commands ------------------------------------------------------------
+ * docs/commands.md is the full reference (semantics and cycle costs). A command
+ * is a header word followed by RDC_CMD_LEN(header) argument words.  Points pack
+ * x in [15:0] and y in [31:16], both signed 16-bit; sizes pack w in [15:0] and
+ * h in [31:16], unsigned.  Coordinates must lie in [RDC_COORD_MIN,
+ * RDC_COORD_MAX] and sizes/radii in [0, RDC_SIZE_MAX], else RDC_ERR_RANGE.
+ * Colours are raw pixel values of the target format (a CLUT index for indexed
+ * formats). On error the DP sets ERR_CODE/ERR_INFO, raises RDC_IRQ_ERROR and
+ * skips the command (its argument words are consumed), or with
  * RDC_CONTROL_HALT_ON_ERR set, halts until RESUME or reset.  A header
- * announcing more than RDC_CMD_MAX_ARGS words is the exception: only the
- * header is consumed.  A rejected command draws nothing and changes no
- * state.  Drawing is clipped to the clip rectangle intersected with the
- * DST surface; colours are masked to DST's bits per pixel; every primitive
- * writes each pixel at most once (XOR twice restores the surface).
+ * announcing more than RDC_CMD_MAX_ARGS words is the exception: only the header
+ * is consumed.  A rejected command draws nothing and changes no state.  Drawing
+ * is clipped to the clip rectangle intersected with the DST surface; colours
+ * are masked to DST's bits per pixel; every primitive writes each pixel at most
+ * once (XOR twice restores the surface).
  */
 #define RDC_CMD_OPCODE GENMASK(31, 24)
 #define RDC_CMD_FLAGS GENMASK(23, 16)
@@ -284,108 +295,147 @@ enum rdc_opcode {
 	RDC_OP_WAIT_LINE = 0x03, /* line: wait until the beam starts it */
 	RDC_OP_REG_WRITE = 0x04, /* reg, value (CRTC, CLUT, cursor, IRQ regs) */
 	RDC_OP_LOAD_CLUT = 0x05, /* first, then 1..256 entries 0x00RRGGBB */
-	RDC_OP_CALL = 0x06, /* addr: run the display list at VRAM byte
-			       address addr (4-aligned); its RET resumes
-			       after this CALL.  At most RDC_CALL_DEPTH
-			       lists nest: deeper is RDC_ERR_STACK */
-	RDC_OP_RET = 0x07, /* none: return from a display list; outside
-			      one: RDC_ERR_STACK */
-	RDC_OP_JUMP = 0x08, /* addr: continue the current display list at
-			       addr; from the FIFO or ring it enters a list
-			       as CALL does */
+	/*
+	 * addr: run the display list at VRAM byte address addr (4-aligned); its
+	 * RET resumes after this CALL.  At most RDC_CALL_DEPTH lists nest:
+	 * deeper is RDC_ERR_STACK
+	 */
+	RDC_OP_CALL = 0x06,
+	/* none: return from a display list; outside one: RDC_ERR_STACK */
+	RDC_OP_RET = 0x07,
+	/*
+	 * addr: continue the current display list at addr; from the FIFO or
+	 * ring it enters a list as CALL does
+	 */
+	RDC_OP_JUMP = 0x08,
 
 	/* Drawing state */
 	RDC_OP_SET_FG = 0x10, /* pixel value */
 	RDC_OP_SET_BG = 0x11, /* pixel value */
 	RDC_OP_SET_ROP = 0x12, /* enum rdc_rop */
-	RDC_OP_SET_CLIP = 0x13, /* xy0, xy1: x0 <= x < x1, y0 <= y < y1;
-				   x1, y1 may be RDC_COORD_MAX + 1 */
+	/*
+	 * xy0, xy1: x0 <= x < x1, y0 <= y < y1; x1, y1 may be RDC_COORD_MAX + 1
+	 */
+	RDC_OP_SET_CLIP = 0x13,
 	RDC_OP_SET_DST = 0x14, /* base, stride, wh, format */
 	RDC_OP_SET_SRC = 0x15, /* base, stride, wh, format */
-	RDC_OP_SET_PATTERN = 0x16, /* flags = enum rdc_pattern_mode; MONO*:
-				      2 words, 8 rows of 8 bits (row 0 in
-				      byte 0 of word 0, bit 7 leftmost);
-				      COLOR: 64 pixel values row by row;
-				      NONE: no words.  Anchored at the DST
-				      origin; used by the filled primitives */
-	RDC_OP_SET_PEN = 0x17, /* [7:0] width 1..RDC_PEN_MAX_WIDTH,
-				  [9:8] enum rdc_cap, [11:10] enum rdc_join */
-	RDC_OP_SET_DASH = 0x18, /* pattern (bit 0 first, 1 = drawn), then
-				   [5:0] length 0..32 (0 = solid) and
-				   [13:8] offset; the dash continues along
-				   a polyline */
-	RDC_OP_SET_ALPHA = 0x19, /* 0..255: global alpha of BLIT and
-				    HOST_BLIT (255 = opaque): the ROP's
-				    result is blended over DST per channel
-				    in RGB formats; indexed formats draw
-				    only at >= RDC_ALPHA_THRESHOLD */
-	RDC_OP_SET_COLORKEY = 0x1a, /* key pixel value; flags
-				       RDC_COLORKEY_ENABLE: source pixels
-				       equal to the key (compared in the
-				       source format, before the ROP) are
-				       not drawn */
-	RDC_OP_SET_TRANSFORM = 0x1b, /* 9 words m00 m01 m02 m10 m11 m12 m20
-					m21 m22, signed 15.16 fixed point,
-					or none for the identity */
-	RDC_OP_SET_VIEWPORT = 0x1c, /* wx0 wy0 wx1 wy1 (world window,
-				       signed 15.16), xy0 xy1 (viewport,
-				       pixels): sets the transform */
-	RDC_OP_SET_AA_RAMP = 0x1d, /* 2..256 CLUT entries from the FG index
-				      for anti-aliasing in indexed formats:
-				      FG at full coverage, FG + n - 1 the
-				      faintest */
-	RDC_OP_SET_ZBUF = 0x1e, /* base, stride: 16-bit depth surface the
-				   size of DST; flags RDC_Z_TEST | RDC_Z_WRITE;
-				   no words: depth buffering off */
-	RDC_OP_CLEAR_Z = 0x1f, /* value: fill the depth surface (clip
-				  applies) */
+	/*
+	 * flags = enum rdc_pattern_mode; MONO*: 2 words, 8 rows of 8 bits (row
+	 * 0 in byte 0 of word 0, bit 7 leftmost); COLOR: 64 pixel values row by
+	 * row; NONE: no words.  Anchored at the DST origin; used by the filled
+	 * primitives
+	 */
+	RDC_OP_SET_PATTERN = 0x16,
+	/*
+	 * [7:0] width 1..RDC_PEN_MAX_WIDTH, [9:8] enum rdc_cap, [11:10] enum
+	 * rdc_join
+	 */
+	RDC_OP_SET_PEN = 0x17,
+	/*
+	 * pattern (bit 0 first, 1 = drawn), then [5:0] length 0..32 (0 = solid)
+	 * and [13:8] offset; the dash continues along a polyline
+	 */
+	RDC_OP_SET_DASH = 0x18,
+	/*
+	 * 0..255: global alpha of BLIT and HOST_BLIT (255 = opaque): the ROP's
+	 * result is blended over DST per channel in RGB formats; indexed
+	 * formats draw only at >= RDC_ALPHA_THRESHOLD
+	 */
+	RDC_OP_SET_ALPHA = 0x19,
+	/*
+	 * key pixel value; flags RDC_COLORKEY_ENABLE: source pixels equal to
+	 * the key (compared in the source format, before the ROP) are not drawn
+	 */
+	RDC_OP_SET_COLORKEY = 0x1a,
+	/*
+	 * 9 words m00 m01 m02 m10 m11 m12 m20 m21 m22, signed 15.16 fixed
+	 * point, or none for the identity
+	 */
+	RDC_OP_SET_TRANSFORM = 0x1b,
+	/*
+	 * wx0 wy0 wx1 wy1 (world window, signed 15.16), xy0 xy1 (viewport,
+	 * pixels): sets the transform
+	 */
+	RDC_OP_SET_VIEWPORT = 0x1c,
+	/*
+	 * 2..256 CLUT entries from the FG index for anti-aliasing in indexed
+	 * formats: FG at full coverage, FG + n - 1 the faintest
+	 */
+	RDC_OP_SET_AA_RAMP = 0x1d,
+	/*
+	 * base, stride: 16-bit depth surface the size of DST; flags RDC_Z_TEST
+	 * | RDC_Z_WRITE; no words: depth buffering off
+	 */
+	RDC_OP_SET_ZBUF = 0x1e,
+	/* value: fill the depth surface (clip applies) */
+	RDC_OP_CLEAR_Z = 0x1f,
 
 	/* Primitives (first set) */
 	RDC_OP_PIXEL = 0x20, /* xy */
 	RDC_OP_LINE = 0x21, /* xy0, xy1: both endpoints drawn */
-	RDC_OP_POLYLINE = 0x22, /* 2..RDC_CMD_MAX_ARGS points; a shared
-				   vertex is drawn once, and so is the
-				   start of a closed one (last == first) */
+	/*
+	 * 2..RDC_CMD_MAX_ARGS points; a shared vertex is drawn once, and so is
+	 * the start of a closed one (last == first)
+	 */
+	RDC_OP_POLYLINE = 0x22,
 	RDC_OP_RECT = 0x23, /* xy, wh: outline */
 	RDC_OP_FILL_RECT = 0x24, /* xy, wh */
 	RDC_OP_CIRCLE = 0x25, /* xy centre, radius */
 	RDC_OP_FILL_CIRCLE = 0x26, /* xy centre, radius */
-	RDC_OP_ELLIPSE = 0x27, /* xy centre, wh = (rx, ry); a zero radius
-				  draws a line */
+	/* xy centre, wh = (rx, ry); a zero radius draws a line */
+	RDC_OP_ELLIPSE = 0x27,
 	RDC_OP_FILL_ELLIPSE = 0x28, /* xy centre, wh = (rx, ry) */
 	RDC_OP_POLYGON = 0x29, /* 2..n points: closed outline */
-	RDC_OP_FILL_POLYGON = 0x2a, /* 3..n points, scan-line fill;
-				       flags RDC_FILL_NONZERO (else even-odd) */
-	RDC_OP_FLOOD_FILL = 0x2b, /* xy seed, then with RDC_FLOOD_BOUNDARY the
-				     boundary colour; flags RDC_FLOOD_* */
-	RDC_OP_ARC = 0x2c, /* xy centre, wh = (rx, ry), angles: [15:0]
-			      start, [31:16] end in 1/65536 turn
-			      counter-clockwise from +x (y up on screen);
-			      flags = enum rdc_arc_mode */
-	RDC_OP_BEZIER = 0x2d, /* 4 points; flags: steps (0 = chosen from the
-				 control polygon) */
-	RDC_OP_HERMITE = 0x2e, /* p0, p1, tangent t0, tangent t1 (as xy);
-				  flags: steps (0 = chosen) */
-	RDC_OP_BSPLINE = 0x2f, /* 4..n control points, uniform cubic;
-				  flags: steps per segment (0 = chosen) */
-	RDC_OP_BLIT = 0x30, /* src xy, dst xy, wh: SRC surface to DST,
-			       overlap-safe, ROP applies */
-	RDC_OP_HOST_BLIT = 0x31, /* xy, wh, then rows of DST-format pixels,
-				    each row padded to a word */
-	RDC_OP_READBACK = 0x32, /* xy, wh: rows of SRC-format pixels to RDATA,
-				   each row padded to a word */
-	RDC_OP_MONO = 0x33, /* xy, wh, then 1 bpp rows (bit 7 of byte 0
-			       leftmost), each row padded to a word;
-			       1 = FG, 0 = BG        flags: RDC_MONO_TRANSPARENT */
-	RDC_OP_TEXT = 0x34, /* xy, count, then count chars 4 to a word
-			       (byte 0 first), built-in 8x16 font;
-			       flags: RDC_MONO_TRANSPARENT */
+	/*
+	 * 3..n points, scan-line fill; flags RDC_FILL_NONZERO (else even-odd)
+	 */
+	RDC_OP_FILL_POLYGON = 0x2a,
+	/*
+	 * xy seed, then with RDC_FLOOD_BOUNDARY the boundary colour; flags
+	 * RDC_FLOOD_*
+	 */
+	RDC_OP_FLOOD_FILL = 0x2b,
+	/*
+	 * xy centre, wh = (rx, ry), angles: [15:0] start, [31:16] end in
+	 * 1/65536 turn counter-clockwise from +x (y up on screen); flags = enum
+	 * rdc_arc_mode
+	 */
+	RDC_OP_ARC = 0x2c,
+	/* 4 points; flags: steps (0 = chosen from the control polygon) */
+	RDC_OP_BEZIER = 0x2d,
+	/* p0, p1, tangent t0, tangent t1 (as xy); flags: steps (0 = chosen) */
+	RDC_OP_HERMITE = 0x2e,
+	/*
+	 * 4..n control points, uniform cubic; flags: steps per segment (0 =
+	 * chosen)
+	 */
+	RDC_OP_BSPLINE = 0x2f,
+	/* src xy, dst xy, wh: SRC surface to DST, overlap-safe, ROP applies */
+	RDC_OP_BLIT = 0x30,
+	/* xy, wh, then rows of DST-format pixels, each row padded to a word */
+	RDC_OP_HOST_BLIT = 0x31,
+	/*
+	 * xy, wh: rows of SRC-format pixels to RDATA, each row padded to a word
+	 */
+	RDC_OP_READBACK = 0x32,
+	/*
+	 * xy, wh, then 1 bpp rows (bit 7 of byte 0 leftmost), each row padded
+	 * to a word; 1 = FG, 0 = BG        flags: RDC_MONO_TRANSPARENT
+	 */
+	RDC_OP_MONO = 0x33,
+	/*
+	 * xy, count, then count chars 4 to a word (byte 0 first), built-in 8x16
+	 * font; flags: RDC_MONO_TRANSPARENT
+	 */
+	RDC_OP_TEXT = 0x34,
 	RDC_OP_AA_LINE = 0x35, /* xy0, xy1: Wu line */
 	RDC_OP_AA_CIRCLE = 0x36, /* xy centre, radius */
 	RDC_OP_AA_ELLIPSE = 0x37, /* xy centre, wh = (rx, ry) */
-	RDC_OP_TRIANGLE = 0x38, /* 3 vertices of (xy, colour, z [15:0]):
-				   9 words; flags RDC_TRI_GOURAUD (else flat,
-				   the first vertex's colour) */
+	/*
+	 * 3 vertices of (xy, colour, z [15:0]): 9 words; flags RDC_TRI_GOURAUD
+	 * (else flat, the first vertex's colour)
+	 */
+	RDC_OP_TRIANGLE = 0x38,
 	RDC_OP_COUNT = 0x100
 };
 
@@ -408,8 +458,8 @@ enum rdc_opcode {
 #define RDC_COLORKEY_ENABLE BIT(0)
 #define RDC_FILL_NONZERO BIT(0)
 #define RDC_FLOOD_8 BIT(0) /* 8-connected (else 4-connected) */
-#define RDC_FLOOD_BOUNDARY BIT(1) /* fill up to the boundary colour (else
-				     replace the seed's colour) */
+/* fill up to the boundary colour (else replace the seed's colour) */
+#define RDC_FLOOD_BOUNDARY BIT(1)
 #define RDC_Z_TEST BIT(0) /* draw only where z < stored depth */
 #define RDC_Z_WRITE BIT(1) /* store z where drawn */
 #define RDC_TRI_GOURAUD BIT(0)
@@ -427,8 +477,10 @@ enum rdc_arc_mode { RDC_ARC_OUTLINE = 0, RDC_ARC_PIE = 1, RDC_ARC_CHORD = 2 };
 
 #define RDC_MONO_TRANSPARENT BIT(0) /* 0 bits leave the destination alone */
 
-/* Raster operations: X11's GXclear..GXset.  Bit n of the code is the
- * result for (src, dst) = (!(n >> 1), !(n & 1)), so 3 (GXcopy) is src. */
+/*
+ * Raster operations: X11's GXclear..GXset.  Bit n of the code is the result for
+ * (src, dst) = (!(n >> 1), !(n & 1)), so 3 (GXcopy) is src.
+ */
 enum rdc_rop {
 	RDC_ROP_CLEAR = 0x0,
 	RDC_ROP_AND = 0x1,
