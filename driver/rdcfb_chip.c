@@ -363,8 +363,12 @@ static int rdcfb_chip_wait_sig(struct rdcfb_chip *chip,
 	struct rdc_hw_wait hw_w;
 	unsigned int i;
 
+	/* a NONE term's other fields are never read */
 	for (i = 0; i < RDCFB_WAIT_TERMS; i++)
-		if (w->term[i].kind > RDCFB_WAIT_EQ)
+		if (w->term[i].kind > RDCFB_WAIT_EQ ||
+		    (w->term[i].kind != RDCFB_WAIT_NONE &&
+		     (w->term[i].reg % sizeof(u32) ||
+		      w->term[i].reg >= RDC_REG_WINDOW)))
 			return -EINVAL;
 	if (w->flags & ~RDCFB_WAIT_NEEDS_DP)
 		return -EINVAL;

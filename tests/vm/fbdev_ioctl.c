@@ -30,34 +30,13 @@
 #include "hw.h"
 #include "rdc.h"
 #include "rdcfb_ioctl.h"
+#include "tap.h"
 
 #define PS_PER_KHZ 1000000000ull /* picoseconds per period of 1 kHz */
 #define CMAP_SHIFT 8		 /* fbdev colour maps are 16 bits a channel */
 #define PAN_PRESET RDC_PRESET_640x480_60
 
 static int fd = -1;
-static unsigned int tap_n, tap_failed;
-
-static void tap(int ok, const char *fmt, ...)
-	__attribute__((format(printf, 2, 3)));
-
-static void tap(int ok, const char *fmt, ...)
-{
-	va_list ap;
-
-	printf("%s %u - ", ok ? "ok" : "not ok", ++tap_n);
-	va_start(ap, fmt);
-	vprintf(fmt, ap);
-	va_end(ap);
-	printf("\n");
-	if (!ok)
-		tap_failed++;
-}
-
-static void tap_skip(const char *why)
-{
-	printf("ok %u - # SKIP %s\n", ++tap_n, why);
-}
 
 static int xioctl(unsigned long req, void *arg)
 {
@@ -619,8 +598,7 @@ static int run_checks(void)
 		    v.bits_per_pixel == saved.bits_per_pixel,
 	    "the first mode restored");
 	munmap(vram, fix.smem_len);
-	printf("1..%u\n", tap_n);
-	return tap_failed ? 1 : 0;
+	return tap_done();
 }
 
 /* Soft reset and zeroed VRAM: the state of a fresh sim: device. */
