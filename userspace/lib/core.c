@@ -359,15 +359,24 @@ int rdc_wait_one(rdc_dev *dev, enum rdc_wait_kind kind, uint32_t reg,
 	return dev->be->wait(dev, &w);
 }
 
-int rdc_submit(rdc_dev *dev, const uint32_t *words, size_t n)
+static int fifo_push_words(rdc_dev *dev, const uint32_t *words, uint32_t n)
+{
+	for (uint32_t i = 0; i < n; i++) {
+		int ret = rdc_reg_write(dev, RDC_REG_FIFO_DATA, words[i]);
+
+		if (ret)
+			return ret;
+	}
+	return (int)n;
+}
+
+int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
+		  rdc_fifo_push_fn push)
 {
 	int ret;
 
-	if (!dev || (!words && n))
-		return RDC_E_INVAL;
-	rdc_track_words(dev, words, n);
-	if (dev->be->submit)
-		return dev->be->submit(dev, words, n);
+	if (!push)
+		push = fifo_push_words;
 	while (n) {
 		uint32_t free_words;
 
@@ -386,13 +395,23 @@ int rdc_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 				return ret;
 			continue;
 		}
-		for (; free_words && n; free_words--, n--, words++) {
-			ret = rdc_reg_write(dev, RDC_REG_FIFO_DATA, *words);
-			if (ret)
-				return ret;
-		}
+		ret = push(dev, words, (uint32_t)RDC_MIN(n, (size_t)free_words));
+		if (ret < 0)
+			return ret;
+		words += ret;
+		n -= (size_t)ret;
 	}
 	return 0;
+}
+
+int rdc_submit(rdc_dev *dev, const uint32_t *words, size_t n)
+{
+	if (!dev || (!words && n))
+		return RDC_E_INVAL;
+	rdc_track_words(dev, words, n);
+	if (dev->be->submit)
+		return dev->be->submit(dev, words, n);
+	return rdc_fifo_feed(dev, words, n, NULL);
 }
 
 int rdc_fence_wait(rdc_dev *dev, uint32_t value)

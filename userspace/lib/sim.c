@@ -171,37 +171,15 @@ static int sim_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 							       : 0;
 }
 
-/*
- * The core's FIFO_DATA loop (rdc_submit) with the words handed to the chip
- * in bulk: the same FIFO_FREE reads and waits, so the chip sees the same
- * words at the same cycles.
- */
+/* FIFO_DATA in bulk: the chip takes the words as rdc_hw_write would. */
+static int sim_fifo_push(rdc_dev *dev, const uint32_t *words, uint32_t n)
+{
+	return (int)rdc_hw_fifo_push(&sim_of(dev)->hw, words, n);
+}
+
 static int sim_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 {
-	struct rdc_hw *hw = &sim_of(dev)->hw;
-	int ret;
-
-	while (n) {
-		uint32_t free_words = rdc_hw_read(hw, RDC_REG_FIFO_FREE);
-		uint32_t k;
-
-		if (!free_words) {
-			uint32_t want = n < RDC_FIFO_DEPTH / 2
-						? (uint32_t)n
-						: RDC_FIFO_DEPTH / 2;
-
-			ret = rdc_wait_one(dev, RDC_WAIT_GE, RDC_REG_FIFO_FREE,
-					   ~0u, want, true);
-			if (ret)
-				return ret;
-			continue;
-		}
-		k = rdc_hw_fifo_push(hw, words,
-				     (uint32_t)RDC_MIN(n, (size_t)free_words));
-		words += k;
-		n -= k;
-	}
-	return 0;
+	return rdc_fifo_feed(dev, words, n, sim_fifo_push);
 }
 
 static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
