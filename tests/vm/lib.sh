@@ -66,6 +66,24 @@ ffmpeg_frames() {
 		"$READ" --raw "$T/ff.raw" --format "$1" --expect "$2" --frames "$3"
 }
 
+# The virtual terminal fbcon runs on (its sysfs directory).
+fbcon_vt() {
+	for v in /sys/class/vtconsole/vtcon*; do
+		if grep -q "frame buffer" "$v/name" 2>/dev/null; then
+			echo "$v"
+			return 0
+		fi
+	done
+	return 1
+}
+
+# Take fbcon off the framebuffer: a console drawing on the device changes
+# its frames, and holds the module while bound (as for any fb driver).
+fbcon_unbind() {
+	v=$(fbcon_vt) && echo 0 >"$v/bind"
+	return 0
+}
+
 finish() {
 	writer_stop
 	echo "1..$n"

@@ -13,12 +13,6 @@
 IOCTL=$B/fbdev_ioctl
 FB=/dev/fb0
 
-fbcon_unbind() {
-	for v in /sys/class/vtconsole/vtcon*; do
-		grep -q "frame buffer" "$v/name" 2>/dev/null && echo 0 >"$v/bind"
-	done
-	return 0
-}
 
 # total cycles on rdcctl run's "total N cycles ..." line, minus $2
 total_since() {

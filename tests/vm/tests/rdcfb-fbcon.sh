@@ -17,16 +17,6 @@ TTY=/dev/tty1
 # w x among them), and the expected picture comes from the project's.
 TEXT="Sir Pub seeks daily print up"
 
-fbcon_vt() {
-	for v in /sys/class/vtconsole/vtcon*; do
-		if grep -q "frame buffer" "$v/name" 2>/dev/null; then
-			echo "$v"
-			return 0
-		fi
-	done
-	return 1
-}
-
 fbcon_bound() {
 	v=$(fbcon_vt) && [ "$(cat "$v/bind")" = 1 ] && grep -q "^0 rdcfb" /proc/fb
 }
@@ -87,5 +77,5 @@ if [ -r /sys/kernel/debug/rdcfb/fb0/bench ]; then
 fi
 
 # let the harness unload the module: fbcon holds it while bound
-v=$(fbcon_vt) && echo 0 >"$v/bind"
+fbcon_unbind
 finish

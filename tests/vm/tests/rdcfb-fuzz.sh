@@ -12,12 +12,6 @@ FUZZ=$B/rdcfb_fuzz
 FB=/dev/fb0
 SCENE=$RDC_TREE/tests/golden/scenes/example_repertoire.rdl
 
-fbcon_unbind() {
-	for v in /sys/class/vtconsole/vtcon*; do
-		grep -q "frame buffer" "$v/name" 2>/dev/null && echo 0 >"$v/bind"
-	done
-	return 0
-}
 
 fbcon_unbind
 [ -c $FB ] || { echo "no $FB"; exit 1; }

@@ -11,13 +11,6 @@
 IOCTL=$B/fbdev_ioctl
 FB=/dev/fb0
 
-# A console drawing on the device would change its frames.
-fbcon_unbind() {
-	for v in /sys/class/vtconsole/vtcon*; do
-		grep -q "frame buffer" "$v/name" 2>/dev/null && echo 0 >"$v/bind"
-	done
-	return 0
-}
 
 # fbset -i shows the geometry FBIOGET_VSCREENINFO has
 fbset_reads() {

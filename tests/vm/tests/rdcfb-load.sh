@@ -17,14 +17,6 @@ TOOL=$B/rdcfb_tool
 KO=$RDC_BUILD/vm/build-rdcfb/rdcfb.ko
 LOOPS=${RDCFB_LOOPS:-100}
 
-# fbcon holds the module while it is bound to the device (as for any fb
-# driver): unbind it before an unload.
-fbcon_unbind() {
-	for v in /sys/class/vtconsole/vtcon*; do
-		grep -q "frame buffer" "$v/name" 2>/dev/null && echo 0 >"$v/bind"
-	done
-	return 0
-}
 
 vmalloc_kb() {
 	sed -n 's/^VmallocUsed: *\([0-9]*\).*/\1/p' /proc/meminfo

@@ -11,12 +11,6 @@
 
 FB=/dev/fb0
 
-fbcon_unbind() {
-	for v in /sys/class/vtconsole/vtcon*; do
-		grep -q "frame buffer" "$v/name" 2>/dev/null && echo 0 >"$v/bind"
-	done
-	return 0
-}
 
 fbcon_unbind
 [ -c $FB ] || { echo "no $FB"; exit 1; }
