@@ -30,73 +30,6 @@
 /* The widest pixel there is, for HOST_BLIT when DST is not known here. */
 #define RDCFB_MAX_BPP 32u
 
-/* Argument count of the fixed-length commands; -1 variable, -2 unknown. */
-static int rdcfb_fixed_args(u32 op)
-{
-	switch (op) {
-	case RDC_OP_WAIT_VBLANK:
-	case RDC_OP_RET:
-		return 0;
-	case RDC_OP_FENCE:
-	case RDC_OP_WAIT_LINE:
-	case RDC_OP_SET_FG:
-	case RDC_OP_SET_BG:
-	case RDC_OP_SET_ROP:
-	case RDC_OP_PIXEL:
-	case RDC_OP_SET_PEN:
-	case RDC_OP_CALL:
-	case RDC_OP_JUMP:
-	case RDC_OP_SET_ALPHA:
-	case RDC_OP_SET_COLORKEY:
-	case RDC_OP_SET_AA_RAMP:
-	case RDC_OP_CLEAR_Z:
-		return 1;
-	case RDC_OP_REG_WRITE:
-	case RDC_OP_SET_CLIP:
-	case RDC_OP_LINE:
-	case RDC_OP_RECT:
-	case RDC_OP_FILL_RECT:
-	case RDC_OP_CIRCLE:
-	case RDC_OP_FILL_CIRCLE:
-	case RDC_OP_ELLIPSE:
-	case RDC_OP_FILL_ELLIPSE:
-	case RDC_OP_READBACK:
-	case RDC_OP_SET_DASH:
-	case RDC_OP_AA_LINE:
-	case RDC_OP_AA_CIRCLE:
-	case RDC_OP_AA_ELLIPSE:
-		return 2;
-	case RDC_OP_BLIT:
-	case RDC_OP_ARC:
-		return 3;
-	case RDC_OP_SET_DST:
-	case RDC_OP_SET_SRC:
-	case RDC_OP_BEZIER:
-	case RDC_OP_HERMITE:
-		return 4;
-	case RDC_OP_SET_VIEWPORT:
-		return 6;
-	case RDC_OP_TRIANGLE:
-		return 9;
-	case RDC_OP_NOP:
-	case RDC_OP_LOAD_CLUT:
-	case RDC_OP_SET_TRANSFORM:
-	case RDC_OP_SET_PATTERN:
-	case RDC_OP_SET_ZBUF:
-	case RDC_OP_POLYLINE:
-	case RDC_OP_POLYGON:
-	case RDC_OP_FILL_POLYGON:
-	case RDC_OP_FLOOD_FILL:
-	case RDC_OP_BSPLINE:
-	case RDC_OP_HOST_BLIT:
-	case RDC_OP_MONO:
-	case RDC_OP_TEXT:
-		return -1;
-	default:
-		return -2;
-	}
-}
-
 static u32 rdcfb_words_per_row(u32 bpp, u32 w)
 {
 	return (u32)(((u64)w * bpp + 31) / 32);
@@ -205,10 +138,10 @@ int rdcfb_validate(const u32 *w, u32 n, u32 vram_size, u32 *bad_word)
 
 	while (i < n) {
 		u32 hdr = w[i], len = RDC_CMD_LEN(hdr);
-		int fixed = rdcfb_fixed_args(RDC_CMD_OP(hdr)), at;
+		int fixed = rdc_cmd_args(RDC_CMD_OP(hdr)), at;
 
-		if (fixed == -2 || len > RDC_CMD_MAX_ARGS || len > n - i - 1 ||
-		    (fixed >= 0 && len != (u32)fixed)) {
+		if (fixed == RDC_ARGS_UNKNOWN || len > RDC_CMD_MAX_ARGS ||
+		    len > n - i - 1 || (fixed >= 0 && len != (u32)fixed)) {
 			*bad_word = i;
 			return -EPROTO;
 		}

@@ -192,59 +192,6 @@ static bool readback_step(struct rdc_dp *dp)
 	}
 }
 
-/* Exact argument count of the fixed-length commands; -1: variable. */
-static int fixed_len(uint32_t op)
-{
-	switch (op) {
-	case RDC_OP_FENCE:
-	case RDC_OP_WAIT_LINE:
-	case RDC_OP_SET_FG:
-	case RDC_OP_SET_BG:
-	case RDC_OP_SET_ROP:
-	case RDC_OP_PIXEL:
-	case RDC_OP_SET_PEN:
-	case RDC_OP_CALL:
-	case RDC_OP_JUMP:
-	case RDC_OP_SET_ALPHA:
-	case RDC_OP_SET_COLORKEY:
-	case RDC_OP_SET_AA_RAMP:
-	case RDC_OP_CLEAR_Z:
-		return 1;
-	case RDC_OP_WAIT_VBLANK:
-	case RDC_OP_RET:
-		return 0;
-	case RDC_OP_REG_WRITE:
-	case RDC_OP_SET_CLIP:
-	case RDC_OP_LINE:
-	case RDC_OP_RECT:
-	case RDC_OP_FILL_RECT:
-	case RDC_OP_CIRCLE:
-	case RDC_OP_FILL_CIRCLE:
-	case RDC_OP_ELLIPSE:
-	case RDC_OP_FILL_ELLIPSE:
-	case RDC_OP_READBACK:
-	case RDC_OP_SET_DASH:
-	case RDC_OP_AA_LINE:
-	case RDC_OP_AA_CIRCLE:
-	case RDC_OP_AA_ELLIPSE:
-		return 2;
-	case RDC_OP_BLIT:
-	case RDC_OP_ARC:
-		return 3;
-	case RDC_OP_SET_DST:
-	case RDC_OP_SET_SRC:
-	case RDC_OP_BEZIER:
-	case RDC_OP_HERMITE:
-		return 4;
-	case RDC_OP_SET_VIEWPORT:
-		return 6;
-	case RDC_OP_TRIANGLE:
-		return 9;
-	default:
-		return -1;
-	}
-}
-
 /*
  * Check and draw a primitive; the colours in dp->st are already masked.
  * Returns RDC_ERR_NONE or the error; nothing is drawn on error.
@@ -487,7 +434,7 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 	uint32_t hdr = dp->cmd[0], op = RDC_CMD_OP(hdr);
 	uint32_t len = RDC_CMD_LEN(hdr), i, err, save_fg, save_bg;
 	const uint32_t *a = dp->cmd + 1;
-	int fixed = fixed_len(op);
+	int fixed = rdc_cmd_args(op);
 	struct rdc_surface s;
 	uint64_t t;
 

@@ -439,6 +439,80 @@ enum rdc_opcode {
 	RDC_OP_COUNT = 0x100
 };
 
+/*
+ * Argument words a command takes: the exact count for fixed-length ones,
+ * RDC_ARGS_VARIABLE for those whose header gives it (each checked by its
+ * own rules), RDC_ARGS_UNKNOWN for an opcode the DP does not know.  The
+ * DP and the kernel driver's SUBMIT check both read it here.
+ */
+#define RDC_ARGS_VARIABLE (-1)
+#define RDC_ARGS_UNKNOWN (-2)
+static inline int rdc_cmd_args(uint32_t op)
+{
+	switch (op) {
+	case RDC_OP_WAIT_VBLANK:
+	case RDC_OP_RET:
+		return 0;
+	case RDC_OP_FENCE:
+	case RDC_OP_WAIT_LINE:
+	case RDC_OP_SET_FG:
+	case RDC_OP_SET_BG:
+	case RDC_OP_SET_ROP:
+	case RDC_OP_PIXEL:
+	case RDC_OP_SET_PEN:
+	case RDC_OP_CALL:
+	case RDC_OP_JUMP:
+	case RDC_OP_SET_ALPHA:
+	case RDC_OP_SET_COLORKEY:
+	case RDC_OP_SET_AA_RAMP:
+	case RDC_OP_CLEAR_Z:
+		return 1;
+	case RDC_OP_REG_WRITE:
+	case RDC_OP_SET_CLIP:
+	case RDC_OP_LINE:
+	case RDC_OP_RECT:
+	case RDC_OP_FILL_RECT:
+	case RDC_OP_CIRCLE:
+	case RDC_OP_FILL_CIRCLE:
+	case RDC_OP_ELLIPSE:
+	case RDC_OP_FILL_ELLIPSE:
+	case RDC_OP_READBACK:
+	case RDC_OP_SET_DASH:
+	case RDC_OP_AA_LINE:
+	case RDC_OP_AA_CIRCLE:
+	case RDC_OP_AA_ELLIPSE:
+		return 2;
+	case RDC_OP_BLIT:
+	case RDC_OP_ARC:
+		return 3;
+	case RDC_OP_SET_DST:
+	case RDC_OP_SET_SRC:
+	case RDC_OP_BEZIER:
+	case RDC_OP_HERMITE:
+		return 4;
+	case RDC_OP_SET_VIEWPORT:
+		return 6;
+	case RDC_OP_TRIANGLE:
+		return 9;
+	case RDC_OP_NOP:
+	case RDC_OP_LOAD_CLUT:
+	case RDC_OP_SET_TRANSFORM:
+	case RDC_OP_SET_PATTERN:
+	case RDC_OP_SET_ZBUF:
+	case RDC_OP_POLYLINE:
+	case RDC_OP_POLYGON:
+	case RDC_OP_FILL_POLYGON:
+	case RDC_OP_FLOOD_FILL:
+	case RDC_OP_BSPLINE:
+	case RDC_OP_HOST_BLIT:
+	case RDC_OP_MONO:
+	case RDC_OP_TEXT:
+		return RDC_ARGS_VARIABLE;
+	default:
+		return RDC_ARGS_UNKNOWN;
+	}
+}
+
 #define RDC_CALL_DEPTH 8 /* nested display lists */
 #define RDC_ALPHA_OPAQUE 255u /* SET_ALPHA: 0..255, reset 255 */
 #define RDC_ALPHA_THRESHOLD 128u /* indexed DST: alpha >= this draws */

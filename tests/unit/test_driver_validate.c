@@ -199,7 +199,7 @@ static u32 tv_fill(uint64_t *s, u32 *w, u32 n)
 	while (i < n) {
 		u32 op = tv_rand(s) % (RDC_OP_TRIANGLE + 2);
 
-		fixed = rdcfb_fixed_args(op);
+		fixed = rdc_cmd_args(op);
 		len = fixed >= 0 && tv_rand(s) % 4 ? (u32)fixed :
 						      tv_rand(s) % 12;
 		if (len > n - i - 1)
