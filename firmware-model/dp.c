@@ -14,8 +14,10 @@
 /* dp->src of a command fetched from a display list in VRAM */
 #define DP_SRC_LIST 2u
 
-/* DST and SRC start as the chip's power-on screen: the 640x480 preset in
- * XRGB8888 at VRAM 0, unpadded. */
+/*
+ * DST and SRC start as the chip's power-on screen: the 640x480 preset in
+ * XRGB8888 at VRAM 0, unpadded.
+ */
 static void dp_reset_surface(struct rdc_surface *s)
 {
 	struct rdc_timing tm = { 0 };

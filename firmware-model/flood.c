@@ -52,8 +52,10 @@ static uint32_t slot_of(int32_t y)
 			  (int32_t)FLOOD_SLOTS);
 }
 
-/* DST pixel (x, y) inside the clip, read through the row cache; a read
- * runs FLOOD_READ pixels in the direction of travel. */
+/*
+ * DST pixel (x, y) inside the clip, read through the row cache; a read runs
+ * FLOOD_READ pixels in the direction of travel.
+ */
 static uint32_t get(struct flood *fl, int32_t x, int32_t y, int dir)
 {
 	uint32_t s = slot_of(y);
@@ -250,11 +252,10 @@ uint32_t dp_cmd_flood(struct rdc_dp *dp, uint32_t flags, uint32_t len,
 		return RDC_ERR_NONE;
 	for (i = 0; i < FLOOD_SLOTS; i++)
 		fl.slot[i].n = 0;
-	if (fl.boundary) {
+	if (fl.boundary)
 		fl.key = a[1] & fl.mask;
-	} else {
+	else
 		fl.key = get(&fl, x, y, 1);
-	}
 	explore(&fl, y, x, x, 0);
 	drain(&fl);
 	rescan(&fl);
