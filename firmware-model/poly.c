@@ -379,13 +379,14 @@ void dp_poly_scan(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
 			emit(dp, &pc.c, y, ps, pe, span, ctx);
 		for (k = 0; k < na; k++) {
 			struct rdc_dp_edge *ed = &dp->poly_e[dp->poly_aet[k]];
+			int32_t carry;
 
+			/* the carry without a branch: edges step unevenly */
 			ed->q += ed->dq;
 			ed->r += ed->dr;
-			if (ed->r >= ed->den) {
-				ed->r -= ed->den;
-				ed->q++;
-			}
+			carry = ed->r >= ed->den;
+			ed->r -= ed->den & -carry;
+			ed->q += carry;
 		}
 	}
 }

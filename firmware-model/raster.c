@@ -7,6 +7,7 @@
  * plain per-pixel versions these are tested against.
  */
 #include "dp_int.h"
+#include "../hw-sim/bus.h"
 
 struct rdc_rect rdc_dp_eff_clip(const struct rdc_dp *dp)
 {
@@ -270,14 +271,55 @@ static void run_write(struct rdc_dp *dp, uint8_t *p,
 	dp->hw->perf.pixels += n;
 }
 
+/*
+ * A run of v (XRGB8888, `pair` holding it twice in VRAM byte order) at q:
+ * a span, or a column of r->count pixels `stride` apart.  Every pixel is
+ * v, so 8-byte stores of two of them may overlap: a short span's first
+ * and last 8, 16 or 32 bytes cover it in a fixed number of stores.
+ * Returns the pixels written.
+ */
+static inline uint32_t run_store32(uint8_t *q, const struct rdc_port_run *r,
+				   uint32_t stride, const uint8_t *pair,
+				   uint32_t v)
+{
+	uint32_t len = r->len, cnt = r->count, k;
+
+	if (cnt != 1) {
+		/* the count held in a register: byte stores may alias r */
+		for (k = 0; k < cnt; k++, q += stride)
+			rdc_memcpy(q, pair, 4);
+		return cnt;
+	}
+	if (len == 4) {
+		rdc_memcpy(q, pair, 4);
+	} else if (len <= 16) {
+		rdc_memcpy(q, pair, 8);
+		rdc_memcpy(q + len - 8, pair, 8);
+	} else if (len <= 32) {
+		rdc_memcpy(q, pair, 8);
+		rdc_memcpy(q + 8, pair, 8);
+		rdc_memcpy(q + len - 16, pair, 8);
+		rdc_memcpy(q + len - 8, pair, 8);
+	} else if (len < FILL_BLOCK) {
+		for (k = 0; k < 32; k += 8)
+			rdc_memcpy(q + k, pair, 8);
+		for (k = 0; k < 32; k += 8)
+			rdc_memcpy(q + len - 32 + k, pair, 8);
+	} else {
+		fill32(q, v, len / 4);
+	}
+	return len / 4;
+}
+
 /* Runs [first, first + n) charged by rdc_port_runs, their bytes at p. */
 static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 		       uint32_t n)
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	const struct rdc_port_run *r = dp->runs + first, *end = r + n;
-	uint32_t stride = s->stride, v, k, staged = 0;
+	uint32_t stride = s->stride, v, staged = 0;
 	uint64_t pixels = 0;
+	uint8_t pair[8];
 
 	if (rdc_format_bpp(s->format) != 32 || rdc_rop_reads_dst(dp->st.rop)) {
 		for (; r < end; r++)
@@ -290,16 +332,12 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 	 * in dp->px (one memcpy a row, the fill's memset speed).
 	 */
 	v = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
+	rdc_st32(pair, v);
+	rdc_st32(pair + 4, v);
 	for (; r < end; r++) {
 		uint8_t *q = p + r->addr;
 
-		if (r->count == 1 && r->len < FILL_BLOCK) {
-			for (k = 0; k < r->len; k += 4)
-				rdc_st32(q + k, v);
-			pixels += r->len / 4;
-			continue;
-		}
-		if (r->count == 1) {
+		if (r->count == 1 && r->len >= FILL_BLOCK) {
 			if (r->len <= sizeof(dp->px)) {
 				if (staged < r->len) {
 					fill32((uint8_t *)dp->px, v,
@@ -313,9 +351,7 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 			pixels += r->len / 4;
 			continue;
 		}
-		for (k = 0; k < r->count; k++, q += stride)
-			rdc_st32(q, v);
-		pixels += r->count;
+		pixels += run_store32(q, r, stride, pair, v);
 	}
 	dp->hw->perf.pixels += pixels;
 }
@@ -539,6 +575,40 @@ void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 }
 
 /*
+ * One run of line_queue's direct path: charged in the open window and
+ * written at once, or (refused) charged and written by the port call
+ * runs_flush would make for it, in a window of its own.  *pixels is the
+ * perf count not yet added, added before any port call that could let
+ * someone look at it.
+ */
+static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
+			    const struct rdc_port_run *r, const uint8_t *pair,
+			    uint64_t *pixels)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint32_t stride = dp->st.dst.stride;
+	uint8_t *p;
+
+	if (r->count == 1 ? rdc_port_window_span(hw, w, r->addr, r->len) :
+			    rdc_port_window_column(hw, w, r, stride)) {
+		*pixels += run_store32(w->vram + r->addr, r, stride, pair,
+				       rdc_ld32(pair));
+		return;
+	}
+	rdc_port_window_close(hw, w);
+	hw->perf.pixels += *pixels;
+	*pixels = 0;
+	if (r->count == 1)
+		p = rdc_port_span(hw, r->addr, r->len, RDC_BUS_WRITE);
+	else
+		p = rdc_port_column(hw, r->addr, stride, r->count, r->len,
+				    RDC_BUS_WRITE);
+	if (p)
+		run_write(dp, p, r, dp->st.fg);
+	rdc_port_window_open(hw, w);
+}
+
+/*
  * rdc_dp_line_steps' loop with its runs queued: the same runs, clipped
  * the same way, as span_fill / col_fill would draw them.
  */
@@ -549,24 +619,66 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c,
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	uint32_t bytes = rdc_format_bpp(s->format) / 8;
-	int64_t i = ilo, run;
+	/* held in registers: stores to dp->runs may alias dp's fields */
+	const uint32_t base = s->base, stride = s->stride;
+	uint32_t nruns = dp->nruns;
+	int64_t i = ilo, run, k, q = 0, rr = 0;
+	/*
+	 * XRGB8888 over a destination the ROP ignores: each run is charged
+	 * and written as it is made (rdc_port_window), not queued; a run the
+	 * window refuses takes the port call runs_flush would make.
+	 */
+	bool direct = bytes == 4 && !rdc_rop_reads_dst(dp->st.rop);
+	struct rdc_port_window w = {0};
+	struct rdc_port_run one;
+	uint64_t pixels = 0;
+	uint32_t fg = 0;
+	uint8_t pair[8];
 
-	/* one run a pass: step on until the minor axis moves */
+	if (direct) {
+		if (nruns)
+			runs_flush(dp);
+		nruns = 0;
+		fg = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
+		rdc_st32(pair, fg);
+		rdc_st32(pair + 4, fg);
+		rdc_port_window_open(dp->hw, &w);
+	}
+
+	/*
+	 * One run a pass.  The per-step loop adds 2m to rem until it reaches
+	 * 2n: k = ceil((2n - rem) / 2m) steps, the last one the run's end.
+	 * Once rem < 2m (after the first run) that is q or q + 1 for
+	 * q = floor(n / m): q + 1 exactly when rem < 2n - 2mq (run slicing,
+	 * no division).  Without a minor move (m == 0) the run goes to ihi.
+	 */
+	if (m > 0) {
+		q = n / m;
+		rr = 2 * n - 2 * m * q;
+	}
 	for (; i <= ihi; i++, j++) {
 		int32_t v, a, b;
 		struct rdc_port_run *r;
 
-		for (run = i; i < ihi; i++) {
-			rem += 2 * m;
-			if (rem >= 2 * n) {
-				rem -= 2 * n;
-				break;
+		run = i;
+		if (m == 0) {
+			i = ihi;
+		} else {
+			if (rem < 2 * m)
+				k = q + (rem < rr);
+			else
+				k = (2 * n - rem + 2 * m - 1) / (2 * m);
+			if (run + k - 1 >= ihi) {
+				i = ihi;
+			} else {
+				i = run + k - 1;
+				rem += 2 * m * k - 2 * n;
 			}
 		}
 		v = v0 + sv * (int32_t)j;
 		a = u0 + (int32_t)run;
 		b = u0 + (int32_t)i;
-		r = &dp->runs[dp->nruns];
+		r = direct ? &one : &dp->runs[nruns];
 		if (xmajor) {
 			if (v < c->y0 || v >= c->y1)
 				continue;
@@ -574,7 +686,7 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c,
 			b = RDC_MIN(b, c->x1 - 1);
 			if (a > b)
 				continue;
-			r->addr = s->base + (uint32_t)v * s->stride +
+			r->addr = base + (uint32_t)v * stride +
 				  (uint32_t)a * bytes;
 			r->len = (uint32_t)(b - a + 1) * bytes;
 			r->count = 1;
@@ -585,14 +697,27 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c,
 			b = RDC_MIN(b, c->y1 - 1);
 			if (a > b)
 				continue;
-			r->addr = s->base + (uint32_t)a * s->stride +
+			r->addr = base + (uint32_t)a * stride +
 				  (uint32_t)v * bytes;
 			r->len = bytes;
 			r->count = (uint32_t)(b - a + 1);
 		}
-		if (++dp->nruns == RDC_DP_CHUNK)
+		if (direct) {
+			line_run(dp, &w, r, pair, &pixels);
+			continue;
+		}
+		if (++nruns == RDC_DP_CHUNK) {
+			dp->nruns = nruns;
 			runs_flush(dp);
+			nruns = 0;
+		}
 	}
+	if (direct) {
+		rdc_port_window_close(dp->hw, &w);
+		dp->hw->perf.pixels += pixels;
+		return;
+	}
+	dp->nruns = nruns;
 	runs_flush(dp);
 }
 
@@ -687,6 +812,77 @@ void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 	}
 }
 
+/*
+ * memcpy with a length the compiler knows nothing about: where it knows
+ * the length is at most a staging buffer it expands the copy inline
+ * (rep movsq on x86), which is slower than the library's for rows of a
+ * few hundred bytes.
+ */
+static inline void row_copy(uint8_t *d, const uint8_t *s, size_t n)
+{
+	rdc_hide_var(n);
+	rdc_memcpy(d, s, n);
+}
+
+/*
+ * A filled rectangle's rows [ya, ye] of pixels [xa, xb] (clipped) in
+ * XRGB8888 with a ROP that ignores the destination, charged and written
+ * row by row as the queued runs would be (see line_run): no queue, and
+ * each row one memcpy of the colour staged in dp->px.  False (nothing
+ * done) for other formats and ROPs.
+ */
+static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb,
+			int32_t ya, int32_t ye)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	struct rdc_hw *hw = dp->hw;
+	struct rdc_port_window w;
+	struct rdc_port_run one;
+	uint32_t n = (uint32_t)(xb - xa + 1), v, rows, done, k;
+	uint64_t pixels = 0;
+	uint8_t *p;
+
+	if (s->format != RDC_FMT_XRGB8888 || rdc_rop_reads_dst(dp->st.rop))
+		return false;
+	if (dp->nruns)
+		runs_flush(dp);
+	v = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
+	if (n <= RDC_DP_CHUNK)
+		fill32((uint8_t *)dp->px, v, n);
+	one.addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
+	one.len = n * 4;
+	one.count = 1;
+	rows = (uint32_t)(ye - ya + 1);
+	rdc_port_window_open(hw, &w);
+	while (rows) {
+		done = rdc_port_window_rows(hw, &w, one.addr, one.len,
+					    s->stride, rows);
+		for (k = 0; k < done; k++, one.addr += s->stride) {
+			p = w.vram + one.addr;
+			if (n <= RDC_DP_CHUNK)
+				row_copy(p, (const uint8_t *)dp->px, one.len);
+			else
+				fill32(p, v, n);
+		}
+		pixels += (uint64_t)done * n;
+		rows -= done;
+		if (!rows)
+			break;
+		rdc_port_window_close(hw, &w);
+		hw->perf.pixels += pixels;
+		pixels = 0;
+		p = rdc_port_span(hw, one.addr, one.len, RDC_BUS_WRITE);
+		if (p)
+			run_write(dp, p, &one, dp->st.fg);
+		rdc_port_window_open(hw, &w);
+		one.addr += s->stride;
+		rows--;
+	}
+	rdc_port_window_close(hw, &w);
+	hw->perf.pixels += pixels;
+	return true;
+}
+
 void rdc_dp_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		 uint32_t h, bool fill)
 {
@@ -700,9 +896,13 @@ void rdc_dp_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 	if (fill && dp->queue_spans) {
 		/* dp_fill_span's clipping, once for all rows */
 		int32_t xa = RDC_MAX(x, c.x0), xb = RDC_MIN(xr, c.x1 - 1);
+		int32_t ya = RDC_MAX(y, c.y0), ye = RDC_MIN(yb, c.y1 - 1);
 
-		for (r = RDC_MAX(y, c.y0); xa <= xb && r <= RDC_MIN(yb, c.y1 - 1);
-		     r++)
+		if (xa <= xb && ya <= ye && rect_rows32(dp, xa, xb, ya, ye)) {
+			rdc_dp_queue_end(dp);
+			return;
+		}
+		for (r = ya; xa <= xb && r <= ye; r++)
 			queue_run(dp, xa, r, (uint32_t)(xb - xa + 1), 1);
 		rdc_dp_queue_end(dp);
 		return;
@@ -1033,6 +1233,22 @@ rop_bytes(uint8_t *restrict d, const uint8_t *restrict s, uint32_t len,
  * overlap (memmove for COPY even when they do); an overlapping ROP stages
  * the source first, as the per-pixel path does.
  */
+/* len bytes from src to p through the ROP, overlap-safe. */
+static inline void blit_bytes(struct rdc_dp *dp, uint8_t *p,
+			      const uint8_t *src, uint32_t len)
+{
+	unsigned int rop = dp->st.rop;
+
+	if (rop == RDC_ROP_COPY) {
+		rdc_memmove(p, src, len);
+	} else if (src + len <= p || p + len <= src) {
+		rop_bytes(p, src, len, rop);
+	} else {
+		rdc_memcpy(dp->px, src, len);
+		rop_bytes(p, (const uint8_t *)dp->px, len, rop);
+	}
+}
+
 static void blit_row(struct rdc_dp *dp, uint32_t saddr, int32_t y, int32_t xa,
 		     uint32_t n)
 {
@@ -1051,14 +1267,7 @@ static void blit_row(struct rdc_dp *dp, uint32_t saddr, int32_t y, int32_t xa,
 			       &src);
 	if (!p)
 		return;
-	if (rop == RDC_ROP_COPY) {
-		rdc_memmove(p, src, len);
-	} else if (src + len <= p || p + len <= src) {
-		rop_bytes(p, src, len, rop);
-	} else {
-		rdc_memcpy(dp->px, src, len);
-		rop_bytes(p, (const uint8_t *)dp->px, len, rop);
-	}
+	blit_bytes(dp, p, src, len);
 	dp->hw->perf.pixels += n;
 }
 
@@ -1076,6 +1285,9 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 	const struct rdc_surface *ss = &dp->st.src, *ds = &dp->st.dst;
 	unsigned int bpp = rdc_format_bpp(ss->format);
 	int64_t sx = sx32, sy = sy32, dx = dx32, dy = dy32, w = w32, h = h32;
+	struct rdc_hw *hw = dp->hw;
+	struct rdc_port_window win;
+	unsigned int kind;
 	uint64_t sbit, dbit;
 	bool back, fast;
 	int64_t k;
@@ -1093,6 +1305,14 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 	       (dp->st.alpha == RDC_ALPHA_OPAQUE ||
 		rdc_format_indexed(ds->format));
 
+	/*
+	 * The fast rows are charged as read/write pairs in a port window
+	 * and their bytes moved at once; a pair the window refuses goes to
+	 * blit_row's rdc_port_span_pair, as every row otherwise would.
+	 */
+	kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW : RDC_BUS_WRITE;
+	if (fast)
+		rdc_port_window_open(hw, &win);
 	for (k = 0; k < h; k++) {
 		int64_t row = back ? h - 1 - k : k;
 		int64_t done;
@@ -1110,8 +1330,23 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 			uint32_t i;
 
 			if (fast) {
+				uint32_t len = n * (bpp / 8);
+				uint32_t daddr =
+					ds->base +
+					(uint32_t)(dy + row) * ds->stride +
+					(uint32_t)(dx + off) * (bpp / 8);
+
+				if (rdc_port_window_pair(hw, &win, addr, daddr,
+							 len, kind)) {
+					blit_bytes(dp, win.vram + daddr,
+						   win.vram + addr, len);
+					hw->perf.pixels += n;
+					continue;
+				}
+				rdc_port_window_close(hw, &win);
 				blit_row(dp, addr, (int32_t)(dy + row),
 					 (int32_t)(dx + off), n);
+				rdc_port_window_open(hw, &win);
 				continue;
 			}
 			p = rdc_port_span(dp->hw, addr,
@@ -1126,6 +1361,8 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 				  n);
 		}
 	}
+	if (fast)
+		rdc_port_window_close(hw, &win);
 }
 
 /*
@@ -1185,13 +1422,20 @@ static void bits_expand(struct rdc_dp *dp, const struct row_src *rs,
 #define BIT_PX(q, k)                                                           \
 	rdc_st32((q) + 4 * (k), bg ^ (diff & -((byte >> (7 - (k))) & 1)))
 
-static void bits_write32(struct rdc_dp *dp, uint8_t *q,
-			 const struct row_src *rs, uint32_t r, uint32_t bx,
-			 uint32_t n, bool table)
+static inline void bits_write32(struct rdc_dp *dp, uint8_t *q,
+				const struct row_src *rs, uint32_t r,
+				uint32_t bx, uint32_t n, bool table)
 {
 	uint32_t i = 0, bg = rs->bg, diff = rs->fg ^ rs->bg;
 	unsigned int b;
 
+	if (table && bx % 8 == 0) /* whole bytes from the first pixel */
+		for (; n - i >= 8; i += 8, q += 32) {
+			uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
+
+			rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
+			rdc_memcpy(q + 16, dp->nibble_px[byte & 15], 16);
+		}
 	while (i < n) {
 		uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
 
@@ -1225,25 +1469,32 @@ static void bits_write32(struct rdc_dp *dp, uint8_t *q,
 
 /*
  * dp->nibble_px for FG and BG (group v's pixel k is FG if bit 3 - k is
- * set), unless it holds them already.  False where rows of `n` pixels are
- * too short to repay building it (a byte of bits is two lookups instead
- * of eight selects; the table is 64 stores).
+ * set), unless it holds them already.  False where the `n` pixels to draw
+ * with it (all rows: an 8x16 glyph is 128) are too few to repay building
+ * it (a byte of bits is two lookups instead of eight selects; the table
+ * is 64 stores).
  */
 #define NIBBLE_MIN_PX 32u
 
 static bool nibble_fill(struct rdc_dp *dp, uint32_t fg, uint32_t bg,
-			uint32_t n)
+			uint64_t n)
 {
-	unsigned int v, k;
+	uint8_t pair[4][8]; /* pair[u]: pixel k is FG if bit 1 - k of u */
+	unsigned int v;
 
 	if (dp->nibble_ok && dp->nibble_fg == fg && dp->nibble_bg == bg)
 		return true;
 	if (n < NIBBLE_MIN_PX)
 		return false;
-	for (v = 0; v < 16; v++)
-		for (k = 0; k < 4; k++)
-			rdc_st32(dp->nibble_px[v] + 4 * k,
-				 (v >> (3 - k)) & 1 ? fg : bg);
+	/* from the four 2-pixel pairs: 8 stores and 32 copies, not 64 */
+	for (v = 0; v < 4; v++) {
+		rdc_st32(pair[v], v & 2 ? fg : bg);
+		rdc_st32(pair[v] + 4, v & 1 ? fg : bg);
+	}
+	for (v = 0; v < 16; v++) {
+		rdc_memcpy(dp->nibble_px[v], pair[v >> 2], 8);
+		rdc_memcpy(dp->nibble_px[v] + 8, pair[v & 3], 8);
+	}
 	dp->nibble_fg = fg;
 	dp->nibble_bg = bg;
 	dp->nibble_ok = true;
@@ -1252,56 +1503,57 @@ static bool nibble_fill(struct rdc_dp *dp, uint32_t fg, uint32_t bg,
 
 /*
  * Opaque MONO and TEXT rows in XRGB8888 with ROP COPY, the console's
- * case: the rows [ya, yb) of pixels [xa, xb) go to rdc_port_runs as one
- * span each and are expanded straight into VRAM; a row the scanout
- * interrupts is charged on its own by rdc_port_span, as span_emit would.
- * Same spans, same order, same bytes.
+ * case: the rows [ya, yb) of pixels [xa, xb) are charged as one span
+ * each in a port window (rdc_port_window_rows) and expanded straight into
+ * VRAM; a row the scanout interrupts is charged on its own by
+ * rdc_port_span, as span_emit would.  Same spans, same order, same bytes.
  */
 static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 			int64_t xb, int64_t ya, int64_t yb,
 			const struct row_src *rs)
 {
 	const struct rdc_surface *s = &dp->st.dst;
+	struct rdc_hw *hw = dp->hw;
 	uint32_t n = (uint32_t)(xb - xa), bx = (uint32_t)(xa - x);
-	uint32_t i, done, nr;
-	int64_t row = ya;
+	uint32_t addr, rows, done, r, k;
+	struct rdc_port_window w;
+	uint64_t pixels = 0;
 	bool table;
 	uint8_t *p;
 
-	table = nibble_fill(dp, rs->fg, rs->bg, n);
-	while (row < yb) {
-		nr = (uint32_t)RDC_MIN(yb - row, (int64_t)RDC_DP_CHUNK);
-		for (i = 0; i < nr; i++) {
-			dp->runs[i].addr = s->base +
-					   (uint32_t)(row + i) * s->stride +
-					   (uint32_t)xa * 4;
-			dp->runs[i].len = n * 4;
-			dp->runs[i].count = 1;
+	if (ya >= yb)
+		return;
+	table = nibble_fill(dp, rs->fg, rs->bg,
+			    (uint64_t)n * (uint64_t)(yb - ya));
+	addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
+	rows = (uint32_t)(yb - ya);
+	r = (uint32_t)(ya - y);
+	rdc_port_window_open(hw, &w);
+	while (rows) {
+		done = rdc_port_window_rows(hw, &w, addr, n * 4, s->stride,
+					    rows);
+		for (k = 0; k < done; k++, r++, addr += s->stride)
+			bits_write32(dp, w.vram + addr, rs, r, bx, n, table);
+		pixels += (uint64_t)done * n;
+		rows -= done;
+		if (!rows)
+			break;
+		/* the span span_emit would charge, then the same bytes */
+		rdc_port_window_close(hw, &w);
+		hw->perf.pixels += pixels;
+		pixels = 0;
+		p = rdc_port_span(hw, addr, n * 4, RDC_BUS_WRITE);
+		if (p) {
+			bits_write32(dp, p, rs, r, bx, n, table);
+			hw->perf.pixels += n;
 		}
-		i = 0;
-		while (i < nr) {
-			p = rdc_port_runs(dp->hw, dp->runs + i, nr - i,
-					  s->stride, RDC_BUS_WRITE, &done);
-			for (; done; done--, i++) {
-				bits_write32(dp, p + dp->runs[i].addr, rs,
-					     (uint32_t)(row + i - y), bx, n,
-					     table);
-				dp->hw->perf.pixels += n;
-			}
-			if (i == nr)
-				break;
-			/* the span span_emit would charge, then the same bytes */
-			p = rdc_port_span(dp->hw, dp->runs[i].addr,
-					  dp->runs[i].len, RDC_BUS_WRITE);
-			if (p) {
-				bits_write32(dp, p, rs, (uint32_t)(row + i - y),
-					     bx, n, table);
-				dp->hw->perf.pixels += n;
-			}
-			i++;
-		}
-		row += nr;
+		rdc_port_window_open(hw, &w);
+		r++;
+		addr += s->stride;
+		rows--;
 	}
+	rdc_port_window_close(hw, &w);
+	hw->perf.pixels += pixels;
 }
 
 static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,

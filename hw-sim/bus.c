@@ -10,52 +10,12 @@
  */
 #include "hw_priv.h"
 
-#define BURST_BYTES ((uint64_t)RDC_BUS_BURST_BEATS * RDC_BUS_BYTES)
-
-/*
- * Cost of bytes [a, a + n) split into `bursts` bursts, from open row *row;
- * leaves *row at the last row touched.  The caller strips the PARTIAL
- * flags from pieces that do not hold the span's first / last byte.
- */
-static inline uint64_t bus_cost(uint32_t *row, uint64_t a, uint64_t n,
-				unsigned int kind, uint64_t bursts)
-{
-	uint64_t e = a + n - 1;
-	uint64_t beats = e / RDC_BUS_BYTES - a / RDC_BUS_BYTES + 1;
-	uint64_t ra = a / RDC_DRAM_ROW_BYTES, re = e / RDC_DRAM_ROW_BYTES;
-	uint64_t misses = re - ra + (ra != *row);
-	uint64_t c = beats * RDC_T_BEAT + misses * RDC_T_ROW_MISS;
-	uint64_t head, tail;
-
-	*row = (uint32_t)re;
-	switch (kind & RDC_BUS_KIND_MASK) {
-	case RDC_BUS_READ:
-		return c;
-	case RDC_BUS_WRITE:
-		break;
-	default: /* RMW, and the undefined kind 3 charged as the dearer RMW */
-		return c + bursts * RDC_T_TURN + beats * RDC_T_BEAT;
-	}
-	head = (a % RDC_BUS_BYTES) || (kind & RDC_BUS_HEAD_PARTIAL);
-	tail = ((e + 1) % RDC_BUS_BYTES) || (kind & RDC_BUS_TAIL_PARTIAL);
-	if (beats == 1) /* one beat, merged once however many edges */
-		return c + ((head || tail) ? RDC_T_TURN + RDC_T_BEAT : 0);
-	if (bursts == 1) /* both edges in one burst share its turnaround */
-		return c + ((head || tail) ? RDC_T_TURN : 0) +
-		       (head + tail) * RDC_T_BEAT;
-	return c + (head + tail) * (RDC_T_TURN + RDC_T_BEAT);
-}
-
-static inline uint64_t bursts_of(uint64_t a, uint64_t n)
-{
-	return (a + n - 1) / BURST_BYTES - a / BURST_BYTES + 1;
-}
-
 uint64_t rdc_bus_read_cost(uint32_t *row, uint64_t addr, uint64_t len)
 {
 	if (!len)
 		return 0;
-	return bus_cost(row, addr, len, RDC_BUS_READ, bursts_of(addr, len));
+	return rdc_bus_cost(row, addr, len, RDC_BUS_READ,
+			    rdc_bus_bursts(addr, len));
 }
 
 /*
@@ -83,7 +43,7 @@ static void bus_burst(struct rdc_hw *hw, uint64_t *tp, uint64_t a, uint64_t n,
 			rdc_crtc_catch_up(hw, t);
 			continue;
 		}
-		cost = bus_cost(&row, a, n, kind, 1);
+		cost = rdc_bus_cost(&row, a, n, kind, 1);
 		ev = c->running ? c->next_line_time : RDC_NEVER;
 		if (ev >= t + cost) {
 			hw->bus.open_row = row;
@@ -129,8 +89,9 @@ void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 		if (t >= c->fetch_end &&
 		    (!c->running || c->next_line_time > t)) {
 			uint32_t row = hw->bus.open_row;
-			uint64_t cost = bus_cost(&row, a, end - a, k,
-						 bursts_of(a, end - a));
+			uint64_t cost =
+				rdc_bus_cost(&row, a, end - a, k,
+					     rdc_bus_bursts(a, end - a));
 
 			if (!c->running || c->next_line_time >= t + cost) {
 				hw->bus.open_row = row;
@@ -138,7 +99,8 @@ void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 				break;
 			}
 		}
-		be = RDC_MIN(end, (a / BURST_BYTES + 1) * BURST_BYTES);
+		be = RDC_MIN(end, (a / RDC_BUS_BURST_BYTES + 1) *
+					  RDC_BUS_BURST_BYTES);
 		if (be != end)
 			k &= ~RDC_BUS_TAIL_PARTIAL;
 		bus_burst(hw, &t, a, be - a, k);
@@ -185,7 +147,7 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 		/* bus_burst's first step, without the call */
 		if (t >= c->fetch_end &&
 		    (!c->running || c->next_line_time > t)) {
-			cost = bus_cost(&row, a, len, kind, 1);
+			cost = rdc_bus_cost(&row, a, len, kind, 1);
 			if (bus_quiet(c, t, cost)) {
 				hw->bus.open_row = row;
 				t += cost;
@@ -198,26 +160,24 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 	return hw->vram + addr;
 }
 
-/*
- * A column whose elements are one beat each, all at the same offset in
- * their beat: every element costs what the first costs in an open row,
- * plus a row miss for each change of row.  Addresses grow, so the rows
- * changed are all rows from the first to the last when the stride is
- * below a row (none is skipped), else one per element.  The same sum the
- * element-by-element walk gives, in closed form.
- */
-static uint64_t column_cost(uint32_t *row, uint64_t a, uint64_t stride,
-			    uint32_t count, uint32_t len, unsigned int kind)
+/* Cost of a column run of rdc_port_runs, RDC_NEVER if it is refused. */
+static __attribute__((__noinline__)) uint64_t
+runs_column_cost(const struct rdc_hw *hw, const struct rdc_port_run *r,
+		 uint64_t stride, unsigned int kind, uint32_t *row)
 {
-	uint64_t ra = a / RDC_DRAM_ROW_BYTES;
-	uint64_t rz = (a + (count - 1) * stride) / RDC_DRAM_ROW_BYTES;
-	uint32_t open = (uint32_t)ra;
-	uint64_t one = bus_cost(&open, a, len, kind, 1);
-	uint64_t misses = (ra != *row) +
-			  (stride >= RDC_DRAM_ROW_BYTES ? count - 1 : rz - ra);
+	uint64_t a = r->addr, cost = 0;
+	uint32_t k;
 
-	*row = (uint32_t)rz;
-	return count * one + misses * RDC_T_ROW_MISS;
+	if (!r->len || !r->count ||
+	    a + (r->count - 1) * stride + r->len > hw->vram_size)
+		return RDC_NEVER;
+	if (a % RDC_BUS_BYTES + r->len <= RDC_BUS_BYTES &&
+	    stride % RDC_BUS_BYTES == 0)
+		return rdc_bus_column_cost(row, a, stride, r->count, r->len,
+					   kind);
+	for (k = 0; k < r->count; k++, a += stride)
+		cost += rdc_bus_cost(row, a, r->len, kind, 1);
+	return cost;
 }
 
 /*
@@ -228,34 +188,35 @@ static uint64_t column_cost(uint32_t *row, uint64_t a, uint64_t stride,
  * is processed meanwhile, so lim holds for the whole batch.  Inlined with
  * kind a constant, the cost formula loses its switch.
  */
-static inline uint32_t runs_charge(const struct rdc_hw *hw,
-				   const struct rdc_port_run *r, uint32_t n,
-				   uint64_t stride, unsigned int kind,
-				   uint32_t *row, uint64_t *tp, uint64_t lim)
+static inline __attribute__((__always_inline__)) uint32_t
+runs_charge(const struct rdc_hw *hw, const struct rdc_port_run *r, uint32_t n,
+	    uint64_t stride, unsigned int kind, uint32_t *row, uint64_t *tp,
+	    uint64_t lim)
 {
+	const uint64_t size = hw->vram_size;
 	uint64_t t = *tp;
-	uint32_t rw = *row, i, k;
+	uint32_t rw = *row, i;
 
-	for (i = 0; i < n; i++, r++) {
-		uint64_t a = r->addr, cost = 0;
+	for (i = 0; i < n; i++) {
+		uint64_t a = r[i].addr, len = r[i].len, cost;
 		uint32_t nrw = rw;
 
-		if (r->count == 1) {
-			if (!r->len || a + r->len > hw->vram_size)
+		if (r[i].count == 1) {
+			if (!len || a + len > size)
 				break;
-			cost = bus_cost(&nrw, a, r->len, kind,
-					bursts_of(a, r->len));
-		} else if (!r->len || !r->count ||
-			   a + (r->count - 1) * stride + r->len >
-				   hw->vram_size) {
-			break;
-		} else if (a % RDC_BUS_BYTES + r->len <= RDC_BUS_BYTES &&
-			   stride % RDC_BUS_BYTES == 0) {
-			cost = column_cost(&nrw, a, stride, r->count, r->len,
-					   kind);
+			cost = rdc_bus_cost(&nrw, a, len, kind,
+					    rdc_bus_bursts(a, len));
+		} else if (len && a % RDC_BUS_BYTES + len <= RDC_BUS_BYTES &&
+			   stride % RDC_BUS_BYTES == 0 && r[i].count &&
+			   a + (r[i].count - 1) * stride + len <= size) {
+			/* one-beat columns (outlines) inline, in closed form */
+			cost = rdc_bus_column_cost(&nrw, a, stride, r[i].count,
+						   (uint32_t)len, kind);
 		} else {
-			for (k = 0; k < r->count; k++, a += stride)
-				cost += bus_cost(&nrw, a, r->len, kind, 1);
+			/* out of line: keeps the span loop in registers */
+			cost = runs_column_cost(hw, &r[i], stride, kind, &nrw);
+			if (cost == RDC_NEVER)
+				break;
 		}
 		if (t + cost > lim)
 			break;
@@ -289,6 +250,101 @@ uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 	hw->bus.open_row = row;
 	hw->now = t;
 	return hw->vram;
+}
+
+void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	if (c->running && c->next_line_time <= hw->now)
+		rdc_crtc_catch_up(hw, hw->now);
+	w->vram = hw->vram;
+	w->t = hw->now;
+	w->row = hw->bus.open_row;
+	w->lim = c->running ? c->next_line_time : RDC_NEVER;
+	w->open = w->t >= c->fetch_end;
+}
+
+bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
+			    const struct rdc_port_run *r, uint32_t stride,
+			    unsigned int kind)
+{
+	uint64_t t = w->t;
+	uint32_t row = w->row, done;
+
+	if (!w->open)
+		return false;
+	if (kind == RDC_BUS_WRITE)
+		done = runs_charge(hw, r, 1, stride, RDC_BUS_WRITE, &row, &t,
+				   w->lim);
+	else
+		done = runs_charge(hw, r, 1, stride, kind, &row, &t, w->lim);
+	if (!done)
+		return false;
+	w->t = t;
+	w->row = row;
+	return true;
+}
+
+uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
+			      struct rdc_port_window *w, uint32_t addr,
+			      uint32_t len, uint32_t stride, uint32_t count)
+{
+	uint64_t t = w->t, a = addr;
+	uint32_t row = w->row, i;
+
+	if (!w->open)
+		return 0;
+	if (stride % RDC_DRAM_ROW_BYTES == 0 && count > 1 && len &&
+	    a + len <= hw->vram_size) {
+		/*
+		 * Rows a whole number of DRAM rows apart: from the second on,
+		 * every row has the same offset in its beat, burst and DRAM
+		 * row, and the same relation to the row the last one left
+		 * open, so each costs what the second does.  Charged in
+		 * closed form: as many rows as fit in VRAM and before lim.
+		 */
+		uint32_t r0 = row, r1;
+		uint64_t c0 = rdc_bus_cost(&r0, a, len, RDC_BUS_WRITE,
+					   rdc_bus_bursts(a, len));
+		uint64_t c1, n = count;
+
+		if (t + c0 > w->lim)
+			return 0;
+		r1 = r0;
+		c1 = rdc_bus_cost(&r1, a + stride, len, RDC_BUS_WRITE,
+				  rdc_bus_bursts(a + stride, len));
+		if (stride)
+			n = RDC_MIN(n, (hw->vram_size - len - a) / stride + 1);
+		n = RDC_MIN(n, 1 + (w->lim - t - c0) / c1);
+		w->t = t + c0 + (n - 1) * c1;
+		w->row = (uint32_t)((a + (n - 1) * stride + len - 1) /
+				    RDC_DRAM_ROW_BYTES);
+		return (uint32_t)n;
+	}
+	/* runs_charge's span case, the runs made on the way */
+	for (i = 0; i < count; i++, a += stride) {
+		uint32_t nrw = row;
+		uint64_t cost;
+
+		if (!len || a + len > hw->vram_size)
+			break;
+		cost = rdc_bus_cost(&nrw, a, len, RDC_BUS_WRITE,
+				    rdc_bus_bursts(a, len));
+		if (t + cost > w->lim)
+			break;
+		t += cost;
+		row = nrw;
+	}
+	w->t = t;
+	w->row = row;
+	return i;
+}
+
+void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w)
+{
+	hw->bus.open_row = w->row;
+	hw->now = w->t;
 }
 
 void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles)

@@ -55,4 +55,152 @@
 #define RDC_T_FIFO_WORD 1u
 #define RDC_T_DECODE 4u
 
+/*
+ * The formulas as code, inline for the DP's run loops (bus.c charges
+ * every access with them).
+ */
+#include "hw.h"
+
+#define RDC_BUS_BURST_BYTES ((uint64_t)RDC_BUS_BURST_BEATS * RDC_BUS_BYTES)
+
+/*
+ * Cost of bytes [a, a + n) split into `bursts` bursts, from open row *row;
+ * leaves *row at the last row touched.  The caller strips the PARTIAL
+ * flags from pieces that do not hold the span's first / last byte.
+ */
+static inline uint64_t rdc_bus_cost(uint32_t *row, uint64_t a, uint64_t n,
+				    unsigned int kind, uint64_t bursts)
+{
+	uint64_t e = a + n - 1;
+	uint64_t beats = e / RDC_BUS_BYTES - a / RDC_BUS_BYTES + 1;
+	uint64_t ra = a / RDC_DRAM_ROW_BYTES, re = e / RDC_DRAM_ROW_BYTES;
+	uint64_t misses = re - ra + (ra != *row);
+	uint64_t c = beats * RDC_T_BEAT + misses * RDC_T_ROW_MISS;
+	uint64_t head, tail, turns, merged;
+
+	*row = (uint32_t)re;
+	switch (kind & RDC_BUS_KIND_MASK) {
+	case RDC_BUS_READ:
+		return c;
+	case RDC_BUS_WRITE:
+		break;
+	default: /* RMW, and the undefined kind 3 charged as the dearer RMW */
+		return c + bursts * RDC_T_TURN + beats * RDC_T_BEAT;
+	}
+	head = (a % RDC_BUS_BYTES) || (kind & RDC_BUS_HEAD_PARTIAL);
+	tail = ((e + 1) % RDC_BUS_BYTES) || (kind & RDC_BUS_TAIL_PARTIAL);
+	/*
+	 * One beat is merged once however many edges; both edges in one
+	 * burst share its turnaround.  (Selects, not branches: spans of a
+	 * line alternate between the cases.)
+	 */
+	turns = bursts == 1 ? (head | tail) : head + tail;
+	merged = beats == 1 ? (head | tail) : head + tail;
+	return c + turns * RDC_T_TURN + merged * RDC_T_BEAT;
+}
+
+static inline uint64_t rdc_bus_bursts(uint64_t a, uint64_t n)
+{
+	return (a + n - 1) / RDC_BUS_BURST_BYTES - a / RDC_BUS_BURST_BYTES + 1;
+}
+
+/*
+ * A column whose elements are one beat each, all at the same offset in
+ * their beat: every element costs what the first costs in an open row,
+ * plus a row miss for each change of row.  Addresses grow, so the rows
+ * changed are all rows from the first to the last when the stride is
+ * below a row (none is skipped), else one per element.  The same sum the
+ * element-by-element walk gives, in closed form.
+ */
+static inline uint64_t rdc_bus_column_cost(uint32_t *row, uint64_t a,
+					   uint64_t stride, uint32_t count,
+					   uint32_t len, unsigned int kind)
+{
+	uint64_t ra = a / RDC_DRAM_ROW_BYTES;
+	uint64_t rz = (a + (count - 1) * stride) / RDC_DRAM_ROW_BYTES;
+	uint32_t open = (uint32_t)ra;
+	uint64_t one = rdc_bus_cost(&open, a, len, kind, 1);
+	uint64_t misses = (ra != *row) +
+			  (stride >= RDC_DRAM_ROW_BYTES ? count - 1 : rz - ra);
+
+	*row = (uint32_t)rz;
+	return count * one + misses * RDC_T_ROW_MISS;
+}
+
+/*
+ * rdc_port_window_charge for a column of one-beat elements a whole
+ * number of beats apart (the closed form above) written as RDC_BUS_WRITE,
+ * inline; other columns take the call.
+ */
+static inline bool rdc_port_window_column(const struct rdc_hw *hw,
+					  struct rdc_port_window *w,
+					  const struct rdc_port_run *r,
+					  uint32_t stride)
+{
+	uint64_t a = r->addr, t;
+	uint32_t row = w->row;
+
+	if (a % RDC_BUS_BYTES + r->len > RDC_BUS_BYTES ||
+	    stride % RDC_BUS_BYTES)
+		return rdc_port_window_charge(hw, w, r, stride, RDC_BUS_WRITE);
+	if (!w->open || !r->len || !r->count ||
+	    a + (uint64_t)(r->count - 1) * stride + r->len > hw->vram_size)
+		return false;
+	t = w->t + rdc_bus_column_cost(&row, a, stride, r->count, r->len,
+				       RDC_BUS_WRITE);
+	if (t > w->lim)
+		return false;
+	w->t = t;
+	w->row = row;
+	return true;
+}
+
+/*
+ * rdc_port_span_pair's read of [raddr, + len) then write of [waddr,
+ * + len) as `kind`, in the window: both charged, or neither (the pair
+ * then goes to rdc_port_span_pair).  For blits, a pair a row.
+ */
+static inline bool rdc_port_window_pair(const struct rdc_hw *hw,
+					struct rdc_port_window *w,
+					uint32_t raddr, uint32_t waddr,
+					uint32_t len, unsigned int kind)
+{
+	uint32_t row = w->row;
+	uint64_t t;
+
+	if (!w->open || !len || (uint64_t)raddr + len > hw->vram_size ||
+	    (uint64_t)waddr + len > hw->vram_size)
+		return false;
+	t = w->t + rdc_bus_cost(&row, raddr, len, RDC_BUS_READ,
+				rdc_bus_bursts(raddr, len));
+	t += rdc_bus_cost(&row, waddr, len, kind, rdc_bus_bursts(waddr, len));
+	if (t > w->lim)
+		return false;
+	w->t = t;
+	w->row = row;
+	return true;
+}
+
+/*
+ * rdc_port_window_charge for a span (a run of count 1) written as
+ * RDC_BUS_WRITE, inline: the runs of a line are many and short.
+ */
+static inline bool rdc_port_window_span(const struct rdc_hw *hw,
+					struct rdc_port_window *w,
+					uint32_t addr, uint32_t len)
+{
+	uint64_t a = addr, t;
+	uint32_t row = w->row;
+
+	if (!w->open || !len || a + len > hw->vram_size)
+		return false;
+	t = w->t +
+	    rdc_bus_cost(&row, a, len, RDC_BUS_WRITE, rdc_bus_bursts(a, len));
+	if (t > w->lim)
+		return false;
+	w->t = t;
+	w->row = row;
+	return true;
+}
+
 #endif /* RDC_BUS_H */

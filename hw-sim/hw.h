@@ -425,6 +425,38 @@ uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 		       uint32_t n, uint32_t stride, unsigned int kind,
 		       uint32_t *done);
 
+/*
+ * rdc_port_runs for a DP loop that makes its runs one at a time (lines):
+ * rdc_port_window_open brings scanout up to hw->now and takes the bus
+ * state into w; rdc_port_window_charge charges run r exactly as
+ * rdc_port_runs would and returns true (its bytes are at w->vram +
+ * r->addr, to be written before the next charge), or charges nothing and
+ * returns false where rdc_port_runs would stop; rdc_port_window_close
+ * puts the time and open row back.  No other port call may come between
+ * open and close: a refused run goes, after the close, to rdc_port_span /
+ * rdc_port_column, and a new window is opened after it.
+ */
+struct rdc_port_window {
+	uint8_t *vram;
+	uint64_t t, lim;
+	uint32_t row;
+	bool open; /* false: a fetch window holds the bus now */
+};
+
+void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w);
+bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
+			    const struct rdc_port_run *r, uint32_t stride,
+			    unsigned int kind);
+void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w);
+/*
+ * rdc_port_window_charge for the spans [addr + i * stride, + len), i = 0,
+ * 1, ... count - 1, as RDC_BUS_WRITE: how many of them, from the first,
+ * it charged.
+ */
+uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
+			      struct rdc_port_window *w, uint32_t addr,
+			      uint32_t len, uint32_t stride, uint32_t count);
+
 /* Charge `cycles` of DP-internal work (decode, setup); no bus use. */
 void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles);
 

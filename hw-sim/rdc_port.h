@@ -33,6 +33,17 @@
 #define rdc_memmove(d, s, n) __builtin_memmove((d), (s), (n))
 #define rdc_memset(d, c, n) __builtin_memset((d), (c), (n))
 
+/*
+ * Hide a value from the optimiser (the kernel's OPTIMIZER_HIDE_VAR): a
+ * length it cannot bound keeps a memcpy a library call instead of an
+ * inline expansion that is slower for rows of a few hundred bytes.
+ */
+#ifdef __KERNEL__
+#define rdc_hide_var(v) OPTIMIZER_HIDE_VAR(v)
+#else
+#define rdc_hide_var(v) __asm__("" : "+r"(v))
+#endif
+
 #define RDC_MIN(a, b) ((a) < (b) ? (a) : (b))
 #define RDC_MAX(a, b) ((a) > (b) ? (a) : (b))
 #define RDC_ARRAY_SIZE(a) (sizeof(a) / sizeof((a)[0]))

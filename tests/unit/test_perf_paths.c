@@ -130,6 +130,9 @@ static void tp_random_dst(struct tp_pair *p, uint32_t *seed, uint32_t op)
 		s.base = (1u << 20) + (uint32_t)tdp_range(seed, 0, 3) *
 					      (tdp_rand(seed) % 2 ? 1 : 4);
 	}
+	/* rows whole DRAM rows apart: filled rectangles' closed form */
+	if (s.format == RDC_FMT_XRGB8888 && tdp_rand(seed) % 2)
+		s.stride = RDC_DRAM_ROW_BYTES * (s.width * 4 > 2048 ? 2 : 1);
 	tdp_set_surface(p->c[0], op, &s);
 	tdp_set_surface(p->c[1], op, &s);
 }
@@ -432,6 +435,109 @@ static void test_port_runs_match(void **state)
 	assert_true(a->perf.stall > 0);
 }
 
+/*
+ * rdc_port_window against the per-access calls, as test_port_runs_match:
+ * chip 0 charges random runs one at a time in a window (rdc_port_window_
+ * charge) and random row blocks in bulk (rdc_port_window_rows, whose
+ * closed form takes strides that are whole DRAM rows, 0 included), each
+ * refused one through the port call after closing the window; chip 1
+ * charges every run and row with rdc_port_span / rdc_port_column.
+ */
+static void test_port_window_match(void **state)
+{
+	struct tp_pair *p = *state;
+	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
+	struct rdc_port_window w;
+	struct rdc_port_run r;
+	uint32_t seed = 0x3b1du, round, i, n, k, done, stride, addr, len;
+	bool rows;
+
+	for (round = 0; round < 3000; round++) {
+		rows = tdp_rand(&seed) % 2;
+		switch (tdp_rand(&seed) % 4) {
+		case 0:
+			stride = (uint32_t)tdp_range(&seed, 0, 3) *
+				 RDC_DRAM_ROW_BYTES;
+			break;
+		case 1:
+			stride = (uint32_t)tdp_range(&seed, 1, 512) * 8;
+			break;
+		default:
+			stride = (uint32_t)tdp_range(&seed, 1, 5000);
+			break;
+		}
+		n = (uint32_t)tdp_range(&seed, 1, 40);
+		addr = tdp_rand(&seed) % (TDP_VRAM_SIZE + 64);
+		if (tdp_rand(&seed) % 4 == 0) /* rows running out of VRAM */
+			addr = TDP_VRAM_SIZE - (uint32_t)tdp_range(&seed, 0, 8) *
+						       stride;
+		len = (uint32_t)tdp_range(&seed, 0, 300);
+		if (tdp_rand(&seed) % 2)
+			len = (uint32_t)tdp_range(&seed, 1, 8);
+		rdc_port_window_open(a, &w);
+		for (i = 0; i < n;) {
+			r.addr = addr + i * stride;
+			r.len = len;
+			r.count = 1;
+			if (rows) {
+				done = rdc_port_window_rows(a, &w, r.addr, len,
+							    stride, n - i);
+				i += done;
+				if (i == n)
+					break;
+				r.addr = addr + i * stride;
+			} else {
+				/* spans and columns */
+				if (tdp_rand(&seed) % 2)
+					r.count = (uint32_t)tdp_range(&seed, 0,
+								      40);
+				if (rdc_port_window_charge(a, &w, &r, stride,
+							   RDC_BUS_WRITE)) {
+					if (r.count == 1)
+						rdc_port_span(b, r.addr, len,
+							      RDC_BUS_WRITE);
+					else
+						rdc_port_column(b, r.addr,
+								stride, r.count,
+								len,
+								RDC_BUS_WRITE);
+					i++;
+					continue;
+				}
+			}
+			rdc_port_window_close(a, &w);
+			if (r.count == 1)
+				rdc_port_span(a, r.addr, len, RDC_BUS_WRITE);
+			else
+				rdc_port_column(a, r.addr, stride, r.count,
+						len, RDC_BUS_WRITE);
+			if (!rows) {
+				if (r.count == 1)
+					rdc_port_span(b, r.addr, len,
+						      RDC_BUS_WRITE);
+				else
+					rdc_port_column(b, r.addr, stride,
+							r.count, len,
+							RDC_BUS_WRITE);
+			}
+			rdc_port_window_open(a, &w);
+			i++;
+		}
+		rdc_port_window_close(a, &w);
+		if (rows)
+			for (k = 0; k < n; k++)
+				rdc_port_span(b, addr + k * stride, len,
+					      RDC_BUS_WRITE);
+		assert_int_equal(a->now, b->now);
+		assert_int_equal(a->perf.stall, b->perf.stall);
+		assert_int_equal(a->bus.open_row, b->bus.open_row);
+		assert_int_equal(a->crtc.fetch_end, b->crtc.fetch_end);
+		rdc_port_idle_until(a, a->now + tdp_rand(&seed) % 3000);
+		rdc_port_idle_until(b, a->now);
+	}
+	assert_true(a->perf.stall > 0);
+}
+
 /* A bulk FIFO push is the register writes it stands for. */
 static void test_fifo_push_match(void **state)
 {
@@ -593,6 +699,8 @@ int main(void)
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_port_runs_match, tp_setup,
 						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_port_window_match,
+						tp_setup, tp_teardown),
 		cmocka_unit_test_setup_teardown(test_fifo_push_match, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_fill_model, tp_setup,
