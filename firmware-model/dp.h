@@ -57,23 +57,29 @@ struct rdc_dp_state {
 	uint32_t pat_mode; /* enum rdc_pattern_mode */
 	uint8_t pat_mono[8];
 	uint32_t pat_color[64];
-	/* SET_PEN: width 1..RDC_PEN_MAX_WIDTH, enum rdc_cap, enum rdc_join.
-	 * SET_DASH: bit (step + offset) % len of bits draws a step of a
-	 * path; len 0 is solid. */
+	/*
+	 * SET_PEN: width 1..RDC_PEN_MAX_WIDTH, enum rdc_cap, enum rdc_join.
+	 * SET_DASH: bit (step + offset) % len of bits draws a step of a path;
+	 * len 0 is solid.
+	 */
 	uint32_t pen_width, pen_cap, pen_join;
 	uint32_t dash_bits, dash_len, dash_offset;
 	/* SET_ALPHA, SET_COLORKEY, SET_AA_RAMP */
 	uint32_t alpha;
 	uint32_t colorkey, colorkey_on;
 	uint32_t aa_ramp;
-	/* SET_TRANSFORM / SET_VIEWPORT: m[row][col], signed 15.16, applied
-	 * by dp_xform; xf_identity caches "xf is the identity" so the
-	 * common case costs nothing */
+	/*
+	 * SET_TRANSFORM / SET_VIEWPORT: m[row][col], signed 15.16, applied by
+	 * dp_xform; xf_identity caches "xf is the identity" so the common case
+	 * costs nothing
+	 */
 	int32_t xf[3][3];
 	bool xf_identity;
 	/* SET_ZBUF */
-	/* SET_ZBUF: z_stride 0 = no depth surface; z_flags RDC_Z_TEST |
-	 * RDC_Z_WRITE, 0 = the surface is only cleared (CLEAR_Z) */
+	/*
+	 * SET_ZBUF: z_stride 0 = no depth surface; z_flags RDC_Z_TEST |
+	 * RDC_Z_WRITE, 0 = the surface is only cleared (CLEAR_Z)
+	 */
 	uint32_t z_base, z_stride, z_flags;
 };
 
@@ -111,28 +117,36 @@ struct rdc_dp {
 	/* READBACK progress */
 	uint32_t rb_row, rb_word, rb_words_per_row;
 
-	/* Staging for rows whose pixels differ (blit, host data, mono, text):
-	 * a row is written in pieces of at most RDC_DP_CHUNK pixels. */
+	/*
+	 * Staging for rows whose pixels differ (blit, host data, mono, text): a
+	 * row is written in pieces of at most RDC_DP_CHUNK pixels.
+	 */
 	uint32_t px[RDC_DP_CHUNK];
 	uint8_t on[RDC_DP_CHUNK];
 	/* READBACK words packed but not yet pushed to RDATA */
 	uint32_t rb_buf[RDC_DP_RB_CHUNK];
 	uint32_t rb_pos, rb_len;
 
-	/* Wide strokes (pen.c): the convex pieces and disks waiting to be
-	 * drawn as one union, row by row, and one row's spans of them */
+	/*
+	 * Wide strokes (pen.c): the convex pieces and disks waiting to be drawn
+	 * as one union, row by row, and one row's spans of them
+	 */
 	struct rdc_pen_piece pen_piece[RDC_DP_PEN_PIECES];
 	uint32_t pen_npieces;
 	int32_t pen_span[RDC_DP_PEN_PIECES][2];
 
-	/* AA_* (aa.c): 8-bit coverage of the pixels of the two runs a Wu
-	 * line builds at once (0: pixel left alone, 255: full FG) */
+	/*
+	 * AA_* (aa.c): 8-bit coverage of the pixels of the two runs a Wu line
+	 * builds at once (0: pixel left alone, 255: full FG)
+	 */
 	uint8_t aa_cov[2][RDC_DP_CHUNK];
 
-	/* FILL_POLYGON / TRIANGLE (poly.c): device-space points, the two
-	 * Sutherland-Hodgman vertex lists (16.16; `parent` names the line
-	 * the edge leaving the vertex lies on), the edge table (one bucket
-	 * per clip row) and the active edge table. */
+	/*
+	 * FILL_POLYGON / TRIANGLE (poly.c): device-space points, the two
+	 * Sutherland-Hodgman vertex lists (16.16; `parent` names the line the
+	 * edge leaving the vertex lies on), the edge table (one bucket per clip
+	 * row) and the active edge table.
+	 */
 	int32_t poly_xy[2 * RDC_CMD_MAX_ARGS];
 	struct rdc_dp_pvert {
 		int32_t x, y, parent;
@@ -145,21 +159,27 @@ struct rdc_dp {
 	uint16_t poly_et[RDC_SIZE_MAX];
 	uint16_t poly_aet[RDC_DP_POLY_VERTS];
 
-	/* FLOOD_FILL (flood.c): pending spans, and rows being scanned;
-	 * TRIANGLE (tri.c) keeps a run's depths in flood_row[0] */
+	/*
+	 * FLOOD_FILL (flood.c): pending spans, and rows being scanned; TRIANGLE
+	 * (tri.c) keeps a run's depths in flood_row[0]
+	 */
 	struct rdc_dp_fseg {
 		int16_t y, xl, xr, dy;
 	} flood_stk[RDC_DP_FLOOD_STACK];
 	uint32_t flood_row[3][RDC_DP_CHUNK];
 
-	/* Solid runs (lines, outlines, fills) queued for rdc_port_runs;
-	 * queue_spans: solid spans and columns go to the queue (raster.c) */
+	/*
+	 * Solid runs (lines, outlines, fills) queued for rdc_port_runs;
+	 * queue_spans: solid spans and columns go to the queue (raster.c)
+	 */
 	struct rdc_port_run runs[RDC_DP_CHUNK];
 	uint32_t nruns;
 	bool queue_spans;
-	/* Opaque MONO/TEXT in XRGB8888: the four pixels (VRAM bytes) of
-	 * each 4-bit group of glyph bits, for FG nibble_fg and BG nibble_bg
-	 * (valid once nibble_ok) */
+	/*
+	 * Opaque MONO/TEXT in XRGB8888: the four pixels (VRAM bytes) of each
+	 * 4-bit group of glyph bits, for FG nibble_fg and BG nibble_bg (valid
+	 * once nibble_ok)
+	 */
 	uint8_t nibble_px[16][16];
 	uint32_t nibble_fg, nibble_bg;
 	bool nibble_ok;

@@ -15,12 +15,16 @@
 struct rdc_rect rdc_dp_eff_clip(const struct rdc_dp *dp);
 
 void rdc_dp_pixel(struct rdc_dp *dp, int32_t x, int32_t y);
-/* skip_first/skip_last leave out the endpoint pixel (x0, y0) / (x1, y1);
- * POLYLINE uses them so shared vertices are drawn once. */
+/*
+ * skip_first/skip_last leave out the endpoint pixel (x0, y0) / (x1, y1);
+ * POLYLINE uses them so shared vertices are drawn once.
+ */
 void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		 int32_t y1, bool skip_first, bool skip_last);
-/* Steps [first, last] of the same line, step 0 being (x0, y0) and step
- * max(|dx|, |dy|) being (x1, y1): dashes draw their pieces with it. */
+/*
+ * Steps [first, last] of the same line, step 0 being (x0, y0) and step
+ * max(|dx|, |dy|) being (x1, y1): dashes draw their pieces with it.
+ */
 void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		       int32_t y1, int64_t first, int64_t last);
 /*
@@ -46,12 +50,16 @@ void rdc_dp_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb);
  */
 void rdc_dp_span_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 		    uint32_t solid, const uint32_t *vals, const uint8_t *on);
-/* Read pixels [xa, xa + n) of DST row y (inside DST) as one read span;
- * false (out untouched) if the span leaves VRAM. */
+/*
+ * Read pixels [xa, xa + n) of DST row y (inside DST) as one read span; false
+ * (out untouched) if the span leaves VRAM.
+ */
 bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 		    uint32_t *out);
-/* Pixel at bit offset `bit` from p in a surface of `bpp` bits per pixel
- * (sub-byte pixels MSB first); the store masks v to bpp bits. */
+/*
+ * Pixel at bit offset `bit` from p in a surface of `bpp` bits per pixel
+ * (sub-byte pixels MSB first); the store masks v to bpp bits.
+ */
 uint32_t rdc_dp_px_load(const uint8_t *p, unsigned int bpp, uint32_t bit);
 void rdc_dp_px_store(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v);
 
@@ -85,11 +93,15 @@ typedef void (*dp_span_fn)(struct rdc_dp *dp, int32_t y, int32_t xa,
 /* dp_fill_poly's pixels, one call per maximal run of a row. */
 void dp_poly_scan(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
 		  bool nonzero, dp_span_fn span, void *ctx);
-/* The pattern (or FG) at (x, y); false where a transparent pattern
- * leaves DST alone. */
+/*
+ * The pattern (or FG) at (x, y); false where a transparent pattern leaves DST
+ * alone.
+ */
 bool dp_pat_value(const struct rdc_dp *dp, int32_t x, int32_t y, uint32_t *v);
-/* Commands of pattern.c, poly.c, flood.c, tri.c; return an enum rdc_err.
- * len is the argument count, a the arguments, flags the header's. */
+/*
+ * Commands of pattern.c, poly.c, flood.c, tri.c; return an enum rdc_err. len is
+ * the argument count, a the arguments, flags the header's.
+ */
 uint32_t dp_cmd_set_pattern(struct rdc_dp *dp, uint32_t mode, uint32_t len,
 			    const uint32_t *a);
 uint32_t dp_cmd_fill_polygon(struct rdc_dp *dp, uint32_t flags, uint32_t len,
@@ -132,11 +144,15 @@ void rdc_dp_readback_pack(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
  * command with RDC_ERR_RANGE.  With the identity it only checks the range.
  */
 bool dp_xform(const struct rdc_dp *dp, int32_t *x, int32_t *y);
-/* Scale a size or radii pair by |m00| and |m11| (rounded; no rotation,
- * no projective division); false past RDC_SIZE_MAX. */
+/*
+ * Scale a size or radii pair by |m00| and |m11| (rounded; no rotation, no
+ * projective division); false past RDC_SIZE_MAX.
+ */
 bool dp_xform_size(const struct rdc_dp *dp, uint32_t *w, uint32_t *h);
-/* A vector (HERMITE's tangents): the linear part over m22, no
- * translation; false when m22 <= 0 or the result passes 2^20. */
+/*
+ * A vector (HERMITE's tangents): the linear part over m22, no translation;
+ * false when m22 <= 0 or the result passes 2^20.
+ */
 bool dp_xform_vec(const struct rdc_dp *dp, int32_t *x, int32_t *y);
 void dp_xform_reset(struct rdc_dp_state *st);
 /* SET_TRANSFORM and SET_VIEWPORT; return an enum rdc_err. */
@@ -178,9 +194,11 @@ void dp_stroke_rect(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 /* Width 1, no dash: the plain midpoint line. */
 bool dp_pen_plain(const struct rdc_dp *dp);
 uint64_t dp_isqrt(uint64_t v);
-/* Queue a convex polygon of 3 or 4 vertices in 24.8 for the stroke's
- * union; dp_pen_flush draws the queue by pixel centres, left and top
- * edges inclusive, each covered pixel once. */
+/*
+ * Queue a convex polygon of 3 or 4 vertices in 24.8 for the stroke's union;
+ * dp_pen_flush draws the queue by pixel centres, left and top edges inclusive,
+ * each covered pixel once.
+ */
 void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
 			unsigned int n);
 void dp_pen_flush(struct rdc_dp *dp);

@@ -95,8 +95,10 @@ static uint32_t word_px(const uint32_t *w, unsigned int bpp, uint32_t bit)
 
 #define FILL_BLOCK 64 /* bytes of pattern copied at a time */
 
-/* n XRGB8888 pixels of v: memset when the bytes agree, else a pattern
- * block the compiler turns into wide stores. */
+/*
+ * n XRGB8888 pixels of v: memset when the bytes agree, else a pattern block the
+ * compiler turns into wide stores.
+ */
 static void fill32(uint8_t *p, uint32_t v, uint32_t n)
 {
 	size_t len = (size_t)n * 4, i;
@@ -1180,48 +1182,80 @@ static void blit_span(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n)
  * the loop so each case is a plain loop the compiler can widen.
  */
 #define ROP_BLOCK 32u
-#define ROP_BYTES_CASE(r)                                                      \
-	case r:                                                                \
-		for (; len >= ROP_BLOCK; len -= ROP_BLOCK) {                   \
-			for (i = 0; i < ROP_BLOCK; i++)                        \
-				d[i] = (uint8_t)rdc_rop_apply(r, s[i], d[i]);  \
-			d += ROP_BLOCK;                                        \
-			s += ROP_BLOCK;                                        \
-		}                                                              \
-		for (i = 0; i < len; i++)                                      \
-			d[i] = (uint8_t)rdc_rop_apply(r, s[i], d[i]);          \
-		break
+static rdc_always_inline void rop_bytes_as(unsigned int r,
+					   uint8_t *restrict d,
+					   const uint8_t *restrict s,
+					   uint32_t len)
+{
+	uint32_t i;
+
+	for (; len >= ROP_BLOCK; len -= ROP_BLOCK) {
+		for (i = 0; i < ROP_BLOCK; i++)
+			d[i] = (uint8_t)rdc_rop_apply(r, s[i], d[i]);
+		d += ROP_BLOCK;
+		s += ROP_BLOCK;
+	}
+	for (i = 0; i < len; i++)
+		d[i] = (uint8_t)rdc_rop_apply(r, s[i], d[i]);
+}
 
 /*
  * d and s do not overlap; blocks of a fixed size with restrict let the
  * compiler use wide registers (kept out of line, where restrict holds).
  */
-static __attribute__((__noinline__)) void
+static rdc_noinline void
 rop_bytes(uint8_t *restrict d, const uint8_t *restrict s, uint32_t len,
 	  unsigned int rop)
 {
-	uint32_t i;
-
 	switch (rop) {
 	case RDC_ROP_COPY:
 		rdc_memcpy(d, s, len);
 		break;
-	ROP_BYTES_CASE(RDC_ROP_CLEAR);
-	ROP_BYTES_CASE(RDC_ROP_AND);
-	ROP_BYTES_CASE(RDC_ROP_AND_REVERSE);
-	ROP_BYTES_CASE(RDC_ROP_AND_INVERTED);
-	ROP_BYTES_CASE(RDC_ROP_NOOP);
-	ROP_BYTES_CASE(RDC_ROP_XOR);
-	ROP_BYTES_CASE(RDC_ROP_OR);
-	ROP_BYTES_CASE(RDC_ROP_NOR);
-	ROP_BYTES_CASE(RDC_ROP_EQUIV);
-	ROP_BYTES_CASE(RDC_ROP_INVERT);
-	ROP_BYTES_CASE(RDC_ROP_OR_REVERSE);
-	ROP_BYTES_CASE(RDC_ROP_COPY_INVERTED);
-	ROP_BYTES_CASE(RDC_ROP_OR_INVERTED);
-	ROP_BYTES_CASE(RDC_ROP_NAND);
+	case RDC_ROP_CLEAR:
+		rop_bytes_as(RDC_ROP_CLEAR, d, s, len);
+		break;
+	case RDC_ROP_AND:
+		rop_bytes_as(RDC_ROP_AND, d, s, len);
+		break;
+	case RDC_ROP_AND_REVERSE:
+		rop_bytes_as(RDC_ROP_AND_REVERSE, d, s, len);
+		break;
+	case RDC_ROP_AND_INVERTED:
+		rop_bytes_as(RDC_ROP_AND_INVERTED, d, s, len);
+		break;
+	case RDC_ROP_NOOP:
+		rop_bytes_as(RDC_ROP_NOOP, d, s, len);
+		break;
+	case RDC_ROP_XOR:
+		rop_bytes_as(RDC_ROP_XOR, d, s, len);
+		break;
+	case RDC_ROP_OR:
+		rop_bytes_as(RDC_ROP_OR, d, s, len);
+		break;
+	case RDC_ROP_NOR:
+		rop_bytes_as(RDC_ROP_NOR, d, s, len);
+		break;
+	case RDC_ROP_EQUIV:
+		rop_bytes_as(RDC_ROP_EQUIV, d, s, len);
+		break;
+	case RDC_ROP_INVERT:
+		rop_bytes_as(RDC_ROP_INVERT, d, s, len);
+		break;
+	case RDC_ROP_OR_REVERSE:
+		rop_bytes_as(RDC_ROP_OR_REVERSE, d, s, len);
+		break;
+	case RDC_ROP_COPY_INVERTED:
+		rop_bytes_as(RDC_ROP_COPY_INVERTED, d, s, len);
+		break;
+	case RDC_ROP_OR_INVERTED:
+		rop_bytes_as(RDC_ROP_OR_INVERTED, d, s, len);
+		break;
+	case RDC_ROP_NAND:
+		rop_bytes_as(RDC_ROP_NAND, d, s, len);
+		break;
 	default:
-		ROP_BYTES_CASE(RDC_ROP_SET);
+		rop_bytes_as(RDC_ROP_SET, d, s, len);
+		break;
 	}
 }
 

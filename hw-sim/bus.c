@@ -161,7 +161,7 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 }
 
 /* Cost of a column run of rdc_port_runs, RDC_NEVER if it is refused. */
-static __attribute__((__noinline__)) uint64_t
+static rdc_noinline uint64_t
 runs_column_cost(const struct rdc_hw *hw, const struct rdc_port_run *r,
 		 uint64_t stride, unsigned int kind, uint32_t *row)
 {
@@ -188,7 +188,7 @@ runs_column_cost(const struct rdc_hw *hw, const struct rdc_port_run *r,
  * is processed meanwhile, so lim holds for the whole batch.  Inlined with
  * kind a constant, the cost formula loses its switch.
  */
-static inline __attribute__((__always_inline__)) uint32_t
+static rdc_always_inline uint32_t
 runs_charge(const struct rdc_hw *hw, const struct rdc_port_run *r, uint32_t n,
 	    uint64_t stride, unsigned int kind, uint32_t *row, uint64_t *tp,
 	    uint64_t lim)

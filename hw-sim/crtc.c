@@ -182,7 +182,7 @@ static inline void convert_indexed(const uint32_t *clut, uint32_t *out,
  */
 #define XRGB_BLOCK 16u
 
-static __attribute__((__noinline__)) void
+static rdc_noinline void
 convert_xrgb(uint32_t *restrict out, const uint8_t *restrict src, uint32_t w)
 {
 	uint32_t k;

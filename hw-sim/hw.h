@@ -168,8 +168,10 @@ struct rdc_hw {
 	const struct rdc_dp_ops *dp_ops;
 	void *dp;
 	uint32_t dp_status; /* RDC_STATUS_DP_* bits the DP reports */
-	/* Set to 1 by a host CONTROL write with RDC_CONTROL_RESUME; the DP
-	 * leaves its halted state when it sees it and clears it. */
+	/*
+	 * Set to 1 by a host CONTROL write with RDC_CONTROL_RESUME; the DP
+	 * leaves its halted state when it sees it and clears it.
+	 */
 	uint32_t dp_resume;
 
 	/* listeners */
@@ -254,8 +256,10 @@ void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
 uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words,
 			  uint32_t n);
 
-/* Host access to VRAM through the aperture, at hw->now (not charged to the
- * DP).  Return 0, or -1 if the range leaves VRAM (nothing is copied). */
+/*
+ * Host access to VRAM through the aperture, at hw->now (not charged to the DP).
+ * Return 0, or -1 if the range leaves VRAM (nothing is copied).
+ */
 int rdc_hw_vram_read(struct rdc_hw *hw, uint32_t addr, void *buf, uint32_t len);
 int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 		      uint32_t len);
@@ -349,15 +353,18 @@ void rdc_hw_beam(struct rdc_hw *hw, uint32_t *x, uint32_t *y);
 /* The timing of a preset; 0, or -1 for an unknown preset. */
 int rdc_preset_timing(uint32_t preset, struct rdc_timing *t);
 
-/* ---- DP port: how the display processor reaches the chip ----------------
- * The DP touches VRAM, the queues, the CLUT and the IRQs only through
- * these.  Every VRAM access is charged to simulated time by the bus model
- * (bus.h) at hw->now and advances hw->now; scanout is brought up to date
- * first, so the access races the beam exactly as the model says.
+/*
+ * ---- DP port: how the display processor reaches the chip ---------------- The
+ * DP touches VRAM, the queues, the CLUT and the IRQs only through these.  Every
+ * VRAM access is charged to simulated time by the bus model (bus.h) at hw->now
+ * and advances hw->now; scanout is brought up to date first, so the access
+ * races the beam exactly as the model says.
  */
 
-/* Access kinds for rdc_port_span/rdc_port_column; OR in the PARTIAL flags
- * when the first/last byte is only partly written (sub-byte pixels). */
+/*
+ * Access kinds for rdc_port_span/rdc_port_column; OR in the PARTIAL flags when
+ * the first/last byte is only partly written (sub-byte pixels).
+ */
 #define RDC_BUS_READ 0u
 #define RDC_BUS_WRITE 1u
 #define RDC_BUS_RMW 2u /* read then write every beat (ROP reads dst) */
@@ -466,8 +473,10 @@ void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles);
 
 /* Words waiting in a source (0 for a ring that is disabled or in error). */
 uint32_t rdc_port_cmd_avail(struct rdc_hw *hw, unsigned int src);
-/* Pop up to n words from src into dst, charging the fetch (FIFO: 1 cycle a
- * word; ring: a VRAM read through the bus model).  Returns words popped. */
+/*
+ * Pop up to n words from src into dst, charging the fetch (FIFO: 1 cycle a
+ * word; ring: a VRAM read through the bus model).  Returns words popped.
+ */
 uint32_t rdc_port_cmd_pop(struct rdc_hw *hw, unsigned int src, uint32_t *dst,
 			  uint32_t n);
 
@@ -478,8 +487,10 @@ uint32_t rdc_port_rdata_push(struct rdc_hw *hw, const uint32_t *w, uint32_t n);
 /* CLUT write from the command stream (honours RDC_CONTROL_CLUT_LATCH). */
 void rdc_port_clut_write(struct rdc_hw *hw, uint32_t index, uint32_t rgb);
 
-/* REG_WRITE from the command stream: 0, or -1 if the register may not be
- * written from a command (queues, control, reset). */
+/*
+ * REG_WRITE from the command stream: 0, or -1 if the register may not be
+ * written from a command (queues, control, reset).
+ */
 int rdc_port_reg_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
 
 /* Raise interrupt status bits; record an error (sets RDC_IRQ_ERROR). */
@@ -487,9 +498,11 @@ void rdc_port_irq(struct rdc_hw *hw, uint32_t bits);
 void rdc_port_error(struct rdc_hw *hw, uint32_t code, uint32_t info);
 void rdc_port_fence(struct rdc_hw *hw, uint32_t value);
 
-/* When the next vertical blanking starts / the beam next starts `line`
- * (RDC_NEVER while scanout is stopped or line >= V_TOTAL): always a time
- * after hw->now, so a vblank or line start at hw->now itself has passed. */
+/*
+ * When the next vertical blanking starts / the beam next starts `line`
+ * (RDC_NEVER while scanout is stopped or line >= V_TOTAL): always a time after
+ * hw->now, so a vblank or line start at hw->now itself has passed.
+ */
 uint64_t rdc_port_next_vblank(struct rdc_hw *hw);
 uint64_t rdc_port_next_line(struct rdc_hw *hw, uint32_t line);
 

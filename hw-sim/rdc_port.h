@@ -44,6 +44,15 @@
 #define rdc_hide_var(v) __asm__("" : "+r"(v))
 #endif
 
+/* Inlining decisions the hot paths make on purpose. */
+#ifdef __KERNEL__
+#define rdc_noinline noinline
+#define rdc_always_inline __always_inline
+#else
+#define rdc_noinline __attribute__((__noinline__))
+#define rdc_always_inline inline __attribute__((__always_inline__))
+#endif
+
 #define RDC_MIN(a, b) ((a) < (b) ? (a) : (b))
 #define RDC_MAX(a, b) ((a) > (b) ? (a) : (b))
 #define RDC_ARRAY_SIZE(a) (sizeof(a) / sizeof((a)[0]))
