@@ -275,6 +275,23 @@ static int rdcfb_wait_check(struct rdcfb_chip *chip,
 }
 
 /*
+ * Between two pieces of a long run of the chip: drop the lock and give way.
+ * 0 with the lock taken again, or -EINTR (a fatal signal) or -ENODEV (the
+ * device is going) with it dropped.
+ */
+static int rdcfb_chip_pause(struct rdcfb_chip *chip, unsigned long *flags)
+{
+	spin_unlock_irqrestore(&chip->lock, *flags);
+	if (fatal_signal_pending(current))
+		return -EINTR;
+	if (READ_ONCE(chip->dying))
+		return -ENODEV;
+	cond_resched();
+	spin_lock_irqsave(&chip->lock, *flags);
+	return 0;
+}
+
+/*
  * Stepped: the core's wait, run in pieces of RDCFB_RUN_SLICE cycles with
  * the lock dropped between them (which never changes where it ends).
  */
@@ -283,6 +300,7 @@ static int rdcfb_wait_stepped(struct rdcfb_chip *chip, struct rdc_hw_wait *w)
 	struct rdc_hw *hw = &chip->hw;
 	enum rdc_hw_wait_result res;
 	unsigned long flags;
+	int err;
 
 	spin_lock_irqsave(&chip->lock, flags);
 	rdc_hw_wait_begin(hw, w);
@@ -291,13 +309,9 @@ static int rdcfb_wait_stepped(struct rdcfb_chip *chip, struct rdc_hw_wait *w)
 		rdcfb_irq_check_locked(chip);
 		if (res != RDC_HW_WAIT_MORE)
 			break;
-		spin_unlock_irqrestore(&chip->lock, flags);
-		if (fatal_signal_pending(current))
-			return -EINTR;
-		if (READ_ONCE(chip->dying))
-			return -ENODEV;
-		cond_resched();
-		spin_lock_irqsave(&chip->lock, flags);
+		err = rdcfb_chip_pause(chip, &flags);
+		if (err)
+			return err;
 	}
 	spin_unlock_irqrestore(&chip->lock, flags);
 	wake_up_all(&chip->waitq);
@@ -390,6 +404,7 @@ int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles)
 	struct rdc_hw *hw = &chip->hw;
 	unsigned long flags;
 	u64 end;
+	int err;
 
 	if (!chip->stepped)
 		return -EPERM;
@@ -407,13 +422,9 @@ int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles)
 		rdc_hw_run_until(hw, min_t(u64, end,
 					   hw->now + RDCFB_RUN_SLICE));
 		rdcfb_irq_check_locked(chip);
-		spin_unlock_irqrestore(&chip->lock, flags);
-		if (fatal_signal_pending(current))
-			return -EINTR;
-		if (READ_ONCE(chip->dying))
-			return -ENODEV;
-		cond_resched();
-		spin_lock_irqsave(&chip->lock, flags);
+		err = rdcfb_chip_pause(chip, &flags);
+		if (err)
+			return err;
 	}
 	spin_unlock_irqrestore(&chip->lock, flags);
 	wake_up_all(&chip->waitq);
