@@ -1502,6 +1502,26 @@ static inline void bits_write32(struct rdc_dp *dp, uint8_t *q,
 }
 
 /*
+ * bits_write32 for `rows` rows of exactly one whole byte of a MONO
+ * source (bx a multiple of 8, n 8, with the table), the console's 8-pixel
+ * glyph rows: the row loop without a call or the ragged-end tests per row.
+ */
+static inline void mono8_rows32(const struct rdc_dp *dp, uint8_t *q,
+				uint32_t stride, const struct row_src *rs,
+				uint32_t r, uint32_t bx, uint32_t rows)
+{
+	const uint32_t *d = rs->data + (size_t)r * rs->wpr;
+	uint32_t k;
+
+	for (k = 0; k < rows; k++, q += stride, d += rs->wpr) {
+		uint32_t byte = word_byte(d, bx / 8);
+
+		rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
+		rdc_memcpy(q + 16, dp->nibble_px[byte & 15], 16);
+	}
+}
+
+/*
  * dp->nibble_px for FG and BG (group v's pixel k is FG if bit 3 - k is
  * set), unless it holds them already.  False where the `n` pixels to draw
  * with it (all rows: an 8x16 glyph is 128) are too few to repay building
@@ -1552,13 +1572,14 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 	uint32_t addr, rows, done, r, k;
 	struct rdc_port_window w;
 	uint64_t pixels = 0;
-	bool table;
+	bool table, mono8;
 	uint8_t *p;
 
 	if (ya >= yb)
 		return;
 	table = nibble_fill(dp, rs->fg, rs->bg,
 			    (uint64_t)n * (uint64_t)(yb - ya));
+	mono8 = table && rs->kind == SRC_MONO && n == 8 && bx % 8 == 0;
 	addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
 	rows = (uint32_t)(yb - ya);
 	r = (uint32_t)(ya - y);
@@ -1566,8 +1587,16 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 	while (rows) {
 		done = rdc_port_window_rows(hw, &w, addr, n * 4, s->stride,
 					    rows);
-		for (k = 0; k < done; k++, r++, addr += s->stride)
-			bits_write32(dp, w.vram + addr, rs, r, bx, n, table);
+		if (mono8) {
+			mono8_rows32(dp, w.vram + addr, s->stride, rs, r, bx,
+				     done);
+			r += done;
+			addr += done * s->stride;
+		} else {
+			for (k = 0; k < done; k++, r++, addr += s->stride)
+				bits_write32(dp, w.vram + addr, rs, r, bx, n,
+					     table);
+		}
 		pixels += (uint64_t)done * n;
 		rows -= done;
 		if (!rows)

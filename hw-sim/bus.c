@@ -349,5 +349,5 @@ void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w)
 
 void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles)
 {
-	rdc_port_idle_until(hw, hw->now + cycles);
+	rdc_hw_idle_to(hw, hw->now + cycles);
 }

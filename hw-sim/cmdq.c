@@ -36,7 +36,7 @@ void rdc_fifo_push(struct rdc_hw *hw, uint32_t word)
 uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words,
 			  uint32_t n)
 {
-	uint32_t i;
+	uint32_t i, tail;
 
 	if (hw->in_reset)
 		return n;
@@ -46,10 +46,14 @@ uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words,
 			rdc_hw_write(hw, RDC_REG_FIFO_DATA, words[i]);
 		return n;
 	}
-	rdc_crtc_catch_up(hw, hw->now);
-	for (i = 0; i < n; i++)
-		hw->fifo[(hw->fifo_head + hw->fifo_count + i) % RDC_FIFO_DEPTH] =
-			words[i];
+	if (rdc_crtc_due(hw, hw->now))
+		rdc_crtc_catch_up(hw, hw->now);
+	/* copy into the ring in at most two pieces */
+	tail = (hw->fifo_head + hw->fifo_count) % RDC_FIFO_DEPTH;
+	i = RDC_MIN(n, RDC_FIFO_DEPTH - tail);
+	rdc_memcpy(hw->fifo + tail, words, i * sizeof(*words));
+	if (i < n)
+		rdc_memcpy(hw->fifo, words + i, (n - i) * sizeof(*words));
 	hw->fifo_count += n;
 	return n;
 }
@@ -117,11 +121,13 @@ static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 	n = RDC_MIN(n, hw->fifo_count);
 	if (!n)
 		return 0;
-	rdc_port_compute(hw, n * RDC_T_FIFO_WORD);
-	for (i = 0; i < n; i++) {
-		dst[i] = hw->fifo[hw->fifo_head];
-		hw->fifo_head = (hw->fifo_head + 1) % RDC_FIFO_DEPTH;
-	}
+	rdc_hw_idle_to(hw, hw->now + n * RDC_T_FIFO_WORD);
+	/* the ring holds the n words in at most two pieces */
+	i = RDC_MIN(n, RDC_FIFO_DEPTH - hw->fifo_head);
+	rdc_memcpy(dst, hw->fifo + hw->fifo_head, i * sizeof(*dst));
+	if (i < n)
+		rdc_memcpy(dst + i, hw->fifo, (n - i) * sizeof(*dst));
+	hw->fifo_head = (hw->fifo_head + n) % RDC_FIFO_DEPTH;
 	hw->fifo_count -= n;
 	if (before > hw->fifo_lowwater && hw->fifo_count <= hw->fifo_lowwater)
 		rdc_port_irq(hw, RDC_IRQ_FIFO_LOW);

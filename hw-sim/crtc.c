@@ -500,9 +500,5 @@ uint64_t rdc_port_next_line(struct rdc_hw *hw, uint32_t line)
 
 void rdc_port_idle_until(struct rdc_hw *hw, uint64_t t)
 {
-	if (t <= hw->now)
-		return;
-	if (hw->crtc.running && hw->crtc.next_line_time <= t)
-		rdc_crtc_catch_up(hw, t);
-	hw->now = t;
+	rdc_hw_idle_to(hw, t);
 }

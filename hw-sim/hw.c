@@ -187,7 +187,8 @@ static int hw_run(struct rdc_hw *hw, uint64_t t, bool stop_idle)
 {
 	int idle = 0;
 
-	rdc_crtc_catch_up(hw, hw->now);
+	if (rdc_crtc_due(hw, hw->now))
+		rdc_crtc_catch_up(hw, hw->now);
 	while (hw->now < t) {
 		uint64_t wake = RDC_NEVER;
 
@@ -212,7 +213,8 @@ static int hw_run(struct rdc_hw *hw, uint64_t t, bool stop_idle)
 			wake = hw->now + 1;
 		rdc_port_idle_until(hw, RDC_MIN(wake, t));
 	}
-	rdc_crtc_catch_up(hw, hw->now);
+	if (rdc_crtc_due(hw, hw->now))
+		rdc_crtc_catch_up(hw, hw->now);
 	return idle;
 }
 

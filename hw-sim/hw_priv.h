@@ -29,6 +29,26 @@ uint64_t rdc_bus_read_cost(uint32_t *row, uint64_t addr, uint64_t len);
 /* crtc.c */
 void rdc_crtc_reset(struct rdc_hw *hw);
 void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t);
+
+/*
+ * Does a scanout event fall at or before t?  If not, rdc_crtc_catch_up(hw,
+ * t) does nothing, and callers on hot paths skip the call.
+ */
+static inline bool rdc_crtc_due(const struct rdc_hw *hw, uint64_t t)
+{
+	return hw->crtc.running && hw->crtc.next_line_time <= t;
+}
+
+/* rdc_port_idle_until, inline for the chip's own hot paths. */
+static inline void rdc_hw_idle_to(struct rdc_hw *hw, uint64_t t)
+{
+	if (t <= hw->now)
+		return;
+	if (rdc_crtc_due(hw, t))
+		rdc_crtc_catch_up(hw, t);
+	hw->now = t;
+}
+
 void rdc_crtc_start(struct rdc_hw *hw);
 void rdc_crtc_stop(struct rdc_hw *hw);
 /* Does the next scanout event open a fetch window (an active line)? */

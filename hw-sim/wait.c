@@ -5,7 +5,22 @@
  * backend and the same script waiting through the kernel driver end their
  * waits at the same cycle and give the same frames and cycle counts.
  */
-#include "hw.h"
+#include "hw_priv.h"
+
+/*
+ * The register a condition tests.  FIFO_FREE, which the host's FIFO
+ * feeding waits on, is read as the register file would (a catch-up of
+ * the CRTC, then the value) without its dispatch; a traced chip reads it
+ * through the register file, so that the trace still shows the read.
+ */
+static uint32_t cond_read(struct rdc_hw *hw, uint32_t reg)
+{
+	if (reg != RDC_REG_FIFO_FREE || hw->trace_fn)
+		return rdc_hw_read(hw, reg);
+	if (rdc_crtc_due(hw, hw->now))
+		rdc_crtc_catch_up(hw, hw->now);
+	return RDC_FIFO_DEPTH - hw->fifo_count;
+}
 
 bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c)
 {
@@ -13,7 +28,7 @@ bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c)
 
 	if (c->test == RDC_WAIT_TEST_NONE)
 		return false;
-	v = rdc_hw_read(hw, c->reg) & c->mask;
+	v = cond_read(hw, c->reg) & c->mask;
 	switch (c->test) {
 	case RDC_WAIT_TEST_GE:
 		return v >= c->value;
@@ -24,6 +39,21 @@ bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c)
 	default:
 		return false;
 	}
+}
+
+/*
+ * STATUS's DP_HALTED bit, read as the register file would (a catch-up of
+ * the CRTC, then the bit) without working out the beam position for the
+ * rest of the register; a traced chip reads the register, so that the
+ * trace still shows the read.
+ */
+static bool dp_halted(struct rdc_hw *hw)
+{
+	if (hw->trace_fn)
+		return rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED;
+	if (rdc_crtc_due(hw, hw->now))
+		rdc_crtc_catch_up(hw, hw->now);
+	return hw->dp_status & RDC_STATUS_DP_HALTED;
 }
 
 void rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w)
@@ -47,8 +77,7 @@ enum rdc_hw_wait_result rdc_hw_wait_run(struct rdc_hw *hw,
 		 * STATUS reflects the DP as of its last run: after a RESUME it
 		 * reads halted until the chip has run, so judge only then.
 		 */
-		if (w->needs_dp && hw->now != w->start &&
-		    (rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED))
+		if (w->needs_dp && hw->now != w->start && dp_halted(hw))
 			return RDC_HW_WAIT_HALTED;
 		if (hw->now - w->start >= w->budget)
 			return RDC_HW_WAIT_TIMEOUT;

@@ -257,6 +257,11 @@ static void test_glyphs_match(void **state)
 				tp_cmd(p, RDC_OP_TEXT, fl, 2 + (n + 3) / 4, a);
 				continue;
 			}
+			if (i % 4 == 2) { /* a console glyph: 8 wide, 1..16 rows */
+				w = 8;
+				h = (uint32_t)tdp_range(&seed, 1, 16);
+				words = h;
+			}
 			a[1] = RDC_WH(w, h);
 			for (k = 0; k < words; k++)
 				a[2 + k] = tdp_rand(&seed);
@@ -578,6 +583,165 @@ static void test_fifo_push_match(void **state)
 }
 
 /*
+ * Bulk FIFO pushes and pops across the ring's end are the word-by-word
+ * ones: the same words in the same order, the same head, count, FIFO_LOW
+ * interrupt and cycles charged.
+ */
+static void test_fifo_ring_match(void **state)
+{
+	struct tp_pair *p = *state;
+	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
+	uint32_t w[RDC_FIFO_DEPTH], da[RDC_FIFO_DEPTH], db[RDC_FIFO_DEPTH];
+	uint32_t i, n, took, round;
+
+	rdc_hw_write(a, RDC_REG_CONTROL, RDC_CONTROL_SCANOUT_EN);
+	rdc_hw_write(b, RDC_REG_CONTROL, RDC_CONTROL_SCANOUT_EN);
+	for (round = 0; round < 5; round++) {
+		n = 90 + 37 * round; /* the head moves round the ring */
+		for (i = 0; i < n; i++)
+			w[i] = 0x10000u * round + i;
+		took = rdc_hw_fifo_push(a, w, n);
+		assert_int_equal(took, n);
+		for (i = 0; i < n; i++)
+			rdc_hw_write(b, RDC_REG_FIFO_DATA, w[i]);
+		assert_memory_equal(a->fifo, b->fifo, sizeof(a->fifo));
+		assert_int_equal(a->fifo_count, b->fifo_count);
+		assert_int_equal(rdc_port_cmd_pop(a, RDC_SRC_FIFO, da, n + 5),
+				 n);
+		for (i = 0; i < n; i++)
+			assert_int_equal(
+				rdc_port_cmd_pop(b, RDC_SRC_FIFO, db + i, 1),
+				1);
+		assert_memory_equal(da, w, n * sizeof(*w));
+		assert_memory_equal(db, w, n * sizeof(*w));
+		assert_int_equal(a->fifo_head, b->fifo_head);
+		assert_int_equal(a->fifo_count, 0);
+		assert_int_equal(b->fifo_count, 0);
+		assert_int_equal(a->now, b->now);
+		assert_int_equal(a->irq_status, b->irq_status);
+		assert_true(a->irq_status & RDC_IRQ_FIFO_LOW);
+	}
+	assert_true(a->fifo_head != 0);
+}
+
+/* What a frame listener sees: when each frame came, and the FIFO then. */
+struct tp_frames {
+	struct rdc_hw *hw;
+	unsigned int n;
+	uint64_t at[64];
+	uint32_t fifo[64];
+};
+
+static void tp_frame_seen(void *ctx, const uint32_t *xrgb, uint32_t width,
+			  uint32_t height, uint64_t frame_number)
+{
+	struct tp_frames *f = ctx;
+
+	(void)xrgb;
+	(void)width;
+	(void)height;
+	(void)frame_number;
+	if (f->n < RDC_ARRAY_SIZE(f->at)) {
+		f->at[f->n] = f->hw->now;
+		f->fifo[f->n] = f->hw->fifo_count;
+	}
+	f->n++;
+}
+
+static void tp_trace_none(void *ctx, uint64_t time, unsigned int event,
+			  uint32_t a, uint32_t b)
+{
+	(void)ctx;
+	(void)time;
+	(void)event;
+	(void)a;
+	(void)b;
+}
+
+/*
+ * n words into the FIFO as rdc_fifo_feed does, waiting for a varying
+ * FIFO_FREE; each wait's end cycle goes into *hash.  Returns the waits.
+ */
+static unsigned int tp_feed(struct rdc_hw *hw, const uint32_t *words,
+			    uint32_t n, uint64_t *hash)
+{
+	unsigned int waits = 0;
+	uint32_t i = 0;
+
+	while (i < n) {
+		uint32_t free_words = rdc_hw_read(hw, RDC_REG_FIFO_FREE);
+		struct rdc_hw_wait w = { 0 };
+
+		if (free_words) {
+			i += rdc_hw_fifo_push(hw, words + i,
+					      RDC_MIN(n - i, free_words));
+			continue;
+		}
+		w.term[0].test = RDC_WAIT_TEST_GE;
+		w.term[0].reg = RDC_REG_FIFO_FREE;
+		w.term[0].mask = ~0u;
+		/* thresholds of every size, so some fall on an exact level */
+		w.term[0].value = 1 + (waits * 37 + i) % RDC_FIFO_DEPTH;
+		w.needs_dp = true;
+		w.budget = 1u << 30;
+		rdc_hw_wait_begin(hw, &w);
+		assert_int_equal(rdc_hw_wait_run(hw, &w, RDC_NEVER),
+				 RDC_HW_WAIT_DONE);
+		*hash = *hash * 1000003u + hw->now;
+		waits++;
+	}
+	return waits;
+}
+
+/*
+ * A host feeding glyphs the way librdc's rdc_fifo_feed does: push what
+ * FIFO_FREE allows, else wait for half the FIFO.  The traced chip takes
+ * the register file for every read and word (the reference); the other
+ * the bulk push and the wait's direct FIFO_FREE and DP_HALTED reads.
+ * Both must end every wait at the same cycle, with frame listeners seeing
+ * the same frames at the same cycles and FIFO levels.
+ */
+static void test_wait_feed_match(void **state)
+{
+	struct tp_pair *p = *state;
+	struct tp_frames f[TP_CHIPS] = { { 0 } };
+	uint32_t seed = 0xfeedu, words[4096], n = 0, k, pass;
+	uint64_t ends[TP_CHIPS] = { 0 }; /* a hash of each wait's end */
+	unsigned int c, waits[TP_CHIPS] = { 0 };
+
+	rdc_hw_set_trace(&p->c[1]->hw, tp_trace_none, NULL);
+	for (c = 0; c < TP_CHIPS; c++) {
+		f[c].hw = &p->c[c]->hw;
+		rdc_hw_set_frame_fn(&p->c[c]->hw, tp_frame_seen, &f[c]);
+	}
+	while (n + 23 <= RDC_ARRAY_SIZE(words)) {
+		words[n++] = RDC_CMD(RDC_OP_SET_FG, 0, 1);
+		words[n++] = tdp_rand(&seed);
+		words[n++] = RDC_CMD(RDC_OP_SET_BG, 0, 1);
+		words[n++] = tdp_rand(&seed);
+		words[n++] = RDC_CMD(RDC_OP_MONO, 0, 2 + 16);
+		words[n++] = tp_xy(&seed);
+		words[n++] = RDC_WH(8, 16);
+		for (k = 0; k < 16; k++)
+			words[n++] = tdp_rand(&seed) >> 24;
+	}
+	/* some 2M cycles: a few frames at 70 Hz */
+	for (c = 0; c < TP_CHIPS; c++)
+		for (pass = 0; pass < 48; pass++)
+			waits[c] += tp_feed(&p->c[c]->hw, words, n, &ends[c]);
+	assert_int_equal(waits[0], waits[1]);
+	assert_true(waits[0] > 8);
+	assert_int_equal(ends[0], ends[1]);
+	tp_check(p);
+	assert_int_equal(f[0].n, f[1].n);
+	assert_true(f[0].n > 0);
+	k = RDC_MIN(f[0].n, RDC_ARRAY_SIZE(f[0].at));
+	assert_memory_equal(f[0].at, f[1].at, k * sizeof(f[0].at[0]));
+	assert_memory_equal(f[0].fifo, f[1].fifo, k * sizeof(f[0].fifo[0]));
+	tp_assert_raced(p);
+}
+
+/*
  * Solid fills of every width up to a few blocks, colours with equal and
  * unequal bytes: the model writes each pixel.
  */
@@ -703,6 +867,10 @@ int main(void)
 						tp_setup, tp_teardown),
 		cmocka_unit_test_setup_teardown(test_fifo_push_match, tp_setup,
 						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_fifo_ring_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_wait_feed_match,
+						tp_setup, tp_teardown),
 		cmocka_unit_test_setup_teardown(test_fill_model, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_scanout_xrgb_model,

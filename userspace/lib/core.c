@@ -178,23 +178,23 @@ static int rdc_track_reset(rdc_dev *dev)
 
 static void rdc_track_words(rdc_dev *dev, const uint32_t *w, size_t n)
 {
+	uint32_t op = dev->scan_op, left = dev->scan_left;
 	size_t i = 0;
 
+	/* the header walk runs in locals: most commands are a few words */
 	while (i < n) {
-		if (!dev->scan_left) {
-			dev->scan_op = RDC_CMD_OP(w[i]);
-			dev->scan_left = RDC_CMD_LEN(w[i]);
+		if (!left) {
+			op = RDC_CMD_OP(w[i]);
+			left = RDC_CMD_LEN(w[i]);
 			dev->scan_n = 0;
 			i++;
 			continue;
 		}
 		/* only the surfaces are tracked: other arguments skip whole */
-		if (dev->scan_op != RDC_OP_SET_DST &&
-		    dev->scan_op != RDC_OP_SET_SRC) {
-			uint32_t k = (uint32_t)RDC_MIN((size_t)dev->scan_left,
-						       n - i);
+		if (op != RDC_OP_SET_DST && op != RDC_OP_SET_SRC) {
+			uint32_t k = (uint32_t)RDC_MIN((size_t)left, n - i);
 
-			dev->scan_left -= k;
+			left -= k;
 			i += k;
 			continue;
 		}
@@ -202,16 +202,18 @@ static void rdc_track_words(rdc_dev *dev, const uint32_t *w, size_t n)
 			dev->scan_args[dev->scan_n] = w[i];
 		dev->scan_n++;
 		i++;
-		if (--dev->scan_left)
+		if (--left)
 			continue;
 		/* SET_DST/SET_SRC: base, stride, wh, format */
 		if (dev->scan_n == 4 && dev->scan_args[3] < RDC_FMT_COUNT) {
-			if (dev->scan_op == RDC_OP_SET_DST)
+			if (op == RDC_OP_SET_DST)
 				dev->dst_format = dev->scan_args[3];
 			else
 				dev->src_format = dev->scan_args[3];
 		}
 	}
+	dev->scan_op = op;
+	dev->scan_left = left;
 }
 
 int rdc_reset(rdc_dev *dev)
