@@ -231,6 +231,42 @@ static void test_convert_yuyv_exact_points(void **state)
 	}
 }
 
+/*
+ * A long row (the converter's wide path, where the host has one) gives
+ * for every pair what a row of just that pair gives (its plain path),
+ * byte for byte: extremes of every channel as well as random pixels.
+ */
+static void test_convert_yuyv_wide_equals_pairs(void **state)
+{
+	struct rdc_frame f, one;
+	uint32_t *px;
+	uint8_t *dst, out[4 + CONV_PAD];
+	size_t bpl;
+
+	(void)state;
+	px = conv_frame(&f, 333, 4, 0x5eed);
+	for (uint32_t k = 0; k < f.width; k += 3)	/* channel extremes */
+		px[f.stride + k] = (k & 8 ? 0x00ffffffu : 0) ^
+				   (0xffu << (8 * (k % 3)));
+	dst = conv_run(RDC_SINK_FMT_YUYV, &f, &bpl);
+	for (uint32_t y = 0; y < f.height; y++)
+		for (uint32_t x = 0; x < f.width; x += 2) {
+			one = (struct rdc_frame){
+				.xrgb = px + y * f.stride + x,
+				.width = x + 1 < f.width ? 2 : 1,
+				.height = 1,
+				.stride = 2,
+			};
+			assert_int_equal(rdc_sink_convert(RDC_SINK_FMT_YUYV,
+							  out, sizeof(out),
+							  &one),
+					 0);
+			assert_memory_equal(dst + y * bpl + x * 2, out, 4);
+		}
+	free(dst);
+	free(px);
+}
+
 static void test_convert_args(void **state)
 {
 	uint32_t px[4] = { 0 };
@@ -270,6 +306,7 @@ int main(void)
 		cmocka_unit_test(test_convert_rgb24),
 		cmocka_unit_test(test_convert_yuyv_model),
 		cmocka_unit_test(test_convert_yuyv_exact_points),
+		cmocka_unit_test(test_convert_yuyv_wide_equals_pairs),
 		cmocka_unit_test(test_convert_args),
 	};
 
