@@ -2,9 +2,9 @@
 /*
  * XRGB8888 to the V4L2 formats the v4l2 sink offers.  Each converter
  * walks a row at a time with no per-pixel branches; where the host has
- * SSE2, xrgb32 and yuyv do most of the row four pixel pairs or four
- * pixels at a time with exactly the plain loop's results, which finish
- * the row (test_sink_convert.c holds them to each other).
+ * SSE2, xrgb32, rgb24 and yuyv do most of the row four pixels or four
+ * pixel pairs at a time with exactly the plain loop's results, which
+ * finish the row (test_sink_convert.c holds them to each other).
  * bench/sink_bench.c measures them against memcpy.
  */
 #include <linux/videodev2.h>
@@ -162,6 +162,31 @@ static void row_rgb24(uint8_t *d, const uint32_t *s, uint32_t w)
 {
 	uint32_t x = 0;
 
+#if defined(__SSE2__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+	/*
+	 * Four pixels at a time: each lane becomes R | G << 8 | B << 16, two
+	 * lanes join into 6 bytes in each 64-bit half, and the halves go out
+	 * as two 8-byte stores 6 bytes apart.  The 2 bytes past the 12 are
+	 * the next pixel's, which is written after, so a pixel must follow.
+	 */
+	const __m128i ff = _mm_set1_epi32(0xff), ff00 = _mm_set1_epi32(0xff00);
+	const __m128i lo = _mm_set1_epi64x(0x0000000000ffffffll);
+	const __m128i hi = _mm_set1_epi64x(0x0000ffffff000000ll);
+
+	for (; x + 5 <= w; x += 4) {
+		__m128i v = _mm_loadu_si128((const __m128i *)(s + x));
+		__m128i p = _mm_or_si128(
+			_mm_or_si128(_mm_and_si128(_mm_srli_epi32(v, 16), ff),
+				     _mm_and_si128(v, ff00)),
+			_mm_slli_epi32(_mm_and_si128(v, ff), 16));
+		__m128i q = _mm_or_si128(_mm_and_si128(p, lo),
+					 _mm_and_si128(_mm_srli_epi64(p, 8), hi));
+
+		_mm_storel_epi64((__m128i *)(d + 3 * (size_t)x), q);
+		_mm_storel_epi64((__m128i *)(d + 3 * (size_t)x + 6),
+				 _mm_unpackhi_epi64(q, q));
+	}
+#endif
 #if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
 	/* One 4-byte store a pixel (R, G, B, then a byte the next pixel
 	 * overwrites); the last pixel of the row goes byte by byte so
