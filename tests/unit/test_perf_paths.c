@@ -373,6 +373,22 @@ static void test_aa_match(void **state)
 }
 
 /*
+ * The two chips' bus states agree (time, stalls, the open DRAM row, the
+ * scanout fetch); then both idle a little, so the next round starts in
+ * another place.
+ */
+static void tp_bus_same_then_idle(struct rdc_hw *a, struct rdc_hw *b,
+				  uint32_t *seed)
+{
+	assert_int_equal(a->now, b->now);
+	assert_int_equal(a->perf.stall, b->perf.stall);
+	assert_int_equal(a->bus.open_row, b->bus.open_row);
+	assert_int_equal(a->crtc.fetch_end, b->crtc.fetch_end);
+	rdc_port_idle_until(a, a->now + tdp_rand(seed) % 3000);
+	rdc_port_idle_until(b, a->now);
+}
+
+/*
  * rdc_port_runs against the per-access calls: chip 0 charges random runs
  * in bulk (and the run it stops at one by one, as a caller does), chip 1
  * charges each with rdc_port_span / rdc_port_column.  Same time, same
@@ -429,13 +445,7 @@ static void test_port_runs_match(void **state)
 				rdc_port_column(b, r[i].addr, stride,
 						r[i].count, r[i].len, kind);
 		}
-		assert_int_equal(a->now, b->now);
-		assert_int_equal(a->perf.stall, b->perf.stall);
-		assert_int_equal(a->bus.open_row, b->bus.open_row);
-		assert_int_equal(a->crtc.fetch_end, b->crtc.fetch_end);
-		/* idle a little, so the next round starts in another place */
-		rdc_port_idle_until(a, a->now + tdp_rand(&seed) % 3000);
-		rdc_port_idle_until(b, a->now);
+		tp_bus_same_then_idle(a, b, &seed);
 	}
 	assert_true(a->perf.stall > 0);
 }
@@ -533,12 +543,7 @@ static void test_port_window_match(void **state)
 			for (k = 0; k < n; k++)
 				rdc_port_span(b, addr + k * stride, len,
 					      RDC_BUS_WRITE);
-		assert_int_equal(a->now, b->now);
-		assert_int_equal(a->perf.stall, b->perf.stall);
-		assert_int_equal(a->bus.open_row, b->bus.open_row);
-		assert_int_equal(a->crtc.fetch_end, b->crtc.fetch_end);
-		rdc_port_idle_until(a, a->now + tdp_rand(&seed) % 3000);
-		rdc_port_idle_until(b, a->now);
+		tp_bus_same_then_idle(a, b, &seed);
 	}
 	assert_true(a->perf.stall > 0);
 }
