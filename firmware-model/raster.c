@@ -636,6 +636,13 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c,
 	uint64_t pixels = 0;
 	uint32_t fg = 0;
 	uint8_t pair[8];
+	/* u runs along the major axis, v steps across it */
+	const int32_t ulo = xmajor ? c->x0 : c->y0;
+	const int32_t uhi = xmajor ? c->x1 : c->y1;
+	const int32_t vlo = xmajor ? c->y0 : c->x0;
+	const int32_t vhi = xmajor ? c->y1 : c->x1;
+	const uint32_t umul = xmajor ? bytes : stride;
+	const uint32_t vmul = xmajor ? stride : bytes;
 
 	if (direct) {
 		if (nruns)
@@ -681,29 +688,16 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c,
 		a = u0 + (int32_t)run;
 		b = u0 + (int32_t)i;
 		r = direct ? &one : &dp->runs[nruns];
-		if (xmajor) {
-			if (v < c->y0 || v >= c->y1)
-				continue;
-			a = RDC_MAX(a, c->x0);
-			b = RDC_MIN(b, c->x1 - 1);
-			if (a > b)
-				continue;
-			r->addr = base + (uint32_t)v * stride +
-				  (uint32_t)a * bytes;
-			r->len = (uint32_t)(b - a + 1) * bytes;
-			r->count = 1;
-		} else {
-			if (v < c->x0 || v >= c->x1)
-				continue;
-			a = RDC_MAX(a, c->y0);
-			b = RDC_MIN(b, c->y1 - 1);
-			if (a > b)
-				continue;
-			r->addr = base + (uint32_t)a * stride +
-				  (uint32_t)v * bytes;
-			r->len = bytes;
-			r->count = (uint32_t)(b - a + 1);
-		}
+		if (v < vlo || v >= vhi)
+			continue;
+		a = RDC_MAX(a, ulo);
+		b = RDC_MIN(b, uhi - 1);
+		if (a > b)
+			continue;
+		/* a span along x, or a column along y */
+		r->addr = base + (uint32_t)v * vmul + (uint32_t)a * umul;
+		r->len = xmajor ? (uint32_t)(b - a + 1) * bytes : bytes;
+		r->count = xmajor ? 1 : (uint32_t)(b - a + 1);
 		if (direct) {
 			line_run(dp, &w, r, pair, &pixels);
 			continue;
