@@ -36,6 +36,30 @@ LIBS += $(shell $(PKG_CONFIG) --libs libvncserver)
 else
 $(info libvncserver not found (Debian: libvncserver-dev): building without the vnc sink)
 endif
+# The usb: backend and rdcd's FunctionFS listener need libusb-1.0 (the
+# listener itself only the kernel's FunctionFS headers); without it usb:
+# answers RDC_E_NOSYS.
+HAVE_USB := $(shell $(PKG_CONFIG) --exists libusb-1.0 2>/dev/null && echo 1)
+ifeq ($(HAVE_USB),1)
+USB_CFLAGS := -DRDC_HAVE_USB $(shell $(PKG_CONFIG) --cflags libusb-1.0)
+REL_CFLAGS += $(USB_CFLAGS)
+SAN_CFLAGS += $(USB_CFLAGS)
+LIBS += $(shell $(PKG_CONFIG) --libs libusb-1.0)
+else
+$(info libusb-1.0 not found (Debian: libusb-1.0-0-dev): building without the usb: backend)
+endif
+# GPIO lines (fbdev: pins, rdcd's gpio-sim bridge) need libgpiod's v2 API;
+# Debian 12 has it in bookworm-backports (scripts/deps.sh).
+HAVE_GPIOD := $(shell $(PKG_CONFIG) --atleast-version=2.0 libgpiod 2>/dev/null && echo 1)
+ifeq ($(HAVE_GPIOD),1)
+GPIOD_CFLAGS := -DRDC_HAVE_GPIOD $(shell $(PKG_CONFIG) --cflags libgpiod)
+REL_CFLAGS += $(GPIOD_CFLAGS)
+SAN_CFLAGS += $(GPIOD_CFLAGS)
+LIBS += $(shell $(PKG_CONFIG) --libs libgpiod)
+else
+$(info libgpiod >= 2.0 not found (Debian 12: libgpiod-dev from bookworm-backports): building without GPIO lines)
+endif
+LIBS += -lpthread
 CMOCKA_LIBS := $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 CORE_SRCS := $(sort $(wildcard hw-sim/*.c firmware-model/*.c))

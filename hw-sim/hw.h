@@ -67,6 +67,10 @@ enum rdc_trace_event {
 	RDC_TRACE_VBLANK, /* a = frame number (low 32 bits) */
 	RDC_TRACE_ERROR, /* a = enum rdc_err, b = ERR_INFO */
 	RDC_TRACE_RESET, /* chip reset (power-on, SOFT_RESET, RESET_N) */
+	RDC_TRACE_PINS, /* a = pin levels (RDC_PIN_*) now, b = pins changed */
+	RDC_TRACE_LINE, /* a = beam line starting, b = 1 in vertical blanking */
+	RDC_TRACE_DP, /* a = 1: the DP starts work, 0: it goes idle */
+	RDC_TRACE_FIFO, /* a = command FIFO level in words */
 };
 
 typedef void (*rdc_trace_fn)(void *ctx, uint64_t time, unsigned int event,

@@ -5,7 +5,11 @@
 # anyone else it prints the one apt-get line to run and fails.
 set -e
 
-PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev"
+PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev libusb-1.0-0-dev sigrok-cli"
+# libgpiod's v2 API (GPIO lines): Debian 13 has it in main; Debian 12 only
+# in bookworm-backports, which is enabled for these two packages alone
+# (apt-get -t for them, the rest stays on bookworm).
+GPIOD_PKGS="libgpiod-dev gpiod"
 # `--peers`: also the libraries `make bench-peers` measures rdc against.
 PEER_PKGS="libpixman-1-dev libcairo2-dev libsdl2-gfx-dev"
 [ "$1" = "--peers" ] && PKGS="$PKGS $PEER_PKGS"
@@ -16,15 +20,43 @@ for p in $PKGS; do
 		missing="$missing $p"
 	fi
 done
-[ -z "$missing" ] && exit 0
+gpiod_ok() {
+	pkg-config --atleast-version=2.0 libgpiod 2>/dev/null &&
+		command -v gpiomon >/dev/null 2>&1 &&
+		gpiomon --version 2>/dev/null | grep -q 'v2\.'
+}
+gpiod_missing=""
+gpiod_ok || gpiod_missing=1
+[ -z "$missing" ] && [ -z "$gpiod_missing" ] && exit 0
 
 if [ "$(id -u)" = 0 ]; then
-	echo "deps: installing$missing"
 	export DEBIAN_FRONTEND=noninteractive
-	apt-get install -y --no-install-recommends $missing >/dev/null ||
-		{ apt-get update >/dev/null && apt-get install -y --no-install-recommends $missing >/dev/null; }
+	if [ -n "$missing" ]; then
+		echo "deps: installing$missing"
+		apt-get install -y --no-install-recommends $missing >/dev/null ||
+			{ apt-get update >/dev/null && apt-get install -y --no-install-recommends $missing >/dev/null; }
+	fi
+	if [ -n "$gpiod_missing" ]; then
+		. /etc/os-release
+		target=""
+		if [ "${VERSION_CODENAME:-}" = bookworm ]; then
+			target="-t bookworm-backports"
+			src=/etc/apt/sources.list.d/rdc-backports.sources
+			if ! grep -rqs bookworm-backports /etc/apt/sources.list /etc/apt/sources.list.d; then
+				echo "deps: enabling bookworm-backports for $GPIOD_PKGS"
+				printf '%s\n' "Types: deb" "URIs: http://deb.debian.org/debian" \
+					"Suites: bookworm-backports" "Components: main" \
+					"Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg" >"$src"
+			fi
+			apt-get update >/dev/null
+		fi
+		echo "deps: installing $GPIOD_PKGS${target:+ ($target)}"
+		apt-get install -y --no-install-recommends $target $GPIOD_PKGS >/dev/null ||
+			echo "deps: libgpiod v2 could not be installed: building without GPIO lines" >&2
+	fi
 	exit 0
 fi
+[ -n "$gpiod_missing" ] && missing="$missing (and, from bookworm-backports: apt-get install -t bookworm-backports $GPIOD_PKGS)"
 echo "deps: missing Debian packages; run as root:" >&2
 echo "  apt-get install -y$missing" >&2
 exit 1

@@ -24,6 +24,8 @@
 #define RDCD_MAX_QUEUED_FRAMES 2u
 /* Longest wait or step a client may ask for: one simulated minute. */
 #define RDCD_MAX_BUDGET_S 60u
+/* Listeners on the chip's trace hook (trace.c). */
+#define RDCD_MAX_TRACE 4
 /* Frame sinks (--v4l2, --png, --vnc, --sink). */
 #define RDCD_MAX_SINKS 8
 /* Stepped mode: simulated cycles a pending wait runs per turn of the loop
@@ -111,6 +113,13 @@ struct rdcd {
 	rdc_sink *sinks[RDCD_MAX_SINKS];
 	unsigned int nsinks;
 
+	/* the chip's trace hook, fanned out (trace.c) */
+	struct {
+		rdc_trace_fn fn;
+		void *ctx;
+	} trace[RDCD_MAX_TRACE];
+	unsigned int ntrace;
+
 	/* pacing: simulated time pace_sim0 was wall time pace_wall0 */
 	uint64_t pace_wall0_ns, pace_sim0;
 };
@@ -130,5 +139,14 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c);
 /* After simulated time moved: finish pending requests, push IRQ events. */
 void rdcd_after_advance(struct rdcd *d);
 bool rdcd_has_pending(const struct rdcd *d);
+
+/*
+ * trace.c: listeners on the chip's trace hook (RDC_TRACE_*), kept across
+ * power cycles.  rdcd_trace_add: 0 or RDC_E_NOMEM when RDCD_MAX_TRACE are
+ * in use.  rdcd_trace_attach: (re)install the hook on d->hw.
+ */
+int rdcd_trace_add(struct rdcd *d, rdc_trace_fn fn, void *ctx);
+void rdcd_trace_remove(struct rdcd *d, rdc_trace_fn fn, void *ctx);
+void rdcd_trace_attach(struct rdcd *d);
 
 #endif /* RDCD_H */

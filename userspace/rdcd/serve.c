@@ -246,6 +246,7 @@ int rdcd_device_open(struct rdcd *d)
 	if (d->rec)
 		rdc_rec_attach(d->rec, d->dev);
 	rdc_hw_set_frame_fn(d->hw, rdcd_on_frame, d);
+	rdcd_trace_attach(d);
 	d->last_irq = 0;
 	return 0;
 }
