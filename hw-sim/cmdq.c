@@ -11,7 +11,10 @@
 void rdc_cmdq_reset(struct rdc_hw *hw)
 {
 	hw->fifo_head = 0;
-	hw->fifo_count = 0;
+	if (hw->fifo_count) {
+		hw->fifo_count = 0;
+		rdc_fifo_traced(hw);
+	}
 	hw->fifo_lowwater = RDC_FIFO_LOWWATER_RESET;
 	hw->rdata_head = 0;
 	hw->rdata_count = 0;
@@ -31,6 +34,7 @@ void rdc_fifo_push(struct rdc_hw *hw, uint32_t word)
 	}
 	hw->fifo[(hw->fifo_head + hw->fifo_count) % RDC_FIFO_DEPTH] = word;
 	hw->fifo_count++;
+	rdc_fifo_traced(hw);
 }
 
 uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words,
@@ -121,6 +125,7 @@ static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 	n = RDC_MIN(n, hw->fifo_count);
 	if (!n)
 		return 0;
+	rdc_dp_active(hw, 1);
 	rdc_hw_idle_to(hw, hw->now + n * RDC_T_FIFO_WORD);
 	/* the ring holds the n words in at most two pieces */
 	i = RDC_MIN(n, RDC_FIFO_DEPTH - hw->fifo_head);
@@ -129,6 +134,7 @@ static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 		rdc_memcpy(dst + i, hw->fifo, (n - i) * sizeof(*dst));
 	hw->fifo_head = (hw->fifo_head + n) % RDC_FIFO_DEPTH;
 	hw->fifo_count -= n;
+	rdc_fifo_traced(hw);
 	if (before > hw->fifo_lowwater && hw->fifo_count <= hw->fifo_lowwater)
 		rdc_port_irq(hw, RDC_IRQ_FIFO_LOW);
 	return n;
@@ -139,6 +145,8 @@ static uint32_t ring_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 	uint32_t got = 0;
 
 	n = RDC_MIN(n, rdc_ring_words(hw));
+	if (n)
+		rdc_dp_active(hw, 1);
 	while (got < n) {
 		uint32_t words = RDC_MIN(
 			n - got, (hw->ring_size - hw->ring_head) / WORD_BYTES);

@@ -272,7 +272,8 @@ static void cursor_line(const struct rdc_hw *hw, uint32_t *out, uint32_t n,
 /*
  * Start of active line n: the CRTC reads it and converts it at once.  The
  * bus sees every fetch; the conversion is skipped (`hidden`) for a frame
- * that nobody can ever look at.
+ * that nobody can ever look at.  While BL_EN is low the panel is dark: the
+ * line is fetched and timed as ever, and shows black (cursor included).
  */
 static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
 		       bool hidden)
@@ -280,6 +281,7 @@ static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t w = c->cur.h_display, bytes;
 	uint32_t *out = hw->frame[hw->frame_back] + (size_t)n * w;
+	bool lit = hw->pins_in & RDC_PIN_BL_EN;
 	uint64_t addr;
 
 	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
@@ -289,22 +291,27 @@ static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
 							 addr, bytes);
 		if (hidden)
 			return;
-		convert_line(hw, out, hw->vram + addr, w, c->cur_format);
+		if (lit)
+			convert_line(hw, out, hw->vram + addr, w,
+				     c->cur_format);
+		else
+			rdc_memset(out, 0, (size_t)w * sizeof(*out));
 	} else {
 		rdc_memset(out, 0, (size_t)w * sizeof(*out));
 	}
-	if (hw->control & RDC_CONTROL_CURSOR_EN)
+	if (lit && (hw->control & RDC_CONTROL_CURSOR_EN))
 		cursor_line(hw, out, n, w);
 }
 
-static void crtc_vblank(struct rdc_hw *hw)
+static void crtc_vblank(struct rdc_hw *hw, uint64_t when)
 {
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t w = c->cur.h_display, h = c->cur.v_display;
 	uint64_t number = c->frame_count;
 
 	c->in_vblank = 1;
-	rdc_port_irq(hw, RDC_IRQ_VBLANK);
+	rdc_irq_raise(hw, RDC_IRQ_VBLANK);
+	rdc_pins_update(hw, when); /* TE rises, IRQ with it if enabled */
 	hw->frame_back ^= 1;
 	hw->front_w = w;
 	hw->front_h = h;
@@ -371,15 +378,21 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 			c->frame_start + line_offset(hw, &c->cur, n + 1);
 		if (hw->now < when)
 			hw->now = when;
-		if (n == 0)
+		rdc_trace_at(hw, when, RDC_TRACE_LINE, n,
+			     n >= c->cur.v_display);
+		if (n == 0) {
 			c->in_vblank = 0;
+			rdc_pins_update(hw, when);
+		}
 		if (n < c->cur.v_display)
 			crtc_fetch(hw, n, when,
 				   !hw->frame_fn && t >= shown_until);
 		else if (n == c->cur.v_display)
-			crtc_vblank(hw);
-		if (n == c->line_compare)
-			rdc_port_irq(hw, RDC_IRQ_LINE);
+			crtc_vblank(hw, when);
+		if (n == c->line_compare) {
+			rdc_irq_raise(hw, RDC_IRQ_LINE);
+			rdc_pins_update(hw, when);
+		}
 	}
 }
 
@@ -394,6 +407,7 @@ void rdc_crtc_start(struct rdc_hw *hw)
 	crtc_latch(hw, false);
 	c->running = c->mode_valid;
 	c->in_vblank = 0;
+	rdc_pins_update(hw, hw->now);
 	c->next_line = 0;
 	if (!c->running) {
 		c->next_line_time = RDC_NEVER;
@@ -411,6 +425,7 @@ void rdc_crtc_stop(struct rdc_hw *hw)
 	c->running = 0;
 	c->in_vblank = 0;
 	c->next_line_time = RDC_NEVER;
+	rdc_pins_update(hw, hw->now);
 }
 
 void rdc_crtc_reset(struct rdc_hw *hw)

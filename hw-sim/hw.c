@@ -58,13 +58,16 @@ void rdc_hw_reset(struct rdc_hw *hw)
 		rdc_crtc_start(hw);
 	if (hw->dp_ops && hw->dp_ops->reset)
 		hw->dp_ops->reset(hw->dp);
+	rdc_dp_active(hw, 0);
+	rdc_pins_update(hw, hw->now);
 }
 
 /* ---- interrupts and errors ---------------------------------------------- */
 
 void rdc_port_irq(struct rdc_hw *hw, uint32_t bits)
 {
-	hw->irq_status |= bits & RDC_IRQ_ALL;
+	rdc_irq_raise(hw, bits);
+	rdc_pins_update(hw, hw->now);
 }
 
 void rdc_port_error(struct rdc_hw *hw, uint32_t code, uint32_t info)
@@ -90,14 +93,8 @@ static bool irq_line(const struct rdc_hw *hw)
 
 uint32_t rdc_hw_pins(struct rdc_hw *hw)
 {
-	uint32_t p = hw->pins_in;
-
 	rdc_crtc_catch_up(hw, hw->now);
-	if (hw->crtc.in_vblank)
-		p |= RDC_PIN_TE;
-	if (irq_line(hw))
-		p |= RDC_PIN_IRQ;
-	return p;
+	return rdc_pins_level(hw);
 }
 
 /*
@@ -115,6 +112,7 @@ void rdc_hw_set_pins(struct rdc_hw *hw, uint32_t pins_in)
 		hw->in_reset = hold;
 		rdc_hw_reset(hw);
 	}
+	rdc_pins_update(hw, hw->now);
 }
 
 /* ---- connections -------------------------------------------------------- */
@@ -197,8 +195,19 @@ static int hw_run(struct rdc_hw *hw, uint64_t t, bool stop_idle)
 			return 0;
 		}
 		if (hw->dp_ops && hw->dp_ops->run &&
-		    (hw->control & RDC_CONTROL_DP_EN))
+		    (hw->control & RDC_CONTROL_DP_EN)) {
+			/* runs on in a command or list it was in */
+			if (hw->dp_status & RDC_STATUS_DP_BUSY)
+				rdc_dp_active(hw, 1);
 			wake = hw->dp_ops->run(hw->dp, t);
+			/*
+			 * Out of work: a DP stopped at `t` with words waiting
+			 * returns a wake time and stays busy.
+			 */
+			if (wake == RDC_NEVER &&
+			    !(hw->dp_status & RDC_STATUS_DP_BUSY))
+				rdc_dp_active(hw, 0);
+		}
 		if (hw->now >= t)
 			break;
 		if (stop_idle && wake == RDC_NEVER) {
@@ -436,6 +445,8 @@ static void control_write(struct rdc_hw *hw, uint32_t val)
 	if (val & RDC_CONTROL_RESUME)
 		hw->dp_resume = 1;
 	hw->control = val & CONTROL_RW_BITS;
+	if (!(hw->control & RDC_CONTROL_DP_EN))
+		rdc_dp_active(hw, 0);
 	if ((old ^ hw->control) & RDC_CONTROL_SCANOUT_EN) {
 		if (hw->control & RDC_CONTROL_SCANOUT_EN)
 			rdc_crtc_start(hw);
@@ -482,9 +493,11 @@ static bool crtc_side_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
 			hw->err_code = RDC_ERR_NONE;
 			hw->err_info = 0;
 		}
+		rdc_pins_update(hw, hw->now);
 		return true;
 	case RDC_REG_IRQ_ENABLE:
 		hw->irq_enable = val & RDC_IRQ_ALL;
+		rdc_pins_update(hw, hw->now);
 		return true;
 	case RDC_REG_FB_BASE:
 		c->fb_base = val;

@@ -59,7 +59,27 @@ struct rdc_dp_ops {
 typedef void (*rdc_frame_fn)(void *ctx, const uint32_t *xrgb, uint32_t width,
 			     uint32_t height, uint64_t frame_number);
 
-/* Trace points, for tests, replay logs and debugging (rdc_hw_set_trace). */
+/*
+ * Trace points, for tests, replay logs, waveforms and debugging
+ * (rdc_hw_set_trace).  `time` is the simulated cycle the event happens at,
+ * also for scanout events processed late (a line start is stamped with its
+ * own start time, not with the time the chip caught up to), and the events
+ * come in time order.  The signal events fire on changes only:
+ *  - PINS: once for every change of the pin levels, TE (high from the
+ *    start of line V_DISPLAY to the start of line 0), IRQ (IRQ_STATUS &
+ *    IRQ_ENABLE != 0: raised, W1C clear, enable write, reset), RESET_N and
+ *    BL_EN (rdc_hw_set_pins); pins that change at the same step (TE and
+ *    IRQ at a vblank) come as one event with both bits in b.
+ *  - LINE: at every line start, also of frames not converted (a long
+ *    rdc_hw_run_until); V_TOTAL of them a frame.
+ *  - DP: 1 when the DP takes a command word while idle (or runs on in a
+ *    command or display list it was in), 0 when it runs out of work it can
+ *    do: queues empty and no command in progress, or halted (DP_EN off and
+ *    a reset count too).  A DP stopped in the middle of a command (waiting
+ *    for FIFO words, RDATA space, a vblank) stays 1, as STATUS.DP_BUSY.
+ *  - FIFO: the command FIFO's level after every push, pop or reset that
+ *    changes it (a pop is stamped at the end of its fetch).
+ */
 enum rdc_trace_event {
 	RDC_TRACE_REG_READ, /* a = offset, b = value read */
 	RDC_TRACE_REG_WRITE, /* a = offset, b = value written (host) */
@@ -188,6 +208,12 @@ struct rdc_hw {
 
 	rdc_trace_fn trace_fn; /* optional */
 	void *trace_ctx;
+	/*
+	 * Levels as last reported, kept with or without a tracer so that
+	 * RDC_TRACE_PINS / RDC_TRACE_DP fire on changes only.
+	 */
+	uint32_t pins_out; /* RDC_PIN_* */
+	int dp_active; /* the DP has work or is inside a command */
 };
 
 /* ---- Host side ----------------------------------------------------------- */

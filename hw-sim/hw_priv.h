@@ -17,6 +17,62 @@ static inline void rdc_trace(struct rdc_hw *hw, unsigned int event, uint32_t a,
 		hw->trace_fn(hw->trace_ctx, hw->now, event, a, b);
 }
 
+/* A trace point at its own time (a scanout event processed in a catch-up). */
+static inline void rdc_trace_at(struct rdc_hw *hw, uint64_t time,
+				unsigned int event, uint32_t a, uint32_t b)
+{
+	if (hw->trace_fn)
+		hw->trace_fn(hw->trace_ctx, time, event, a, b);
+}
+
+/* Pin levels from the state, without catching up (hw.c's rdc_hw_pins does). */
+static inline uint32_t rdc_pins_level(const struct rdc_hw *hw)
+{
+	uint32_t p = hw->pins_in;
+
+	if (hw->crtc.in_vblank)
+		p |= RDC_PIN_TE;
+	if (hw->irq_status & hw->irq_enable)
+		p |= RDC_PIN_IRQ;
+	return p;
+}
+
+/*
+ * After anything that may move a pin (vblank state, IRQ status or enable,
+ * the inputs): one RDC_TRACE_PINS at `time` if the levels differ from the
+ * last ones reported.
+ */
+static inline void rdc_pins_update(struct rdc_hw *hw, uint64_t time)
+{
+	uint32_t p = rdc_pins_level(hw), changed = p ^ hw->pins_out;
+
+	if (!changed)
+		return;
+	hw->pins_out = p;
+	rdc_trace_at(hw, time, RDC_TRACE_PINS, p, changed);
+}
+
+/* Raise IRQ status bits; the caller updates the pins (rdc_port_irq does). */
+static inline void rdc_irq_raise(struct rdc_hw *hw, uint32_t bits)
+{
+	hw->irq_status |= bits & RDC_IRQ_ALL;
+}
+
+/* The DP's busy level for RDC_TRACE_DP, reported at hw->now on a change. */
+static inline void rdc_dp_active(struct rdc_hw *hw, int active)
+{
+	if (hw->dp_active == active)
+		return;
+	hw->dp_active = active;
+	rdc_trace(hw, RDC_TRACE_DP, (uint32_t)active, 0);
+}
+
+/* The command FIFO's level changed: RDC_TRACE_FIFO at hw->now. */
+static inline void rdc_fifo_traced(struct rdc_hw *hw)
+{
+	rdc_trace(hw, RDC_TRACE_FIFO, hw->fifo_count, 0);
+}
+
 /* bus.c: charge a VRAM access at hw->now, racing scanout; advances now. */
 void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 		    unsigned int kind);
