@@ -89,3 +89,134 @@ finish() {
 	echo "1..$n"
 	[ $failed -eq 0 ]
 }
+
+# ---- USB: the RDC-1 as a USB device on the guest's own bus (docs/usb.md) ----
+# rdcd serves FunctionFS (--listen ffs:) behind a configfs gadget
+# (scripts/rdc-gadget.sh) bound to dummy_hcd's UDC, so the guest is both
+# the device and the host.  Tests declare:
+#   # vm-module: dummy_hcd
+#   # vm-module: libcomposite
+#   # vm-module: usb_f_fs
+# usb_require exits 77 (skip) saying why when that cannot work here.
+GADGET=$RDC_TREE/scripts/rdc-gadget.sh
+USB_RDCD=${USB_RDCD:-$B/rdcd} # rdcd to run (a test may pick san/rdcd)
+USB_VID=1209
+USB_PID=0001
+USB_SERIAL=rdcvm$$
+USB_FFS=/dev/ffs-rdc
+USB_SOCK=$T/rdc.sock       # rdcd's UNIX socket beside the gadget
+USB_RDCD_LOG=$T/rdcd.log
+USB_RDCD_PID=""
+USB_SYSFS=""               # /sys/bus/usb/devices/B-P once enumerated
+USB_BUSNUM=""
+USB_DEVNUM=""
+export RDC_GADGET_STATE=$T/gadget
+
+usb_require() {
+	if ! [ -x "$USB_RDCD" ] || ! "$USB_RDCD" --help | grep -q 'ffs:'; then
+		echo "rdcd is not built, or has no ffs: listener"
+		exit 77
+	fi
+	if ! grep -q configfs /proc/mounts; then
+		mount -t configfs none /sys/kernel/config 2>/dev/null
+	fi
+	if ! [ -d /sys/kernel/config/usb_gadget ]; then
+		echo "no configfs usb_gadget (libcomposite not loaded?)"
+		exit 77
+	fi
+	if [ -z "$(ls /sys/class/udc 2>/dev/null)" ]; then
+		echo "no UDC (dummy_hcd not loaded?)"
+		exit 77
+	fi
+}
+
+# usb_find: set USB_SYSFS, USB_BUSNUM, USB_DEVNUM for our device (by
+# VID:PID and serial); false if it is not on the bus.
+usb_find() {
+	for u in /sys/bus/usb/devices/*; do
+		[ -r "$u/idVendor" ] && [ -r "$u/serial" ] || continue
+		[ "$(cat "$u/idVendor")" = $USB_VID ] &&
+			[ "$(cat "$u/idProduct")" = $USB_PID ] &&
+			[ "$(cat "$u/serial")" = "$USB_SERIAL" ] || continue
+		# configured, and its interface bound or at least listed
+		[ "$(cat "$u/bConfigurationValue" 2>/dev/null)" = 1 ] || continue
+		USB_SYSFS=$u
+		USB_BUSNUM=$(cat "$u/busnum")
+		USB_DEVNUM=$(cat "$u/devnum")
+		return 0
+	done
+	USB_SYSFS=""
+	return 1
+}
+
+# usb_wait present|gone SECONDS
+usb_wait() {
+	i=0
+	while [ $i -lt $(($2 * 10)) ]; do
+		if usb_find; then
+			[ "$1" = present ] && return 0
+		else
+			[ "$1" = gone ] && return 0
+		fi
+		sleep 0.1
+		i=$((i + 1))
+	done
+	echo "usb: device $USB_VID:$USB_PID serial $USB_SERIAL not $1 after $2 s"
+	return 1
+}
+
+# usb_gadget_up [RDCD_ARGS...]: rdcd --stepped --listen ffs:$USB_FFS
+# --listen unix:$USB_SOCK ARGS (pid $USB_RDCD_PID, log $USB_RDCD_LOG), the
+# gadget bound to the first UDC; returns once the host side has it
+# configured (USB_SYSFS, USB_BUSNUM, USB_DEVNUM set).
+usb_gadget_up() {
+	"$GADGET" up --dir "$USB_FFS" --serial "$USB_SERIAL" \
+		>"$T/gadget.log" 2>&1 || { cat "$T/gadget.log"; return 1; }
+	rm -f "$USB_SOCK" "$T/rdcd.ready"
+	"$USB_RDCD" --stepped --listen "ffs:$USB_FFS" --listen "unix:$USB_SOCK" \
+		--ready-file "$T/rdcd.ready" "$@" >"$USB_RDCD_LOG" 2>&1 &
+	USB_RDCD_PID=$!
+	i=0
+	while ! [ -s "$T/rdcd.ready" ]; do
+		if [ $i -ge 300 ] || ! kill -0 $USB_RDCD_PID 2>/dev/null; then
+			echo "usb: rdcd did not start"
+			sed 's/^/    rdcd: /' "$USB_RDCD_LOG"
+			return 1
+		fi
+		sleep 0.1
+		i=$((i + 1))
+	done
+	"$GADGET" bind >>"$T/gadget.log" 2>&1 ||
+		{ cat "$T/gadget.log"; return 1; }
+	usb_wait present 30
+}
+
+# usb_gadget_down: unplug, stop rdcd (SIGTERM), remove the gadget, show
+# rdcd's log; returns rdcd's exit status.
+usb_gadget_down() {
+	rc=0
+	"$GADGET" unbind >/dev/null 2>&1
+	if [ -n "$USB_RDCD_PID" ]; then
+		kill -TERM $USB_RDCD_PID 2>/dev/null
+		wait $USB_RDCD_PID
+		rc=$?
+		USB_RDCD_PID=""
+		sed 's/^/    rdcd: /' "$USB_RDCD_LOG"
+	fi
+	"$GADGET" down || rc=1
+	return $rc
+}
+
+# usb_unplug / usb_replug: unbind the gadget from its UDC (the host sees a
+# disconnect) and bind it again; each waits for the host side to agree.
+usb_unplug() {
+	"$GADGET" unbind && usb_wait gone 20
+}
+
+usb_replug() {
+	"$GADGET" bind && usb_wait present 20
+}
+
+usb_rdcd_alive() {
+	[ -n "$USB_RDCD_PID" ] && kill -0 $USB_RDCD_PID 2>/dev/null
+}

@@ -88,7 +88,9 @@ static void usage(FILE *f)
 	      "                   unix: at $XDG_RUNTIME_DIR/rdc/rdc.sock, else\n"
 	      "                   /tmp/rdc-$UID/rdc.sock.  TCP with an empty HOST\n"
 	      "                   is 127.0.0.1; any other than loopback needs\n"
-	      "                   --token.  PORT 0: the kernel picks one\n"
+	      "                   --token.  PORT 0: the kernel picks one.\n"
+	      "                   ffs:DIR: the RDC-1 as a USB device on the\n"
+	      "                   functionfs mounted at DIR (docs/usb.md)\n"
 	      "  --fast           run unpaced, as fast as the host allows\n"
 	      "  --stepped        time moves only when the controlling client\n"
 	      "                   waits or steps, as on sim: (reproducible)\n"
@@ -311,13 +313,17 @@ static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
 	l = &d->lis[d->nlis];
 	memset(l, 0, sizeof(*l));
 	l->fd = -1;
-	if (!strncmp(uri, "unix:", 5))
+	if (!strncmp(uri, "unix:", 5)) {
 		ret = rdcd_listen_unix(d, l, uri + 5, group);
-	else if (!strncmp(uri, "tcp:", 4))
+	} else if (!strncmp(uri, "tcp:", 4)) {
 		ret = rdcd_listen_tcp(d, l, uri + 4);
-	else {
-		rdcd_log(d, RDCD_LOG_ERR, "%s: want unix:PATH or tcp:HOST:PORT",
-			 uri);
+	} else if (!strncmp(uri, "ffs:", 4)) {
+		l->fd = rdcd_ffs_open(d, uri + 4, &l->ffs);
+		snprintf(l->uri, sizeof(l->uri), "%s", uri);
+		ret = l->fd < 0 ? -1 : 0;
+	} else {
+		rdcd_log(d, RDCD_LOG_ERR,
+			 "%s: want unix:PATH, tcp:HOST:PORT or ffs:DIR", uri);
 		return -1;
 	}
 	if (ret)
@@ -330,6 +336,10 @@ static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
 
 static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 {
+	if (l->ffs) {
+		rdcd_ffs_accept(d, l->ffs);
+		return;
+	}
 	for (;;) {
 		struct sockaddr_storage ss;
 		socklen_t sl = sizeof(ss);
@@ -736,7 +746,10 @@ out:
 		rdcd_client_free(&d, d.clients);
 	}
 	for (unsigned int i = 0; i < d.nlis; i++) {
-		close(d.lis[i].fd);
+		if (d.lis[i].ffs)
+			rdcd_ffs_close(d.lis[i].ffs); /* closes fd */
+		else
+			close(d.lis[i].fd);
 		if (d.lis[i].path[0])
 			unlink(d.lis[i].path);
 	}

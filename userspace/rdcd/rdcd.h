@@ -79,11 +79,14 @@ struct rdcd_client {
 	uint32_t prev_w, prev_h;
 };
 
+struct rdcd_ffs;
+
 struct rdcd_listener {
 	int fd;
 	bool tcp, need_token;
 	char path[sizeof(((struct sockaddr_un *)0)->sun_path)];
 	char uri[160];
+	struct rdcd_ffs *ffs; /* ffs: (USB device): fd wakes for a session */
 };
 
 struct rdcd {
@@ -139,6 +142,18 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c);
 /* After simulated time moved: finish pending requests, push IRQ events. */
 void rdcd_after_advance(struct rdcd *d);
 bool rdcd_has_pending(const struct rdcd *d);
+
+/*
+ * ffs.c: the FunctionFS listener (ffs:DIR, the RDC-1 as a USB device).
+ * rdcd_ffs_open: writes the descriptors to DIR/ep0 and starts the bridge
+ * threads; returns the fd to poll (readable when a host configured the
+ * device), or -1.  rdcd_ffs_accept: a client for the new USB session.
+ * rdcd_ffs_close: stops the threads (the gadget leaves its UDC).
+ */
+int rdcd_ffs_open(const struct rdcd *d, const char *dir,
+		  struct rdcd_ffs **out);
+void rdcd_ffs_accept(struct rdcd *d, struct rdcd_ffs *f);
+void rdcd_ffs_close(struct rdcd_ffs *f);
 
 /*
  * trace.c: listeners on the chip's trace hook (RDC_TRACE_*), kept across

@@ -1,0 +1,901 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * rdcd's FunctionFS listener (`--listen ffs:DIR`): the RDC-1 as a USB
+ * device (rdc_usb.h, docs/usb.md).
+ *
+ * FunctionFS endpoint files do not poll and block in read and write, so
+ * the USB side lives in four small threads and reaches rdcd's loop as an
+ * ordinary stream socket: each USB session is a socketpair whose daemon
+ * end is served by serve.c like any unix: or tcp: client.
+ *
+ *   ep0   descriptors and strings at start; then events: ENABLE starts a
+ *         session (the listener's eventfd wakes the loop, which accepts
+ *         the daemon end), DISABLE and UNBIND end it, the vendor RESET
+ *         request ends it and starts another, INFO is answered here.
+ *   out   bulk OUT -> the session's socket (a byte stream: no sizes are
+ *         taken from the host here; serve.c checks every message).
+ *   in    the session's socket -> bulk IN, except RDC_MSG_EV_IRQ
+ *         messages, which it recognises by their header and hands to
+ *   irq   -> interrupt IN, one event per transfer, from a bounded queue
+ *         (a host that never reads it loses the oldest events, and its
+ *         replies on bulk IN are not held up).
+ *
+ * A session ends by shutting its socket down (serve.c then frees the
+ * client and whatever control it had) and by waking every thread out of
+ * its blocking call with a signal, so no byte of an ended session reaches
+ * the next one: the generation counter `gen` tells a thread its session
+ * is gone, and the ep0 thread waits until each has seen the new one.  When
+ * rdcd hangs up on a session itself (a fatal protocol error), the bulk
+ * endpoints are halted: the host sees a stall and sends RESET.
+ */
+#include <endian.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <linux/usb/ch9.h>
+#include <linux/usb/functionfs.h>
+#include <poll.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/eventfd.h>
+#include <sys/socket.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "rdc_usb.h"
+#include "rdcd.h"
+
+/* Bytes moved per read or write on the bulk endpoints and the socket. */
+#define FFS_BUF (64u << 10)
+/* Interrupt events queued for the interrupt endpoint. */
+#define FFS_IRQ_QUEUE 64u
+/* The interface string (the device strings come from the gadget). */
+#define FFS_INTF_STR "RDC-1 display controller"
+
+enum ffs_ep { FFS_EP_OUT, FFS_EP_IN, FFS_EP_IRQ, FFS_NEP };
+enum ffs_thread { FFS_T_OUT, FFS_T_IN, FFS_T_IRQ, FFS_T_EP0, FFS_NT };
+/* The data threads: those a session's end must wait for. */
+#define FFS_NDATA FFS_T_EP0
+
+struct rdcd_ffs {
+	const struct rdcd *d; /* for logging */
+	char dir[128];
+	int ep0, ep[FFS_NEP];
+	int wake; /* eventfd: the listener's fd in rdcd's loop */
+	int stopfd; /* eventfd: wakes the ep0 thread to stop */
+
+	pthread_t th[FFS_NT];
+	bool running[FFS_NT];
+
+	pthread_mutex_t lock; /* everything below */
+	pthread_cond_t cond;
+	bool stop, enabled;
+	uint32_t gen;	  /* bumped when a session ends */
+	uint32_t session; /* sessions started (RDC_USB_REQ_INFO) */
+	int bfd;	  /* the bridge's end of the session, or -1 */
+	int pending;	  /* the daemon's end, not yet accepted, or -1 */
+	bool dead;	  /* rdcd hung up on this session */
+	uint32_t seen[FFS_NDATA]; /* the gen each data thread has caught up to */
+
+	uint8_t irq[FFS_IRQ_QUEUE][RDC_USB_EVENT_SIZE];
+	unsigned int irq_head, irq_n;
+	uint64_t irq_dropped;
+
+	uint8_t *outbuf, *inbuf, *stage;
+};
+
+/* ---- Descriptors ---------------------------------------------------------- */
+
+/* htole16/32 are not constant expressions: these are, for the tables. */
+#if __BYTE_ORDER == __LITTLE_ENDIAN
+#define FFS_LE16(x) ((__le16)(x))
+#define FFS_LE32(x) ((__le32)(x))
+#else
+#define FFS_LE16(x) ((__le16)__builtin_bswap16(x))
+#define FFS_LE32(x) ((__le32)__builtin_bswap32(x))
+#endif
+
+struct ffs_intf_descs {
+	struct usb_interface_descriptor intf;
+	struct usb_endpoint_descriptor_no_audio out, in, irq;
+} __attribute__((packed));
+
+static const struct {
+	struct usb_functionfs_descs_head_v2 head;
+	__le32 fs_count, hs_count;
+	struct ffs_intf_descs fs, hs;
+} __attribute__((packed)) ffs_descs = {
+	.head = {
+		.magic = FFS_LE32(FUNCTIONFS_DESCRIPTORS_MAGIC_V2),
+		.length = FFS_LE32(sizeof(ffs_descs)),
+		/* ALL_CTRL_RECIP: vendor requests addressed to the device
+		 * reach us too (rdc_usb.h accepts both recipients) */
+		.flags = FFS_LE32(FUNCTIONFS_HAS_FS_DESC |
+				 FUNCTIONFS_HAS_HS_DESC |
+				 FUNCTIONFS_ALL_CTRL_RECIP),
+	},
+	.fs_count = FFS_LE32(4),
+	.hs_count = FFS_LE32(4),
+#define FFS_INTF                                                               \
+	{                                                                      \
+		.bLength = USB_DT_INTERFACE_SIZE,                              \
+		.bDescriptorType = USB_DT_INTERFACE,                           \
+		.bNumEndpoints = FFS_NEP,                                      \
+		.bInterfaceClass = RDC_USB_CLASS,                              \
+		.bInterfaceSubClass = RDC_USB_SUBCLASS,                        \
+		.bInterfaceProtocol = RDC_USB_PROTOCOL,                        \
+		.iInterface = 1,                                               \
+	}
+#define FFS_EP(addr, type, maxp, interval)                                     \
+	{                                                                      \
+		.bLength = USB_DT_ENDPOINT_SIZE,                               \
+		.bDescriptorType = USB_DT_ENDPOINT,                            \
+		.bEndpointAddress = (addr),                                    \
+		.bmAttributes = (type),                                        \
+		.wMaxPacketSize = FFS_LE16(maxp),                               \
+		.bInterval = (interval),                                       \
+	}
+	.fs = {
+		.intf = FFS_INTF,
+		.out = FFS_EP(1 | USB_DIR_OUT, USB_ENDPOINT_XFER_BULK,
+			      RDC_USB_BULK_FS, 0),
+		.in = FFS_EP(2 | USB_DIR_IN, USB_ENDPOINT_XFER_BULK,
+			     RDC_USB_BULK_FS, 0),
+		.irq = FFS_EP(3 | USB_DIR_IN, USB_ENDPOINT_XFER_INT,
+			      RDC_USB_INTR_MAXP, RDC_USB_INTR_INTERVAL_FS),
+	},
+	.hs = {
+		.intf = FFS_INTF,
+		.out = FFS_EP(1 | USB_DIR_OUT, USB_ENDPOINT_XFER_BULK,
+			      RDC_USB_BULK_HS, 0),
+		.in = FFS_EP(2 | USB_DIR_IN, USB_ENDPOINT_XFER_BULK,
+			     RDC_USB_BULK_HS, 0),
+		.irq = FFS_EP(3 | USB_DIR_IN, USB_ENDPOINT_XFER_INT,
+			      RDC_USB_INTR_MAXP, RDC_USB_INTR_INTERVAL_HS),
+	},
+#undef FFS_INTF
+#undef FFS_EP
+};
+
+static const struct {
+	struct usb_functionfs_strings_head head;
+	struct {
+		__le16 code;
+		char str1[sizeof(FFS_INTF_STR)];
+	} __attribute__((packed)) lang0;
+} __attribute__((packed)) ffs_strings = {
+	.head = {
+		.magic = FFS_LE32(FUNCTIONFS_STRINGS_MAGIC),
+		.length = FFS_LE32(sizeof(ffs_strings)),
+		.str_count = FFS_LE32(1),
+		.lang_count = FFS_LE32(1),
+	},
+	.lang0 = {FFS_LE16(0x0409), FFS_INTF_STR},
+};
+
+/* ---- Threads and sessions ------------------------------------------------ */
+
+/* The signal that wakes a thread out of a blocking read or write. */
+#define FFS_KICK (SIGRTMIN + 4)
+
+static void ffs_on_kick(int sig)
+{
+	(void)sig;
+}
+
+/* Only FFS_KICK reaches a bridge thread, and interrupts its system call. */
+static void ffs_thread_signals(void)
+{
+	sigset_t set;
+
+	sigfillset(&set);
+	sigdelset(&set, FFS_KICK);
+	pthread_sigmask(SIG_SETMASK, &set, NULL);
+}
+
+static void ffs_timed_wait(struct rdcd_ffs *f, long ms)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	ts.tv_nsec += ms * 1000000L;
+	if (ts.tv_nsec >= 1000000000L) {
+		ts.tv_sec++;
+		ts.tv_nsec -= 1000000000L;
+	}
+	pthread_cond_timedwait(&f->cond, &f->lock, &ts);
+}
+
+/* Lock held: until every data thread has let go of older sessions. */
+static void ffs_wait_threads(struct rdcd_ffs *f)
+{
+	for (unsigned int tries = 0;; tries++) {
+		bool all = true;
+
+		for (unsigned int t = 0; t < FFS_NDATA; t++) {
+			if (f->running[t] && f->seen[t] != f->gen) {
+				all = false;
+				pthread_kill(f->th[t], FFS_KICK);
+			}
+		}
+		if (all)
+			return;
+		if (tries == 200)
+			rdcd_log(f->d, RDCD_LOG_WARN,
+				 "ffs:%s: a bridge thread is slow to let go",
+				 f->dir);
+		ffs_timed_wait(f, 10);
+	}
+}
+
+/* Lock held: drop the current session, if any. */
+static void ffs_session_end(struct rdcd_ffs *f, const char *why)
+{
+	int old = f->bfd;
+
+	if (old < 0 && f->pending < 0)
+		return;
+	f->gen++;
+	f->bfd = -1;
+	f->dead = false;
+	f->irq_n = 0;
+	if (f->pending >= 0) {
+		close(f->pending); /* never accepted */
+		f->pending = -1;
+	}
+	if (old >= 0)
+		shutdown(old, SHUT_RDWR); /* serve.c sees the client leave */
+	pthread_cond_broadcast(&f->cond);
+	ffs_wait_threads(f);
+	if (old >= 0)
+		close(old);
+	rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: session %u ended (%s)", f->dir,
+		 f->session, why);
+}
+
+/* Lock held: a new session, handed to rdcd's loop through `wake`. */
+static void ffs_session_start(struct rdcd_ffs *f)
+{
+	uint64_t one = 1;
+	int sv[2];
+
+	if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv)) {
+		rdcd_log(f->d, RDCD_LOG_ERR, "ffs:%s: socketpair: %s", f->dir,
+			 strerror(errno));
+		return;
+	}
+	fcntl(sv[0], F_SETFL, O_NONBLOCK); /* the daemon's end */
+	f->pending = sv[0];
+	f->bfd = sv[1];
+	f->dead = false;
+	f->session++;
+	pthread_cond_broadcast(&f->cond);
+	if (write(f->wake, &one, sizeof(one)) < 0)
+		rdcd_log(f->d, RDCD_LOG_ERR, "ffs:%s: eventfd: %s", f->dir,
+			 strerror(errno));
+	rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: session %u", f->dir,
+		 f->session);
+}
+
+/*
+ * Lock held: rdcd hung up on the session (or its stream broke): halt both
+ * bulk endpoints so the host sees a stall and resets.  The threads that
+ * own those endpoints do the halting (FunctionFS halts an endpoint on I/O
+ * in the wrong direction, under the endpoint file's own lock).
+ */
+static void ffs_session_dead(struct rdcd_ffs *f, uint32_t gen)
+{
+	if (gen != f->gen || f->dead)
+		return;
+	f->dead = true;
+	pthread_cond_broadcast(&f->cond);
+	for (unsigned int t = 0; t < FFS_NDATA; t++)
+		if (f->running[t])
+			pthread_kill(f->th[t], FFS_KICK);
+}
+
+/* Halt an endpoint: a read on an IN endpoint file, a write on OUT. */
+static void ffs_halt(struct rdcd_ffs *f, enum ffs_ep ep)
+{
+	uint8_t b = 0;
+	ssize_t r = ep == FFS_EP_OUT ? write(f->ep[ep], &b, 0)
+				     : read(f->ep[ep], &b, 0);
+
+	if (r < 0 && errno != EBADMSG)
+		rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: halt ep%d: %s", f->dir,
+			 ep + 1, strerror(errno));
+}
+
+/* Write all of p to fd (a blocking socket); false if it broke. */
+static bool ffs_write_all(int fd, const uint8_t *p, size_t n)
+{
+	while (n) {
+		ssize_t k = write(fd, p, n);
+
+		if (k <= 0)
+			return false;
+		p += k;
+		n -= (size_t)k;
+	}
+	return true;
+}
+
+/* bulk OUT -> socket */
+static void *ffs_out_thread(void *arg)
+{
+	struct rdcd_ffs *f = arg;
+	uint32_t halted = 0;
+	bool halt_valid = false;
+
+	ffs_thread_signals();
+	pthread_mutex_lock(&f->lock);
+	while (!f->stop) {
+		uint32_t g = f->gen;
+		int fd = f->bfd, err;
+		ssize_t n;
+		bool ok = true;
+
+		f->seen[FFS_T_OUT] = g;
+		if (fd < 0 || (halt_valid && halted == g)) {
+			pthread_cond_broadcast(&f->cond);
+			pthread_cond_wait(&f->cond, &f->lock);
+			continue;
+		}
+		if (f->dead) {
+			pthread_mutex_unlock(&f->lock);
+			ffs_halt(f, FFS_EP_OUT);
+			pthread_mutex_lock(&f->lock);
+			halted = g;
+			halt_valid = true;
+			continue;
+		}
+		pthread_mutex_unlock(&f->lock);
+		n = read(f->ep[FFS_EP_OUT], f->outbuf, FFS_BUF);
+		err = n < 0 ? errno : 0;
+		if (n > 0)
+			ok = ffs_write_all(fd, f->outbuf, (size_t)n);
+		pthread_mutex_lock(&f->lock);
+		if (g != f->gen || f->stop)
+			continue; /* that session is gone: so are its bytes */
+		if (n < 0 && err != EINTR) {
+			/* ESHUTDOWN: disabled; the ep0 thread hears of it */
+			rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: bulk OUT: %s",
+				 f->dir, strerror(err));
+			halted = g;
+			halt_valid = true;
+		} else if (!ok) {
+			ffs_session_dead(f, g);
+		}
+	}
+	f->seen[FFS_T_OUT] = f->gen;
+	pthread_cond_broadcast(&f->cond);
+	pthread_mutex_unlock(&f->lock);
+	return NULL;
+}
+
+/* Lock held: queue an interrupt event, dropping the oldest when full. */
+static void ffs_irq_push(struct rdcd_ffs *f, const uint8_t *ev)
+{
+	if (f->irq_n == FFS_IRQ_QUEUE) {
+		f->irq_head = (f->irq_head + 1) % FFS_IRQ_QUEUE;
+		f->irq_n--;
+		if (!(f->irq_dropped++ % 1000))
+			rdcd_log(f->d, RDCD_LOG_INFO,
+				 "ffs:%s: the host does not read interrupt events: dropping",
+				 f->dir);
+	}
+	memcpy(f->irq[(f->irq_head + f->irq_n) % FFS_IRQ_QUEUE], ev,
+	       RDC_USB_EVENT_SIZE);
+	f->irq_n++;
+	pthread_cond_broadcast(&f->cond);
+}
+
+/*
+ * One write on bulk IN.  Never a multiple of the full-speed packet size
+ * (hence of the high-speed one): such a write would end on a full packet
+ * and a host read longer than it would wait for more, so its last byte
+ * goes in a write of its own (rdc_usb.h).
+ */
+static int ffs_in_write(struct rdcd_ffs *f, const uint8_t *p, size_t n)
+{
+	while (n) {
+		size_t k = n;
+		ssize_t r;
+
+		if (!(k % RDC_USB_BULK_FS))
+			k--;
+		r = write(f->ep[FFS_EP_IN], p, k);
+		if (r <= 0)
+			return r < 0 ? -errno : -EIO;
+		p += r;
+		n -= (size_t)r;
+	}
+	return 0;
+}
+
+/* The daemon's byte stream as it goes to the host: where messages are. */
+struct ffs_parse {
+	uint8_t hdr[RDC_PROTO_HDR_SIZE];
+	size_t hgot;
+	uint64_t left; /* payload bytes of the current message still to come */
+	bool irq;
+	uint8_t ev[RDC_USB_EVENT_SIZE];
+	size_t evgot;
+};
+
+/*
+ * Split `n` bytes from the daemon into bulk bytes (to f->stage, `*staged`
+ * of FFS_BUF used) and interrupt events.  Returns false if the stream
+ * makes no sense (the daemon is trusted, but its lengths are still
+ * bounded).
+ */
+static bool ffs_parse(struct rdcd_ffs *f, struct ffs_parse *ps,
+		      const uint8_t *p, size_t n, size_t *staged)
+{
+	while (n) {
+		size_t take;
+
+		if (!ps->left) {
+			struct rdc_proto_hdr h;
+
+			take = RDC_PROTO_HDR_SIZE - ps->hgot;
+			if (take > n)
+				take = n;
+			memcpy(ps->hdr + ps->hgot, p, take);
+			ps->hgot += take;
+			p += take;
+			n -= take;
+			if (ps->hgot < RDC_PROTO_HDR_SIZE)
+				break;
+			ps->hgot = 0;
+			rdc_proto_hdr_decode(ps->hdr, &h);
+			if (h.len > RDC_PROTO_MAX_REPLY)
+				return false;
+			ps->left = h.len;
+			ps->irq = h.type == RDC_MSG_EV_IRQ &&
+				  (h.flags & RDC_MSGF_EVENT) &&
+				  h.len == RDC_USB_EVENT_SIZE -
+						   RDC_PROTO_HDR_SIZE;
+			if (ps->irq) {
+				memcpy(ps->ev, ps->hdr, RDC_PROTO_HDR_SIZE);
+				ps->evgot = RDC_PROTO_HDR_SIZE;
+			} else {
+				memcpy(f->stage + *staged, ps->hdr,
+				       RDC_PROTO_HDR_SIZE);
+				*staged += RDC_PROTO_HDR_SIZE;
+			}
+			continue;
+		}
+		take = n < ps->left ? n : (size_t)ps->left;
+		if (ps->irq) {
+			memcpy(ps->ev + ps->evgot, p, take);
+			ps->evgot += take;
+			if (ps->evgot == RDC_USB_EVENT_SIZE) {
+				pthread_mutex_lock(&f->lock);
+				ffs_irq_push(f, ps->ev);
+				pthread_mutex_unlock(&f->lock);
+			}
+		} else {
+			memcpy(f->stage + *staged, p, take);
+			*staged += take;
+		}
+		ps->left -= take;
+		p += take;
+		n -= take;
+	}
+	return true;
+}
+
+/* socket -> bulk IN and the interrupt queue */
+static void *ffs_in_thread(void *arg)
+{
+	struct rdcd_ffs *f = arg;
+	struct ffs_parse ps = {0};
+	uint32_t mine = 0, halted = 0;
+	bool halt_valid = false;
+
+	ffs_thread_signals();
+	pthread_mutex_lock(&f->lock);
+	while (!f->stop) {
+		uint32_t g = f->gen;
+		int fd = f->bfd, err = 0;
+		size_t staged = 0;
+		ssize_t n;
+
+		f->seen[FFS_T_IN] = g;
+		if (g != mine) {
+			memset(&ps, 0, sizeof(ps)); /* a new stream */
+			mine = g;
+		}
+		if (fd < 0 || (halt_valid && halted == g)) {
+			pthread_cond_broadcast(&f->cond);
+			pthread_cond_wait(&f->cond, &f->lock);
+			continue;
+		}
+		if (f->dead) {
+			pthread_mutex_unlock(&f->lock);
+			ffs_halt(f, FFS_EP_IN);
+			pthread_mutex_lock(&f->lock);
+			halted = g;
+			halt_valid = true;
+			continue;
+		}
+		pthread_mutex_unlock(&f->lock);
+		/* at most FFS_BUF - HDR, so a header always fits beside it */
+		n = read(fd, f->inbuf, FFS_BUF - RDC_PROTO_HDR_SIZE);
+		if (n < 0)
+			err = errno;
+		else if (!n)
+			err = EPIPE; /* rdcd hung up */
+		else if (!ffs_parse(f, &ps, f->inbuf, (size_t)n, &staged))
+			err = EPROTO;
+		else if (staged)
+			err = -ffs_in_write(f, f->stage, staged);
+		pthread_mutex_lock(&f->lock);
+		if (g != f->gen || f->stop || !err)
+			continue;
+		if (err == EPIPE || err == EPROTO) {
+			if (err == EPROTO)
+				rdcd_log(f->d, RDCD_LOG_ERR,
+					 "ffs:%s: rdcd's stream is corrupt",
+					 f->dir);
+			ffs_session_dead(f, g);
+		} else if (err == EINTR) {
+			/* kicked with its session alive: bytes may be lost */
+			if (!f->dead)
+				ffs_session_dead(f, g);
+		} else {
+			/* ESHUTDOWN: disabled; the ep0 thread hears of it */
+			rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: bulk IN: %s",
+				 f->dir, strerror(err));
+			halted = g;
+			halt_valid = true;
+		}
+	}
+	f->seen[FFS_T_IN] = f->gen;
+	pthread_cond_broadcast(&f->cond);
+	pthread_mutex_unlock(&f->lock);
+	return NULL;
+}
+
+/* interrupt queue -> interrupt IN, one event per transfer */
+static void *ffs_irq_thread(void *arg)
+{
+	struct rdcd_ffs *f = arg;
+	uint32_t broken = 0;
+	bool broken_valid = false;
+
+	ffs_thread_signals();
+	pthread_mutex_lock(&f->lock);
+	while (!f->stop) {
+		uint32_t g = f->gen;
+		uint8_t ev[RDC_USB_EVENT_SIZE];
+		ssize_t n;
+
+		f->seen[FFS_T_IRQ] = g;
+		if (f->bfd < 0 || !f->irq_n || (broken_valid && broken == g)) {
+			pthread_cond_broadcast(&f->cond);
+			pthread_cond_wait(&f->cond, &f->lock);
+			continue;
+		}
+		memcpy(ev, f->irq[f->irq_head], sizeof(ev));
+		f->irq_head = (f->irq_head + 1) % FFS_IRQ_QUEUE;
+		f->irq_n--;
+		pthread_mutex_unlock(&f->lock);
+		n = write(f->ep[FFS_EP_IRQ], ev, sizeof(ev));
+		if (n < 0 && errno != EINTR) {
+			/* ESHUTDOWN: disabled; wait for the next session */
+			rdcd_log(f->d, RDCD_LOG_DEBUG,
+				 "ffs:%s: interrupt IN: %s", f->dir,
+				 strerror(errno));
+			broken = g;
+			broken_valid = true;
+		}
+		pthread_mutex_lock(&f->lock);
+	}
+	f->seen[FFS_T_IRQ] = f->gen;
+	pthread_cond_broadcast(&f->cond);
+	pthread_mutex_unlock(&f->lock);
+	return NULL;
+}
+
+/* ---- ep0: events and control requests ---------------------------------- */
+
+static bool ffs_is_ours(const struct usb_ctrlrequest *s)
+{
+	uint8_t recip = s->bRequestType & USB_RECIP_MASK;
+
+	return (s->bRequestType & USB_TYPE_MASK) == USB_TYPE_VENDOR &&
+	       (recip == USB_RECIP_INTERFACE || recip == USB_RECIP_DEVICE);
+}
+
+static void ffs_setup(struct rdcd_ffs *f, const struct usb_ctrlrequest *s)
+{
+	bool in = s->bRequestType & USB_DIR_IN;
+	uint16_t wlen = le16toh(s->wLength);
+	uint8_t b = 0;
+	ssize_t r;
+
+	if (ffs_is_ours(s) && s->bRequest == RDC_USB_REQ_RESET && !in &&
+	    !wlen) {
+		pthread_mutex_lock(&f->lock);
+		ffs_session_end(f, "reset by the host");
+		if (f->enabled)
+			ffs_session_start(f);
+		pthread_mutex_unlock(&f->lock);
+		/* the status stage: only now may the host send again */
+		r = read(f->ep0, &b, 0);
+	} else if (ffs_is_ours(s) && s->bRequest == RDC_USB_REQ_INFO && in) {
+		uint8_t info[RDC_USB_INFO_SIZE];
+
+		rdc_proto_put32(info, RDC_PROTO_MAGIC);
+		rdc_proto_put32(info + 4, RDC_PROTO_VERSION);
+		rdc_proto_put32(info + 8, RDC_PROTO_MAX_REQUEST);
+		pthread_mutex_lock(&f->lock);
+		rdc_proto_put32(info + 12, f->session);
+		pthread_mutex_unlock(&f->lock);
+		r = write(f->ep0, info, wlen < sizeof(info) ? wlen : sizeof(info));
+	} else {
+		rdcd_log(f->d, RDCD_LOG_INFO,
+			 "ffs:%s: control request %02x/%02x (wLength %u) not ours: stall",
+			 f->dir, s->bRequestType, s->bRequest, wlen);
+		/* I/O against the request's direction stalls it */
+		r = in ? read(f->ep0, &b, 0) : write(f->ep0, &b, 0);
+		if (r < 0 && errno == EL2HLT)
+			r = 0;
+	}
+	if (r < 0 && errno != EIDRM)
+		rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: ep0: %s", f->dir,
+			 strerror(errno));
+}
+
+static void ffs_event(struct rdcd_ffs *f, const struct usb_functionfs_event *e)
+{
+	switch (e->type) {
+	case FUNCTIONFS_BIND:
+		/* an UNBIND just before may have been folded into this one */
+		pthread_mutex_lock(&f->lock);
+		f->enabled = false;
+		ffs_session_end(f, "bound again");
+		pthread_mutex_unlock(&f->lock);
+		rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: bound to a UDC", f->dir);
+		break;
+	case FUNCTIONFS_UNBIND:
+	case FUNCTIONFS_DISABLE:
+		pthread_mutex_lock(&f->lock);
+		f->enabled = false;
+		ffs_session_end(f, e->type == FUNCTIONFS_UNBIND ? "unbound"
+								 : "disabled");
+		pthread_mutex_unlock(&f->lock);
+		if (e->type == FUNCTIONFS_UNBIND)
+			rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: unbound", f->dir);
+		break;
+	case FUNCTIONFS_ENABLE:
+		pthread_mutex_lock(&f->lock);
+		f->enabled = true;
+		ffs_session_end(f, "configured again");
+		ffs_session_start(f);
+		pthread_mutex_unlock(&f->lock);
+		break;
+	case FUNCTIONFS_SETUP:
+		ffs_setup(f, &e->u.setup);
+		break;
+	case FUNCTIONFS_SUSPEND:
+	case FUNCTIONFS_RESUME:
+		rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: %s", f->dir,
+			 e->type == FUNCTIONFS_SUSPEND ? "suspend" : "resume");
+		break;
+	default:
+		break;
+	}
+}
+
+static void *ffs_ep0_thread(void *arg)
+{
+	struct rdcd_ffs *f = arg;
+
+	ffs_thread_signals();
+	for (;;) {
+		struct pollfd p[2] = {{.fd = f->ep0, .events = POLLIN},
+				      {.fd = f->stopfd, .events = POLLIN}};
+		struct usb_functionfs_event ev[4];
+		ssize_t n;
+
+		if (poll(p, 2, -1) < 0 && errno != EINTR)
+			break;
+		if (p[1].revents)
+			break;
+		if (!(p[0].revents & POLLIN))
+			continue;
+		n = read(f->ep0, ev, sizeof(ev));
+		if (n < 0) {
+			if (errno == EINTR || errno == EIDRM || errno == EAGAIN)
+				continue;
+			rdcd_log(f->d, RDCD_LOG_ERR, "ffs:%s: ep0: %s", f->dir,
+				 strerror(errno));
+			break;
+		}
+		for (size_t i = 0; i < (size_t)n / sizeof(ev[0]); i++)
+			ffs_event(f, &ev[i]);
+	}
+	return NULL;
+}
+
+/* ---- The listener ----------------------------------------------------- */
+
+void rdcd_ffs_close(struct rdcd_ffs *f)
+{
+	uint64_t one = 1;
+
+	if (!f)
+		return;
+	pthread_mutex_lock(&f->lock);
+	f->stop = true;
+	pthread_cond_broadcast(&f->cond);
+	pthread_mutex_unlock(&f->lock);
+	if (f->running[FFS_T_EP0]) {
+		if (write(f->stopfd, &one, sizeof(one)) < 0)
+			pthread_kill(f->th[FFS_T_EP0], FFS_KICK);
+		pthread_join(f->th[FFS_T_EP0], NULL);
+		f->running[FFS_T_EP0] = false;
+	}
+	/* the ep0 thread is gone: nothing starts a session now */
+	pthread_mutex_lock(&f->lock);
+	f->gen++; /* wakes every data thread out of its call */
+	pthread_cond_broadcast(&f->cond);
+	ffs_wait_threads(f);
+	pthread_mutex_unlock(&f->lock);
+	for (unsigned int t = 0; t < FFS_NDATA; t++)
+		if (f->running[t])
+			pthread_join(f->th[t], NULL);
+	if (f->pending >= 0)
+		close(f->pending);
+	if (f->bfd >= 0)
+		close(f->bfd);
+	for (unsigned int i = 0; i < FFS_NEP; i++)
+		if (f->ep[i] >= 0)
+			close(f->ep[i]);
+	/* closing ep0 withdraws the function: the gadget leaves its UDC */
+	if (f->ep0 >= 0)
+		close(f->ep0);
+	if (f->wake >= 0)
+		close(f->wake);
+	if (f->stopfd >= 0)
+		close(f->stopfd);
+	pthread_cond_destroy(&f->cond);
+	pthread_mutex_destroy(&f->lock);
+	free(f->outbuf);
+	free(f->inbuf);
+	free(f->stage);
+	free(f);
+}
+
+static int ffs_open_file(struct rdcd_ffs *f, const char *name)
+{
+	char path[sizeof(f->dir) + 8];
+
+	snprintf(path, sizeof(path), "%s/%s", f->dir, name);
+	return open(path, O_RDWR | O_CLOEXEC);
+}
+
+int rdcd_ffs_open(const struct rdcd *d, const char *dir,
+		  struct rdcd_ffs **out)
+{
+	static void *(*const fn[FFS_NT])(void *) = {
+		[FFS_T_OUT] = ffs_out_thread,
+		[FFS_T_IN] = ffs_in_thread,
+		[FFS_T_IRQ] = ffs_irq_thread,
+		[FFS_T_EP0] = ffs_ep0_thread,
+	};
+	struct sigaction sa = {.sa_handler = ffs_on_kick};
+	pthread_condattr_t ca;
+	struct rdcd_ffs *f;
+
+	*out = NULL;
+	if (!*dir || strlen(dir) >= sizeof(f->dir)) {
+		rdcd_log(d, RDCD_LOG_ERR, "ffs:%s: want ffs:DIR (a functionfs mount)",
+			 dir);
+		return -1;
+	}
+	f = calloc(1, sizeof(*f));
+	if (!f)
+		return -1;
+	f->d = d;
+	strcpy(f->dir, dir);
+	f->ep0 = f->wake = f->stopfd = f->bfd = f->pending = -1;
+	for (unsigned int i = 0; i < FFS_NEP; i++)
+		f->ep[i] = -1;
+	pthread_mutex_init(&f->lock, NULL);
+	pthread_condattr_init(&ca);
+	pthread_condattr_setclock(&ca, CLOCK_MONOTONIC);
+	pthread_cond_init(&f->cond, &ca);
+	pthread_condattr_destroy(&ca);
+	/* no SA_RESTART: the kick must interrupt blocking I/O */
+	sigaction(FFS_KICK, &sa, NULL);
+
+	f->outbuf = malloc(FFS_BUF);
+	f->inbuf = malloc(FFS_BUF);
+	f->stage = malloc(FFS_BUF);
+	f->wake = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+	f->stopfd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+	if (!f->outbuf || !f->inbuf || !f->stage || f->wake < 0 ||
+	    f->stopfd < 0) {
+		rdcd_log(d, RDCD_LOG_ERR, "ffs:%s: out of memory or fds", dir);
+		goto fail;
+	}
+	f->ep0 = ffs_open_file(f, "ep0");
+	if (f->ep0 < 0) {
+		rdcd_log(d, RDCD_LOG_ERR,
+			 "ffs:%s: ep0: %s (is functionfs mounted there? scripts/rdc-gadget.sh)",
+			 dir, strerror(errno));
+		goto fail;
+	}
+	if (write(f->ep0, &ffs_descs, sizeof(ffs_descs)) !=
+		    (ssize_t)sizeof(ffs_descs) ||
+	    write(f->ep0, &ffs_strings, sizeof(ffs_strings)) !=
+		    (ssize_t)sizeof(ffs_strings)) {
+		rdcd_log(d, RDCD_LOG_ERR,
+			 "ffs:%s: writing descriptors: %s (in use by another program?)",
+			 dir, strerror(errno));
+		goto fail;
+	}
+	for (unsigned int i = 0; i < FFS_NEP; i++) {
+		char name[8];
+
+		snprintf(name, sizeof(name), "ep%u", i + 1);
+		f->ep[i] = ffs_open_file(f, name);
+		if (f->ep[i] < 0) {
+			rdcd_log(d, RDCD_LOG_ERR, "ffs:%s: %s: %s", dir, name,
+				 strerror(errno));
+			goto fail;
+		}
+	}
+	for (unsigned int t = 0; t < FFS_NT; t++) {
+		int err = pthread_create(&f->th[t], NULL, fn[t], f);
+
+		if (err) {
+			rdcd_log(d, RDCD_LOG_ERR, "ffs:%s: thread: %s", dir,
+				 strerror(err));
+			goto fail;
+		}
+		f->running[t] = true;
+	}
+	*out = f;
+	return f->wake;
+fail:
+	rdcd_ffs_close(f);
+	return -1;
+}
+
+void rdcd_ffs_accept(struct rdcd *d, struct rdcd_ffs *f)
+{
+	char peer[64];
+	uint64_t v;
+	uint32_t s;
+	int fd;
+
+	if (read(f->wake, &v, sizeof(v)) < 0 && errno != EAGAIN)
+		rdcd_log(d, RDCD_LOG_WARN, "ffs:%s: eventfd: %s", f->dir,
+			 strerror(errno));
+	pthread_mutex_lock(&f->lock);
+	fd = f->pending;
+	f->pending = -1;
+	s = f->session;
+	pthread_mutex_unlock(&f->lock);
+	if (fd < 0)
+		return; /* it ended before we came to it */
+	if (d->nclients >= RDCD_MAX_CLIENTS) {
+		rdcd_log(d, RDCD_LOG_WARN,
+			 "%u clients already: refusing USB session %u",
+			 d->nclients, s);
+		close(fd); /* the bridge halts: the host sees a stall */
+		return;
+	}
+	snprintf(peer, sizeof(peer), "usb session %u", s);
+	if (!rdcd_client_new(d, fd, false, peer)) {
+		rdcd_log(d, RDCD_LOG_ERR, "out of memory");
+		close(fd);
+	}
+}
