@@ -66,8 +66,13 @@ static void test_open_bad(void **state)
 	open_fails("tcp:localhost", RDC_E_URI);
 	open_fails("tcp::7000", RDC_E_URI);
 	open_fails("unix:/tmp/x.sock?colour=blue", RDC_E_URI);
-	/* reserved for transports that do not exist yet */
-	open_fails("usb:", RDC_E_NOSYS);
+	/* usb: (test_usb_open.c): no device with these IDs, a bad address */
+#ifdef RDC_HAVE_USB
+	open_fails("usb:fffe:fffd", RDC_E_IO);
+	open_fails("usb:12345:1", RDC_E_URI);
+#else
+	open_fails("usb:fffe:fffd", RDC_E_NOSYS);
+#endif
 	/* fbdev: (test_fbdev_backend.c): a node that does not exist */
 	open_fails("fbdev:/nonexistent-dir/fb0", RDC_E_FILE);
 	assert_int_equal(rdc_open("sim:", NULL), RDC_E_INVAL);

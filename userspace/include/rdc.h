@@ -19,7 +19,23 @@
  *                           rdcfb framebuffer, RDC_E_FILE if it cannot
  *                           be opened; rdc_sim_step needs the module's
  *                           clock=stepped (else RDC_E_NOSYS)
- *   (later: usb:)
+ *   "usb:"                  an RDC-1 attached over USB (rdc_usb.h,
+ *                           docs/usb.md), through libusb: the first
+ *                           device with IDs 1209:0001 and the RDC-1
+ *                           interface (class ff/52/01); "usb:VID:PID"
+ *                           (hex) other IDs; "usb:BUS-PORT[.PORT...]"
+ *                           the device at that port path, whatever its
+ *                           IDs (as rdc_list and `rdcctl list` print
+ *                           it); "usb:serial=S" the default IDs with
+ *                           that serial string.  Options as for tcp:
+ *                           ("?observe", "?token=FILE").  RDC_E_IO if
+ *                           no device matches, RDC_E_PROTO if its INFO
+ *                           answer is not an RDC-1's, RDC_E_NOSYS in a
+ *                           build without libusb-1.0.  When the device
+ *                           goes away (unplugged, its UDC unbound) the
+ *                           call in progress and every later one on the
+ *                           handle return RDC_E_GONE, without waiting
+ *                           for anything
  *
  * Errors: every function that can fail returns 0 or a positive count on
  * success and a negative enum rdc_error on failure; rdc_strerror() names
@@ -57,7 +73,8 @@ enum rdc_error {
 	RDC_E_BUSY = -12,   /* another client controls the device */
 	RDC_E_FILE = -13,   /* file could not be read or written */
 	RDC_E_AUTH = -14,   /* the daemon refused the token */
-	RDC_E_COUNT_ = -15
+	RDC_E_GONE = -15,   /* the device went away (unplugged, unbound) */
+	RDC_E_COUNT_ = -16
 };
 
 /* A short English description of an enum rdc_error value. */
@@ -70,6 +87,20 @@ typedef struct rdc_batch rdc_batch;
 
 /* ---- Device -------------------------------------------------------------- */
 int rdc_open(const char *uri, rdc_dev **out);
+
+/* One device rdc_list found. */
+struct rdc_found {
+	char uri[160];	/* what rdc_open takes (rdcctl --connect) */
+	char info[160]; /* what it is, for people */
+};
+typedef void (*rdc_found_fn)(const struct rdc_found *f, void *arg);
+/*
+ * Every RDC-1 this machine reaches: USB devices with the RDC-1 interface
+ * (usb:BUS-PORT..., with IDs and serial), rdcd sockets in the default
+ * directory that answer a HELLO (rdc_proto_default_path), and rdcfb.ko's
+ * framebuffers.  Calls fn once for each; returns how many.
+ */
+int rdc_list(rdc_found_fn fn, void *arg);
 void rdc_close(rdc_dev *dev);
 /* Chip reset (RDC_CONTROL_SOFT_RESET). */
 int rdc_reset(rdc_dev *dev);

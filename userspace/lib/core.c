@@ -11,12 +11,9 @@
 #include "rdc_priv.h"
 
 /*
- * Schemes the URI syntax reserves for transports that are not built yet:
- * rdc_open knows them (RDC_E_NOSYS), unlike a typo (RDC_E_URI).  A
- * transport is added by giving its entry an open() in a file of its own.
+ * A backend whose open() is NULL (usb: built without libusb) is known to
+ * rdc_open (RDC_E_NOSYS), unlike a typo (RDC_E_URI).
  */
-static const struct rdc_backend rdc_backend_usb = {.scheme = "usb"};
-
 static const struct rdc_backend *const rdc_backends[] = {
 	&rdc_backend_sim, &rdc_backend_unix,  &rdc_backend_tcp,
 	&rdc_backend_usb, &rdc_backend_fbdev,
@@ -38,6 +35,7 @@ static const char *const rdc_error_str[] = {
 	[-RDC_E_BUSY] = "device busy",
 	[-RDC_E_FILE] = "file could not be read or written",
 	[-RDC_E_AUTH] = "token missing or refused",
+	[-RDC_E_GONE] = "device gone",
 };
 
 const char *rdc_strerror(int err)
@@ -113,6 +111,26 @@ int rdc_open(const char *uri, rdc_dev **out)
 	}
 	*out = dev;
 	return 0;
+}
+
+int rdc_list(rdc_found_fn fn, void *arg)
+{
+	int total = 0;
+
+	if (!fn)
+		return RDC_E_INVAL;
+	for (size_t i = 0; i < RDC_ARRAY_SIZE(rdc_backends); i++) {
+		int n;
+
+		if (!rdc_backends[i]->list)
+			continue;
+		/* a scheme that cannot look (no permission, no libusb
+		 * devices) leaves the others to report theirs */
+		n = rdc_backends[i]->list(fn, arg);
+		if (n > 0)
+			total += n;
+	}
+	return total;
 }
 
 void rdc_close(rdc_dev *dev)

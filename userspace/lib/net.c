@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * The "unix:" and "tcp:" backends: an RDC-1 served by rdcd, reached over
- * a stream socket with the protocol of rdc_proto.h.  Every operation is
- * one request and its reply (a wait too: the daemon evaluates the
- * condition), so the device behaves as sim: does, one round trip later.
+ * The protocol client (rdc_client.h) and the "unix:" and "tcp:" backends:
+ * an RDC-1 served by rdcd, reached with the protocol of rdc_proto.h over
+ * a byte transport: a stream socket here, a USB interface in usb.c.
+ * Every operation is one request and its reply (a wait too: the daemon
+ * evaluates the condition), so the device behaves as sim: does, one round
+ * trip later.
  *
  * Events (frames, interrupts) arrive between replies.  A frame is decoded
  * as soon as it is read, because row-delta frames build on the previous
@@ -24,6 +26,7 @@
 #include <sys/un.h>
 #include <unistd.h>
 
+#include "rdc_client.h"
 #include "rdc_priv.h"
 #include "rdc_proto.h"
 
@@ -38,8 +41,10 @@ _Static_assert(RDC_EVENT_FRAME == RDC_SUB_FRAMES &&
 	       "rdc.h and rdc_proto.h event bits differ");
 
 struct net {
-	int fd;
+	struct rdc_xport *x; /* NULL once the stream is dead */
+	int dead;	     /* what later calls return then */
 	uint32_t seq;
+	uint32_t vram_chunk, submit_words; /* request sizes that fit */
 	struct rdc_proto_hello_reply hello;
 	/* the newest frame event, decoded (also the base for DELTA) */
 	uint32_t *frame;
@@ -110,53 +115,22 @@ static int net_send_msg(struct net *n, uint16_t type, const void *a,
 		{(void *)a, alen},
 		{(void *)b, blen},
 	};
-	struct msghdr mh = {.msg_iov = iov, .msg_iovlen = 3};
 
 	rdc_proto_hdr_encode(hdr, &h);
-	while (mh.msg_iovlen) {
-		ssize_t k = sendmsg(n->fd, &mh, MSG_NOSIGNAL);
-
-		if (k < 0) {
-			if (errno == EINTR)
-				continue;
-			return RDC_E_IO;
-		}
-		while (mh.msg_iovlen && (size_t)k >= mh.msg_iov->iov_len) {
-			k -= (ssize_t)mh.msg_iov->iov_len;
-			mh.msg_iov++;
-			mh.msg_iovlen--;
-		}
-		if (mh.msg_iovlen) {
-			mh.msg_iov->iov_base = (uint8_t *)mh.msg_iov->iov_base + k;
-			mh.msg_iov->iov_len -= (size_t)k;
-		}
-	}
-	return 0;
+	return n->x->ops->send(n->x, iov, 3);
 }
 
-/* Read exactly len bytes; timeout_ms < 0 waits forever. */
+/* Read exactly len bytes; timeout_ms < 0 waits as long as the transport does. */
 static int net_read_all(struct net *n, void *buf, size_t len, int timeout_ms)
 {
 	uint8_t *p = buf;
 
 	while (len) {
-		ssize_t k;
+		ssize_t k = n->x->ops->recv(n->x, p, len, timeout_ms);
 
-		if (timeout_ms >= 0) {
-			struct pollfd pfd = {.fd = n->fd, .events = POLLIN};
-			int r = poll(&pfd, 1, timeout_ms);
-
-			if (r < 0 && errno == EINTR)
-				continue;
-			if (r == 0)
-				return RDC_E_TIMEOUT;
-			if (r < 0)
-				return RDC_E_IO;
-		}
-		k = read(n->fd, p, len);
-		if (k < 0 && errno == EINTR)
-			continue;
-		if (k <= 0)
+		if (k < 0)
+			return (int)k;
+		if (k == 0 || (size_t)k > len)
 			return RDC_E_IO;
 		p += k;
 		len -= (size_t)k;
@@ -254,6 +228,23 @@ static int net_event(struct net *n, const struct rdc_proto_hdr *h,
 }
 
 /*
+ * The stream is out of step or gone: nothing more can be trusted on it.
+ * Returns what the failing call reports; later calls report RDC_E_GONE if
+ * the device went away, else RDC_E_IO.
+ */
+static int net_kill(struct net *n, int ret)
+{
+	if (ret != RDC_E_NOMEM && ret != RDC_E_PROTO && ret != RDC_E_GONE)
+		ret = RDC_E_IO;
+	if (n->x) {
+		n->x->ops->close(n->x);
+		n->x = NULL;
+	}
+	n->dead = ret == RDC_E_GONE ? RDC_E_GONE : RDC_E_IO;
+	return ret;
+}
+
+/*
  * One request and its reply.  The reply payload goes to *out (malloc'd,
  * the caller frees) when out is not NULL, else must be empty.  Returns
  * the mapped status, or a transport error.
@@ -265,8 +256,8 @@ static int net_call2(struct net *n, uint16_t type, const void *a, size_t alen,
 	uint32_t seq;
 	int ret;
 
-	if (n->fd < 0)
-		return RDC_E_IO;
+	if (!n->x)
+		return n->dead;
 	ret = net_send_msg(n, type, a, alen, b, blen);
 	if (ret)
 		goto dead;
@@ -300,10 +291,7 @@ static int net_call2(struct net *n, uint16_t type, const void *a, size_t alen,
 		return net_status_to_error(h.status);
 	}
 dead:
-	/* The stream is out of step: nothing more can be trusted on it. */
-	close(n->fd);
-	n->fd = -1;
-	return ret == RDC_E_NOMEM ? ret : (ret == RDC_E_PROTO ? ret : RDC_E_IO);
+	return net_kill(n, ret);
 }
 
 static int net_call(struct net *n, uint16_t type, const void *a, size_t alen,
@@ -314,25 +302,14 @@ static int net_call(struct net *n, uint16_t type, const void *a, size_t alen,
 
 /* ---- Opening ------------------------------------------------------------ */
 
-struct net_opts {
-	char addr[256]; /* path, or host:port */
-	char token_file[256];
-	bool observe;
-};
-
-static int net_parse_opts(const char *opts, struct net_opts *o)
+int rdc_client_parse_opts(const char *q, struct rdc_client_opts *o)
 {
-	const char *q = strchr(opts, '?');
-	size_t alen = q ? (size_t)(q - opts) : strlen(opts);
 	const char *env = getenv(NET_TOKEN_ENV);
 
 	memset(o, 0, sizeof(*o));
-	if (alen >= sizeof(o->addr))
-		return RDC_E_URI;
-	memcpy(o->addr, opts, alen);
 	if (env && strlen(env) < sizeof(o->token_file))
 		strcpy(o->token_file, env);
-	for (const char *p = q ? q + 1 : NULL; p && *p;) {
+	for (const char *p = q; p && *p;) {
 		const char *end = strchr(p, '&');
 		size_t len = end ? (size_t)(end - p) : strlen(p);
 
@@ -349,6 +326,392 @@ static int net_parse_opts(const char *opts, struct net_opts *o)
 	}
 	return 0;
 }
+
+static int net_read_token(const char *path, uint8_t *tok, uint32_t *len)
+{
+	FILE *f;
+	size_t n;
+
+	*len = 0;
+	if (!*path)
+		return 0;
+	f = fopen(path, "rb");
+	if (!f)
+		return RDC_E_FILE;
+	n = fread(tok, 1, RDC_PROTO_MAX_TOKEN, f);
+	fclose(f);
+	while (n && (tok[n - 1] == '\n' || tok[n - 1] == '\r' ||
+		     tok[n - 1] == ' '))
+		n--;
+	*len = (uint32_t)n;
+	return 0;
+}
+
+int rdc_client_open(rdc_dev *dev, struct rdc_xport *x,
+		    const struct rdc_client_opts *o)
+{
+	uint8_t token[RDC_PROTO_MAX_TOKEN], msg[RDC_PROTO_HELLO_FIXED +
+						 RDC_PROTO_MAX_TOKEN];
+	struct rdc_proto_hello h = {
+		.magic = RDC_PROTO_MAGIC,
+		.version = RDC_PROTO_VERSION,
+		.caps = RDC_CAP_ALL,
+		.token = token,
+		.flags = o->observe ? 0 : RDC_HELLO_CONTROL,
+	};
+	uint32_t max = x->max_request && x->max_request < RDC_PROTO_MAX_REQUEST
+			       ? x->max_request
+			       : RDC_PROTO_MAX_REQUEST;
+	struct net *n;
+	uint8_t *pl = NULL;
+	uint32_t plen = 0;
+	size_t mlen;
+	int ret;
+
+	ret = net_read_token(o->token_file, token, &h.token_len);
+	if (ret) {
+		x->ops->close(x);
+		return ret;
+	}
+	n = calloc(1, sizeof(*n));
+	if (!n) {
+		x->ops->close(x);
+		return RDC_E_NOMEM;
+	}
+	n->x = x;
+	/* a VRAM write is its address and the bytes; a submit is words */
+	n->vram_chunk = RDC_MIN(RDC_PROTO_VRAM_CHUNK, (max - 4) & ~3u);
+	n->submit_words = RDC_MIN(RDC_PROTO_MAX_SUBMIT_WORDS, max / 4);
+	mlen = rdc_proto_hello_encode(msg, sizeof(msg), &h);
+	ret = net_call(n, RDC_MSG_HELLO, msg, mlen, &pl, &plen);
+	if (!ret && rdc_proto_hello_reply_decode(pl, plen, &n->hello))
+		ret = RDC_E_PROTO;
+	if (!ret && !o->observe && !(n->hello.flags & RDC_HELLO_CONTROL))
+		ret = RDC_E_BUSY;
+	free(pl);
+	if (ret) {
+		if (n->x)
+			n->x->ops->close(n->x);
+		free(n);
+		return ret;
+	}
+	dev->priv = n;
+	return 0;
+}
+
+const struct rdc_proto_hello_reply *rdc_client_hello(rdc_dev *dev)
+{
+	return &net_of(dev)->hello;
+}
+
+void rdc_client_close(rdc_dev *dev)
+{
+	struct net *n = net_of(dev);
+
+	if (n->x)
+		n->x->ops->close(n->x);
+	free(n->frame);
+	free(n);
+	dev->priv = NULL;
+}
+
+/* ---- Operations ---------------------------------------------------------- */
+
+int rdc_client_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
+{
+	uint8_t b[4], *pl = NULL;
+	uint32_t len = 0;
+	int ret;
+
+	rdc_proto_put32(b, reg);
+	ret = net_call(net_of(dev), RDC_MSG_REG_READ, b, 4, &pl, &len);
+	if (!ret && len != 4)
+		ret = RDC_E_PROTO;
+	if (!ret)
+		*val = rdc_proto_get32(pl);
+	free(pl);
+	return ret;
+}
+
+int rdc_client_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
+{
+	uint8_t b[8];
+
+	rdc_proto_put32(b, reg);
+	rdc_proto_put32(b + 4, val);
+	return net_call(net_of(dev), RDC_MSG_REG_WRITE, b, 8, NULL, NULL);
+}
+
+int rdc_client_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
+{
+	uint8_t *out = buf;
+
+	if (len > UINT32_MAX || addr > UINT32_MAX - len)
+		return RDC_E_RANGE;
+	while (len) {
+		uint32_t k = (uint32_t)RDC_MIN(len, RDC_PROTO_VRAM_CHUNK);
+		uint8_t b[8], *pl = NULL;
+		uint32_t got = 0;
+		int ret;
+
+		rdc_proto_put32(b, addr);
+		rdc_proto_put32(b + 4, k);
+		ret = net_call(net_of(dev), RDC_MSG_VRAM_READ, b, 8, &pl,
+			       &got);
+		if (!ret && got != k)
+			ret = RDC_E_PROTO;
+		if (!ret)
+			memcpy(out, pl, k);
+		free(pl);
+		if (ret)
+			return ret;
+		out += k;
+		addr += k;
+		len -= k;
+	}
+	return 0;
+}
+
+int rdc_client_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
+			  size_t len)
+{
+	const uint8_t *in = buf;
+
+	if (len > UINT32_MAX || addr > UINT32_MAX - len)
+		return RDC_E_RANGE;
+	/* Chunks are exact: a host aperture write takes no simulated time. */
+	do {
+		uint32_t k = (uint32_t)RDC_MIN(len, net_of(dev)->vram_chunk);
+		uint8_t b[4];
+		int ret;
+
+		rdc_proto_put32(b, addr);
+		ret = net_call2(net_of(dev), RDC_MSG_VRAM_WRITE, b, 4, in, k,
+				NULL, NULL);
+		if (ret)
+			return ret;
+		in += k;
+		addr += k;
+		len -= k;
+	} while (len);
+	return 0;
+}
+
+int rdc_client_submit(rdc_dev *dev, const uint32_t *words, size_t n)
+{
+	uint32_t max = net_of(dev)->submit_words;
+	uint8_t *b;
+	int ret = 0;
+
+	b = malloc(RDC_MIN(n, max) * 4 + 1);
+	if (!b)
+		return RDC_E_NOMEM;
+	/*
+	 * The daemon pushes each message's words as rdc_submit would on
+	 * sim: (FIFO_FREE, then waits), so splitting changes nothing.
+	 */
+	while (n && !ret) {
+		size_t k = RDC_MIN(n, max);
+
+		for (size_t i = 0; i < k; i++)
+			rdc_proto_put32(b + 4 * i, words[i]);
+		ret = net_call(net_of(dev), RDC_MSG_SUBMIT, b, k * 4, NULL,
+			       NULL);
+		words += k;
+		n -= k;
+	}
+	free(b);
+	return ret;
+}
+
+int rdc_client_wait(rdc_dev *dev, const struct rdc_wait *w)
+{
+	struct rdc_proto_wait pw = {.budget = w->budget,
+				    .needs_dp = w->needs_dp};
+	uint8_t b[RDC_PROTO_WAIT_SIZE];
+
+	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+		pw.term[i].kind = w->term[i].kind;
+		pw.term[i].reg = w->term[i].reg;
+		pw.term[i].mask = w->term[i].mask;
+		pw.term[i].value = w->term[i].value;
+	}
+	rdc_proto_wait_encode(b, &pw);
+	return net_call(net_of(dev), RDC_MSG_WAIT, b, sizeof(b), NULL, NULL);
+}
+
+int rdc_client_step(rdc_dev *dev, uint64_t cycles)
+{
+	uint8_t b[8];
+
+	rdc_proto_put64(b, cycles);
+	return net_call(net_of(dev), RDC_MSG_STEP, b, 8, NULL, NULL);
+}
+
+int rdc_client_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
+			  uint32_t *width, uint32_t *height)
+{
+	struct rdc_proto_frame f = {0};
+	uint8_t b[8], *pl = NULL;
+	uint32_t len = 0;
+	int ret;
+
+	rdc_proto_put32(b, RDC_ENC_RAW);
+	rdc_proto_put32(b + 4, (uint32_t)RDC_MIN(cap, UINT32_MAX));
+	ret = net_call(net_of(dev), RDC_MSG_FRAME_GRAB, b, 8, &pl, &len);
+	if (ret == 0 || ret == RDC_E_RANGE) {
+		if (rdc_proto_frame_hdr_decode(pl, len, &f))
+			ret = RDC_E_PROTO;
+		else {
+			*width = f.width;
+			*height = f.height;
+		}
+	}
+	if (!ret && (cap < (size_t)f.width * f.height ||
+		     rdc_proto_frame_decode(buf, f.width, f.height, f.encoding,
+					    pl + RDC_PROTO_FRAME_HDR,
+					    len - RDC_PROTO_FRAME_HDR)))
+		ret = RDC_E_PROTO;
+	free(pl);
+	return ret;
+}
+
+int rdc_client_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
+			 uint32_t encoding)
+{
+	uint8_t b[12];
+
+	rdc_proto_put32(b, events);
+	rdc_proto_put32(b + 4, every);
+	rdc_proto_put32(b + 8, encoding);
+	return net_call(net_of(dev), RDC_MSG_SUBSCRIBE, b, 12, NULL, NULL);
+}
+
+static int net_take_event(struct net *n, struct rdc_event *ev, uint32_t *buf,
+			  size_t cap)
+{
+	if (n->irq_n) {
+		*ev = n->irq[n->irq_head];
+		n->irq_head = (n->irq_head + 1) % NET_IRQ_QUEUE;
+		n->irq_n--;
+		return 1;
+	}
+	if (n->frame_pending) {
+		size_t px = (size_t)n->fw * n->fh;
+
+		n->frame_pending = false;
+		*ev = n->frame_ev;
+		if (cap < px)
+			return RDC_E_RANGE;
+		memcpy(buf, n->frame, px * sizeof(*buf));
+		return 1;
+	}
+	return 0;
+}
+
+int rdc_client_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
+			  size_t cap, int timeout_ms)
+{
+	struct net *n = net_of(dev);
+
+	for (;;) {
+		struct rdc_proto_hdr h;
+		uint8_t *pl;
+		int ret = net_take_event(n, ev, buf, cap);
+
+		if (ret)
+			return ret < 0 ? ret : 0;
+		if (!n->x)
+			return n->dead;
+		ret = net_read_msg(n, &h, &pl, timeout_ms);
+		if (ret == RDC_E_TIMEOUT)
+			return ret;
+		if (!ret && !(h.flags & RDC_MSGF_EVENT))
+			ret = RDC_E_PROTO; /* a reply nobody asked for */
+		if (!ret)
+			ret = net_event(n, &h, pl);
+		free(pl);
+		if (ret)
+			return net_kill(n, ret);
+	}
+}
+
+/* ---- Sockets ------------------------------------------------------------- */
+
+struct sock_xport {
+	struct rdc_xport x;
+	int fd;
+};
+
+static int sock_send(struct rdc_xport *x, const struct iovec *iov, int n)
+{
+	struct sock_xport *s = (struct sock_xport *)x;
+	struct iovec v[4];
+	struct msghdr mh = {.msg_iov = v, .msg_iovlen = (size_t)n};
+
+	if (n < 0 || (size_t)n > RDC_ARRAY_SIZE(v))
+		return RDC_E_INVAL;
+	memcpy(v, iov, sizeof(*v) * (size_t)n);
+	while (mh.msg_iovlen) {
+		ssize_t k = sendmsg(s->fd, &mh, MSG_NOSIGNAL);
+
+		if (k < 0) {
+			if (errno == EINTR)
+				continue;
+			return RDC_E_IO;
+		}
+		while (mh.msg_iovlen && (size_t)k >= mh.msg_iov->iov_len) {
+			k -= (ssize_t)mh.msg_iov->iov_len;
+			mh.msg_iov++;
+			mh.msg_iovlen--;
+		}
+		if (mh.msg_iovlen) {
+			mh.msg_iov->iov_base = (uint8_t *)mh.msg_iov->iov_base + k;
+			mh.msg_iov->iov_len -= (size_t)k;
+		}
+	}
+	return 0;
+}
+
+static ssize_t sock_recv(struct rdc_xport *x, void *buf, size_t len,
+			 int timeout_ms)
+{
+	struct sock_xport *s = (struct sock_xport *)x;
+
+	for (;;) {
+		ssize_t k;
+
+		if (timeout_ms >= 0) {
+			struct pollfd pfd = {.fd = s->fd, .events = POLLIN};
+			int r = poll(&pfd, 1, timeout_ms);
+
+			if (r < 0 && errno == EINTR)
+				continue;
+			if (r == 0)
+				return RDC_E_TIMEOUT;
+			if (r < 0)
+				return RDC_E_IO;
+		}
+		k = read(s->fd, buf, len);
+		if (k < 0 && errno == EINTR)
+			continue;
+		return k <= 0 ? RDC_E_IO : k;
+	}
+}
+
+static void sock_close(struct rdc_xport *x)
+{
+	struct sock_xport *s = (struct sock_xport *)x;
+
+	close(s->fd);
+	free(s);
+}
+
+static const struct rdc_xport_ops sock_ops = {
+	.send = sock_send,
+	.recv = sock_recv,
+	.close = sock_close,
+};
 
 static int net_connect_unix(const char *path)
 {
@@ -419,74 +782,33 @@ static int net_connect_tcp(const char *hostport)
 	return fd;
 }
 
-static int net_read_token(const char *path, uint8_t *tok, uint32_t *len)
-{
-	FILE *f;
-	size_t n;
-
-	*len = 0;
-	if (!*path)
-		return 0;
-	f = fopen(path, "rb");
-	if (!f)
-		return RDC_E_FILE;
-	n = fread(tok, 1, RDC_PROTO_MAX_TOKEN, f);
-	fclose(f);
-	while (n && (tok[n - 1] == '\n' || tok[n - 1] == '\r' ||
-		     tok[n - 1] == ' '))
-		n--;
-	*len = (uint32_t)n;
-	return 0;
-}
-
 static int net_open(rdc_dev *dev, const char *opts, bool tcp)
 {
-	struct net_opts o;
-	uint8_t token[RDC_PROTO_MAX_TOKEN], msg[RDC_PROTO_HELLO_FIXED +
-						 RDC_PROTO_MAX_TOKEN];
-	struct rdc_proto_hello h = {
-		.magic = RDC_PROTO_MAGIC,
-		.version = RDC_PROTO_VERSION,
-		.caps = RDC_CAP_ALL,
-		.token = token,
-	};
-	struct net *n;
-	uint8_t *pl = NULL;
-	uint32_t plen = 0;
-	size_t mlen;
+	const char *q = strchr(opts, '?');
+	size_t alen = q ? (size_t)(q - opts) : strlen(opts);
+	struct rdc_client_opts o;
+	struct sock_xport *s;
+	char addr[256]; /* path, or host:port */
 	int ret;
 
-	ret = net_parse_opts(opts, &o);
+	if (alen >= sizeof(addr))
+		return RDC_E_URI;
+	memcpy(addr, opts, alen);
+	addr[alen] = 0;
+	ret = rdc_client_parse_opts(q ? q + 1 : NULL, &o);
 	if (ret)
 		return ret;
-	ret = net_read_token(o.token_file, token, &h.token_len);
-	if (ret)
-		return ret;
-	h.flags = o.observe ? 0 : RDC_HELLO_CONTROL;
-	n = calloc(1, sizeof(*n));
-	if (!n)
+	s = calloc(1, sizeof(*s));
+	if (!s)
 		return RDC_E_NOMEM;
-	n->fd = tcp ? net_connect_tcp(o.addr) : net_connect_unix(o.addr);
-	if (n->fd < 0) {
-		ret = n->fd;
-		free(n);
+	s->x.ops = &sock_ops;
+	s->fd = tcp ? net_connect_tcp(addr) : net_connect_unix(addr);
+	if (s->fd < 0) {
+		ret = s->fd;
+		free(s);
 		return ret;
 	}
-	mlen = rdc_proto_hello_encode(msg, sizeof(msg), &h);
-	ret = net_call(n, RDC_MSG_HELLO, msg, mlen, &pl, &plen);
-	if (!ret && rdc_proto_hello_reply_decode(pl, plen, &n->hello))
-		ret = RDC_E_PROTO;
-	if (!ret && !o.observe && !(n->hello.flags & RDC_HELLO_CONTROL))
-		ret = RDC_E_BUSY;
-	free(pl);
-	if (ret) {
-		if (n->fd >= 0)
-			close(n->fd);
-		free(n);
-		return ret;
-	}
-	dev->priv = n;
-	return 0;
+	return rdc_client_open(dev, &s->x, &o);
 }
 
 static int net_open_unix(rdc_dev *dev, const char *opts)
@@ -499,268 +821,14 @@ static int net_open_tcp(rdc_dev *dev, const char *opts)
 	return net_open(dev, opts, true);
 }
 
-static void net_close(rdc_dev *dev)
-{
-	struct net *n = net_of(dev);
-
-	if (n->fd >= 0)
-		close(n->fd);
-	free(n->frame);
-	free(n);
-	dev->priv = NULL;
-}
-
-/* ---- Operations ---------------------------------------------------------- */
-
-static int net_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
-{
-	uint8_t b[4], *pl = NULL;
-	uint32_t len = 0;
-	int ret;
-
-	rdc_proto_put32(b, reg);
-	ret = net_call(net_of(dev), RDC_MSG_REG_READ, b, 4, &pl, &len);
-	if (!ret && len != 4)
-		ret = RDC_E_PROTO;
-	if (!ret)
-		*val = rdc_proto_get32(pl);
-	free(pl);
-	return ret;
-}
-
-static int net_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
-{
-	uint8_t b[8];
-
-	rdc_proto_put32(b, reg);
-	rdc_proto_put32(b + 4, val);
-	return net_call(net_of(dev), RDC_MSG_REG_WRITE, b, 8, NULL, NULL);
-}
-
-static int net_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
-{
-	uint8_t *out = buf;
-
-	if (len > UINT32_MAX || addr > UINT32_MAX - len)
-		return RDC_E_RANGE;
-	while (len) {
-		uint32_t k = (uint32_t)RDC_MIN(len, RDC_PROTO_VRAM_CHUNK);
-		uint8_t b[8], *pl = NULL;
-		uint32_t got = 0;
-		int ret;
-
-		rdc_proto_put32(b, addr);
-		rdc_proto_put32(b + 4, k);
-		ret = net_call(net_of(dev), RDC_MSG_VRAM_READ, b, 8, &pl,
-			       &got);
-		if (!ret && got != k)
-			ret = RDC_E_PROTO;
-		if (!ret)
-			memcpy(out, pl, k);
-		free(pl);
-		if (ret)
-			return ret;
-		out += k;
-		addr += k;
-		len -= k;
-	}
-	return 0;
-}
-
-static int net_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
-			  size_t len)
-{
-	const uint8_t *in = buf;
-
-	if (len > UINT32_MAX || addr > UINT32_MAX - len)
-		return RDC_E_RANGE;
-	/* Chunks are exact: a host aperture write takes no simulated time. */
-	do {
-		uint32_t k = (uint32_t)RDC_MIN(len, RDC_PROTO_VRAM_CHUNK);
-		uint8_t b[4];
-		int ret;
-
-		rdc_proto_put32(b, addr);
-		ret = net_call2(net_of(dev), RDC_MSG_VRAM_WRITE, b, 4, in, k,
-				NULL, NULL);
-		if (ret)
-			return ret;
-		in += k;
-		addr += k;
-		len -= k;
-	} while (len);
-	return 0;
-}
-
-static int net_submit(rdc_dev *dev, const uint32_t *words, size_t n)
-{
-	uint8_t *b;
-	int ret = 0;
-
-	b = malloc(RDC_MIN(n, RDC_PROTO_MAX_SUBMIT_WORDS) * 4 + 1);
-	if (!b)
-		return RDC_E_NOMEM;
-	/*
-	 * The daemon pushes each message's words as rdc_submit would on
-	 * sim: (FIFO_FREE, then waits), so splitting changes nothing.
-	 */
-	while (n && !ret) {
-		size_t k = RDC_MIN(n, RDC_PROTO_MAX_SUBMIT_WORDS);
-
-		for (size_t i = 0; i < k; i++)
-			rdc_proto_put32(b + 4 * i, words[i]);
-		ret = net_call(net_of(dev), RDC_MSG_SUBMIT, b, k * 4, NULL,
-			       NULL);
-		words += k;
-		n -= k;
-	}
-	free(b);
-	return ret;
-}
-
-static int net_wait(rdc_dev *dev, const struct rdc_wait *w)
-{
-	struct rdc_proto_wait pw = {.budget = w->budget,
-				    .needs_dp = w->needs_dp};
-	uint8_t b[RDC_PROTO_WAIT_SIZE];
-
-	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
-		pw.term[i].kind = w->term[i].kind;
-		pw.term[i].reg = w->term[i].reg;
-		pw.term[i].mask = w->term[i].mask;
-		pw.term[i].value = w->term[i].value;
-	}
-	rdc_proto_wait_encode(b, &pw);
-	return net_call(net_of(dev), RDC_MSG_WAIT, b, sizeof(b), NULL, NULL);
-}
-
-static int net_step(rdc_dev *dev, uint64_t cycles)
-{
-	uint8_t b[8];
-
-	rdc_proto_put64(b, cycles);
-	return net_call(net_of(dev), RDC_MSG_STEP, b, 8, NULL, NULL);
-}
-
-static int net_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
-			  uint32_t *width, uint32_t *height)
-{
-	struct rdc_proto_frame f = {0};
-	uint8_t b[8], *pl = NULL;
-	uint32_t len = 0;
-	int ret;
-
-	rdc_proto_put32(b, RDC_ENC_RAW);
-	rdc_proto_put32(b + 4, (uint32_t)RDC_MIN(cap, UINT32_MAX));
-	ret = net_call(net_of(dev), RDC_MSG_FRAME_GRAB, b, 8, &pl, &len);
-	if (ret == 0 || ret == RDC_E_RANGE) {
-		if (rdc_proto_frame_hdr_decode(pl, len, &f))
-			ret = RDC_E_PROTO;
-		else {
-			*width = f.width;
-			*height = f.height;
-		}
-	}
-	if (!ret && (cap < (size_t)f.width * f.height ||
-		     rdc_proto_frame_decode(buf, f.width, f.height, f.encoding,
-					    pl + RDC_PROTO_FRAME_HDR,
-					    len - RDC_PROTO_FRAME_HDR)))
-		ret = RDC_E_PROTO;
-	free(pl);
-	return ret;
-}
-
-static int net_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
-			 uint32_t encoding)
-{
-	uint8_t b[12];
-
-	rdc_proto_put32(b, events);
-	rdc_proto_put32(b + 4, every);
-	rdc_proto_put32(b + 8, encoding);
-	return net_call(net_of(dev), RDC_MSG_SUBSCRIBE, b, 12, NULL, NULL);
-}
-
-static int net_take_event(struct net *n, struct rdc_event *ev, uint32_t *buf,
-			  size_t cap)
-{
-	if (n->irq_n) {
-		*ev = n->irq[n->irq_head];
-		n->irq_head = (n->irq_head + 1) % NET_IRQ_QUEUE;
-		n->irq_n--;
-		return 1;
-	}
-	if (n->frame_pending) {
-		size_t px = (size_t)n->fw * n->fh;
-
-		n->frame_pending = false;
-		*ev = n->frame_ev;
-		if (cap < px)
-			return RDC_E_RANGE;
-		memcpy(buf, n->frame, px * sizeof(*buf));
-		return 1;
-	}
-	return 0;
-}
-
-static int net_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
-			  size_t cap, int timeout_ms)
-{
-	struct net *n = net_of(dev);
-
-	for (;;) {
-		struct rdc_proto_hdr h;
-		uint8_t *pl;
-		int ret = net_take_event(n, ev, buf, cap);
-
-		if (ret)
-			return ret < 0 ? ret : 0;
-		if (n->fd < 0)
-			return RDC_E_IO;
-		ret = net_read_msg(n, &h, &pl, timeout_ms);
-		if (ret == RDC_E_TIMEOUT)
-			return ret;
-		if (!ret && !(h.flags & RDC_MSGF_EVENT))
-			ret = RDC_E_PROTO; /* a reply nobody asked for */
-		if (!ret)
-			ret = net_event(n, &h, pl);
-		free(pl);
-		if (ret) {
-			close(n->fd);
-			n->fd = -1;
-			return ret;
-		}
-	}
-}
-
 const struct rdc_backend rdc_backend_unix = {
 	.scheme = "unix",
 	.open = net_open_unix,
-	.close = net_close,
-	.reg_read = net_reg_read,
-	.reg_write = net_reg_write,
-	.vram_read = net_vram_read,
-	.vram_write = net_vram_write,
-	.submit = net_submit,
-	.wait = net_wait,
-	.step = net_step,
-	.frame_grab = net_frame_grab,
-	.subscribe = net_subscribe,
-	.event_next = net_event_next,
+	RDC_CLIENT_OPS,
 };
 
 const struct rdc_backend rdc_backend_tcp = {
 	.scheme = "tcp",
 	.open = net_open_tcp,
-	.close = net_close,
-	.reg_read = net_reg_read,
-	.reg_write = net_reg_write,
-	.vram_read = net_vram_read,
-	.vram_write = net_vram_write,
-	.submit = net_submit,
-	.wait = net_wait,
-	.step = net_step,
-	.frame_grab = net_frame_grab,
-	.subscribe = net_subscribe,
-	.event_next = net_event_next,
+	RDC_CLIENT_OPS,
 };

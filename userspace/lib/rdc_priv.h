@@ -133,6 +133,12 @@ struct rdc_backend {
 			 uint32_t encoding);
 	int (*event_next)(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
 			  size_t cap, int timeout_ms);
+
+	/*
+	 * Optional: call fn for every device of this scheme the machine
+	 * reaches (rdc_list); returns how many, or a negative error.
+	 */
+	int (*list)(rdc_found_fn fn, void *arg);
 };
 
 /* Backends (one file each). */
@@ -140,6 +146,7 @@ extern const struct rdc_backend rdc_backend_sim;
 extern const struct rdc_backend rdc_backend_unix; /* net.c */
 extern const struct rdc_backend rdc_backend_tcp;  /* net.c */
 extern const struct rdc_backend rdc_backend_fbdev; /* fbdev.c, rdcfb.ko */
+extern const struct rdc_backend rdc_backend_usb;  /* usb.c, libusb */
 
 /*
  * The chip behind a "sim:" handle, NULL for any other backend: rdcd owns
