@@ -53,7 +53,7 @@ static void test_header_check(void **state)
 	assert_int_equal(rdc_proto_hdr_check(&h, 100), RDC_ST_TOOBIG);
 	h.len = 0;
 	for (uint32_t t = 0; t < 70; t++) {
-		bool known = (t >= RDC_MSG_HELLO && t <= RDC_MSG_PING) ||
+		bool known = (t >= RDC_MSG_HELLO && t <= RDC_MSG_PINS_SET) ||
 			     t == RDC_MSG_EV_FRAME || t == RDC_MSG_EV_IRQ;
 
 		h.type = (uint16_t)t;
@@ -86,6 +86,9 @@ static void test_request_sizes(void **state)
 		{RDC_MSG_WAIT, RDC_PROTO_WAIT_SIZE - 1, RDC_ST_MALFORMED},
 		{RDC_MSG_PING, 0, 0},
 		{RDC_MSG_PING, 1, RDC_ST_MALFORMED},
+		{RDC_MSG_PINS_SET, 8, 0},
+		{RDC_MSG_PINS_SET, 4, RDC_ST_MALFORMED},
+		{RDC_MSG_PINS_SET, 12, RDC_ST_MALFORMED},
 		{RDC_MSG_EV_FRAME, 24, RDC_ST_TYPE},
 		{RDC_MSG_SUBMIT, RDC_PROTO_MAX_REQUEST + 1, RDC_ST_TOOBIG},
 	};

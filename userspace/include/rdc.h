@@ -303,6 +303,80 @@ int rdc_batch_call(rdc_batch *b, uint32_t addr);
 int rdc_batch_ret(rdc_batch *b);
 int rdc_batch_jump(rdc_batch *b, uint32_t addr);
 
+/* ---- Pins ---------------------------------------------------------------- */
+/*
+ * The RDC-1's four pins (RDC_PIN_* of rdc_regs.h): TE (high during
+ * vertical blanking) and IRQ (high while an enabled interrupt is raised)
+ * are the chip's outputs; RESET_N (low holds the chip in reset, releasing
+ * it resets it again) and BL_EN (low darkens the panel) are its inputs,
+ * which the host drives.  They start high.
+ *
+ * sim:, unix:, tcp: and usb: reach them through the register PINS and the
+ * wire protocol (a daemon lets only its controlling client drive them).
+ * fbdev: reaches them as GPIO lines, with libgpiod, on the gpio_chip
+ * rdcfb.ko registers for the framebuffer's device (label "rdcfb.N-pins",
+ * lines "TE", "IRQ", "RESET_N", "BL_EN"); built without libgpiod, every
+ * rdc_pins_* call on fbdev: returns RDC_E_NOSYS.
+ */
+#define RDC_PINS_OUT (RDC_PIN_TE | RDC_PIN_IRQ)	      /* driven by the chip */
+#define RDC_PINS_IN (RDC_PIN_RESET_N | RDC_PIN_BL_EN) /* driven by the host */
+#define RDC_PINS_ALL (RDC_PINS_OUT | RDC_PINS_IN)
+
+#define RDC_EDGE_RISING 0x1u
+#define RDC_EDGE_FALLING 0x2u
+#define RDC_EDGE_BOTH (RDC_EDGE_RISING | RDC_EDGE_FALLING)
+
+/* rdc_pin_edge.time when the backend does not know the simulated time. */
+#define RDC_PIN_TIME_NONE UINT64_MAX
+
+struct rdc_pin_edge {
+	/* pins (RDC_PINS_OUT bits) with a wanted edge at this moment: a pin
+	 * rose if its bit is set in `levels`, else it fell */
+	uint32_t pins;
+	uint32_t levels;  /* all four pins right after the edge */
+	/*
+	 * Simulated core cycles of the edge.  sim:: the exact cycle the pin
+	 * changed.  unix:, tcp:, usb:: the time the daemon saw the new
+	 * level, at most one wait slice (RDC_WAIT_SLICE_MAX cycles) after
+	 * the edge on a stepped daemon, one turn of its loop (about a
+	 * millisecond) on a paced or fast one.  fbdev:: RDC_PIN_TIME_NONE.
+	 */
+	uint64_t time;
+	/* CLOCK_MONOTONIC nanoseconds: when the library learnt of the edge
+	 * (fbdev:: the kernel's timestamp of the GPIO edge event) */
+	uint64_t wall_ns;
+};
+
+/* The four levels as RDC_PIN_* bits. */
+int rdc_pins_get(rdc_dev *dev, uint32_t *levels);
+/*
+ * Drive the inputs in `mask` (RDC_PINS_IN bits; others are RDC_E_INVAL)
+ * to their bits in `levels`; the others keep theirs.  RDC_E_BUSY for a
+ * daemon's observer.  fbdev: holds the lines it drives until rdc_close.
+ */
+int rdc_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels);
+/*
+ * Wait for the next edge of a kind in `edges` (RDC_EDGE_*) on a pin of
+ * `pins` (RDC_PINS_OUT bits, else RDC_E_INVAL) and describe it in *ev.
+ * timeout_us bounds the wait in the device's time: simulated time on
+ * sim:, unix:, tcp:, usb: (wall time too on a paced daemon), wall time
+ * on fbdev:; 0 means ten seconds.  RDC_E_TIMEOUT when it runs out.  On
+ * sim: and a stepped daemon simulated time moves inside the wait.  The
+ * register path sees levels, so a pulse shorter than a wait slice can
+ * go unseen; TE's (a whole vertical blanking) and IRQ's (until the
+ * status is cleared) cannot.
+ */
+int rdc_pins_wait_edge(rdc_dev *dev, uint32_t pins, uint32_t edges,
+		       uint64_t timeout_us, struct rdc_pin_edge *ev);
+/*
+ * Present on TE: wait for TE's rising edge (the start of vertical
+ * blanking) as rdc_pins_wait_edge does, then submit the batch (and empty
+ * it), so that drawing starts in blanking and a short update never
+ * tears.  ev (may be NULL) receives the edge.
+ */
+int rdc_pins_present(rdc_dev *dev, rdc_batch *b, uint64_t timeout_us,
+		     struct rdc_pin_edge *ev);
+
 /* ---- Introspection for hardware-model tests (sim: only) ------------------ */
 struct rdc_stats {
 	uint64_t time; /* simulated core cycles */

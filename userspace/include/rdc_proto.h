@@ -60,6 +60,7 @@ enum rdc_msg_type {
 	RDC_MSG_CLAIM = 13,	/* take control if nobody has it */
 	RDC_MSG_RELEASE = 14,	/* give control up */
 	RDC_MSG_PING = 15,	/* empty -> empty */
+	RDC_MSG_PINS_SET = 16,	/* u32 mask, u32 levels -> u32 pins */
 	RDC_MSG_EV_FRAME = 64,	/* event: frame (RDC_PROTO_FRAME_HDR + data) */
 	RDC_MSG_EV_IRQ = 65,	/* event: u32 new IRQ_STATUS bits, u64 time */
 	RDC_MSG_TYPE_MAX_ = 66
@@ -101,6 +102,9 @@ enum rdc_status {
 #define RDC_CAP_IRQ_EVENTS 0x8u
 #define RDC_CAP_STEP 0x10u /* the daemon runs stepped (time moves on waits) */
 #define RDC_CAP_ALL 0x1fu
+
+/* The last request type: types up to here are requests. */
+#define RDC_MSG_REQUEST_LAST RDC_MSG_PINS_SET
 
 /* Daemon timing modes (HELLO reply) */
 enum rdc_run_mode {

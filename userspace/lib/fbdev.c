@@ -21,17 +21,33 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#ifdef RDC_HAVE_GPIOD
+#include <dirent.h>
+#include <gpiod.h>
+#include <stdio.h>
+#include <sys/sysmacros.h>
+#endif
+
 #include "rdc_priv.h"
 #include "rdcfb_ioctl.h"
 
 /* Wall-clock slack on top of a wait's simulated budget when paced. */
 #define FBDEV_WAIT_SLACK_MS 1000u
 
+/* Edge events read from the GPIO chip at once. */
+#define FBDEV_EDGE_BUF 16u
+
+/* The pins as GPIO lines: TE, IRQ, RESET_N, BL_EN, in RDC_PIN_* order. */
+#define FBDEV_NPINS 4u
+
+struct fbdev_gpio;
+
 struct fbdev {
 	int fd;
 	uint8_t *vram;
 	uint32_t vram_size;
 	uint32_t core_khz;
+	struct fbdev_gpio *gpio; /* opened on the first rdc_pins_* call */
 };
 
 static struct fbdev *fbdev_of(rdc_dev *dev)
@@ -108,8 +124,11 @@ static int fbdev_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
 	return fbdev_ioctl(fbdev_of(dev), RDCFB_IOC_REG_WRITE, &r);
 }
 
+static void fbdev_gpio_free(struct fbdev_gpio *g);
+
 static void fbdev_free(struct fbdev *f)
 {
+	fbdev_gpio_free(f->gpio);
 	if (f->vram)
 		munmap(f->vram, f->vram_size);
 	if (f->fd >= 0)
@@ -357,6 +376,378 @@ static int fbdev_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 	return (size_t)*width * *height > cap ? RDC_E_RANGE : 0;
 }
 
+/* ---- Pins: the device's GPIO chip, through libgpiod ---------------------- */
+#ifdef RDC_HAVE_GPIOD
+
+static const char *const fbdev_pin_name[FBDEV_NPINS] = {
+	"TE", "IRQ", "RESET_N", "BL_EN",
+};
+
+/*
+ * TE and IRQ are requested once as inputs with edge detection; RESET_N and
+ * BL_EN each as an output the first time they are driven (requesting an
+ * output drives it, so a line nobody set is left alone), then held.
+ */
+struct fbdev_gpio {
+	struct gpiod_chip *chip;
+	unsigned int off[FBDEV_NPINS];
+	struct gpiod_line_request *in;
+	struct gpiod_line_request *out[FBDEV_NPINS];
+	uint32_t driven; /* levels of the lines we drive */
+	struct gpiod_edge_event_buffer *buf;
+	int buf_n, buf_next; /* events read and not yet looked at */
+	uint32_t levels; /* TE and IRQ as the last event left them */
+};
+
+static void fbdev_gpio_free(struct fbdev_gpio *g)
+{
+	if (!g)
+		return;
+	for (unsigned int i = 0; i < FBDEV_NPINS; i++)
+		if (g->out[i])
+			gpiod_line_request_release(g->out[i]);
+	if (g->in)
+		gpiod_line_request_release(g->in);
+	if (g->buf)
+		gpiod_edge_event_buffer_free(g->buf);
+	if (g->chip)
+		gpiod_chip_close(g->chip);
+	free(g);
+}
+
+/*
+ * The chip's label names the framebuffer's platform device: "rdcfb.N"
+ * (/sys/dev/char/MAJ:MIN/device) gives "rdcfb.N-pins".
+ */
+static int fbdev_gpio_label(struct fbdev *f, char *label, size_t cap)
+{
+	char link[128], target[256];
+	const char *base;
+	struct stat st;
+	ssize_t n;
+
+	if (fstat(f->fd, &st))
+		return RDC_E_IO;
+	snprintf(link, sizeof(link), "/sys/dev/char/%u:%u/device",
+		 major(st.st_rdev), minor(st.st_rdev));
+	n = readlink(link, target, sizeof(target) - 1);
+	if (n <= 0)
+		return RDC_E_NOSYS;
+	target[n] = 0;
+	base = strrchr(target, '/');
+	base = base ? base + 1 : target;
+	if ((size_t)snprintf(label, cap, "%s-pins", base) >= cap)
+		return RDC_E_NOSYS;
+	return 0;
+}
+
+static struct gpiod_chip *fbdev_gpio_find(const char *label)
+{
+	struct gpiod_chip *found = NULL;
+	struct dirent *de;
+	DIR *dir = opendir("/dev");
+
+	if (!dir)
+		return NULL;
+	while (!found && (de = readdir(dir))) {
+		char path[300];
+		struct gpiod_chip *c;
+		struct gpiod_chip_info *info;
+
+		if (strncmp(de->d_name, "gpiochip", 8))
+			continue;
+		snprintf(path, sizeof(path), "/dev/%s", de->d_name);
+		c = gpiod_chip_open(path);
+		if (!c)
+			continue;
+		info = gpiod_chip_get_info(c);
+		if (info && !strcmp(gpiod_chip_info_get_label(info), label))
+			found = c;
+		else
+			gpiod_chip_close(c);
+		if (info)
+			gpiod_chip_info_free(info);
+	}
+	closedir(dir);
+	return found;
+}
+
+static struct gpiod_line_request *
+fbdev_gpio_request(struct gpiod_chip *chip, const unsigned int *off,
+		   size_t n, bool output, bool high)
+{
+	struct gpiod_line_settings *ls = gpiod_line_settings_new();
+	struct gpiod_line_config *lc = gpiod_line_config_new();
+	struct gpiod_request_config *rc = gpiod_request_config_new();
+	struct gpiod_line_request *req = NULL;
+
+	if (!ls || !lc || !rc)
+		goto out;
+	if (output) {
+		gpiod_line_settings_set_direction(ls,
+						  GPIOD_LINE_DIRECTION_OUTPUT);
+		gpiod_line_settings_set_output_value(
+			ls, high ? GPIOD_LINE_VALUE_ACTIVE
+				 : GPIOD_LINE_VALUE_INACTIVE);
+	} else {
+		gpiod_line_settings_set_direction(ls,
+						  GPIOD_LINE_DIRECTION_INPUT);
+		gpiod_line_settings_set_edge_detection(ls, GPIOD_LINE_EDGE_BOTH);
+		gpiod_line_settings_set_event_clock(
+			ls, GPIOD_LINE_CLOCK_MONOTONIC);
+	}
+	if (gpiod_line_config_add_line_settings(lc, off, n, ls))
+		goto out;
+	gpiod_request_config_set_consumer(rc, "librdc");
+	gpiod_request_config_set_event_buffer_size(rc, 64);
+	req = gpiod_chip_request_lines(chip, rc, lc);
+out:
+	gpiod_request_config_free(rc);
+	gpiod_line_config_free(lc);
+	gpiod_line_settings_free(ls);
+	return req;
+}
+
+/* TE, IRQ and the chip's levels (the inputs from PINS until we drive). */
+static int fbdev_gpio_sample(struct fbdev *f)
+{
+	struct fbdev_gpio *g = f->gpio;
+	enum gpiod_line_value v[2];
+
+	if (gpiod_line_request_get_values(g->in, v))
+		return fbdev_error(errno);
+	g->levels = (v[0] == GPIOD_LINE_VALUE_ACTIVE ? RDC_PIN_TE : 0) |
+		    (v[1] == GPIOD_LINE_VALUE_ACTIVE ? RDC_PIN_IRQ : 0);
+	return 0;
+}
+
+static int fbdev_gpio_open(struct fbdev *f)
+{
+	struct fbdev_gpio *g;
+	char label[160];
+	int ret;
+
+	if (f->gpio)
+		return 0;
+	ret = fbdev_gpio_label(f, label, sizeof(label));
+	if (ret)
+		return ret;
+	g = calloc(1, sizeof(*g));
+	if (!g)
+		return RDC_E_NOMEM;
+	/* a module without the pins' chip offers no pins */
+	ret = RDC_E_NOSYS;
+	g->chip = fbdev_gpio_find(label);
+	if (!g->chip)
+		goto fail;
+	for (unsigned int i = 0; i < FBDEV_NPINS; i++) {
+		int o = gpiod_chip_get_line_offset_from_name(g->chip,
+							     fbdev_pin_name[i]);
+
+		if (o < 0)
+			goto fail;
+		g->off[i] = (unsigned int)o;
+	}
+	ret = RDC_E_NOMEM;
+	g->buf = gpiod_edge_event_buffer_new(FBDEV_EDGE_BUF);
+	if (!g->buf)
+		goto fail;
+	g->in = fbdev_gpio_request(g->chip, g->off, 2, false, false);
+	if (!g->in) {
+		ret = errno == EBUSY ? RDC_E_BUSY : fbdev_error(errno);
+		goto fail;
+	}
+	f->gpio = g;
+	ret = fbdev_gpio_sample(f);
+	if (ret) {
+		f->gpio = NULL;
+		goto fail;
+	}
+	return 0;
+fail:
+	fbdev_gpio_free(g);
+	return ret;
+}
+
+_Static_assert(RDC_PIN_TE == 1u && RDC_PIN_IRQ == 2u &&
+		       RDC_PIN_RESET_N == 4u && RDC_PIN_BL_EN == 8u,
+	       "fbdev_pin_name is in RDC_PIN_* bit order");
+
+static uint32_t fbdev_bit(unsigned int i)
+{
+	return 1u << i;
+}
+
+static int fbdev_pins_get(rdc_dev *dev, uint32_t *levels)
+{
+	struct fbdev *f = fbdev_of(dev);
+	uint32_t in = 0, mine = 0;
+	int ret = fbdev_gpio_open(f);
+
+	if (!ret)
+		ret = fbdev_gpio_sample(f);
+	if (ret)
+		return ret;
+	for (unsigned int i = 2; i < FBDEV_NPINS; i++)
+		if (f->gpio->out[i])
+			mine |= fbdev_bit(i);
+	/* lines this handle does not drive: as the chip sees them */
+	if (mine != RDC_PINS_IN) {
+		ret = fbdev_reg_read(dev, RDC_REG_PINS, &in);
+		if (ret)
+			return ret;
+	}
+	*levels = f->gpio->levels | (in & RDC_PINS_IN & ~mine) |
+		  (f->gpio->driven & mine);
+	return 0;
+}
+
+static int fbdev_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
+{
+	struct fbdev *f = fbdev_of(dev);
+	struct fbdev_gpio *g;
+	int ret = fbdev_gpio_open(f);
+
+	if (ret)
+		return ret;
+	g = f->gpio;
+	for (unsigned int i = 2; i < FBDEV_NPINS; i++) {
+		uint32_t bit = fbdev_bit(i);
+		bool high = levels & bit;
+
+		if (!(mask & bit))
+			continue;
+		if (!g->out[i]) {
+			g->out[i] = fbdev_gpio_request(g->chip, &g->off[i], 1,
+						       true, high);
+			if (!g->out[i])
+				return errno == EBUSY ? RDC_E_BUSY
+						      : fbdev_error(errno);
+		} else if (gpiod_line_request_set_value(
+				   g->out[i], g->off[i],
+				   high ? GPIOD_LINE_VALUE_ACTIVE
+					: GPIOD_LINE_VALUE_INACTIVE)) {
+			return fbdev_error(errno);
+		}
+		g->driven = (g->driven & ~bit) | (high ? bit : 0);
+	}
+	return 0;
+}
+
+/* The next buffered edge event, reading more within `ns`; 0 on timeout. */
+static int fbdev_gpio_next(struct fbdev_gpio *g, int64_t ns,
+			   struct gpiod_edge_event **out)
+{
+	int r;
+
+	if (g->buf_next < g->buf_n) {
+		*out = gpiod_edge_event_buffer_get_event(g->buf,
+							 (unsigned long)g->buf_next++);
+		return 1;
+	}
+	r = gpiod_line_request_wait_edge_events(g->in, ns);
+	if (r <= 0)
+		return r < 0 ? fbdev_error(errno) : 0;
+	r = gpiod_line_request_read_edge_events(g->in, g->buf, FBDEV_EDGE_BUF);
+	if (r < 0)
+		return fbdev_error(errno);
+	g->buf_n = r;
+	g->buf_next = 0;
+	if (!r)
+		return 0;
+	*out = gpiod_edge_event_buffer_get_event(g->buf,
+						 (unsigned long)g->buf_next++);
+	return 1;
+}
+
+static int fbdev_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
+			   uint64_t budget_cycles, uint64_t timeout_us,
+			   struct rdc_pin_edge *ev)
+{
+	struct fbdev *f = fbdev_of(dev);
+	uint64_t deadline, now;
+	struct fbdev_gpio *g;
+	uint32_t in = 0;
+	int ret = fbdev_gpio_open(f);
+
+	(void)budget_cycles;
+	if (ret)
+		return ret;
+	g = f->gpio;
+	if (!timeout_us)
+		timeout_us = RDC_WAIT_BUDGET_DEFAULT / (RDC_DEFAULT_CORE_HZ /
+							 1000000u);
+	deadline = rdc_pins_wall_ns() + timeout_us * 1000u;
+	for (;;) {
+		struct gpiod_edge_event *e = NULL;
+		uint32_t bit;
+		bool rising;
+
+		now = rdc_pins_wall_ns();
+		ret = fbdev_gpio_next(g, now < deadline
+					      ? (int64_t)(deadline - now)
+					      : 0, &e);
+		if (ret < 0)
+			return ret;
+		if (!ret)
+			return RDC_E_TIMEOUT;
+		bit = gpiod_edge_event_get_line_offset(e) == g->off[0]
+			      ? RDC_PIN_TE
+			      : RDC_PIN_IRQ;
+		rising = gpiod_edge_event_get_event_type(e) ==
+			 GPIOD_EDGE_EVENT_RISING_EDGE;
+		g->levels = (g->levels & ~bit) | (rising ? bit : 0);
+		if (!(pins & bit) ||
+		    !(edges & (rising ? RDC_EDGE_RISING : RDC_EDGE_FALLING)))
+			continue;
+		ev->pins = bit;
+		ev->time = RDC_PIN_TIME_NONE;
+		ev->wall_ns = gpiod_edge_event_get_timestamp_ns(e);
+		ret = fbdev_reg_read(dev, RDC_REG_PINS, &in);
+		if (ret)
+			return ret;
+		ev->levels = g->levels | (in & RDC_PINS_IN);
+		return 0;
+	}
+}
+
+#else /* !RDC_HAVE_GPIOD: no GPIO lines, no pins */
+
+static void fbdev_gpio_free(struct fbdev_gpio *g)
+{
+	(void)g;
+}
+
+static int fbdev_pins_get(rdc_dev *dev, uint32_t *levels)
+{
+	(void)dev;
+	(void)levels;
+	return RDC_E_NOSYS;
+}
+
+static int fbdev_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
+{
+	(void)dev;
+	(void)mask;
+	(void)levels;
+	return RDC_E_NOSYS;
+}
+
+static int fbdev_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
+			   uint64_t budget_cycles, uint64_t timeout_us,
+			   struct rdc_pin_edge *ev)
+{
+	(void)dev;
+	(void)pins;
+	(void)edges;
+	(void)budget_cycles;
+	(void)timeout_us;
+	(void)ev;
+	return RDC_E_NOSYS;
+}
+
+#endif /* RDC_HAVE_GPIOD */
+
 const struct rdc_backend rdc_backend_fbdev = {
 	.scheme = "fbdev",
 	.open = fbdev_open,
@@ -369,4 +760,7 @@ const struct rdc_backend rdc_backend_fbdev = {
 	.wait = fbdev_wait,
 	.step = fbdev_step,
 	.frame_grab = fbdev_frame_grab,
+	.pins_set = fbdev_pins_set,
+	.pins_get = fbdev_pins_get,
+	.pins_wait = fbdev_pins_wait,
 };

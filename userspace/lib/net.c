@@ -548,6 +548,21 @@ int rdc_client_step(rdc_dev *dev, uint64_t cycles)
 	return net_call(net_of(dev), RDC_MSG_STEP, b, 8, NULL, NULL);
 }
 
+int rdc_client_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
+{
+	uint8_t b[8], *pl = NULL;
+	uint32_t len = 0;
+	int ret;
+
+	rdc_proto_put32(b, mask);
+	rdc_proto_put32(b + 4, levels);
+	ret = net_call(net_of(dev), RDC_MSG_PINS_SET, b, 8, &pl, &len);
+	if (!ret && len != 4)
+		ret = RDC_E_PROTO;
+	free(pl);
+	return ret;
+}
+
 int rdc_client_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 			  uint32_t *width, uint32_t *height)
 {

@@ -36,7 +36,7 @@ int rdc_proto_hdr_check(const struct rdc_proto_hdr *h, uint32_t max_len)
 	if (h->len > max_len)
 		return RDC_ST_TOOBIG;
 	if (h->type == 0 || h->type >= RDC_MSG_TYPE_MAX_ ||
-	    (h->type > RDC_MSG_PING && h->type < RDC_MSG_EV_FRAME))
+	    (h->type > RDC_MSG_REQUEST_LAST && h->type < RDC_MSG_EV_FRAME))
 		return RDC_ST_TYPE;
 	return 0;
 }
@@ -57,6 +57,7 @@ int rdc_proto_request_check(const struct rdc_proto_hdr *h)
 	case RDC_MSG_VRAM_READ:
 	case RDC_MSG_STEP:
 	case RDC_MSG_FRAME_GRAB:
+	case RDC_MSG_PINS_SET:
 		return len == 8 ? 0 : RDC_ST_MALFORMED;
 	case RDC_MSG_VRAM_WRITE:
 		return len >= 4 && len - 4 <= RDC_PROTO_VRAM_CHUNK

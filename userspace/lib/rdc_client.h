@@ -71,6 +71,8 @@ int rdc_client_wait(rdc_dev *dev, const struct rdc_wait *w);
 int rdc_client_step(rdc_dev *dev, uint64_t cycles);
 int rdc_client_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 			  uint32_t *width, uint32_t *height);
+/* Drive RESET_N/BL_EN (RDC_MSG_PINS_SET). */
+int rdc_client_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels);
 int rdc_client_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
 			 uint32_t encoding);
 int rdc_client_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
@@ -85,6 +87,7 @@ int rdc_client_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
 	.wait = rdc_client_wait, .step = rdc_client_step,                    \
 	.frame_grab = rdc_client_frame_grab,                                 \
 	.subscribe = rdc_client_subscribe,                                   \
-	.event_next = rdc_client_event_next
+	.event_next = rdc_client_event_next,                                 \
+	.pins_set = rdc_client_pins_set
 
 #endif /* RDC_CLIENT_H */

@@ -135,6 +135,22 @@ struct rdc_backend {
 			  size_t cap, int timeout_ms);
 
 	/*
+	 * Pins (pins.c, rdc_pins_* in rdc.h).  pins_set is optional: drive
+	 * the inputs in `mask` (RDC_PINS_IN bits, checked by the core) to
+	 * `levels`; NULL: RDC_E_NOSYS.  pins_get and pins_wait are optional
+	 * too: NULL reads the register PINS and waits on it through wait()
+	 * (rdc_pins_wait_regs), which is right for any backend whose
+	 * registers are the chip's.  pins_wait gets `pins` and `edges`
+	 * checked and a budget in simulated cycles (budget_cycles) or wall
+	 * time (timeout_us), whichever its device counts in.
+	 */
+	int (*pins_set)(rdc_dev *dev, uint32_t mask, uint32_t levels);
+	int (*pins_get)(rdc_dev *dev, uint32_t *levels);
+	int (*pins_wait)(rdc_dev *dev, uint32_t pins, uint32_t edges,
+			 uint64_t budget_cycles, uint64_t timeout_us,
+			 struct rdc_pin_edge *ev);
+
+	/*
 	 * Optional: call fn for every device of this scheme the machine
 	 * reaches (rdc_list); returns how many, or a negative error.
 	 */
@@ -199,6 +215,16 @@ typedef int (*rdc_fifo_push_fn)(rdc_dev *dev, const uint32_t *words,
 				uint32_t n);
 int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
 		  rdc_fifo_push_fn push);
+/*
+ * Pins through the register PINS and wait() (pins.c): the next wanted
+ * edge within `budget` simulated cycles, ev->time the simulated time the
+ * wait saw it.
+ */
+int rdc_pins_wait_regs(rdc_dev *dev, uint32_t pins, uint32_t edges,
+		       uint64_t budget, struct rdc_pin_edge *ev);
+/* CLOCK_MONOTONIC in nanoseconds (pins.c). */
+uint64_t rdc_pins_wall_ns(void);
+
 /* RDC_E_DEVICE if the device has a pending error, else 0 (core.c). */
 int rdc_check_error(rdc_dev *dev);
 

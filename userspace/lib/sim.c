@@ -225,6 +225,72 @@ static int sim_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 	return 0;
 }
 
+static int sim_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
+{
+	struct rdc_hw *hw = &sim_of(dev)->hw;
+
+	rdc_hw_set_pins(hw, (hw->pins_in & ~mask) | (levels & mask));
+	return 0;
+}
+
+/*
+ * The chip reports every pin change at the cycle it happens
+ * (RDC_TRACE_PINS); the wait sees the new level up to a slice later.  So
+ * for the length of the wait the backend listens on the trace hook too,
+ * passing everything on to whoever listened before, and gives the edge
+ * the time the chip reported for it.
+ */
+struct sim_pins_watch {
+	rdc_trace_fn fn;
+	void *ctx;
+	uint64_t changed[2]; /* last change of TE, IRQ; RDC_NEVER: none */
+};
+
+static void sim_pins_trace(void *ctx, uint64_t time, unsigned int event,
+			   uint32_t a, uint32_t b)
+{
+	struct sim_pins_watch *w = ctx;
+
+	if (event == RDC_TRACE_PINS) {
+		if (b & RDC_PIN_TE)
+			w->changed[0] = time;
+		if (b & RDC_PIN_IRQ)
+			w->changed[1] = time;
+	}
+	if (w->fn)
+		w->fn(w->ctx, time, event, a, b);
+}
+
+static int sim_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
+			 uint64_t budget_cycles, uint64_t timeout_us,
+			 struct rdc_pin_edge *ev)
+{
+	struct rdc_hw *hw = &sim_of(dev)->hw;
+	struct sim_pins_watch w = {
+		.fn = hw->trace_fn,
+		.ctx = hw->trace_ctx,
+		.changed = {RDC_NEVER, RDC_NEVER},
+	};
+	uint64_t t = RDC_NEVER;
+	int ret;
+
+	(void)timeout_us;
+	rdc_hw_set_trace(hw, sim_pins_trace, &w);
+	ret = rdc_pins_wait_regs(dev, pins, edges, budget_cycles, ev);
+	rdc_hw_set_trace(hw, w.fn, w.ctx);
+	if (ret)
+		return ret;
+	/* the reported pins changed last at their edge */
+	if (ev->pins & RDC_PIN_TE)
+		t = w.changed[0];
+	if ((ev->pins & RDC_PIN_IRQ) && w.changed[1] != RDC_NEVER &&
+	    (t == RDC_NEVER || w.changed[1] > t))
+		t = w.changed[1];
+	if (t != RDC_NEVER)
+		ev->time = t;
+	return 0;
+}
+
 struct rdc_hw *rdc_sim_hw(rdc_dev *dev)
 {
 	return dev && dev->be == &rdc_backend_sim ? &sim_of(dev)->hw : NULL;
@@ -242,4 +308,6 @@ const struct rdc_backend rdc_backend_sim = {
 	.wait = sim_wait,
 	.step = sim_step,
 	.frame_grab = sim_frame_grab,
+	.pins_set = sim_pins_set,
+	.pins_wait = sim_pins_wait,
 };

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "pins.h"
 #include "rdc.h"
 #include "stream.h"
 
@@ -28,7 +29,7 @@ static void usage(FILE *f)
 	      "  replay TRACE [-o OUT.png]  play an rdcd --record trace on a\n"
 	      "                             fresh sim: and print its time, frame\n"
 	      "                             count and last frame's CRC-32\n"
-	      "%s"
+	      "%s%s"
 	      "\n"
 	      "options:\n"
 	      "  --connect URI  device to use (default " RDCCTL_DEFAULT_URI
@@ -39,7 +40,7 @@ static void usage(FILE *f)
 	      "  -h, --help  this text\n"
 	      "\n"
 	      "The script format is described in docs/rdl.md.\n",
-	      rdcctl_stream_usage);
+	      rdcctl_stream_usage, rdcctl_pins_usage);
 }
 
 struct opts {
@@ -287,6 +288,9 @@ int main(int argc, char **argv)
 	int ret;
 
 	ret = rdcctl_stream_main(argc, argv);
+	if (ret >= 0)
+		return ret;
+	ret = rdcctl_pins_main(argc, argv);
 	if (ret >= 0)
 		return ret;
 	if (parse_args(argc, argv, &o))

@@ -109,6 +109,10 @@ static void usage(FILE *f)
 	      "                   next frame as a still)\n"
 	      "  --vnc PORT       a VNC server on 127.0.0.1:PORT\n"
 	      "  --sink SPEC      any frame sink (userspace/include/rdc_sink.h)\n"
+	      "  --gpio-sim NAME  the pins TE, IRQ, RESET_N, BL_EN as the lines\n"
+	      "                   of the gpio-sim chip NAME, made in configfs\n"
+	      "                   (/sys/kernel/config/gpio-sim/NAME) and taken\n"
+	      "                   down on exit (needs gpio-sim.ko; docs/pins.md)\n"
 	      "  -v, -q           more, less logging (stderr)\n"
 	      "  -h, --help       this text\n",
 	      f);
@@ -468,6 +472,7 @@ struct rdcd_opts {
 	const char *mode, *record, *token, *ready;
 	uint32_t vram;
 	bool group;
+	const char *gpio_sim;
 	char *sinks[RDCD_MAX_SINKS];
 	unsigned int nsinks;
 };
@@ -533,6 +538,12 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 			d->log_level++;
 		} else if (!strcmp(a, "-q")) {
 			d->log_level--;
+		} else if (!strcmp(a, "--gpio-sim")) {
+			if (!val) {
+				fprintf(stderr, "rdcd: %s needs a value\n", a);
+				return -1;
+			}
+			o->gpio_sim = argv[++i];
 		} else if (!strcmp(a, "--v4l2") || !strcmp(a, "--png") ||
 			   !strcmp(a, "--vnc") || !strcmp(a, "--sink")) {
 			if (!val) {
@@ -611,6 +622,10 @@ static void rdcd_loop(struct rdcd *d)
 			tmo = &ts;
 		} else if (d->mode == RDC_RUN_FAST || rdcd_has_pending(d)) {
 			tmo = &ts; /* zero: just look */
+		} else if (d->gpiosim) {
+			/* a GPIO consumer's RESET_N/BL_EN has no fd to wake us */
+			ts.tv_nsec = RDCD_GPIOSIM_POLL_MS * 1000000L;
+			tmo = &ts;
 		}
 		/* Signals are blocked except inside ppoll: none is missed. */
 		r = ppoll(pfd, n, tmo, &none);
@@ -638,6 +653,7 @@ static void rdcd_loop(struct rdcd *d)
 		}
 		if (rdcd_snap)
 			rdcd_snapshot(d);
+		rdcd_gpiosim_poll(d);
 		if (rdcd_advance(d))
 			rdcd_after_advance(d);
 		for (unsigned int i = 0; i < d->nsinks; i++)
@@ -719,6 +735,8 @@ int main(int argc, char **argv)
 			goto out;
 		}
 	}
+	if (o.gpio_sim && rdcd_gpiosim_open(&d, o.gpio_sim))
+		goto out;
 	if (!o.nlisten)
 		o.listen[o.nlisten++] = "unix:";
 	for (unsigned int i = 0; i < o.nlisten; i++)
@@ -753,6 +771,7 @@ out:
 		if (d.lis[i].path[0])
 			unlink(d.lis[i].path);
 	}
+	rdcd_gpiosim_close(&d);
 	rdcd_device_close(&d);
 	for (unsigned int i = 0; i < d.nsinks; i++)
 		rdc_sink_close(d.sinks[i]);

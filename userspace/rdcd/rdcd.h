@@ -123,6 +123,9 @@ struct rdcd {
 	} trace[RDCD_MAX_TRACE];
 	unsigned int ntrace;
 
+	/* --gpio-sim: the pins on a gpio-sim chip (gpiosim.c), or NULL */
+	struct rdcd_gpiosim *gpiosim;
+
 	/* pacing: simulated time pace_sim0 was wall time pace_wall0 */
 	uint64_t pace_wall0_ns, pace_sim0;
 };
@@ -163,5 +166,16 @@ void rdcd_ffs_close(struct rdcd_ffs *f);
 int rdcd_trace_add(struct rdcd *d, rdc_trace_fn fn, void *ctx);
 void rdcd_trace_remove(struct rdcd *d, rdc_trace_fn fn, void *ctx);
 void rdcd_trace_attach(struct rdcd *d);
+
+/*
+ * gpiosim.c: --gpio-sim NAME makes the gpio-sim chip NAME and bridges the
+ * pins to it: open (0 or -1, logged), poll once per loop turn (the loop
+ * turns at least every RDCD_GPIOSIM_POLL_MS), close (takes the chip
+ * down).
+ */
+#define RDCD_GPIOSIM_POLL_MS 5
+int rdcd_gpiosim_open(struct rdcd *d, const char *name);
+void rdcd_gpiosim_poll(struct rdcd *d);
+void rdcd_gpiosim_close(struct rdcd *d);
 
 #endif /* RDCD_H */

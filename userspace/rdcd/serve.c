@@ -720,6 +720,7 @@ static bool rdcd_needs_control(const struct rdcd *d,
 	case RDC_MSG_SUBMIT:
 	case RDC_MSG_STEP:
 	case RDC_MSG_RESET:
+	case RDC_MSG_PINS_SET:
 		return true;
 	case RDC_MSG_WAIT:
 		/* in stepped mode a wait moves time */
@@ -759,6 +760,37 @@ static void rdcd_submit(struct rdcd *d, struct rdcd_client *c,
 	c->pend_n = n;
 	c->pend_done = 0;
 	rdcd_pending_step(d, c);
+}
+
+/*
+ * Drive RESET_N and BL_EN as a wire to the chip would; the reply is the
+ * four levels after.  A trace could not replay a pin change, so a
+ * recording daemon refuses (the wrapped handle has no pins_set).
+ */
+static void rdcd_pins_set(struct rdcd *d, struct rdcd_client *c,
+			  const struct rdc_proto_hdr *h, const uint8_t *pl)
+{
+	uint32_t mask = rdc_proto_get32(pl), levels = rdc_proto_get32(pl + 4);
+	uint8_t out[4];
+	uint32_t pins = 0;
+	int ret;
+
+	if (mask & ~RDC_PINS_IN) {
+		rdcd_reply(d, c, h, RDC_ST_INVAL, NULL, 0);
+		return;
+	}
+	ret = rdc_pins_set(d->dev, mask, levels);
+	if (!ret)
+		ret = rdc_pins_get(d->dev, &pins);
+	if (ret) {
+		rdcd_reply_err(d, c, h, ret);
+		return;
+	}
+	if (mask)
+		rdcd_log(d, RDCD_LOG_DEBUG, "client %u: pins %#x", c->id, pins);
+	rdc_proto_put32(out, pins);
+	rdcd_reply(d, c, h, RDC_ST_OK, out, sizeof(out));
+	rdcd_irq_events(d);
 }
 
 static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
@@ -929,6 +961,9 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		break;
 	case RDC_MSG_PING:
 		rdcd_reply(d, c, h, RDC_ST_OK, NULL, 0);
+		break;
+	case RDC_MSG_PINS_SET:
+		rdcd_pins_set(d, c, h, pl);
 		break;
 	default:
 		rdcd_reply(d, c, h, RDC_ST_TYPE, NULL, 0);
