@@ -34,6 +34,15 @@
 /* The pseudo palette fbcon's truecolor colours index. */
 #define RDCFB_PSEUDO_COLOURS 16
 
+struct rdcfb_gpio;
+
+/* What the GPIO lines' deliverer counted (sysfs pin_*). */
+struct rdcfb_pin_stats {
+	u64 edges; /* TE and IRQ edges delivered */
+	u64 lost; /* dropped at a full queue */
+	u64 late_max_ns, late_avg_ns; /* delivery after the edge (paced) */
+};
+
 struct rdcfb_chip {
 	spinlock_t lock;
 	struct rdc_hw hw; /* lock */
@@ -61,6 +70,7 @@ struct rdcfb_chip {
 	 * behind fb_ops' back
 	 */
 	u32 fb_state_gen;
+	struct rdcfb_gpio *gpio; /* lock: the pins as GPIO lines, or NULL */
 
 	struct mutex snap_lock;
 	u32 *snap; /* a copy of the latest frame, snap_lock */
@@ -98,6 +108,33 @@ bool rdcfb_dp_usable(struct rdcfb_chip *chip);
 int rdcfb_push_locked(struct rdcfb_chip *chip, const u32 *words, u32 n);
 void rdcfb_drain_locked(struct rdcfb_chip *chip);
 void rdcfb_irq_check_locked(struct rdcfb_chip *chip);
+u32 rdcfb_chip_pins_in(struct rdcfb_chip *chip);
+void rdcfb_chip_set_pin(struct rdcfb_chip *chip, u32 pin, bool high);
+
+/* rdcfb_gpio.c: without GPIOLIB_IRQCHIP the device has no GPIO lines */
+#if IS_ENABLED(CONFIG_GPIOLIB_IRQCHIP)
+int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id);
+void rdcfb_gpio_unregister(struct rdcfb_chip *chip);
+void rdcfb_gpio_event_locked(struct rdcfb_gpio *g, ktime_t wall, u32 levels);
+void rdcfb_gpio_deliver_now(struct rdcfb_gpio *g);
+void rdcfb_gpio_stats(struct rdcfb_gpio *g, struct rdcfb_pin_stats *s);
+#else
+static inline int rdcfb_gpio_register(struct rdcfb_chip *chip,
+				      struct device *dev, int id)
+{
+	return -ENODEV;
+}
+
+static inline void rdcfb_gpio_unregister(struct rdcfb_chip *chip) {}
+static inline void rdcfb_gpio_event_locked(struct rdcfb_gpio *g,
+					   ktime_t wall, u32 levels) {}
+static inline void rdcfb_gpio_deliver_now(struct rdcfb_gpio *g) {}
+static inline void rdcfb_gpio_stats(struct rdcfb_gpio *g,
+				    struct rdcfb_pin_stats *s)
+{
+	memset(s, 0, sizeof(*s));
+}
+#endif
 
 
 /* rdcfb_fb.c */

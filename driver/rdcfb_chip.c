@@ -6,7 +6,10 @@
  * clock=paced: an hrtimer ticks a few times a frame and queues the pacing
  * work, which runs the chip up to the simulated time that wall time says
  * it should have reached, in bounded slices (simulating a frame takes
- * milliseconds: never in hrtimer context, never in one lock hold).
+ * milliseconds: never in hrtimer context, never in one lock hold).  The
+ * tick also comes at the wall time of each TE edge (and shortly before
+ * it), and the slices stop at the edge, so that the GPIO line TE changes
+ * close to the time it stands for (rdcfb_gpio.c).
  * clock=stepped: time moves only inside WAIT, STEP and FBIO_WAITFORVSYNC,
  * with the core's own wait (hw-sim/wait.c, which librdc's sim: backend uses
  * too), so the same register writes, submits and waits give the same
@@ -31,6 +34,13 @@
 #define RDCFB_PACE_TICKS_PER_FRAME 4u
 #define RDCFB_PACE_MIN_NS (1 * NSEC_PER_MSEC)
 #define RDCFB_PACE_MAX_NS (50 * NSEC_PER_MSEC)
+/*
+ * A tick this long before each TE edge, so that the tick at the edge itself
+ * has little simulation left to do before the edge reaches GPIO consumers;
+ * and the shortest time to the next tick.
+ */
+#define RDCFB_EDGE_LEAD_NS (500 * NSEC_PER_USEC)
+#define RDCFB_TICK_MIN_NS (50 * NSEC_PER_USEC)
 /* A host that cannot keep up lets simulated time slip past this lag. */
 #define RDCFB_PACE_MAX_LAG_NS (100 * NSEC_PER_MSEC)
 /* WAIT defaults: 10 s of wall time, 10 simulated seconds. */
@@ -42,6 +52,17 @@
 #define RDCFB_SNAP_CHUNK (64u << 10)
 #define RDCFB_SNAP_TRIES 4u
 
+/* The wall time the paced clock maps simulated time t to (lock held). */
+static ktime_t rdcfb_wall_of_locked(struct rdcfb_chip *chip, u64 t)
+{
+	if (t <= chip->sim_base)
+		return chip->wall_base;
+	return ktime_add_ns(chip->wall_base,
+			    mul_u64_u32_div(t - chip->sim_base, NSEC_PER_SEC,
+					    chip->hw.core_hz));
+}
+
+/* Under chip->lock, inside the simulation: never sleeps. */
 static void rdcfb_trace(void *ctx, u64 time, unsigned int event, u32 a, u32 b)
 {
 	struct rdcfb_chip *chip = ctx;
@@ -50,6 +71,10 @@ static void rdcfb_trace(void *ctx, u64 time, unsigned int event, u32 a, u32 b)
 		chip->frames++;
 	else if (event == RDC_TRACE_ERROR)
 		dev_dbg(chip->dev, "error %u info %#x at %llu\n", a, b, time);
+	else if (event == RDC_TRACE_PINS && chip->gpio)
+		rdcfb_gpio_event_locked(chip->gpio,
+					chip->stepped ? 0 :
+					rdcfb_wall_of_locked(chip, time), a);
 }
 
 /*
@@ -87,6 +112,40 @@ static void rdcfb_update_period(struct rdcfb_chip *chip)
 		   clamp_t(u64, ns, RDCFB_PACE_MIN_NS, RDCFB_PACE_MAX_NS));
 }
 
+/* Simulated time of the next TE edge, or RDC_NEVER (lock held). */
+static u64 rdcfb_next_te_locked(struct rdcfb_chip *chip)
+{
+	struct rdc_hw *hw = &chip->hw;
+
+	if (hw->in_reset || !hw->crtc.running)
+		return RDC_NEVER;
+	return hw->crtc.in_vblank ? rdc_port_next_line(hw, 0) :
+				    rdc_port_next_vblank(hw);
+}
+
+/*
+ * When the pacing tick comes next (lock held): a period on, or earlier at
+ * the next TE edge's wall time, with a tick RDCFB_EDGE_LEAD_NS before it,
+ * so that TE's GPIO edges leave close to the time they stand for.
+ */
+static ktime_t rdcfb_next_tick_locked(struct rdcfb_chip *chip)
+{
+	ktime_t now = ktime_get();
+	ktime_t soonest = ktime_add_ns(now, RDCFB_TICK_MIN_NS);
+	ktime_t next = ktime_add_ns(now, chip->period_ns);
+	u64 edge = rdcfb_next_te_locked(chip);
+	ktime_t at;
+
+	if (edge != RDC_NEVER) {
+		at = rdcfb_wall_of_locked(chip, edge);
+		if (ktime_after(ktime_sub_ns(at, RDCFB_EDGE_LEAD_NS), soonest))
+			at = ktime_sub_ns(at, RDCFB_EDGE_LEAD_NS);
+		if (ktime_before(at, next))
+			next = at;
+	}
+	return ktime_before(next, soonest) ? soonest : next;
+}
+
 static void rdcfb_pace_work(struct work_struct *work)
 {
 	struct rdcfb_chip *chip = container_of(work, struct rdcfb_chip,
@@ -110,28 +169,38 @@ static void rdcfb_pace_work(struct work_struct *work)
 		target = hw->now;
 	}
 	while (hw->now < target && !chip->dying) {
-		rdc_hw_run_until(hw, min_t(u64, target,
-					   hw->now + RDCFB_RUN_SLICE));
+		u64 stop = min_t(u64, target, hw->now + RDCFB_RUN_SLICE);
+		u64 edge = rdcfb_next_te_locked(chip);
+
+		/* a TE edge goes out before the time after it is simulated */
+		if (edge > hw->now && edge < stop)
+			stop = edge;
+		rdc_hw_run_until(hw, stop);
 		rdcfb_irq_check_locked(chip);
 		spin_unlock_irqrestore(&chip->lock, flags);
 		wake_up_all(&chip->waitq);
+		/* no detour: cancel_work_sync in rdcfb_chip_stop keeps gpio */
+		rdcfb_gpio_deliver_now(chip->gpio);
 		cond_resched();
 		spin_lock_irqsave(&chip->lock, flags);
 	}
 	rdcfb_update_period(chip);
+	/* rdcfb_chip_stop sets dying under the lock, then cancels the timer */
+	if (!chip->dying)
+		hrtimer_start(&chip->timer, rdcfb_next_tick_locked(chip),
+			      HRTIMER_MODE_ABS);
 	spin_unlock_irqrestore(&chip->lock, flags);
 	wake_up_all(&chip->waitq);
 }
 
+/* One-shot: the pacing work arms the next tick when it is done. */
 static enum hrtimer_restart rdcfb_tick(struct hrtimer *t)
 {
 	struct rdcfb_chip *chip = container_of(t, struct rdcfb_chip, timer);
 
-	if (READ_ONCE(chip->dying))
-		return HRTIMER_NORESTART;
-	queue_work(system_unbound_wq, &chip->pace_work);
-	hrtimer_forward_now(t, ns_to_ktime(READ_ONCE(chip->period_ns)));
-	return HRTIMER_RESTART;
+	if (!READ_ONCE(chip->dying))
+		queue_work(system_highpri_wq, &chip->pace_work);
+	return HRTIMER_NORESTART;
 }
 
 int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
@@ -201,6 +270,39 @@ void rdcfb_chip_free(struct rdcfb_chip *chip)
 	chip->frame[1] = NULL;
 	chip->dp = NULL;
 	chip->vram = NULL;
+}
+
+/* RESET_N and BL_EN as the host drives them. */
+u32 rdcfb_chip_pins_in(struct rdcfb_chip *chip)
+{
+	unsigned long flags;
+	u32 v;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	v = chip->hw.pins_in;
+	spin_unlock_irqrestore(&chip->lock, flags);
+	return v;
+}
+
+/* Drive one of the chip's input pins (the GPIO lines RESET_N and BL_EN). */
+void rdcfb_chip_set_pin(struct rdcfb_chip *chip, u32 pin, bool high)
+{
+	struct rdc_hw *hw = &chip->hw;
+	unsigned long flags;
+	u32 pins;
+
+	spin_lock_irqsave(&chip->lock, flags);
+	pins = high ? hw->pins_in | pin : hw->pins_in & ~pin;
+	if (pins != hw->pins_in) {
+		rdc_hw_set_pins(hw, pins);
+		/* RESET_N resets the DP's state behind fb_ops' back */
+		chip->fb_state_gen++;
+		rdcfb_irq_check_locked(chip);
+		if (!chip->stepped)
+			rdcfb_update_period(chip);
+	}
+	spin_unlock_irqrestore(&chip->lock, flags);
+	wake_up_all(&chip->waitq);
 }
 
 u32 rdcfb_reg_read(struct rdcfb_chip *chip, u32 reg)

@@ -66,6 +66,23 @@ RDCFB_COUNTER_ATTR(cmds, c.cmds);
 RDCFB_COUNTER_ATTR(frames, c.frames);
 RDCFB_COUNTER_ATTR(now, c.now);
 
+#define RDCFB_PIN_ATTR(name, field)                                         \
+	static ssize_t name##_show(struct device *dev,                      \
+				   struct device_attribute *attr, char *buf) \
+	{                                                                   \
+		struct rdcfb_chip *chip = rdcfb_chip_of(dev);               \
+		struct rdcfb_pin_stats s;                                   \
+									    \
+		rdcfb_gpio_stats(READ_ONCE(chip->gpio), &s);                \
+		return sysfs_emit(buf, "%llu\n", (unsigned long long)s.field); \
+	}                                                                   \
+	static DEVICE_ATTR_RO(name)
+
+RDCFB_PIN_ATTR(pin_edges, edges);
+RDCFB_PIN_ATTR(pin_lost, lost);
+RDCFB_PIN_ATTR(pin_late_max_ns, late_max_ns);
+RDCFB_PIN_ATTR(pin_late_avg_ns, late_avg_ns);
+
 static ssize_t frame_crc_show(struct device *dev, struct device_attribute *attr,
 			      char *buf)
 {
@@ -91,6 +108,10 @@ static struct attribute *rdcfb_attrs[] = {
 	&dev_attr_frames.attr,
 	&dev_attr_now.attr,
 	&dev_attr_frame_crc.attr,
+	&dev_attr_pin_edges.attr,
+	&dev_attr_pin_lost.attr,
+	&dev_attr_pin_late_max_ns.attr,
+	&dev_attr_pin_late_avg_ns.attr,
 	NULL,
 };
 ATTRIBUTE_GROUPS(rdcfb);
@@ -131,6 +152,10 @@ static int rdcfb_probe(struct platform_device *pdev)
 	if (ret)
 		goto err_stop;
 	rdcfb_bench_init(info);
+	/* a framebuffer without its pins as GPIO lines is still one */
+	ret = rdcfb_gpio_register(chip, &pdev->dev, pdev->id);
+	if (ret)
+		dev_warn(&pdev->dev, "no GPIO lines for the pins: %d\n", ret);
 	fb_info(info, "%s: %ux%u, %u KiB VRAM, %s clock\n", info->fix.id,
 		info->var.xres, info->var.yres, rdcfb_vram_bytes >> 10,
 		rdcfb_stepped ? "stepped" : "paced");
@@ -162,6 +187,7 @@ static int rdcfb_remove(struct platform_device *pdev)
 
 	rdcfb_bench_exit(info);
 	rdcfb_chip_stop(par->chip);
+	rdcfb_gpio_unregister(par->chip);
 	unregister_framebuffer(info);
 	return 0;
 }
