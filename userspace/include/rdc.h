@@ -395,6 +395,29 @@ int rdc_stats_get(rdc_dev *dev, struct rdc_stats *st);
 /* Core clock in Hz (for converting cycles to time). */
 int rdc_sim_core_hz(rdc_dev *dev, uint32_t *hz);
 
+/*
+ * ---- Waveforms (sim: only) -----------------------------------------------
+ * A Value Change Dump (IEEE 1364) of the chip's signals in simulated time:
+ * TE, IRQ, RESET_N, BL_EN, DP busy, the FIFO level, the beam's line,
+ * vertical and horizontal blanking (docs/hardware.md, "Waveforms").  The
+ * file is written as the chip runs, through a buffer.
+ */
+typedef struct rdc_vcd rdc_vcd;
+
+/*
+ * Start dumping dev's signals to `path` (created or truncated) from its
+ * present time on.  The dump listens on the chip's trace hook and passes
+ * every event on to a listener that was there before.  RDC_E_NOSYS on a
+ * backend other than sim: (the signals are traced inside the simulator),
+ * RDC_E_FILE if the file cannot be created.  Close it before dev.
+ */
+int rdc_vcd_open(rdc_dev *dev, const char *path, rdc_vcd **out);
+/*
+ * End the dump at the chip's present time, flush and close the file
+ * (NULL is a no-op).  0, or RDC_E_FILE if any write failed.
+ */
+int rdc_vcd_close(rdc_vcd *vcd);
+
 /* ---- .rdl scripts (docs/rdl.md) ------------------------------------------ */
 struct rdc_script_result {
 	/* cycles spent per command class ("fill", "line", ...), index by

@@ -23,6 +23,8 @@ static void usage(FILE *f)
 	      "                             command class, the simulated time\n"
 	      "                             and the frame's CRC-32; -o saves "
 	      "it\n"
+	      "      [--vcd OUT.vcd]        and the chip's signals as a Value\n"
+	      "                             Change Dump (sim: only)\n"
 	      "  regs [FILE.rdl]            print every register (after the\n"
 	      "                             script, if one is given)\n"
 	      "  stats [FILE.rdl]           print the performance counters\n"
@@ -48,6 +50,7 @@ struct opts {
 	const char *cmd;
 	const char *script;
 	const char *png;
+	const char *vcd;
 };
 
 static int parse_args(int argc, char **argv, struct opts *o)
@@ -59,7 +62,7 @@ static int parse_args(int argc, char **argv, struct opts *o)
 			usage(stdout);
 			exit(0);
 		} else if (!strcmp(a, "--uri") || !strcmp(a, "--connect") ||
-			   !strcmp(a, "-o")) {
+			   !strcmp(a, "-o") || !strcmp(a, "--vcd")) {
 			if (i + 1 >= argc) {
 				fprintf(stderr, "rdcctl: %s needs a value\n",
 					a);
@@ -67,6 +70,8 @@ static int parse_args(int argc, char **argv, struct opts *o)
 			}
 			if (a[1] == 'o')
 				o->png = argv[++i];
+			else if (!strcmp(a, "--vcd"))
+				o->vcd = argv[++i];
 			else
 				o->uri = argv[++i];
 		} else if (!strncmp(a, "--uri=", 6)) {
@@ -133,6 +138,7 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 {
 	struct rdc_script_result *res = calloc(1, sizeof(*res));
 	uint32_t *pix = NULL, w = 0, h = 0, crc, hz = 0;
+	rdc_vcd *vcd = NULL;
 	uint64_t t = 0;
 	int ret;
 
@@ -142,6 +148,20 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 		fprintf(stderr, "rdcctl: run needs a script\n");
 		free(res);
 		return RDC_E_INVAL;
+	}
+	if (o->vcd) {
+		ret = rdc_vcd_open(dev, o->vcd, &vcd);
+		if (ret == RDC_E_NOSYS)
+			fprintf(stderr,
+				"rdcctl: --vcd needs a sim: device (the "
+				"signals are traced inside the simulator), "
+				"not '%s'\n",
+				o->uri);
+		else if (ret)
+			fprintf(stderr, "rdcctl: %s: %s\n", o->vcd,
+				rdc_strerror(ret));
+		if (ret)
+			goto out;
 	}
 	ret = run_script(dev, o->script, res);
 	if (ret)
@@ -182,6 +202,15 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 				rdc_strerror(ret));
 	}
 out:
+	if (vcd) {
+		int err = rdc_vcd_close(vcd);
+
+		if (err)
+			fprintf(stderr, "rdcctl: %s: %s\n", o->vcd,
+				rdc_strerror(err));
+		if (!ret)
+			ret = err;
+	}
 	free(pix);
 	free(res);
 	return ret;
@@ -301,6 +330,10 @@ int main(int argc, char **argv)
 	    strcmp(o.cmd, "stats")) {
 		fprintf(stderr, "rdcctl: unknown command '%s' (try --help)\n",
 			o.cmd);
+		return 2;
+	}
+	if (o.vcd && strcmp(o.cmd, "run")) {
+		fprintf(stderr, "rdcctl: --vcd goes with run\n");
 		return 2;
 	}
 	ret = rdc_open(o.uri, &dev);

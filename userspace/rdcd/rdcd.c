@@ -25,6 +25,7 @@
 
 #include "hw.h"
 #include "rdcd.h"
+#include "vcd.h"
 
 #define NS_PER_S 1000000000ull
 /* Paced mode: wake this often to move time (1 ms). */
@@ -98,6 +99,7 @@ static void usage(FILE *f)
 	      "  --mode NAME      program a preset at start (e.g. 640x480)\n"
 	      "  --vram SIZE      VRAM bytes, K/M suffixes (default 16M)\n"
 	      "  --record FILE    write a trace for `rdcctl replay`\n"
+	      "  --vcd FILE       the chip's signals as a Value Change Dump\n"
 	      "  --token FILE     TCP clients must present this file's contents\n"
 	      "  --group          socket mode 0660 instead of 0600\n"
 	      "  --ready-file F   once listening, write the listen URIs to F\n"
@@ -469,7 +471,7 @@ static bool rdcd_advance(struct rdcd *d)
 struct rdcd_opts {
 	const char *listen[RDCD_MAX_LISTEN];
 	unsigned int nlisten;
-	const char *mode, *record, *token, *ready;
+	const char *mode, *record, *token, *ready, *vcd;
 	uint32_t vram;
 	bool group;
 	const char *gpio_sim;
@@ -555,7 +557,8 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 				return -1;
 		} else if (!strcmp(a, "--listen") || !strcmp(a, "--mode") ||
 			   !strcmp(a, "--vram") || !strcmp(a, "--record") ||
-			   !strcmp(a, "--token") || !strcmp(a, "--ready-file")) {
+			   !strcmp(a, "--token") || !strcmp(a, "--ready-file") ||
+			   !strcmp(a, "--vcd")) {
 			if (!val) {
 				fprintf(stderr, "rdcd: %s needs a value\n", a);
 				return -1;
@@ -571,6 +574,8 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 				o->mode = val;
 			} else if (!strcmp(a, "--record")) {
 				o->record = val;
+			} else if (!strcmp(a, "--vcd")) {
+				o->vcd = val;
 			} else if (!strcmp(a, "--token")) {
 				o->token = val;
 			} else if (!strcmp(a, "--ready-file")) {
@@ -677,6 +682,7 @@ int main(int argc, char **argv)
 	struct rdcd_opts o = {0};
 	struct sigaction sa = {.sa_handler = rdcd_on_signal};
 	struct sigaction snap = {.sa_handler = rdcd_on_snapshot};
+	rdc_vcd *vcd = NULL;
 	sigset_t block;
 	int ret = 1;
 
@@ -713,6 +719,18 @@ int main(int argc, char **argv)
 		return 1;
 	}
 	ret = 1;
+	if (o.vcd) {
+		/* &d.hw: a power cycle's new chip goes on in the same file */
+		int err = rdc_vcd_new(o.vcd, &d.hw, &vcd);
+
+		if (!err)
+			err = rdcd_trace_add(&d, rdc_vcd_trace, vcd);
+		if (err) {
+			rdcd_log(&d, RDCD_LOG_ERR, "--vcd %s: %s", o.vcd,
+				 rdc_strerror(err));
+			goto out;
+		}
+	}
 	for (unsigned int i = 0; i < o.nsinks; i++) {
 		int err = rdc_sink_open(o.sinks[i], &d.sinks[d.nsinks]);
 
@@ -772,6 +790,14 @@ out:
 			unlink(d.lis[i].path);
 	}
 	rdcd_gpiosim_close(&d);
+	if (vcd) {
+		rdcd_trace_remove(&d, rdc_vcd_trace, vcd);
+		if (rdc_vcd_close(vcd)) {
+			rdcd_log(&d, RDCD_LOG_ERR, "--vcd %s: write error",
+				 o.vcd);
+			ret = 1;
+		}
+	}
 	rdcd_device_close(&d);
 	for (unsigned int i = 0; i < d.nsinks; i++)
 		rdc_sink_close(d.sinks[i]);
