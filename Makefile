@@ -90,7 +90,7 @@ help:
 	@echo "make bench-peers  the same, also against pixman, cairo and SDL2_gfx"
 	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
 	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
-	@echo "make fuzz         short libFuzzer run of the protocol parser (fuzz-long: 10 min)"
+	@echo "make fuzz         short libFuzzer runs: protocol parser, USB framing (fuzz-long: 10 min each)"
 	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/*"
 	@echo "make module       build rdcfb.ko in $(O)/kmod (KDIR= for another kernel)"
 	@echo "make checkpatch   the kernel's checkpatch.pl over driver/ and the core"
@@ -207,12 +207,23 @@ $(O)/fuzz/fuzz_proto: tests/fuzz/fuzz_proto.c userspace/lib/proto.c \
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) tests/fuzz/fuzz_proto.c userspace/lib/proto.c -o $@
 
-fuzz: $(O)/fuzz/fuzz_proto
-	$(O)/fuzz/fuzz_proto -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
+# The host side of the USB framing: bulk chunks and interrupt transfers
+# from a device into whole messages (userspace/lib/usb_host.c).
+$(O)/fuzz/fuzz_usb: tests/fuzz/fuzz_usb.c userspace/lib/usb_host.c \
+		userspace/lib/usb_host.h userspace/lib/proto.c \
+		userspace/include/rdc_proto.h userspace/include/rdc_usb.h
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) tests/fuzz/fuzz_usb.c userspace/lib/usb_host.c \
+		userspace/lib/proto.c -o $@
 
-fuzz-long: $(O)/fuzz/fuzz_proto
-	@mkdir -p $(O)/fuzz/corpus
+fuzz: $(O)/fuzz/fuzz_proto $(O)/fuzz/fuzz_usb
+	$(O)/fuzz/fuzz_proto -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
+	$(O)/fuzz/fuzz_usb -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
+
+fuzz-long: $(O)/fuzz/fuzz_proto $(O)/fuzz/fuzz_usb
+	@mkdir -p $(O)/fuzz/corpus $(O)/fuzz/corpus-usb
 	$(O)/fuzz/fuzz_proto -max_total_time=600 -max_len=65536 $(O)/fuzz/corpus
+	$(O)/fuzz/fuzz_usb -max_total_time=600 -max_len=65536 $(O)/fuzz/corpus-usb
 
 # The v4l2 sink's conversions against memcpy, per frame.
 bench-sink: $(O)/rel/sink-bench

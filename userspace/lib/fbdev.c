@@ -11,9 +11,11 @@
  * `clock=` parameter: with clock=stepped the same operations give the
  * same frames and cycle counts as sim:.
  */
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <linux/fb.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
@@ -748,7 +750,46 @@ static int fbdev_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 
 #endif /* RDC_HAVE_GPIOD */
 
+/* rdcfb's framebuffers: /sys/class/graphics/fbN whose name is RDCFB_ID. */
+static int fbdev_list(rdc_found_fn fn, void *arg)
+{
+	DIR *d = opendir("/sys/class/graphics");
+	struct dirent *e;
+	int found = 0;
+
+	if (!d)
+		return 0;
+	while ((e = readdir(d))) {
+		struct rdc_found f;
+		char path[300], name[32] = "";
+		FILE *nf;
+
+		if (strncmp(e->d_name, "fb", 2) || strlen(e->d_name) > 12)
+			continue;
+		snprintf(path, sizeof(path), "/sys/class/graphics/%s/name",
+			 e->d_name);
+		nf = fopen(path, "r");
+		if (!nf)
+			continue;
+		if (!fgets(name, sizeof(name), nf))
+			name[0] = 0;
+		fclose(nf);
+		name[strcspn(name, "\n")] = 0;
+		if (strcmp(name, RDCFB_ID))
+			continue;
+		memset(&f, 0, sizeof(f));
+		snprintf(f.uri, sizeof(f.uri), "fbdev:/dev/%s", e->d_name);
+		snprintf(f.info, sizeof(f.info), "rdcfb.ko framebuffer %s",
+			 e->d_name);
+		fn(&f, arg);
+		found++;
+	}
+	closedir(d);
+	return found;
+}
+
 const struct rdc_backend rdc_backend_fbdev = {
+	.list = fbdev_list,
 	.scheme = "fbdev",
 	.open = fbdev_open,
 	.close = fbdev_close,

@@ -12,6 +12,7 @@
  * one; the application sees the newest (older undelivered frames are
  * counted as dropped) and up to NET_IRQ_QUEUE interrupt events.
  */
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <netdb.h>
@@ -22,6 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/uio.h>
 #include <sys/un.h>
 #include <unistd.h>
@@ -629,6 +631,9 @@ int rdc_client_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
 {
 	struct net *n = net_of(dev);
 
+	/* a device that went away takes its undelivered events along */
+	if (!n->x && n->dead == RDC_E_GONE)
+		return RDC_E_GONE;
 	for (;;) {
 		struct rdc_proto_hdr h;
 		uint8_t *pl;
@@ -836,9 +841,61 @@ static int net_open_tcp(rdc_dev *dev, const char *opts)
 	return net_open(dev, opts, true);
 }
 
+/*
+ * The sockets in the default socket's directory that answer a HELLO (as
+ * an observer: listing takes nobody's control away).
+ */
+static int net_list_unix(rdc_found_fn fn, void *arg)
+{
+	static const char *const mode[] = {"paced", "fast", "stepped"};
+	char dir[sizeof(((struct sockaddr_un *)0)->sun_path)], *slash;
+	struct dirent *e;
+	int found = 0;
+	DIR *d;
+
+	if (rdc_proto_default_path(dir, sizeof(dir)))
+		return 0;
+	slash = strrchr(dir, '/');
+	if (!slash)
+		return 0;
+	*slash = 0;
+	d = opendir(dir);
+	if (!d)
+		return 0;
+	while ((e = readdir(d))) {
+		const struct rdc_proto_hello_reply *hr;
+		struct rdc_found f;
+		char path[sizeof(dir) + 256];
+		struct stat st;
+		rdc_dev *dev;
+
+		memset(&f, 0, sizeof(f));
+		if ((size_t)snprintf(path, sizeof(path), "%s/%s", dir,
+				     e->d_name) >= sizeof(path) ||
+		    stat(path, &st) || !S_ISSOCK(st.st_mode) ||
+		    (size_t)snprintf(f.uri, sizeof(f.uri), "unix:%s?observe",
+				     path) >= sizeof(f.uri) ||
+		    rdc_open(f.uri, &dev))
+			continue;
+		hr = rdc_client_hello(dev);
+		*strrchr(f.uri, '?') = 0; /* the URI to control it */
+		snprintf(f.info, sizeof(f.info),
+			 "rdcd socket, %s, VRAM %u bytes",
+			 hr->run_mode < RDC_ARRAY_SIZE(mode) ? mode[hr->run_mode]
+							     : "unknown mode",
+			 hr->vram_size);
+		rdc_close(dev);
+		fn(&f, arg);
+		found++;
+	}
+	closedir(d);
+	return found;
+}
+
 const struct rdc_backend rdc_backend_unix = {
 	.scheme = "unix",
 	.open = net_open_unix,
+	.list = net_list_unix,
 	RDC_CLIENT_OPS,
 };
 

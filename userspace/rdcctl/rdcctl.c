@@ -31,6 +31,10 @@ static void usage(FILE *f)
 	      "  replay TRACE [-o OUT.png]  play an rdcd --record trace on a\n"
 	      "                             fresh sim: and print its time, frame\n"
 	      "                             count and last frame's CRC-32\n"
+	      "  list                       every RDC-1 this machine reaches\n"
+	      "                             (USB, rdcd's default socket\n"
+	      "                             directory, rdcfb.ko): one line\n"
+	      "                             each, the URI for --connect first\n"
 	      "%s%s"
 	      "\n"
 	      "options:\n"
@@ -310,6 +314,25 @@ static int cmd_replay(const struct opts *o)
 	return ret || res.mismatches ? 1 : 0;
 }
 
+static void list_one(const struct rdc_found *f, void *arg)
+{
+	(void)arg;
+	printf("%-40s %s\n", f->uri, f->info);
+}
+
+static int cmd_list(void)
+{
+	int n = rdc_list(list_one, NULL);
+
+	if (n < 0) {
+		fprintf(stderr, "rdcctl: list: %s\n", rdc_strerror(n));
+		return 1;
+	}
+	if (!n)
+		fprintf(stderr, "rdcctl: no RDC-1 found\n");
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	struct opts o = {.uri = RDCCTL_DEFAULT_URI};
@@ -326,6 +349,8 @@ int main(int argc, char **argv)
 		return 2;
 	if (!strcmp(o.cmd, "replay"))
 		return cmd_replay(&o);
+	if (!strcmp(o.cmd, "list"))
+		return cmd_list();
 	if (strcmp(o.cmd, "run") && strcmp(o.cmd, "regs") &&
 	    strcmp(o.cmd, "stats")) {
 		fprintf(stderr, "rdcctl: unknown command '%s' (try --help)\n",
