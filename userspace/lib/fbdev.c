@@ -766,7 +766,7 @@ static int fbdev_list(rdc_found_fn fn, void *arg)
 
 		if (strncmp(e->d_name, "fb", 2) || strlen(e->d_name) > 12)
 			continue;
-		snprintf(path, sizeof(path), "/sys/class/graphics/%s/name",
+		snprintf(path, sizeof(path), "/sys/class/graphics/%.12s/name",
 			 e->d_name);
 		nf = fopen(path, "r");
 		if (!nf)
@@ -778,8 +778,8 @@ static int fbdev_list(rdc_found_fn fn, void *arg)
 		if (strcmp(name, RDCFB_ID))
 			continue;
 		memset(&f, 0, sizeof(f));
-		snprintf(f.uri, sizeof(f.uri), "fbdev:/dev/%s", e->d_name);
-		snprintf(f.info, sizeof(f.info), "rdcfb.ko framebuffer %s",
+		snprintf(f.uri, sizeof(f.uri), "fbdev:/dev/%.12s", e->d_name);
+		snprintf(f.info, sizeof(f.info), "rdcfb.ko framebuffer %.12s",
 			 e->d_name);
 		fn(&f, arg);
 		found++;
