@@ -243,6 +243,12 @@ $(O)/rel/fbdev_ioctl: $(O)/rel/tests/vm/fbdev_ioctl.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 $(O)/rel/rdcfb_fuzz: $(O)/rel/tests/vm/rdcfb_fuzz.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+# gpio_te: rdcfb's GPIO lines through libgpiod v2 (rdcfb-gpio skips without)
+ifeq ($(HAVE_GPIOD),1)
+VM_BINS += $(O)/rel/gpio_te
+endif
+$(O)/rel/gpio_te: $(O)/rel/tests/vm/gpio_te.o
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 vm-test: $(VM_BINS)
 	@tests/vm/run.sh $(O)
