@@ -341,6 +341,27 @@ static uint64_t crtc_next_frame_vblank(const struct rdc_hw *hw)
 	       line_offset(hw, next, next->v_display);
 }
 
+/*
+ * A line start's signals for the trace and the pins, out of line: the
+ * loop below carries only a test and a branch a line for them when nobody
+ * traces (the frame-skip path runs millions of line starts a second).
+ */
+static rdc_noinline void crtc_line_signals(struct rdc_hw *hw, uint32_t n,
+					   uint64_t when)
+{
+	rdc_trace_at(hw, when, RDC_TRACE_LINE, n, n >= hw->crtc.cur.v_display);
+	if (n == 0) {
+		hw->crtc.in_vblank = 0;
+		rdc_pins_update(hw, when);
+	}
+}
+
+static rdc_noinline void crtc_line_compare(struct rdc_hw *hw, uint64_t when)
+{
+	rdc_irq_raise(hw, RDC_IRQ_LINE);
+	rdc_pins_update(hw, when);
+}
+
 void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 {
 	struct rdc_crtc *c = &hw->crtc;
@@ -378,21 +399,15 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 			c->frame_start + line_offset(hw, &c->cur, n + 1);
 		if (hw->now < when)
 			hw->now = when;
-		rdc_trace_at(hw, when, RDC_TRACE_LINE, n,
-			     n >= c->cur.v_display);
-		if (n == 0) {
-			c->in_vblank = 0;
-			rdc_pins_update(hw, when);
-		}
+		if (hw->trace_fn || n == 0)
+			crtc_line_signals(hw, n, when);
 		if (n < c->cur.v_display)
 			crtc_fetch(hw, n, when,
 				   !hw->frame_fn && t >= shown_until);
 		else if (n == c->cur.v_display)
 			crtc_vblank(hw, when);
-		if (n == c->line_compare) {
-			rdc_irq_raise(hw, RDC_IRQ_LINE);
-			rdc_pins_update(hw, when);
-		}
+		if (n == c->line_compare)
+			crtc_line_compare(hw, when);
 	}
 }
 
