@@ -180,6 +180,21 @@ static uint64_t vcd_units(const rdc_vcd *v, uint64_t cycles)
 	       cycles % v->core_hz * NS_PER_S / v->core_hz;
 }
 
+/* "#units\n", formatted here: a line start writes one or two of them. */
+static void vcd_stamp(rdc_vcd *v, uint64_t units)
+{
+	char line[24], *p = line + sizeof(line);
+
+	*--p = 0;
+	*--p = '\n';
+	do {
+		*--p = (char)('0' + units % 10);
+		units /= 10;
+	} while (units);
+	*--p = '#';
+	vcd_puts(v, p);
+}
+
 static void vcd_time(rdc_vcd *v, uint64_t t)
 {
 	if (v->any_time && t == v->written)
@@ -189,7 +204,7 @@ static void vcd_time(rdc_vcd *v, uint64_t t)
 		v->written = t;
 		return;
 	}
-	vcd_printf(v, "#%llu\n", (unsigned long long)vcd_units(v, t));
+	vcd_stamp(v, vcd_units(v, t));
 	v->written = t;
 	v->any_time = true;
 }
