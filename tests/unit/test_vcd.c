@@ -596,7 +596,28 @@ static void test_sigrok_te_period(void **state)
 	unlink(path);
 }
 
-/* rdcd --vcd: a stepped daemon's waits, then the file; rdcctl's refusal. */
+/* A power cycle of rdcd's chip, then `cycles` of the new one. */
+static void power_cycle_and_run(const struct netd *d, uint64_t cycles)
+{
+	uint8_t b[16];
+	int fd = netd_connect(d->sock);
+
+	assert_true(fd >= 0);
+	assert_int_equal(netd_hello(fd, RDC_HELLO_CONTROL, NULL, NULL),
+			 RDC_ST_OK);
+	rdc_proto_put32(b, RDC_RESET_POWER);
+	assert_int_equal(netd_call(fd, RDC_MSG_RESET, 2, b, 4, NULL, 0),
+			 RDC_ST_OK);
+	rdc_proto_put64(b, cycles);
+	assert_int_equal(netd_call(fd, RDC_MSG_STEP, 3, b, 8, NULL, 0),
+			 RDC_ST_OK);
+	close(fd);
+}
+
+/*
+ * rdcd --vcd: a stepped daemon's waits, a power cycle, then the file;
+ * rdcctl's refusal.
+ */
 static void test_rdcd_vcd(void **state)
 {
 	char path[128], script[128], cmd[8192], out[4096];
@@ -624,13 +645,32 @@ static void test_rdcd_vcd(void **state)
 	assert_int_equal(sh(cmd, out, sizeof(out)), 1);
 	assert_non_null(strstr(out, "--vcd needs a sim: device"));
 	unlink(script);
+	power_cycle_and_run(&d, 4 * preset_frame_cycles(RDC_PRESET_640x480_60));
 
 	assert_int_equal(netd_stop(&d), 0);
 	r_parse(&v, path);
-	check_te_period(&v,
+	{
+		const uint64_t f320 =
 			preset_frame_cycles(RDC_PRESET_320x200_70) *
-				NS_PER_CYCLE,
-			1, 4);
+			NS_PER_CYCLE;
+		const uint64_t f640 =
+			preset_frame_cycles(RDC_PRESET_640x480_60) *
+			NS_PER_CYCLE;
+		uint64_t up[64];
+		size_t n = r_edges(&v, "te", 1, up, 64), i;
+
+		/*
+		 * 640x480 at power-on, 320x200 from the mode switch, then
+		 * the new chip's 640x480 in the same file, its time going on
+		 * (the reader checked that times only increase).
+		 */
+		assert_true(n >= 9);
+		for (i = 2; i + 1 < n && up[i + 1] - up[i] == f320; i++)
+			;
+		assert_true(i >= 5);
+		assert_int_equal(up[n - 1] - up[n - 2], f640);
+		assert_int_equal(up[n - 2] - up[n - 3], f640);
+	}
 	r_free(&v);
 	unlink(path);
 }

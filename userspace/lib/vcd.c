@@ -197,7 +197,8 @@ static void vcd_stamp(rdc_vcd *v, uint64_t units)
 
 static void vcd_time(rdc_vcd *v, uint64_t t)
 {
-	if (v->any_time && t == v->written)
+	/* never back in time: a late change goes under the present #time */
+	if (v->any_time && t <= v->written)
 		return;
 	/* distinct cycles that round to one nanosecond share a #time */
 	if (v->any_time && vcd_units(v, t) == vcd_units(v, v->written)) {
