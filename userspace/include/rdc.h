@@ -399,7 +399,7 @@ int rdc_sim_core_hz(rdc_dev *dev, uint32_t *hz);
  * ---- Waveforms (sim: only) -----------------------------------------------
  * A Value Change Dump (IEEE 1364) of the chip's signals in simulated time:
  * TE, IRQ, RESET_N, BL_EN, DP busy, the FIFO level, the beam's line,
- * vertical and horizontal blanking (docs/hardware.md, "Waveforms").  The
+ * vertical and horizontal blanking (docs/vcd.md).  The
  * file is written as the chip runs, through a buffer.
  */
 typedef struct rdc_vcd rdc_vcd;

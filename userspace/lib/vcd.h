@@ -3,7 +3,7 @@
  * The VCD writer's side for programs that own a chip themselves (rdcd):
  * they put rdc_vcd_trace on the chip's trace hook, or fan it out to it,
  * instead of letting rdc_vcd_open (rdc.h) take the hook of a sim: handle.
- * docs/hardware.md ("Waveforms") describes the file.
+ * docs/vcd.md describes the file.
  */
 #ifndef RDC_VCD_H
 #define RDC_VCD_H
