@@ -67,9 +67,9 @@ static void test_levels_and_args(void **state)
 	assert_int_equal(p, RDC_PIN_RESET_N | RDC_PIN_BL_EN);
 	assert_int_equal(rdc_pins_set(dev, RDC_PIN_TE, 0), RDC_E_INVAL);
 	assert_int_equal(rdc_pins_set(dev, 0x10, 0), RDC_E_INVAL);
-	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_BL_EN,
-					    RDC_EDGE_RISING, 0, &ev),
-			 RDC_E_INVAL);
+	assert_int_equal(
+		rdc_pins_wait_edge(dev, RDC_PIN_BL_EN, RDC_EDGE_RISING, 0, &ev),
+		RDC_E_INVAL);
 	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE, 0, 0, &ev),
 			 RDC_E_INVAL);
 	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE, 4, 0, &ev),
@@ -118,9 +118,9 @@ static void test_te_times(void **state)
 	}
 
 	/* another mode: in force from the frame after the next vblank */
-	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_800x600_60,
-				      RDC_FMT_XRGB8888, 0),
-			 0);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_800x600_60, RDC_FMT_XRGB8888, 0),
+		0);
 	for (int i = 0; i < 2; i++)
 		assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE,
 						    RDC_EDGE_FALLING, 0, &ev),
@@ -133,8 +133,8 @@ static void test_te_times(void **state)
 		assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE,
 						    RDC_EDGE_RISING, 0, &ev),
 				 0);
-		assert_int_equal(ev.time, start + k * frame +
-						  line_at(&t, t.v_display));
+		assert_int_equal(ev.time,
+				 start + k * frame + line_at(&t, t.v_display));
 	}
 	rdc_close(dev);
 }
@@ -162,9 +162,9 @@ static void test_irq_edge(void **state)
 			 0);
 	assert_int_equal(rdc_pins_get(dev, &p), 0);
 	assert_false(p & RDC_PIN_IRQ);
-	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_IRQ, RDC_EDGE_RISING,
-					    0, &ev),
-			 0);
+	assert_int_equal(
+		rdc_pins_wait_edge(dev, RDC_PIN_IRQ, RDC_EDGE_RISING, 0, &ev),
+		0);
 	assert_int_equal(ev.pins, RDC_PIN_IRQ);
 	assert_int_equal(ev.time, first.time + line_at(&t, t.v_total));
 	rdc_close(dev);
@@ -196,11 +196,11 @@ static void test_reset_n(void **state)
 	assert_int_equal(rdc_reg_read(dev, RDC_REG_LINE_COMPARE, &v), 0);
 	assert_int_equal(v, RDC_LINE_COMPARE_RESET);
 	/* held: no frame, so no TE for two frames' time */
-	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE, RDC_EDGE_RISING,
-					    2 * line_at(&t, t.v_total) *
-						    1000000u / t.hz,
-					    &ev),
-			 RDC_E_TIMEOUT);
+	assert_int_equal(
+		rdc_pins_wait_edge(dev, RDC_PIN_TE, RDC_EDGE_RISING,
+				   2 * line_at(&t, t.v_total) * 1000000u / t.hz,
+				   &ev),
+		RDC_E_TIMEOUT);
 	assert_int_equal(rdc_sim_time(dev, &released), 0);
 	assert_int_equal(rdc_pins_set(dev, RDC_PIN_RESET_N, RDC_PIN_RESET_N),
 			 0);
@@ -208,9 +208,9 @@ static void test_reset_n(void **state)
 	assert_int_equal(p, RDC_PIN_RESET_N | RDC_PIN_BL_EN);
 	assert_int_equal(rdc_reg_read(dev, RDC_REG_LINE_COMPARE, &v), 0);
 	assert_int_equal(v, RDC_LINE_COMPARE_RESET);
-	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE, RDC_EDGE_RISING,
-					    0, &ev),
-			 0);
+	assert_int_equal(
+		rdc_pins_wait_edge(dev, RDC_PIN_TE, RDC_EDGE_RISING, 0, &ev),
+		0);
 	assert_int_equal(ev.time, released + line_at(&t, t.v_display));
 	rdc_close(dev);
 }
@@ -342,7 +342,8 @@ static void test_unix(void **state)
 			    RDC_WAIT_SLICE_MAX);
 		if (k)
 			assert_int_equal(ev.time / line_at(&t, t.v_total),
-					 prev.time / line_at(&t, t.v_total) + 1);
+					 prev.time / line_at(&t, t.v_total) +
+						 1);
 		prev = ev;
 	}
 
@@ -423,7 +424,8 @@ static void test_proto(void **state)
 	assert_true(big >= 0);
 	assert_int_equal(netd_hello(big, 0, NULL, NULL), RDC_ST_OK);
 	h = (struct rdc_proto_hdr){.len = RDC_PROTO_MAX_REQUEST + 1,
-				   .type = RDC_MSG_PINS_SET, .seq = 10};
+				   .type = RDC_MSG_PINS_SET,
+				   .seq = 10};
 	rdc_proto_hdr_encode(hb, &h);
 	assert_int_equal(netd_write(big, hb, sizeof(hb)), 0);
 	assert_int_equal(netd_reply(big, &h, NULL, 0), 0);

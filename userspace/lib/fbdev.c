@@ -38,6 +38,10 @@
 
 /* Edge events read from the GPIO chip at once. */
 #define FBDEV_EDGE_BUF 16u
+/* Stepped clock: simulated cycles a pins wait moves between looks. */
+#define FBDEV_PINS_STEP RDC_WAIT_SLICE_MAX
+/* Stepped clock: how long an edge PINS already shows may take to arrive. */
+#define FBDEV_EDGE_LATE_NS 1000000000ll
 
 /* The pins as GPIO lines: TE, IRQ, RESET_N, BL_EN, in RDC_PIN_* order. */
 #define FBDEV_NPINS 4u
@@ -399,6 +403,7 @@ struct fbdev_gpio {
 	struct gpiod_edge_event_buffer *buf;
 	int buf_n, buf_next; /* events read and not yet looked at */
 	uint32_t levels; /* TE and IRQ as the last event left them */
+	bool stepped; /* the module's clock=stepped: waits move time */
 };
 
 static void fbdev_gpio_free(struct fbdev_gpio *g)
@@ -560,6 +565,9 @@ static int fbdev_gpio_open(struct fbdev *f)
 		goto fail;
 	}
 	f->gpio = g;
+	/* a step of nothing: refused (EPERM) on the paced clock */
+	g->stepped = !fbdev_ioctl(f, RDCFB_IOC_STEP,
+				  &(struct rdcfb_step){.cycles = 0});
 	ret = fbdev_gpio_sample(f);
 	if (ret) {
 		f->gpio = NULL;
@@ -662,17 +670,53 @@ static int fbdev_gpio_next(struct fbdev_gpio *g, int64_t ns,
 	return 1;
 }
 
+/*
+ * Note an edge event in the levels; 1 if it is one the caller wants (ev
+ * filled in), 0 if not, or an error.
+ */
+static int fbdev_gpio_take(rdc_dev *dev, struct fbdev_gpio *g,
+			   struct gpiod_edge_event *e, uint32_t pins,
+			   uint32_t edges, struct rdc_pin_edge *ev)
+{
+	uint32_t bit, in = 0;
+	bool rising;
+	int ret;
+
+	bit = gpiod_edge_event_get_line_offset(e) == g->off[0] ? RDC_PIN_TE
+								: RDC_PIN_IRQ;
+	rising = gpiod_edge_event_get_event_type(e) ==
+		 GPIOD_EDGE_EVENT_RISING_EDGE;
+	g->levels = (g->levels & ~bit) | (rising ? bit : 0);
+	if (!(pins & bit) ||
+	    !(edges & (rising ? RDC_EDGE_RISING : RDC_EDGE_FALLING)))
+		return 0;
+	ev->pins = bit;
+	ev->time = RDC_PIN_TIME_NONE;
+	ev->wall_ns = gpiod_edge_event_get_timestamp_ns(e);
+	ret = fbdev_reg_read(dev, RDC_REG_PINS, &in);
+	if (ret)
+		return ret;
+	ev->levels = g->levels | (in & RDC_PINS_IN);
+	return 1;
+}
+
+/*
+ * Paced, the chip runs by itself: wait for the lines' events in wall
+ * time.  Stepped, nothing moves unless asked, so the wait moves simulated
+ * time as waits on sim: do, a slice at a time up to the budget; when PINS
+ * shows TE or IRQ where the last event did not leave them, the edge's
+ * event is on its way (the driver hands edges over from a worker), and
+ * the wait takes it before time moves on.
+ */
 static int fbdev_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 			   uint64_t budget_cycles, uint64_t timeout_us,
 			   struct rdc_pin_edge *ev)
 {
 	struct fbdev *f = fbdev_of(dev);
-	uint64_t deadline, now;
+	uint64_t deadline, now, moved = 0;
 	struct fbdev_gpio *g;
-	uint32_t in = 0;
 	int ret = fbdev_gpio_open(f);
 
-	(void)budget_cycles;
 	if (ret)
 		return ret;
 	g = f->gpio;
@@ -682,34 +726,47 @@ static int fbdev_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 	deadline = rdc_pins_wall_ns() + timeout_us * 1000u;
 	for (;;) {
 		struct gpiod_edge_event *e = NULL;
-		uint32_t bit;
-		bool rising;
+		int64_t ns = 0;
+		uint32_t in;
 
-		now = rdc_pins_wall_ns();
-		ret = fbdev_gpio_next(g, now < deadline
-					      ? (int64_t)(deadline - now)
-					      : 0, &e);
+		if (!g->stepped) {
+			now = rdc_pins_wall_ns();
+			ns = now < deadline ? (int64_t)(deadline - now) : 0;
+		}
+		ret = fbdev_gpio_next(g, ns, &e);
+		if (ret > 0)
+			ret = fbdev_gpio_take(dev, g, e, pins, edges, ev);
 		if (ret < 0)
 			return ret;
-		if (!ret)
+		if (ret > 0)
+			return 0;
+		if (e)
+			continue; /* an edge nobody asked for */
+		if (!g->stepped)
 			return RDC_E_TIMEOUT;
-		bit = gpiod_edge_event_get_line_offset(e) == g->off[0]
-			      ? RDC_PIN_TE
-			      : RDC_PIN_IRQ;
-		rising = gpiod_edge_event_get_event_type(e) ==
-			 GPIOD_EDGE_EVENT_RISING_EDGE;
-		g->levels = (g->levels & ~bit) | (rising ? bit : 0);
-		if (!(pins & bit) ||
-		    !(edges & (rising ? RDC_EDGE_RISING : RDC_EDGE_FALLING)))
-			continue;
-		ev->pins = bit;
-		ev->time = RDC_PIN_TIME_NONE;
-		ev->wall_ns = gpiod_edge_event_get_timestamp_ns(e);
 		ret = fbdev_reg_read(dev, RDC_REG_PINS, &in);
 		if (ret)
 			return ret;
-		ev->levels = g->levels | (in & RDC_PINS_IN);
-		return 0;
+		if ((in ^ g->levels) & RDC_PINS_OUT) {
+			ret = fbdev_gpio_next(g, FBDEV_EDGE_LATE_NS, &e);
+			if (ret > 0)
+				ret = fbdev_gpio_take(dev, g, e, pins, edges,
+						      ev);
+			if (ret < 0)
+				return ret;
+			if (ret > 0)
+				return 0;
+			if (!e) /* never came (a full queue): go by PINS */
+				g->levels = in & RDC_PINS_OUT;
+			continue;
+		}
+		if (moved >= budget_cycles)
+			return RDC_E_TIMEOUT;
+		ns = (int64_t)RDC_MIN(FBDEV_PINS_STEP, budget_cycles - moved);
+		ret = fbdev_step(dev, (uint64_t)ns);
+		if (ret)
+			return ret;
+		moved += (uint64_t)ns;
 	}
 }
 

@@ -133,8 +133,7 @@ int rdc_pins_wait_regs(rdc_dev *dev, uint32_t pins, uint32_t edges,
 }
 
 /* Core cycles in timeout_us microseconds (0: the default budget). */
-static int rdc_pins_budget(rdc_dev *dev, uint64_t timeout_us,
-			   uint64_t *budget)
+static int rdc_pins_budget(rdc_dev *dev, uint64_t timeout_us, uint64_t *budget)
 {
 	uint32_t hz;
 	int ret;

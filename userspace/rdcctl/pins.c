@@ -89,7 +89,8 @@ static int pins_parse(int argc, char **argv, struct pins_opts *o)
 		i++;
 		if (!strcmp(a, "--set")) {
 			const char *eq = strchr(v, '=');
-			uint32_t bit = eq ? pins_by_name(v, (size_t)(eq - v)) : 0;
+			uint32_t bit =
+				eq ? pins_by_name(v, (size_t)(eq - v)) : 0;
 
 			if (!(bit & RDC_PINS_IN) ||
 			    (strcmp(eq + 1, "0") && strcmp(eq + 1, "1"))) {
@@ -106,8 +107,8 @@ static int pins_parse(int argc, char **argv, struct pins_opts *o)
 			uint32_t bit = pins_by_name(v, strlen(v));
 
 			if (!(bit & RDC_PINS_OUT)) {
-				fprintf(stderr,
-					"rdcctl: pins: --pin wants TE or IRQ\n");
+				fprintf(stderr, "rdcctl: pins: --pin wants TE "
+						"or IRQ\n");
 				return -1;
 			}
 			o->watch_pins |= bit;
@@ -160,7 +161,8 @@ static void pins_print_edge(const struct rdc_pin_edge *ev)
 
 		if (!(ev->pins & bit))
 			continue;
-		printf("%llu.%09llu\t%s\t%s", (unsigned long long)(ev->wall_ns / 1000000000u),
+		printf("%llu.%09llu\t%s\t%s",
+		       (unsigned long long)(ev->wall_ns / 1000000000u),
 		       (unsigned long long)(ev->wall_ns % 1000000000u),
 		       ev->levels & bit ? "rising" : "falling", pins_name(bit));
 		if (ev->time != RDC_PIN_TIME_NONE)

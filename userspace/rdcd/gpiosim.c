@@ -42,23 +42,26 @@
 #include "rdcd.h"
 
 #define GPIOSIM_CONFIGFS "/sys/kernel/config/gpio-sim"
-#define GPIOSIM_NLINES 4u
+#define GPIOSIM_NLINES	 4u
 #define GPIOSIM_NAME_MAX 32u
 
 /* Lines in RDC_PIN_* bit order: line N is pin 1 << N. */
 static const char *const gpiosim_line[GPIOSIM_NLINES] = {
-	"TE", "IRQ", "RESET_N", "BL_EN",
+	"TE",
+	"IRQ",
+	"RESET_N",
+	"BL_EN",
 };
 
-_Static_assert(RDC_PIN_TE == 1u && RDC_PIN_IRQ == 2u &&
-		       RDC_PIN_RESET_N == 4u && RDC_PIN_BL_EN == 8u,
+_Static_assert(RDC_PIN_TE == 1u && RDC_PIN_IRQ == 2u && RDC_PIN_RESET_N == 4u &&
+		       RDC_PIN_BL_EN == 8u,
 	       "gpiosim_line is in RDC_PIN_* bit order");
 
 struct rdcd_gpiosim {
 	struct rdcd *d;
-	char dir[160];	   /* configfs: GPIOSIM_CONFIGFS/NAME */
-	char sysdir[200];  /* sysfs: /sys/devices/platform/DEV/CHIP */
-	char chip[32];	   /* gpiochipN */
+	char dir[160];	  /* configfs: GPIOSIM_CONFIGFS/NAME */
+	char sysdir[200]; /* sysfs: /sys/devices/platform/DEV/CHIP */
+	char chip[32];	  /* gpiochipN */
 	int pull_fd[GPIOSIM_NLINES], value_fd[GPIOSIM_NLINES];
 	uint32_t pulled;   /* TE, IRQ as last written */
 	uint32_t seen;	   /* RESET_N, BL_EN as last read */
@@ -154,8 +157,7 @@ static void gpiosim_teardown(struct rdcd_gpiosim *g)
 	g->top = false;
 }
 
-static void gpiosim_pull(struct rdcd_gpiosim *g, unsigned int line,
-			 bool high)
+static void gpiosim_pull(struct rdcd_gpiosim *g, unsigned int line, bool high)
 {
 	static const char up[] = "pull-up", down[] = "pull-down";
 	const char *s = high ? up : down;
@@ -163,8 +165,9 @@ static void gpiosim_pull(struct rdcd_gpiosim *g, unsigned int line,
 	if (pwrite(g->pull_fd[line], s, strlen(s), 0) == (ssize_t)strlen(s))
 		return;
 	if (!g->write_failed)
-		rdcd_log(g->d, RDCD_LOG_WARN, "gpio-sim: %s/sim_gpio%u/pull: %s",
-			 g->sysdir, line, strerror(errno));
+		rdcd_log(g->d, RDCD_LOG_WARN,
+			 "gpio-sim: %s/sim_gpio%u/pull: %s", g->sysdir, line,
+			 strerror(errno));
 	g->write_failed = true;
 }
 
@@ -222,7 +225,8 @@ static int gpiosim_open_lines(struct rdcd_gpiosim *g)
 	snprintf(g->sysdir, sizeof(g->sysdir), "/sys/devices/platform/%s/%s",
 		 dev, g->chip);
 	for (unsigned int i = 0; i < GPIOSIM_NLINES; i++) {
-		snprintf(path, sizeof(path), "%s/sim_gpio%u/pull", g->sysdir, i);
+		snprintf(path, sizeof(path), "%s/sim_gpio%u/pull", g->sysdir,
+			 i);
 		g->pull_fd[i] = open(path, O_WRONLY | O_CLOEXEC);
 		snprintf(path, sizeof(path), "%s/sim_gpio%u/value", g->sysdir,
 			 i);
