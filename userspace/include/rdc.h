@@ -352,7 +352,8 @@ int rdc_pins_get(rdc_dev *dev, uint32_t *levels);
 /*
  * Drive the inputs in `mask` (RDC_PINS_IN bits; others are RDC_E_INVAL)
  * to their bits in `levels`; the others keep theirs.  RDC_E_BUSY for a
- * daemon's observer.  fbdev: holds the lines it drives until rdc_close.
+ * daemon's observer.  fbdev: requests the lines it drives and holds them
+ * until rdc_close (rdcfb.ko keeps their last level after).
  */
 int rdc_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels);
 /*
