@@ -224,8 +224,8 @@ static void test_line_events(void **state)
 			continue;
 		assert_int_equal(e->a, want_line);
 		assert_int_equal(e->b, want_line >= t.v_display);
-		assert_int_equal(e->t,
-				 t0 + frame_no * frame + line_at(&t, want_line));
+		assert_int_equal(e->t, t0 + frame_no * frame +
+					       line_at(&t, want_line));
 		per_frame++;
 		if (++want_line == t.v_total) {
 			assert_int_equal(per_frame, t.v_total);
@@ -306,8 +306,7 @@ static void test_irq_edges(void **state)
 	assert_int_equal(e->b, RDC_PIN_IRQ);
 	assert_true(e->a & RDC_PIN_IRQ);
 	/* enabling more while it is high moves nothing */
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_ENABLE,
-		     RDC_IRQ_LINE | RDC_IRQ_FENCE);
+	rdc_hw_write(&f->hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_LINE | RDC_IRQ_FENCE);
 	assert_null(next_pins(f, &i));
 
 	/* the raster IRQ of the next frame comes at its line's start */
@@ -328,8 +327,8 @@ static void test_irq_edges(void **state)
 	/* VBLANK is not enabled: TE alone rises, then falls */
 	e = next_pins(f, &i);
 	assert_non_null(e);
-	assert_int_equal(e->t,
-			 t0 + line_at(&t, t.v_total) + line_at(&t, t.v_display));
+	assert_int_equal(e->t, t0 + line_at(&t, t.v_total) +
+				       line_at(&t, t.v_display));
 	assert_int_equal(e->b, RDC_PIN_TE);
 	e = next_pins(f, &i);
 	assert_non_null(e);
@@ -428,9 +427,9 @@ static int check_dp_fifo(const struct fx *f, uint32_t fifo0, int dp0)
 			dp = (int)e->a;
 		}
 	}
-	assert_int_equal(level, RDC_FIFO_DEPTH - rdc_hw_read((struct rdc_hw *)
-							     &f->hw,
-							     RDC_REG_FIFO_FREE));
+	assert_int_equal(level,
+			 RDC_FIFO_DEPTH - rdc_hw_read((struct rdc_hw *)&f->hw,
+						      RDC_REG_FIFO_FREE));
 	return dp;
 }
 
@@ -472,8 +471,8 @@ static void test_dp_fifo(void **state)
 	assert_int_equal(e->a, 1);
 	assert_int_equal(e->t, tp);
 	for (i = 0; i < f->n; i++) {
-		pushes += f->ev[i].e == RDC_TRACE_FIFO &&
-			  f->ev[i].t == tp && f->ev[i].a;
+		pushes += f->ev[i].e == RDC_TRACE_FIFO && f->ev[i].t == tp &&
+			  f->ev[i].a;
 		pops += f->ev[i].e == RDC_TRACE_FIFO && f->ev[i].t > tp;
 	}
 	assert_int_equal(pushes, 8);
@@ -484,9 +483,8 @@ static void test_dp_fifo(void **state)
 	assert_int_equal(e->t, f->hw.now);
 	/* busy from start to end: every command cycle inside the span */
 	assert_int_equal(f->hw.perf.busy - busy0, f->hw.now - tp);
-	assert_int_equal(rdc_hw_read(&f->hw, RDC_REG_STATUS) &
-				 RDC_STATUS_DP_BUSY,
-			 0);
+	assert_int_equal(
+		rdc_hw_read(&f->hw, RDC_REG_STATUS) & RDC_STATUS_DP_BUSY, 0);
 	assert_null(find(f, (size_t)(e - f->ev) + 1, RDC_TRACE_DP));
 }
 
@@ -534,8 +532,7 @@ static void test_dp_halt_and_reset(void **state)
 	push(f, 0xff); /* out of range: halts */
 	push_fill(f, 0, 0, 8, 8);
 	rdc_hw_run_until_idle(&f->hw, f->hw.now + 1000000);
-	assert_true(rdc_hw_read(&f->hw, RDC_REG_STATUS) &
-		    RDC_STATUS_DP_HALTED);
+	assert_true(rdc_hw_read(&f->hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED);
 	assert_int_equal(check_dp_fifo(f, 0, 0), 0);
 	e = find(f, 0, RDC_TRACE_DP);
 	e = find(f, (size_t)(e - f->ev) + 1, RDC_TRACE_DP);
@@ -544,9 +541,8 @@ static void test_dp_halt_and_reset(void **state)
 	assert_int_equal(e->t, f->hw.now);
 
 	/* the fill waits in the FIFO; a soft reset empties it */
-	assert_int_equal(RDC_FIFO_DEPTH -
-				 rdc_hw_read(&f->hw, RDC_REG_FIFO_FREE),
-			 3);
+	assert_int_equal(
+		RDC_FIFO_DEPTH - rdc_hw_read(&f->hw, RDC_REG_FIFO_FREE), 3);
 	i = f->n;
 	rdc_hw_write(&f->hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
 	e = find(f, i, RDC_TRACE_FIFO);

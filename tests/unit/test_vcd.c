@@ -27,10 +27,10 @@
 #include "hw.h"
 #include "test_net_common.h"
 
-#define GOLDEN "tests/unit/data/vcd_tiny.vcd"
-#define CORE_HZ 100000000ull
+#define GOLDEN	     "tests/unit/data/vcd_tiny.vcd"
+#define CORE_HZ	     100000000ull
 #define NS_PER_CYCLE 10u /* at CORE_HZ */
-#define FS_PER_NS 1000000ull
+#define FS_PER_NS    1000000ull
 
 static char bindir[4096];
 
@@ -124,9 +124,12 @@ static uint64_t r_unit_fs(const char *num, const char *unit)
 	static const struct {
 		const char *name;
 		uint64_t fs;
-	} u[] = {{"s", 1000000000000000ull}, {"ms", 1000000000000ull},
-		 {"us", 1000000000ull},	     {"ns", 1000000ull},
-		 {"ps", 1000ull},	     {"fs", 1ull}};
+	} u[] = {{"s", 1000000000000000ull},
+		 {"ms", 1000000000000ull},
+		 {"us", 1000000000ull},
+		 {"ns", 1000000ull},
+		 {"ps", 1000ull},
+		 {"fs", 1ull}};
 	uint64_t k = strtoull(num, NULL, 10);
 
 	assert_true(k == 1 || k == 10 || k == 100);
@@ -296,15 +299,14 @@ static const struct rdc_timing tiny = {
 static void set_timing(rdc_dev *dev, const struct rdc_timing *t)
 {
 	static const uint32_t regs[] = {
-		RDC_REG_H_TOTAL,      RDC_REG_H_DISPLAY,    RDC_REG_H_SYNC_START,
-		RDC_REG_H_SYNC_END,   RDC_REG_V_TOTAL,	    RDC_REG_V_DISPLAY,
-		RDC_REG_V_SYNC_START, RDC_REG_V_SYNC_END,   RDC_REG_PIXCLK_KHZ,
+		RDC_REG_H_TOTAL,      RDC_REG_H_DISPLAY,  RDC_REG_H_SYNC_START,
+		RDC_REG_H_SYNC_END,   RDC_REG_V_TOTAL,	  RDC_REG_V_DISPLAY,
+		RDC_REG_V_SYNC_START, RDC_REG_V_SYNC_END, RDC_REG_PIXCLK_KHZ,
 	};
-	const uint32_t vals[] = {t->h_total,	  t->h_display,
-				 t->h_sync_start, t->h_sync_end,
-				 t->v_total,	  t->v_display,
-				 t->v_sync_start, t->v_sync_end,
-				 t->pixclk_khz};
+	const uint32_t vals[] = {
+		t->h_total,	 t->h_display,	t->h_sync_start,
+		t->h_sync_end,	 t->v_total,	t->v_display,
+		t->v_sync_start, t->v_sync_end, t->pixclk_khz};
 
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_CONTROL, RDC_CONTROL_DP_EN),
 			 0);
@@ -314,10 +316,10 @@ static void set_timing(rdc_dev *dev, const struct rdc_timing *t)
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_FB_STRIDE, t->h_display),
 			 0);
 	/* scanout on: the new mode and a frame start now */
-	assert_int_equal(rdc_reg_write(dev, RDC_REG_CONTROL,
-				       RDC_CONTROL_DP_EN |
-					       RDC_CONTROL_SCANOUT_EN),
-			 0);
+	assert_int_equal(
+		rdc_reg_write(dev, RDC_REG_CONTROL,
+			      RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN),
+		0);
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL),
 			 0);
 }
@@ -530,10 +532,9 @@ static void test_rdcctl_te_period(void **state)
 	rdcctl_vcd(path, sizeof(path));
 	r_parse(&v, path);
 	/* the first frame is power-on's 640x480: periods from the second */
-	check_te_period(&v,
-			preset_frame_cycles(RDC_PRESET_320x200_70) *
-				NS_PER_CYCLE,
-			1, 5);
+	check_te_period(
+		&v, preset_frame_cycles(RDC_PRESET_320x200_70) * NS_PER_CYCLE,
+		1, 5);
 	r_free(&v);
 	unlink(path);
 }
@@ -630,9 +631,8 @@ static void test_rdcd_vcd(void **state)
 	tmp_path(path, sizeof(path), "rdcd");
 	assert_int_equal(netd_start(&d, args), 0);
 	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
-	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_I8,
-				      0),
-			 0);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_I8, 0), 0);
 	for (int i = 0; i < 5; i++)
 		assert_int_equal(rdc_frame_wait(dev), 0);
 	rdc_close(dev);
@@ -640,8 +640,9 @@ static void test_rdcd_vcd(void **state)
 	/* rdcctl --vcd wants the simulator in its own process */
 	tmp_path(script, sizeof(script), "scene2");
 	write_file(script, te_scene);
-	snprintf(cmd, sizeof(cmd), "%s/rdcctl --connect %s run %s --vcd %s.x 2>&1",
-		 bindir, d.unix_uri, script, path);
+	snprintf(cmd, sizeof(cmd),
+		 "%s/rdcctl --connect %s run %s --vcd %s.x 2>&1", bindir,
+		 d.unix_uri, script, path);
 	assert_int_equal(sh(cmd, out, sizeof(out)), 1);
 	assert_non_null(strstr(out, "--vcd needs a sim: device"));
 	unlink(script);

@@ -410,7 +410,8 @@ typedef struct rdc_vcd rdc_vcd;
  * present time on.  The dump listens on the chip's trace hook and passes
  * every event on to a listener that was there before.  RDC_E_NOSYS on a
  * backend other than sim: (the signals are traced inside the simulator),
- * RDC_E_FILE if the file cannot be created.  Close it before dev.
+ * RDC_E_FILE if the file cannot be created.  Close it before dev, and
+ * several dumps of one handle in the reverse order of opening.
  */
 int rdc_vcd_open(rdc_dev *dev, const char *path, rdc_vcd **out);
 /*

@@ -32,10 +32,10 @@
 #define VCD_BUF_BYTES (64u * 1024u)
 /* room for the longest change: "#" + 20 digits + "\n" + "b" + 32 bits ... */
 #define VCD_LINE_MAX 80u
-#define HZ_PER_KHZ 1000u
-#define NS_PER_S 1000000000ull
-#define FIFO_BITS 9 /* 0 ... RDC_FIFO_DEPTH (256) */
-#define LINE_BITS 12 /* 0 ... RDC_CRTC_MAX_TOTAL - 1 */
+#define HZ_PER_KHZ   1000u
+#define NS_PER_S     1000000000ull
+#define FIFO_BITS    9	/* 0 ... RDC_FIFO_DEPTH (256) */
+#define LINE_BITS    12 /* 0 ... RDC_CRTC_MAX_TOTAL - 1 */
 
 enum vcd_sig {
 	SIG_TE,
@@ -82,9 +82,9 @@ struct rdc_vcd {
 
 	uint32_t core_hz;
 	uint64_t per_cycle; /* units a cycle; 0: not exact (1 ns, floored) */
-	uint64_t base; /* file cycles = chip cycles + base (mod 2^64) */
-	uint64_t last; /* file cycles of the last event */
-	uint64_t written; /* file cycles of the last #time line */
+	uint64_t base;	    /* file cycles = chip cycles + base (mod 2^64) */
+	uint64_t last;	    /* file cycles of the last event */
+	uint64_t written;   /* file cycles of the last #time line */
 	bool any_time;
 	uint64_t hb_rise; /* file cycles hblank rises; RDC_NEVER: none */
 	uint32_t val[SIG_COUNT];
@@ -381,7 +381,8 @@ static void vcd_header(rdc_vcd *v, const struct rdc_hw *hw)
 
 	vcd_date(date, sizeof(date));
 	vcd_printf(v, "$date\n\t%s\n$end\n", date);
-	vcd_puts(v, "$version\n\trdc RDC-1 simulator, librdc VCD writer\n$end\n");
+	vcd_puts(v,
+		 "$version\n\trdc RDC-1 simulator, librdc VCD writer\n$end\n");
 	if (v->per_cycle)
 		vcd_printf(v,
 			   "$comment\n\tcore clock %u Hz: %llu units a cycle"
@@ -410,7 +411,8 @@ static void vcd_header(rdc_vcd *v, const struct rdc_hw *hw)
 	vcd_time(v, v->last);
 	vcd_puts(v, "$dumpvars\n");
 	for (unsigned int s = 0; s < SIG_COUNT; s++)
-		v->val[s] = UINT32_MAX; /* differs from any level: all written */
+		v->val[s] =
+			UINT32_MAX; /* differs from any level: all written */
 	vcd_sync(v, hw, v->last);
 	vcd_puts(v, "$end\n");
 }
@@ -436,8 +438,8 @@ int rdc_vcd_new(const char *path, struct rdc_hw *const *hw, rdc_vcd **out)
 	return 0;
 }
 
-static void vcd_chain(void *ctx, uint64_t time, unsigned int event,
-		      uint32_t a, uint32_t b)
+static void vcd_chain(void *ctx, uint64_t time, unsigned int event, uint32_t a,
+		      uint32_t b)
 {
 	rdc_vcd *v = ctx;
 
