@@ -75,7 +75,7 @@ TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
-	bench-sink vm-test bench-net fuzz fuzz-long bench-peers module \
+	bench-sink vm-test bench-net bench-usb fuzz fuzz-long bench-peers module \
 	module-clean checkpatch
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a
 
@@ -90,6 +90,7 @@ help:
 	@echo "make bench-peers  the same, also against pixman, cairo and SDL2_gfx"
 	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
 	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
+	@echo "make bench-usb    the same over USB against the socket, in the VM (figures only)"
 	@echo "make fuzz         short libFuzzer runs: protocol parser, USB framing (fuzz-long: 10 min each)"
 	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/*"
 	@echo "make module       build rdcfb.ko in $(O)/kmod (KDIR= for another kernel)"
@@ -195,6 +196,11 @@ $(O)/rel/net_bench: $(O)/rel/bench/net_bench.o $(O)/rel/librdc.a
 bench-net: $(O)/rel/net_bench $(O)/rel/rdcd
 	$(O)/rel/net_bench $(O)/rel/rdcd
 
+# The same figures over USB against the UNIX socket, in the VM (an RDC-1
+# gadget on dummy_hcd): tests/vm/tests/usb-bench.sh prints them.
+bench-usb: $(O)/rel/net_bench $(O)/rel/rdcd
+	RDC_VM_TESTS=usb-bench tests/vm/run.sh $(O)
+
 # libFuzzer on the protocol parser (needs clang).  `make fuzz` is the short
 # run `make check` does; `make fuzz-long` searches for ten minutes and keeps
 # its corpus in $(O)/fuzz/corpus.
@@ -249,6 +255,23 @@ VM_BINS += $(O)/rel/gpio_te
 endif
 $(O)/rel/gpio_te: $(O)/rel/tests/vm/gpio_te.o
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+# The conformance suite as a VM program: RDC_CONFORM_URI=usb: runs it
+# against the RDC-1 on the guest's USB bus (tests/vm/tests/usb-conform.sh).
+VM_BINS += $(O)/rel/test_net_conform
+$(O)/rel/test_net_conform: $(O)/rel/tests/unit/test_net_conform.o \
+		$(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(CMOCKA_LIBS) $(LIBS) -o $@
+
+# usb_tool: long submits, frame subscriptions and interrupt events over
+# usb: for tests/vm/tests/usb-*.sh.
+# usb-unplug.sh runs the ASan+UBSan build: a leak or a use after free on
+# the way out of a vanished device fails it.
+VM_BINS += $(O)/rel/usb_tool $(O)/san/usb_tool
+$(O)/rel/usb_tool: $(O)/rel/tests/vm/usb_tool.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+$(O)/san/usb_tool: $(O)/san/tests/vm/usb_tool.o $(O)/san/librdc.a
+	$(CC) $(SAN_CFLAGS) $^ $(LIBS) -o $@
 
 vm-test: $(VM_BINS)
 	@tests/vm/run.sh $(O)

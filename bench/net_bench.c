@@ -8,6 +8,14 @@
  *    per wall second and frames dropped for it, in each encoding;
  *  - the same, daemon paced: 60 frames per wall second expected.
  * Usage: net_bench PATH/TO/rdcd  (`make bench-net` builds and runs it).
+ *
+ * net_bench --uri URI measures a device that is already there (any
+ * librdc URI; tests/vm/tests/usb-bench.sh gives it usb: and unix: on the
+ * same rdcd --fast): the submit rate, the register round trip, frames
+ * received in each encoding by the controlling client itself (a usb:
+ * device has one session at a time: no observer beside it), and the
+ * bytes a 1024x768 frame takes in each encoding, with the frame rate
+ * that USB 2.0 high speed's practical 35-40 MB/s would carry.
  */
 #include <signal.h>
 #include <stdio.h>
@@ -19,11 +27,19 @@
 #include <unistd.h>
 
 #include "rdc.h"
+#include "rdc_proto.h"
 
 #define BENCH_BATCH 1024     /* commands per submit */
 #define BENCH_SUBMIT_S 2.0   /* seconds of submitting */
 #define BENCH_RTT_N 20000    /* register reads */
 #define BENCH_FRAMES_S 3.0   /* seconds of watching frames */
+#define BENCH_RTT_URI_N 2000 /* register reads with --uri (slow links) */
+#define BENCH_USB_HS_LO 35e6 /* USB 2.0 high speed, bytes/s in practice */
+#define BENCH_USB_HS_HI 40e6
+
+/* "unix", "usb"...: the JSON lines' transport */
+static char bench_transport[16] = "unix";
+static int bench_rtt_n = BENCH_RTT_N;
 
 static double now_s(void)
 {
@@ -89,9 +105,9 @@ static void bench_submit(rdc_dev *dev)
 	} while (t - t0 < BENCH_SUBMIT_S);
 	rdc_finish(dev);
 	t = now_s();
-	printf("{\"bench\":\"submit\",\"transport\":\"unix\",\"batch_cmds\":%d,"
+	printf("{\"bench\":\"submit\",\"transport\":\"%s\",\"batch_cmds\":%d,"
 	       "\"commands\":%llu,\"seconds\":%.3f,\"commands_per_s\":%.0f}\n",
-	       2 * BENCH_BATCH, (unsigned long long)cmds, t - t0,
+	       bench_transport, 2 * BENCH_BATCH, (unsigned long long)cmds, t - t0,
 	       (double)cmds / (t - t0));
 	rdc_batch_free(b);
 }
@@ -102,18 +118,18 @@ static void bench_rtt(rdc_dev *dev)
 	double sum = 0;
 	uint32_t v;
 
-	for (int i = 0; i < BENCH_RTT_N; i++) {
+	for (int i = 0; i < bench_rtt_n; i++) {
 		double t0 = now_s();
 
 		rdc_reg_read(dev, RDC_REG_ID, &v);
 		lat[i] = now_s() - t0;
 		sum += lat[i];
 	}
-	qsort(lat, BENCH_RTT_N, sizeof(*lat), cmp_double);
-	printf("{\"bench\":\"reg_read_rtt\",\"transport\":\"unix\",\"n\":%d,"
+	qsort(lat, (size_t)bench_rtt_n, sizeof(*lat), cmp_double);
+	printf("{\"bench\":\"reg_read_rtt\",\"transport\":\"%s\",\"n\":%d,"
 	       "\"mean_us\":%.2f,\"p50_us\":%.2f,\"p99_us\":%.2f}\n",
-	       BENCH_RTT_N, sum / BENCH_RTT_N * 1e6, lat[BENCH_RTT_N / 2] * 1e6,
-	       lat[BENCH_RTT_N * 99 / 100] * 1e6);
+	       bench_transport, bench_rtt_n, sum / bench_rtt_n * 1e6,
+	       lat[bench_rtt_n / 2] * 1e6, lat[bench_rtt_n * 99 / 100] * 1e6);
 }
 
 static void bench_frames(const char *uri)
@@ -214,6 +230,122 @@ static void bench_paced(rdc_dev *dev, const char *uri)
 	rdc_close(obs);
 }
 
+static void bench_draw(rdc_dev *dev)
+{
+	/* something on screen, so that frames are not uniform */
+	rdc_batch *b = rdc_batch_new();
+
+	for (int i = 0; i < 200; i++) {
+		rdc_batch_fg(b, (uint32_t)i * 0x010203u);
+		rdc_batch_line(b, i * 5, 0, 1023 - i * 5, 767);
+	}
+	rdc_batch_text(b, 10, 10, "rdcd bench", 10, 0);
+	rdc_batch_submit(dev, b);
+	rdc_batch_free(b);
+	rdc_finish(dev);
+}
+
+/* Frames to the controlling client itself, each encoding in turn. */
+static void bench_frames_self(rdc_dev *dev)
+{
+	static uint32_t pix[1024 * 768];
+	static const char *const name[] = {"raw", "rle", "delta"};
+
+	for (uint32_t enc = RDC_FRAME_RAW; enc <= RDC_FRAME_DELTA; enc++) {
+		struct rdc_event ev = {0};
+		uint64_t got = 0, first;
+		uint32_t d0;
+		double t0, t = 0;
+
+		if (rdc_subscribe(dev, RDC_EVENT_FRAME, 1, enc) ||
+		    rdc_event_next(dev, &ev, pix, RDC_ARRAY_SIZE(pix), 5000))
+			break;
+		first = ev.number;
+		d0 = ev.dropped;
+		t0 = now_s();
+		do {
+			if (rdc_event_next(dev, &ev, pix, RDC_ARRAY_SIZE(pix),
+					   5000))
+				break;
+			got++;
+			t = now_s();
+		} while (t - t0 < BENCH_FRAMES_S);
+		printf("{\"bench\":\"frames_self\",\"transport\":\"%s\","
+		       "\"size\":\"1024x768\",\"encoding\":\"%s\","
+		       "\"received\":%llu,\"seconds\":%.3f,"
+		       "\"received_fps\":%.1f,\"simulated_fps\":%.1f,"
+		       "\"dropped\":%u}\n",
+		       bench_transport, name[enc], (unsigned long long)got,
+		       t - t0, (double)got / (t - t0),
+		       (double)(ev.number - first) / (t - t0), ev.dropped - d0);
+	}
+	rdc_subscribe(dev, 0, 1, RDC_FRAME_RAW);
+}
+
+/*
+ * What one frame of the screen takes on the wire in each encoding, and
+ * the frames per second a USB 2.0 high-speed link carries at that size.
+ */
+static void bench_frame_bytes(rdc_dev *dev)
+{
+	static uint32_t pix[1024 * 768];
+	static uint8_t out[1024 * 768 * 4 + 1024 * 8];
+	static const struct {
+		const char *name;
+		uint32_t enc;
+		int prev;
+	} e[] = {
+		{"raw", RDC_ENC_RAW, 0},
+		{"rle", RDC_ENC_RLE, 0},
+		{"delta_unchanged", RDC_ENC_DELTA, 1},
+		{"delta_every_row", RDC_ENC_DELTA, 0},
+	};
+	uint32_t w, h;
+
+	if (rdc_frame_grab(dev, pix, RDC_ARRAY_SIZE(pix), &w, &h) ||
+	    (size_t)w * h > RDC_ARRAY_SIZE(pix))
+		return;
+	for (size_t i = 0; i < RDC_ARRAY_SIZE(e); i++) {
+		size_t n = rdc_proto_frame_encode(out, sizeof(out), e[i].enc,
+						  pix, e[i].prev ? pix : NULL,
+						  w, h);
+		double bytes = (double)(n + RDC_PROTO_FRAME_HDR +
+					RDC_PROTO_HDR_SIZE);
+
+		printf("{\"bench\":\"frame_bytes\",\"size\":\"%ux%u\","
+		       "\"encoding\":\"%s\",\"bytes\":%.0f,"
+		       "\"fps_at_35MBps\":%.1f,\"fps_at_40MBps\":%.1f}\n",
+		       w, h, e[i].name, bytes, BENCH_USB_HS_LO / bytes,
+		       BENCH_USB_HS_HI / bytes);
+	}
+}
+
+static int bench_uri(const char *uri)
+{
+	rdc_dev *dev;
+	size_t k = strcspn(uri, ":");
+	int ret = rdc_open(uri, &dev);
+
+	if (ret) {
+		fprintf(stderr, "net_bench: %s: %s\n", uri, rdc_strerror(ret));
+		return 1;
+	}
+	snprintf(bench_transport, sizeof(bench_transport), "%.*s",
+		 (int)RDC_MIN(k, sizeof(bench_transport) - 1), uri);
+	bench_rtt_n = BENCH_RTT_URI_N;
+	rdc_mode_set(dev, RDC_PRESET_1024x768_60, RDC_FMT_XRGB8888, 0);
+	rdc_finish(dev);
+	bench_submit(dev);
+	bench_rtt(dev);
+	bench_draw(dev);
+	rdc_vblank_wait(dev);
+	rdc_vblank_wait(dev);
+	bench_frames_self(dev);
+	bench_frame_bytes(dev);
+	rdc_close(dev);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	char dir[] = "/tmp/rdc-bench-XXXXXX", uri[300], path[300];
@@ -221,8 +353,10 @@ int main(int argc, char **argv)
 	pid_t pid;
 	int st;
 
+	if (argc == 3 && !strcmp(argv[1], "--uri"))
+		return bench_uri(argv[2]);
 	if (argc != 2) {
-		fprintf(stderr, "usage: net_bench PATH/TO/rdcd\n");
+		fprintf(stderr, "usage: net_bench PATH/TO/rdcd | --uri URI\n");
 		return 2;
 	}
 	if (!mkdtemp(dir))
@@ -236,19 +370,7 @@ int main(int argc, char **argv)
 	rdc_finish(dev);
 	bench_submit(dev);
 	bench_rtt(dev);
-	{
-		/* something on screen, so that frames are not uniform */
-		rdc_batch *b = rdc_batch_new();
-
-		for (int i = 0; i < 200; i++) {
-			rdc_batch_fg(b, (uint32_t)i * 0x010203u);
-			rdc_batch_line(b, i * 5, 0, 1023 - i * 5, 767);
-		}
-		rdc_batch_text(b, 10, 10, "rdcd bench", 10, 0);
-		rdc_batch_submit(dev, b);
-		rdc_batch_free(b);
-		rdc_finish(dev);
-	}
+	bench_draw(dev);
 	bench_frames(uri);
 	rdc_close(dev);
 	kill(pid, SIGTERM);

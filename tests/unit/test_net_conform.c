@@ -4,6 +4,15 @@
  * (rdcd --stepped) and must see identical frames, cycle counts, counters
  * and register values.  sim: is the reference: the socket backends are
  * correct exactly when nothing tells them apart.
+ *
+ * With RDC_CONFORM_URI set, the same suite runs against that device
+ * instead of rdcd instances of its own (tests/vm/tests/usb-conform.sh
+ * gives it usb:, an rdcd --stepped behind a USB gadget).  The API
+ * scenario then expects a device as rdcd --stepped starts (time 0); for
+ * each scene the device is first put in a fresh sim:'s state (conf_prepare:
+ * VRAM zeroed, soft reset) and its times are counted from that reset, and
+ * sim: gets the device's VRAM size, as tests/vm/tests/rdcfb-conformance.sh
+ * does for fbdev:.
  */
 #include <dirent.h>
 #include <setjmp.h>
@@ -163,6 +172,67 @@ static void conf_expect_equal(const struct conf_out *a,
 
 static const char *const conf_stepped[] = {"--stepped", "-q", NULL};
 
+/* RDC_CONFORM_URI, or NULL: start rdcd for each run */
+static const char *conf_uri;
+
+/* Rows of VRAM zeroed per fill in conf_prepare (within RDC_COORD_MAX). */
+#define CONF_CLEAR_STRIDE 16384u
+#define CONF_CLEAR_ROWS 4096u
+
+/*
+ * Put the device at `uri` in a fresh sim:'s state, as far as a client
+ * can: VRAM zeroed by the DP (fills over the whole of it, then the bytes
+ * past the last full row), then a soft reset; *t0 is the time after it,
+ * *vram the VRAM size.
+ */
+static int conf_prepare(const char *uri, uint64_t *t0, uint32_t *vram)
+{
+	static const uint8_t zero[CONF_CLEAR_STRIDE];
+	rdc_dev *dev = NULL;
+	rdc_batch *b = rdc_batch_new();
+	uint32_t rows = 0;
+	int ret = b ? rdc_open(uri, &dev) : RDC_E_NOMEM;
+
+	if (!ret)
+		ret = rdc_reg_read(dev, RDC_REG_VRAM_SIZE, vram);
+	if (!ret)
+		ret = rdc_reg_write(dev, RDC_REG_CONTROL,
+				    RDC_CONTROL_SOFT_RESET);
+	if (!ret)
+		rows = *vram / CONF_CLEAR_STRIDE;
+	for (uint32_t y = 0; !ret && y < rows; y += CONF_CLEAR_ROWS) {
+		uint32_t h = RDC_MIN(CONF_CLEAR_ROWS, rows - y);
+
+		ret = rdc_batch_dst(b, y * CONF_CLEAR_STRIDE, CONF_CLEAR_STRIDE,
+				    CONF_CLEAR_STRIDE / 4, h, RDC_FMT_XRGB8888);
+		if (!ret)
+			ret = rdc_batch_clip(b, 0, 0, CONF_CLEAR_STRIDE / 4,
+					     (int)h);
+		if (!ret)
+			ret = rdc_batch_rop(b, RDC_ROP_COPY);
+		if (!ret)
+			ret = rdc_batch_fg(b, 0);
+		if (!ret)
+			ret = rdc_batch_fill_rect(b, 0, 0,
+						  CONF_CLEAR_STRIDE / 4, h);
+		if (!ret)
+			ret = rdc_batch_submit(dev, b);
+	}
+	if (!ret)
+		ret = rdc_finish(dev);
+	if (!ret && *vram % CONF_CLEAR_STRIDE)
+		ret = rdc_vram_write(dev, rows * CONF_CLEAR_STRIDE, zero,
+				     *vram % CONF_CLEAR_STRIDE);
+	if (!ret)
+		ret = rdc_reg_write(dev, RDC_REG_CONTROL,
+				    RDC_CONTROL_SOFT_RESET);
+	if (!ret)
+		ret = rdc_sim_time(dev, t0);
+	rdc_close(dev);
+	rdc_batch_free(b);
+	return ret;
+}
+
 static void run_on(const char *uri, struct conf_out *o, struct netd *d)
 {
 	rdc_dev *dev = NULL;
@@ -196,6 +266,12 @@ static void test_conform_api(void **state)
 	assert_int_equal(ref.vram[16], 3);
 	assert_int_equal(ref.vram[17], 10);
 
+	if (conf_uri) {
+		run_on(conf_uri, &u, NULL);
+		conf_expect_equal(&ref, &u, conf_uri);
+		return;
+	}
+
 	assert_int_equal(netd_start(&d, conf_stepped), 0);
 	run_on(d.unix_uri, &u, &d);
 	assert_int_equal(netd_stop(&d), 0);
@@ -216,7 +292,9 @@ struct conf_scene {
 	uint32_t readback_crc;
 };
 
-static void scene_run(const char *uri, const char *path, struct conf_scene *s)
+/* Times are counted from t0 (conf_prepare's reset; 0 on a fresh device). */
+static void scene_run(const char *uri, const char *path, struct conf_scene *s,
+		      uint64_t t0)
 {
 	static struct rdc_script_result res;
 	rdc_dev *dev = NULL;
@@ -235,6 +313,8 @@ static void scene_run(const char *uri, const char *path, struct conf_scene *s)
 		s->ret = rdc_frame_crc(dev, &s->crc);
 	if (!s->ret)
 		s->ret = rdc_sim_time(dev, &s->t_frame);
+	s->t_script -= t0;
+	s->t_frame -= t0;
 	memcpy(s->op_cycles, res.op_cycles, sizeof(s->op_cycles));
 	s->readback_crc = res.readback_crc;
 	rdc_close(dev);
@@ -251,7 +331,12 @@ static void test_conform_scenes(void **state)
 	static struct conf_scene ref, got;
 	static char names[CONF_MAX_SCENES][300];
 	char *list[CONF_MAX_SCENES];
-	DIR *dir = opendir(CONF_SCENE_DIR);
+	const char *scenes = getenv("RDC_CONFORM_SCENES");
+	DIR *dir;
+
+	if (!scenes)
+		scenes = CONF_SCENE_DIR;
+	dir = opendir(scenes);
 	struct dirent *e;
 	size_t n = 0, failed = 0, compared = 0;
 
@@ -261,8 +346,8 @@ static void test_conform_scenes(void **state)
 		size_t len = strlen(e->d_name);
 
 		if (len > 4 && !strcmp(e->d_name + len - 4, ".rdl")) {
-			snprintf(names[n], sizeof(names[n]), "%s/%s",
-				 CONF_SCENE_DIR, e->d_name);
+			snprintf(names[n], sizeof(names[n]), "%s/%s", scenes,
+				 e->d_name);
 			list[n] = names[n];
 			n++;
 		}
@@ -273,13 +358,41 @@ static void test_conform_scenes(void **state)
 	for (size_t i = 0; i < n; i++) {
 		struct netd d;
 
-		scene_run("sim:", list[i], &ref);
+		if (conf_uri) {
+			char sim[40];
+			uint64_t t0 = 0;
+			uint32_t vram = 0;
+
+			assert_int_equal(conf_prepare(conf_uri, &t0, &vram), 0);
+			snprintf(sim, sizeof(sim), "sim:vram=%u", vram);
+			scene_run(sim, list[i], &ref, 0);
+			if (ref.ret)
+				continue;
+			compared++;
+			scene_run(conf_uri, list[i], &got, t0);
+			if (memcmp(&ref, &got, sizeof(ref))) {
+				print_error("%s over %s: ret %d crc %08x/%08x "
+					    "t %llu/%llu\n",
+					    list[i], conf_uri, got.ret, got.crc,
+					    ref.crc,
+					    (unsigned long long)got.t_frame,
+					    (unsigned long long)ref.t_frame);
+				failed++;
+			} else {
+				print_message("%s: crc %08x, %llu cycles\n",
+					      list[i], got.crc,
+					      (unsigned long long)got.t_frame);
+			}
+			continue;
+		}
+		scene_run("sim:", list[i], &ref, 0);
 		if (ref.ret) /* fails on sim: too: test_golden's business */
 			continue;
 		compared++;
 		for (int tcp = 0; tcp < 2; tcp++) {
 			assert_int_equal(netd_start(&d, conf_stepped), 0);
-			scene_run(tcp ? d.tcp_uri : d.unix_uri, list[i], &got);
+			scene_run(tcp ? d.tcp_uri : d.unix_uri, list[i], &got,
+				  0);
 			assert_int_equal(netd_stop(&d), 0);
 			if (memcmp(&ref, &got, sizeof(ref))) {
 				print_error("%s over %s: ret %d crc %08x/%08x "
@@ -296,12 +409,18 @@ static void test_conform_scenes(void **state)
 	assert_true(compared > n / 2);
 }
 
-int main(void)
+/* An argument names the one test to run (the VM test runs them apart). */
+int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_conform_api),
 		cmocka_unit_test(test_conform_scenes),
 	};
 
+	if (argc > 1)
+		cmocka_set_test_filter(argv[1]);
+	conf_uri = getenv("RDC_CONFORM_URI");
+	if (conf_uri && !*conf_uri)
+		conf_uri = NULL;
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -67,6 +67,7 @@ struct usb_xport {
 
 	struct rdc_usb_rx rx;
 	int err; /* sticky: RDC_E_GONE, RDC_E_IO or RDC_E_PROTO */
+	bool session; /* ours: RESET on close ends it */
 	bool hp_on;
 	libusb_hotplug_callback_handle hp;
 };
@@ -369,6 +370,9 @@ static int usb_send(struct rdc_xport *x, const struct iovec *iov, int n)
 	}
 }
 
+static int usb_vendor(struct usb_xport *u, bool in, uint8_t req,
+		      uint8_t *data, uint16_t len);
+
 static void usb_xport_free(struct usb_xport *u)
 {
 	uint64_t end = usb_now_ms() + USB_CLOSE_MS;
@@ -412,6 +416,9 @@ static void usb_xport_free(struct usb_xport *u)
 	}
 	if (u->hp_on)
 		libusb_hotplug_deregister_callback(u->ctx, u->hp);
+	/* end the session: what it holds (control) goes at once */
+	if (u->session && u->err != RDC_E_GONE)
+		usb_vendor(u, false, RDC_USB_REQ_RESET, NULL, 0);
 	if (u->h) {
 		libusb_release_interface(u->h, u->iface);
 		libusb_close(u->h);
@@ -687,6 +694,7 @@ static int usb_connect(struct usb_xport *u, const struct rdc_usb_addr *a)
 			usb_hotplug_left, u, &u->hp);
 	}
 	r = usb_session(u);
+	u->session = !r;
 	if (!r)
 		r = usb_alloc(u);
 	return r;
