@@ -118,6 +118,7 @@ void rdcfb_gpio_unregister(struct rdcfb_chip *chip);
 void rdcfb_gpio_event_locked(struct rdcfb_gpio *g, ktime_t wall, u32 levels);
 void rdcfb_gpio_deliver_now(struct rdcfb_gpio *g);
 void rdcfb_gpio_stats(struct rdcfb_gpio *g, struct rdcfb_pin_stats *s);
+void rdcfb_gpio_module_exit(void);
 #else
 static inline int rdcfb_gpio_register(struct rdcfb_chip *chip,
 				      struct device *dev, int id)
@@ -134,6 +135,8 @@ static inline void rdcfb_gpio_stats(struct rdcfb_gpio *g,
 {
 	memset(s, 0, sizeof(*s));
 }
+
+static inline void rdcfb_gpio_module_exit(void) {}
 #endif
 
 

@@ -18,6 +18,14 @@
  *
  * RESET_N and BL_EN are the chip's inputs, so the host's outputs: setting
  * them drives the chip's pins through rdc_hw_set_pins.
+ *
+ * The interrupt domain is the driver's own, not gpiolib's: gpiolib would
+ * dispose of the mappings when the device is unbound, under a consumer
+ * that still has its edge interrupt requested (the 6.1 character device
+ * cannot give it back), and the consumer's free_irq would then miss them.
+ * So a chip whose interrupts were ever mapped is kept, mappings and all,
+ * until the module goes, which gpiolib does not let happen before every
+ * consumer has let go.
  */
 #include <linux/bitops.h>
 #include <linux/gpio/driver.h>
@@ -55,6 +63,10 @@ static const char *const rdcfb_line_names[RDCFB_LINES] = {
 	[RDCFB_LINE_BL_EN] = "BL_EN",
 };
 
+/* Chips unbound under a consumer's interrupt, freed at module exit. */
+static LIST_HEAD(rdcfb_gpio_kept);
+static DEFINE_MUTEX(rdcfb_gpio_kept_lock);
+
 struct rdcfb_pin_event {
 	ktime_t wall; /* when it happened on the paced clock; 0 stepped */
 	u32 levels; /* TE and IRQ after it */
@@ -75,6 +87,8 @@ struct rdcfb_gpio {
 	u64 lost; /* ev: edges dropped at a full queue */
 	u64 late_max_ns, late_sum_ns, late_n; /* ev: delivery after the edge */
 
+	struct irq_domain *domain;
+	struct list_head kept; /* on rdcfb_gpio_kept once unbound */
 	u8 irq_type[RDCFB_LINES]; /* IRQ_TYPE_EDGE_* a consumer asked for */
 	struct mutex deliver_lock; /* one deliverer at a time, in order */
 	bool gone; /* deliver_lock: the chip is being removed */
@@ -122,7 +136,7 @@ static void rdcfb_gpio_edge(struct rdcfb_gpio *g, unsigned int line,
 
 	if (!(type & (rising ? IRQ_TYPE_EDGE_RISING : IRQ_TYPE_EDGE_FALLING)))
 		return;
-	irq = irq_find_mapping(g->gc.irq.domain, line);
+	irq = irq_find_mapping(g->domain, line);
 	if (irq)
 		handle_nested_irq(irq);
 }
@@ -226,6 +240,13 @@ static int rdcfb_gpio_direction_output(struct gpio_chip *gc,
 
 /* ---- irq_chip: edges only, on TE and IRQ --------------------------------- */
 
+/* The chip data is the gpio_chip, as gpiochip_irq_reqres wants it. */
+static struct rdcfb_gpio *rdcfb_gpio_of_irq(struct irq_data *d)
+{
+	return container_of(irq_data_get_irq_chip_data(d), struct rdcfb_gpio,
+			    gc);
+}
+
 static void rdcfb_gpio_irq_mask(struct irq_data *d)
 {
 	gpiochip_disable_irq(irq_data_get_irq_chip_data(d), irqd_to_hwirq(d));
@@ -238,8 +259,7 @@ static void rdcfb_gpio_irq_unmask(struct irq_data *d)
 
 static int rdcfb_gpio_irq_set_type(struct irq_data *d, unsigned int type)
 {
-	struct rdcfb_gpio *g =
-		gpiochip_get_data(irq_data_get_irq_chip_data(d));
+	struct rdcfb_gpio *g = rdcfb_gpio_of_irq(d);
 
 	type &= IRQ_TYPE_SENSE_MASK;
 	if (type & ~IRQ_TYPE_EDGE_BOTH)
@@ -257,20 +277,61 @@ static const struct irq_chip rdcfb_gpio_irqchip = {
 	GPIOCHIP_IRQ_RESOURCE_HELPERS,
 };
 
-static void rdcfb_gpio_irq_valid(struct gpio_chip *gc,
-				 unsigned long *valid_mask,
-				 unsigned int ngpios)
+/* Consumers' handlers run nested, in the deliverer's context. */
+static int rdcfb_gpio_irq_map(struct irq_domain *d, unsigned int irq,
+			      irq_hw_number_t hwirq)
 {
-	bitmap_zero(valid_mask, ngpios);
-	__set_bit(RDCFB_LINE_TE, valid_mask);
-	__set_bit(RDCFB_LINE_IRQ, valid_mask);
+	struct rdcfb_gpio *g = d->host_data;
+
+	if (hwirq >= RDCFB_LINES || !(BIT(hwirq) & RDCFB_PINS_HOST_IN))
+		return -ENXIO;
+	irq_set_chip_data(irq, &g->gc);
+	irq_set_chip_and_handler(irq, &rdcfb_gpio_irqchip, handle_simple_irq);
+	irq_set_nested_thread(irq, 1);
+	irq_set_noprobe(irq);
+	return 0;
+}
+
+static void rdcfb_gpio_irq_unmap(struct irq_domain *d, unsigned int irq)
+{
+	irq_set_nested_thread(irq, 0);
+	irq_set_chip_and_handler(irq, NULL, NULL);
+	irq_set_chip_data(irq, NULL);
+}
+
+static const struct irq_domain_ops rdcfb_gpio_domain_ops = {
+	.map = rdcfb_gpio_irq_map,
+	.unmap = rdcfb_gpio_irq_unmap,
+	.xlate = irq_domain_xlate_twocell,
+};
+
+/*
+ * Has a consumer ever asked for TE's or IRQ's interrupt?  Whether it still
+ * holds it cannot be told for sure while its free_irq may be under way.
+ */
+static bool rdcfb_gpio_mapped(struct rdcfb_gpio *g)
+{
+	return irq_find_mapping(g->domain, RDCFB_LINE_TE) ||
+	       irq_find_mapping(g->domain, RDCFB_LINE_IRQ);
+}
+
+static void rdcfb_gpio_free(struct rdcfb_gpio *g)
+{
+	unsigned int line, irq;
+
+	for (line = RDCFB_LINE_TE; line <= RDCFB_LINE_IRQ; line++) {
+		irq = irq_find_mapping(g->domain, line);
+		if (irq)
+			irq_dispose_mapping(irq);
+	}
+	irq_domain_remove(g->domain);
+	kfree(g);
 }
 
 /* ---- Registration -------------------------------------------------------- */
 
 int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id)
 {
-	struct gpio_irq_chip *girq;
 	struct rdcfb_gpio *g;
 	unsigned long flags;
 	int ret;
@@ -300,16 +361,22 @@ int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id)
 	g->gc.get = rdcfb_gpio_get;
 	g->gc.set = rdcfb_gpio_set;
 
-	girq = &g->gc.irq;
-	gpio_irq_chip_set_chip(girq, &rdcfb_gpio_irqchip);
-	girq->handler = handle_simple_irq;
-	girq->default_type = IRQ_TYPE_NONE;
-	/* consumers' handlers run in the deliverer's context */
-	girq->threaded = true;
-	girq->init_valid_mask = rdcfb_gpio_irq_valid;
-
+	g->domain = irq_domain_create_linear(dev_fwnode(dev), RDCFB_LINES,
+					     &rdcfb_gpio_domain_ops, g);
+	if (!g->domain) {
+		kfree(g);
+		return -ENOMEM;
+	}
 	ret = gpiochip_add_data(&g->gc, g);
 	if (ret) {
+		irq_domain_remove(g->domain);
+		kfree(g);
+		return ret;
+	}
+	ret = gpiochip_irqchip_add_domain(&g->gc, g->domain);
+	if (ret) {
+		gpiochip_remove(&g->gc);
+		irq_domain_remove(g->domain);
 		kfree(g);
 		return ret;
 	}
@@ -322,10 +389,10 @@ int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id)
 }
 
 /*
- * The queue is stopped and emptied before the chip goes: gpiochip_remove
- * disposes of the interrupt mappings the deliverer uses.  The module
- * cannot be unloaded while a consumer holds a line (gpiolib pins it);
- * unbinding the device under a consumer leaves gpiolib's own complaint.
+ * The queue is stopped before the chip goes.  The module cannot be
+ * unloaded while a consumer holds a line (gpiolib pins it); a device
+ * unbound under one loses its lines (gpiolib says so), and the chip stays
+ * for a consumer's free_irq if its interrupts were ever used.
  */
 void rdcfb_gpio_unregister(struct rdcfb_chip *chip)
 {
@@ -343,7 +410,26 @@ void rdcfb_gpio_unregister(struct rdcfb_chip *chip)
 	mutex_unlock(&g->deliver_lock);
 	cancel_work_sync(&g->deliver_work);
 	gpiochip_remove(&g->gc);
-	kfree(g);
+	if (rdcfb_gpio_mapped(g)) {
+		mutex_lock(&rdcfb_gpio_kept_lock);
+		list_add(&g->kept, &rdcfb_gpio_kept);
+		mutex_unlock(&rdcfb_gpio_kept_lock);
+		return;
+	}
+	rdcfb_gpio_free(g);
+}
+
+/* Every consumer has let go by now: the module's references say so. */
+void rdcfb_gpio_module_exit(void)
+{
+	struct rdcfb_gpio *g, *tmp;
+
+	mutex_lock(&rdcfb_gpio_kept_lock);
+	list_for_each_entry_safe(g, tmp, &rdcfb_gpio_kept, kept) {
+		list_del(&g->kept);
+		rdcfb_gpio_free(g);
+	}
+	mutex_unlock(&rdcfb_gpio_kept_lock);
 }
 
 void rdcfb_gpio_stats(struct rdcfb_gpio *g, struct rdcfb_pin_stats *s)

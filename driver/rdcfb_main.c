@@ -263,6 +263,7 @@ static void __exit rdcfb_exit(void)
 {
 	rdcfb_unregister_devices();
 	platform_driver_unregister(&rdcfb_driver);
+	rdcfb_gpio_module_exit();
 	rdcfb_bench_module_exit();
 }
 
