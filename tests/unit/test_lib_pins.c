@@ -5,7 +5,7 @@
  * BL_EN darkening the panel, and a batch presented on TE landing in
  * vertical blanking; on sim: and through a real rdcd (unix:), plus the
  * PINS_SET message against malformed, oversized and uncontrolled
- * requests.
+ * requests, and a recording daemon's trace replaying a pin change.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -439,13 +439,18 @@ static void test_proto(void **state)
 	assert_int_equal(netd_stop(&d), 0);
 }
 
-/* A recording daemon cannot replay a pin change, so it refuses one. */
-static void test_record_refuses(void **state)
+/*
+ * A recording daemon drives the pins as any other does, and its trace
+ * replays the change: the PINS read after it matches on replay, and the
+ * chip is left with BL_EN low.
+ */
+static void test_record(void **state)
 {
 	char trace[128], dir[] = "/tmp/rdc-pins-XXXXXX";
 	const char *args[] = {"--stepped", "--record", trace, NULL};
+	struct rdc_replay_result res;
 	struct netd d;
-	rdc_dev *dev;
+	rdc_dev *dev, *rep = NULL;
 	uint32_t p;
 
 	(void)state;
@@ -453,11 +458,19 @@ static void test_record_refuses(void **state)
 	snprintf(trace, sizeof(trace), "%s/trace", dir);
 	assert_int_equal(netd_start(&d, args), 0);
 	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
-	assert_int_equal(rdc_pins_set(dev, RDC_PIN_BL_EN, 0), RDC_E_NOSYS);
+	assert_int_equal(rdc_pins_set(dev, RDC_PIN_BL_EN, 0), 0);
 	assert_int_equal(rdc_pins_get(dev, &p), 0);
-	assert_int_equal(p & RDC_PINS_IN, RDC_PINS_IN);
+	assert_int_equal(p & RDC_PINS_IN, RDC_PIN_RESET_N);
+	assert_int_equal(rdc_sim_step(dev, 1000), 0);
 	rdc_close(dev);
 	assert_int_equal(netd_stop(&d), 0);
+
+	assert_int_equal(rdc_replay_file(trace, &res, &rep), 0);
+	assert_int_equal(res.mismatches, 0);
+	assert_int_equal(res.time, 1000);
+	assert_int_equal(rdc_pins_get(rep, &p), 0);
+	assert_int_equal(p & RDC_PINS_IN, RDC_PIN_RESET_N);
+	rdc_close(rep);
 	unlink(trace);
 	rmdir(dir);
 }
@@ -473,7 +486,7 @@ int main(void)
 		cmocka_unit_test(test_present_on_te),
 		cmocka_unit_test(test_unix),
 		cmocka_unit_test(test_proto),
-		cmocka_unit_test(test_record_refuses),
+		cmocka_unit_test(test_record),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -7,6 +7,7 @@
  */
 #include <dirent.h>
 #include <png.h>
+#include <pthread.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -606,6 +607,278 @@ static void test_record_replay(void **state)
 }
 
 /*
+ * Frames as a subscribed observer sees them, read on a thread of its own
+ * while another client drives the device: each frame's CRC-32, in order,
+ * until the reply to a STATS sent after the session (the daemon queues
+ * replies behind the events before them), which says how many frames
+ * the daemon sent and dropped for this client.
+ */
+#define LIVE_MAX_FRAMES 256
+
+struct live_frames {
+	int fd;
+	uint32_t crc[LIVE_MAX_FRAMES];
+	unsigned int n;
+	uint32_t dropped;
+	struct rdc_proto_stats st; /* the daemon's count for this client */
+	int err;
+};
+
+static void *live_frames_read(void *arg)
+{
+	struct live_frames *lf = arg;
+	static uint32_t pix[640 * 480];
+	uint8_t *pl = malloc(RDC_PROTO_MAX_REPLY);
+
+	if (!pl) {
+		lf->err = -1;
+		return NULL;
+	}
+	for (;;) {
+		uint8_t hb[RDC_PROTO_HDR_SIZE];
+		struct rdc_proto_hdr h;
+		struct rdc_proto_frame f;
+
+		if (netd_read(lf->fd, hb, sizeof(hb))) {
+			lf->err = -1;
+			break;
+		}
+		rdc_proto_hdr_decode(hb, &h);
+		if (h.len > RDC_PROTO_MAX_REPLY ||
+		    netd_read(lf->fd, pl, h.len)) {
+			lf->err = -1;
+			break;
+		}
+		if (!(h.flags & RDC_MSGF_EVENT)) {
+			lf->err = h.type == RDC_MSG_STATS && !h.status &&
+						  !rdc_proto_stats_decode(
+							  pl, h.len, &lf->st)
+					  ? 0
+					  : -1;
+			break;
+		}
+		if (h.type != RDC_MSG_EV_FRAME)
+			continue;
+		if (rdc_proto_frame_hdr_decode(pl, h.len, &f) ||
+		    (size_t)f.width * f.height > RDC_ARRAY_SIZE(pix) ||
+		    rdc_proto_frame_decode(pix, f.width, f.height, f.encoding,
+					   pl + RDC_PROTO_FRAME_HDR,
+					   h.len - RDC_PROTO_FRAME_HDR) ||
+		    lf->n == LIVE_MAX_FRAMES) {
+			lf->err = -1;
+			break;
+		}
+		lf->crc[lf->n++] =
+			rdc_crc32_xrgb(pix, (size_t)f.width * f.height);
+		lf->dropped = f.dropped;
+	}
+	free(pl);
+	return NULL;
+}
+
+/*
+ * A trace's records, as docs/protocol.md and record.c describe them:
+ * copy `in` to `out` with the header's version set to `version` and the
+ * PINS records left out if `drop_pins`.  The number of PINS records in
+ * `in`, or -1.
+ */
+enum { TR_PINS = 8, TR_END = 7 };
+
+static int trace_copy(const char *in, const char *out, uint32_t version,
+		      bool drop_pins)
+{
+	FILE *fi = fopen(in, "rb"), *fo = fopen(out, "wb");
+	uint8_t hdr[16], rec[9], body[RDC_PROTO_WAIT_SIZE + 4], *vram = NULL;
+	int pins = 0, ret = -1;
+
+	if (!fi || !fo || fread(hdr, 1, sizeof(hdr), fi) != sizeof(hdr))
+		goto out;
+	rdc_proto_put32(hdr + 8, version);
+	fwrite(hdr, 1, sizeof(hdr), fo);
+	while (fread(rec, 1, sizeof(rec), fi) == sizeof(rec)) {
+		size_t n = 8, extra = 0;
+
+		switch (rec[0]) {
+		case 1: /* REG_WRITE */
+		case 2: /* REG_READ */
+		case 3: /* VRAM_WRITE: u32 addr, u32 len, then len bytes */
+		case 5: /* STEP */
+		case TR_PINS:
+			break;
+		case 4: /* WAIT */
+			n = RDC_PROTO_WAIT_SIZE + 4;
+			break;
+		case 6: /* POWER */
+		case TR_END:
+			n = 0;
+			break;
+		default:
+			goto out;
+		}
+		if (n && fread(body, 1, n, fi) != n)
+			goto out;
+		if (rec[0] == 3) {
+			extra = rdc_proto_get32(body + 4);
+			free(vram);
+			vram = malloc(extra + 1);
+			if (!vram || fread(vram, 1, extra, fi) != extra)
+				goto out;
+		}
+		if (rec[0] == TR_PINS)
+			pins++;
+		if (rec[0] == TR_PINS && drop_pins)
+			continue;
+		fwrite(rec, 1, sizeof(rec), fo);
+		fwrite(body, 1, n, fo);
+		if (extra)
+			fwrite(vram, 1, extra, fo);
+		if (rec[0] == TR_END) {
+			ret = pins;
+			break;
+		}
+	}
+out:
+	free(vram);
+	if (fi)
+		fclose(fi);
+	if (fo && fclose(fo))
+		ret = -1;
+	return ret;
+}
+
+/*
+ * Bands across the screen, one colour a row: long enough to be cut in
+ * the middle, and small as RLE frames, so the daemon's socket holds all
+ * of the session's and an observer that reads late loses none.
+ */
+static void pins_scene(rdc_batch *b, int n)
+{
+	for (int i = 0; i < n; i++) {
+		assert_int_equal(rdc_batch_fg(b, 0x8000u + (uint32_t)i * 97u),
+				 0);
+		assert_int_equal(
+			rdc_batch_fill_rect(b, 0, (i * 13) % 184, 320, 16), 0);
+	}
+}
+
+/*
+ * rdcd --record with the pins driven: RESET_N held low while the DP is in
+ * the middle of drawing and released, BL_EN low for a few frames.  The
+ * replay gives every frame an observer saw live (their CRCs in order),
+ * the same final time and no mismatch in any time or register read; left
+ * without its PINS records, the same trace does not.
+ */
+static void test_record_replay_pins(void **state)
+{
+	char trace[200], edited[220];
+	const char *args[] = {"--stepped", "-q", "--record", trace, NULL};
+	struct live_frames lf = {0};
+	struct rdc_replay_result res;
+	uint32_t v, lit = 0, dark = 0, again = 0;
+	uint64_t t = 0;
+	uint8_t sub[12];
+	rdc_dev *dev = NULL;
+	pthread_t th;
+	rdc_batch *b;
+	struct netd d;
+
+	(void)state;
+	snprintf(trace, sizeof(trace), "/tmp/rdcd-trace-p-%d", (int)getpid());
+	snprintf(edited, sizeof(edited), "%s.edit", trace);
+	assert_int_equal(netd_start(&d, args), 0);
+	/* the observer first: every frame from the start is its */
+	lf.fd = hello_fd(&d, 0);
+	assert_true(lf.fd >= 0);
+	rdc_proto_put32(sub, RDC_SUB_FRAMES);
+	rdc_proto_put32(sub + 4, 1);
+	rdc_proto_put32(sub + 8, RDC_ENC_RLE);
+	assert_int_equal(netd_call(lf.fd, RDC_MSG_SUBSCRIBE, 1, sub,
+				   sizeof(sub), NULL, 0),
+			 RDC_ST_OK);
+	assert_int_equal(pthread_create(&th, NULL, live_frames_read, &lf), 0);
+
+	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_RGB565, 4096),
+		0);
+	assert_int_equal(rdc_frame_wait(dev), 0);
+	b = rdc_batch_new();
+	assert_non_null(b);
+	pins_scene(b, 400);
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	/*
+	 * RESET_N low with the DP mid-scene (part drawn, the rest of its
+	 * words still in the FIFO): held, the chip forgets them
+	 */
+	assert_int_equal(rdc_sim_step(dev, 20000), 0);
+	assert_int_equal(rdc_reg_read(dev, RDC_REG_STATUS, &v), 0);
+	assert_false(v & RDC_STATUS_FIFO_EMPTY);
+	assert_int_equal(rdc_pins_set(dev, RDC_PIN_RESET_N, 0), 0);
+	assert_int_equal(rdc_reg_read(dev, RDC_REG_STATUS, &v), 0);
+	assert_true(v & RDC_STATUS_FIFO_EMPTY);
+	assert_int_equal(rdc_sim_step(dev, 300000), 0);
+	assert_int_equal(rdc_pins_set(dev, RDC_PIN_RESET_N, RDC_PIN_RESET_N),
+			 0);
+	/* released: the chip starts afresh, so the mode and scene again */
+	assert_int_equal(
+		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_RGB565, 4096),
+		0);
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	assert_int_equal(rdc_finish(dev), 0);
+	assert_int_equal(rdc_frame_wait(dev), 0);
+	assert_int_equal(rdc_frame_crc(dev, &lit), 0);
+	/* BL_EN low for three frames: dark; high: the picture is back */
+	assert_int_equal(rdc_pins_set(dev, RDC_PIN_BL_EN, 0), 0);
+	for (int i = 0; i < 3; i++)
+		assert_int_equal(rdc_frame_wait(dev), 0);
+	assert_int_equal(rdc_frame_crc(dev, &dark), 0);
+	assert_int_equal(rdc_pins_set(dev, RDC_PIN_BL_EN, RDC_PIN_BL_EN), 0);
+	for (int i = 0; i < 2; i++)
+		assert_int_equal(rdc_frame_wait(dev), 0);
+	assert_int_equal(rdc_frame_crc(dev, &again), 0);
+	assert_int_not_equal(dark, lit);
+	assert_int_equal(again, lit);
+	assert_int_equal(rdc_sim_step(dev, 4321), 0);
+	assert_int_equal(rdc_sim_time(dev, &t), 0);
+	rdc_batch_free(b);
+	rdc_close(dev);
+
+	/* the observer has every frame once the reply to STATS is in */
+	assert_int_equal(netd_send(lf.fd, RDC_MSG_STATS, 2, NULL, 0), 0);
+	assert_int_equal(pthread_join(th, NULL), 0);
+	close(lf.fd);
+	assert_int_equal(netd_stop(&d), 0);
+	assert_int_equal(lf.err, 0);
+	assert_int_equal(lf.dropped, 0);
+	assert_int_equal(lf.st.frames_dropped, 0);
+	assert_int_equal(lf.st.frames_sent, lf.n);
+	assert_true(lf.n >= 6);
+	assert_int_equal(lf.crc[lf.n - 1], lit);
+
+	assert_int_equal(rdc_replay_file(trace, &res, NULL), 0);
+	assert_int_equal(res.mismatches, 0);
+	assert_int_equal(res.time, t);
+	assert_int_equal(res.frames, lf.n);
+	assert_int_equal(res.frame_crc, lit);
+	assert_int_equal(res.frames_crc, rdc_crc32_xrgb(lf.crc, lf.n));
+
+	/* one PINS record a change; without them the session is lost */
+	assert_int_equal(trace_copy(trace, edited, 2, true), 4);
+	assert_int_equal(rdc_replay_file(edited, &res, NULL), 0);
+	assert_true(res.mismatches > 0);
+	assert_int_not_equal(res.frames_crc, rdc_crc32_xrgb(lf.crc, lf.n));
+	/* version 1 knows no PINS records; one without them still replays */
+	assert_int_equal(trace_copy(trace, edited, 1, true), 4);
+	assert_int_equal(rdc_replay_file(edited, &res, NULL), 0);
+	assert_int_equal(trace_copy(trace, edited, 1, false), 4);
+	assert_int_equal(rdc_replay_file(edited, &res, NULL), RDC_E_PARSE);
+	assert_int_equal(trace_copy(trace, edited, 3, false), 4);
+	assert_int_equal(rdc_replay_file(edited, &res, NULL), RDC_E_PARSE);
+	unlink(edited);
+	unlink(trace);
+}
+
+/*
  * Seeded random requests, sizes near the right ones, registers inside the
  * window half the time: whatever they do to the chip, every one is
  * answered in order and the daemon survives them (under the sanitizers).
@@ -843,6 +1116,7 @@ int main(void)
 		cmocka_unit_test(test_many_clients),
 		cmocka_unit_test(test_subscribe),
 		cmocka_unit_test(test_record_replay),
+		cmocka_unit_test(test_record_replay_pins),
 		cmocka_unit_test(test_random_requests),
 		cmocka_unit_test(test_paced),
 		cmocka_unit_test(test_snapshot_signal),

@@ -510,6 +510,8 @@ struct rdc_replay_result {
 	uint64_t frames;     /* frames completed during the replay */
 	uint32_t frame_crc;  /* CRC-32 of the last frame (0 if none) */
 	uint32_t width, height;
+	/* CRC-32 of every frame's CRC-32 in order, as little-endian u32s */
+	uint32_t frames_crc;
 };
 
 /*

@@ -19,10 +19,16 @@
  *     STEP        u64 cycles
  *     POWER       (a new chip from here on)
  *     END         (time is the final time)
+ *     PINS        u32 mask, u32 levels: the inputs in mask (RDC_PINS_IN)
+ *                 driven to levels (version 2 on)
+ *
+ * Version 1 is version 2 without PINS: such traces still replay.  The
+ * same layout, as a table: docs/protocol.md, "Traces".
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
 #include "hw.h"
 #include "rdc_priv.h"
@@ -30,7 +36,8 @@
 
 #define REC_MAGIC "RDCTRACE"
 #define REC_MAGIC_LEN 8u
-#define REC_VERSION 1u
+#define REC_VERSION	   2u
+#define REC_VERSION_MIN	   1u /* no PINS records */
 #define REC_MAX_VRAM_WRITE (256u << 20)
 
 enum rec_op {
@@ -41,6 +48,7 @@ enum rec_op {
 	REC_STEP = 5,
 	REC_POWER = 6,
 	REC_END = 7,
+	REC_PINS = 8,
 };
 
 struct rdc_rec {
@@ -245,6 +253,32 @@ static int rec_wait(rdc_dev *dev, const struct rdc_wait *w)
 	return ret;
 }
 
+/*
+ * A pin change is an input like a register write: at the same simulated
+ * time on the same chip it has the same effect (rdc_hw_set_pins).  Only
+ * changes that happened are written, as for VRAM.
+ */
+static int rec_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
+{
+	struct rdc_rec *r = dev->priv;
+	uint64_t t;
+	int ret;
+
+	rec_flush_moved(r);
+	t = r->hw->now;
+	ret = REC_INNER(dev, r, pins_set(dev, mask, levels));
+	if (!ret) {
+		uint8_t b[17];
+
+		b[0] = REC_PINS;
+		rdc_proto_put64(b + 1, t);
+		rdc_proto_put32(b + 9, mask);
+		rdc_proto_put32(b + 13, levels);
+		rec_put(r, b, sizeof(b));
+	}
+	return ret;
+}
+
 static int rec_step(rdc_dev *dev, uint64_t cycles)
 {
 	struct rdc_rec *r = dev->priv;
@@ -282,6 +316,12 @@ static const struct rdc_backend rdc_backend_rec = {
 	.wait = rec_wait,
 	.step = rec_step,
 	.frame_grab = rec_frame_grab,
+	.pins_set = rec_pins_set,
+	/*
+	 * No pins_get or pins_wait: the core reads PINS and waits through
+	 * reg_read and wait, which are recorded (the inner pins_wait would
+	 * move time behind the trace's back).
+	 */
 };
 
 /* ---- Replay -------------------------------------------------------------- */
@@ -290,6 +330,7 @@ struct replay {
 	FILE *f;
 	struct rdc_replay_result *res;
 	rdc_dev *dev;
+	uint32_t version;
 	uint32_t vram;
 	uint8_t *buf;
 };
@@ -303,12 +344,15 @@ static void rp_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 		     uint64_t n)
 {
 	struct rdc_replay_result *res = ctx;
+	uint8_t le[4];
 
 	(void)n;
 	res->frames++;
 	res->width = w;
 	res->height = h;
 	res->frame_crc = rdc_crc32_xrgb(xrgb, (size_t)w * h);
+	rdc_st32(le, res->frame_crc);
+	res->frames_crc = (uint32_t)crc32(res->frames_crc, le, sizeof(le));
 }
 
 static int rp_open(struct replay *p)
@@ -395,6 +439,18 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 		return 0;
 	case REC_POWER:
 		return rp_open(p);
+	case REC_PINS: {
+		uint32_t mask;
+
+		if (p->version < 2 || rp_get(p, b, 8))
+			return RDC_E_PARSE;
+		mask = rdc_proto_get32(b);
+		if (!mask || (mask & ~RDC_PINS_IN))
+			return RDC_E_PARSE;
+		if (be->pins_set(p->dev, mask, rdc_proto_get32(b + 4) & mask))
+			p->res->mismatches++;
+		return 0;
+	}
 	default:
 		return RDC_E_PARSE;
 	}
@@ -418,8 +474,9 @@ int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 	if (!p.f)
 		return RDC_E_FILE;
 	ret = rp_get(&p, hdr, sizeof(hdr));
+	p.version = ret ? 0 : rdc_proto_get32(hdr + REC_MAGIC_LEN);
 	if (!ret && (memcmp(hdr, REC_MAGIC, REC_MAGIC_LEN) ||
-		     rdc_proto_get32(hdr + REC_MAGIC_LEN) != REC_VERSION))
+		     p.version < REC_VERSION_MIN || p.version > REC_VERSION))
 		ret = RDC_E_PARSE;
 	if (!ret) {
 		p.vram = rdc_proto_get32(hdr + REC_MAGIC_LEN + 4);

@@ -28,7 +28,12 @@
  *    would: a consumer's change reaches the chip within a loop turn
  *    (about a millisecond paced, less fast, RDCD_GPIOSIM_POLL_MS at
  *    most stepped).  Only changes are forwarded, so a protocol client
- *    may drive the pins too; the last change wins.
+ *    may drive the pins too; the last change wins.  A power cycle makes
+ *    a chip whose inputs are high whatever the lines say: rdcd tells the
+ *    bridge (rdcd_gpiosim_new_chip), which forwards the levels the
+ *    consumer still drives at once, before time moves on the new chip.
+ *    (The chip's address cannot tell: the new one may reuse the old
+ *    one's memory.)
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -63,9 +68,8 @@ struct rdcd_gpiosim {
 	char sysdir[200]; /* sysfs: /sys/devices/platform/DEV/CHIP */
 	char chip[32];	  /* gpiochipN */
 	int pull_fd[GPIOSIM_NLINES], value_fd[GPIOSIM_NLINES];
-	uint32_t pulled;   /* TE, IRQ as last written */
-	uint32_t seen;	   /* RESET_N, BL_EN as last read */
-	struct rdc_hw *hw; /* the chip pulled and seen belong to */
+	uint32_t pulled; /* TE, IRQ as last written */
+	uint32_t seen;	 /* RESET_N, BL_EN as last forwarded (or the chip's) */
 	bool live, made[GPIOSIM_NLINES], bank, top;
 	bool write_failed, set_failed;
 };
@@ -246,7 +250,6 @@ static void gpiosim_sync(struct rdcd_gpiosim *g)
 		if (RDC_PINS_OUT & (1u << i))
 			gpiosim_pull(g, i, levels & (1u << i));
 	g->pulled = levels & RDC_PINS_OUT;
-	g->hw = g->d->hw;
 }
 
 int rdcd_gpiosim_open(struct rdcd *d, const char *name)
@@ -335,16 +338,13 @@ fail:
 	return -1;
 }
 
-void rdcd_gpiosim_poll(struct rdcd *d)
+/* Hand the chip what the input lines say, where it differs from seen. */
+static void gpiosim_forward(struct rdcd_gpiosim *g)
 {
-	struct rdcd_gpiosim *g = d->gpiosim;
+	struct rdcd *d = g->d;
 	uint32_t in, diff;
 	int ret;
 
-	if (!g)
-		return;
-	if (g->hw != d->hw)
-		gpiosim_sync(g); /* a power cycle made a new chip */
 	if (gpiosim_inputs(g, &in)) {
 		if (!g->write_failed)
 			rdcd_log(d, RDCD_LOG_WARN, "gpio-sim: reading %s: %s",
@@ -360,15 +360,32 @@ void rdcd_gpiosim_poll(struct rdcd *d)
 	if (ret) {
 		if (!g->set_failed)
 			rdcd_log(d, RDCD_LOG_WARN,
-				 "gpio-sim: driving the chip's pins: %s%s",
-				 rdc_strerror(ret),
-				 d->rec ? " (a trace cannot record pins)" : "");
+				 "gpio-sim: driving the chip's pins: %s",
+				 rdc_strerror(ret));
 		g->set_failed = true;
 		return;
 	}
 	/* TE and IRQ followed already: a reset reports its pin changes */
 	rdcd_log(d, RDCD_LOG_DEBUG, "gpio-sim: RESET_N=%u BL_EN=%u",
 		 !!(in & RDC_PIN_RESET_N), !!(in & RDC_PIN_BL_EN));
+}
+
+void rdcd_gpiosim_poll(struct rdcd *d)
+{
+	if (d->gpiosim)
+		gpiosim_forward(d->gpiosim);
+}
+
+void rdcd_gpiosim_new_chip(struct rdcd *d)
+{
+	struct rdcd_gpiosim *g = d->gpiosim;
+
+	if (!g)
+		return;
+	gpiosim_sync(g);
+	/* what the new chip has: the consumer's levels differ from these */
+	g->seen = rdc_hw_pins(d->hw) & RDC_PINS_IN;
+	gpiosim_forward(g);
 }
 
 void rdcd_gpiosim_close(struct rdcd *d)

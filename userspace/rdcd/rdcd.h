@@ -170,12 +170,14 @@ void rdcd_trace_attach(struct rdcd *d);
 /*
  * gpiosim.c: --gpio-sim NAME makes the gpio-sim chip NAME and bridges the
  * pins to it: open (0 or -1, logged), poll once per loop turn (the loop
- * turns at least every RDCD_GPIOSIM_POLL_MS), close (takes the chip
- * down).
+ * turns at least every RDCD_GPIOSIM_POLL_MS), new_chip after a power
+ * cycle (the levels the consumer drives, again, to the new chip), close
+ * (takes the chip down).  All do nothing without --gpio-sim.
  */
 #define RDCD_GPIOSIM_POLL_MS 5
 int rdcd_gpiosim_open(struct rdcd *d, const char *name);
 void rdcd_gpiosim_poll(struct rdcd *d);
+void rdcd_gpiosim_new_chip(struct rdcd *d);
 void rdcd_gpiosim_close(struct rdcd *d);
 
 #endif /* RDCD_H */

@@ -263,11 +263,16 @@ void rdcd_device_close(struct rdcd *d)
 
 static int rdcd_power_cycle(struct rdcd *d)
 {
+	int ret;
+
 	if (d->rec)
 		rdc_rec_power(d->rec);
 	rdc_close(d->dev);
 	d->dev = NULL;
-	return rdcd_device_open(d);
+	ret = rdcd_device_open(d);
+	if (!ret)
+		rdcd_gpiosim_new_chip(d); /* before time moves on the new chip */
+	return ret;
 }
 
 /* ---- Clients ------------------------------------------------------------- */
@@ -764,8 +769,7 @@ static void rdcd_submit(struct rdcd *d, struct rdcd_client *c,
 
 /*
  * Drive RESET_N and BL_EN as a wire to the chip would; the reply is the
- * four levels after.  A trace could not replay a pin change, so a
- * recording daemon refuses (the wrapped handle has no pins_set).
+ * four levels after.  A trace records the change (record.c).
  */
 static void rdcd_pins_set(struct rdcd *d, struct rdcd_client *c,
 			  const struct rdc_proto_hdr *h, const uint8_t *pl)
