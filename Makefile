@@ -255,6 +255,12 @@ VM_BINS += $(O)/rel/gpio_te
 endif
 $(O)/rel/gpio_te: $(O)/rel/tests/vm/gpio_te.o
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+# usb_raw: the USB device side (rdcd's ffs:) checked with libusb alone
+ifeq ($(HAVE_USB),1)
+VM_BINS += $(O)/rel/usb_raw
+endif
+$(O)/rel/usb_raw: $(O)/rel/tests/vm/usb_raw.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 # The conformance suite as a VM program: RDC_CONFORM_URI=usb: runs it
 # against the RDC-1 on the guest's USB bus (tests/vm/tests/usb-conform.sh).

@@ -101,6 +101,8 @@ gadget_create() {
 	echo "$PID" >"$G/idProduct"
 	echo 0x0100 >"$G/bcdDevice" # RDC-1 revision 1.00
 	echo 0x0200 >"$G/bcdUSB"
+	# full- and high-speed descriptors only: keep SuperSpeed UDCs at high
+	echo high-speed >"$G/max_speed" 2>/dev/null
 	mkdir "$G/strings/0x409"
 	echo "rdc project" >"$G/strings/0x409/manufacturer"
 	echo "RDC-1 raster display controller (simulated)" \

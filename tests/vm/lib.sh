@@ -135,14 +135,15 @@ usb_require() {
 usb_find() {
 	for u in /sys/bus/usb/devices/*; do
 		[ -r "$u/idVendor" ] && [ -r "$u/serial" ] || continue
-		[ "$(cat "$u/idVendor")" = $USB_VID ] &&
-			[ "$(cat "$u/idProduct")" = $USB_PID ] &&
-			[ "$(cat "$u/serial")" = "$USB_SERIAL" ] || continue
+		[ "$(cat "$u/idVendor" 2>/dev/null)" = $USB_VID ] &&
+			[ "$(cat "$u/idProduct" 2>/dev/null)" = $USB_PID ] &&
+			[ "$(cat "$u/serial" 2>/dev/null)" = "$USB_SERIAL" ] ||
+			continue
 		# configured, and its interface bound or at least listed
 		[ "$(cat "$u/bConfigurationValue" 2>/dev/null)" = 1 ] || continue
 		USB_SYSFS=$u
-		USB_BUSNUM=$(cat "$u/busnum")
-		USB_DEVNUM=$(cat "$u/devnum")
+		USB_BUSNUM=$(cat "$u/busnum" 2>/dev/null)
+		USB_DEVNUM=$(cat "$u/devnum" 2>/dev/null)
 		return 0
 	done
 	USB_SYSFS=""
@@ -195,16 +196,35 @@ usb_gadget_up() {
 # rdcd's log; returns rdcd's exit status.
 usb_gadget_down() {
 	rc=0
-	"$GADGET" unbind >/dev/null 2>&1
+	timeout 30 "$GADGET" unbind >/dev/null 2>&1 ||
+		{ echo "usb: unbinding the gadget failed or hung"; rc=1; }
 	if [ -n "$USB_RDCD_PID" ]; then
 		kill -TERM $USB_RDCD_PID 2>/dev/null
+		i=0
+		while usb_running $USB_RDCD_PID && [ $i -lt 300 ]; do
+			sleep 0.1
+			i=$((i + 1))
+		done
+		if usb_running $USB_RDCD_PID; then
+			echo "usb: rdcd still runs 30 s after SIGTERM; its threads:"
+			for t in /proc/$USB_RDCD_PID/task/*; do
+				echo "  $(cat $t/comm) in $(cat $t/wchan)"
+				sed 's/^/    /' $t/stack 2>/dev/null
+			done
+			kill -KILL $USB_RDCD_PID
+		fi
 		wait $USB_RDCD_PID
-		rc=$?
+		rc=$((rc | $?))
 		USB_RDCD_PID=""
 		sed 's/^/    rdcd: /' "$USB_RDCD_LOG"
 	fi
 	"$GADGET" down || rc=1
 	return $rc
+}
+
+# usb_running PID: a process that has not exited (zombies have)
+usb_running() {
+	[ -r /proc/$1/stat ] && ! sed 's/^.*) //' /proc/$1/stat | grep -q '^Z'
 }
 
 # usb_unplug / usb_replug: unbind the gadget from its UDC (the host sees a
@@ -218,5 +238,5 @@ usb_replug() {
 }
 
 usb_rdcd_alive() {
-	[ -n "$USB_RDCD_PID" ] && kill -0 $USB_RDCD_PID 2>/dev/null
+	[ -n "$USB_RDCD_PID" ] && usb_running $USB_RDCD_PID
 }

@@ -67,7 +67,7 @@ struct rdcd_ffs {
 	int stopfd; /* eventfd: wakes the ep0 thread to stop */
 
 	pthread_t th[FFS_NT];
-	bool running[FFS_NT];
+	bool running[FFS_NT]; /* started, not yet joined */
 
 	pthread_mutex_t lock; /* everything below */
 	pthread_cond_t cond;
@@ -78,6 +78,7 @@ struct rdcd_ffs {
 	int pending;	  /* the daemon's end, not yet accepted, or -1 */
 	bool dead;	  /* rdcd hung up on this session */
 	uint32_t seen[FFS_NDATA]; /* the gen each data thread has caught up to */
+	bool exited[FFS_NDATA];	  /* that thread has left its loop */
 
 	uint8_t irq[FFS_IRQ_QUEUE][RDC_USB_EVENT_SIZE];
 	unsigned int irq_head, irq_n;
@@ -215,7 +216,8 @@ static void ffs_wait_threads(struct rdcd_ffs *f)
 		bool all = true;
 
 		for (unsigned int t = 0; t < FFS_NDATA; t++) {
-			if (f->running[t] && f->seen[t] != f->gen) {
+			if (f->running[t] && !f->exited[t] &&
+			    f->seen[t] != f->gen) {
 				all = false;
 				pthread_kill(f->th[t], FFS_KICK);
 			}
@@ -289,6 +291,9 @@ static void ffs_session_dead(struct rdcd_ffs *f, uint32_t gen)
 {
 	if (gen != f->gen || f->dead)
 		return;
+	rdcd_log(f->d, RDCD_LOG_INFO,
+		 "ffs:%s: session %u closed by rdcd: halting the bulk endpoints",
+		 f->dir, f->session);
 	f->dead = true;
 	pthread_cond_broadcast(&f->cond);
 	for (unsigned int t = 0; t < FFS_NDATA; t++)
@@ -304,8 +309,11 @@ static void ffs_halt(struct rdcd_ffs *f, enum ffs_ep ep)
 				     : read(f->ep[ep], &b, 0);
 
 	if (r < 0 && errno != EBADMSG)
-		rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: halt ep%d: %s", f->dir,
+		rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: halting ep%d: %s", f->dir,
 			 ep + 1, strerror(errno));
+	else
+		rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: ep%d halted (%zd)",
+			 f->dir, ep + 1, r);
 }
 
 /* Write all of p to fd (a blocking socket); false if it broke. */
@@ -369,7 +377,7 @@ static void *ffs_out_thread(void *arg)
 			ffs_session_dead(f, g);
 		}
 	}
-	f->seen[FFS_T_OUT] = f->gen;
+	f->exited[FFS_T_OUT] = true;
 	pthread_cond_broadcast(&f->cond);
 	pthread_mutex_unlock(&f->lock);
 	return NULL;
@@ -525,10 +533,10 @@ static void *ffs_in_thread(void *arg)
 		pthread_mutex_unlock(&f->lock);
 		/* at most FFS_BUF - HDR, so a header always fits beside it */
 		n = read(fd, f->inbuf, FFS_BUF - RDC_PROTO_HDR_SIZE);
-		if (n < 0)
-			err = errno;
-		else if (!n)
-			err = EPIPE; /* rdcd hung up */
+		if (n < 0 && errno == EINTR)
+			err = EINTR;
+		else if (n <= 0)
+			err = EPIPE; /* rdcd hung up (ECONNRESET if unread) */
 		else if (!ffs_parse(f, &ps, f->inbuf, (size_t)n, &staged))
 			err = EPROTO;
 		else if (staged)
@@ -554,7 +562,7 @@ static void *ffs_in_thread(void *arg)
 			halt_valid = true;
 		}
 	}
-	f->seen[FFS_T_IN] = f->gen;
+	f->exited[FFS_T_IN] = true;
 	pthread_cond_broadcast(&f->cond);
 	pthread_mutex_unlock(&f->lock);
 	return NULL;
@@ -595,7 +603,7 @@ static void *ffs_irq_thread(void *arg)
 		}
 		pthread_mutex_lock(&f->lock);
 	}
-	f->seen[FFS_T_IRQ] = f->gen;
+	f->exited[FFS_T_IRQ] = true;
 	pthread_cond_broadcast(&f->cond);
 	pthread_mutex_unlock(&f->lock);
 	return NULL;
@@ -737,7 +745,9 @@ void rdcd_ffs_close(struct rdcd_ffs *f)
 	pthread_mutex_unlock(&f->lock);
 	if (f->running[FFS_T_EP0]) {
 		if (write(f->stopfd, &one, sizeof(one)) < 0)
-			pthread_kill(f->th[FFS_T_EP0], FFS_KICK);
+			rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: eventfd: %s",
+				 f->dir, strerror(errno));
+		pthread_kill(f->th[FFS_T_EP0], FFS_KICK); /* if in ep0 I/O */
 		pthread_join(f->th[FFS_T_EP0], NULL);
 		f->running[FFS_T_EP0] = false;
 	}

@@ -1,0 +1,61 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only
+# The RDC-1 as a USB device: rdcd --listen ffs: behind a configfs gadget on
+# dummy_hcd enumerates on the guest's own bus with rdc_usb.h's identity
+# (lsusb -v: class, endpoints, strings, serial); usb_raw, written against
+# libusb alone, talks the protocol over bulk OUT/IN, gets an interrupt
+# event on the interrupt endpoint, uses the INFO and RESET requests, and
+# measures round trips (figures as comments, not conditions).  rdcd exits
+# cleanly on SIGTERM with its bridge threads.
+# vm-module: dummy_hcd
+# vm-module: libcomposite
+# vm-module: usb_f_fs
+. "$RDC_TREE/tests/vm/lib.sh"
+
+RAW=$B/usb_raw
+usb_require
+[ -x "$RAW" ] || { echo "usb_raw is not built (no libusb-1.0?)"; exit 77; }
+command -v lsusb >/dev/null || { echo "lsusb missing (usbutils)"; exit 77; }
+RAW="$RAW --serial $USB_SERIAL"
+
+check "the gadget enumerates (rdcd on ffs:, bound to the first UDC)" \
+	usb_gadget_up --mode 640x480
+lsusb -v -d $USB_VID:$USB_PID >"$T/lsusb.txt" 2>&1
+# lsusb_has PATTERN: the verbose listing has a line matching PATTERN
+lsusb_has() {
+	grep -Eq "$1" "$T/lsusb.txt" || { echo "no line matching: $1"; false; }
+}
+check "lsusb: interface class 255/0x52/1" sh -c '
+	grep -Eq "bInterfaceClass +255" "$1" &&
+	grep -Eq "bInterfaceSubClass +82" "$1" &&
+	grep -Eq "bInterfaceProtocol +1" "$1" &&
+	grep -Eq "bNumEndpoints +3" "$1"' sh "$T/lsusb.txt"
+check "lsusb: bulk OUT and bulk IN of 512 bytes (high speed)" sh -c '
+	awk "/bEndpointAddress/ { a = \$2 \" \" \$5 }
+	     /Transfer Type/ { t = \$3 }
+	     /wMaxPacketSize/ { print a, t, \$2 }" "$1" >"$1.eps"
+	cat "$1.eps"
+	grep -Eq "^0x0[1-9a-f] OUT Bulk 0x0200" "$1.eps" &&
+	grep -Eq "^0x8[1-9a-f] IN Bulk 0x0200" "$1.eps"' sh "$T/lsusb.txt"
+check "lsusb: interrupt IN of 64 bytes, every 1 ms" sh -c '
+	grep -Eq "^0x8[1-9a-f] IN Interrupt 0x0040" "$1.eps" &&
+	grep -Eq "bInterval +4" "$1"' sh "$T/lsusb.txt"
+check "lsusb: strings and serial" sh -c '
+	grep -Eq "idVendor +0x1209" "$1" && grep -Eq "idProduct +0x0001" "$1" &&
+	grep -Eq "iProduct +[0-9]+ RDC-1" "$1" &&
+	grep -Eq "iInterface +[0-9]+ RDC-1 display controller" "$1" &&
+	grep -Eq "iSerial +[0-9]+ $2\$" "$1"' sh "$T/lsusb.txt" "$USB_SERIAL"
+check "usb_raw: descriptors" $RAW descriptors
+check "usb_raw: INFO, RESET, HELLO, PING, REG_READ, REG_WRITE" $RAW basic
+check "usb_raw: an interrupt event on the interrupt endpoint" $RAW irq
+check "usb_raw: RESET drops a half request, unknown requests stall" $RAW reset
+check "usb_raw: replies of whole packets still end the host's read" $RAW zlp
+check "usb_raw: round trips (figures below)" $RAW bench 300
+grep '^# usb' "$T/check.out"
+check "rdcd still running" usb_rdcd_alive
+check "rdcd and the gadget go down cleanly (rdcd exits 0)" usb_gadget_down
+check "the device is gone from the bus" usb_wait gone 10
+check "nothing of the gadget is left (configfs, functionfs mount)" sh -c '
+	! ls /sys/kernel/config/usb_gadget | grep . &&
+	! grep functionfs /proc/mounts'
+finish

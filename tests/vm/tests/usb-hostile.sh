@@ -1,0 +1,83 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only
+# A hostile or careless USB host against rdcd's ffs: listener, while a
+# UNIX-socket client of the same rdcd asks PING and REG_READ all along:
+# truncated requests, a 4 GiB length, random bytes on bulk OUT, frames
+# subscribed with bulk IN never read, a host gone mid-message, an unplug
+# (UDC unbound) during a 1 MiB SUBMIT and during a frame subscription.
+# After each, a new USB session (RESET, HELLO, ...) works; rdcd stays up,
+# the socket client gets every answer right, rdcd exits 0 at the end
+# (under ASan and UBSan when the build has san/rdcd).
+# vm-module: dummy_hcd
+# vm-module: libcomposite
+# vm-module: usb_f_fs
+[ -x "$RDC_BUILD/san/rdcd" ] && USB_RDCD=$RDC_BUILD/san/rdcd
+. "$RDC_TREE/tests/vm/lib.sh"
+
+RAW=$B/usb_raw
+usb_require
+[ -x "$RAW" ] || { echo "usb_raw is not built (no libusb-1.0?)"; exit 77; }
+echo "# rdcd: $USB_RDCD"
+RAWS="$RAW --serial $USB_SERIAL"
+
+# wait_line FILE PATTERN SECONDS
+wait_line() {
+	i=0
+	while ! grep -q "$2" "$1" 2>/dev/null; do
+		[ $i -lt $(($3 * 10)) ] || return 1
+		sleep 0.1
+		i=$((i + 1))
+	done
+}
+
+then_new_session() {
+	check "  ... then a new USB session works" $RAWS basic
+}
+
+check "the gadget enumerates" usb_gadget_up --mode 640x480 -v
+rm -f "$T/stop-watch"
+"$RAW" watch "$USB_SOCK" "$T/stop-watch" >"$T/watch.log" 2>&1 &
+watch=$!
+check "a USB session works" $RAWS basic
+
+check "a truncated request: no reply, nothing else happens" \
+	$RAWS hostile truncated
+then_new_session
+check "a 4 GiB length: TOOBIG, then the session stalls" \
+	$RAWS hostile oversize
+then_new_session
+check "64 KiB of random bytes on bulk OUT" $RAWS hostile random
+then_new_session
+check "frames subscribed, 30 frames made, bulk IN never read" \
+	$RAWS hostile stall-frames 2
+then_new_session
+check "the host goes away in the middle of a request" \
+	$RAWS hostile exit-mid-message
+then_new_session
+
+$RAWS hostile long-submit 60 >"$T/submit.log" 2>&1 &
+raw=$!
+check "a 1 MiB SUBMIT under way" wait_line "$T/submit.log" submitting 20
+sleep 1
+check "unplugged during the SUBMIT" usb_unplug
+check "  ... the host program sees the device go" wait $raw
+sed 's/^/    /' "$T/submit.log"
+check "  ... replugged" usb_replug
+then_new_session
+
+$RAWS hostile frames 60 >"$T/frames.log" 2>&1 &
+raw=$!
+check "a frame subscription under way" wait_line "$T/frames.log" stepping 20
+sleep 2
+check "unplugged during the subscription" usb_unplug
+wait $raw
+sed 's/^/    /' "$T/frames.log"
+check "  ... replugged" usb_replug
+then_new_session
+
+touch "$T/stop-watch"
+check "the socket client got every answer right throughout" wait $watch
+sed 's/^/    /' "$T/watch.log"
+check "rdcd still running" usb_rdcd_alive
+check "rdcd exits 0 on SIGTERM, the gadget goes down" usb_gadget_down
+finish
