@@ -14,6 +14,8 @@
 
 BENCH=$B/net_bench
 usb_require
+"$RDCCTL" --connect usb:fffe:fffd regs 2>&1 | grep -q "not supported" &&
+	{ echo "librdc is built without libusb-1.0: no usb: backend"; exit 77; }
 [ -x "$BENCH" ] || { echo "$BENCH is not built"; exit 77; }
 
 check "the gadget enumerates (rdcd --fast on ffs: and unix:)" \

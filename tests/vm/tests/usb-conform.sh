@@ -16,6 +16,8 @@
 
 CONFORM=$B/test_net_conform
 usb_require
+"$RDCCTL" --connect usb:fffe:fffd regs 2>&1 | grep -q "not supported" &&
+	{ echo "librdc is built without libusb-1.0: no usb: backend"; exit 77; }
 [ -x "$CONFORM" ] || { echo "$CONFORM is not built"; exit 77; }
 
 check "the gadget enumerates (rdcd --stepped on ffs:)" usb_gadget_up

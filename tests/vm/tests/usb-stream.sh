@@ -14,6 +14,8 @@
 
 TOOL=$B/usb_tool
 usb_require
+"$RDCCTL" --connect usb:fffe:fffd regs 2>&1 | grep -q "not supported" &&
+	{ echo "librdc is built without libusb-1.0: no usb: backend"; exit 77; }
 [ -x "$TOOL" ] || { echo "$TOOL is not built"; exit 77; }
 scene=$SCENES/stream_a.rdl
 

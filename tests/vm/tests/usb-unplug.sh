@@ -15,6 +15,8 @@
 TOOL=$RDC_BUILD/san/usb_tool
 BOUND=60 # seconds a host call may take to notice the device left
 usb_require
+"$RDCCTL" --connect usb:fffe:fffd regs 2>&1 | grep -q "not supported" &&
+	{ echo "librdc is built without libusb-1.0: no usb: backend"; exit 77; }
 [ -x "$TOOL" ] || { echo "$TOOL is not built"; exit 77; }
 
 # wait_line FILE PATTERN SECONDS
