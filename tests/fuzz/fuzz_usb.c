@@ -17,8 +17,8 @@
 #include "rdc.h"
 #include "usb_host.h"
 
-#define FUZZ_RING (64u * 1024u)
-#define FUZZ_KEEP (64u * 1024u) /* payload bytes kept for the decoders */
+#define FUZZ_RING	(64u * 1024u)
+#define FUZZ_KEEP	(64u * 1024u) /* payload bytes kept for the decoders */
 #define FUZZ_MAX_PIXELS (128u * 128u)
 
 static uint32_t fuzz_pix[FUZZ_MAX_PIXELS];
@@ -140,8 +140,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		i += 3;
 		switch (op) {
 		case 0: /* bulk chunk, never more than the room */
-			arg = RDC_MIN(arg, RDC_MIN(size - i,
-						   rdc_usb_rx_room(&rx)));
+			arg = RDC_MIN(arg,
+				      RDC_MIN(size - i, rdc_usb_rx_room(&rx)));
 			if (rdc_usb_rx_bulk(&rx, data + i, arg))
 				abort();
 			i += arg;

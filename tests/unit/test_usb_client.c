@@ -30,9 +30,9 @@ struct fake {
 	uint8_t pending[4096]; /* replies not yet "transferred" */
 	size_t npending;
 	uint32_t seed;
-	bool gone;	       /* unplugged */
-	bool gone_mid_reply;   /* unplug after half of the next reply */
-	unsigned int calls;    /* send and recv calls */
+	bool gone;	     /* unplugged */
+	bool gone_mid_reply; /* unplug after half of the next reply */
+	unsigned int calls;  /* send and recv calls */
 	unsigned int closed;
 	unsigned int requests;
 };
@@ -111,9 +111,8 @@ static int fake_send(struct rdc_xport *x, const struct iovec *iov, int n)
 
 static void fake_irq(uint32_t bits, uint64_t time)
 {
-	struct rdc_proto_hdr h = {.len = 12,
-				  .type = RDC_MSG_EV_IRQ,
-				  .flags = RDC_MSGF_EVENT};
+	struct rdc_proto_hdr h = {
+		.len = 12, .type = RDC_MSG_EV_IRQ, .flags = RDC_MSGF_EVENT};
 	uint8_t ev[RDC_USB_EVENT_SIZE];
 
 	rdc_proto_hdr_encode(ev, &h);
@@ -257,8 +256,7 @@ static void expect_all_gone(rdc_dev *dev)
 	assert_int_equal(rdc_finish(dev), RDC_E_GONE);
 	assert_int_equal(rdc_vblank_wait(dev), RDC_E_GONE);
 	assert_int_equal(rdc_sim_time(dev, &t), RDC_E_GONE);
-	assert_int_equal(rdc_subscribe(dev, RDC_EVENT_FRAME, 1, 0),
-			 RDC_E_GONE);
+	assert_int_equal(rdc_subscribe(dev, RDC_EVENT_FRAME, 1, 0), RDC_E_GONE);
 	assert_int_equal(rdc_event_next(dev, &ev, NULL, 0, 1000), RDC_E_GONE);
 	/* none of them went near the transport */
 	assert_int_equal(fake.calls, calls);

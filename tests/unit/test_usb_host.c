@@ -63,11 +63,12 @@ static void test_addr_forms(void **state)
 static void test_addr_bad(void **state)
 {
 	static const char *const bad[] = {
-		"1209",	    "1209:",	 ":0001",     "12345:1",   "1:12345",
-		"12g9:1",   "1:2:3",	 "0-1",	      "256-1",	   "1-",
-		"1-0",	    "1-1.",	 "1-1..2",    "1-256",	   "-1",
-		"1-1.2.3.4.5.6.7.8",	 "serial=",   "x",	   "1 - 1",
-		"serial=a&b",		 "1-1x",      "+1-1",	   "1--1",
+		"1209",	   "1209:",  ":0001", "12345:1",
+		"1:12345", "12g9:1", "1:2:3", "0-1",
+		"256-1",   "1-",     "1-0",   "1-1.",
+		"1-1..2",  "1-256",  "-1",    "1-1.2.3.4.5.6.7.8",
+		"serial=", "x",	     "1 - 1", "serial=a&b",
+		"1-1x",	   "+1-1",   "1--1",
 	};
 	struct rdc_usb_addr a;
 	char big[300];
@@ -93,16 +94,16 @@ static void test_path_format(void **state)
 	char buf[32];
 
 	(void)state;
-	assert_int_equal(rdc_usb_path_format(buf, sizeof(buf), 3, ports, 3),
-			 0);
+	assert_int_equal(rdc_usb_path_format(buf, sizeof(buf), 3, ports, 3), 0);
 	assert_string_equal(buf, "3-1.4.2");
 	assert_int_equal(rdc_usb_path_format(buf, 6, 3, ports, 3), -1);
 }
 
-/* ---- Reassembly ------------------------------------------------------------ */
+/* ---- Reassembly ------------------------------------------------------------
+ */
 
-static size_t put_msg(uint8_t *p, uint16_t type, uint16_t flags,
-		      uint32_t seq, const void *pl, uint32_t len)
+static size_t put_msg(uint8_t *p, uint16_t type, uint16_t flags, uint32_t seq,
+		      const void *pl, uint32_t len)
 {
 	struct rdc_proto_hdr h = {
 		.len = len, .type = type, .flags = flags, .seq = seq};

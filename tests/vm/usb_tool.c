@@ -23,11 +23,11 @@
 
 #include "rdc.h"
 
-#define SUBMIT_WORDS (16u << 20) /* 64 MB of commands: long on any link */
+#define SUBMIT_WORDS   (16u << 20) /* 64 MB of commands: long on any link */
 #define FRAMES_FLOWING 5
-#define LOOP_MAX 100000
-#define IRQ_WANT 3
-#define IRQ_TRIES 60
+#define LOOP_MAX       100000
+#define IRQ_WANT       3
+#define IRQ_TRIES      60
 
 static double now_ms(void)
 {
@@ -59,7 +59,8 @@ static int later_calls(rdc_dev *dev)
 			bad = 1;
 		}
 	}
-	printf("later calls: %s\n", bad ? "not all gone" : "all \"device gone\"");
+	printf("later calls: %s\n",
+	       bad ? "not all gone" : "all \"device gone\"");
 	printf("# usb six later calls took %.1f ms\n", now_ms() - t);
 	return bad;
 }
@@ -104,7 +105,8 @@ static int cmd_frames(rdc_dev *dev)
 
 		ret = rdc_vblank_wait(dev);
 		while (!ret) {
-			ret = rdc_event_next(dev, &ev, px, RDC_ARRAY_SIZE(px), 0);
+			ret = rdc_event_next(dev, &ev, px, RDC_ARRAY_SIZE(px),
+					     0);
 			if (!ret && ev.type == RDC_EVENT_FRAME &&
 			    ++frames == FRAMES_FLOWING) {
 				printf("frames flowing (%ux%u)\n", ev.width,

@@ -32,17 +32,17 @@
 #ifdef RDC_HAVE_USB
 #include <libusb.h>
 
-#define USB_IN_N 4
-#define USB_IN_SIZE (64u * 1024u) /* a multiple of every bulk maxp */
-#define USB_OUT_N 4
-#define USB_OUT_CHUNK (64u * 1024u)
-#define USB_RX_CAP (8u << 20) /* a few raw frames of the biggest mode */
-#define USB_SLICE_MS 100
-#define USB_CTRL_MS 2000
-#define USB_OUT_MS 30000 /* an OUT chunk the device never takes */
-#define USB_DRAIN_MS 50
-#define USB_DRAIN_MAX (16u << 20)
-#define USB_CLOSE_MS 3000
+#define USB_IN_N	  4
+#define USB_IN_SIZE	  (64u * 1024u) /* a multiple of every bulk maxp */
+#define USB_OUT_N	  4
+#define USB_OUT_CHUNK	  (64u * 1024u)
+#define USB_RX_CAP	  (8u << 20) /* a few raw frames of the biggest mode */
+#define USB_SLICE_MS	  100
+#define USB_CTRL_MS	  2000
+#define USB_OUT_MS	  30000 /* an OUT chunk the device never takes */
+#define USB_DRAIN_MS	  50
+#define USB_DRAIN_MAX	  (16u << 20)
+#define USB_CLOSE_MS	  3000
 #define USB_GONE_CHECK_MS 1000 /* after an I/O error: is it unplugging? */
 /* Smallest request payload a device may declare: a register write. */
 #define USB_MIN_REQUEST 64u
@@ -66,7 +66,7 @@ struct usb_xport {
 	bool out_busy[USB_OUT_N];
 
 	struct rdc_usb_rx rx;
-	int err; /* sticky: RDC_E_GONE, RDC_E_IO or RDC_E_PROTO */
+	int err;      /* sticky: RDC_E_GONE, RDC_E_IO or RDC_E_PROTO */
 	bool session; /* ours: RESET on close ends it */
 	bool hp_on;
 	libusb_hotplug_callback_handle hp;
@@ -116,7 +116,8 @@ static int usb_transfer_err(enum libusb_transfer_status st)
 	}
 }
 
-/* ---- Transfers ------------------------------------------------------------- */
+/* ---- Transfers -------------------------------------------------------------
+ */
 
 static void LIBUSB_CALL usb_in_done(struct libusb_transfer *t)
 {
@@ -129,7 +130,8 @@ static void LIBUSB_CALL usb_in_done(struct libusb_transfer *t)
 		/* room was reserved at submission: a refusal is our bug or a
 		 * length the kernel should have stopped */
 		if (t->actual_length < 0 || t->actual_length > t->length ||
-		    rdc_usb_rx_bulk(&u->rx, t->buffer, (size_t)t->actual_length))
+		    rdc_usb_rx_bulk(&u->rx, t->buffer,
+				    (size_t)t->actual_length))
 			usb_fail(u, RDC_E_PROTO);
 	} else if (t->status != LIBUSB_TRANSFER_CANCELLED) {
 		usb_fail(u, usb_transfer_err(t->status));
@@ -170,8 +172,7 @@ static void LIBUSB_CALL usb_out_done(struct libusb_transfer *t)
 	}
 }
 
-static int LIBUSB_CALL usb_hotplug_left(libusb_context *ctx,
-					libusb_device *dev,
+static int LIBUSB_CALL usb_hotplug_left(libusb_context *ctx, libusb_device *dev,
 					libusb_hotplug_event ev, void *arg)
 {
 	struct usb_xport *u = arg;
@@ -260,14 +261,15 @@ static int usb_settle(struct usb_xport *u)
 	return u->err;
 }
 
-/* ---- The transport ----------------------------------------------------------- */
+/* ---- The transport
+ * ----------------------------------------------------------- */
 
 static ssize_t usb_recv(struct rdc_xport *x, void *buf, size_t len,
 			int timeout_ms)
 {
 	struct usb_xport *u = (struct usb_xport *)x;
-	uint64_t end = timeout_ms >= 0 ? usb_now_ms() + (uint64_t)timeout_ms
-				       : 0;
+	uint64_t end =
+		timeout_ms >= 0 ? usb_now_ms() + (uint64_t)timeout_ms : 0;
 
 	for (;;) {
 		ssize_t n = rdc_usb_rx_read(&u->rx, buf, len);
@@ -315,12 +317,13 @@ static int usb_send(struct rdc_xport *x, const struct iovec *iov, int n)
 						      (size_t)USB_OUT_CHUNK);
 
 				while (k < want) {
-					size_t c = RDC_MIN(want - k,
-							   iov[vi].iov_len -
-								   voff);
+					size_t c =
+						RDC_MIN(want - k,
+							iov[vi].iov_len - voff);
 
 					memcpy(t->buffer + k,
-					       (const uint8_t *)iov[vi].iov_base +
+					       (const uint8_t *)iov[vi]
+							       .iov_base +
 						       voff,
 					       c);
 					k += c;
@@ -337,13 +340,15 @@ static int usb_send(struct rdc_xport *x, const struct iovec *iov, int n)
 			t->flags = 0;
 			if (k && k % u->maxp_out == 0) {
 				if (u->zlp_flag)
-					t->flags = LIBUSB_TRANSFER_ADD_ZERO_PACKET;
+					t->flags =
+						LIBUSB_TRANSFER_ADD_ZERO_PACKET;
 				else
 					zlp_due = true;
 			}
 			r = libusb_submit_transfer(t);
 			if (r == LIBUSB_ERROR_NOT_SUPPORTED && t->flags) {
-				/* no URB_ZERO_PACKET: an empty transfer after */
+				/* no URB_ZERO_PACKET: an empty transfer after
+				 */
 				u->zlp_flag = false;
 				t->flags = 0;
 				zlp_due = true;
@@ -370,8 +375,8 @@ static int usb_send(struct rdc_xport *x, const struct iovec *iov, int n)
 	}
 }
 
-static int usb_vendor(struct usb_xport *u, bool in, uint8_t req,
-		      uint8_t *data, uint16_t len);
+static int usb_vendor(struct usb_xport *u, bool in, uint8_t req, uint8_t *data,
+		      uint16_t len);
 
 static void usb_xport_free(struct usb_xport *u)
 {
@@ -442,7 +447,8 @@ static const struct rdc_xport_ops usb_ops = {
 	.close = usb_close,
 };
 
-/* ---- Finding the device ------------------------------------------------------ */
+/* ---- Finding the device
+ * ------------------------------------------------------ */
 
 struct usb_iface {
 	int number;
@@ -524,16 +530,18 @@ static void usb_serial(libusb_device_handle *h,
 	int n = 0;
 
 	if (dd->iSerialNumber)
-		n = libusb_get_string_descriptor_ascii(
-			h, dd->iSerialNumber, (unsigned char *)buf, (int)cap - 1);
+		n = libusb_get_string_descriptor_ascii(h, dd->iSerialNumber,
+						       (unsigned char *)buf,
+						       (int)cap - 1);
 	buf[n > 0 ? RDC_MIN((size_t)n, cap - 1) : 0] = 0;
 }
 
-/* ---- Opening ------------------------------------------------------------------ */
+/* ---- Opening
+ * ------------------------------------------------------------------ */
 
 /* Vendor request on the interface; IN if `data` is to be filled. */
-static int usb_vendor(struct usb_xport *u, bool in, uint8_t req,
-		      uint8_t *data, uint16_t len)
+static int usb_vendor(struct usb_xport *u, bool in, uint8_t req, uint8_t *data,
+		      uint16_t len)
 {
 	uint8_t type = (in ? LIBUSB_ENDPOINT_IN : LIBUSB_ENDPOINT_OUT) |
 		       LIBUSB_REQUEST_TYPE_VENDOR;
@@ -581,9 +589,9 @@ static int usb_session(struct usb_xport *u)
 
 		do {
 			got = 0;
-			r = ep ? libusb_interrupt_transfer(
-					 u->h, u->ep_intr, junk, sizeof(junk),
-					 &got, USB_DRAIN_MS)
+			r = ep ? libusb_interrupt_transfer(u->h, u->ep_intr,
+							   junk, sizeof(junk),
+							   &got, USB_DRAIN_MS)
 			       : libusb_bulk_transfer(u->h, u->ep_in, junk,
 						      sizeof(junk), &got,
 						      USB_DRAIN_MS);
@@ -730,7 +738,8 @@ static int usb_open(rdc_dev *dev, const char *opts)
 	return rdc_client_open(dev, &u->x, &o);
 }
 
-/* ---- Listing -------------------------------------------------------------------- */
+/* ---- Listing
+ * -------------------------------------------------------------------- */
 
 static int usb_list(rdc_found_fn fn, void *arg)
 {

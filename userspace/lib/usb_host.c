@@ -11,7 +11,8 @@
 #include "rdc.h"
 #include "usb_host.h"
 
-/* ---- Addresses ------------------------------------------------------------- */
+/* ---- Addresses -------------------------------------------------------------
+ */
 
 /* A number of at most `max` in base 10 or 16 from s[*i], digits only. */
 static int addr_num(const char *s, size_t len, size_t *i, unsigned int base,
@@ -109,7 +110,8 @@ int rdc_usb_path_format(char *buf, size_t cap, uint8_t bus,
 	return 0;
 }
 
-/* ---- Reassembly ------------------------------------------------------------ */
+/* ---- Reassembly ------------------------------------------------------------
+ */
 
 int rdc_usb_rx_init(struct rdc_usb_rx *rx, size_t cap)
 {
@@ -246,8 +248,8 @@ ssize_t rdc_usb_rx_read(struct rdc_usb_rx *rx, void *out, size_t len)
 			    rx_next_msg(rx))
 				break;
 		}
-		k = (size_t)RDC_MIN(rx->left, (uint64_t)RDC_MIN(rx->len,
-								 len - done));
+		k = (size_t)RDC_MIN(rx->left,
+				    (uint64_t)RDC_MIN(rx->len, len - done));
 		if (!k)
 			break;
 		rx_take(rx, o + done, k);

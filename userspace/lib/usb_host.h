@@ -52,7 +52,8 @@ int rdc_usb_addr_parse(const char *s, size_t len, struct rdc_usb_addr *a);
 int rdc_usb_path_format(char *buf, size_t cap, uint8_t bus,
 			const uint8_t *ports, unsigned int nports);
 
-/* ---- Reassembly ------------------------------------------------------------ */
+/* ---- Reassembly ------------------------------------------------------------
+ */
 
 #define RDC_USB_RX_EVENTS 64 /* interrupt events held for the reader */
 
