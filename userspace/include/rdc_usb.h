@@ -20,6 +20,11 @@
  *                  packet and no reply waits for more data.
  *   interrupt IN   interrupt events: each RDC_MSG_EV_IRQ message (header
  *                  and payload, RDC_USB_EVENT_SIZE bytes) in one transfer.
+ *                  They never appear on bulk IN.
+ *
+ * When the daemon ends the conversation itself (a fatal protocol error,
+ * answered as on a socket), the device halts both bulk endpoints after
+ * its last reply; the host recovers with RDC_USB_REQ_RESET.
  */
 #ifndef RDC_USB_H
 #define RDC_USB_H
@@ -49,8 +54,10 @@
 #define RDC_USB_EVENT_SIZE 28u
 
 /*
- * Vendor requests (bmRequestType 0x40 OUT / 0xc0 IN, recipient interface,
- * wIndex the interface number).
+ * Vendor requests: bmRequestType vendor, recipient interface (0x41 OUT /
+ * 0xc1 IN), wIndex the interface number.  The device answers them with
+ * recipient device (0x40 OUT / 0xc0 IN, wIndex ignored) as well.  Other
+ * requests to the interface stall.
  */
 enum rdc_usb_request {
 	/*
