@@ -301,14 +301,32 @@ static void ffs_session_dead(struct rdcd_ffs *f, uint32_t gen)
 			pthread_kill(f->th[t], FFS_KICK);
 }
 
-/* Halt an endpoint: a read on an IN endpoint file, a write on OUT. */
-static void ffs_halt(struct rdcd_ffs *f, enum ffs_ep ep)
+/*
+ * Halt an endpoint of session `gen`: a read on an IN endpoint file, a
+ * write on OUT.  An IN endpoint refuses (EAGAIN) while its FIFO still
+ * holds bytes the host has not collected (the last reply), so that is
+ * retried until the host took them or the session ended.
+ */
+static void ffs_halt(struct rdcd_ffs *f, enum ffs_ep ep, uint32_t gen)
 {
 	uint8_t b = 0;
-	ssize_t r = ep == FFS_EP_OUT ? write(f->ep[ep], &b, 0)
-				     : read(f->ep[ep], &b, 0);
+	ssize_t r;
 
-	if (r < 0 && errno != EBADMSG)
+	for (;;) {
+		bool gone;
+
+		r = ep == FFS_EP_OUT ? write(f->ep[ep], &b, 0)
+				     : read(f->ep[ep], &b, 0);
+		if (r >= 0 || errno != EAGAIN)
+			break;
+		pthread_mutex_lock(&f->lock);
+		gone = gen != f->gen || f->stop;
+		pthread_mutex_unlock(&f->lock);
+		if (gone)
+			return;
+		usleep(10000);
+	}
+	if (r < 0 && errno != EBADMSG && errno != EINTR)
 		rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: halting ep%d: %s", f->dir,
 			 ep + 1, strerror(errno));
 	else
@@ -353,7 +371,7 @@ static void *ffs_out_thread(void *arg)
 		}
 		if (f->dead) {
 			pthread_mutex_unlock(&f->lock);
-			ffs_halt(f, FFS_EP_OUT);
+			ffs_halt(f, FFS_EP_OUT, g);
 			pthread_mutex_lock(&f->lock);
 			halted = g;
 			halt_valid = true;
@@ -524,7 +542,7 @@ static void *ffs_in_thread(void *arg)
 		}
 		if (f->dead) {
 			pthread_mutex_unlock(&f->lock);
-			ffs_halt(f, FFS_EP_IN);
+			ffs_halt(f, FFS_EP_IN, g);
 			pthread_mutex_lock(&f->lock);
 			halted = g;
 			halt_valid = true;

@@ -34,7 +34,7 @@ then_new_session() {
 	check "  ... then a new USB session works" $RAWS basic
 }
 
-check "the gadget enumerates" usb_gadget_up --mode 640x480 -v
+check "the gadget enumerates" usb_gadget_up --mode 640x480
 rm -f "$T/stop-watch"
 "$RAW" watch "$USB_SOCK" "$T/stop-watch" >"$T/watch.log" 2>&1 &
 watch=$!
