@@ -5,8 +5,9 @@
 # find the lines by name, gpiomon sees one TE rising edge a frame (counted
 # exactly on a stepped daemon; the rate of a paced one is only reported),
 # gpioset BL_EN=0 darkens the frames and RESET_N low holds the chip in
-# reset, after which a scene draws as sim: draws it.  rdcd takes its chip
-# down when it exits.
+# reset, after which a scene draws as sim: draws it.  Recording, the
+# trace replays what the lines did, and a power cycle's new chip gets the
+# levels the lines still drive.  rdcd takes its chip down when it exits.
 # vm-module: gpio-sim
 . "$RDC_TREE/tests/vm/lib.sh"
 
@@ -135,6 +136,66 @@ check "after the reset the scene draws as on sim:" \
 	test "$(crc "$scene")" = "$want"
 check "rdcd exits cleanly" rdcd_stop
 check "rdcd took its gpio-sim chip down" test ! -e "$CFS/$NAME"
+
+# ---- recording: the bridge's pin changes replay; a power cycle keeps them --
+# power_cycle PORT: RESET kind 1 as the controller, over the raw protocol
+# (HELLO wanting control, then RESET); 0 if both replies came back OK.
+power_cycle() {
+	# HELLO: len 20, type 1, seq 1; "RDC1", version 1, caps 0, flags 1,
+	# no token.  RESET: len 4, type 12, seq 2; kind 1 (power).
+	(printf '\024\0\0\0\001\0\0\0\001\0\0\0\0\0\0\0RDC1\001\0\0\0\0\0\0\0\001\0\0\0\0\0\0\0'
+	 printf '\004\0\0\0\014\0\0\0\002\0\0\0\0\0\0\0\001\0\0\0'
+	 sleep 1) | busybox nc 127.0.0.1 "$1" >"$T/power.out"
+	# the HELLO reply (16 + 28 bytes), then RESET's: status at 56..59
+	test "$(wc -c <"$T/power.out")" = 60 &&
+		test "$(od -An -tx1 -j 56 -N 4 "$T/power.out" | tr -d ' ')" = 00000000
+}
+
+# the guest's loopback starts down; the power cycle goes over TCP
+ip link set lo up 2>/dev/null || busybox ip link set lo up 2>/dev/null
+# new_chip_held: a new chip (time 0: stepped, nothing has moved it since)
+# already held in reset, as the level went to it before the RESET reply
+new_chip_held() {
+	t=$(reg TIME_LO)
+	echo "TIME_LO $t"
+	ctl pins | tee /dev/stderr | grep -q RESET_N=0 && test "$t" = 0
+}
+
+if ! busybox nc --help 2>&1 | grep -q 'IPADDR PORT'; then
+	echo "# busybox nc missing: the recording part is skipped"
+elif check "rdcd --stepped --record --gpio-sim starts" \
+	rdcd_start --stepped --record "$T/trace" --listen tcp:127.0.0.1:0; then
+	CHIP=$(cat "$CFS/$NAME/bank0/chip_name")
+	PORT=$(sed -n 's/^tcp:127\.0\.0\.1:\([0-9]*\)$/\1/p' "$T/ready")
+	check "a client draws the scene" test "$(crc "$scene")" = "$want"
+	gpioset -c "$CHIP" BL_EN=0 &
+	SET=$!
+	check "recording: gpioset BL_EN=0 reaches the chip" wait_pins "BL_EN=0"
+	check "recording: BL_EN low, the frames are black" \
+		test "$(crc "$T/none.rdl")" = "$black"
+	kill $SET
+	wait $SET 2>/dev/null
+	check "recording: BL_EN pulled high again" wait_pins "BL_EN=1"
+	gpioset -c "$CHIP" RESET_N=0 &
+	SET=$!
+	check "recording: gpioset RESET_N=0 reaches the chip" wait_pins "RESET_N=0"
+	check "a power cycle over the protocol (port $PORT)" power_cycle "$PORT"
+	check "the new chip is held in reset by the line still driven low" \
+		new_chip_held
+	kill $SET
+	wait $SET 2>/dev/null
+	check "recording: RESET_N released" wait_pins "RESET_N=1"
+	live=$(crc "$scene")
+	check "after the power cycle the scene draws as on sim:" \
+		test "$live" = "$want"
+	check "rdcd exits cleanly" rdcd_stop
+	"$RDCCTL" replay "$T/trace" >"$T/replay" 2>&1
+	sed 's/^/    replay: /' "$T/replay"
+	check "the trace replays without a mismatch" \
+		grep -q '^mismatches 0$' "$T/replay"
+	check "the replay ends on the frame the client saw last" \
+		grep -q "^crc32 $live\$" "$T/replay"
+fi
 
 # ---- a paced daemon: the rate, reported only --------------------------------
 if rdcd_start; then
