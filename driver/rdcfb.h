@@ -12,11 +12,13 @@
 #ifndef RDCFB_H
 #define RDCFB_H
 
+#include <linux/atomic.h>
 #include <linux/fb.h>
 #include <linux/hrtimer.h>
 #include <linux/mutex.h>
 #include <linux/platform_device.h>
 #include <linux/spinlock.h>
+#include <linux/timekeeping.h>
 #include <linux/wait.h>
 #include <linux/workqueue.h>
 
@@ -43,8 +45,44 @@ struct rdcfb_pin_stats {
 	u64 late_max_ns, late_avg_ns; /* delivery after the edge (paced) */
 };
 
+/*
+ * The longest section the driver ran with interrupts off (sysfs
+ * irqs_off_max_ns, irqs_off_max_at), timed around every hold of an
+ * irqsave spinlock.
+ */
+struct rdcfb_irqoff {
+	atomic64_t max_ns;
+	unsigned long max_at; /* the code that ended that section */
+};
+
+static inline u64 rdcfb_irqoff_begin(void)
+{
+	return ktime_get_mono_fast_ns();
+}
+
+void rdcfb_irqoff_end(struct rdcfb_irqoff *st, u64 t0, unsigned long at);
+
+/* An irqsave spinlock whose holds are timed: t0 is the lock's own field. */
+#define rdcfb_spin_lock(lock, flags, t0)                      \
+	do {                                                  \
+		spin_lock_irqsave(lock, flags);               \
+		(t0) = rdcfb_irqoff_begin();                  \
+	} while (0)
+#define rdcfb_spin_unlock(lock, flags, t0, st)                \
+	do {                                                  \
+		rdcfb_irqoff_end(st, t0, _THIS_IP_);          \
+		spin_unlock_irqrestore(lock, flags);          \
+	} while (0)
+#define rdcfb_lock_irqsave(chip, flags) \
+	rdcfb_spin_lock(&(chip)->lock, flags, (chip)->lock_t0)
+#define rdcfb_unlock_irqrestore(chip, flags)                \
+	rdcfb_spin_unlock(&(chip)->lock, flags, (chip)->lock_t0, \
+			  &(chip)->irqoff)
+
 struct rdcfb_chip {
 	spinlock_t lock;
+	u64 lock_t0; /* lock: when it was taken */
+	struct rdcfb_irqoff irqoff;
 	struct rdc_hw hw; /* lock */
 	struct rdc_dp *dp; /* lock; large, so vmalloc'ed */
 	u8 *vram; /* vmalloc_user: mapped to user space as is */

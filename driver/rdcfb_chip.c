@@ -52,6 +52,20 @@
 #define RDCFB_SNAP_CHUNK (64u << 10)
 #define RDCFB_SNAP_TRIES 4u
 
+/* A section with interrupts off ended at `at`: keep the longest. */
+void rdcfb_irqoff_end(struct rdcfb_irqoff *st, u64 t0, unsigned long at)
+{
+	s64 d = ktime_get_mono_fast_ns() - t0;
+	s64 old = atomic64_read(&st->max_ns);
+
+	while (d > old) {
+		if (atomic64_try_cmpxchg(&st->max_ns, &old, d)) {
+			WRITE_ONCE(st->max_at, at);
+			break;
+		}
+	}
+}
+
 /* The wall time the paced clock maps simulated time t to (lock held). */
 static ktime_t rdcfb_wall_of_locked(struct rdcfb_chip *chip, u64 t)
 {
@@ -155,7 +169,7 @@ static void rdcfb_pace_work(struct work_struct *work)
 	u64 target, lag = rdcfb_ns_to_cycles(chip, RDCFB_PACE_MAX_LAG_NS);
 	ktime_t now = ktime_get();
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	target = chip->sim_base +
 		 rdcfb_ns_to_cycles(chip,
 				    ktime_to_ns(ktime_sub(now, chip->wall_base)));
@@ -177,19 +191,19 @@ static void rdcfb_pace_work(struct work_struct *work)
 			stop = edge;
 		rdc_hw_run_until(hw, stop);
 		rdcfb_irq_check_locked(chip);
-		spin_unlock_irqrestore(&chip->lock, flags);
+		rdcfb_unlock_irqrestore(chip, flags);
 		wake_up_all(&chip->waitq);
 		/* no detour: cancel_work_sync in rdcfb_chip_stop keeps gpio */
 		rdcfb_gpio_deliver_now(chip->gpio);
 		cond_resched();
-		spin_lock_irqsave(&chip->lock, flags);
+		rdcfb_lock_irqsave(chip, flags);
 	}
 	rdcfb_update_period(chip);
 	/* rdcfb_chip_stop sets dying under the lock, then cancels the timer */
 	if (!chip->dying)
 		hrtimer_start(&chip->timer, rdcfb_next_tick_locked(chip),
 			      HRTIMER_MODE_ABS);
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	wake_up_all(&chip->waitq);
 }
 
@@ -250,9 +264,9 @@ void rdcfb_chip_stop(struct rdcfb_chip *chip)
 {
 	unsigned long flags;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	WRITE_ONCE(chip->dying, true);
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	hrtimer_cancel(&chip->timer);
 	cancel_work_sync(&chip->pace_work);
 	wake_up_all(&chip->waitq);
@@ -278,9 +292,9 @@ u32 rdcfb_chip_pins_in(struct rdcfb_chip *chip)
 	unsigned long flags;
 	u32 v;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	v = chip->hw.pins_in;
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	return v;
 }
 
@@ -291,7 +305,7 @@ void rdcfb_chip_set_pin(struct rdcfb_chip *chip, u32 pin, bool high)
 	unsigned long flags;
 	u32 pins;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	pins = high ? hw->pins_in | pin : hw->pins_in & ~pin;
 	if (pins != hw->pins_in) {
 		rdc_hw_set_pins(hw, pins);
@@ -301,7 +315,7 @@ void rdcfb_chip_set_pin(struct rdcfb_chip *chip, u32 pin, bool high)
 		if (!chip->stepped)
 			rdcfb_update_period(chip);
 	}
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	wake_up_all(&chip->waitq);
 }
 
@@ -310,9 +324,9 @@ u32 rdcfb_reg_read(struct rdcfb_chip *chip, u32 reg)
 	unsigned long flags;
 	u32 v;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	v = rdc_hw_read(&chip->hw, reg);
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	return v;
 }
 
@@ -320,14 +334,14 @@ void rdcfb_reg_write(struct rdcfb_chip *chip, u32 reg, u32 val)
 {
 	unsigned long flags;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	rdc_hw_write(&chip->hw, reg, val);
 	/* CONTROL (reset), FIFO_DATA: the DP's state may no longer be ours */
 	chip->fb_state_gen++;
 	rdcfb_irq_check_locked(chip);
 	if (!chip->stepped)
 		rdcfb_update_period(chip);
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 }
 
 /* ---- Waits --------------------------------------------------------------- */
@@ -383,13 +397,13 @@ static int rdcfb_wait_check(struct rdcfb_chip *chip,
  */
 static int rdcfb_chip_pause(struct rdcfb_chip *chip, unsigned long *flags)
 {
-	spin_unlock_irqrestore(&chip->lock, *flags);
+	rdcfb_unlock_irqrestore(chip, *flags);
 	if (fatal_signal_pending(current))
 		return -EINTR;
 	if (READ_ONCE(chip->dying))
 		return -ENODEV;
 	cond_resched();
-	spin_lock_irqsave(&chip->lock, *flags);
+	rdcfb_lock_irqsave(chip, *flags);
 	return 0;
 }
 
@@ -404,7 +418,7 @@ static int rdcfb_wait_stepped(struct rdcfb_chip *chip, struct rdc_hw_wait *w)
 	unsigned long flags;
 	int err;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	rdc_hw_wait_begin(hw, w);
 	for (;;) {
 		res = rdc_hw_wait_run(hw, w, RDCFB_RUN_SLICE);
@@ -415,7 +429,7 @@ static int rdcfb_wait_stepped(struct rdcfb_chip *chip, struct rdc_hw_wait *w)
 		if (err)
 			return err;
 	}
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	wake_up_all(&chip->waitq);
 	switch (res) {
 	case RDC_HW_WAIT_DONE:
@@ -443,14 +457,14 @@ static int rdcfb_wait_paced(struct rdcfb_chip *chip, struct rdc_hw_wait *w,
 	long left;
 	int ret;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	rdc_hw_wait_begin(&chip->hw, w);
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	for (;;) {
-		spin_lock_irqsave(&chip->lock, flags);
+		rdcfb_lock_irqsave(chip, flags);
 		seen = chip->hw.now;
 		ret = rdcfb_wait_check(chip, w);
-		spin_unlock_irqrestore(&chip->lock, flags);
+		rdcfb_unlock_irqrestore(chip, flags);
 		if (ret <= 0)
 			return ret;
 		left = (long)(deadline - jiffies);
@@ -510,9 +524,9 @@ int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles)
 
 	if (!chip->stepped)
 		return -EPERM;
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	if (cycles > U64_MAX - hw->now) {
-		spin_unlock_irqrestore(&chip->lock, flags);
+		rdcfb_unlock_irqrestore(chip, flags);
 		return -ERANGE;
 	}
 	end = hw->now + cycles;
@@ -528,7 +542,7 @@ int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles)
 		if (err)
 			return err;
 	}
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	wake_up_all(&chip->waitq);
 	return 0;
 }
@@ -545,12 +559,12 @@ int rdcfb_chip_vsync(struct rdcfb_chip *chip)
 	unsigned long flags;
 	u64 next;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	next = rdc_port_next_vblank(hw);
 	w.term[0].value = rdc_hw_read(hw, RDC_REG_FRAME_COUNT) + 1;
 	/* the budget reaches just past the next vblank */
 	w.budget = next - hw->now + 1;
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	if (next == RDC_NEVER)
 		return -ETIMEDOUT;
 	return rdcfb_chip_wait(chip, &w);
@@ -573,13 +587,13 @@ int rdcfb_chip_submit(struct rdcfb_chip *chip, const u32 *words, u32 n)
 	int ret = 0;
 
 	while (n) {
-		spin_lock_irqsave(&chip->lock, flags);
+		rdcfb_lock_irqsave(chip, flags);
 		chip->fb_state_gen++;
 		free_words = rdc_hw_read(hw, RDC_REG_FIFO_FREE);
 		for (; free_words && n; free_words--, n--, words++)
 			rdc_hw_write(hw, RDC_REG_FIFO_DATA, *words);
 		chip->submitting = n != 0;
-		spin_unlock_irqrestore(&chip->lock, flags);
+		rdcfb_unlock_irqrestore(chip, flags);
 		if (n) {
 			struct rdcfb_wait w = {
 				.term[0] = { .kind = RDCFB_WAIT_GE,
@@ -595,9 +609,9 @@ int rdcfb_chip_submit(struct rdcfb_chip *chip, const u32 *words, u32 n)
 				break;
 		}
 	}
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	chip->submitting = false;
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	return ret;
 }
 
@@ -662,7 +676,7 @@ void rdcfb_chip_counters(struct rdcfb_chip *chip, struct rdcfb_counters *c)
 	struct rdc_hw *hw = &chip->hw;
 	unsigned long flags;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	c->now = hw->now;
 	c->busy = hw->perf.busy;
 	c->stall = hw->perf.stall;
@@ -673,7 +687,7 @@ void rdcfb_chip_counters(struct rdcfb_chip *chip, struct rdcfb_counters *c)
 	c->fence = hw->fence;
 	c->frames = (u32)chip->frames;
 	c->reserved = 0;
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 }
 
 /* zlib's CRC-32 of the pixels as little-endian bytes. */
@@ -708,17 +722,17 @@ int rdcfb_chip_snapshot(struct rdcfb_chip *chip)
 
 	lockdep_assert_held(&chip->snap_lock);
 	for (tries = 0; tries < RDCFB_SNAP_TRIES; tries++) {
-		spin_lock_irqsave(&chip->lock, flags);
+		rdcfb_lock_irqsave(chip, flags);
 		f = rdc_hw_frame(&chip->hw, &w, &h);
 		seq = chip->frames;
 		if (!f) {
-			spin_unlock_irqrestore(&chip->lock, flags);
+			rdcfb_unlock_irqrestore(chip, flags);
 			chip->snap_seq = 0;
 			return -EAGAIN;
 		}
 		if (seq == chip->snap_seq && w == chip->snap_w &&
 		    h == chip->snap_h) {
-			spin_unlock_irqrestore(&chip->lock, flags);
+			rdcfb_unlock_irqrestore(chip, flags);
 			return 0;
 		}
 		bytes = (size_t)w * h * sizeof(u32);
@@ -728,21 +742,21 @@ int rdcfb_chip_snapshot(struct rdcfb_chip *chip)
 			memcpy((u8 *)chip->snap + off, (const u8 *)f + off, len);
 			if (tries + 1 == RDCFB_SNAP_TRIES)
 				continue;
-			spin_unlock_irqrestore(&chip->lock, flags);
+			rdcfb_unlock_irqrestore(chip, flags);
 			cond_resched();
-			spin_lock_irqsave(&chip->lock, flags);
+			rdcfb_lock_irqsave(chip, flags);
 			if (chip->frames != seq)
 				break;
 		}
 		if (chip->frames == seq) {
-			spin_unlock_irqrestore(&chip->lock, flags);
+			rdcfb_unlock_irqrestore(chip, flags);
 			chip->snap_seq = seq;
 			chip->snap_w = w;
 			chip->snap_h = h;
 			chip->snap_crc = rdcfb_crc(chip->snap, (size_t)w * h);
 			return 0;
 		}
-		spin_unlock_irqrestore(&chip->lock, flags);
+		rdcfb_unlock_irqrestore(chip, flags);
 	}
 	return -EAGAIN;
 }

@@ -231,14 +231,14 @@ static int rdcfb_set_par(struct fb_info *info)
 	val[8] = t.pixclk_khz;
 	val[9] = t.flags;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	rdc_hw_write(&chip->hw, RDC_REG_FB_FORMAT, par->fmt);
 	rdc_hw_write(&chip->hw, RDC_REG_FB_STRIDE, par->stride);
 	rdc_hw_write(&chip->hw, RDC_REG_FB_BASE, rdcfb_base(par, &info->var));
 	for (i = 0; i < ARRAY_SIZE(timing_regs); i++)
 		rdc_hw_write(&chip->hw, timing_regs[i], val[i]);
 	par->state_valid = false;
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	dev_dbg(chip->dev, "mode %ux%u (%ux%u virtual) format %u stride %u\n",
 		t.h_display, t.v_display, info->var.xres_virtual,
 		info->var.yres_virtual, par->fmt, par->stride);
@@ -270,9 +270,9 @@ static int rdcfb_setcolreg(unsigned int regno, unsigned int red,
 	if (regno >= RDC_CLUT_ENTRIES)
 		return -EINVAL;
 	if (info->fix.visual == FB_VISUAL_PSEUDOCOLOR) {
-		spin_lock_irqsave(&par->chip->lock, flags);
+		rdcfb_lock_irqsave(par->chip, flags);
 		rdcfb_clut_write_locked(par->chip, regno, red, green, blue);
-		spin_unlock_irqrestore(&par->chip->lock, flags);
+		rdcfb_unlock_irqrestore(par->chip, flags);
 	} else if (regno < RDCFB_PSEUDO_COLOURS) {
 		par->pseudo_palette[regno] = rdcfb_pack(par->fmt, red, green,
 							blue);
@@ -296,13 +296,13 @@ static int rdcfb_setcmap(struct fb_cmap *cmap, struct fb_info *info)
 					cmap->green[i], cmap->blue[i], 0, info);
 		return 0;
 	}
-	spin_lock_irqsave(&par->chip->lock, flags);
+	rdcfb_lock_irqsave(par->chip, flags);
 	rdc_hw_write(&par->chip->hw, RDC_REG_CLUT_INDEX, cmap->start);
 	for (i = 0; i < cmap->len; i++)
 		rdc_hw_write(&par->chip->hw, RDC_REG_CLUT_DATA,
 			     rdcfb_pack(RDC_FMT_XRGB8888, cmap->red[i],
 					cmap->green[i], cmap->blue[i]));
-	spin_unlock_irqrestore(&par->chip->lock, flags);
+	rdcfb_unlock_irqrestore(par->chip, flags);
 	return 0;
 }
 
@@ -315,9 +315,9 @@ static int rdcfb_pan_display(struct fb_var_screeninfo *var,
 	if (var->xoffset > info->var.xres_virtual - info->var.xres ||
 	    var->yoffset > info->var.yres_virtual - info->var.yres)
 		return -EINVAL;
-	spin_lock_irqsave(&par->chip->lock, flags);
+	rdcfb_lock_irqsave(par->chip, flags);
 	rdc_hw_write(&par->chip->hw, RDC_REG_FB_BASE, rdcfb_base(par, var));
-	spin_unlock_irqrestore(&par->chip->lock, flags);
+	rdcfb_unlock_irqrestore(par->chip, flags);
 	return 0;
 }
 
@@ -328,7 +328,7 @@ static int rdcfb_blank(int blank, struct fb_info *info)
 	unsigned long flags;
 	u32 ctl, pins;
 
-	spin_lock_irqsave(&par->chip->lock, flags);
+	rdcfb_lock_irqsave(par->chip, flags);
 	ctl = rdc_hw_read(hw, RDC_REG_CONTROL) &
 	      ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
 	pins = hw->pins_in;
@@ -341,7 +341,7 @@ static int rdcfb_blank(int blank, struct fb_info *info)
 	}
 	rdc_hw_write(hw, RDC_REG_CONTROL, ctl);
 	rdc_hw_set_pins(hw, pins);
-	spin_unlock_irqrestore(&par->chip->lock, flags);
+	rdcfb_unlock_irqrestore(par->chip, flags);
 	return 0;
 }
 
@@ -478,9 +478,9 @@ void rdcfb_fill(struct fb_info *info, const struct fb_fillrect *r)
 
 	if (!r->width || !r->height)
 		return;
-	spin_lock_irqsave(&par->chip->lock, flags);
+	rdcfb_lock_irqsave(par->chip, flags);
 	if (!rdcfb_begin(info, &s)) {
-		spin_unlock_irqrestore(&par->chip->lock, flags);
+		rdcfb_unlock_irqrestore(par->chip, flags);
 		sys_fillrect(info, r);
 		return;
 	}
@@ -492,7 +492,7 @@ void rdcfb_fill(struct fb_info *info, const struct fb_fillrect *r)
 	rdcfb_put(&s, RDC_XY(r->dx, r->dy));
 	rdcfb_put(&s, RDC_WH(r->width, r->height));
 	rdcfb_end(info, &s);
-	spin_unlock_irqrestore(&par->chip->lock, flags);
+	rdcfb_unlock_irqrestore(par->chip, flags);
 }
 
 void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a)
@@ -503,9 +503,9 @@ void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a)
 
 	if (!a->width || !a->height)
 		return;
-	spin_lock_irqsave(&par->chip->lock, flags);
+	rdcfb_lock_irqsave(par->chip, flags);
 	if (!rdcfb_begin(info, &s)) {
-		spin_unlock_irqrestore(&par->chip->lock, flags);
+		rdcfb_unlock_irqrestore(par->chip, flags);
 		sys_copyarea(info, a);
 		return;
 	}
@@ -516,7 +516,7 @@ void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a)
 	rdcfb_put(&s, RDC_XY(a->dx, a->dy));
 	rdcfb_put(&s, RDC_WH(a->width, a->height));
 	rdcfb_end(info, &s);
-	spin_unlock_irqrestore(&par->chip->lock, flags);
+	rdcfb_unlock_irqrestore(par->chip, flags);
 }
 
 /*
@@ -566,13 +566,13 @@ void rdcfb_blit(struct fb_info *info, const struct fb_image *img)
 
 	if (!img->width || !img->height)
 		return;
-	spin_lock_irqsave(&par->chip->lock, flags);
+	rdcfb_lock_irqsave(par->chip, flags);
 	if ((img->depth != 1 && img->depth != 8) ||
 	    !rdcfb_begin(info, &s)) {
 		/* the CPU draws: after what the DP has queued */
 		if (rdcfb_dp_usable(par->chip))
 			rdcfb_drain_locked(par->chip);
-		spin_unlock_irqrestore(&par->chip->lock, flags);
+		rdcfb_unlock_irqrestore(par->chip, flags);
 		sys_imageblit(info, img);
 		return;
 	}
@@ -586,7 +586,7 @@ void rdcfb_blit(struct fb_info *info, const struct fb_image *img)
 	}
 	rdcfb_image_cmds(info, &s, img);
 	rdcfb_end(info, &s);
-	spin_unlock_irqrestore(&par->chip->lock, flags);
+	rdcfb_unlock_irqrestore(par->chip, flags);
 }
 
 /* Before the CPU touches VRAM (read/write on /dev/fbN): let the DP finish. */
@@ -595,11 +595,11 @@ int rdcfb_sync(struct fb_info *info)
 	struct rdcfb_par *par = info->par;
 	unsigned long flags;
 
-	spin_lock_irqsave(&par->chip->lock, flags);
+	rdcfb_lock_irqsave(par->chip, flags);
 	if ((par->chip->hw.control & RDC_CONTROL_DP_EN) &&
 	    !(par->chip->hw.dp_status & RDC_STATUS_DP_HALTED))
 		rdcfb_drain_locked(par->chip);
-	spin_unlock_irqrestore(&par->chip->lock, flags);
+	rdcfb_unlock_irqrestore(par->chip, flags);
 	return 0;
 }
 

@@ -78,6 +78,7 @@ struct rdcfb_gpio {
 	char label[32];
 
 	spinlock_t ev_lock; /* the queue and the fields marked ev */
+	u64 ev_t0; /* ev: when ev_lock was taken */
 	struct rdcfb_pin_event ev[RDCFB_PIN_QUEUE];
 	u32 head, count; /* ev */
 	u32 live; /* ev: TE/IRQ after the last change queued (or lost) */
@@ -95,6 +96,11 @@ struct rdcfb_gpio {
 	struct work_struct deliver_work;
 };
 
+/* ev_lock, its holds timed with the chip's other interrupts-off sections */
+#define rdcfb_ev_lock(g, flags) rdcfb_spin_lock(&(g)->ev_lock, flags, (g)->ev_t0)
+#define rdcfb_ev_unlock(g, flags) \
+	rdcfb_spin_unlock(&(g)->ev_lock, flags, (g)->ev_t0, &(g)->chip->irqoff)
+
 /* ---- Delivery ------------------------------------------------------------ */
 
 /*
@@ -107,16 +113,16 @@ void rdcfb_gpio_event_locked(struct rdcfb_gpio *g, ktime_t wall, u32 levels)
 	u32 changed;
 
 	levels &= RDCFB_PINS_HOST_IN;
-	spin_lock_irqsave(&g->ev_lock, flags);
+	rdcfb_ev_lock(g, flags);
 	changed = levels ^ g->live;
 	if (!changed) {
-		spin_unlock_irqrestore(&g->ev_lock, flags);
+		rdcfb_ev_unlock(g, flags);
 		return;
 	}
 	g->live = levels;
 	if (g->count == RDCFB_PIN_QUEUE) {
 		g->lost += hweight32(changed);
-		spin_unlock_irqrestore(&g->ev_lock, flags);
+		rdcfb_ev_unlock(g, flags);
 		dev_warn_ratelimited(g->gc.parent,
 				     "pin events queue full: edges lost\n");
 		return;
@@ -124,7 +130,7 @@ void rdcfb_gpio_event_locked(struct rdcfb_gpio *g, ktime_t wall, u32 levels)
 	g->ev[(g->head + g->count) % RDCFB_PIN_QUEUE] =
 		(struct rdcfb_pin_event){ .wall = wall, .levels = levels };
 	g->count++;
-	spin_unlock_irqrestore(&g->ev_lock, flags);
+	rdcfb_ev_unlock(g, flags);
 	queue_work(system_highpri_wq, &g->deliver_work);
 }
 
@@ -145,16 +151,17 @@ static void rdcfb_gpio_edge(struct rdcfb_gpio *g, unsigned int line,
 static void rdcfb_gpio_deliver(struct rdcfb_gpio *g)
 {
 	struct rdcfb_pin_event e;
+	unsigned long flags;
 	unsigned int line;
 	u32 changed;
 	s64 late;
 
 	mutex_lock(&g->deliver_lock);
 	while (!g->gone) {
-		spin_lock_irq(&g->ev_lock);
+		rdcfb_ev_lock(g, flags);
 		if (!g->count) {
 			g->delivering = false;
-			spin_unlock_irq(&g->ev_lock);
+			rdcfb_ev_unlock(g, flags);
 			break;
 		}
 		e = g->ev[g->head];
@@ -171,7 +178,7 @@ static void rdcfb_gpio_deliver(struct rdcfb_gpio *g)
 			g->late_sum_ns += late;
 			g->late_n++;
 		}
-		spin_unlock_irq(&g->ev_lock);
+		rdcfb_ev_unlock(g, flags);
 		for (line = RDCFB_LINE_TE; line <= RDCFB_LINE_IRQ; line++)
 			if (changed & BIT(line))
 				rdcfb_gpio_edge(g, line,
@@ -215,9 +222,9 @@ static int rdcfb_gpio_get(struct gpio_chip *gc, unsigned int off)
 
 	if (!(BIT(off) & RDCFB_PINS_HOST_IN))
 		return !!(rdcfb_chip_pins_in(g->chip) & BIT(off));
-	spin_lock_irqsave(&g->ev_lock, flags);
+	rdcfb_ev_lock(g, flags);
 	v = g->count || g->delivering ? g->shown : g->live;
-	spin_unlock_irqrestore(&g->ev_lock, flags);
+	rdcfb_ev_unlock(g, flags);
 	return !!(v & BIT(off));
 }
 
@@ -380,11 +387,11 @@ int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id)
 		kfree(g);
 		return ret;
 	}
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	g->live = rdc_hw_pins(&chip->hw) & RDCFB_PINS_HOST_IN;
 	g->shown = g->live;
 	chip->gpio = g;
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	return 0;
 }
 
@@ -399,10 +406,10 @@ void rdcfb_gpio_unregister(struct rdcfb_chip *chip)
 	struct rdcfb_gpio *g;
 	unsigned long flags;
 
-	spin_lock_irqsave(&chip->lock, flags);
+	rdcfb_lock_irqsave(chip, flags);
 	g = chip->gpio;
 	chip->gpio = NULL;
-	spin_unlock_irqrestore(&chip->lock, flags);
+	rdcfb_unlock_irqrestore(chip, flags);
 	if (!g)
 		return;
 	mutex_lock(&g->deliver_lock);
@@ -439,12 +446,12 @@ void rdcfb_gpio_stats(struct rdcfb_gpio *g, struct rdcfb_pin_stats *s)
 	memset(s, 0, sizeof(*s));
 	if (!g)
 		return;
-	spin_lock_irqsave(&g->ev_lock, flags);
+	rdcfb_ev_lock(g, flags);
 	s->edges = g->edges;
 	s->lost = g->lost;
 	s->late_max_ns = g->late_max_ns;
 	s->late_avg_ns = g->late_n ? div64_u64(g->late_sum_ns, g->late_n) : 0;
-	spin_unlock_irqrestore(&g->ev_lock, flags);
+	rdcfb_ev_unlock(g, flags);
 }
 
 #endif /* CONFIG_GPIOLIB_IRQCHIP */

@@ -100,6 +100,38 @@ static ssize_t frame_crc_show(struct device *dev, struct device_attribute *attr,
 }
 static DEVICE_ATTR_RO(frame_crc);
 
+/* The longest interrupts-off section so far; writing anything resets it. */
+static ssize_t irqs_off_max_ns_show(struct device *dev,
+				    struct device_attribute *attr, char *buf)
+{
+	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
+
+	return sysfs_emit(buf, "%lld\n",
+			  (long long)atomic64_read(&chip->irqoff.max_ns));
+}
+
+static ssize_t irqs_off_max_ns_store(struct device *dev,
+				     struct device_attribute *attr,
+				     const char *buf, size_t count)
+{
+	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
+
+	atomic64_set(&chip->irqoff.max_ns, 0);
+	WRITE_ONCE(chip->irqoff.max_at, 0);
+	return count;
+}
+static DEVICE_ATTR_RW(irqs_off_max_ns);
+
+static ssize_t irqs_off_max_at_show(struct device *dev,
+				    struct device_attribute *attr, char *buf)
+{
+	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
+
+	return sysfs_emit(buf, "%pS\n",
+			  (void *)READ_ONCE(chip->irqoff.max_at));
+}
+static DEVICE_ATTR_RO(irqs_off_max_at);
+
 static struct attribute *rdcfb_attrs[] = {
 	&dev_attr_busy_cycles.attr,
 	&dev_attr_stall_cycles.attr,
@@ -112,6 +144,8 @@ static struct attribute *rdcfb_attrs[] = {
 	&dev_attr_pin_lost.attr,
 	&dev_attr_pin_late_max_ns.attr,
 	&dev_attr_pin_late_avg_ns.attr,
+	&dev_attr_irqs_off_max_ns.attr,
+	&dev_attr_irqs_off_max_at.attr,
 	NULL,
 };
 ATTRIBUTE_GROUPS(rdcfb);

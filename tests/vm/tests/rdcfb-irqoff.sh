@@ -1,0 +1,97 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only
+# How long rdcfb.ko keeps interrupts off, under load: fbcon scrolling text
+# (tty writes and kernel messages, which the console draws with
+# interrupts off), golden scenes drawn through fbdev: on the paced clock,
+# and frame snapshots through sysfs (frame_crc) and the FRAME ioctl, all
+# at once.  The checks are that every part of the load ran and dmesg
+# stayed clean; the longest interrupts-off section the driver measured
+# (sysfs irqs_off_max_ns, irqs_off_max_at) is printed as a TAP comment,
+# not judged: timing is no pass/fail matter.
+# vm-module: rdcfb mode=1024x768-32
+. "$RDC_TREE/tests/vm/lib.sh"
+
+TOOL=$B/rdcfb_tool
+SYS=/sys/bus/platform/devices/rdcfb.0
+TTY=/dev/tty1
+FB=/dev/fb0
+
+fbcon_bound() {
+	v=$(fbcon_vt) && [ "$(cat "$v/bind")" = 1 ] && grep -q "^0 rdcfb" /proc/fb
+}
+
+# 300 lines written to the console: every one scrolls it
+scroll_tty() {
+	i=0
+	while [ $i -lt 300 ]; do
+		echo "tty line $i: the quick brown fox jumps over the lazy dog"
+		i=$((i + 1))
+	done >"$TTY"
+}
+
+# 100 kernel messages at a level the console prints (printk draws them
+# with interrupts off)
+scroll_kmsg() {
+	i=0
+	while [ $i -lt 100 ]; do
+		echo "<3>console load $i: the quick brown fox" >/dev/kmsg ||
+			return 1
+		i=$((i + 1))
+	done
+}
+
+# every golden scene through fbdev: on the paced clock
+scenes() {
+	for s in "$RDC_TREE"/tests/golden/scenes/*.rdl; do
+		"$RDCCTL" --connect "fbdev:$FB" run "$s" -o "$T/scene.png" \
+			>"$T/scene.out" 2>&1 ||
+			{ echo "$(basename "$s"):"; cat "$T/scene.out"; return 1; }
+	done
+}
+
+# frames through sysfs and the FRAME ioctl, alternately
+snapshots() {
+	i=0
+	while [ $i -lt 60 ]; do
+		cat "$SYS/frame_crc" >/dev/null || return 1
+		"$TOOL" frame $FB "$T/frame.raw" >/dev/null || return 1
+		i=$((i + 1))
+	done
+}
+
+check "fbcon is bound to /dev/fb0 (rdcfb)" fbcon_bound
+check "irqs_off_max_ns resets" sh -c "echo 0 >$SYS/irqs_off_max_ns"
+dmesg -C
+cd "$T" || exit 1
+scroll_tty >"$T/tty.log" 2>&1 &
+p_tty=$!
+scroll_kmsg >"$T/kmsg.log" 2>&1 &
+p_kmsg=$!
+scenes >"$T/scenes.log" 2>&1 &
+p_scenes=$!
+snapshots >"$T/snap.log" 2>&1 &
+p_snap=$!
+wait $p_tty
+r_tty=$?
+wait $p_kmsg
+r_kmsg=$?
+wait $p_scenes
+r_scenes=$?
+wait $p_snap
+r_snap=$?
+check "300 lines scrolled through the console" sh -c \
+	"cat $T/tty.log; exit $r_tty"
+check "100 kernel messages printed on the console" sh -c \
+	"cat $T/kmsg.log; exit $r_kmsg"
+check "every golden scene drawn through fbdev: (paced)" sh -c \
+	"cat $T/scenes.log; exit $r_scenes"
+check "60 frames through sysfs and 60 through FRAME" sh -c \
+	"cat $T/snap.log; exit $r_snap"
+check "the longest interrupts-off section is readable" sh -c \
+	"grep -E '^[0-9]+$' $SYS/irqs_off_max_ns"
+echo "# irqs off: longest $(cat $SYS/irqs_off_max_ns) ns, ended at $(cat $SYS/irqs_off_max_at)"
+dmesg >"$T/dmesg.log"
+check "no oops, BUG or WARN in dmesg" \
+	sh -c "! grep -E 'WARNING|BUG|Oops|general protection|Call Trace|UBSAN' '$T/dmesg.log'"
+fbcon_unbind
+finish
