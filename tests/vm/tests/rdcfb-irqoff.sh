@@ -1,20 +1,22 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
 # How long rdcfb.ko keeps interrupts off, under load: fbcon scrolling text
-# (tty writes and kernel messages, which the console draws with
-# interrupts off), golden scenes drawn through fbdev: on the paced clock,
-# and frame snapshots through sysfs (frame_crc) and the FRAME ioctl, all
-# at once.  The checks are that every part of the load ran and dmesg
+# on fb0 (tty writes and kernel messages, which the console draws with
+# interrupts off), golden scenes drawn through fbdev: on the paced clock
+# on fb1 (a client's commands and fbcon's would interleave on one
+# device: docs/driver.md), and frame snapshots of both through sysfs
+# (frame_crc) and the FRAME ioctl, all at once.  The checks are that every part of the load ran and dmesg
 # stayed clean; the longest interrupts-off section the driver measured
 # (sysfs irqs_off_max_ns, irqs_off_max_at) is printed as a TAP comment,
 # not judged: timing is no pass/fail matter.
-# vm-module: rdcfb mode=1024x768-32
+# vm-module: rdcfb mode=1024x768-32 devices=2
 . "$RDC_TREE/tests/vm/lib.sh"
 
 TOOL=$B/rdcfb_tool
 SYS=/sys/bus/platform/devices/rdcfb.0
+SYS1=/sys/bus/platform/devices/rdcfb.1
 TTY=/dev/tty1
-FB=/dev/fb0
+FB=/dev/fb1
 
 fbcon_bound() {
 	v=$(fbcon_vt) && [ "$(cat "$v/bind")" = 1 ] && grep -q "^0 rdcfb" /proc/fb
@@ -53,14 +55,17 @@ scenes() {
 snapshots() {
 	i=0
 	while [ $i -lt 60 ]; do
-		cat "$SYS/frame_crc" >/dev/null || return 1
+		cat "$SYS/frame_crc" "$SYS1/frame_crc" >/dev/null || return 1
+		"$TOOL" frame /dev/fb0 "$T/frame.raw" >/dev/null || return 1
 		"$TOOL" frame $FB "$T/frame.raw" >/dev/null || return 1
 		i=$((i + 1))
 	done
 }
 
 check "fbcon is bound to /dev/fb0 (rdcfb)" fbcon_bound
-check "irqs_off_max_ns resets" sh -c "echo 0 >$SYS/irqs_off_max_ns"
+check "fb1 is rdcfb's second device" sh -c "grep '^1 rdcfb' /proc/fb"
+check "irqs_off_max_ns resets" sh -c \
+	"echo 0 >$SYS/irqs_off_max_ns && echo 0 >$SYS1/irqs_off_max_ns"
 dmesg -C
 cd "$T" || exit 1
 scroll_tty >"$T/tty.log" 2>&1 &
@@ -83,13 +88,16 @@ check "300 lines scrolled through the console" sh -c \
 	"cat $T/tty.log; exit $r_tty"
 check "100 kernel messages printed on the console" sh -c \
 	"cat $T/kmsg.log; exit $r_kmsg"
-check "every golden scene drawn through fbdev: (paced)" sh -c \
+check "every golden scene drawn through fbdev: on fb1 (paced)" sh -c \
 	"cat $T/scenes.log; exit $r_scenes"
-check "60 frames through sysfs and 60 through FRAME" sh -c \
+check "60 frames of each device through sysfs and FRAME" sh -c \
 	"cat $T/snap.log; exit $r_snap"
-check "the longest interrupts-off section is readable" sh -c \
-	"grep -E '^[0-9]+$' $SYS/irqs_off_max_ns"
-echo "# irqs off: longest $(cat $SYS/irqs_off_max_ns) ns, ended at $(cat $SYS/irqs_off_max_at)"
+check "the longest interrupts-off sections are readable" sh -c \
+	"grep -E '^[0-9]+$' $SYS/irqs_off_max_ns $SYS1/irqs_off_max_ns"
+for d in "$SYS" "$SYS1"; do
+	echo "# irqs off, ${d##*/}: longest $(cat "$d/irqs_off_max_ns") ns," \
+		"ended at $(cat "$d/irqs_off_max_at")"
+done
 dmesg >"$T/dmesg.log"
 check "no oops, BUG or WARN in dmesg" \
 	sh -c "! grep -E 'WARNING|BUG|Oops|general protection|Call Trace|UBSAN' '$T/dmesg.log'"
