@@ -67,6 +67,8 @@ LIB_SRCS := $(sort $(wildcard userspace/lib/*.c userspace/sink/*.c))
 CTL_SRCS := $(sort $(wildcard userspace/rdcctl/*.c))
 RDCD_SRCS := $(sort $(wildcard userspace/rdcd/*.c))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
+# Shared test code, the plain reference rasterisers (tests/unit/ref*.c)
+# among it: linked into the unit tests only, never into librdc or rdcfb.ko.
 TEST_HELPERS := $(sort $(filter-out $(TEST_SRCS),$(wildcard tests/unit/*.c)))
 
 REL_OBJS := $(patsubst %.c,$(O)/rel/%.o,$(CORE_SRCS) $(LIB_SRCS))

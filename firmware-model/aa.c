@@ -2,7 +2,7 @@
 /*
  * Anti-aliased lines (Wu), circles and ellipses.
  *
- * Each pixel gets an 8-bit coverage (ref_aa.h defines it) and is mixed
+ * Each pixel gets an 8-bit coverage (docs/commands.md defines it) and is mixed
  * with what VRAM already holds: in RGB formats FG is blended over the
  * destination with weight coverage / 255 per channel; in indexed formats
  * the pixel takes the CLUT index FG + k from a ramp of SET_AA_RAMP
@@ -12,10 +12,67 @@
  *
  * Pixels are produced in runs along a row (one RDC_BUS_RMW span each) or a
  * column (one rdc_port_column each), trimmed of uncovered ends, so the bus
- * charges whole bursts; ref_aa.c holds the per-pixel reference versions.
+ * charges whole bursts.  The tests hold per-pixel reference versions
+ * (tests/unit/ref_aa.c).
  */
 #include "dp_int.h"
-#include "ref_aa.h"
+
+#define RDC_AA_FULL 255u /* coverage of a pixel the shape covers fully */
+/* Gradient components are shrunk below this so their squares add up. */
+#define COV_GRAD_BITS 31
+/* Distances are in 1/COV_ONE pixel. */
+#define COV_ONE 256u
+
+/*
+ * Coverage of the pixel at offset (x, y) >= 0 from the centre of the
+ * ellipse with radii rx, ry >= 1 (docs/commands.md): a tent of the
+ * pixel's distance d to the curve, 255 * (1 - d) rounded (0 from d = 1
+ * on), with d the first-order (Sampson) distance |F| / |grad F| of
+ * F = x^2 ry^2 + y^2 rx^2 - rx^2 ry^2, exact for circles, in 1/256 pixel.
+ * Pixels outside |x| <= rx + 1, |y| <= ry + 1 have no coverage.  The
+ * gradient is scaled, up or down, to 31 bits a component before its
+ * length is taken, so |grad F| has 30 good bits however small the radii.
+ */
+static uint32_t aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x,
+			       uint32_t y)
+{
+	int64_t rx2 = (int64_t)rx * rx, ry2 = (int64_t)ry * ry, f;
+	uint64_t gx, gy, num, den, d;
+	unsigned int down = 0, up = 0;
+
+	if (!rx || !ry || x > rx + 1 || y > ry + 1)
+		return 0;
+	/* |terms| < 2^57 for radii up to RDC_SIZE_MAX + 1 */
+	f = (int64_t)x * x * ry2 + (int64_t)y * y * rx2 - rx2 * ry2;
+	/* grad F / 2 = (x ry^2, y rx^2) */
+	gx = (uint64_t)x * (uint64_t)ry2;
+	gy = (uint64_t)y * (uint64_t)rx2;
+	if (!(gx | gy))
+		return 0;
+	while ((gx | gy) >> COV_GRAD_BITS) {
+		gx >>= 1;
+		gy >>= 1;
+		down++;
+	}
+	while (!((gx | gy) >> (COV_GRAD_BITS - 1))) {
+		gx <<= 1;
+		gy <<= 1;
+		up++;
+	}
+	/* d = |F| / (2 |grad F / 2|) = num / (2 den) pixels */
+	num = (uint64_t)(f < 0 ? -f : f);
+	/* scaled up, |grad F / 2| was below 2^31: d >= 1 for |F| >= 2^32 */
+	if (up && num >> 32)
+		return 0;
+	num <<= up;
+	den = dp_isqrt(gx * gx + gy * gy) << down;
+	/* from 1 pixel on, no coverage */
+	if (num >= 2 * den)
+		return 0;
+	d = num * (COV_ONE / 2) / den;
+	return (uint32_t)(((COV_ONE - d) * RDC_AA_FULL + COV_ONE / 2) /
+			  COV_ONE);
+}
 
 uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst, uint32_t a)
 {
@@ -248,9 +305,9 @@ static void aa_col(struct rdc_dp *dp, const struct rdc_rect *c, int32_t x,
 }
 
 /*
- * Wu line, as ref_aa.h defines it.  Steps sharing the minor offset j form
- * two parallel runs (offsets j and j + 1) written when j changes, or when
- * RDC_DP_CHUNK steps have gathered.  The remainder i m mod n is carried
+ * Wu line, as docs/commands.md defines it.  Steps sharing the minor offset
+ * j form two parallel runs (offsets j and j + 1) written when j changes, or
+ * when RDC_DP_CHUNK steps have gathered.  The remainder i m mod n is carried
  * from step to step, so no error accumulates, and the major-axis clip
  * starts the loop at the first visible step with the exact remainder.
  */
@@ -338,7 +395,7 @@ static void aa_ell_span(struct rdc_dp *dp, const struct rdc_rect *c, int32_t y,
 		for (i = 0; i < n; i++) {
 			int64_t dx = xa + i - cx;
 
-			cov[i] = (uint8_t)rdc_aa_ellipse_cov(
+			cov[i] = (uint8_t)aa_ellipse_cov(
 				rx, ry, (uint32_t)(dx < 0 ? -dx : dx), t);
 		}
 		aa_span(dp, c, y, (int32_t)xa, n, cov);
@@ -377,20 +434,20 @@ static void aa_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 		    (rows[1] < c.y0 || rows[1] >= c.y1))
 			continue;
 		if (t <= ry)
-			xs = (uint32_t)rdc_aa_isqrt(
+			xs = (uint32_t)dp_isqrt(
 				(uint64_t)rx2 *
 				(uint64_t)(ry2 - (int64_t)t * t) /
 				(uint64_t)ry2);
 		xs = RDC_MIN(xs, rx + 1);
-		if (rdc_aa_ellipse_cov(rx, ry, xs, t)) {
+		if (aa_ellipse_cov(rx, ry, xs, t)) {
 			xl = xs;
-			while (xl > 0 && rdc_aa_ellipse_cov(rx, ry, xl - 1, t))
+			while (xl > 0 && aa_ellipse_cov(rx, ry, xl - 1, t))
 				xl--;
 		} else {
 			xl = xs + 1;
 		}
 		xr = xs;
-		while (xr <= rx && rdc_aa_ellipse_cov(rx, ry, xr + 1, t))
+		while (xr <= rx && aa_ellipse_cov(rx, ry, xr + 1, t))
 			xr++;
 		if (xl > xr)
 			continue;

@@ -176,65 +176,6 @@ static void arc_row(const struct arc_ctx *ac, uint32_t t, uint32_t amin,
 	}
 }
 
-struct arc_acc {
-	const struct arc_ctx *ac;
-	bool fill, open;
-	uint32_t t, amin, amax;
-};
-
-static void arc_pt(struct arc_acc *q, uint32_t a, uint32_t b)
-{
-	if (q->open && q->t == b) {
-		q->amax = a;
-		return;
-	}
-	if (q->open)
-		arc_row(q->ac, q->t, q->amin, q->amax, q->fill);
-	q->open = true;
-	q->t = b;
-	q->amin = a;
-	q->amax = a;
-}
-
-/* The midpoint ellipse of raster.c, feeding arc_row. */
-static void arc_ellipse(const struct arc_ctx *ac, uint32_t rx, uint32_t ry,
-			bool fill)
-{
-	int64_t rx2 = (int64_t)rx * rx, ry2 = (int64_t)ry * ry;
-	int64_t x = 0, y = ry, px = 0, py = 2 * rx2 * ry, p;
-	struct arc_acc q = { ac, fill, false, 0, 0, 0 };
-
-	arc_pt(&q, 0, ry);
-	p = 4 * ry2 - 4 * rx2 * ry + rx2;
-	while (px < py) {
-		x++;
-		px += 2 * ry2;
-		if (p < 0) {
-			p += 4 * (ry2 + px);
-		} else {
-			y--;
-			py -= 2 * rx2;
-			p += 4 * (ry2 + px - py);
-		}
-		arc_pt(&q, (uint32_t)x, (uint32_t)y);
-	}
-	p = ry2 * (2 * x + 1) * (2 * x + 1) + 4 * rx2 * (y - 1) * (y - 1) -
-	    4 * rx2 * ry2;
-	while (y > 0) {
-		y--;
-		py -= 2 * rx2;
-		if (p > 0) {
-			p += 4 * (rx2 - py);
-		} else {
-			x++;
-			px += 2 * ry2;
-			p += 4 * (rx2 - py + px);
-		}
-		arc_pt(&q, (uint32_t)x, (uint32_t)y);
-	}
-	arc_row(ac, q.t, q.amin, q.amax, fill);
-}
-
 void dp_arc(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 	    uint32_t ry, uint32_t start, uint32_t end, uint32_t mode)
 {
@@ -248,6 +189,8 @@ void dp_arc(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 		.cx = cx,
 		.cy = cy,
 	};
+	struct dp_ellipse e;
+	uint32_t t, amin, amax;
 
 	if (!rx || !ry || c.x0 >= c.x1 || c.y0 >= c.y1)
 		return;
@@ -261,7 +204,9 @@ void dp_arc(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 	ac.ey = (int64_t)ry * dp_sin(end) / (1 << ARC_VEC_SHIFT);
 	ac.narrow = sweep < ARC_HALF &&
 		    arc_cross(ac.sx, ac.sy, ac.ex, ac.ey) <= 0;
-	arc_ellipse(&ac, rx, ry, mode != RDC_ARC_OUTLINE);
+	dp_ellipse_begin(&e, rx, ry);
+	while (dp_ellipse_row(&e, &t, &amin, &amax))
+		arc_row(&ac, t, amin, amax, mode != RDC_ARC_OUTLINE);
 }
 
 uint32_t dp_cmd_arc(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)

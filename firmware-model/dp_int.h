@@ -203,6 +203,21 @@ void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
 			unsigned int n);
 void dp_pen_flush(struct rdc_dp *dp);
 
+/*
+ * The midpoint ellipse (raster.c), shared by ELLIPSE, FILL_ELLIPSE and ARC:
+ * after dp_ellipse_begin (rx, ry >= 1) each dp_ellipse_row gives the next
+ * row offset t (ry down to 0) and the outline's pixels amin..amax right of
+ * the centre on it (the fill's row is -amax..amax), false after row 0.
+ */
+struct dp_ellipse {
+	int64_t rx2, ry2, e1, e2; /* radii squared; the two tests, scaled */
+	int64_t b, w1, w2, prev; /* row; widest a of each test; last row's */
+};
+
+void dp_ellipse_begin(struct dp_ellipse *e, uint32_t rx, uint32_t ry);
+bool dp_ellipse_row(struct dp_ellipse *e, uint32_t *t, uint32_t *amin,
+		    uint32_t *amax);
+
 /* ARC (arc.c): sine and cosine of a 1/65536-turn angle in 16.16. */
 int32_t dp_sin(uint32_t a);
 int32_t dp_cos(uint32_t a);

@@ -3,8 +3,9 @@
  * The display processor's rasterisers.  Every primitive is decomposed into
  * horizontal spans (one rdc_port_span call each) or vertical runs (one
  * rdc_port_column call each), so the bus model charges whole bursts and
- * the cost of a command follows from the work it does.  ref.c holds the
- * plain per-pixel versions these are tested against.
+ * the cost of a command follows from the work it does.  The tests hold
+ * the plain per-pixel versions these are checked against
+ * (tests/unit/ref*.c).
  */
 #include "dp_int.h"
 #include "../hw-sim/bus.h"
@@ -996,42 +997,73 @@ void rdc_dp_circle(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t r,
 	rdc_dp_queue_end(dp);
 }
 
-struct quad_acc {
-	struct rdc_dp *dp;
-	const struct rdc_rect *c;
-	int32_t cx, cy;
-	bool fill, open;
-	uint32_t t, amin, amax;
-};
-
-/* Collect consecutive quadrant points into rows (b never increases). */
-static void quad_pt(struct quad_acc *q, uint32_t a, uint32_t b)
+/*
+ * The rows of an ellipse's quadrant, as docs/commands.md defines them:
+ * pixel (a, b) >= 0 is in the fill when the point half a pixel from it
+ * towards the centre, along y or along x, is inside or on the ellipse,
+ *   4 ry^2 a^2 + rx^2 (2b - 1)^2 <= 4 rx^2 ry^2   (region 1, flat part)
+ *   ry^2 (2a - 1)^2 + 4 rx^2 b^2 <= 4 rx^2 ry^2   (region 2, steep part),
+ * so row b of the fill is |a| <= W(b) = max(w1, w2), the widest a each
+ * test passes, and row b of the outline is W(b + 1) + 1 .. W(b) (at least
+ * W(b)).  Both tests are midpoint decisions scaled by 4, stepped along a
+ * as b falls from ry to 0 (each w only grows), so the work is rx + ry
+ * steps; |terms| < 2^60 for radii up to RDC_SIZE_MAX.  Whichever region
+ * reaches further wins on every row, so no switch point can cut one off.
+ */
+void dp_ellipse_begin(struct dp_ellipse *e, uint32_t rx, uint32_t ry)
 {
-	if (q->open && q->t == b) {
-		q->amax = a;
-		return;
+	int64_t rx2 = (int64_t)rx * rx, ry2 = (int64_t)ry * ry;
+	int64_t r4 = 4 * rx2 * ry2, b = ry;
+
+	e->rx2 = rx2;
+	e->ry2 = ry2;
+	e->b = b;
+	e->w1 = 0; /* a = 0 passes region 1's test on every row b <= ry */
+	e->w2 = -1;
+	e->prev = -1;
+	/* the tests for the next candidates a = w1 + 1 and a = w2 + 1 = 0 */
+	e->e1 = 4 * ry2 + rx2 * (2 * b - 1) * (2 * b - 1) - r4;
+	e->e2 = ry2 + 4 * rx2 * b * b - r4;
+}
+
+bool dp_ellipse_row(struct dp_ellipse *e, uint32_t *t, uint32_t *amin,
+		    uint32_t *amax)
+{
+	int64_t w;
+
+	if (e->b < 0)
+		return false;
+	while (e->e1 <= 0) {
+		e->w1++;
+		e->e1 += 4 * e->ry2 * (2 * e->w1 + 1);
 	}
-	if (q->open)
-		quad_row(q->dp, q->c, q->cx, q->cy, q->t, q->amin, q->amax,
-			 q->fill);
-	q->open = true;
-	q->t = b;
-	q->amin = a;
-	q->amax = a;
+	while (e->e2 <= 0) {
+		e->w2++;
+		/* to a + 1 from a = w2: (2a + 1)^2 - (2a - 1)^2 = 8a */
+		e->e2 += 8 * e->ry2 * e->w2;
+	}
+	w = RDC_MAX(e->w1, e->w2);
+	*t = (uint32_t)e->b;
+	*amax = (uint32_t)w;
+	*amin = (uint32_t)RDC_MIN(e->prev + 1, w);
+	e->prev = w;
+	/* to row b - 1: (2b - 3)^2 - (2b - 1)^2 = -8 (b - 1), and so on */
+	e->e1 -= 8 * e->rx2 * (e->b - 1);
+	e->e2 -= 4 * e->rx2 * (2 * e->b - 1);
+	e->b--;
+	return true;
 }
 
 /*
- * Midpoint ellipse (two regions), with the decision variables scaled by 4
- * so they stay exact integers; 64 bits hold them for radii up to
- * RDC_SIZE_MAX.  A zero radius degenerates to a line.
+ * ELLIPSE and FILL_ELLIPSE: the rows of dp_ellipse_row, mirrored.  A zero
+ * radius degenerates to a line.
  */
 void rdc_dp_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 		    uint32_t ry, bool fill)
 {
 	struct rdc_rect c = rdc_dp_eff_clip(dp);
-	int64_t rx2 = (int64_t)rx * rx, ry2 = (int64_t)ry * ry;
-	int64_t x = 0, y = ry, px = 0, py = 2 * rx2 * ry, p;
-	struct quad_acc q = { dp, &c, cx, cy, fill, false, 0, 0, 0 };
+	struct dp_ellipse e;
+	uint32_t t, amin, amax;
 
 	if (c.x0 >= c.x1 || c.y0 >= c.y1)
 		return;
@@ -1044,15 +1076,15 @@ void rdc_dp_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 		return;
 	}
 	if (rx == 0) {
-		int32_t t;
+		int32_t y;
 
 		/* a patterned fill needs its pixels row by row */
 		if (!fill || dp->st.pat_mode == RDC_PAT_NONE)
 			col_fill(dp, &c, cx, cy - (int32_t)ry,
 				 cy + (int32_t)ry, dp->st.fg);
 		else
-			for (t = -(int32_t)ry; t <= (int32_t)ry; t++)
-				dp_fill_span(dp, cx, cx, cy + t);
+			for (y = -(int32_t)ry; y <= (int32_t)ry; y++)
+				dp_fill_span(dp, cx, cx, cy + y);
 		return;
 	}
 	if (cx + (int32_t)rx < c.x0 || cx - (int32_t)rx >= c.x1 ||
@@ -1060,35 +1092,9 @@ void rdc_dp_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 		return;
 
 	rdc_dp_queue_begin(dp);
-	quad_pt(&q, 0, ry);
-	p = 4 * ry2 - 4 * rx2 * ry + rx2;
-	while (px < py) {
-		x++;
-		px += 2 * ry2;
-		if (p < 0) {
-			p += 4 * (ry2 + px);
-		} else {
-			y--;
-			py -= 2 * rx2;
-			p += 4 * (ry2 + px - py);
-		}
-		quad_pt(&q, (uint32_t)x, (uint32_t)y);
-	}
-	p = ry2 * (2 * x + 1) * (2 * x + 1) + 4 * rx2 * (y - 1) * (y - 1) -
-	    4 * rx2 * ry2;
-	while (y > 0) {
-		y--;
-		py -= 2 * rx2;
-		if (p > 0) {
-			p += 4 * (rx2 - py);
-		} else {
-			x++;
-			px += 2 * ry2;
-			p += 4 * (rx2 - py + px);
-		}
-		quad_pt(&q, (uint32_t)x, (uint32_t)y);
-	}
-	quad_row(dp, &c, cx, cy, q.t, q.amin, q.amax, fill);
+	dp_ellipse_begin(&e, rx, ry);
+	while (dp_ellipse_row(&e, &t, &amin, &amax))
+		quad_row(dp, &c, cx, cy, t, amin, amax, fill);
 	rdc_dp_queue_end(dp);
 }
 

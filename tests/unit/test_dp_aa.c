@@ -2,8 +2,9 @@
 /*
  * Anti-aliased lines, circles and ellipses: the display processor against
  * the per-pixel references of ref_aa.c through an independent pixel and
- * blend model, in every format, ROP and clip; the intensity and symmetry
- * properties; the bus cost of AA runs; bad arguments.
+ * blend model, in every format, ROP and clip; circles' and ellipses'
+ * coverage against the exact value of the definition; the intensity and
+ * symmetry properties; the bus cost of AA runs; bad arguments.
  */
 #include "test_dp_common.h"
 #include "ref_aa.h"
@@ -72,6 +73,7 @@ static void aa_model_plot(void *ctx, int32_t x, int32_t y, uint32_t cov)
 		return;
 	if (m->seen[(size_t)y * m->s.width + x]++)
 		m->dup++;
+
 	d = tdp_get(m->vram, &m->s, x, y);
 	if (m->s.format <= RDC_FMT_I8) {
 		/* ramp: fg at full coverage, fg + ramp - 1 at the faintest */
@@ -84,6 +86,83 @@ static void aa_model_plot(void *ctx, int32_t x, int32_t y, uint32_t cov)
 	}
 	tdp_put(m->vram, &m->s, x, y, tdp_rop(m->rop, v, d));
 	m->plots++;
+}
+
+/* ---- coverage of circles and ellipses ---------------------------------- */
+
+/* docs/commands.md: AA_ELLIPSE's coverage within 1 of the exact value */
+#define AA_COV_TOL 1
+/* where the DP's own coverage is captured: XRGB8888, well past the scenes */
+#define AA_CAP_BASE (2u << 20)
+
+/*
+ * Draw AA_ELLIPSE (rx, ry >= 1) at (cx, cy) on a zeroed XRGB8888 surface
+ * w x h at AA_CAP_BASE, FG white, COPY, no clip: each channel is then the
+ * coverage itself, (255 c + 0 (255 - c) + 127) / 255 = c.  Returns the
+ * largest difference from the exact coverage over the surface; cov (w x h)
+ * gets the DP's coverages.  The caller restores the DP state it needs.
+ */
+static uint32_t aa_capture(struct tdp *t, int32_t cx, int32_t cy, uint32_t rx,
+			   uint32_t ry, uint32_t w, uint32_t h, uint8_t *cov)
+{
+	struct rdc_surface s = {AA_CAP_BASE, 4 * w, w, h, RDC_FMT_XRGB8888};
+	uint32_t worst = 0;
+	int32_t x, y;
+
+	memset(t->vram + s.base, 0, (size_t)s.stride * h);
+	tdp_set_surface(t, RDC_OP_SET_DST, &s);
+	TDP_CMD(t, RDC_OP_SET_CLIP, RDC_XY(RDC_COORD_MIN, RDC_COORD_MIN),
+		RDC_XY(RDC_COORD_MAX, RDC_COORD_MAX));
+	TDP_CMD(t, RDC_OP_SET_FG, 0xffffffffu);
+	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_COPY);
+	TDP_CMD(t, RDC_OP_AA_ELLIPSE, RDC_XY(cx, cy), RDC_WH(rx, ry));
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	for (y = 0; y < (int32_t)h; y++)
+		for (x = 0; x < (int32_t)w; x++) {
+			uint32_t v = tdp_get(t->vram, &s, x, y), c = v & 0xff;
+			int64_t dx = x - cx, dy = y - cy;
+			uint32_t want = rdc_ref_aa_ellipse_cov(
+				rx, ry, (uint32_t)(dx < 0 ? -dx : dx),
+				(uint32_t)(dy < 0 ? -dy : dy));
+			uint32_t diff = c > want ? c - want : want - c;
+
+			/* the four channels agree */
+			assert_int_equal(v, c * 0x01010101u);
+			worst = RDC_MAX(worst, diff);
+			if (cov)
+				cov[(size_t)y * w + x] = (uint8_t)c;
+		}
+	return worst;
+}
+
+/*
+ * Every rx, ry in 1..40, and flat and tall ones up to 400 x 6: the DP's
+ * coverage against the exact one of the definition, pixel by pixel over
+ * the whole bounding box (and one pixel round it).
+ */
+static void test_aa_ellipse_exact(void **state)
+{
+	static const uint32_t flat[] = {8, 9, 31, 32, 33, 72, 100, 128, 200,
+					288, 314, 400};
+	struct tdp *t = *state;
+	uint32_t rx, ry, i, worst = 0;
+
+	for (rx = 1; rx <= 40; rx++)
+		for (ry = 1; ry <= 40; ry++)
+			worst = RDC_MAX(worst, aa_capture(t, 42, 42, rx, ry,
+							  85, 85, NULL));
+	for (i = 0; i < RDC_ARRAY_SIZE(flat); i++)
+		for (ry = 1; ry <= 6; ry++) {
+			rx = flat[i];
+			worst = RDC_MAX(worst, aa_capture(t, 402, 8, rx, ry,
+							  805, 17, NULL));
+			worst = RDC_MAX(worst, aa_capture(t, 8, 402, ry, rx,
+							  17, 805, NULL));
+		}
+	print_message("AA ellipse coverage: largest difference from exact %u\n",
+		      worst);
+	assert_true(worst <= AA_COV_TOL);
 }
 
 /* ---- random scenes vs reference -------------------------------------- */
@@ -100,6 +179,7 @@ static void aa_scene(struct tdp *t, uint32_t *seed, uint32_t *hash)
 	int32_t y1 = tdp_range(seed, -60, AA_H + 60);
 	uint32_t rx = (uint32_t)tdp_range(seed, 0, 130);
 	uint32_t ry = (uint32_t)tdp_range(seed, 0, 130);
+	uint8_t *cov = NULL;
 	size_t bytes;
 
 	/* now and then a very flat ellipse, long past the surface */
@@ -133,6 +213,20 @@ static void aa_scene(struct tdp *t, uint32_t *seed, uint32_t *hash)
 		m.clip.x1 = tdp_range(seed, m.clip.x0, AA_W + 10);
 		m.clip.y1 = tdp_range(seed, m.clip.y0, AA_H + 10);
 	}
+	kind = tdp_rand(seed) % 3;
+	if (kind == P_CIRCLE)
+		ry = rx %= 131;
+	/*
+	 * Circles and ellipses: the coverage is checked against the exact one
+	 * first; the blend, ROP, format and clip are then checked with the
+	 * DP's own coverage, which may differ from exact by AA_COV_TOL.
+	 */
+	if (kind != P_LINE && rx && ry) {
+		cov = malloc((size_t)AA_W * AA_H);
+		assert_non_null(cov);
+		assert_true(aa_capture(t, x0, y0, rx, ry, AA_W, AA_H, cov) <=
+			    AA_COV_TOL);
+	}
 	for (i = 0; i < bytes; i++)
 		t->vram[m.s.base + i] = (uint8_t)tdp_rand(seed);
 	m.vram = malloc(TDP_VRAM_SIZE);
@@ -151,13 +245,17 @@ static void aa_scene(struct tdp *t, uint32_t *seed, uint32_t *hash)
 	m.clip.x1 = RDC_MIN(m.clip.x1, RDC_COORD_MAX);
 	m.clip.y1 = RDC_MIN(m.clip.y1, RDC_COORD_MAX);
 
-	kind = tdp_rand(seed) % 3;
 	if (kind == P_LINE) {
 		TDP_CMD(t, RDC_OP_AA_LINE, RDC_XY(x0, y0), RDC_XY(x1, y1));
 		rdc_ref_aa_line(x0, y0, x1, y1, aa_model_plot, &m);
+	} else if (cov) {
+		TDP_CMD(t, RDC_OP_AA_ELLIPSE, RDC_XY(x0, y0), RDC_WH(rx, ry));
+		for (i = 0; i < (uint32_t)AA_W * AA_H; i++)
+			if (cov[i])
+				aa_model_plot(&m, (int32_t)(i % AA_W),
+					      (int32_t)(i / AA_W), cov[i]);
 	} else if (kind == P_CIRCLE) {
 		/* (the reference visits the whole bounding box) */
-		rx %= 131;
 		TDP_CMD(t, RDC_OP_AA_CIRCLE, RDC_XY(x0, y0), rx);
 		rdc_ref_aa_ellipse(x0, y0, rx, rx, aa_model_plot, &m);
 	} else {
@@ -177,6 +275,7 @@ static void aa_scene(struct tdp *t, uint32_t *seed, uint32_t *hash)
 			 t->vram[i], m.vram[i]);
 	}
 	*hash = tdp_fnv(*hash, &m.plots, sizeof(m.plots));
+	free(cov);
 	free(m.seen);
 	free(m.vram);
 }
@@ -551,6 +650,7 @@ static void test_aa_bad_args(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		TDP_TEST(test_aa_ellipse_exact),
 		TDP_TEST(test_aa_random_vs_ref),
 		TDP_TEST(test_aa_line_intensity),
 		TDP_TEST(test_aa_circle_intensity),

@@ -1,32 +1,31 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /*
- * Anti-aliasing: the coverage definitions and the plain reference
- * rasterisers.  A reference visits pixels one by one, in the textbook
- * form, and reports each with its 8-bit coverage (1..RDC_AA_FULL); the
- * display processor (aa.c) must give the same pixels and coverages while
- * working in clipped spans.
+ * Anti-aliasing references for the tests: the plain rasterisers visit
+ * pixels one by one, in the textbook form, and report each with its 8-bit
+ * coverage (1..RDC_AA_FULL).  The display processor (aa.c) gives the
+ * same pixels and coverages for lines, and for circles and ellipses
+ * coverages within the tolerance docs/commands.md states, working in
+ * clipped spans.
  */
 #ifndef RDC_REF_AA_H
 #define RDC_REF_AA_H
 
-#include "../hw-sim/rdc_port.h"
+#include "rdc_port.h"
 
 #define RDC_AA_FULL 255u /* coverage of a pixel the shape covers fully */
 
 typedef void (*rdc_ref_aa_fn)(void *ctx, int32_t x, int32_t y, uint32_t cov);
 
-/* floor(sqrt(v)) */
-uint64_t rdc_aa_isqrt(uint64_t v);
-
 /*
  * Coverage of the pixel at offset (x, y) >= 0 from the centre of the
- * ellipse with radii rx, ry >= 1: a tent of the pixel's distance d to the
- * curve, 255 * (1 - d) rounded (0 from d = 1 on), with d the first-order
- * (Sampson) distance |F| / |grad F| of F = x^2 ry^2 + y^2 rx^2 - rx^2 ry^2,
- * exact for circles, in 1/256 pixel.  Pixels outside |x| <= rx + 1,
- * |y| <= ry + 1 have no coverage.
+ * ellipse with radii rx, ry >= 1, as docs/commands.md defines it: a tent
+ * of the pixel's distance d to the curve, ((256 - d) 255 + 128) / 256 for
+ * d = floor(256 |F| / |grad F|) below 256 (0 from there on), F = x^2 ry^2
+ * + y^2 rx^2 - rx^2 ry^2, here with d exact.  Pixels outside
+ * |x| <= rx + 1, |y| <= ry + 1 have no coverage.
  */
-uint32_t rdc_aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x, uint32_t y);
+uint32_t rdc_ref_aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x,
+				uint32_t y);
 
 /*
  * Wu line between integer endpoints, ends included, the same pixels for
@@ -40,8 +39,8 @@ void rdc_ref_aa_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
 		     rdc_ref_aa_fn plot, void *ctx);
 
 /*
- * Every pixel of the bounding box with rdc_aa_ellipse_cov > 0; a zero radius
- * gives the Wu line between the two extreme points.
+ * Every pixel of the bounding box with rdc_ref_aa_ellipse_cov > 0; a zero
+ * radius gives the Wu line between the two extreme points.
  */
 void rdc_ref_aa_ellipse(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 			rdc_ref_aa_fn plot, void *ctx);

@@ -1,62 +1,48 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * Anti-aliasing coverage and reference rasterisers (see ref_aa.h).
+ * Anti-aliasing reference rasterisers (see ref_aa.h).  The coverage is
+ * computed afresh from the definition, exactly, in 128-bit integers.
  */
 #include "ref_aa.h"
 
-/* The largest value whose square a uint64_t holds, plus one. */
-#define ISQRT_TOP_BIT (1ull << 62)
-/* Gradient components are shrunk below this so their squares add up. */
-#define COV_GRAD_BITS 31
-/* Distances are in 1/COV_ONE pixel. */
-#define COV_ONE 256u
+typedef unsigned __int128 ref_u128;
 
-uint64_t rdc_aa_isqrt(uint64_t v)
+/* Distances are in 1/REF_COV_ONE pixel. */
+#define REF_COV_ONE 256u
+
+/*
+ * d = |F| / |grad F| with F and the gradient's square exact in 128 bits:
+ * the largest k with k |grad F| <= 256 |F| is the largest k with
+ * k^2 (grad F)^2 <= 65536 F^2, found by bisection on k in 0..256.
+ */
+uint32_t rdc_ref_aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x,
+				uint32_t y)
 {
-	uint64_t r = 0, bit = ISQRT_TOP_BIT;
-
-	while (bit > v)
-		bit >>= 2;
-	while (bit) {
-		if (v >= r + bit) {
-			v -= r + bit;
-			r = (r >> 1) + bit;
-		} else {
-			r >>= 1;
-		}
-		bit >>= 2;
-	}
-	return r;
-}
-
-uint32_t rdc_aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x, uint32_t y)
-{
-	int64_t rx2 = (int64_t)rx * rx, ry2 = (int64_t)ry * ry, f;
-	uint64_t gx, gy, g, af, d;
-	unsigned int k = 0;
+	__int128 rx2 = (__int128)rx * rx, ry2 = (__int128)ry * ry, f;
+	ref_u128 gx, gy, g2, f2;
+	uint32_t lo = 0, hi = REF_COV_ONE;
 
 	if (!rx || !ry || x > rx + 1 || y > ry + 1)
 		return 0;
-	/* |terms| < 2^57 for radii up to RDC_SIZE_MAX + 1 */
-	f = (int64_t)x * x * ry2 + (int64_t)y * y * rx2 - rx2 * ry2;
-	/* grad F / 2 = (x ry^2, y rx^2); its length from shrunk parts */
-	gx = (uint64_t)x * (uint64_t)ry2;
-	gy = (uint64_t)y * (uint64_t)rx2;
-	while ((gx | gy) >> COV_GRAD_BITS) {
-		gx >>= 1;
-		gy >>= 1;
-		k++;
+	f = (__int128)x * x * ry2 + (__int128)y * y * rx2 - rx2 * ry2;
+	gx = 2 * (ref_u128)x * (ref_u128)ry2;
+	gy = 2 * (ref_u128)y * (ref_u128)rx2;
+	g2 = gx * gx + gy * gy;
+	f2 = (ref_u128)(f * f);
+	/* at the centre of a degenerate gradient, or a pixel away: none */
+	if (!g2 || f2 >= g2)
+		return 0;
+	/* now f2 < g2 < 2^90, so 65536 f2 fits */
+	while (lo < hi) {
+		uint32_t k = (lo + hi + 1) / 2;
+
+		if ((ref_u128)k * k * g2 <= 65536 * f2)
+			lo = k;
+		else
+			hi = k - 1;
 	}
-	g = rdc_aa_isqrt(gx * gx + gy * gy) << k;
-	if (!g)
-		return 0;
-	af = (uint64_t)(f < 0 ? -f : f);
-	/* d = |F| / (2 g) pixels; from 1 pixel on, no coverage */
-	if (af >= 2 * g)
-		return 0;
-	d = af * (COV_ONE / 2) / g;
-	return (uint32_t)(((COV_ONE - d) * RDC_AA_FULL + COV_ONE / 2) /
-			  COV_ONE);
+	return ((REF_COV_ONE - lo) * RDC_AA_FULL + REF_COV_ONE / 2) /
+	       REF_COV_ONE;
 }
 
 void rdc_ref_aa_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
@@ -107,7 +93,7 @@ void rdc_ref_aa_ellipse(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 	}
 	for (y = -by; y <= by; y++) {
 		for (x = -bx; x <= bx; x++) {
-			uint32_t cov = rdc_aa_ellipse_cov(
+			uint32_t cov = rdc_ref_aa_ellipse_cov(
 				rx, ry, (uint32_t)(x < 0 ? -x : x),
 				(uint32_t)(y < 0 ? -y : y));
 

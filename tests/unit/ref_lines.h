@@ -22,9 +22,25 @@ void rdc_ref_convex(const int64_t *xy, uint32_t n, unsigned int frac,
 void rdc_ref_dash_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
 		       uint32_t bits, uint32_t len, uint32_t offset,
 		       rdc_ref_plot_fn plot, void *ctx);
-/* ARC in mode (enum rdc_arc_mode), angles in 1/65536 turn. */
+/*
+ * ARC in mode (enum rdc_arc_mode), angles in 1/65536 turn: the pixels of
+ * ELLIPSE (outline) or FILL_ELLIPSE (pie, chord) whose centre p lies in
+ * the sector, i.e. p is the centre itself or no further counter-clockwise
+ * from the start point's direction than the end point's (pie, outline),
+ * or not left of the line from the start to the end point (chord).  Only
+ * for rdc_ref_arc_generic angles is that ARC's documented rule.
+ */
 void rdc_ref_arc(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 		 uint32_t start, uint32_t end, uint32_t mode,
 		 rdc_ref_plot_fn plot, void *ctx);
+/*
+ * False when the end points' rounding puts the end on the other side of
+ * the start than the sweep says (sweeps within about 2^-13 turn of none,
+ * half or a whole turn), where ARC's half-plane rule decides instead.
+ */
+bool rdc_ref_arc_generic(uint32_t rx, uint32_t ry, uint32_t start,
+			 uint32_t end);
+/* 65536 sin(a / 65536 turn) as docs/commands.md defines the table. */
+int64_t rdc_ref_sin(uint32_t a);
 
 #endif /* RDC_REF_LINES_H */
