@@ -190,6 +190,9 @@ do_down() {
 	fi
 	gadget_remove
 	rm -rf "$STATE"
+	# anything left is a failure
+	! [ -e "$G" ] && ! { [ -n "$DIR" ] &&
+		grep -q " $DIR functionfs " /proc/mounts; }
 }
 
 case $CMD in

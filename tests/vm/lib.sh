@@ -117,8 +117,9 @@ usb_require() {
 		echo "rdcd is not built, or has no ffs: listener"
 		exit 77
 	fi
-	if ! grep -q configfs /proc/mounts; then
-		mount -t configfs none /sys/kernel/config 2>/dev/null
+	if ! grep -q configfs /proc/mounts &&
+		mount -t configfs none /sys/kernel/config 2>/dev/null; then
+		USB_CONFIGFS=1 # unmounted by usb_gadget_down: modules unload
 	fi
 	if ! [ -d /sys/kernel/config/usb_gadget ]; then
 		echo "no configfs usb_gadget (libcomposite not loaded?)"
@@ -192,39 +193,57 @@ usb_gadget_up() {
 	usb_wait present 30
 }
 
-# usb_gadget_down: unplug, stop rdcd (SIGTERM), remove the gadget, show
-# rdcd's log; returns rdcd's exit status.
-usb_gadget_down() {
-	rc=0
-	timeout 30 "$GADGET" unbind >/dev/null 2>&1 ||
-		{ echo "usb: unbinding the gadget failed or hung"; rc=1; }
-	if [ -n "$USB_RDCD_PID" ]; then
-		kill -TERM $USB_RDCD_PID 2>/dev/null
-		i=0
-		while usb_running $USB_RDCD_PID && [ $i -lt 300 ]; do
-			sleep 0.1
-			i=$((i + 1))
+# usb_rdcd_stop: SIGTERM to rdcd, its exit status (after 30 s: its
+# threads' kernel stacks are shown and it is killed); its log is shown.
+usb_rdcd_stop() {
+	[ -n "$USB_RDCD_PID" ] || return 0
+	kill -TERM $USB_RDCD_PID 2>/dev/null
+	i=0
+	while usb_running $USB_RDCD_PID && [ $i -lt 300 ]; do
+		sleep 0.1
+		i=$((i + 1))
+	done
+	if usb_running $USB_RDCD_PID; then
+		echo "usb: rdcd still runs 30 s after SIGTERM; its threads:"
+		for t in /proc/$USB_RDCD_PID/task/*; do
+			echo "  $(cat $t/comm) in $(cat $t/wchan)"
+			sed 's/^/    /' $t/stack 2>/dev/null
 		done
-		if usb_running $USB_RDCD_PID; then
-			echo "usb: rdcd still runs 30 s after SIGTERM; its threads:"
-			for t in /proc/$USB_RDCD_PID/task/*; do
-				echo "  $(cat $t/comm) in $(cat $t/wchan)"
-				sed 's/^/    /' $t/stack 2>/dev/null
-			done
-			kill -KILL $USB_RDCD_PID
-		fi
-		wait $USB_RDCD_PID
-		rc=$((rc | $?))
-		USB_RDCD_PID=""
-		sed 's/^/    rdcd: /' "$USB_RDCD_LOG"
+		kill -KILL $USB_RDCD_PID
 	fi
-	"$GADGET" down || rc=1
+	wait $USB_RDCD_PID
+	rc=$?
+	USB_RDCD_PID=""
+	sed 's/^/    rdcd: /' "$USB_RDCD_LOG"
 	return $rc
+}
+
+# usb_gadget_down: unplug, stop rdcd, remove the gadget; returns rdcd's
+# exit status (or failure if the gadget could not be removed).
+usb_gadget_down() {
+	drc=0
+	timeout 30 "$GADGET" unbind >/dev/null 2>&1 ||
+		{ echo "usb: unbinding the gadget failed or hung"; drc=1; }
+	usb_rdcd_stop || drc=$?
+	"$GADGET" down || drc=1
+	[ -z "${USB_CONFIGFS:-}" ] || umount /sys/kernel/config 2>/dev/null
+	return $drc
+}
+
+# usb_wait_log FILE PATTERN SECONDS: until FILE has a line with PATTERN
+usb_wait_log() {
+	i=0
+	while ! grep -q "$2" "$1" 2>/dev/null; do
+		[ $i -lt $(($3 * 10)) ] || { echo "no '$2' in $1"; return 1; }
+		sleep 0.1
+		i=$((i + 1))
+	done
 }
 
 # usb_running PID: a process that has not exited (zombies have)
 usb_running() {
-	[ -r /proc/$1/stat ] && ! sed 's/^.*) //' /proc/$1/stat | grep -q '^Z'
+	[ -r /proc/$1/stat ] &&
+		! sed 's/^.*) //' /proc/$1/stat 2>/dev/null | grep -q '^Z'
 }
 
 # usb_unplug / usb_replug: unbind the gadget from its UDC (the host sees a

@@ -22,10 +22,21 @@
  *   watch SOCK FILE   a UNIX-socket client of the same rdcd: PING and
  *                     REG_READ in a loop until FILE exists; every answer
  *                     must be right
+ *
+ * And one question about the kernel rather than rdcd, answered with a
+ * device side of this program's own:
+ *
+ *   ffs-zlp DIR       a FunctionFS function with one bulk IN endpoint
+ *                     that writes 512 bytes, then 0 bytes, then 100
+ *   zlp-probe         reads it: one 612-byte transfer means the 0-byte
+ *                     write sent nothing, 512 then 100 means it sent a
+ *                     zero-length packet
  */
 #include <errno.h>
 #include <fcntl.h>
 #include <libusb.h>
+#include <linux/usb/ch9.h>
+#include <linux/usb/functionfs.h>
 #include <poll.h>
 #include <stdarg.h>
 #include <stdbool.h>
@@ -815,6 +826,170 @@ static int hostile(const char *kind, unsigned int seconds)
 	return tap_done();
 }
 
+/* ---- Zero-length packets from FunctionFS ------------------------------------ */
+
+struct zlp_descs {
+	struct usb_interface_descriptor intf;
+	struct usb_endpoint_descriptor_no_audio in;
+} __attribute__((packed));
+
+#define ZLP_INTF                                                               \
+	{                                                                      \
+		.bLength = USB_DT_INTERFACE_SIZE,                              \
+		.bDescriptorType = USB_DT_INTERFACE, .bNumEndpoints = 1,       \
+		.bInterfaceClass = 0xff, .iInterface = 1,                      \
+	}
+#define ZLP_EP(maxp)                                                           \
+	{                                                                      \
+		.bLength = USB_DT_ENDPOINT_SIZE,                               \
+		.bDescriptorType = USB_DT_ENDPOINT,                            \
+		.bEndpointAddress = 1 | USB_DIR_IN,                            \
+		.bmAttributes = USB_ENDPOINT_XFER_BULK,                        \
+		.wMaxPacketSize = (maxp),                                      \
+	}
+
+/* (x86: little-endian, as FunctionFS wants) */
+static const struct {
+	struct usb_functionfs_descs_head_v2 head;
+	__le32 fs_count, hs_count;
+	struct zlp_descs fs, hs;
+} __attribute__((packed)) zlp_descs = {
+	.head = {.magic = FUNCTIONFS_DESCRIPTORS_MAGIC_V2,
+		 .length = sizeof(zlp_descs),
+		 .flags = FUNCTIONFS_HAS_FS_DESC | FUNCTIONFS_HAS_HS_DESC},
+	.fs_count = 2,
+	.hs_count = 2,
+	.fs = {ZLP_INTF, ZLP_EP(64)},
+	.hs = {ZLP_INTF, ZLP_EP(512)},
+};
+
+static const struct {
+	struct usb_functionfs_strings_head head;
+	struct {
+		__le16 code;
+		char str1[sizeof("zlp probe")];
+	} __attribute__((packed)) lang0;
+} __attribute__((packed)) zlp_strings = {
+	.head = {.magic = FUNCTIONFS_STRINGS_MAGIC,
+		 .length = sizeof(zlp_strings),
+		 .str_count = 1,
+		 .lang_count = 1},
+	.lang0 = {0x0409, "zlp probe"},
+};
+
+/* The device side: run before the gadget is bound; exits when done. */
+static int cmd_ffs_zlp(const char *dir)
+{
+	char path[256];
+	uint8_t buf[512];
+	struct usb_functionfs_event ev[4];
+	int ep0, ep1, enabled = 0;
+	ssize_t w[3];
+
+	alarm(60); /* a host that never reads must not hang the test */
+	snprintf(path, sizeof(path), "%s/ep0", dir);
+	ep0 = open(path, O_RDWR);
+	if (ep0 < 0 ||
+	    write(ep0, &zlp_descs, sizeof(zlp_descs)) != sizeof(zlp_descs) ||
+	    write(ep0, &zlp_strings, sizeof(zlp_strings)) !=
+		    sizeof(zlp_strings)) {
+		perror("usb_raw: ffs-zlp: ep0");
+		return 1;
+	}
+	snprintf(path, sizeof(path), "%s/ep1", dir);
+	ep1 = open(path, O_RDWR);
+	if (ep1 < 0) {
+		perror("usb_raw: ffs-zlp: ep1");
+		return 1;
+	}
+	while (!enabled) {
+		struct pollfd p = {.fd = ep0, .events = POLLIN};
+		ssize_t n;
+
+		if (poll(&p, 1, 30000) <= 0) {
+			fprintf(stderr, "usb_raw: ffs-zlp: never enabled\n");
+			return 1;
+		}
+		n = read(ep0, ev, sizeof(ev));
+		for (ssize_t i = 0; i < n / (ssize_t)sizeof(ev[0]); i++)
+			enabled |= ev[i].type == FUNCTIONFS_ENABLE;
+	}
+	memset(buf, 0x5a, sizeof(buf));
+	w[0] = write(ep1, buf, 512);
+	w[1] = write(ep1, buf, 0);
+	w[2] = write(ep1, buf, 100);
+	printf("# ffs-zlp: writes of 512, 0, 100 bytes returned %zd, %zd, %zd\n",
+	       w[0], w[1], w[2]);
+	sleep(1);
+	close(ep1);
+	close(ep0);
+	return w[0] == 512 && w[1] == 0 && w[2] == 100 ? 0 : 1;
+}
+
+static int cmd_zlp_probe(void)
+{
+	libusb_context *ctx;
+	libusb_device_handle *h = NULL;
+	struct libusb_config_descriptor *cfg;
+	uint8_t buf[4096], ep = 0;
+	int got[2] = {0, 0}, r0, r1;
+
+	/*
+	 * Without udevd (as in the VM), libusb's device list is the one it
+	 * found at libusb_init: look again with a new context each time.
+	 */
+	for (int i = 0; i < 100; i++) {
+		if (libusb_init(&ctx))
+			return 1;
+		h = libusb_open_device_with_vid_pid(ctx, opt_vid, opt_pid);
+		if (h)
+			break;
+		libusb_exit(ctx);
+		usleep(100000);
+	}
+	if (!h && libusb_init(&ctx))
+		return 1;
+	if (!h) {
+		libusb_device **list;
+		ssize_t n = libusb_get_device_list(ctx, &list);
+
+		fprintf(stderr, "usb_raw: zlp-probe: no %04x:%04x; there are:",
+			opt_vid, opt_pid);
+		for (ssize_t i = 0; i < n; i++) {
+			struct libusb_device_descriptor dd;
+
+			libusb_get_device_descriptor(list[i], &dd);
+			fprintf(stderr, " %04x:%04x", dd.idVendor,
+				dd.idProduct);
+		}
+		fprintf(stderr, "\n");
+		return 1;
+	}
+	r0 = libusb_get_active_config_descriptor(libusb_get_device(h), &cfg);
+	if (r0) {
+		fprintf(stderr, "usb_raw: zlp-probe: config: %s\n",
+			libusb_strerror(r0));
+		return 1;
+	}
+	ep = cfg->interface[0].altsetting[0].endpoint[0].bEndpointAddress;
+	libusb_free_config_descriptor(cfg);
+	if (libusb_claim_interface(h, 0))
+		return 1;
+	r0 = libusb_bulk_transfer(h, ep, buf, sizeof(buf), &got[0], TMO_MS);
+	r1 = got[0] == 612 ? 0
+			   : libusb_bulk_transfer(h, ep, buf, sizeof(buf),
+						  &got[1], TMO_MS);
+	tap(!r0 && !r1 && ((got[0] == 512 && got[1] == 100) || got[0] == 612),
+	    "the host read %d then %d bytes", got[0], got[1]);
+	printf("# finding: a 0-byte write() to a FunctionFS bulk IN endpoint file %s\n",
+	       got[0] == 512 ? "sends a zero-length packet (it ended a 512-byte transfer)"
+			     : "sends nothing (512 and 100 bytes came as one transfer)");
+	libusb_release_interface(h, 0);
+	libusb_close(h);
+	libusb_exit(ctx);
+	return tap_done();
+}
+
 /* A UNIX-socket client alongside: every answer right, until `stop` exists. */
 static int cmd_watch(const char *sock, const char *stop)
 {
@@ -889,6 +1064,10 @@ int main(int argc, char **argv)
 		return hostile(argv[i + 1],
 			       i + 2 < argc ? (unsigned int)atoi(argv[i + 2])
 					    : 3);
+	if (!strcmp(argv[i], "ffs-zlp") && i + 1 < argc)
+		return cmd_ffs_zlp(argv[i + 1]);
+	if (!strcmp(argv[i], "zlp-probe"))
+		return cmd_zlp_probe();
 	if (!strcmp(argv[i], "watch") && i + 2 < argc)
 		return cmd_watch(argv[i + 1], argv[i + 2]);
 	fprintf(stderr, "usb_raw: unknown command '%s'\n", argv[i]);

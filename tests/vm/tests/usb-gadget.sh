@@ -53,9 +53,31 @@ check "usb_raw: replies of whole packets still end the host's read" $RAW zlp
 check "usb_raw: round trips (figures below)" $RAW bench 300
 grep '^# usb' "$T/check.out"
 check "rdcd still running" usb_rdcd_alive
-check "rdcd and the gadget go down cleanly (rdcd exits 0)" usb_gadget_down
-check "the device is gone from the bus" usb_wait gone 10
-check "nothing of the gadget is left (configfs, functionfs mount)" sh -c '
-	! ls /sys/kernel/config/usb_gadget | grep . &&
-	! grep functionfs /proc/mounts'
+
+# SIGTERM while a host streams frames: the bridge threads stop mid-transfer
+$RAW hostile frames 60 >"$T/frames.log" 2>&1 &
+raw=$!
+check "a host steps the clock and reads frames" \
+	usb_wait_log "$T/frames.log" stepping 20
+sleep 1
+check "SIGTERM to rdcd mid-stream: it exits 0" usb_rdcd_stop
+check "the device leaves the bus with it" usb_wait gone 10
+check "the host program sees it go" wait $raw
+sed 's/^/    /' "$T/frames.log"
+check "the gadget goes down cleanly" usb_gadget_down
+check "no functionfs mount is left" sh -c '! grep functionfs /proc/mounts'
+
+# A question about the kernel, not rdcd (docs/usb.md): does a 0-byte
+# write() to a FunctionFS endpoint send a zero-length packet?
+check "a probe gadget (0x1209:0x0002) with a device side of usb_raw's own" \
+	"$GADGET" up --name zlp --dir /dev/ffs-zlp --pid 0x0002 --serial zlp
+"$B/usb_raw" ffs-zlp /dev/ffs-zlp >"$T/zlpdev.log" 2>&1 &
+zdev=$!
+check "  ... bound" "$GADGET" bind --name zlp
+check "  ... read by the host" "$B/usb_raw" --pid 0002 zlp-probe
+grep '^# finding' "$T/check.out"
+check "  ... the device side wrote 512, 0 and 100 bytes" wait $zdev
+sed 's/^/    /' "$T/zlpdev.log"
+check "  ... removed" "$GADGET" down --name zlp
+[ -z "${USB_CONFIGFS:-}" ] || umount /sys/kernel/config 2>/dev/null
 finish

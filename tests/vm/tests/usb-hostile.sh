@@ -20,16 +20,6 @@ usb_require
 echo "# rdcd: $USB_RDCD"
 RAWS="$RAW --serial $USB_SERIAL"
 
-# wait_line FILE PATTERN SECONDS
-wait_line() {
-	i=0
-	while ! grep -q "$2" "$1" 2>/dev/null; do
-		[ $i -lt $(($3 * 10)) ] || return 1
-		sleep 0.1
-		i=$((i + 1))
-	done
-}
-
 then_new_session() {
 	check "  ... then a new USB session works" $RAWS basic
 }
@@ -57,7 +47,7 @@ then_new_session
 
 $RAWS hostile long-submit 60 >"$T/submit.log" 2>&1 &
 raw=$!
-check "a 1 MiB SUBMIT under way" wait_line "$T/submit.log" submitting 20
+check "a 1 MiB SUBMIT under way" usb_wait_log "$T/submit.log" submitting 20
 sleep 1
 check "unplugged during the SUBMIT" usb_unplug
 check "  ... the host program sees the device go" wait $raw
@@ -67,7 +57,7 @@ then_new_session
 
 $RAWS hostile frames 60 >"$T/frames.log" 2>&1 &
 raw=$!
-check "a frame subscription under way" wait_line "$T/frames.log" stepping 20
+check "a frame subscription under way" usb_wait_log "$T/frames.log" stepping 20
 sleep 2
 check "unplugged during the subscription" usb_unplug
 wait $raw
