@@ -398,6 +398,46 @@ static void test_fuzz(void **state)
 	}
 }
 
+/*
+ * A '#' word after a keyword that is not #rrggbb is an error at its line
+ * and column, not a comment that swallows the rest of the statement.
+ */
+static void test_colour_typo(void **state)
+{
+	rdc_dev *dev = *state;
+	static const struct {
+		const char *text;
+		uint32_t line, col;
+		const char *word;
+	} bad[] = {
+		{"mode 320x200 xrgb8888\nfg #gg0000\n", 2, 4, "'#gg0000'"},
+		{"fill 0 0 1 1 #box\n", 1, 14, "'#box'"},
+		{"fg #ff00\n", 1, 4, "'#ff00'"},
+		{"fill 0 0 1 1\nline 0 0 \\\n  5 5 \\\n\t #12345g\n", 4, 3,
+		 "'#12345g'"},
+		{"fill 0 0 1 1\r\nfg  #0000000\r\n", 2, 5, "'#0000000'"},
+	};
+
+	for (size_t i = 0; i < sizeof(bad) / sizeof(*bad); i++) {
+		int ret = run(dev, bad[i].text);
+
+		if (ret != RDC_E_PARSE || res.error_line != bad[i].line ||
+		    res.error_col != bad[i].col)
+			print_error("script %zu: ret %d at %u:%u: %s\n", i, ret,
+				    res.error_line, res.error_col,
+				    res.error_msg);
+		assert_int_equal(ret, RDC_E_PARSE);
+		assert_int_equal(res.error_line, bad[i].line);
+		assert_int_equal(res.error_col, bad[i].col);
+		assert_non_null(strstr(res.error_msg, bad[i].word));
+	}
+	/* comments: at a statement's start, or '#' before a blank */
+	assert_int_equal(run(dev, "mode 320x200 xrgb8888\n#ffffff is white\n"
+				  "fg #ffffff # white\n#\nfg 0 #\n"),
+			 0);
+	assert_int_equal(res.error_col, 0);
+}
+
 #define T(f) cmocka_unit_test_setup_teardown(f, dev_setup, dev_teardown)
 
 int main(void)
@@ -410,6 +450,7 @@ int main(void)
 		T(test_registers_and_host),
 		T(test_device_error_line),
 		T(test_parse_errors),
+		T(test_colour_typo),
 		T(test_good_variants),
 		T(test_fuzz),
 	};

@@ -427,6 +427,7 @@ struct rdc_script_result {
 	uint64_t op_cycles[256];
 	uint64_t op_count[256];
 	uint32_t error_line; /* script line of a parse or device error */
+	uint32_t error_col;  /* 1-based column of a lexical error, else 0 */
 	char error_msg[160];
 	/* readback statements: how many ran; CRC-32 (zlib) and word count
 	 * of the data the last one read */

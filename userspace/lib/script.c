@@ -37,6 +37,7 @@ struct rdl {
 	struct rdc_script_result *res;
 	rdc_batch *b;
 	uint32_t line; /* first physical line of the statement */
+	const char *src, *src_end; /* the statement's text, for columns */
 	struct rdl_tok *tok;
 	size_t ntok, tok_cap;
 	char *buf; /* the logical line, tokens point into it */
@@ -56,6 +57,43 @@ static int rdl_err(struct rdl *r, int code, const char *fmt, ...)
 	va_list ap;
 
 	r->res->error_line = r->line;
+	va_start(ap, fmt);
+	vsnprintf(r->res->error_msg, sizeof(r->res->error_msg), fmt, ap);
+	va_end(ap);
+	return code;
+}
+
+static int rdl_err_at(struct rdl *r, const char *at, int code,
+		      const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+
+/*
+ * An error at `at` in r->buf: its physical line and 1-based column, found
+ * by walking the statement's source lines as rdl_next_line joined them.
+ */
+static int rdl_err_at(struct rdl *r, const char *at, int code,
+		      const char *fmt, ...)
+{
+	size_t off = (size_t)(at - r->buf);
+	const char *p = r->src;
+	uint32_t line = r->line;
+	va_list ap;
+
+	while (p && p < r->src_end) {
+		const char *nl = memchr(p, '\n', (size_t)(r->src_end - p));
+		size_t len = nl ? (size_t)(nl - p) : (size_t)(r->src_end - p);
+
+		if (len && p[len - 1] == '\r')
+			len--;
+		if (len && p[len - 1] == '\\')
+			len--;
+		if (off <= len || !nl)
+			break;
+		off -= len + 1; /* the blank that joined the lines */
+		line++;
+		p = nl + 1;
+	}
+	r->res->error_line = line;
+	r->res->error_col = (uint32_t)RDC_MIN(off + 1, (size_t)UINT32_MAX);
 	va_start(ap, fmt);
 	vsnprintf(r->res->error_msg, sizeof(r->res->error_msg), fmt, ap);
 	va_end(ap);
@@ -346,8 +384,21 @@ static int rdl_tokenize(struct rdl *r)
 	for (;;) {
 		while (rdl_is_space(*p))
 			p++;
-		if (!*p || (*p == '#' && !rdl_is_colour(p)))
+		/* '#' starts a comment at the start of a statement or before
+		 * a blank; after a keyword, '#' and a word is a colour. */
+		if (!*p || (*p == '#' && (!r->ntok || !p[1] ||
+					  rdl_is_space(p[1]))))
 			return 0;
+		if (*p == '#' && !rdl_is_colour(p)) {
+			size_t n = 1;
+
+			while (p[n] && !rdl_is_space(p[n]))
+				n++;
+			return rdl_err_at(r, p, RDC_E_PARSE,
+					  "bad colour '%.*s': #rrggbb takes six "
+					  "hex digits (a comment needs a blank "
+					  "after '#')", (int)RDC_MIN(n, 40), p);
+		}
 		if (*p == '"') {
 			char *out = ++p, *start = out;
 
@@ -2085,6 +2136,8 @@ static int rdl_next_line(struct rdl *r, const char **pos, const char *end,
 	const char *p = *pos;
 
 	r->line = *phys + 1;
+	r->src = p;
+	r->src_end = end;
 	while (p < end) {
 		const char *nl = memchr(p, '\n', (size_t)(end - p));
 		size_t len = nl ? (size_t)(nl - p) : (size_t)(end - p);

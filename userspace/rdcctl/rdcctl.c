@@ -109,7 +109,10 @@ static int run_script(rdc_dev *dev, const char *path,
 
 	if (!ret)
 		return 0;
-	if (res->error_line)
+	if (res->error_line && res->error_col)
+		fprintf(stderr, "%s:%u:%u: error: %s\n", path, res->error_line,
+			res->error_col, res->error_msg);
+	else if (res->error_line)
 		fprintf(stderr, "%s:%u: error: %s\n", path, res->error_line,
 			res->error_msg);
 	else if (res->error_msg[0])
