@@ -431,6 +431,11 @@ static void test_colour_typo(void **state)
 		assert_int_equal(res.error_col, bad[i].col);
 		assert_non_null(strstr(res.error_msg, bad[i].word));
 	}
+	/* the count of arguments reads as English */
+	assert_int_equal(run(dev, "fill 0\n"), RDC_E_PARSE);
+	assert_non_null(strstr(res.error_msg, "fill: 1 argument (takes 4)"));
+	assert_int_equal(run(dev, "fill 0 0\n"), RDC_E_PARSE);
+	assert_non_null(strstr(res.error_msg, "fill: 2 arguments (takes 4)"));
 	/* comments: at a statement's start, or '#' before a blank */
 	assert_int_equal(run(dev, "mode 320x200 xrgb8888\n#ffffff is white\n"
 				  "fg #ffffff # white\n#\nfg 0 #\n"),

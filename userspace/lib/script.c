@@ -2076,15 +2076,17 @@ static const struct rdl_stmt {
 static int rdl_arg_count(struct rdl *r, const struct rdl_stmt *st,
 			 uint32_t nargs)
 {
+	const char *pl = nargs == 1 ? "" : "s";
+
 	if (st->min == st->max)
-		return rdl_err(r, RDC_E_PARSE, "%s: %u arguments (takes %u)",
-			       st->name, nargs, st->min);
+		return rdl_err(r, RDC_E_PARSE, "%s: %u argument%s (takes %u)",
+			       st->name, nargs, pl, st->min);
 	if (st->max == RDL_ANY)
 		return rdl_err(r, RDC_E_PARSE,
-			       "%s: %u arguments (takes at least %u)", st->name,
-			       nargs, st->min);
-	return rdl_err(r, RDC_E_PARSE, "%s: %u arguments (takes %u to %u)",
-		       st->name, nargs, st->min, st->max);
+			       "%s: %u argument%s (takes at least %u)",
+			       st->name, nargs, pl, st->min);
+	return rdl_err(r, RDC_E_PARSE, "%s: %u argument%s (takes %u to %u)",
+		       st->name, nargs, pl, st->min, st->max);
 }
 
 /* Statements that act on the host at once cannot be kept in a list. */
