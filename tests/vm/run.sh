@@ -173,7 +173,7 @@ for n in $TESTS; do
 	tr -d '\r' <"$LOG" | awk -v b="RDC-VM-BEGIN $n" -v r="RDC-VM-RESULT $n " '
 		index($0, r) { on = 0 }
 		on { print "    " $0 }
-		index($0, b) == length($0) - length(b) + 1 { on = 1 }'
+		index($0, b) && index($0, b) == length($0) - length(b) + 1 { on = 1 }'
 done
 if [ $fail -ne 0 ]; then
 	echo "# last console lines:"
