@@ -3,11 +3,15 @@
  * rdcfb: the RDC-1 (hw-sim + firmware-model, compiled in unchanged) as a
  * Linux framebuffer device.  Internal interfaces between the driver's files.
  *
- * Locking: chip->lock (a spinlock, IRQs off) guards the simulated chip and
- * every field below marked "lock".  fbcon draws in atomic context, so
- * nothing that holds it sleeps, and every hold runs the simulation for a
- * bounded slice only.  snap_lock (a mutex) guards the frame snapshot that
- * FRAME and sysfs copy out of.
+ * Locking: chip->lock (a mutex) guards the simulated chip and every field
+ * below marked "lock": the simulation runs in process context, with
+ * interrupts on, and gives way between slices.  fbcon calls the drawing
+ * fb_ops in atomic context too (kernel messages are printed with
+ * interrupts off), so those never take it: they put their work on the
+ * fb-op queue (opq.lock, a spinlock held for one bounded record), which
+ * whoever takes chip->lock next applies in order, the queue's worker if
+ * nobody else.  snap_lock (a mutex) guards the frame snapshot that FRAME
+ * and sysfs copy out of.
  */
 #ifndef RDCFB_H
 #define RDCFB_H
@@ -33,6 +37,14 @@
 /* Every mode the CRTC can show fits the frame buffers (as sim:'s). */
 #define RDCFB_FRAME_CAP ((u32)RDC_CRTC_MAX_DISPLAY * RDC_CRTC_MAX_DISPLAY)
 
+/*
+ * The fb-op queue: 1 MiB of records (a power of two, in words); a record
+ * is a header and at most one DP command's data words.
+ */
+#define RDCFB_OPQ_WORDS (1u << 18)
+#define RDCFB_OP_HDR_WORDS 16u
+#define RDCFB_OP_MAX_WORDS (RDCFB_OP_HDR_WORDS + RDC_CMD_MAX_ARGS)
+
 /* The pseudo palette fbcon's truecolor colours index. */
 #define RDCFB_PSEUDO_COLOURS 16
 
@@ -46,13 +58,17 @@ struct rdcfb_pin_stats {
 };
 
 /*
- * The longest section the driver ran with interrupts off (sysfs
- * irqs_off_max_ns, irqs_off_max_at), timed around every hold of an
- * irqsave spinlock.
+ * The sections the driver ran with interrupts off, timed around every hold
+ * of an irqsave spinlock: the longest (sysfs irqs_off_max_ns,
+ * irqs_off_max_at) and how many took how long (debugfs irqs_off: bucket 0
+ * under 1 us, bucket k from 2^(k-1) us, the last one open-ended).
  */
+#define RDCFB_IRQOFF_BUCKETS 16
+
 struct rdcfb_irqoff {
 	atomic64_t max_ns;
 	unsigned long max_at; /* the code that ended that section */
+	atomic64_t hist[RDCFB_IRQOFF_BUCKETS];
 };
 
 static inline u64 rdcfb_irqoff_begin(void)
@@ -61,6 +77,7 @@ static inline u64 rdcfb_irqoff_begin(void)
 }
 
 void rdcfb_irqoff_end(struct rdcfb_irqoff *st, u64 t0, unsigned long at);
+void rdcfb_irqoff_reset(struct rdcfb_irqoff *st);
 
 /* An irqsave spinlock whose holds are timed: t0 is the lock's own field. */
 #define rdcfb_spin_lock(lock, flags, t0)                      \
@@ -73,16 +90,26 @@ void rdcfb_irqoff_end(struct rdcfb_irqoff *st, u64 t0, unsigned long at);
 		rdcfb_irqoff_end(st, t0, _THIS_IP_);          \
 		spin_unlock_irqrestore(lock, flags);          \
 	} while (0)
-#define rdcfb_lock_irqsave(chip, flags) \
-	rdcfb_spin_lock(&(chip)->lock, flags, (chip)->lock_t0)
-#define rdcfb_unlock_irqrestore(chip, flags)                \
-	rdcfb_spin_unlock(&(chip)->lock, flags, (chip)->lock_t0, \
-			  &(chip)->irqoff)
+
+/*
+ * fb_ops' work on its way to the chip: records (struct rdcfb_op and its
+ * data words) in a ring of words, applied in order under chip->lock.
+ */
+struct rdcfb_opq {
+	spinlock_t lock;
+	u64 t0; /* lock: when it was taken */
+	u32 *ring; /* RDCFB_OPQ_WORDS */
+	u32 head, count; /* lock: in words */
+	u64 dropped; /* lock: records refused at a full queue */
+	u32 *buf; /* chip->lock: the record being applied */
+	struct work_struct work;
+};
 
 struct rdcfb_chip {
-	spinlock_t lock;
-	u64 lock_t0; /* lock: when it was taken */
+	struct mutex lock;
 	struct rdcfb_irqoff irqoff;
+	struct rdcfb_opq opq;
+	struct fb_info *info; /* whose fb_ops fill opq */
 	struct rdc_hw hw; /* lock */
 	struct rdc_dp *dp; /* lock; large, so vmalloc'ed */
 	u8 *vram; /* vmalloc_user: mapped to user space as is */
@@ -122,12 +149,16 @@ struct rdcfb_par {
 	u32 pseudo_palette[RDCFB_PSEUDO_COLOURS];
 	u32 fmt; /* enum rdc_format of the current var */
 	u32 stride;
-	u32 state_gen; /* chip->fb_state_gen when DST/SRC/CLIP were set */
+	/* chip->lock: the surface fb ops last set DST/SRC/CLIP to, and when */
+	u32 dp_fmt, dp_stride, dp_wh;
+	u32 state_gen; /* chip->fb_state_gen then */
 	bool state_valid;
 	struct dentry *debugfs;
 };
 
 /* rdcfb_chip.c */
+void rdcfb_chip_lock(struct rdcfb_chip *chip);
+void rdcfb_chip_unlock(struct rdcfb_chip *chip);
 int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
 		    u32 vram_size, bool stepped);
 void rdcfb_chip_start(struct rdcfb_chip *chip);
@@ -141,7 +172,7 @@ int rdcfb_chip_submit(struct rdcfb_chip *chip, const u32 *words, u32 n);
 int rdcfb_chip_vsync(struct rdcfb_chip *chip);
 void rdcfb_chip_counters(struct rdcfb_chip *chip, struct rdcfb_counters *c);
 int rdcfb_chip_snapshot(struct rdcfb_chip *chip);
-/* Atomic-context helpers for fb_ops, with chip->lock held. */
+/* For the fb-op queue's records, with chip->lock held. */
 bool rdcfb_dp_usable(struct rdcfb_chip *chip);
 int rdcfb_push_locked(struct rdcfb_chip *chip, const u32 *words, u32 n);
 void rdcfb_drain_locked(struct rdcfb_chip *chip);
@@ -185,6 +216,8 @@ void rdcfb_fill(struct fb_info *info, const struct fb_fillrect *r);
 void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a);
 void rdcfb_blit(struct fb_info *info, const struct fb_image *img);
 int rdcfb_sync(struct fb_info *info);
+void rdcfb_ops_apply_locked(struct rdcfb_chip *chip);
+u64 rdcfb_ops_dropped(struct rdcfb_chip *chip);
 
 /* rdcfb_bench.c */
 void rdcfb_bench_init(struct fb_info *info);

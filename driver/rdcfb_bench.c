@@ -7,7 +7,8 @@
  * completion) and through the kernel's own sys_imageblit / sys_copyarea on
  * a system-memory fb_info of the same mode, timed with ktime_get in one
  * run.  Besides the wall-time ratio it gives the DP's simulated cycles:
- * what the chip would take at its core clock.
+ * what the chip would take at its core clock.  Beside it, irqs_off: the
+ * driver's interrupts-off sections by length.
  */
 #include <linux/debugfs.h>
 #include <linux/ktime.h>
@@ -185,6 +186,31 @@ out:
 }
 DEFINE_SHOW_ATTRIBUTE(rdcfb_bench);
 
+/* The interrupts-off sections by length: "<1us N", "2-4us N", ... */
+static int rdcfb_irqoff_show(struct seq_file *m, void *unused)
+{
+	struct fb_info *info = m->private;
+	struct rdcfb_par *par = info->par;
+	struct rdcfb_irqoff *st = &par->chip->irqoff;
+	unsigned int k;
+	s64 n;
+
+	for (k = 0; k < RDCFB_IRQOFF_BUCKETS; k++) {
+		n = atomic64_read(&st->hist[k]);
+		if (!n)
+			continue;
+		if (!k)
+			seq_puts(m, "<1us");
+		else if (k == RDCFB_IRQOFF_BUCKETS - 1)
+			seq_printf(m, ">=%uus", 1u << (k - 1));
+		else
+			seq_printf(m, "%u-%uus", 1u << (k - 1), 1u << k);
+		seq_printf(m, " %lld\n", (long long)n);
+	}
+	return 0;
+}
+DEFINE_SHOW_ATTRIBUTE(rdcfb_irqoff);
+
 void rdcfb_bench_init(struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
@@ -194,6 +220,8 @@ void rdcfb_bench_init(struct fb_info *info)
 	par->debugfs = debugfs_create_dir(name, rdcfb_debugfs_root);
 	debugfs_create_file("bench", 0400, par->debugfs, info,
 			    &rdcfb_bench_fops);
+	debugfs_create_file("irqs_off", 0400, par->debugfs, info,
+			    &rdcfb_irqoff_fops);
 }
 
 void rdcfb_bench_exit(struct fb_info *info)

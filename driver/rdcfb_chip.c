@@ -3,6 +3,10 @@
  * The simulated RDC-1 inside the kernel: its memory, the two clocks that
  * move its simulated time, waits, command submission, frames and counters.
  *
+ * chip->lock is a mutex: the simulation runs in process context with
+ * interrupts on (a slice of it takes milliseconds), and every lock hold
+ * first applies what fb_ops queued meanwhile (rdcfb_fb.c), in order.
+ *
  * clock=paced: an hrtimer ticks a few times a frame and queues the pacing
  * work, which runs the chip up to the simulated time that wall time says
  * it should have reached, in bounded slices (simulating a frame takes
@@ -52,11 +56,42 @@
 #define RDCFB_SNAP_CHUNK (64u << 10)
 #define RDCFB_SNAP_TRIES 4u
 
-/* A section with interrupts off ended at `at`: keep the longest. */
+/*
+ * Take the chip.  What fb_ops queued (in atomic context, where they cannot
+ * take the mutex) goes to the chip first, so it reaches the chip before
+ * anything the caller does, as if they had run at once.
+ */
+void rdcfb_chip_lock(struct rdcfb_chip *chip)
+{
+	mutex_lock(&chip->lock);
+	if (READ_ONCE(chip->opq.count) && chip->info)
+		rdcfb_ops_apply_locked(chip);
+}
+
+void rdcfb_chip_unlock(struct rdcfb_chip *chip)
+{
+	mutex_unlock(&chip->lock);
+}
+
+/* The fb-op queue's worker: for work queued where nobody could apply it. */
+static void rdcfb_opq_work(struct work_struct *work)
+{
+	struct rdcfb_chip *chip = container_of(work, struct rdcfb_chip,
+					       opq.work);
+
+	rdcfb_chip_lock(chip);
+	rdcfb_chip_unlock(chip);
+}
+
+/* A section with interrupts off ended at `at`: count it, keep the longest. */
 void rdcfb_irqoff_end(struct rdcfb_irqoff *st, u64 t0, unsigned long at)
 {
 	s64 d = ktime_get_mono_fast_ns() - t0;
 	s64 old = atomic64_read(&st->max_ns);
+	u64 us = d > 0 ? div_u64(d, NSEC_PER_USEC) : 0;
+
+	atomic64_inc(&st->hist[min_t(u32, us ? ilog2(us) + 1 : 0,
+				     RDCFB_IRQOFF_BUCKETS - 1)]);
 
 	while (d > old) {
 		if (atomic64_try_cmpxchg(&st->max_ns, &old, d)) {
@@ -64,6 +99,16 @@ void rdcfb_irqoff_end(struct rdcfb_irqoff *st, u64 t0, unsigned long at)
 			break;
 		}
 	}
+}
+
+void rdcfb_irqoff_reset(struct rdcfb_irqoff *st)
+{
+	unsigned int i;
+
+	atomic64_set(&st->max_ns, 0);
+	WRITE_ONCE(st->max_at, 0);
+	for (i = 0; i < RDCFB_IRQOFF_BUCKETS; i++)
+		atomic64_set(&st->hist[i], 0);
 }
 
 /* The wall time the paced clock maps simulated time t to (lock held). */
@@ -76,7 +121,7 @@ static ktime_t rdcfb_wall_of_locked(struct rdcfb_chip *chip, u64 t)
 					    chip->hw.core_hz));
 }
 
-/* Under chip->lock, inside the simulation: never sleeps. */
+/* Under chip->lock, inside the simulation. */
 static void rdcfb_trace(void *ctx, u64 time, unsigned int event, u32 a, u32 b)
 {
 	struct rdcfb_chip *chip = ctx;
@@ -165,17 +210,16 @@ static void rdcfb_pace_work(struct work_struct *work)
 	struct rdcfb_chip *chip = container_of(work, struct rdcfb_chip,
 					       pace_work);
 	struct rdc_hw *hw = &chip->hw;
-	unsigned long flags;
 	u64 target, lag = rdcfb_ns_to_cycles(chip, RDCFB_PACE_MAX_LAG_NS);
 	ktime_t now = ktime_get();
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	target = chip->sim_base +
 		 rdcfb_ns_to_cycles(chip,
 				    ktime_to_ns(ktime_sub(now, chip->wall_base)));
 	/*
 	 * Too far behind (a slow host) or ahead (fb_ops ran the DP
-	 * synchronously): start pacing afresh from here.
+	 * at once when the FIFO filled): start pacing afresh from here.
 	 */
 	if (target > hw->now + lag || hw->now > target + lag) {
 		chip->wall_base = now;
@@ -191,19 +235,19 @@ static void rdcfb_pace_work(struct work_struct *work)
 			stop = edge;
 		rdc_hw_run_until(hw, stop);
 		rdcfb_irq_check_locked(chip);
-		rdcfb_unlock_irqrestore(chip, flags);
+		rdcfb_chip_unlock(chip);
 		wake_up_all(&chip->waitq);
 		/* no detour: cancel_work_sync in rdcfb_chip_stop keeps gpio */
 		rdcfb_gpio_deliver_now(chip->gpio);
 		cond_resched();
-		rdcfb_lock_irqsave(chip, flags);
+		rdcfb_chip_lock(chip);
 	}
 	rdcfb_update_period(chip);
 	/* rdcfb_chip_stop sets dying under the lock, then cancels the timer */
 	if (!chip->dying)
 		hrtimer_start(&chip->timer, rdcfb_next_tick_locked(chip),
 			      HRTIMER_MODE_ABS);
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	wake_up_all(&chip->waitq);
 }
 
@@ -222,9 +266,11 @@ int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
 {
 	struct rdc_hw_config cfg = { .vram_size = vram_size };
 
-	spin_lock_init(&chip->lock);
+	mutex_init(&chip->lock);
 	init_waitqueue_head(&chip->waitq);
 	mutex_init(&chip->snap_lock);
+	spin_lock_init(&chip->opq.lock);
+	INIT_WORK(&chip->opq.work, rdcfb_opq_work);
 	INIT_WORK(&chip->pace_work, rdcfb_pace_work);
 	hrtimer_init(&chip->timer, CLOCK_MONOTONIC, HRTIMER_MODE_REL);
 	chip->timer.function = rdcfb_tick;
@@ -236,8 +282,11 @@ int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
 	chip->frame[0] = vzalloc(array_size(RDCFB_FRAME_CAP, sizeof(u32)));
 	chip->frame[1] = vzalloc(array_size(RDCFB_FRAME_CAP, sizeof(u32)));
 	chip->snap = vzalloc(array_size(RDCFB_FRAME_CAP, sizeof(u32)));
+	chip->opq.ring = vmalloc(array_size(RDCFB_OPQ_WORDS, sizeof(u32)));
+	chip->opq.buf = kmalloc_array(RDCFB_OP_MAX_WORDS, sizeof(u32),
+				      GFP_KERNEL);
 	if (!chip->vram || !chip->dp || !chip->frame[0] || !chip->frame[1] ||
-	    !chip->snap) {
+	    !chip->snap || !chip->opq.ring || !chip->opq.buf) {
 		rdcfb_chip_free(chip);
 		return -ENOMEM;
 	}
@@ -262,18 +311,23 @@ void rdcfb_chip_start(struct rdcfb_chip *chip)
 /* Stop the clock and end every wait; the chip itself stays until free. */
 void rdcfb_chip_stop(struct rdcfb_chip *chip)
 {
-	unsigned long flags;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	WRITE_ONCE(chip->dying, true);
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	hrtimer_cancel(&chip->timer);
 	cancel_work_sync(&chip->pace_work);
 	wake_up_all(&chip->waitq);
 }
 
+/* No fb_ops can come any more (the framebuffer is unregistered). */
 void rdcfb_chip_free(struct rdcfb_chip *chip)
 {
+	cancel_work_sync(&chip->opq.work);
+	kfree(chip->opq.buf);
+	vfree(chip->opq.ring);
+	chip->opq.buf = NULL;
+	chip->opq.ring = NULL;
 	vfree(chip->snap);
 	vfree(chip->frame[1]);
 	vfree(chip->frame[0]);
@@ -289,12 +343,11 @@ void rdcfb_chip_free(struct rdcfb_chip *chip)
 /* RESET_N and BL_EN as the host drives them. */
 u32 rdcfb_chip_pins_in(struct rdcfb_chip *chip)
 {
-	unsigned long flags;
 	u32 v;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	v = chip->hw.pins_in;
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	return v;
 }
 
@@ -302,10 +355,9 @@ u32 rdcfb_chip_pins_in(struct rdcfb_chip *chip)
 void rdcfb_chip_set_pin(struct rdcfb_chip *chip, u32 pin, bool high)
 {
 	struct rdc_hw *hw = &chip->hw;
-	unsigned long flags;
 	u32 pins;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	pins = high ? hw->pins_in | pin : hw->pins_in & ~pin;
 	if (pins != hw->pins_in) {
 		rdc_hw_set_pins(hw, pins);
@@ -315,33 +367,31 @@ void rdcfb_chip_set_pin(struct rdcfb_chip *chip, u32 pin, bool high)
 		if (!chip->stepped)
 			rdcfb_update_period(chip);
 	}
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	wake_up_all(&chip->waitq);
 }
 
 u32 rdcfb_reg_read(struct rdcfb_chip *chip, u32 reg)
 {
-	unsigned long flags;
 	u32 v;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	v = rdc_hw_read(&chip->hw, reg);
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	return v;
 }
 
 void rdcfb_reg_write(struct rdcfb_chip *chip, u32 reg, u32 val)
 {
-	unsigned long flags;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	rdc_hw_write(&chip->hw, reg, val);
 	/* CONTROL (reset), FIFO_DATA: the DP's state may no longer be ours */
 	chip->fb_state_gen++;
 	rdcfb_irq_check_locked(chip);
 	if (!chip->stepped)
 		rdcfb_update_period(chip);
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 }
 
 /* ---- Waits --------------------------------------------------------------- */
@@ -395,15 +445,15 @@ static int rdcfb_wait_check(struct rdcfb_chip *chip,
  * 0 with the lock taken again, or -EINTR (a fatal signal) or -ENODEV (the
  * device is going) with it dropped.
  */
-static int rdcfb_chip_pause(struct rdcfb_chip *chip, unsigned long *flags)
+static int rdcfb_chip_pause(struct rdcfb_chip *chip)
 {
-	rdcfb_unlock_irqrestore(chip, *flags);
+	rdcfb_chip_unlock(chip);
 	if (fatal_signal_pending(current))
 		return -EINTR;
 	if (READ_ONCE(chip->dying))
 		return -ENODEV;
 	cond_resched();
-	rdcfb_lock_irqsave(chip, *flags);
+	rdcfb_chip_lock(chip);
 	return 0;
 }
 
@@ -415,21 +465,20 @@ static int rdcfb_wait_stepped(struct rdcfb_chip *chip, struct rdc_hw_wait *w)
 {
 	struct rdc_hw *hw = &chip->hw;
 	enum rdc_hw_wait_result res;
-	unsigned long flags;
 	int err;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	rdc_hw_wait_begin(hw, w);
 	for (;;) {
 		res = rdc_hw_wait_run(hw, w, RDCFB_RUN_SLICE);
 		rdcfb_irq_check_locked(chip);
 		if (res != RDC_HW_WAIT_MORE)
 			break;
-		err = rdcfb_chip_pause(chip, &flags);
+		err = rdcfb_chip_pause(chip);
 		if (err)
 			return err;
 	}
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	wake_up_all(&chip->waitq);
 	switch (res) {
 	case RDC_HW_WAIT_DONE:
@@ -452,19 +501,18 @@ static int rdcfb_wait_paced(struct rdcfb_chip *chip, struct rdc_hw_wait *w,
 {
 	unsigned long deadline = jiffies +
 		msecs_to_jiffies(timeout_ms ? timeout_ms : RDCFB_WAIT_TIMEOUT_MS);
-	unsigned long flags;
 	u64 seen;
 	long left;
 	int ret;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	rdc_hw_wait_begin(&chip->hw, w);
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	for (;;) {
-		rdcfb_lock_irqsave(chip, flags);
+		rdcfb_chip_lock(chip);
 		seen = chip->hw.now;
 		ret = rdcfb_wait_check(chip, w);
-		rdcfb_unlock_irqrestore(chip, flags);
+		rdcfb_chip_unlock(chip);
 		if (ret <= 0)
 			return ret;
 		left = (long)(deadline - jiffies);
@@ -500,7 +548,7 @@ static int rdcfb_chip_wait_sig(struct rdcfb_chip *chip,
 		     (w->term[i].reg % sizeof(u32) ||
 		      w->term[i].reg >= RDC_REG_WINDOW)))
 			return -EINVAL;
-	if (w->flags & ~RDCFB_WAIT_NEEDS_DP)
+	if (w->flags & ~RDCFB_WAIT_NEEDS_DP || w->budget > RDCFB_MAX_CYCLES)
 		return -EINVAL;
 	if (READ_ONCE(chip->dying))
 		return -ENODEV;
@@ -518,15 +566,16 @@ int rdcfb_chip_wait(struct rdcfb_chip *chip, const struct rdcfb_wait *w)
 int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles)
 {
 	struct rdc_hw *hw = &chip->hw;
-	unsigned long flags;
 	u64 end;
 	int err;
 
+	if (cycles > RDCFB_MAX_CYCLES)
+		return -EINVAL;
 	if (!chip->stepped)
 		return -EPERM;
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	if (cycles > U64_MAX - hw->now) {
-		rdcfb_unlock_irqrestore(chip, flags);
+		rdcfb_chip_unlock(chip);
 		return -ERANGE;
 	}
 	end = hw->now + cycles;
@@ -538,11 +587,11 @@ int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles)
 		rdc_hw_run_until(hw, min_t(u64, end,
 					   hw->now + RDCFB_RUN_SLICE));
 		rdcfb_irq_check_locked(chip);
-		err = rdcfb_chip_pause(chip, &flags);
+		err = rdcfb_chip_pause(chip);
 		if (err)
 			return err;
 	}
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	wake_up_all(&chip->waitq);
 	return 0;
 }
@@ -556,15 +605,14 @@ int rdcfb_chip_vsync(struct rdcfb_chip *chip)
 		.timeout_ms = RDCFB_VSYNC_TIMEOUT_MS,
 	};
 	struct rdc_hw *hw = &chip->hw;
-	unsigned long flags;
 	u64 next;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	next = rdc_port_next_vblank(hw);
 	w.term[0].value = rdc_hw_read(hw, RDC_REG_FRAME_COUNT) + 1;
 	/* the budget reaches just past the next vblank */
 	w.budget = next - hw->now + 1;
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	if (next == RDC_NEVER)
 		return -ETIMEDOUT;
 	return rdcfb_chip_wait(chip, &w);
@@ -582,18 +630,17 @@ int rdcfb_chip_vsync(struct rdcfb_chip *chip)
 int rdcfb_chip_submit(struct rdcfb_chip *chip, const u32 *words, u32 n)
 {
 	struct rdc_hw *hw = &chip->hw;
-	unsigned long flags;
 	u32 free_words;
 	int ret = 0;
 
 	while (n) {
-		rdcfb_lock_irqsave(chip, flags);
+		rdcfb_chip_lock(chip);
 		chip->fb_state_gen++;
 		free_words = rdc_hw_read(hw, RDC_REG_FIFO_FREE);
 		for (; free_words && n; free_words--, n--, words++)
 			rdc_hw_write(hw, RDC_REG_FIFO_DATA, *words);
 		chip->submitting = n != 0;
-		rdcfb_unlock_irqrestore(chip, flags);
+		rdcfb_chip_unlock(chip);
 		if (n) {
 			struct rdcfb_wait w = {
 				.term[0] = { .kind = RDCFB_WAIT_GE,
@@ -609,13 +656,13 @@ int rdcfb_chip_submit(struct rdcfb_chip *chip, const u32 *words, u32 n)
 				break;
 		}
 	}
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	chip->submitting = false;
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	return ret;
 }
 
-/* ---- fb_ops' side: atomic context, chip->lock held ----------------------- */
+/* ---- fb_ops' side: the queue's records, chip->lock held ------------------ */
 
 /*
  * Can the DP take fb_ops' commands: enabled, not halted, and no client's
@@ -632,7 +679,9 @@ bool rdcfb_dp_usable(struct rdcfb_chip *chip)
 
 /*
  * Queue words; when the FIFO is full, run the DP for a bounded slice as a
- * driver would poll FIFO_FREE.  The caller checked rdcfb_dp_usable.
+ * driver would poll FIFO_FREE, giving way between slices (the lock is a
+ * mutex, so none of this holds interrupts off).  The caller checked
+ * rdcfb_dp_usable.
  */
 int rdcfb_push_locked(struct rdcfb_chip *chip, const u32 *words, u32 n)
 {
@@ -648,6 +697,7 @@ int rdcfb_push_locked(struct rdcfb_chip *chip, const u32 *words, u32 n)
 				return -ETIMEDOUT;
 			rdc_hw_run_until_idle(hw, hw->now + RDCFB_SYNC_SLICE);
 			rdcfb_irq_check_locked(chip);
+			cond_resched();
 			continue;
 		}
 		for (; free_words && n; free_words--, n--, words++)
@@ -665,6 +715,7 @@ void rdcfb_drain_locked(struct rdcfb_chip *chip)
 	for (tries = 0; tries < RDCFB_SYNC_TRIES; tries++) {
 		if (rdc_hw_run_until_idle(hw, hw->now + RDCFB_SYNC_SLICE))
 			break;
+		cond_resched();
 	}
 	rdcfb_irq_check_locked(chip);
 }
@@ -674,9 +725,8 @@ void rdcfb_drain_locked(struct rdcfb_chip *chip)
 void rdcfb_chip_counters(struct rdcfb_chip *chip, struct rdcfb_counters *c)
 {
 	struct rdc_hw *hw = &chip->hw;
-	unsigned long flags;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	c->now = hw->now;
 	c->busy = hw->perf.busy;
 	c->stall = hw->perf.stall;
@@ -687,7 +737,7 @@ void rdcfb_chip_counters(struct rdcfb_chip *chip, struct rdcfb_counters *c)
 	c->fence = hw->fence;
 	c->frames = (u32)chip->frames;
 	c->reserved = 0;
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 }
 
 /* zlib's CRC-32 of the pixels as little-endian bytes. */
@@ -708,12 +758,13 @@ static u32 rdcfb_crc(const u32 *px, size_t count)
 /*
  * Copy the latest complete frame to chip->snap (snap_lock held).  It is
  * copied in pieces with the lock dropped between them; a frame completed
- * meanwhile (the buffers swap) means a retry, the last one in one hold.
- * Returns 0, or -EAGAIN before the first frame.
+ * meanwhile (the buffers swap) means a retry, the last one in one hold of
+ * the lock (which stops the simulation, not interrupts), giving way
+ * between pieces all the same.  Returns 0, or -EAGAIN before the first
+ * frame.
  */
 int rdcfb_chip_snapshot(struct rdcfb_chip *chip)
 {
-	unsigned long flags;
 	unsigned int tries;
 	const u32 *f;
 	u32 w, h;
@@ -722,17 +773,17 @@ int rdcfb_chip_snapshot(struct rdcfb_chip *chip)
 
 	lockdep_assert_held(&chip->snap_lock);
 	for (tries = 0; tries < RDCFB_SNAP_TRIES; tries++) {
-		rdcfb_lock_irqsave(chip, flags);
+		rdcfb_chip_lock(chip);
 		f = rdc_hw_frame(&chip->hw, &w, &h);
 		seq = chip->frames;
 		if (!f) {
-			rdcfb_unlock_irqrestore(chip, flags);
+			rdcfb_chip_unlock(chip);
 			chip->snap_seq = 0;
 			return -EAGAIN;
 		}
 		if (seq == chip->snap_seq && w == chip->snap_w &&
 		    h == chip->snap_h) {
-			rdcfb_unlock_irqrestore(chip, flags);
+			rdcfb_chip_unlock(chip);
 			return 0;
 		}
 		bytes = (size_t)w * h * sizeof(u32);
@@ -740,23 +791,25 @@ int rdcfb_chip_snapshot(struct rdcfb_chip *chip)
 			size_t len = min_t(size_t, RDCFB_SNAP_CHUNK, bytes - off);
 
 			memcpy((u8 *)chip->snap + off, (const u8 *)f + off, len);
-			if (tries + 1 == RDCFB_SNAP_TRIES)
+			if (tries + 1 == RDCFB_SNAP_TRIES) {
+				cond_resched();
 				continue;
-			rdcfb_unlock_irqrestore(chip, flags);
+			}
+			rdcfb_chip_unlock(chip);
 			cond_resched();
-			rdcfb_lock_irqsave(chip, flags);
+			rdcfb_chip_lock(chip);
 			if (chip->frames != seq)
 				break;
 		}
 		if (chip->frames == seq) {
-			rdcfb_unlock_irqrestore(chip, flags);
+			rdcfb_chip_unlock(chip);
 			chip->snap_seq = seq;
 			chip->snap_w = w;
 			chip->snap_h = h;
 			chip->snap_crc = rdcfb_crc(chip->snap, (size_t)w * h);
 			return 0;
 		}
-		rdcfb_unlock_irqrestore(chip, flags);
+		rdcfb_chip_unlock(chip);
 	}
 	return -EAGAIN;
 }

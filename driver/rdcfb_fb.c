@@ -4,9 +4,11 @@
  * the CLUT, pan writes the latched base, blank drives the scanout enable,
  * and fbcon's fillrect, copyarea and imageblit become display-processor
  * commands (FILL_RECT, BLIT, MONO / HOST_BLIT), so the console is drawn by
- * the DP and its cycles are counted.  The private ioctls of rdcfb_ioctl.h
- * live here too.
+ * the DP and its cycles are counted.  fbcon may call them in atomic
+ * context, so they queue their work for the chip (the fb-op queue, below).
+ * The private ioctls of rdcfb_ioctl.h live here too.
  */
+#include <linux/compat.h>
 #include <linux/fb.h>
 #include <linux/minmax.h>
 #include <linux/mm.h>
@@ -198,6 +200,176 @@ static u32 rdcfb_base(const struct rdcfb_par *par,
 	       rdc_format_row_bytes(par->fmt, var->xoffset);
 }
 
+/* ---- The fb-op queue ----------------------------------------------------- */
+
+/*
+ * fbcon calls fb_ops in atomic context too: kernel messages are printed
+ * with interrupts off, an oops may print from an interrupt, and the
+ * console is unblanked from there.  So no fb_op takes chip->lock (a mutex)
+ * or runs the chip itself.  Each puts a record on the queue under
+ * opq.lock (held for one record: a header and at most one DP command's
+ * data) and the records are applied in order under chip->lock: at once
+ * where the caller may sleep (preemptible(): a tty write, an ioctl), else
+ * by the queue's worker or whoever takes the chip next.  A record keeps
+ * what the op meant when it came: colours looked up, image rows packed,
+ * the screen's format and size.  A full queue is applied first where the
+ * caller may sleep; in atomic context the record is dropped and counted
+ * (fb_dropped in sysfs).
+ */
+enum rdcfb_op_kind {
+	RDCFB_OPK_FILL,
+	RDCFB_OPK_COPY,
+	RDCFB_OPK_IMAGE,
+	RDCFB_OPK_REGS, /* data: register, value pairs */
+	RDCFB_OPK_BLANK,
+};
+
+struct rdcfb_op {
+	u32 kind; /* enum rdcfb_op_kind */
+	u32 words; /* data words after the header */
+	u32 fmt, stride, vw, vh; /* draw ops: the virtual screen */
+	u32 rop, fg, bg;
+	u32 sx, sy, dx, dy, w, h;
+	u32 arg; /* IMAGE: 1 bpp rows (MONO), else pixels; BLANK: level */
+};
+
+/* An image record holds about this many data words, one row at least. */
+#define RDCFB_OP_BAND_WORDS 512u
+
+/* A record being written: opq.lock is held from begin to end. */
+struct rdcfb_qw {
+	struct rdcfb_chip *chip;
+	unsigned long flags;
+	u32 start, tail; /* ring positions of its header, of the next word */
+	u32 acc; /* a data word being filled bits at a time */
+	u32 acc_bits;
+};
+
+static void rdcfb_q_put(struct rdcfb_qw *q, u32 word)
+{
+	q->chip->opq.ring[q->tail++ % RDCFB_OPQ_WORDS] = word;
+}
+
+/* Data bits go into words little-endian (byte 0 in bits 7:0). */
+static void rdcfb_q_put_bits(struct rdcfb_qw *q, u32 v, u32 bits)
+{
+	q->acc |= v << q->acc_bits;
+	q->acc_bits += bits;
+	if (q->acc_bits == RDCFB_BITS_PER_WORD) {
+		rdcfb_q_put(q, q->acc);
+		q->acc = 0;
+		q->acc_bits = 0;
+	}
+}
+
+/* End a data row: it is padded to a word. */
+static void rdcfb_q_end_row(struct rdcfb_qw *q)
+{
+	if (q->acc_bits)
+		rdcfb_q_put(q, q->acc);
+	q->acc = 0;
+	q->acc_bits = 0;
+}
+
+/* Take the chip, which applies the queue, where the caller may sleep. */
+static void rdcfb_q_apply(struct rdcfb_chip *chip)
+{
+	rdcfb_chip_lock(chip);
+	rdcfb_chip_unlock(chip);
+}
+
+/*
+ * Start a record (true, opq.lock held until rdcfb_q_end), or drop it
+ * (false) when the queue has no room for it and the caller cannot wait.
+ */
+static bool rdcfb_q_begin(struct rdcfb_chip *chip, struct rdcfb_qw *q,
+			  const struct rdcfb_op *op)
+{
+	struct rdcfb_opq *oq = &chip->opq;
+	u32 need = RDCFB_OP_HDR_WORDS + op->words;
+	const u32 *hdr = (const u32 *)op;
+	bool can_wait = preemptible(); /* asked before the lock is taken */
+	u32 i;
+
+	BUILD_BUG_ON(sizeof(*op) != RDCFB_OP_HDR_WORDS * sizeof(u32));
+	q->chip = chip;
+	q->acc = 0;
+	q->acc_bits = 0;
+	if (WARN_ON_ONCE(op->words > RDC_CMD_MAX_ARGS))
+		return false;
+	rdcfb_spin_lock(&oq->lock, q->flags, oq->t0);
+	if (RDCFB_OPQ_WORDS - oq->count < need && can_wait) {
+		rdcfb_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
+		rdcfb_q_apply(chip);
+		rdcfb_spin_lock(&oq->lock, q->flags, oq->t0);
+	}
+	if (RDCFB_OPQ_WORDS - oq->count < need) {
+		oq->dropped++;
+		rdcfb_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
+		return false;
+	}
+	q->start = oq->head + oq->count;
+	q->tail = q->start;
+	for (i = 0; i < RDCFB_OP_HDR_WORDS; i++)
+		rdcfb_q_put(q, hdr[i]);
+	return true;
+}
+
+/* Commit the record, then see that it is applied. */
+static void rdcfb_q_end(struct rdcfb_qw *q)
+{
+	struct rdcfb_chip *chip = q->chip;
+	struct rdcfb_opq *oq = &chip->opq;
+
+	rdcfb_q_end_row(q);
+	/* the header says how many data words there really are */
+	oq->ring[(q->start + 1) % RDCFB_OPQ_WORDS] =
+		q->tail - q->start - RDCFB_OP_HDR_WORDS;
+	oq->count = q->tail - oq->head;
+	rdcfb_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
+	if (preemptible())
+		rdcfb_q_apply(chip);
+	else
+		queue_work(system_highpri_wq, &oq->work);
+}
+
+/* A record with nothing but a header. */
+static void rdcfb_q_op(struct rdcfb_chip *chip, const struct rdcfb_op *op)
+{
+	struct rdcfb_qw q;
+
+	if (rdcfb_q_begin(chip, &q, op))
+		rdcfb_q_end(&q);
+}
+
+/* Register writes, in order: `n` pairs of register and value. */
+static void rdcfb_q_regs(struct rdcfb_chip *chip, const u32 *pairs, u32 n)
+{
+	struct rdcfb_op op = { .kind = RDCFB_OPK_REGS, .words = 2 * n };
+	struct rdcfb_qw q;
+	u32 i;
+
+	if (!rdcfb_q_begin(chip, &q, &op))
+		return;
+	for (i = 0; i < 2 * n; i++)
+		rdcfb_q_put(&q, pairs[i]);
+	rdcfb_q_end(&q);
+}
+
+u64 rdcfb_ops_dropped(struct rdcfb_chip *chip)
+{
+	struct rdcfb_opq *oq = &chip->opq;
+	unsigned long flags;
+	u64 n;
+
+	rdcfb_spin_lock(&oq->lock, flags, oq->t0);
+	n = oq->dropped;
+	rdcfb_spin_unlock(&oq->lock, flags, oq->t0, &chip->irqoff);
+	return n;
+}
+
+/* ---- fb_ops: the mode, the palette, panning and blanking ------------- */
+
 static int rdcfb_set_par(struct fb_info *info)
 {
 	static const u32 timing_regs[] = {
@@ -209,7 +381,7 @@ static int rdcfb_set_par(struct fb_info *info)
 	struct rdcfb_par *par = info->par;
 	struct rdcfb_chip *chip = par->chip;
 	struct rdc_timing t;
-	unsigned long flags;
+	u32 regs[2 * (3 + ARRAY_SIZE(timing_regs))], *r = regs;
 	u32 val[ARRAY_SIZE(timing_regs)];
 	unsigned int i;
 
@@ -231,14 +403,17 @@ static int rdcfb_set_par(struct fb_info *info)
 	val[8] = t.pixclk_khz;
 	val[9] = t.flags;
 
-	rdcfb_lock_irqsave(chip, flags);
-	rdc_hw_write(&chip->hw, RDC_REG_FB_FORMAT, par->fmt);
-	rdc_hw_write(&chip->hw, RDC_REG_FB_STRIDE, par->stride);
-	rdc_hw_write(&chip->hw, RDC_REG_FB_BASE, rdcfb_base(par, &info->var));
-	for (i = 0; i < ARRAY_SIZE(timing_regs); i++)
-		rdc_hw_write(&chip->hw, timing_regs[i], val[i]);
-	par->state_valid = false;
-	rdcfb_unlock_irqrestore(chip, flags);
+	*r++ = RDC_REG_FB_FORMAT;
+	*r++ = par->fmt;
+	*r++ = RDC_REG_FB_STRIDE;
+	*r++ = par->stride;
+	*r++ = RDC_REG_FB_BASE;
+	*r++ = rdcfb_base(par, &info->var);
+	for (i = 0; i < ARRAY_SIZE(timing_regs); i++) {
+		*r++ = timing_regs[i];
+		*r++ = val[i];
+	}
+	rdcfb_q_regs(chip, regs, ARRAY_SIZE(regs) / 2);
 	dev_dbg(chip->dev, "mode %ux%u (%ux%u virtual) format %u stride %u\n",
 		t.h_display, t.v_display, info->var.xres_virtual,
 		info->var.yres_virtual, par->fmt, par->stride);
@@ -252,27 +427,18 @@ static u32 rdcfb_pack(u32 fmt, u32 r, u32 g, u32 b)
 	return (r >> 8) << 16 | (g >> 8) << 8 | b >> 8;
 }
 
-static void rdcfb_clut_write_locked(struct rdcfb_chip *chip, u32 regno,
-				    u32 r, u32 g, u32 b)
-{
-	rdc_hw_write(&chip->hw, RDC_REG_CLUT_INDEX, regno);
-	rdc_hw_write(&chip->hw, RDC_REG_CLUT_DATA,
-		     rdcfb_pack(RDC_FMT_XRGB8888, r, g, b));
-}
-
 static int rdcfb_setcolreg(unsigned int regno, unsigned int red,
 			   unsigned int green, unsigned int blue,
 			   unsigned int transp, struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
-	unsigned long flags;
+	u32 regs[] = { RDC_REG_CLUT_INDEX, regno, RDC_REG_CLUT_DATA,
+		       rdcfb_pack(RDC_FMT_XRGB8888, red, green, blue) };
 
 	if (regno >= RDC_CLUT_ENTRIES)
 		return -EINVAL;
 	if (info->fix.visual == FB_VISUAL_PSEUDOCOLOR) {
-		rdcfb_lock_irqsave(par->chip, flags);
-		rdcfb_clut_write_locked(par->chip, regno, red, green, blue);
-		rdcfb_unlock_irqrestore(par->chip, flags);
+		rdcfb_q_regs(par->chip, regs, ARRAY_SIZE(regs) / 2);
 	} else if (regno < RDCFB_PSEUDO_COLOURS) {
 		par->pseudo_palette[regno] = rdcfb_pack(par->fmt, red, green,
 							blue);
@@ -280,11 +446,12 @@ static int rdcfb_setcolreg(unsigned int regno, unsigned int red,
 	return 0;
 }
 
-/* The whole map in one lock hold: one CLUT_INDEX write, then the data. */
+/* The whole map in one record: one CLUT_INDEX write, then the data. */
 static int rdcfb_setcmap(struct fb_cmap *cmap, struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
-	unsigned long flags;
+	struct rdcfb_op op = { .kind = RDCFB_OPK_REGS };
+	struct rdcfb_qw q;
 	u32 i;
 
 	if (cmap->start >= RDC_CLUT_ENTRIES ||
@@ -296,13 +463,17 @@ static int rdcfb_setcmap(struct fb_cmap *cmap, struct fb_info *info)
 					cmap->green[i], cmap->blue[i], 0, info);
 		return 0;
 	}
-	rdcfb_lock_irqsave(par->chip, flags);
-	rdc_hw_write(&par->chip->hw, RDC_REG_CLUT_INDEX, cmap->start);
-	for (i = 0; i < cmap->len; i++)
-		rdc_hw_write(&par->chip->hw, RDC_REG_CLUT_DATA,
-			     rdcfb_pack(RDC_FMT_XRGB8888, cmap->red[i],
-					cmap->green[i], cmap->blue[i]));
-	rdcfb_unlock_irqrestore(par->chip, flags);
+	op.words = 2 * (1 + cmap->len);
+	if (!rdcfb_q_begin(par->chip, &q, &op))
+		return 0;
+	rdcfb_q_put(&q, RDC_REG_CLUT_INDEX);
+	rdcfb_q_put(&q, cmap->start);
+	for (i = 0; i < cmap->len; i++) {
+		rdcfb_q_put(&q, RDC_REG_CLUT_DATA);
+		rdcfb_q_put(&q, rdcfb_pack(RDC_FMT_XRGB8888, cmap->red[i],
+					   cmap->green[i], cmap->blue[i]));
+	}
+	rdcfb_q_end(&q);
 	return 0;
 }
 
@@ -310,38 +481,22 @@ static int rdcfb_pan_display(struct fb_var_screeninfo *var,
 			     struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
-	unsigned long flags;
+	u32 regs[] = { RDC_REG_FB_BASE, rdcfb_base(par, var) };
 
 	if (var->xoffset > info->var.xres_virtual - info->var.xres ||
 	    var->yoffset > info->var.yres_virtual - info->var.yres)
 		return -EINVAL;
-	rdcfb_lock_irqsave(par->chip, flags);
-	rdc_hw_write(&par->chip->hw, RDC_REG_FB_BASE, rdcfb_base(par, var));
-	rdcfb_unlock_irqrestore(par->chip, flags);
+	rdcfb_q_regs(par->chip, regs, ARRAY_SIZE(regs) / 2);
 	return 0;
 }
 
+/* Unblank sets SCANOUT_EN and drives BL_EN high; the rest clear both. */
 static int rdcfb_blank(int blank, struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
-	struct rdc_hw *hw = &par->chip->hw;
-	unsigned long flags;
-	u32 ctl, pins;
+	struct rdcfb_op op = { .kind = RDCFB_OPK_BLANK, .arg = blank };
 
-	rdcfb_lock_irqsave(par->chip, flags);
-	ctl = rdc_hw_read(hw, RDC_REG_CONTROL) &
-	      ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
-	pins = hw->pins_in;
-	if (blank == FB_BLANK_UNBLANK) {
-		ctl |= RDC_CONTROL_SCANOUT_EN;
-		pins |= RDC_PIN_BL_EN;
-	} else {
-		ctl &= ~RDC_CONTROL_SCANOUT_EN;
-		pins &= ~RDC_PIN_BL_EN;
-	}
-	rdc_hw_write(hw, RDC_REG_CONTROL, ctl);
-	rdc_hw_set_pins(hw, pins);
-	rdcfb_unlock_irqrestore(par->chip, flags);
+	rdcfb_q_op(par->chip, &op);
 	return 0;
 }
 
@@ -352,7 +507,7 @@ static int rdcfb_mmap(struct fb_info *info, struct vm_area_struct *vma)
 	return remap_vmalloc_range(vma, par->chip->vram, vma->vm_pgoff);
 }
 
-/* ---- Drawing ------------------------------------------------------------- */
+/* ---- Drawing: records to DP commands ------------------------------------- */
 
 /* Command words on their way to the FIFO, staged a few at a time. */
 struct rdcfb_stage {
@@ -360,8 +515,6 @@ struct rdcfb_stage {
 	u32 w[RDCFB_STAGE_WORDS];
 	u32 n;
 	int err;
-	u32 acc; /* a data word being filled byte by byte */
-	u32 acc_bits;
 };
 
 static void rdcfb_flush(struct rdcfb_stage *s)
@@ -378,64 +531,35 @@ static void rdcfb_put(struct rdcfb_stage *s, u32 word)
 	s->w[s->n++] = word;
 }
 
-/* Data bytes go into words little-endian (byte 0 in bits 7:0). */
-static void rdcfb_put_bits(struct rdcfb_stage *s, u32 v, u32 bits)
-{
-	s->acc |= v << s->acc_bits;
-	s->acc_bits += bits;
-	if (s->acc_bits == RDCFB_BITS_PER_WORD) {
-		rdcfb_put(s, s->acc);
-		s->acc = 0;
-		s->acc_bits = 0;
-	}
-}
-
-/* End a data row: it is padded to a word. */
-static void rdcfb_end_row(struct rdcfb_stage *s)
-{
-	if (s->acc_bits)
-		rdcfb_put(s, s->acc);
-	s->acc = 0;
-	s->acc_bits = 0;
-}
-
 /*
- * Claim the DP for an fb op (chip->lock held).  The DP state fb_ops rely
- * on is set again whenever a client may have changed it: the visible
- * surface as DST and SRC, a clip of all of it, and no pattern, transform,
- * alpha or colour key.  Returns false if the DP cannot take commands now:
- * the op then draws with the CPU after the queued commands ran.
+ * The DP state fb_ops rely on is set again whenever a client may have
+ * changed it, or the screen changed: the op's screen as DST and SRC, a
+ * clip of all of it, and no pattern, transform, alpha or colour key.
  */
-static bool rdcfb_begin(struct fb_info *info, struct rdcfb_stage *s)
+static void rdcfb_begin(struct rdcfb_par *par, const struct rdcfb_op *op,
+			struct rdcfb_stage *s)
 {
-	struct rdcfb_par *par = info->par;
 	struct rdcfb_chip *chip = par->chip;
-	u32 wh = RDC_WH(info->var.xres_virtual, info->var.yres_virtual);
+	u32 wh = RDC_WH(op->vw, op->vh);
 	int k;
 
 	s->chip = chip;
 	s->n = 0;
 	s->err = 0;
-	s->acc = 0;
-	s->acc_bits = 0;
-	if (!rdcfb_dp_usable(chip)) {
-		if ((chip->hw.control & RDC_CONTROL_DP_EN) &&
-		    !(chip->hw.dp_status & RDC_STATUS_DP_HALTED))
-			rdcfb_drain_locked(chip);
-		return false;
-	}
-	if (par->state_valid && par->state_gen == chip->fb_state_gen)
-		return true;
+	if (par->state_valid && par->state_gen == chip->fb_state_gen &&
+	    par->dp_fmt == op->fmt && par->dp_stride == op->stride &&
+	    par->dp_wh == wh)
+		return;
 	for (k = 0; k < 2; k++) {
 		rdcfb_put(s, RDC_CMD(k ? RDC_OP_SET_SRC : RDC_OP_SET_DST, 0, 4));
 		rdcfb_put(s, 0);
-		rdcfb_put(s, par->stride);
+		rdcfb_put(s, op->stride);
 		rdcfb_put(s, wh);
-		rdcfb_put(s, par->fmt);
+		rdcfb_put(s, op->fmt);
 	}
 	rdcfb_put(s, RDC_CMD(RDC_OP_SET_CLIP, 0, 2));
 	rdcfb_put(s, RDC_XY(0, 0));
-	rdcfb_put(s, RDC_XY(info->var.xres_virtual, info->var.yres_virtual));
+	rdcfb_put(s, wh);
 	rdcfb_put(s, RDC_CMD(RDC_OP_SET_PATTERN, RDC_PAT_NONE, 0));
 	rdcfb_put(s, RDC_CMD(RDC_OP_SET_TRANSFORM, 0, 0));
 	rdcfb_put(s, RDC_CMD(RDC_OP_SET_ALPHA, 0, 1));
@@ -444,19 +568,231 @@ static bool rdcfb_begin(struct fb_info *info, struct rdcfb_stage *s)
 	rdcfb_put(s, 0);
 	par->state_valid = true;
 	par->state_gen = chip->fb_state_gen;
-	return true;
+	par->dp_fmt = op->fmt;
+	par->dp_stride = op->stride;
+	par->dp_wh = wh;
 }
 
-static void rdcfb_end(struct fb_info *info, struct rdcfb_stage *s)
+static void rdcfb_end(struct rdcfb_par *par, struct rdcfb_stage *s)
 {
-	struct rdcfb_par *par = info->par;
-
 	rdcfb_flush(s);
 	if (s->err) {
 		/* a command may be cut short: set everything again next time */
 		par->state_valid = false;
 		dev_dbg(par->chip->dev, "fb op dropped: %d\n", s->err);
 	}
+}
+
+static void rdcfb_dp_draw(struct rdcfb_par *par, const struct rdcfb_op *op,
+			  const u32 *data)
+{
+	struct rdcfb_stage s;
+
+	rdcfb_begin(par, op, &s);
+	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
+	rdcfb_put(&s, op->rop);
+	switch (op->kind) {
+	case RDCFB_OPK_FILL:
+		rdcfb_put(&s, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+		rdcfb_put(&s, op->fg);
+		rdcfb_put(&s, RDC_CMD(RDC_OP_FILL_RECT, 0, 2));
+		rdcfb_put(&s, RDC_XY(op->dx, op->dy));
+		rdcfb_put(&s, RDC_WH(op->w, op->h));
+		break;
+	case RDCFB_OPK_COPY:
+		rdcfb_put(&s, RDC_CMD(RDC_OP_BLIT, 0, 3));
+		rdcfb_put(&s, RDC_XY(op->sx, op->sy));
+		rdcfb_put(&s, RDC_XY(op->dx, op->dy));
+		rdcfb_put(&s, RDC_WH(op->w, op->h));
+		break;
+	default:
+		if (op->arg) {
+			rdcfb_put(&s, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+			rdcfb_put(&s, op->fg);
+			rdcfb_put(&s, RDC_CMD(RDC_OP_SET_BG, 0, 1));
+			rdcfb_put(&s, op->bg);
+		}
+		rdcfb_put(&s, RDC_CMD(op->arg ? RDC_OP_MONO : RDC_OP_HOST_BLIT,
+				      0, RDCFB_DATA_ARGS + op->words));
+		rdcfb_put(&s, RDC_XY(op->dx, op->dy));
+		rdcfb_put(&s, RDC_WH(op->w, op->h));
+		rdcfb_flush(&s);
+		if (!s.err)
+			s.err = rdcfb_push_locked(s.chip, data, op->words);
+		break;
+	}
+	rdcfb_end(par, &s);
+}
+
+/* ---- Drawing: records by the CPU, when the DP cannot take them ---------- */
+
+static void rdcfb_cpu_pixel(u8 *p, u32 bytes, u32 v, bool xor)
+{
+	switch (bytes) {
+	case 1:
+		*p = xor ? *p ^ v : v;
+		break;
+	case 2:
+		*(u16 *)p = xor ? *(u16 *)p ^ v : v;
+		break;
+	default:
+		*(u32 *)p = xor ? *(u32 *)p ^ v : v;
+		break;
+	}
+}
+
+/* A pixel of an image record's row: a 1 bpp bit (MSB first) or a pixel. */
+static u32 rdcfb_cpu_src(const struct rdcfb_op *op, const u32 *row, u32 x,
+			 u32 bpp)
+{
+	u32 bit;
+
+	if (op->arg) {
+		bit = (row[x / 32] >> ((x / 8 % 4) * 8 + 7 - x % 8)) & 1;
+		return bit ? op->fg : op->bg;
+	}
+	bit = x * bpp;
+	return (row[bit / 32] >> (bit % 32)) & GENMASK(bpp - 1, 0);
+}
+
+/*
+ * Draw a record with the CPU, as the DP would have: inside the op's
+ * screen, which lies inside VRAM (check_var saw to it; checked again).
+ */
+static void rdcfb_cpu_draw(struct rdcfb_chip *chip, const struct rdcfb_op *op,
+			   const u32 *data)
+{
+	u32 bpp = rdc_format_bpp(op->fmt), bytes = bpp / 8;
+	u32 w = op->w, h = op->h, wpr, x, y, i;
+	u8 *row;
+
+	if (!bytes || (u64)op->stride * op->vh > chip->hw.vram_size ||
+	    (u64)op->vw * bytes > op->stride || op->dx >= op->vw ||
+	    op->dy >= op->vh)
+		return;
+	w = min(w, op->vw - op->dx);
+	h = min(h, op->vh - op->dy);
+	if (op->kind == RDCFB_OPK_COPY) {
+		if (op->sx >= op->vw || op->sy >= op->vh)
+			return;
+		w = min(w, op->vw - op->sx);
+		h = min(h, op->vh - op->sy);
+		for (i = 0; i < h; i++) {
+			/* rows in the order that never reads one written */
+			y = op->dy <= op->sy ? i : h - 1 - i;
+			memmove(chip->vram + (size_t)(op->dy + y) * op->stride +
+					op->dx * bytes,
+				chip->vram + (size_t)(op->sy + y) * op->stride +
+					op->sx * bytes,
+				(size_t)w * bytes);
+		}
+		return;
+	}
+	wpr = DIV_ROUND_UP(op->w * (op->arg ? 1 : bpp), RDCFB_BITS_PER_WORD);
+	if (op->kind == RDCFB_OPK_IMAGE && (u64)wpr * op->h > op->words)
+		return;
+	for (y = 0; y < h; y++) {
+		row = chip->vram + (size_t)(op->dy + y) * op->stride +
+		      op->dx * bytes;
+		for (x = 0; x < w; x++)
+			rdcfb_cpu_pixel(row + x * bytes, bytes,
+					op->kind == RDCFB_OPK_FILL ? op->fg :
+					rdcfb_cpu_src(op, data + y * wpr, x,
+						      bpp),
+					op->rop == RDC_ROP_XOR);
+	}
+}
+
+/* ---- Applying the queue (chip->lock held) -------------------------------- */
+
+static void rdcfb_blank_locked(struct rdcfb_chip *chip, int blank)
+{
+	struct rdc_hw *hw = &chip->hw;
+	u32 ctl, pins;
+
+	ctl = rdc_hw_read(hw, RDC_REG_CONTROL) &
+	      ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
+	pins = hw->pins_in;
+	if (blank == FB_BLANK_UNBLANK) {
+		ctl |= RDC_CONTROL_SCANOUT_EN;
+		pins |= RDC_PIN_BL_EN;
+	} else {
+		ctl &= ~RDC_CONTROL_SCANOUT_EN;
+		pins &= ~RDC_PIN_BL_EN;
+	}
+	rdc_hw_write(hw, RDC_REG_CONTROL, ctl);
+	rdc_hw_set_pins(hw, pins);
+}
+
+static void rdcfb_op_run(struct rdcfb_par *par, const struct rdcfb_op *op,
+			 const u32 *data)
+{
+	struct rdcfb_chip *chip = par->chip;
+	struct rdc_hw *hw = &chip->hw;
+	u32 i;
+
+	switch (op->kind) {
+	case RDCFB_OPK_REGS:
+		for (i = 0; i + 1 < op->words; i += 2)
+			rdc_hw_write(hw, data[i], data[i + 1]);
+		rdcfb_irq_check_locked(chip);
+		return;
+	case RDCFB_OPK_BLANK:
+		rdcfb_blank_locked(chip, op->arg);
+		rdcfb_irq_check_locked(chip);
+		return;
+	}
+	if (rdcfb_dp_usable(chip)) {
+		rdcfb_dp_draw(par, op, data);
+		return;
+	}
+	/* the CPU draws: after what the DP has queued */
+	if ((hw->control & RDC_CONTROL_DP_EN) &&
+	    !(hw->dp_status & RDC_STATUS_DP_HALTED))
+		rdcfb_drain_locked(chip);
+	rdcfb_cpu_draw(chip, op, data);
+}
+
+/* Apply every queued record, in order (rdcfb_chip_lock does). */
+void rdcfb_ops_apply_locked(struct rdcfb_chip *chip)
+{
+	struct rdcfb_opq *oq = &chip->opq;
+	struct rdcfb_op op;
+	unsigned long flags;
+	u32 i, n;
+
+	lockdep_assert_held(&chip->lock);
+	for (;;) {
+		rdcfb_spin_lock(&oq->lock, flags, oq->t0);
+		n = oq->count ? RDCFB_OP_HDR_WORDS +
+				oq->ring[(oq->head + 1) % RDCFB_OPQ_WORDS] : 0;
+		n = min3(n, oq->count, RDCFB_OP_MAX_WORDS);
+		for (i = 0; i < n; i++)
+			oq->buf[i] = oq->ring[(oq->head + i) % RDCFB_OPQ_WORDS];
+		oq->head = (oq->head + n) % RDCFB_OPQ_WORDS;
+		oq->count -= n;
+		rdcfb_spin_unlock(&oq->lock, flags, oq->t0, &chip->irqoff);
+		if (n < RDCFB_OP_HDR_WORDS)
+			break;
+		memcpy(&op, oq->buf, sizeof(op));
+		op.words = n - RDCFB_OP_HDR_WORDS;
+		rdcfb_op_run(chip->info->par, &op, oq->buf + RDCFB_OP_HDR_WORDS);
+		cond_resched();
+	}
+}
+
+/* ---- fb_ops: drawing ----------------------------------------------------- */
+
+/* A draw record on the current screen. */
+static struct rdcfb_op rdcfb_op_of(struct fb_info *info, u32 kind)
+{
+	struct rdcfb_par *par = info->par;
+
+	return (struct rdcfb_op){
+		.kind = kind, .fmt = par->fmt, .stride = par->stride,
+		.vw = info->var.xres_virtual, .vh = info->var.yres_virtual,
+		.rop = RDC_ROP_COPY,
+	};
 }
 
 static u32 rdcfb_colour(struct fb_info *info, u32 idx)
@@ -473,133 +809,105 @@ static u32 rdcfb_colour(struct fb_info *info, u32 idx)
 void rdcfb_fill(struct fb_info *info, const struct fb_fillrect *r)
 {
 	struct rdcfb_par *par = info->par;
-	struct rdcfb_stage s;
-	unsigned long flags;
+	struct rdcfb_op op = rdcfb_op_of(info, RDCFB_OPK_FILL);
 
 	if (!r->width || !r->height)
 		return;
-	rdcfb_lock_irqsave(par->chip, flags);
-	if (!rdcfb_begin(info, &s)) {
-		rdcfb_unlock_irqrestore(par->chip, flags);
-		sys_fillrect(info, r);
-		return;
-	}
-	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
-	rdcfb_put(&s, r->rop == ROP_XOR ? RDC_ROP_XOR : RDC_ROP_COPY);
-	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_FG, 0, 1));
-	rdcfb_put(&s, rdcfb_colour(info, r->color));
-	rdcfb_put(&s, RDC_CMD(RDC_OP_FILL_RECT, 0, 2));
-	rdcfb_put(&s, RDC_XY(r->dx, r->dy));
-	rdcfb_put(&s, RDC_WH(r->width, r->height));
-	rdcfb_end(info, &s);
-	rdcfb_unlock_irqrestore(par->chip, flags);
+	op.rop = r->rop == ROP_XOR ? RDC_ROP_XOR : RDC_ROP_COPY;
+	op.fg = rdcfb_colour(info, r->color);
+	op.dx = r->dx;
+	op.dy = r->dy;
+	op.w = r->width;
+	op.h = r->height;
+	rdcfb_q_op(par->chip, &op);
 }
 
 void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a)
 {
 	struct rdcfb_par *par = info->par;
-	struct rdcfb_stage s;
-	unsigned long flags;
+	struct rdcfb_op op = rdcfb_op_of(info, RDCFB_OPK_COPY);
 
 	if (!a->width || !a->height)
 		return;
-	rdcfb_lock_irqsave(par->chip, flags);
-	if (!rdcfb_begin(info, &s)) {
-		rdcfb_unlock_irqrestore(par->chip, flags);
-		sys_copyarea(info, a);
-		return;
-	}
-	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
-	rdcfb_put(&s, RDC_ROP_COPY);
-	rdcfb_put(&s, RDC_CMD(RDC_OP_BLIT, 0, 3));
-	rdcfb_put(&s, RDC_XY(a->sx, a->sy));
-	rdcfb_put(&s, RDC_XY(a->dx, a->dy));
-	rdcfb_put(&s, RDC_WH(a->width, a->height));
-	rdcfb_end(info, &s);
-	rdcfb_unlock_irqrestore(par->chip, flags);
+	op.sx = a->sx;
+	op.sy = a->sy;
+	op.dx = a->dx;
+	op.dy = a->dy;
+	op.w = a->width;
+	op.h = a->height;
+	rdcfb_q_op(par->chip, &op);
 }
 
 /*
- * A 1 bpp image (glyphs) is MONO with FG/BG; an 8 bpp one (the logo) is
- * HOST_BLIT of its pixels looked up as cfb_imageblit would.  Tall images
- * go as several commands, each under RDC_CMD_MAX_ARGS.
+ * A 1 bpp image (glyphs) is MONO with FG/BG; any other depth is bytes of
+ * colour indices (the logo), looked up as sys_imageblit does and sent as
+ * HOST_BLIT pixels.  Tall images go as several records, one DP command
+ * each, so that a record is written in a short hold of opq.lock.
  */
-static void rdcfb_image_cmds(struct fb_info *info, struct rdcfb_stage *s,
-			     const struct fb_image *img)
+void rdcfb_blit(struct fb_info *info, const struct fb_image *img)
 {
 	struct rdcfb_par *par = info->par;
+	struct rdcfb_op op = rdcfb_op_of(info, RDCFB_OPK_IMAGE);
 	bool mono = img->depth == 1;
 	u32 bpp = mono ? 1 : rdc_format_bpp(par->fmt);
 	u32 wpr = DIV_ROUND_UP(img->width * bpp, RDCFB_BITS_PER_WORD);
-	u32 band = (RDC_CMD_MAX_ARGS - RDCFB_DATA_ARGS) / wpr;
 	u32 src_pitch = mono ? DIV_ROUND_UP(img->width, 8) : img->width;
-	u32 y0, y, x, rows;
+	u32 max_rows, rows, y0, y, x;
+	struct rdcfb_qw q;
 
-	for (y0 = 0; y0 < img->height && !s->err; y0 += rows) {
-		rows = min(band, img->height - y0);
-		rdcfb_put(s, RDC_CMD(mono ? RDC_OP_MONO : RDC_OP_HOST_BLIT, 0,
-				     RDCFB_DATA_ARGS + rows * wpr));
-		rdcfb_put(s, RDC_XY(img->dx, img->dy + y0));
-		rdcfb_put(s, RDC_WH(img->width, rows));
+	/* wider than one DP command takes: wider than any screen */
+	if (!img->width || !img->height ||
+	    wpr > RDC_CMD_MAX_ARGS - RDCFB_DATA_ARGS)
+		return;
+	max_rows = (RDC_CMD_MAX_ARGS - RDCFB_DATA_ARGS) / wpr;
+	max_rows = clamp(RDCFB_OP_BAND_WORDS / wpr, 1u, max_rows);
+	op.arg = mono;
+	op.fg = rdcfb_colour(info, img->fg_color);
+	op.bg = rdcfb_colour(info, img->bg_color);
+	op.dx = img->dx;
+	op.w = img->width;
+	for (y0 = 0; y0 < img->height; y0 += rows) {
+		rows = min(max_rows, img->height - y0);
+		op.dy = img->dy + y0;
+		op.h = rows;
+		op.words = rows * wpr;
+		if (!rdcfb_q_begin(par->chip, &q, &op))
+			return;
 		for (y = y0; y < y0 + rows; y++) {
 			const u8 *src = (const u8 *)img->data + y * src_pitch;
 
 			if (mono) {
 				for (x = 0; x < src_pitch; x++)
-					rdcfb_put_bits(s, src[x], 8);
+					rdcfb_q_put_bits(&q, src[x], 8);
 			} else {
 				for (x = 0; x < img->width; x++)
-					rdcfb_put_bits(s,
+					rdcfb_q_put_bits(&q,
 						rdcfb_colour(info, src[x]) &
 						GENMASK(bpp - 1, 0), bpp);
 			}
-			rdcfb_end_row(s);
+			rdcfb_q_end_row(&q);
 		}
+		rdcfb_q_end(&q);
 	}
 }
 
-void rdcfb_blit(struct fb_info *info, const struct fb_image *img)
-{
-	struct rdcfb_par *par = info->par;
-	struct rdcfb_stage s;
-	unsigned long flags;
-
-	if (!img->width || !img->height)
-		return;
-	rdcfb_lock_irqsave(par->chip, flags);
-	if ((img->depth != 1 && img->depth != 8) ||
-	    !rdcfb_begin(info, &s)) {
-		/* the CPU draws: after what the DP has queued */
-		if (rdcfb_dp_usable(par->chip))
-			rdcfb_drain_locked(par->chip);
-		rdcfb_unlock_irqrestore(par->chip, flags);
-		sys_imageblit(info, img);
-		return;
-	}
-	rdcfb_put(&s, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
-	rdcfb_put(&s, RDC_ROP_COPY);
-	if (img->depth == 1) {
-		rdcfb_put(&s, RDC_CMD(RDC_OP_SET_FG, 0, 1));
-		rdcfb_put(&s, rdcfb_colour(info, img->fg_color));
-		rdcfb_put(&s, RDC_CMD(RDC_OP_SET_BG, 0, 1));
-		rdcfb_put(&s, rdcfb_colour(info, img->bg_color));
-	}
-	rdcfb_image_cmds(info, &s, img);
-	rdcfb_end(info, &s);
-	rdcfb_unlock_irqrestore(par->chip, flags);
-}
-
-/* Before the CPU touches VRAM (read/write on /dev/fbN): let the DP finish. */
+/*
+ * Before the CPU touches VRAM (read/write on /dev/fbN): let the DP finish.
+ * fbcon may ask in atomic context, for its pixmap, whose data every
+ * record has copied already: nothing to wait for there.
+ */
 int rdcfb_sync(struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
-	unsigned long flags;
+	struct rdcfb_chip *chip = par->chip;
 
-	rdcfb_lock_irqsave(par->chip, flags);
-	if ((par->chip->hw.control & RDC_CONTROL_DP_EN) &&
-	    !(par->chip->hw.dp_status & RDC_STATUS_DP_HALTED))
-		rdcfb_drain_locked(par->chip);
-	rdcfb_unlock_irqrestore(par->chip, flags);
+	if (!preemptible())
+		return 0;
+	rdcfb_chip_lock(chip);
+	if ((chip->hw.control & RDC_CONTROL_DP_EN) &&
+	    !(chip->hw.dp_status & RDC_STATUS_DP_HALTED))
+		rdcfb_drain_locked(chip);
+	rdcfb_chip_unlock(chip);
 	return 0;
 }
 
@@ -734,6 +1042,15 @@ static int rdcfb_ioctl(struct fb_info *info, unsigned int cmd,
 	}
 }
 
+#ifdef CONFIG_COMPAT
+/* The structs are the same for 32-bit callers; their pointers are not. */
+static int rdcfb_compat_ioctl(struct fb_info *info, unsigned int cmd,
+			      unsigned long arg)
+{
+	return rdcfb_ioctl(info, cmd, (unsigned long)compat_ptr(arg));
+}
+#endif
+
 static void rdcfb_destroy(struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
@@ -759,7 +1076,9 @@ const struct fb_ops rdcfb_ops = {
 	.fb_imageblit = rdcfb_blit,
 	.fb_sync = rdcfb_sync,
 	.fb_ioctl = rdcfb_ioctl,
-	.fb_compat_ioctl = rdcfb_ioctl,
+#ifdef CONFIG_COMPAT
+	.fb_compat_ioctl = rdcfb_compat_ioctl,
+#endif
 	.fb_mmap = rdcfb_mmap,
 	.fb_destroy = rdcfb_destroy,
 };
@@ -776,6 +1095,7 @@ int rdcfb_fb_setup(struct fb_info *info, const char *mode)
 	if (sscanf(mode, "%ux%u-%u", &w, &h, &bpp) < 2 ||
 	    rdcfb_preset_of(w, h, &t))
 		return -EINVAL;
+	par->chip->info = info;
 	info->fbops = &rdcfb_ops;
 	info->screen_buffer = par->chip->vram;
 	info->screen_size = par->chip->hw.vram_size;

@@ -5,8 +5,9 @@
  *
  * TE and IRQ are the chip's outputs, so the host's inputs.  Their edges
  * come from the chip's RDC_TRACE_PINS trace point, which fires inside the
- * simulation: under chip->lock, in atomic context.  There they only go
- * into a bounded queue, in order; a worker (or the pacing work itself,
+ * simulation: under chip->lock, in the middle of a slice of simulated
+ * time.  There they only go into a bounded queue (ev_lock: a spinlock held
+ * for a few words), in order; a worker (or the pacing work itself,
  * right after the slice that produced them) takes them out and hands each
  * to the GPIO character device through handle_nested_irq, which runs its
  * thread function in the caller's context: one call per edge, so edges
@@ -340,7 +341,6 @@ static void rdcfb_gpio_free(struct rdcfb_gpio *g)
 int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id)
 {
 	struct rdcfb_gpio *g;
-	unsigned long flags;
 	int ret;
 
 	BUILD_BUG_ON(BIT(RDCFB_LINE_TE) != RDC_PIN_TE ||
@@ -367,6 +367,8 @@ int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id)
 	g->gc.direction_output = rdcfb_gpio_direction_output;
 	g->gc.get = rdcfb_gpio_get;
 	g->gc.set = rdcfb_gpio_set;
+	/* RESET_N and BL_EN take chip->lock, a mutex */
+	g->gc.can_sleep = true;
 
 	g->domain = irq_domain_create_linear(dev_fwnode(dev), RDCFB_LINES,
 					     &rdcfb_gpio_domain_ops, g);
@@ -387,11 +389,11 @@ int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id)
 		kfree(g);
 		return ret;
 	}
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	g->live = rdc_hw_pins(&chip->hw) & RDCFB_PINS_HOST_IN;
 	g->shown = g->live;
 	chip->gpio = g;
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	return 0;
 }
 
@@ -404,12 +406,11 @@ int rdcfb_gpio_register(struct rdcfb_chip *chip, struct device *dev, int id)
 void rdcfb_gpio_unregister(struct rdcfb_chip *chip)
 {
 	struct rdcfb_gpio *g;
-	unsigned long flags;
 
-	rdcfb_lock_irqsave(chip, flags);
+	rdcfb_chip_lock(chip);
 	g = chip->gpio;
 	chip->gpio = NULL;
-	rdcfb_unlock_irqrestore(chip, flags);
+	rdcfb_chip_unlock(chip);
 	if (!g)
 		return;
 	mutex_lock(&g->deliver_lock);

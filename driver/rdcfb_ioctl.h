@@ -12,7 +12,8 @@
  * meaning later).
  *
  * Errors are negative errnos through ioctl()'s -1/errno:
- *   EINVAL   malformed request (reserved bits, bad alignment, bad kind)
+ *   EINVAL   malformed request (reserved bits, bad alignment, bad kind,
+ *            simulated time past RDCFB_MAX_CYCLES)
  *   E2BIG    a count past its cap below
  *   EFAULT   a user pointer that cannot be read or written
  *   EPROTO   SUBMIT: the buffer failed validation; nothing was queued,
@@ -39,6 +40,13 @@
 
 /* Largest command buffer one SUBMIT takes, in 32-bit words (256 KiB). */
 #define RDCFB_SUBMIT_MAX_WORDS 65536u
+
+/*
+ * The most simulated time one WAIT (`budget`) or STEP (`cycles`) may ask
+ * for: 60 simulated seconds at the RDC-1's default 100 MHz core clock, as
+ * rdcd allows its clients.  Beyond it: EINVAL.
+ */
+#define RDCFB_MAX_CYCLES 6000000000ull
 
 /* One 32-bit register access at a byte offset of the register window. */
 struct rdcfb_reg {
@@ -82,10 +90,14 @@ struct rdcfb_wait {
 	struct rdcfb_wait_term term[RDCFB_WAIT_TERMS];
 	__u32 flags; /* RDCFB_WAIT_NEEDS_DP */
 	__u32 timeout_ms; /* wall-time cap when paced; 0 = 10 s */
-	__u64 budget; /* simulated core cycles; 0 = 10 simulated seconds */
+	/* simulated core cycles, <= RDCFB_MAX_CYCLES; 0 = 10 simulated s */
+	__u64 budget;
 };
 
-/* Advance simulated time by `cycles` (stepped clock only, else EPERM). */
+/*
+ * Advance simulated time by `cycles`, at most RDCFB_MAX_CYCLES (else
+ * EINVAL); stepped clock only (else EPERM).
+ */
 struct rdcfb_step {
 	__u64 cycles;
 };

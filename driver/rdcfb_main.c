@@ -100,7 +100,7 @@ static ssize_t frame_crc_show(struct device *dev, struct device_attribute *attr,
 }
 static DEVICE_ATTR_RO(frame_crc);
 
-/* The longest interrupts-off section so far; writing anything resets it. */
+/* The longest interrupts-off section so far; writing anything starts afresh. */
 static ssize_t irqs_off_max_ns_show(struct device *dev,
 				    struct device_attribute *attr, char *buf)
 {
@@ -116,8 +116,7 @@ static ssize_t irqs_off_max_ns_store(struct device *dev,
 {
 	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
 
-	atomic64_set(&chip->irqoff.max_ns, 0);
-	WRITE_ONCE(chip->irqoff.max_at, 0);
+	rdcfb_irqoff_reset(&chip->irqoff);
 	return count;
 }
 static DEVICE_ATTR_RW(irqs_off_max_ns);
@@ -131,6 +130,15 @@ static ssize_t irqs_off_max_at_show(struct device *dev,
 			  (void *)READ_ONCE(chip->irqoff.max_at));
 }
 static DEVICE_ATTR_RO(irqs_off_max_at);
+
+/* fb_ops' records dropped at a full queue, in atomic context. */
+static ssize_t fb_dropped_show(struct device *dev,
+			       struct device_attribute *attr, char *buf)
+{
+	return sysfs_emit(buf, "%llu\n",
+			  (unsigned long long)rdcfb_ops_dropped(rdcfb_chip_of(dev)));
+}
+static DEVICE_ATTR_RO(fb_dropped);
 
 static struct attribute *rdcfb_attrs[] = {
 	&dev_attr_busy_cycles.attr,
@@ -146,6 +154,7 @@ static struct attribute *rdcfb_attrs[] = {
 	&dev_attr_pin_late_avg_ns.attr,
 	&dev_attr_irqs_off_max_ns.attr,
 	&dev_attr_irqs_off_max_at.attr,
+	&dev_attr_fb_dropped.attr,
 	NULL,
 };
 ATTRIBUTE_GROUPS(rdcfb);

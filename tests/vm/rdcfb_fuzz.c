@@ -4,7 +4,8 @@
  * of random and malformed SUBMIT buffers (random words, good headers with
  * bad lengths, counts past the cap, surfaces and display lists outside
  * VRAM, bad user pointers, reserved fields), REG_WRITE/REG_READ at bad
- * offsets, WAIT with bad kinds and flags, FRAME with bad buffers; every
+ * offsets, WAIT with bad kinds and flags, STEP and WAIT past
+ * RDCFB_MAX_CYCLES (EINVAL, time unmoved), FRAME with bad buffers; every
  * malformed request must be refused with the errno rdcfb_ioctl.h gives it
  * and a refused SUBMIT must queue nothing.  Then a known scene drawn
  * through fbdev: must give the same frame as the same scene on an
@@ -335,11 +336,41 @@ static int fuzz_submits(unsigned long iterations, uint32_t vram)
 	return fails;
 }
 
+static uint64_t sim_now(void)
+{
+	struct rdcfb_counters c;
+
+	return xioctl(RDCFB_IOC_COUNTERS, &c) ? 0 : c.now;
+}
+
+/*
+ * A STEP and a WAIT (otherwise `wt`, one that never holds) asking for
+ * more simulated time than RDCFB_MAX_CYCLES: 0 if both were refused with
+ * EINVAL and time did not move, else the number that were not.
+ */
+static unsigned long fuzz_past_cap(const struct rdcfb_wait *wt)
+{
+	uint64_t past = RDCFB_MAX_CYCLES + 1 +
+			(rnd_below(2) ? 0 : ((uint64_t)rnd() << 32 | rnd()) %
+						    (UINT64_MAX - RDCFB_MAX_CYCLES));
+	struct rdcfb_step st = {.cycles = past};
+	struct rdcfb_wait w = *wt;
+	uint64_t t0 = sim_now();
+	unsigned long bad = 0;
+
+	bad += xioctl(RDCFB_IOC_STEP, &st) != EINVAL;
+	w.budget = past;
+	bad += xioctl(RDCFB_IOC_WAIT, &w) != EINVAL;
+	bad += sim_now() != t0;
+	return bad;
+}
+
 /* REG_*, WAIT, STEP, FRAME with bad arguments. */
 static void fuzz_other(unsigned long iterations)
 {
 	unsigned long reg_bad = 0, wait_bad = 0, frame_bad = 0, step_bad = 0;
 	unsigned long reg_ok = 0, wait_ok = 0, wait_reg_bad = 0;
+	unsigned long cap_bad = 0, cap_ok = 0;
 	static uint32_t small[16];
 
 	for (unsigned long i = 0; i < iterations; i++) {
@@ -412,6 +443,16 @@ static void fuzz_other(unsigned long iterations)
 		st.cycles = rnd_below(FUZZ_STEP_MAX);
 		step_bad += xioctl(RDCFB_IOC_STEP, &st) != 0;
 
+		/*
+		 * Simulated time past the cap: EINVAL, and time stands still
+		 * (a STEP or WAIT let through would run for minutes).
+		 */
+		cap_bad += fuzz_past_cap(&wt);
+		/* the cap itself is a budget: a wait that holds at once */
+		wt.term[0].value = RDC_ID_VALUE;
+		wt.budget = RDCFB_MAX_CYCLES;
+		cap_ok += xioctl(RDCFB_IOC_WAIT, &wt) == 0;
+
 		/* FRAME: too small a buffer, or a bad pointer */
 		memset(&fr, 0, sizeof(fr));
 		fr.cap = RDC_ARRAY_SIZE(small);
@@ -441,6 +482,13 @@ static void fuzz_other(unsigned long iterations)
 	    wait_ok, iterations);
 	tap(!step_bad, "STEP by up to %u cycles (%lu failed)", FUZZ_STEP_MAX,
 	    step_bad);
+	tap(!cap_bad,
+	    "STEP and WAIT past RDCFB_MAX_CYCLES: EINVAL, time unmoved "
+	    "(%lu not)",
+	    cap_bad);
+	tap(cap_ok == iterations,
+	    "WAIT with a budget of RDCFB_MAX_CYCLES is taken (%lu of %lu)",
+	    cap_ok, iterations);
 	tap(!frame_bad,
 	    "FRAME into too small a buffer never claims success "
 	    "(%lu did)",

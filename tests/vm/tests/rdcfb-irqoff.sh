@@ -7,8 +7,9 @@
 # device: docs/driver.md), and frame snapshots of both through sysfs
 # (frame_crc) and the FRAME ioctl, all at once.  The checks are that every part of the load ran and dmesg
 # stayed clean; the longest interrupts-off section the driver measured
-# (sysfs irqs_off_max_ns, irqs_off_max_at) is printed as a TAP comment,
-# not judged: timing is no pass/fail matter.
+# (sysfs irqs_off_max_ns, irqs_off_max_at) and all of them by length
+# (debugfs rdcfb/fbN/irqs_off) are printed as TAP comments, not judged:
+# timing is no pass/fail matter.
 # vm-module: rdcfb mode=1024x768-32 devices=2
 . "$RDC_TREE/tests/vm/lib.sh"
 
@@ -94,9 +95,15 @@ check "60 frames of each device through sysfs and FRAME" sh -c \
 	"cat $T/snap.log; exit $r_snap"
 check "the longest interrupts-off sections are readable" sh -c \
 	"grep -E '^[0-9]+$' $SYS/irqs_off_max_ns $SYS1/irqs_off_max_ns"
+mount -t debugfs none /sys/kernel/debug 2>/dev/null
 for d in "$SYS" "$SYS1"; do
 	echo "# irqs off, ${d##*/}: longest $(cat "$d/irqs_off_max_ns") ns," \
 		"ended at $(cat "$d/irqs_off_max_at")"
+	fb=$(ls "$d/graphics" 2>/dev/null)
+	[ -r "/sys/kernel/debug/rdcfb/$fb/irqs_off" ] &&
+		tr '\n' ' ' <"/sys/kernel/debug/rdcfb/$fb/irqs_off" |
+		sed "s/^/# irqs off, ${d##*/}, sections by length: /; s/ *\$//" &&
+		echo
 done
 dmesg >"$T/dmesg.log"
 check "no oops, BUG or WARN in dmesg" \
