@@ -112,6 +112,7 @@ void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 uint8_t *rdc_port_span(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 		       unsigned int kind)
 {
+	rdc_port_poll(hw);
 	if (!len || (uint64_t)addr + len > hw->vram_size)
 		return NULL;
 	rdc_bus_charge(hw, addr, len, kind);
@@ -134,6 +135,7 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 	uint64_t a = addr, t;
 	uint32_t i;
 
+	rdc_port_poll(hw);
 	if (!count || !len ||
 	    a + (uint64_t)(count - 1) * stride + len > hw->vram_size)
 		return NULL;
@@ -233,9 +235,12 @@ uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 		       uint32_t *done)
 {
 	struct rdc_crtc *c = &hw->crtc;
-	uint64_t t = hw->now, lim;
-	uint32_t row = hw->bus.open_row;
+	uint64_t t, lim;
+	uint32_t row;
 
+	rdc_port_poll(hw);
+	t = hw->now;
+	row = hw->bus.open_row;
 	if (c->running && c->next_line_time <= t)
 		rdc_crtc_catch_up(hw, t);
 	lim = c->running ? c->next_line_time : RDC_NEVER;
@@ -256,6 +261,7 @@ void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w)
 {
 	struct rdc_crtc *c = &hw->crtc;
 
+	rdc_port_poll(hw);
 	if (c->running && c->next_line_time <= hw->now)
 		rdc_crtc_catch_up(hw, hw->now);
 	w->vram = hw->vram;
@@ -349,5 +355,6 @@ void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w)
 
 void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles)
 {
+	rdc_port_poll(hw);
 	rdc_hw_idle_to(hw, hw->now + cycles);
 }

@@ -136,6 +136,13 @@ void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx)
 	hw->trace_ctx = ctx;
 }
 
+void rdc_hw_set_poll(struct rdc_hw *hw, void (*fn)(void *ctx), void *ctx)
+{
+	hw->poll_fn = fn;
+	hw->poll_ctx = ctx;
+	hw->poll_count = 0;
+}
+
 const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
 			     uint32_t *height)
 {
@@ -190,6 +197,7 @@ static int hw_run(struct rdc_hw *hw, uint64_t t, bool stop_idle)
 	while (hw->now < t) {
 		uint64_t wake = RDC_NEVER;
 
+		rdc_port_poll(hw);
 		if (hw->in_reset) {
 			hw->now = t;
 			return 0;

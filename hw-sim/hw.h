@@ -208,6 +208,11 @@ struct rdc_hw {
 
 	rdc_trace_fn trace_fn; /* optional */
 	void *trace_ctx;
+
+	/* the host's poll hook (rdc_hw_set_poll), optional */
+	void (*poll_fn)(void *ctx);
+	void *poll_ctx;
+	uint32_t poll_count;
 	/*
 	 * Levels as last reported, kept with or without a tracer so that
 	 * RDC_TRACE_PINS / RDC_TRACE_DP fire on changes only.
@@ -372,6 +377,17 @@ uint32_t rdc_hw_pins(struct rdc_hw *hw);
 void rdc_hw_set_dp(struct rdc_hw *hw, const struct rdc_dp_ops *ops, void *dp);
 void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx);
 void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx);
+/*
+ * A host that must not wait for a long command (a daemon serving others,
+ * a kernel that must reschedule) gets fn(ctx) called every RDC_POLL_EVERY
+ * VRAM accesses or compute steps of the DP, and at every turn of the run
+ * loop: always where the DP holds no pointer into VRAM and hw->now is
+ * current.  fn may suspend the caller (switch stacks) and resume it
+ * later; the chip is then mid-command and nothing but reads may touch it
+ * meanwhile.  It changes no cycle and no pixel.  NULL turns it off.
+ */
+#define RDC_POLL_EVERY 64u
+void rdc_hw_set_poll(struct rdc_hw *hw, void (*fn)(void *ctx), void *ctx);
 
 /* The last complete frame (NULL before the first) and its size. */
 const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,

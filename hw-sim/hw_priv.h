@@ -95,6 +95,18 @@ static inline bool rdc_crtc_due(const struct rdc_hw *hw, uint64_t t)
 	return hw->crtc.running && hw->crtc.next_line_time <= t;
 }
 
+/*
+ * The host's poll hook, every RDC_POLL_EVERY calls (hw.h): at the entry of
+ * a DP port access, where the DP holds no pointer into VRAM.
+ */
+static inline void rdc_port_poll(struct rdc_hw *hw)
+{
+	if (hw->poll_fn && ++hw->poll_count >= RDC_POLL_EVERY) {
+		hw->poll_count = 0;
+		hw->poll_fn(hw->poll_ctx);
+	}
+}
+
 /* rdc_port_idle_until, inline for the chip's own hot paths. */
 static inline void rdc_hw_idle_to(struct rdc_hw *hw, uint64_t t)
 {

@@ -74,7 +74,8 @@ enum rdc_error {
 	RDC_E_FILE = -13,   /* file could not be read or written */
 	RDC_E_AUTH = -14,   /* the daemon refused the token */
 	RDC_E_GONE = -15,   /* the device went away (unplugged, unbound) */
-	RDC_E_COUNT_ = -16
+	RDC_E_RESET = -16,  /* a reset ended the request (rdcd: RESET) */
+	RDC_E_COUNT_ = -17
 };
 
 /* A short English description of an enum rdc_error value. */

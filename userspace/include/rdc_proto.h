@@ -91,7 +91,8 @@ enum rdc_status {
 	RDC_ST_TYPE = 13,    /* unknown message type */
 	RDC_ST_ORDER = 14,   /* HELLO missing or repeated */
 	RDC_ST_DEVICE = 15,  /* the device flagged an error */
-	RDC_ST_COUNT_ = 16
+	RDC_ST_RESET = 16,   /* a RESET ended the pending request */
+	RDC_ST_COUNT_ = 17
 };
 
 /* HELLO flags and capabilities */

@@ -36,6 +36,7 @@ static const char *const rdc_error_str[] = {
 	[-RDC_E_FILE] = "file could not be read or written",
 	[-RDC_E_AUTH] = "token missing or refused",
 	[-RDC_E_GONE] = "device gone",
+	[-RDC_E_RESET] = "ended by a device reset",
 };
 
 const char *rdc_strerror(int err)

@@ -92,6 +92,8 @@ static int net_status_to_error(uint32_t status)
 		return RDC_E_AUTH;
 	case RDC_ST_DEVICE:
 		return RDC_E_DEVICE;
+	case RDC_ST_RESET:
+		return RDC_E_RESET;
 	case RDC_ST_NOFRAME:
 		return 1;
 	case RDC_ST_MALFORMED:

@@ -120,7 +120,7 @@ static void usage(FILE *f)
 	      f);
 }
 
-static uint64_t rdcd_wall_ns(void)
+uint64_t rdcd_wall_ns(void)
 {
 	struct timespec ts;
 
@@ -158,6 +158,7 @@ static int rdcd_listen_unix(struct rdcd *d, struct rdcd_listener *l,
 			    const char *path, bool group)
 {
 	struct sockaddr_un sa = {.sun_family = AF_UNIX};
+	struct stat st;
 	mode_t old;
 	int fd;
 
@@ -178,21 +179,48 @@ static int rdcd_listen_unix(struct rdcd *d, struct rdcd_listener *l,
 		strcpy(l->path, path);
 	}
 	strcpy(sa.sun_path, l->path);
-	fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-	if (fd < 0)
-		return -1;
-	/* A socket file nobody answers on is left over from a crash. */
-	if (!connect(fd, (struct sockaddr *)&sa, sizeof(sa)) ||
-	    errno == EAGAIN || errno == EINPROGRESS) {
-		rdcd_log(d, RDCD_LOG_ERR, "%s: another daemon is listening",
-			 l->path);
+	/*
+	 * Only a socket file nobody answers on (left over from a crash) is
+	 * replaced; anything else at the path, a symlink included, is not
+	 * ours to delete.
+	 */
+	if (!lstat(l->path, &st)) {
+		if (!S_ISSOCK(st.st_mode)) {
+			rdcd_log(d, RDCD_LOG_ERR,
+				 "%s exists and is not a socket: not replacing it",
+				 l->path);
+			l->path[0] = 0;
+			return -1;
+		}
+		fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC,
+			    0);
+		if (fd < 0)
+			return -1;
+		if (!connect(fd, (struct sockaddr *)&sa, sizeof(sa)) ||
+		    errno == EAGAIN || errno == EINPROGRESS) {
+			rdcd_log(d, RDCD_LOG_ERR,
+				 "%s: another daemon is listening", l->path);
+			close(fd);
+			l->path[0] = 0;
+			return -1;
+		}
+		if (errno != ECONNREFUSED) {
+			rdcd_log(d, RDCD_LOG_ERR, "%s: %s: not replacing it",
+				 l->path, strerror(errno));
+			close(fd);
+			l->path[0] = 0;
+			return -1;
+		}
 		close(fd);
-		l->path[0] = 0;
-		return -1;
+		if (unlink(l->path) && errno != ENOENT) {
+			rdcd_log(d, RDCD_LOG_ERR, "%s: %s", l->path,
+				 strerror(errno));
+			l->path[0] = 0;
+			return -1;
+		}
+		rdcd_log(d, RDCD_LOG_INFO, "%s: replacing a stale socket",
+			 l->path);
 	}
-	if (errno == ECONNREFUSED)
-		unlink(l->path);
-	close(fd);
 	fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
 	if (fd < 0)
 		return -1;
@@ -237,6 +265,7 @@ static int rdcd_listen_tcp(struct rdcd *d, struct rdcd_listener *l,
 	struct addrinfo hints = {.ai_socktype = SOCK_STREAM,
 				 .ai_flags = AI_PASSIVE | AI_NUMERICSERV};
 	const char *colon = strrchr(hostport, ':');
+	const char *spec = hostport; /* as given, for messages */
 	struct sockaddr_storage ss;
 	socklen_t sl = sizeof(ss);
 	struct addrinfo *res;
@@ -254,14 +283,16 @@ static int rdcd_listen_tcp(struct rdcd *d, struct rdcd_listener *l,
 		hostport++;
 		hlen -= 2;
 	}
-	if (hlen >= sizeof(host))
+	if (hlen >= sizeof(host)) {
+		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: host too long", spec);
 		return -1;
+	}
 	memcpy(host, hostport, hlen);
 	host[hlen] = 0;
 	if (!hlen)
 		strcpy(host, "127.0.0.1");
 	if (getaddrinfo(host, colon + 1, &hints, &res)) {
-		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: cannot resolve", hostport);
+		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: cannot resolve", spec);
 		return -1;
 	}
 	fd = socket(res->ai_family,
@@ -273,7 +304,7 @@ static int rdcd_listen_tcp(struct rdcd *d, struct rdcd_listener *l,
 	}
 	setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
 	if (bind(fd, res->ai_addr, res->ai_addrlen) || listen(fd, 64)) {
-		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: %s", hostport,
+		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: %s", spec,
 			 strerror(errno));
 		freeaddrinfo(res);
 		close(fd);
@@ -287,7 +318,7 @@ static int rdcd_listen_tcp(struct rdcd *d, struct rdcd_listener *l,
 	if (l->need_token && !d->have_token) {
 		rdcd_log(d, RDCD_LOG_ERR,
 			 "tcp:%s is not loopback: --token FILE is required",
-			 hostport);
+			 spec);
 		close(fd);
 		return -1;
 	}
@@ -340,10 +371,19 @@ static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
 	return 0;
 }
 
+/*
+ * New connections.  Admission is rdcd_client_new's (at most
+ * RDCD_MAX_PENDING without HELLO per listener, the oldest evicted) and
+ * the HELLO's (RDCD_MAX_CLIENTS, RDCD_MAX_CLIENTS_PER_LISTENER); so a
+ * connection is always accepted, and at most a listener's worth of
+ * silent ones cost anything.
+ */
 static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 {
+	d->accept_lis = (int)(l - d->lis);
 	if (l->ffs) {
 		rdcd_ffs_accept(d, l->ffs);
+		d->accept_lis = -1;
 		return;
 	}
 	for (;;) {
@@ -357,16 +397,10 @@ static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 		if (fd < 0) {
 			if (errno != EAGAIN && errno != EWOULDBLOCK &&
 			    errno != EINTR)
-				rdcd_log(d, RDCD_LOG_WARN, "accept: %s",
-					 strerror(errno));
+				rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
+						 "accept: %s", strerror(errno));
+			d->accept_lis = -1;
 			return;
-		}
-		if (d->nclients >= RDCD_MAX_CLIENTS) {
-			rdcd_log(d, RDCD_LOG_WARN,
-				 "%u clients already: refusing another",
-				 d->nclients);
-			close(fd);
-			continue;
 		}
 		if (l->tcp) {
 			setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one,
@@ -388,9 +422,16 @@ static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 	}
 }
 
+/*
+ * The token: the file's contents without trailing newlines and spaces,
+ * at most RDC_PROTO_MAX_TOKEN bytes.  A longer file is refused, not cut:
+ * clients send the whole file.
+ */
 static int rdcd_read_token(struct rdcd *d, const char *path)
 {
+	uint8_t buf[RDC_PROTO_MAX_TOKEN + 4096];
 	FILE *f = fopen(path, "rb");
+	bool more;
 	size_t n;
 
 	if (!f) {
@@ -398,15 +439,23 @@ static int rdcd_read_token(struct rdcd *d, const char *path)
 			 strerror(errno));
 		return -1;
 	}
-	n = fread(d->token, 1, sizeof(d->token), f);
+	n = fread(buf, 1, sizeof(buf), f);
+	more = n == sizeof(buf) && fgetc(f) != EOF;
 	fclose(f);
-	while (n && (d->token[n - 1] == '\n' || d->token[n - 1] == '\r' ||
-		     d->token[n - 1] == ' '))
+	while (n && (buf[n - 1] == '\n' || buf[n - 1] == '\r' ||
+		     buf[n - 1] == ' '))
 		n--;
 	if (!n) {
 		rdcd_log(d, RDCD_LOG_ERR, "--token %s: empty", path);
 		return -1;
 	}
+	if (more || n > RDC_PROTO_MAX_TOKEN) {
+		rdcd_log(d, RDCD_LOG_ERR,
+			 "--token %s: longer than %u bytes (a client could "
+			 "not send it whole)", path, RDC_PROTO_MAX_TOKEN);
+		return -1;
+	}
+	memcpy(d->token, buf, n);
 	d->token_len = (uint32_t)n;
 	d->have_token = true;
 	return 0;
@@ -430,10 +479,25 @@ static int rdcd_write_ready(struct rdcd *d, const char *path)
 
 /* ---- Time ---------------------------------------------------------------- */
 
-/* Move simulated time as the mode says; returns true if it moved. */
+/* On the chip's stack: the loop's advance (paced, fast). */
+static void rdcd_advance_job(struct rdcd *d, void *arg)
+{
+	(void)arg;
+	if (d->adv_target > d->hw->now)
+		rdc_sim_step(d->dev, d->adv_target - d->hw->now);
+}
+
+/*
+ * Move simulated time as the mode says, on the chip's stack (chip.c): a
+ * run that does not end within RDCD_SLICE_US goes on at the next turn,
+ * the sockets served between.  Returns true when a run ended.
+ */
 static bool rdcd_advance(struct rdcd *d)
 {
 	uint64_t now = d->hw->now, target;
+
+	if (rdcd_chip_busy(d))
+		return !rdcd_chip_resume(d);
 
 	switch (d->mode) {
 	case RDC_RUN_FAST:
@@ -457,13 +521,13 @@ static bool rdcd_advance(struct rdcd *d)
 		break;
 	}
 	default:
-		/* stepped: time moves only in a pending wait's next piece */
-		return rdcd_has_pending(d);
+		/* stepped: time moves only in the controller's request */
+		return rdcd_stepped_start(d) == 0;
 	}
 	if (target <= now)
 		return false;
-	rdc_sim_step(d->dev, target - now);
-	return true;
+	d->adv_target = target;
+	return !rdcd_chip_run(d, rdcd_advance_job, NULL);
 }
 
 /* ---- Main ---------------------------------------------------------------- */
@@ -597,16 +661,20 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 	return 0;
 }
 
+/* Connections at the top of a loop turn: HELLO'd and not yet. */
+#define RDCD_MAX_CONNS (RDCD_MAX_CLIENTS + RDCD_MAX_LISTEN * RDCD_MAX_PENDING)
+
 static void rdcd_loop(struct rdcd *d)
 {
-	struct pollfd pfd[RDCD_MAX_LISTEN + RDCD_MAX_CLIENTS];
-	struct rdcd_client *cl[RDCD_MAX_CLIENTS];
+	struct pollfd pfd[RDCD_MAX_LISTEN + RDCD_MAX_CONNS];
+	struct rdcd_client *cl[RDCD_MAX_CONNS];
 	sigset_t none;
 
 	sigemptyset(&none);
 	while (!rdcd_stop) {
 		unsigned int n = 0, nc = 0;
 		struct timespec ts = {0}, *tmo = NULL;
+		uint64_t hello_ns = rdcd_hello_deadlines(d);
 		int r;
 
 		for (unsigned int i = 0; i < d->nlis; i++)
@@ -615,6 +683,8 @@ static void rdcd_loop(struct rdcd *d)
 		for (struct rdcd_client *c = d->clients; c; c = c->next) {
 			short ev = 0;
 
+			if (nc == RDCD_MAX_CONNS)
+				break; /* cannot be: admission bounds them */
 			if (rdcd_client_wants_read(c))
 				ev |= POLLIN;
 			if (c->out_head)
@@ -622,7 +692,9 @@ static void rdcd_loop(struct rdcd *d)
 			cl[nc++] = c;
 			pfd[n++] = (struct pollfd){.fd = c->fd, .events = ev};
 		}
-		if (d->mode == RDC_RUN_PACED) {
+		if (rdcd_chip_busy(d)) {
+			tmo = &ts; /* zero: the chip goes on at once */
+		} else if (d->mode == RDC_RUN_PACED) {
 			ts.tv_nsec = RDCD_TICK_MS * 1000000L;
 			tmo = &ts;
 		} else if (d->mode == RDC_RUN_FAST || rdcd_has_pending(d)) {
@@ -630,6 +702,15 @@ static void rdcd_loop(struct rdcd *d)
 		} else if (d->gpiosim) {
 			/* a GPIO consumer's RESET_N/BL_EN has no fd to wake us */
 			ts.tv_nsec = RDCD_GPIOSIM_POLL_MS * 1000000L;
+			tmo = &ts;
+		}
+		if (hello_ns != UINT64_MAX &&
+		    (!tmo || (uint64_t)ts.tv_sec * NS_PER_S +
+				     (uint64_t)ts.tv_nsec > hello_ns)) {
+			/* wake for the next HELLO deadline (and a ms more) */
+			hello_ns += 1000000u;
+			ts.tv_sec = (time_t)(hello_ns / NS_PER_S);
+			ts.tv_nsec = (long)(hello_ns % NS_PER_S);
 			tmo = &ts;
 		}
 		/* Signals are blocked except inside ppoll: none is missed. */
@@ -658,17 +739,23 @@ static void rdcd_loop(struct rdcd *d)
 		}
 		if (rdcd_snap)
 			rdcd_snapshot(d);
-		rdcd_gpiosim_poll(d);
+		if (!rdcd_chip_busy(d))
+			rdcd_gpiosim_poll(d); /* drives pins: between runs */
 		if (rdcd_advance(d))
 			rdcd_after_advance(d);
+		/* what waited for a run or a pending request to end */
+		rdcd_release_held(d);
 		for (unsigned int i = 0; i < d->nsinks; i++)
 			rdc_sink_poll(d->sinks[i]); /* VNC clients */
 		/* Replies go out at once: most clients wait for them. */
-		for (struct rdcd_client *c = d->clients, *next; c; c = next) {
-			next = c->next;
+		for (struct rdcd_client *c = d->clients; c; c = c->next)
 			if (c->out_head)
 				rdcd_client_flush(d, c);
-			if (c->dead)
+		rdcd_out_bound(d);
+		for (struct rdcd_client *c = d->clients, *next; c; c = next) {
+			next = c->next;
+			/* the chip's run still holds its client: later */
+			if (c->dead && !(rdcd_chip_busy(d) && d->chip_client == c))
 				rdcd_client_free(d, c);
 		}
 	}
@@ -678,7 +765,8 @@ int main(int argc, char **argv)
 {
 	struct rdcd d = {.log_level = RDCD_LOG_INFO,
 			 .vram_size = 16u << 20,
-			 .mode = RDC_RUN_PACED};
+			 .mode = RDC_RUN_PACED,
+			 .accept_lis = -1};
 	struct rdcd_opts o = {0};
 	struct sigaction sa = {.sa_handler = rdcd_on_signal};
 	struct sigaction snap = {.sa_handler = rdcd_on_snapshot};
@@ -719,6 +807,10 @@ int main(int argc, char **argv)
 		return 1;
 	}
 	ret = 1;
+	if (rdcd_chip_open(&d)) {
+		rdcd_log(&d, RDCD_LOG_ERR, "no memory for the chip's stack");
+		goto out;
+	}
 	if (o.vcd) {
 		/* &d.hw: a power cycle's new chip goes on in the same file */
 		int err = rdc_vcd_new(o.vcd, &d.hw, &vcd);
@@ -776,6 +868,7 @@ int main(int argc, char **argv)
 			 (int)rdcd_stop);
 	ret = 0;
 out:
+	rdcd_chip_close(&d); /* a run in progress stops where it is */
 	while (d.clients) {
 		/* let the last replies go if the sockets take them */
 		rdcd_client_flush(&d, d.clients);

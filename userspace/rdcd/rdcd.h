@@ -15,13 +15,37 @@
 #include "rdc_sink.h"
 
 #define RDCD_MAX_LISTEN 8
+/* Connections that said HELLO, over every listener. */
 #define RDCD_MAX_CLIENTS 128
+/* Of those, at most this many from one listener: a flood on one leaves
+ * room for the others. */
+#define RDCD_MAX_CLIENTS_PER_LISTENER 96
+/*
+ * Connections that have not said HELLO yet, per listener: a new one beyond
+ * this evicts the oldest, so silent connections can never lock anyone out.
+ * Each must say HELLO within RDCD_HELLO_MS and may send nothing larger.
+ */
+#define RDCD_MAX_PENDING 8
+#define RDCD_HELLO_MS 5000
+/* Failed tokens: after RDCD_AUTH_FREE_FAILS from one address, that address
+ * is refused for a second, doubling at each further failure up to a minute;
+ * failed-token log lines are kept to one a second. */
+#define RDCD_AUTH_FREE_FAILS 3
+#define RDCD_AUTH_BACKOFF_MAX_S 64
+#define RDCD_AUTH_TABLE 32
 /* Requests handled per client per loop turn, so one cannot starve others. */
 #define RDCD_REQ_PER_TURN 64
 /* Replies queued for a client before the daemon stops reading from it. */
 #define RDCD_OUT_HIGH (4u << 20)
-/* Frame events queued per client; beyond this frames are dropped for it. */
+/* Frame events queued per client; beyond this frames are dropped for it.
+ * A frame is queued only into a queue under RDCD_OUT_HIGH, or an empty one. */
 #define RDCD_MAX_QUEUED_FRAMES 2u
+/*
+ * Everything queued for every client together.  A frame that would take
+ * the total over it is dropped; replies that do make the slowest reader
+ * (the longest without taking anything) be disconnected until it fits.
+ */
+#define RDCD_OUT_TOTAL (64u << 20)
 /* Longest wait or step a client may ask for: one simulated minute. */
 #define RDCD_MAX_BUDGET_S 60u
 /* Listeners on the chip's trace hook (trace.c). */
@@ -31,6 +55,12 @@
 /* Stepped mode: simulated cycles a pending wait runs per turn of the loop
  * (1 ms of the default core clock) before the others are served again. */
 #define RDCD_WAIT_PIECE (RDC_DEFAULT_CORE_HZ / 1000u)
+/* Host time the chip runs before the loop serves the sockets again, in
+ * every mode, even inside one long display-processor command (chip.c). */
+#define RDCD_SLICE_US 2000u
+/* The most simulated time one SUBMIT may spend waiting for FIFO room in
+ * all; then TIMEOUT (the words not yet taken are dropped). */
+#define RDCD_SUBMIT_BUDGET_S RDCD_MAX_BUDGET_S
 
 enum rdcd_log_level { RDCD_LOG_ERR, RDCD_LOG_WARN, RDCD_LOG_INFO,
 		      RDCD_LOG_DEBUG };
@@ -50,17 +80,23 @@ struct rdcd_client {
 	int fd;
 	uint32_t id;
 	bool tcp, hello, dead, closing;
+	/* a complete request waits in hdr/body until the chip is between
+	 * commands (it changes the device) */
+	bool held;
+	int lis; /* index of the listener it came from, -1: none */
+	uint64_t conn_ns; /* when it connected (HELLO deadline) */
+	uint64_t out_since_ns; /* last progress sending, or when queued */
 	char peer[64];
 
 	/* input: a header, then its payload */
 	uint8_t hdrbuf[RDC_PROTO_HDR_SIZE];
-	size_t hdr_got, body_got;
+	size_t hdr_got, body_got, body_cap;
 	struct rdc_proto_hdr hdr;
-	uint8_t *body;
+	uint8_t *body; /* grows with what arrives, up to hdr.len */
 
 	/* output queue */
 	struct rdcd_obuf *out_head, *out_tail;
-	size_t out_bytes;
+	size_t out_bytes, out_frame_bytes;
 	uint32_t out_frames;
 
 	/* a request that waits for the device */
@@ -71,6 +107,7 @@ struct rdcd_client {
 	struct rdc_wait pend_wait;
 	struct rdc_hw_wait pend_hw; /* stepped mode: the wait moves time */
 	uint64_t pend_start, pend_target;
+	uint64_t pend_wall_ns; /* host time it began */
 
 	/* subscription */
 	uint32_t sub_events, sub_every, sub_enc;
@@ -100,13 +137,32 @@ struct rdcd {
 	struct rdcd_listener lis[RDCD_MAX_LISTEN];
 	unsigned int nlis;
 	struct rdcd_client *clients;
-	unsigned int nclients;
+	unsigned int nclients; /* that said HELLO */
+	int accept_lis; /* listener whose connection is being made, or -1 */
+	size_t out_total; /* bytes queued for every client */
+	/* what runs on the chip's stack: the paced/fast loop's advance to
+	 * adv_target, or (stepped) chip_client's pending request */
+	uint64_t adv_target;
+	struct rdcd_client *chip_client;
 	uint32_t next_id;
 	struct rdcd_client *ctl; /* the controlling client, or NULL */
 
 	uint8_t token[RDC_PROTO_MAX_TOKEN];
 	uint32_t token_len;
 	bool have_token;
+	struct rdcd_authfail {
+		char peer[64];
+		uint32_t fails;
+		uint64_t last_ns, until_ns;
+	} authfail[RDCD_AUTH_TABLE];
+	/* lines that a flood could repeat: at most one a second each */
+	struct rdcd_ratelog {
+		uint64_t last_ns;
+		uint32_t quiet; /* not logged since */
+	} authlog, connlog;
+
+	/* the chip runs on its own stack, a slice at a time (chip.c) */
+	struct rdcd_chip *chip;
 
 	int log_level;
 	uint32_t last_irq;
@@ -132,6 +188,7 @@ struct rdcd {
 
 void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
+uint64_t rdcd_wall_ns(void);
 
 /* serve.c */
 int rdcd_device_open(struct rdcd *d);
@@ -145,6 +202,44 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c);
 /* After simulated time moved: finish pending requests, push IRQ events. */
 void rdcd_after_advance(struct rdcd *d);
 bool rdcd_has_pending(const struct rdcd *d);
+/* Close connections past their HELLO deadline; ns until the next one is
+ * due (UINT64_MAX: none). */
+uint64_t rdcd_hello_deadlines(struct rdcd *d);
+/* Stepped mode: run the controller's pending request on the chip's
+ * stack (chip.c): -1 nothing to run, 0 it ended, 1 it goes on. */
+int rdcd_stepped_start(struct rdcd *d);
+/* A log line through a rate limit: at most one a second per limiter. */
+void rdcd_log_limited(struct rdcd *d, struct rdcd_ratelog *rl, int level,
+		      const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+/* Disconnect the slowest readers while d->out_total is over its bound. */
+void rdcd_out_bound(struct rdcd *d);
+/* Requests held while the chip was inside a command: handle them now. */
+void rdcd_release_held(struct rdcd *d);
+
+/*
+ * chip.c: everything that moves simulated time runs on the chip's own
+ * stack and yields back to the loop after RDCD_SLICE_US of host time, at
+ * a VRAM access of the display processor if need be (hw-sim's poll
+ * hook), so no command, however long, keeps the loop from the sockets.
+ * rdcd_chip_run: start fn(d, arg) there; 0 when it finished, 1 when it
+ * yielded (rdcd_chip_busy is then true; go on with rdcd_chip_resume
+ * until it returns 0).  While it is suspended nothing may change the
+ * device; reads are fine.  rdcd_chip_abort: end a suspended run at once
+ * (a reset is about to replace the device's state); the device may then
+ * hold a half-done command.  Without rdcd_chip_open (an in-process
+ * harness), fn runs to its end at once.
+ */
+typedef void (*rdcd_chip_fn)(struct rdcd *d, void *arg);
+int rdcd_chip_open(struct rdcd *d);
+void rdcd_chip_close(struct rdcd *d);
+int rdcd_chip_run(struct rdcd *d, rdcd_chip_fn fn, void *arg);
+int rdcd_chip_resume(struct rdcd *d);
+bool rdcd_chip_busy(const struct rdcd *d);
+void rdcd_chip_abort(struct rdcd *d);
+/* (Re)attach the poll hook to d->hw (after a power cycle's new chip). */
+void rdcd_chip_attach(struct rdcd *d);
+/* In a chip function: yield if the slice is spent (as the poll hook). */
+void rdcd_chip_yield_point(struct rdcd *d);
 
 /*
  * ffs.c: the FunctionFS listener (ffs:DIR, the RDC-1 as a USB device).

@@ -5,16 +5,18 @@
  * The daemon's RDC-1 is librdc's sim: backend, driven through the same
  * backend operations a sim: application uses, so a request does to the
  * chip exactly what the library call would do in process.  In stepped mode
- * a wait or submit runs to completion inside the request (simulated time
- * moves only then, as on sim:); in paced and fast modes time belongs to
- * the loop and such requests stay pending until the device lets them
- * finish, while the client's socket is not read (back-pressure).
+ * a wait, step or submit moves time itself (as on sim:), on the chip's
+ * stack a slice of host time at a time (chip.c); in paced and fast modes
+ * time belongs to the loop and such requests stay pending until the
+ * device lets them finish.  Either way the client's socket is read one
+ * request ahead only, so that a RESET can end what is pending.
  *
  * Clients are distrusted: every length is checked against rdc_proto.h's
  * limits before anything is allocated, and a bad request gets an error
  * reply and a log line, never the daemon's end.
  */
 #include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,6 +46,8 @@ static uint32_t rdcd_status_from_error(int err)
 		return RDC_ST_BUSY;
 	case RDC_E_DEVICE:
 		return RDC_ST_DEVICE;
+	case RDC_E_RESET:
+		return RDC_ST_RESET;
 	default:
 		return RDC_ST_INVAL;
 	}
@@ -57,7 +61,7 @@ static const char *rdcd_status_name(uint32_t st)
 		"out of range", "malformed payload", "busy (not in control)",
 		"bad token", "bad magic or version", "message too big",
 		"no frame yet", "unknown type", "out of order",
-		"device error",
+		"device error", "ended by a reset",
 	};
 
 	return st < RDC_ST_COUNT_ ? names[st] : "?";
@@ -65,17 +69,23 @@ static const char *rdcd_status_name(uint32_t st)
 
 /* ---- Frames -------------------------------------------------------------- */
 
-static void rdcd_queue(struct rdcd_client *c, struct rdcd_obuf *b)
+static void rdcd_queue(struct rdcd *d, struct rdcd_client *c,
+		       struct rdcd_obuf *b)
 {
 	b->next = NULL;
-	if (c->out_tail)
+	if (c->out_tail) {
 		c->out_tail->next = b;
-	else
+	} else {
 		c->out_head = b;
+		c->out_since_ns = rdcd_wall_ns();
+	}
 	c->out_tail = b;
 	c->out_bytes += b->len;
-	if (b->frame)
+	d->out_total += b->len;
+	if (b->frame) {
 		c->out_frames++;
+		c->out_frame_bytes += b->len;
+	}
 }
 
 static struct rdcd_obuf *rdcd_obuf_new(size_t payload)
@@ -154,8 +164,14 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 		return;
 	if (c->frame_tick++ % c->sub_every)
 		return;
-	/* A slow reader loses frames, alone: the device never waits. */
-	if (c->out_frames >= RDCD_MAX_QUEUED_FRAMES) {
+	/*
+	 * A slow reader loses frames, alone: the device never waits.  A
+	 * queue already holding its share of replies takes no frame either,
+	 * nor one that would take everyone's queues over their bound.
+	 */
+	if (c->out_frames >= RDCD_MAX_QUEUED_FRAMES ||
+	    (c->out_head && c->out_bytes >= RDCD_OUT_HIGH) ||
+	    d->out_total >= RDCD_OUT_TOTAL) {
 		c->frames_dropped++;
 		return;
 	}
@@ -176,7 +192,8 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 	}
 	f.dropped = (uint32_t)c->frames_dropped;
 	b = rdcd_frame_msg(xrgb, prev, w, h, c->sub_enc, &f);
-	if (!b) {
+	if (!b || d->out_total + b->len > RDCD_OUT_TOTAL) {
+		free(b);
 		c->frames_dropped++;
 		return;
 	}
@@ -187,7 +204,7 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 	}
 	rdcd_obuf_hdr(b, RDC_MSG_EV_FRAME, RDC_MSGF_EVENT, 0, RDC_ST_OK);
 	b->frame = true;
-	rdcd_queue(c, b);
+	rdcd_queue(d, c, b);
 	c->frames_sent++;
 	rdcd_log(d, RDCD_LOG_DEBUG, "client %u: frame %llu queued", c->id,
 		 (unsigned long long)number);
@@ -247,6 +264,7 @@ int rdcd_device_open(struct rdcd *d)
 		rdc_rec_attach(d->rec, d->dev);
 	rdc_hw_set_frame_fn(d->hw, rdcd_on_frame, d);
 	rdcd_trace_attach(d);
+	rdcd_chip_attach(d);
 	d->last_irq = 0;
 	return 0;
 }
@@ -277,22 +295,134 @@ static int rdcd_power_cycle(struct rdcd *d)
 
 /* ---- Clients ------------------------------------------------------------- */
 
+void rdcd_log_limited(struct rdcd *d, struct rdcd_ratelog *rl, int level,
+		      const char *fmt, ...)
+{
+	uint64_t now = rdcd_wall_ns();
+	char line[256];
+	va_list ap;
+
+	if (rl->last_ns && now - rl->last_ns < 1000000000ull) {
+		rl->quiet++;
+		return;
+	}
+	va_start(ap, fmt);
+	vsnprintf(line, sizeof(line), fmt, ap);
+	va_end(ap);
+	if (rl->quiet)
+		rdcd_log(d, level, "%s (and %u more like it)", line, rl->quiet);
+	else
+		rdcd_log(d, level, "%s", line);
+	rl->last_ns = now;
+	rl->quiet = 0;
+}
+
+static void rdcd_client_drop_output(struct rdcd *d, struct rdcd_client *c);
+
+/* Connections from listener `lis` that have (not) said HELLO. */
+static unsigned int rdcd_count_lis(const struct rdcd *d, int lis, bool hello,
+				   const struct rdcd_client **oldest)
+{
+	unsigned int n = 0;
+
+	for (const struct rdcd_client *c = d->clients; c; c = c->next) {
+		if (c->dead || c->lis != lis || c->hello != hello)
+			continue;
+		n++;
+		if (oldest && (!*oldest || c->conn_ns < (*oldest)->conn_ns))
+			*oldest = c;
+	}
+	return n;
+}
+
 struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
 				    const char *peer)
 {
-	struct rdcd_client *c = calloc(1, sizeof(*c));
+	const struct rdcd_client *oldest = NULL;
+	struct rdcd_client *c;
 
+	/* Silent connections never lock anyone out: the oldest one goes. */
+	if (rdcd_count_lis(d, d->accept_lis, false, &oldest) >=
+	    RDCD_MAX_PENDING) {
+		struct rdcd_client *o = (struct rdcd_client *)oldest;
+
+		rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
+				 "%u connections without HELLO on one listener: "
+				 "closing the oldest, client %u (%s)",
+				 RDCD_MAX_PENDING, o->id, o->peer);
+		o->dead = true;
+	}
+	c = calloc(1, sizeof(*c));
 	if (!c)
 		return NULL;
 	c->fd = fd;
 	c->tcp = tcp;
+	c->lis = d->accept_lis;
+	c->conn_ns = rdcd_wall_ns();
 	c->id = ++d->next_id;
 	snprintf(c->peer, sizeof(c->peer), "%s", peer);
 	c->next = d->clients;
 	d->clients = c;
-	d->nclients++;
-	rdcd_log(d, RDCD_LOG_INFO, "client %u connected (%s)", c->id, c->peer);
+	rdcd_log(d, RDCD_LOG_DEBUG, "client %u connected (%s)", c->id, c->peer);
 	return c;
+}
+
+uint64_t rdcd_hello_deadlines(struct rdcd *d)
+{
+	const uint64_t limit = (uint64_t)RDCD_HELLO_MS * 1000000ull;
+	uint64_t now = rdcd_wall_ns(), next = UINT64_MAX;
+
+	for (struct rdcd_client *c = d->clients; c; c = c->next) {
+		if (c->hello || c->dead || c->closing)
+			continue;
+		if (now - c->conn_ns >= limit) {
+			rdcd_log_limited(d, &d->connlog, RDCD_LOG_INFO,
+					 "client %u (%s): no HELLO within %u ms: "
+					 "closing", c->id, c->peer,
+					 RDCD_HELLO_MS);
+			c->dead = true;
+		} else if (limit - (now - c->conn_ns) < next) {
+			next = limit - (now - c->conn_ns);
+		}
+	}
+	return next;
+}
+
+void rdcd_out_bound(struct rdcd *d)
+{
+	while (d->out_total > RDCD_OUT_TOTAL) {
+		struct rdcd_client *slow = NULL;
+
+		for (struct rdcd_client *c = d->clients; c; c = c->next)
+			if (!c->dead && c->out_head &&
+			    (!slow || c->out_since_ns < slow->out_since_ns))
+				slow = c;
+		if (!slow)
+			return;
+		rdcd_log(d, RDCD_LOG_WARN,
+			 "client %u (%s): %zu bytes unread, %zu queued in all "
+			 "(bound %u): disconnecting the slowest reader",
+			 slow->id, slow->peer, slow->out_bytes, d->out_total,
+			 RDCD_OUT_TOTAL);
+		rdcd_client_drop_output(d, slow);
+		slow->dead = true;
+	}
+}
+
+/* Everything queued for c, gone (it is being disconnected). */
+static void rdcd_client_drop_output(struct rdcd *d, struct rdcd_client *c)
+{
+	while (c->out_head) {
+		struct rdcd_obuf *b = c->out_head;
+
+		c->out_head = b->next;
+		d->out_total -= b->len;
+		free(b);
+	}
+	c->out_tail = NULL;
+	c->out_bytes = 0;
+	c->out_frame_bytes = 0;
+	c->out_frames = 0;
 }
 
 void rdcd_client_free(struct rdcd *d, struct rdcd_client *c)
@@ -305,7 +435,8 @@ void rdcd_client_free(struct rdcd *d, struct rdcd_client *c)
 			break;
 		}
 	}
-	d->nclients--;
+	if (c->hello)
+		d->nclients--;
 	if (d->ctl == c) {
 		d->ctl = NULL;
 		rdcd_log(d, RDCD_LOG_INFO, "client %u left; nobody in control",
@@ -315,25 +446,28 @@ void rdcd_client_free(struct rdcd *d, struct rdcd_client *c)
 		rdcd_log(d, RDCD_LOG_WARN,
 			 "client %u: left with a request pending", c->id);
 
-	rdcd_log(d, RDCD_LOG_INFO, "client %u disconnected", c->id);
+	rdcd_log(d, c->hello ? RDCD_LOG_INFO : RDCD_LOG_DEBUG,
+		 "client %u disconnected", c->id);
 	close(c->fd);
-	while (c->out_head) {
-		struct rdcd_obuf *b = c->out_head;
-
-		c->out_head = b->next;
-		free(b);
-	}
+	rdcd_client_drop_output(d, c);
 	free(c->body);
 	free(c->pend_words);
 	free(c->prev);
 	free(c);
 }
 
+/* A whole request waits in hdr/body. */
+static bool rdcd_have_request(const struct rdcd_client *c)
+{
+	return c->hdr_got == RDC_PROTO_HDR_SIZE && c->body_got == c->hdr.len;
+}
+
 bool rdcd_client_wants_read(const struct rdcd_client *c)
 {
-	return !c->dead && !c->closing && c->pend == RDCD_PEND_NONE &&
-	       c->out_bytes < RDCD_OUT_HIGH + (size_t)c->out_frames *
-							RDC_PROTO_MAX_REPLY;
+	/* frames do not count: they are bounded on their own */
+	return !c->dead && !c->closing && !c->held &&
+	       !(c->pend != RDCD_PEND_NONE && rdcd_have_request(c)) &&
+	       c->out_bytes - c->out_frame_bytes < RDCD_OUT_HIGH;
 }
 
 void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c)
@@ -354,14 +488,18 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c)
 			return;
 		}
 		b->off += (size_t)k;
+		c->out_since_ns = rdcd_wall_ns();
 		if (b->off < b->len)
 			return;
 		c->out_head = b->next;
 		if (!c->out_head)
 			c->out_tail = NULL;
 		c->out_bytes -= b->len;
-		if (b->frame)
+		d->out_total -= b->len;
+		if (b->frame) {
 			c->out_frames--;
+			c->out_frame_bytes -= b->len;
+		}
 		free(b);
 	}
 	if (!c->out_head && c->closing)
@@ -385,10 +523,10 @@ static uint8_t *rdcd_reply(struct rdcd *d, struct rdcd_client *c,
 		memcpy(b->data + RDC_PROTO_HDR_SIZE, p, n);
 	else if (n)
 		memset(b->data + RDC_PROTO_HDR_SIZE, 0, n);
-	rdcd_queue(c, b);
+	rdcd_queue(d, c, b);
 	/* not worth a line: the answers of ordinary polling and sizing */
 	if (status != RDC_ST_OK && status != RDC_ST_NOFRAME &&
-	    status != RDC_ST_TIMEOUT &&
+	    status != RDC_ST_TIMEOUT && status != RDC_ST_AUTH &&
 	    !(status == RDC_ST_RANGE && req->type == RDC_MSG_FRAME_GRAB))
 		rdcd_log(d, RDCD_LOG_INFO, "client %u: request %u (seq %u): %s",
 			 c->id, req->type, req->seq, rdcd_status_name(status));
@@ -405,10 +543,61 @@ static void rdcd_reply_err(struct rdcd *d, struct rdcd_client *c,
 static void rdcd_fatal(struct rdcd *d, struct rdcd_client *c,
 		       const struct rdc_proto_hdr *req, uint32_t status)
 {
-	rdcd_log(d, RDCD_LOG_WARN, "client %u (%s): %s; closing", c->id,
-		 c->peer, rdcd_status_name(status));
+	if (status == RDC_ST_AUTH)
+		rdcd_log_limited(d, &d->authlog, RDCD_LOG_WARN,
+				 "client %u (%s): %s; closing", c->id, c->peer,
+				 rdcd_status_name(status));
+	else
+		rdcd_log(d, RDCD_LOG_WARN, "client %u (%s): %s; closing",
+			 c->id, c->peer, rdcd_status_name(status));
 	rdcd_reply(d, c, req, status, NULL, 0);
 	c->closing = true;
+}
+
+/*
+ * Failed tokens, by peer address: after RDCD_AUTH_FREE_FAILS, the address
+ * is refused without a look at its token for a second, doubling with each
+ * further failure up to RDCD_AUTH_BACKOFF_MAX_S.  A success forgets it.
+ */
+static struct rdcd_authfail *rdcd_authfail_find(struct rdcd *d,
+						const char *peer, bool make)
+{
+	struct rdcd_authfail *old = &d->authfail[0];
+
+	for (unsigned int i = 0; i < RDCD_AUTH_TABLE; i++) {
+		struct rdcd_authfail *a = &d->authfail[i];
+
+		if (a->peer[0] && !strcmp(a->peer, peer))
+			return a;
+		if (a->last_ns < old->last_ns)
+			old = a;
+	}
+	if (!make)
+		return NULL;
+	memset(old, 0, sizeof(*old));
+	snprintf(old->peer, sizeof(old->peer), "%s", peer);
+	return old;
+}
+
+static bool rdcd_auth_locked(struct rdcd *d, const char *peer)
+{
+	struct rdcd_authfail *a = rdcd_authfail_find(d, peer, false);
+
+	return a && a->until_ns > rdcd_wall_ns();
+}
+
+static void rdcd_auth_failed(struct rdcd *d, const char *peer)
+{
+	struct rdcd_authfail *a = rdcd_authfail_find(d, peer, true);
+	uint64_t now = rdcd_wall_ns();
+
+	a->last_ns = now;
+	if (++a->fails >= RDCD_AUTH_FREE_FAILS) {
+		uint32_t sh = a->fails - RDCD_AUTH_FREE_FAILS;
+		uint64_t s = sh >= 6 ? RDCD_AUTH_BACKOFF_MAX_S : 1ull << sh;
+
+		a->until_ns = now + s * 1000000000ull;
+	}
 }
 
 /* ---- Requests ------------------------------------------------------------ */
@@ -449,17 +638,38 @@ static void rdcd_hello(struct rdcd *d, struct rdcd_client *c,
 		return;
 	}
 	if (c->tcp && d->have_token) {
+		if (rdcd_auth_locked(d, c->peer)) {
+			rdcd_fatal(d, c, h, RDC_ST_AUTH);
+			return;
+		}
 		/* constant time: the token is a secret */
 		diff = hello.token_len != d->token_len;
 		for (uint32_t i = 0; i < d->token_len; i++)
 			diff |= (i < hello.token_len ? hello.token[i] : 0) ^
 				d->token[i];
 		if (diff) {
+			rdcd_auth_failed(d, c->peer);
 			rdcd_fatal(d, c, h, RDC_ST_AUTH);
 			return;
 		}
+		{
+			struct rdcd_authfail *a =
+				rdcd_authfail_find(d, c->peer, false);
+
+			if (a)
+				memset(a, 0, sizeof(*a));
+		}
+	}
+	if (d->nclients >= RDCD_MAX_CLIENTS ||
+	    rdcd_count_lis(d, c->lis, true, NULL) >=
+		    RDCD_MAX_CLIENTS_PER_LISTENER) {
+		rdcd_fatal(d, c, h, RDC_ST_BUSY);
+		return;
 	}
 	c->hello = true;
+	d->nclients++;
+	rdcd_log(d, RDCD_LOG_INFO, "client %u said HELLO (%s)", c->id,
+		 c->peer);
 	r.caps = RDC_CAP_ALL & ~(d->mode == RDC_RUN_STEPPED ? 0u : RDC_CAP_STEP);
 	r.caps &= hello.caps | RDC_CAP_STEP;
 	if ((hello.flags & RDC_HELLO_CONTROL) && !d->ctl) {
@@ -506,40 +716,150 @@ static bool rdcd_halted(struct rdcd *d)
 }
 
 /*
- * Stepped mode: the controlling client's wait moves time itself, a piece
- * per turn of the daemon's loop so that everyone else is served between
- * pieces; where it ends does not depend on the pieces (hw-sim/wait.c).
- * 1 while it goes on, else its result.  The trace records the time it
- * moved as steps, between whatever the others did meanwhile.
+ * Stepped mode: the controller's wait moves time itself, on the chip's
+ * stack, a piece at a time with a yield point between (chip.c), so that
+ * everyone else is served meanwhile; where it ends does not depend on the
+ * pieces (hw-sim/wait.c).  The trace records the time it moved as steps,
+ * between whatever the others did meanwhile.  A client that left stops
+ * its wait: nobody is there to answer.
  */
-static int rdcd_stepped_wait(struct rdcd *d, struct rdcd_client *c)
+static int rdcd_stepped_wait_run(struct rdcd *d, struct rdcd_client *c,
+				 struct rdc_hw_wait *w)
 {
-	int ret;
-
-	rdc_rec_time_moved(d->rec, d->hw->now);
-	switch (rdc_hw_wait_run(d->hw, &c->pend_hw, RDCD_WAIT_PIECE)) {
-	case RDC_HW_WAIT_MORE:
-		return 1;
-	case RDC_HW_WAIT_DONE:
-		ret = 0;
-		break;
-	case RDC_HW_WAIT_HALTED:
-		ret = RDC_E_HALTED;
-		break;
-	default:
-		ret = RDC_E_TIMEOUT;
-		break;
+	for (;;) {
+		rdc_rec_time_moved(d->rec, d->hw->now);
+		switch (rdc_hw_wait_run(d->hw, w, RDCD_WAIT_PIECE)) {
+		case RDC_HW_WAIT_MORE:
+			break;
+		case RDC_HW_WAIT_DONE:
+			return 0;
+		case RDC_HW_WAIT_HALTED:
+			return RDC_E_HALTED;
+		default:
+			return RDC_E_TIMEOUT;
+		}
+		if (c->dead)
+			return RDC_E_IO;
+		rdcd_chip_yield_point(d);
 	}
-	return ret;
 }
 
 /*
- * Progress on a pending request.  Returns true when it finished and was
- * answered.
+ * Stepped mode: a SUBMIT feeds the FIFO as sim:'s rdc_submit does (the
+ * same reads of FIFO_FREE, the same waits for half a FIFO of room, so the
+ * same cycles), except that the waits of one SUBMIT share one budget of
+ * RDCD_SUBMIT_BUDGET_S simulated seconds: then TIMEOUT, the words not yet
+ * taken dropped.  Each wait gets sim:'s default budget or what is left.
+ */
+static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
+{
+	const uint64_t total = (uint64_t)RDCD_SUBMIT_BUDGET_S *
+			       RDC_DEFAULT_CORE_HZ;
+	uint64_t start = d->hw->now;
+
+	while (c->pend_done < c->pend_n) {
+		size_t left = c->pend_n - c->pend_done, k;
+		uint32_t room, w[RDC_FIFO_DEPTH];
+		int ret;
+
+		if (c->dead)
+			return RDC_E_IO;
+		ret = rdc_reg_read(d->dev, RDC_REG_FIFO_FREE, &room);
+		if (ret)
+			return ret;
+		if (!room) {
+			struct rdc_wait rw = {
+				.term[0] = {.kind = RDC_WAIT_GE,
+					    .reg = RDC_REG_FIFO_FREE,
+					    .mask = ~0u,
+					    .value = left < RDC_FIFO_DEPTH / 2
+							     ? (uint32_t)left
+							     : RDC_FIFO_DEPTH / 2},
+				.needs_dp = true,
+			};
+			uint64_t used = d->hw->now - start;
+
+			if (used >= total)
+				return RDC_E_TIMEOUT;
+			rw.budget = RDC_MIN(RDC_WAIT_BUDGET_DEFAULT, total - used);
+			rdc_wait_to_hw(&rw, &c->pend_hw);
+			rdc_hw_wait_begin(d->hw, &c->pend_hw);
+			ret = rdcd_stepped_wait_run(d, c, &c->pend_hw);
+			if (ret)
+				return ret;
+			continue;
+		}
+		k = RDC_MIN(RDC_MIN((size_t)room, (size_t)RDC_FIFO_DEPTH), left);
+		for (size_t i = 0; i < k; i++)
+			w[i] = rdc_proto_get32(c->pend_words +
+					       4 * (c->pend_done + i));
+		ret = rdc_submit(d->dev, w, k);
+		if (ret)
+			return ret;
+		c->pend_done += k;
+	}
+	return 0;
+}
+
+/* The pending request is over: answer it (unless its client left). */
+static void rdcd_pending_end(struct rdcd *d, struct rdcd_client *c, int ret)
+{
+	if (!c->dead)
+		rdcd_reply_err(d, c, &c->pend_hdr, ret);
+	c->pend = RDCD_PEND_NONE;
+	free(c->pend_words);
+	c->pend_words = NULL;
+}
+
+/* Stepped mode, on the chip's stack: the controller's request, whole. */
+static void rdcd_stepped_job(struct rdcd *d, void *arg)
+{
+	struct rdcd_client *c = arg;
+	int ret = 0;
+
+	switch (c->pend) {
+	case RDCD_PEND_WAIT:
+		ret = rdcd_stepped_wait_run(d, c, &c->pend_hw);
+		break;
+	case RDCD_PEND_SUBMIT:
+		ret = rdcd_stepped_submit(d, c);
+		break;
+	case RDCD_PEND_STEP:
+		while (d->hw->now < c->pend_target && !c->dead) {
+			rdc_rec_time_moved(d->rec, d->hw->now);
+			rdc_hw_run_until(d->hw,
+					 RDC_MIN(d->hw->now + RDCD_WAIT_PIECE,
+						 c->pend_target));
+			rdcd_chip_yield_point(d);
+		}
+		break;
+	default:
+		break;
+	}
+	rdcd_pending_end(d, c, ret);
+	d->chip_client = NULL;
+}
+
+int rdcd_stepped_start(struct rdcd *d)
+{
+	for (struct rdcd_client *c = d->clients; c; c = c->next) {
+		if (c->pend == RDCD_PEND_NONE)
+			continue;
+		d->chip_client = c;
+		return rdcd_chip_run(d, rdcd_stepped_job, c);
+	}
+	return -1;
+}
+
+/*
+ * Paced and fast modes: progress on a pending request after the loop
+ * moved time.  Returns true when it finished and was answered.  A SUBMIT
+ * that cannot get FIFO room (the DP in an endless list) ends with TIMEOUT
+ * after RDCD_SUBMIT_BUDGET_S of simulated or of host time, whichever
+ * comes first.
  */
 static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 {
-	const struct rdc_proto_hdr *h = &c->pend_hdr;
 	int ret = 0;
 
 	switch (c->pend) {
@@ -562,21 +882,23 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 			c->pend_done += k;
 		}
 		if (!ret && c->pend_done < c->pend_n) {
-			if (!rdcd_halted(d))
+			uint64_t sim = (uint64_t)RDCD_SUBMIT_BUDGET_S *
+				       RDC_DEFAULT_CORE_HZ;
+			uint64_t wall = (uint64_t)RDCD_SUBMIT_BUDGET_S *
+					1000000000ull;
+
+			if (rdcd_halted(d))
+				ret = RDC_E_HALTED;
+			else if (d->hw->now - c->pend_start >= sim ||
+				 rdcd_wall_ns() - c->pend_wall_ns >= wall)
+				ret = RDC_E_TIMEOUT;
+			else
 				return false;
-			ret = RDC_E_HALTED;
 		}
 		break;
 	case RDCD_PEND_WAIT: {
 		struct rdc_hw_wait w;
 		bool hold = false;
-
-		if (d->mode == RDC_RUN_STEPPED) {
-			ret = rdcd_stepped_wait(d, c);
-			if (ret > 0)
-				return false;
-			break;
-		}
 
 		/* time moves with the daemon's clock: only the checks here */
 		rdc_wait_to_hw(&c->pend_wait, &w);
@@ -600,10 +922,7 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 	default:
 		return false;
 	}
-	rdcd_reply_err(d, c, h, ret);
-	c->pend = RDCD_PEND_NONE;
-	free(c->pend_words);
-	c->pend_words = NULL;
+	rdcd_pending_end(d, c, ret);
 	return true;
 }
 
@@ -639,14 +958,16 @@ static void rdcd_irq_events(struct rdcd *d)
 			continue;
 		rdcd_obuf_hdr(b, RDC_MSG_EV_IRQ, RDC_MSGF_EVENT, 0, RDC_ST_OK);
 		memcpy(b->data + RDC_PROTO_HDR_SIZE, ev, sizeof(ev));
-		rdcd_queue(c, b);
+		rdcd_queue(d, c, b);
 	}
 }
 
 void rdcd_after_advance(struct rdcd *d)
 {
+	/* (stepped: the chip's run answered its request itself) */
 	for (struct rdcd_client *c = d->clients; c; c = c->next)
-		if (c->pend != RDCD_PEND_NONE && !c->dead)
+		if (d->mode != RDC_RUN_STEPPED && c->pend != RDCD_PEND_NONE &&
+		    !c->dead)
 			rdcd_pending_step(d, c);
 	rdcd_irq_events(d);
 }
@@ -711,7 +1032,7 @@ static void rdcd_frame_grab(struct rdcd *d, struct rdcd_client *c,
 		return;
 	}
 	rdcd_obuf_hdr(b, h->type, RDC_MSGF_REPLY, h->seq, RDC_ST_OK);
-	rdcd_queue(c, b);
+	rdcd_queue(d, c, b);
 }
 
 /* Does this request need control of the device? */
@@ -742,29 +1063,17 @@ static void rdcd_submit(struct rdcd *d, struct rdcd_client *c,
 {
 	size_t n = h->len / 4;
 
-	if (d->mode == RDC_RUN_STEPPED) {
-		uint32_t *w = malloc(n * 4 + 4);
-		int ret;
-
-		if (!w) {
-			rdcd_reply_err(d, c, h, RDC_E_NOMEM);
-			return;
-		}
-		for (size_t i = 0; i < n; i++)
-			w[i] = rdc_proto_get32(*pl + 4 * i);
-		ret = rdc_submit(d->dev, w, n);
-		free(w);
-		rdcd_reply_err(d, c, h, ret);
-		rdcd_irq_events(d);
-		return;
-	}
 	c->pend = RDCD_PEND_SUBMIT;
 	c->pend_hdr = *h;
 	c->pend_words = *pl; /* taken over */
 	*pl = NULL;
 	c->pend_n = n;
 	c->pend_done = 0;
-	rdcd_pending_step(d, c);
+	c->pend_start = d->hw->now;
+	c->pend_wall_ns = rdcd_wall_ns();
+	/* stepped: the loop's next turn runs it on the chip */
+	if (d->mode != RDC_RUN_STEPPED)
+		rdcd_pending_step(d, c);
 }
 
 /*
@@ -795,6 +1104,26 @@ static void rdcd_pins_set(struct rdcd *d, struct rdcd_client *c,
 	rdc_proto_put32(out, pins);
 	rdcd_reply(d, c, h, RDC_ST_OK, out, sizeof(out));
 	rdcd_irq_events(d);
+}
+
+/*
+ * Before a reset: a run of the chip stops where it is (the reset replaces
+ * what it was doing); the resetting client's own pending request ends
+ * with RESET (it asked for it: the way to abort a submit stuck behind an
+ * endless display list); after a power cycle time starts again at 0, so
+ * every other client's pending wait, step or submit ends with RESET too.
+ * A soft reset keeps time: the others' waits go on, on the reset chip.
+ */
+static void rdcd_reset_pending(struct rdcd *d, struct rdcd_client *c,
+			       bool power)
+{
+	if (rdcd_chip_busy(d)) {
+		rdcd_chip_abort(d);
+		d->chip_client = NULL;
+	}
+	for (struct rdcd_client *o = d->clients; o; o = o->next)
+		if (o->pend != RDCD_PEND_NONE && (o == c || power))
+			rdcd_pending_end(d, o, RDC_E_RESET);
 }
 
 static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
@@ -873,12 +1202,13 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		c->pend_hdr = *h;
 		c->pend_wait = w;
 		c->pend_start = d->hw->now;
+		c->pend_wall_ns = rdcd_wall_ns();
 		if (d->mode == RDC_RUN_STEPPED) {
 			rdc_wait_to_hw(&w, &c->pend_hw);
 			rdc_hw_wait_begin(d->hw, &c->pend_hw);
-		}
-		if (rdcd_pending_step(d, c))
+		} else if (rdcd_pending_step(d, c)) {
 			rdcd_irq_events(d);
+		}
 		break;
 	}
 	case RDC_MSG_STEP: {
@@ -888,16 +1218,13 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 			rdcd_reply(d, c, h, RDC_ST_RANGE, NULL, 0);
 			break;
 		}
-		if (d->mode == RDC_RUN_STEPPED) {
-			ret = rdc_sim_step(d->dev, cyc);
-			rdcd_reply_err(d, c, h, ret);
-			rdcd_irq_events(d);
-			break;
-		}
 		c->pend = RDCD_PEND_STEP;
 		c->pend_hdr = *h;
 		c->pend_target = d->hw->now + cyc;
-		rdcd_pending_step(d, c);
+		c->pend_start = d->hw->now;
+		c->pend_wall_ns = rdcd_wall_ns();
+		if (d->mode != RDC_RUN_STEPPED)
+			rdcd_pending_step(d, c);
 		break;
 	}
 	case RDC_MSG_FRAME_GRAB:
@@ -926,9 +1253,14 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		break;
 	case RDC_MSG_RESET:
 		v = rdc_proto_get32(pl);
+		if (v != RDC_RESET_SOFT && v != RDC_RESET_POWER) {
+			rdcd_reply(d, c, h, RDC_ST_INVAL, NULL, 0);
+			break;
+		}
+		rdcd_reset_pending(d, c, v == RDC_RESET_POWER);
 		if (v == RDC_RESET_SOFT) {
 			ret = rdc_reset(d->dev);
-		} else if (v == RDC_RESET_POWER) {
+		} else {
 			ret = rdcd_power_cycle(d);
 			if (ret) {
 				rdcd_log(d, RDCD_LOG_ERR,
@@ -939,8 +1271,6 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 			}
 			d->pace_sim0 = 0;
 			d->pace_wall0_ns = 0;
-		} else {
-			ret = RDC_E_INVAL;
 		}
 		rdcd_log(d, RDCD_LOG_INFO, "client %u: reset (%s)", c->id,
 			 v == RDC_RESET_POWER ? "power" : "soft");
@@ -975,6 +1305,67 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 	}
 }
 
+/* Does this request touch the chip (so must wait while it runs a slice)? */
+static bool rdcd_touches_chip(const struct rdcd *d,
+			      const struct rdc_proto_hdr *h, const uint8_t *pl)
+{
+	switch (h->type) {
+	case RDC_MSG_REG_WRITE:
+	case RDC_MSG_VRAM_WRITE:
+	case RDC_MSG_SUBMIT:
+	case RDC_MSG_WAIT:
+	case RDC_MSG_STEP:
+	case RDC_MSG_PINS_SET:
+	case RDC_MSG_RESET:
+		return true;
+	case RDC_MSG_REG_READ:
+		/* a trace replays reads between commands, never inside */
+		return d->rec || h->len < 4 ||
+		       rdcd_reg_read_changes(rdc_proto_get32(pl));
+	case RDC_MSG_VRAM_READ:
+	case RDC_MSG_STATS:
+		return d->rec != NULL;
+	default:
+		return false;
+	}
+}
+
+/*
+ * May the whole request in c's buffer be handled now?  Not while c has a
+ * request pending (requests are answered in order), except the
+ * controller's RESET, which ends it; not, while the chip is inside a run
+ * (chip.c), if it would touch the chip, except a RESET, which stops the
+ * run.  Such a request is held, and its client not read further.
+ */
+static bool rdcd_may_dispatch(const struct rdcd *d,
+			      const struct rdcd_client *c)
+{
+	const struct rdc_proto_hdr *h = &c->hdr;
+	bool reset = c->hello && d->ctl == c && h->type == RDC_MSG_RESET &&
+		     h->len == 4 && !h->flags && !h->status;
+
+	if (!c->hello)
+		return true;
+	if (c->pend != RDCD_PEND_NONE)
+		return reset;
+	if (rdcd_chip_busy(d) && !reset)
+		return !rdcd_touches_chip(d, h, c->body);
+	return true;
+}
+
+static void rdcd_take_request(struct rdcd *d, struct rdcd_client *c)
+{
+	rdcd_dispatch(d, c, &c->hdr, &c->body);
+	free(c->body);
+	c->body = NULL;
+	c->body_cap = 0;
+	c->hdr_got = 0;
+	c->body_got = 0;
+}
+
+/* A request's payload buffer grows with what arrives, from this size. */
+#define RDCD_BODY_FIRST 4096u
+
 /* Read what is there and handle complete requests, a few per turn. */
 void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 {
@@ -988,10 +1379,25 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 				 RDC_PROTO_HDR_SIZE - c->hdr_got,
 				 MSG_DONTWAIT);
 		} else {
-			k = c->hdr.len ? recv(c->fd, c->body + c->body_got,
-					      c->hdr.len - c->body_got,
-					      MSG_DONTWAIT)
-				       : 0;
+			if (c->body_got == c->body_cap) {
+				size_t cap = RDC_MAX(c->body_cap * 2,
+						     (size_t)RDCD_BODY_FIRST);
+				uint8_t *nb;
+
+				cap = RDC_MIN(cap, (size_t)c->hdr.len);
+				nb = realloc(c->body, cap);
+				if (!nb) {
+					rdcd_log(d, RDCD_LOG_ERR,
+						 "client %u: out of memory",
+						 c->id);
+					c->dead = true;
+					return;
+				}
+				c->body = nb;
+				c->body_cap = cap;
+			}
+			k = recv(c->fd, c->body + c->body_got,
+				 c->body_cap - c->body_got, MSG_DONTWAIT);
 		}
 		if (k < 0) {
 			if (errno == EINTR)
@@ -1003,7 +1409,7 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 			}
 			return;
 		}
-		if (k == 0 && (c->hdr_got < RDC_PROTO_HDR_SIZE || c->hdr.len)) {
+		if (k == 0) {
 			if (c->hdr_got || c->body_got)
 				rdcd_log(d, RDCD_LOG_WARN,
 					 "client %u: hung up mid-message",
@@ -1016,18 +1422,15 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 			if (c->hdr_got < RDC_PROTO_HDR_SIZE)
 				continue;
 			rdc_proto_hdr_decode(c->hdrbuf, &c->hdr);
-			if (c->hdr.len > RDC_PROTO_MAX_REQUEST) {
+			/* before HELLO nothing larger than a HELLO */
+			if (c->hdr.len > RDC_PROTO_MAX_REQUEST ||
+			    (!c->hello &&
+			     c->hdr.len > RDC_PROTO_HELLO_FIXED +
+						  RDC_PROTO_MAX_TOKEN)) {
 				rdcd_fatal(d, c, &c->hdr, RDC_ST_TOOBIG);
 				return;
 			}
 			c->body_got = 0;
-			c->body = c->hdr.len ? malloc(c->hdr.len) : NULL;
-			if (c->hdr.len && !c->body) {
-				rdcd_log(d, RDCD_LOG_ERR,
-					 "client %u: out of memory", c->id);
-				c->dead = true;
-				return;
-			}
 			if (c->hdr.len)
 				continue;
 		} else {
@@ -1035,11 +1438,22 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 			if (c->body_got < c->hdr.len)
 				continue;
 		}
-		rdcd_dispatch(d, c, &c->hdr, &c->body);
-		free(c->body);
-		c->body = NULL;
-		c->hdr_got = 0;
-		c->body_got = 0;
+		if (!rdcd_may_dispatch(d, c)) {
+			c->held = true;
+			return;
+		}
+		rdcd_take_request(d, c);
 		turn++;
+	}
+}
+
+void rdcd_release_held(struct rdcd *d)
+{
+	for (struct rdcd_client *c = d->clients; c; c = c->next) {
+		if (!c->held || c->dead || !rdcd_may_dispatch(d, c))
+			continue;
+		c->held = false;
+		rdcd_take_request(d, c);
+		rdcd_client_read(d, c);
 	}
 }
