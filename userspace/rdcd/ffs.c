@@ -285,7 +285,9 @@ static void ffs_session_start(struct rdcd_ffs *f)
  * Lock held: rdcd hung up on the session (or its stream broke): halt both
  * bulk endpoints so the host sees a stall and resets.  The threads that
  * own those endpoints do the halting (FunctionFS halts an endpoint on I/O
- * in the wrong direction, under the endpoint file's own lock).
+ * in the wrong direction, under the endpoint file's own lock): the out
+ * thread is woken from its read for it; the in thread first sends what
+ * rdcd wrote before it hung up (its last reply says why), then halts.
  */
 static void ffs_session_dead(struct rdcd_ffs *f, uint32_t gen)
 {
@@ -296,9 +298,8 @@ static void ffs_session_dead(struct rdcd_ffs *f, uint32_t gen)
 		 f->dir, f->session);
 	f->dead = true;
 	pthread_cond_broadcast(&f->cond);
-	for (unsigned int t = 0; t < FFS_NDATA; t++)
-		if (f->running[t])
-			pthread_kill(f->th[t], FFS_KICK);
+	if (f->running[FFS_T_OUT])
+		pthread_kill(f->th[FFS_T_OUT], FFS_KICK);
 }
 
 /*
@@ -519,8 +520,8 @@ static void *ffs_in_thread(void *arg)
 {
 	struct rdcd_ffs *f = arg;
 	struct ffs_parse ps = {0};
-	uint32_t mine = 0, halted = 0;
-	bool halt_valid = false;
+	uint32_t mine = 0, halted = 0, ended = 0;
+	bool halt_valid = false, end_valid = false;
 
 	ffs_thread_signals();
 	pthread_mutex_lock(&f->lock);
@@ -540,7 +541,8 @@ static void *ffs_in_thread(void *arg)
 			pthread_cond_wait(&f->cond, &f->lock);
 			continue;
 		}
-		if (f->dead) {
+		if (end_valid && ended == g) {
+			/* rdcd's stream ended and all of it went out */
 			pthread_mutex_unlock(&f->lock);
 			ffs_halt(f, FFS_EP_IN, g);
 			pthread_mutex_lock(&f->lock);
@@ -562,16 +564,15 @@ static void *ffs_in_thread(void *arg)
 		pthread_mutex_lock(&f->lock);
 		if (g != f->gen || f->stop || !err)
 			continue;
-		if (err == EPIPE || err == EPROTO) {
+		if (err == EPIPE || err == EPROTO || err == EINTR) {
+			/* EINTR with the session alive: bytes may be lost */
 			if (err == EPROTO)
 				rdcd_log(f->d, RDCD_LOG_ERR,
 					 "ffs:%s: rdcd's stream is corrupt",
 					 f->dir);
 			ffs_session_dead(f, g);
-		} else if (err == EINTR) {
-			/* kicked with its session alive: bytes may be lost */
-			if (!f->dead)
-				ffs_session_dead(f, g);
+			ended = g;
+			end_valid = true;
 		} else {
 			/* ESHUTDOWN: disabled; the ep0 thread hears of it */
 			rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: bulk IN: %s",
