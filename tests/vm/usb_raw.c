@@ -55,7 +55,7 @@
 #include "tap.h"
 
 #define TMO_MS 10000u /* TCG is slow: generous, but a hang still fails */
-#define RBUF (1u << 20)
+#define RBUF   (1u << 20)
 /* Largest payload this program keeps; bigger messages are skipped. */
 #define MAX_KEEP (64u << 10)
 
@@ -86,7 +86,7 @@ static double now_s(void)
 	return (double)ts.tv_sec + ts.tv_nsec / 1e9;
 }
 
-/* ---- USB ---------------------------------------------------------------- */
+/* ---- USB ----------------------------------------------------------------- */
 
 static bool serial_matches(libusb_device_handle *h,
 			   const struct libusb_device_descriptor *dd)
@@ -171,7 +171,8 @@ static int usb_open(struct link *l)
 	if (n >= 0)
 		libusb_free_device_list(list, 1);
 	if (!l->h) {
-		fprintf(stderr, "usb_raw: no %04x:%04x%s%s with the RDC-1 interface\n",
+		fprintf(stderr,
+			"usb_raw: no %04x:%04x%s%s with the RDC-1 interface\n",
 			opt_vid, opt_pid, opt_serial ? " serial " : "",
 			opt_serial ? opt_serial : "");
 		return -1;
@@ -207,7 +208,8 @@ static int ctrl_info(struct link *l, uint32_t info[4])
 {
 	uint8_t b[RDC_USB_INFO_SIZE];
 	int r = libusb_control_transfer(l->h, 0xc1, RDC_USB_REQ_INFO, 0,
-					(uint16_t)l->intf, b, sizeof(b), TMO_MS);
+					(uint16_t)l->intf, b, sizeof(b),
+					TMO_MS);
 
 	if (r != (int)sizeof(b))
 		return r < 0 ? r : -1;
@@ -226,7 +228,8 @@ static void resync(struct link *l)
 	libusb_clear_halt(l->h, l->ep_in);
 	libusb_clear_halt(l->h, l->ep_irq);
 	while (!libusb_bulk_transfer(l->h, l->ep_in, junk, sizeof(junk), &got,
-				     50) && got)
+				     50) &&
+	       got)
 		;
 	while (!libusb_interrupt_transfer(l->h, l->ep_irq, junk, 64, &got, 20))
 		;
@@ -245,7 +248,7 @@ static int session_reset(struct link *l)
 	return 0;
 }
 
-/* ---- Transport ------------------------------------------------------------ */
+/* ---- Transport ----------------------------------------------------------- */
 
 static int link_write(struct link *l, const uint8_t *p, size_t n)
 {
@@ -369,9 +372,8 @@ static int recv_msg(struct link *l, struct rdc_proto_hdr *h, uint8_t *out,
 }
 
 /* A request and its reply (events before it are counted and skipped). */
-static int request(struct link *l, uint16_t type, const void *pl,
-		   uint32_t len, uint8_t *out, size_t cap, uint32_t *status,
-		   uint32_t *rlen)
+static int request(struct link *l, uint16_t type, const void *pl, uint32_t len,
+		   uint8_t *out, size_t cap, uint32_t *status, uint32_t *rlen)
 {
 	uint32_t seq = send_msg(l, type, pl, len);
 	struct rdc_proto_hdr h;
@@ -396,7 +398,8 @@ static int request(struct link *l, uint16_t type, const void *pl,
 		if (!(h.flags & RDC_MSGF_REPLY) || h.seq != seq ||
 		    h.type != type) {
 			fprintf(stderr,
-				"usb_raw: reply out of order: type %u seq %u flags %x (want %u/%u)\n",
+				"usb_raw: reply out of order: type %u seq %u "
+				"flags %x (want %u/%u)\n",
 				h.type, h.seq, h.flags, type, seq);
 			return -1;
 		}
@@ -418,8 +421,8 @@ static int hello(struct link *l, bool control, struct rdc_proto_hello_reply *r)
 	uint32_t st, len;
 
 	if (request(l, RDC_MSG_HELLO, pl, (uint32_t)n, out, sizeof(out), &st,
-		    &len) || st != RDC_ST_OK ||
-	    rdc_proto_hello_reply_decode(out, len, r))
+		    &len) ||
+	    st != RDC_ST_OK || rdc_proto_hello_reply_decode(out, len, r))
 		return -1;
 	return 0;
 }
@@ -472,7 +475,7 @@ static int usb_session(struct link *l, bool control,
 	return hello(l, control, r);
 }
 
-/* ---- Commands ------------------------------------------------------------- */
+/* ---- Commands ------------------------------------------------------------ */
 
 static int cmd_descriptors(void)
 {
@@ -494,8 +497,8 @@ static int cmd_descriptors(void)
 	tap(l.ep_in & 0x80, "bulk IN endpoint 0x%02x", l.ep_in);
 	tap(l.ep_irq & 0x80, "interrupt IN endpoint 0x%02x", l.ep_irq);
 	int speed = libusb_get_device_speed(libusb_get_device(l.h));
-	uint16_t bulk = speed == LIBUSB_SPEED_HIGH ? RDC_USB_BULK_HS
-						    : RDC_USB_BULK_FS;
+	uint16_t bulk =
+		speed == LIBUSB_SPEED_HIGH ? RDC_USB_BULK_HS : RDC_USB_BULK_FS;
 
 	tap(l.maxp_out == bulk && l.maxp_in == bulk,
 	    "bulk wMaxPacketSize %u/%u at %s speed (want %u)", l.maxp_out,
@@ -524,8 +527,7 @@ static int cmd_basic(void)
 	    info[1], info[2], info[3]);
 	tap(!session_reset(&l), "RESET answers");
 	r = ctrl_info(&l, info2);
-	tap(!r && info2[3] == info[3] + 1, "RESET starts session %u",
-	    info2[3]);
+	tap(!r && info2[3] == info[3] + 1, "RESET starts session %u", info2[3]);
 	tap(!hello(&l, true, &hr), "HELLO");
 	tap(hr.version == RDC_PROTO_VERSION && hr.run_mode == RDC_RUN_STEPPED &&
 		    (hr.flags & RDC_HELLO_CONTROL),
@@ -607,7 +609,8 @@ static int cmd_reset(void)
 	tap(ping(&l) == RDC_ST_OK, "PING");
 	/* a control request nobody defined stalls, the session goes on */
 	tap(libusb_control_transfer(l.h, 0xc1, 0x7f, 0, (uint16_t)l.intf,
-				    (uint8_t *)a, 4, TMO_MS) == LIBUSB_ERROR_PIPE,
+				    (uint8_t *)a, 4,
+				    TMO_MS) == LIBUSB_ERROR_PIPE,
 	    "an unknown vendor request stalls");
 	tap(ping(&l) == RDC_ST_OK, "PING after the stall");
 	tap(libusb_control_transfer(l.h, 0xc0, RDC_USB_REQ_INFO, 0, 0,
@@ -641,7 +644,8 @@ static int cmd_bench(unsigned int n)
 	    "VRAM_WRITE of %u bytes", len);
 	t3 = now_s();
 	free(vw);
-	printf("# usb (dummy_hcd, TCG guest): %.0f PINGs/s, REG_READ round trip %.0f us, VRAM_WRITE %.1f MB/s\n",
+	printf("# usb (dummy_hcd, TCG guest): %.0f PINGs/s, REG_READ round "
+	       "trip %.0f us, VRAM_WRITE %.1f MB/s\n",
 	       n / (t1 - t0), (t2 - t1) / n * 1e6, len / (t3 - t2) / 1e6);
 	link_close(&l);
 	return tap_done();
@@ -662,8 +666,8 @@ static int cmd_zlp(void)
 		rdc_proto_put32(pl, 0);
 		rdc_proto_put32(pl + 4, size);
 		/* one host transfer larger than the reply: must end short */
-		struct rdc_proto_hdr h = {.len = 8, .type = RDC_MSG_VRAM_READ,
-					  .seq = ++l.seq};
+		struct rdc_proto_hdr h = {
+			.len = 8, .type = RDC_MSG_VRAM_READ, .seq = ++l.seq};
 		uint8_t req[24];
 
 		rdc_proto_hdr_encode(req, &h);
@@ -680,7 +684,8 @@ static int cmd_zlp(void)
 			got += more;
 		}
 		tap(!r && got == (int)(size + 16),
-		    "a %u-byte reply (%u packets of %u) reaches a %zu-byte read: %d bytes (%s)",
+		    "a %u-byte reply (%u packets of %u) reaches a %zu-byte "
+		    "read: %d bytes (%s)",
 		    size + 16, (size + 16) / l.maxp_in, l.maxp_in, sizeof(out),
 		    got, libusb_strerror(r));
 		if (r)
@@ -690,7 +695,7 @@ static int cmd_zlp(void)
 	return tap_done();
 }
 
-/* ---- Hostile hosts ---------------------------------------------------------- */
+/* ---- Hostile hosts ------------------------------------------------------- */
 
 static int hostile(const char *kind, unsigned int seconds)
 {
@@ -707,12 +712,15 @@ static int hostile(const char *kind, unsigned int seconds)
 
 		if (!junk || usb_open(&l) || session_reset(&l))
 			return 1;
-		for (size_t i = 0; i < 65536; i++)
-			junk[i] = (uint8_t)((seed = seed * 1103515245u + 12345u) >> 16);
+		for (size_t i = 0; i < 65536; i++) {
+			seed = seed * 1103515245u + 12345u;
+			junk[i] = (uint8_t)(seed >> 16);
+		}
 		r = link_write(&l, junk, 65536);
 		free(junk);
 		tap(!r || r == LIBUSB_ERROR_PIPE || r == LIBUSB_ERROR_TIMEOUT,
-		    "64 KiB of random bytes: the device takes them or stalls (%s)",
+		    "64 KiB of random bytes: the device takes them or stalls "
+		    "(%s)",
 		    libusb_strerror(r));
 		r = recv_msg(&l, &h, NULL, 0, 2000);
 		tap(r == 0 ? h.status != RDC_ST_OK : r == LIBUSB_ERROR_PIPE,
@@ -725,8 +733,8 @@ static int hostile(const char *kind, unsigned int seconds)
 		return 1;
 	if (!strcmp(kind, "truncated")) {
 		/* REG_WRITE promising 8 bytes, sending 3, then nothing */
-		struct rdc_proto_hdr t = {.len = 8, .type = RDC_MSG_REG_WRITE,
-					  .seq = 99};
+		struct rdc_proto_hdr t = {
+			.len = 8, .type = RDC_MSG_REG_WRITE, .seq = 99};
 
 		rdc_proto_hdr_encode(b, &t);
 		tap(!link_write(&l, b, RDC_PROTO_HDR_SIZE + 3),
@@ -763,9 +771,8 @@ static int hostile(const char *kind, unsigned int seconds)
 		    "SUBSCRIBE frames and interrupts");
 		rdc_proto_put64(step, hr.core_hz / 60u);
 		for (unsigned int i = 0; i < 30; i++) {
-			struct rdc_proto_hdr t = {.len = 8,
-						  .type = RDC_MSG_STEP,
-						  .seq = ++l.seq};
+			struct rdc_proto_hdr t = {
+				.len = 8, .type = RDC_MSG_STEP, .seq = ++l.seq};
 			uint8_t m[24];
 
 			rdc_proto_hdr_encode(m, &t);
@@ -776,8 +783,8 @@ static int hostile(const char *kind, unsigned int seconds)
 		tap(1, "30 STEPs sent (half a second of frames), nothing read");
 		sleep(seconds);
 	} else if (!strcmp(kind, "exit-mid-message")) {
-		struct rdc_proto_hdr t = {.len = 4096, .type = RDC_MSG_SUBMIT,
-					  .seq = 5};
+		struct rdc_proto_hdr t = {
+			.len = 4096, .type = RDC_MSG_SUBMIT, .seq = 5};
 
 		rdc_proto_hdr_encode(b, &t);
 		tap(!link_write(&l, b, 40), "40 bytes of a 4 KiB SUBMIT sent");
@@ -791,9 +798,9 @@ static int hostile(const char *kind, unsigned int seconds)
 			return 1;
 		for (uint32_t i = 0; i + RDC_CMD_MAX_ARGS <= words;
 		     i += RDC_CMD_MAX_ARGS)
-			rdc_proto_put32(w + 4 * i,
-					RDC_CMD(RDC_OP_NOP, 0,
-						RDC_CMD_MAX_ARGS - 1));
+			rdc_proto_put32(
+				w + 4 * i,
+				RDC_CMD(RDC_OP_NOP, 0, RDC_CMD_MAX_ARGS - 1));
 		printf("# submitting %u words (until unplugged)\n", words);
 		fflush(stdout);
 		for (unsigned int i = 0; i < seconds * 10; i++)
@@ -826,8 +833,9 @@ static int hostile(const char *kind, unsigned int seconds)
 	return tap_done();
 }
 
-/* ---- Zero-length packets from FunctionFS ------------------------------------ */
+/* ---- Zero-length packets from FunctionFS --------------------------------- */
 
+/* clang-format off */
 struct zlp_descs {
 	struct usb_interface_descriptor intf;
 	struct usb_endpoint_descriptor_no_audio in;
@@ -876,6 +884,7 @@ static const struct {
 		 .lang_count = 1},
 	.lang0 = {0x0409, "zlp probe"},
 };
+/* clang-format on */
 
 /* The device side: run before the gadget is bound; exits when done. */
 static int cmd_ffs_zlp(const char *dir)
@@ -918,7 +927,8 @@ static int cmd_ffs_zlp(const char *dir)
 	w[0] = write(ep1, buf, 512);
 	w[1] = write(ep1, buf, 0);
 	w[2] = write(ep1, buf, 100);
-	printf("# ffs-zlp: writes of 512, 0, 100 bytes returned %zd, %zd, %zd\n",
+	printf("# ffs-zlp: writes of 512, 0, 100 bytes returned %zd, %zd, "
+	       "%zd\n",
 	       w[0], w[1], w[2]);
 	sleep(1);
 	close(ep1);
@@ -953,8 +963,9 @@ static int cmd_zlp_probe(void)
 		libusb_device **list;
 		ssize_t n = libusb_get_device_list(ctx, &list);
 
-		fprintf(stderr, "usb_raw: zlp-probe: no %04x:%04x; there are:",
-			opt_vid, opt_pid);
+		fprintf(stderr,
+			"usb_raw: zlp-probe: no %04x:%04x; there are:", opt_vid,
+			opt_pid);
 		for (ssize_t i = 0; i < n; i++) {
 			struct libusb_device_descriptor dd;
 
@@ -981,9 +992,12 @@ static int cmd_zlp_probe(void)
 						  &got[1], TMO_MS);
 	tap(!r0 && !r1 && ((got[0] == 512 && got[1] == 100) || got[0] == 612),
 	    "the host read %d then %d bytes", got[0], got[1]);
-	printf("# finding: a 0-byte write() to a FunctionFS bulk IN endpoint file %s\n",
-	       got[0] == 512 ? "sends a zero-length packet (it ended a 512-byte transfer)"
-			     : "sends nothing (512 and 100 bytes came as one transfer)");
+	printf("# finding: a 0-byte write() to a FunctionFS bulk IN endpoint "
+	       "file %s\n",
+	       got[0] == 512 ? "sends a zero-length packet (it ended a "
+			       "512-byte transfer)"
+			     : "sends nothing (512 and 100 bytes came as one "
+			       "transfer)");
 	libusb_release_interface(h, 0);
 	libusb_close(h);
 	libusb_exit(ctx);
@@ -1012,8 +1026,8 @@ static int cmd_watch(const char *sock, const char *stop)
 		uint32_t v = 0;
 
 		rounds++;
-		if (ping(&l) != RDC_ST_OK ||
-		    reg_read(&l, RDC_REG_ID, &v) || v != RDC_ID_VALUE) {
+		if (ping(&l) != RDC_ST_OK || reg_read(&l, RDC_REG_ID, &v) ||
+		    v != RDC_ID_VALUE) {
 			bad++;
 			fprintf(stderr, "usb_raw: watch: round %lu wrong\n",
 				rounds);
@@ -1023,8 +1037,8 @@ static int cmd_watch(const char *sock, const char *stop)
 		usleep(20000);
 	}
 	tap(rounds && !bad,
-	    "socket client: %lu rounds of PING and REG_READ, %lu wrong",
-	    rounds, bad);
+	    "socket client: %lu rounds of PING and REG_READ, %lu wrong", rounds,
+	    bad);
 	link_close(&l);
 	return tap_done();
 }
@@ -1045,7 +1059,8 @@ int main(int argc, char **argv)
 			break;
 	}
 	if (i >= argc) {
-		fprintf(stderr, "usage: usb_raw [--vid V] [--pid P] [--serial S] COMMAND (see the source)\n");
+		fprintf(stderr, "usage: usb_raw [--vid V] [--pid P] [--serial "
+				"S] COMMAND (see the source)\n");
 		return 2;
 	}
 	if (!strcmp(argv[i], "descriptors"))

@@ -63,7 +63,7 @@ struct rdcd_ffs {
 	const struct rdcd *d; /* for logging */
 	char dir[128];
 	int ep0, ep[FFS_NEP];
-	int wake; /* eventfd: the listener's fd in rdcd's loop */
+	int wake;   /* eventfd: the listener's fd in rdcd's loop */
 	int stopfd; /* eventfd: wakes the ep0 thread to stop */
 
 	pthread_t th[FFS_NT];
@@ -77,7 +77,7 @@ struct rdcd_ffs {
 	int bfd;	  /* the bridge's end of the session, or -1 */
 	int pending;	  /* the daemon's end, not yet accepted, or -1 */
 	bool dead;	  /* rdcd hung up on this session */
-	uint32_t seen[FFS_NDATA]; /* the gen each data thread has caught up to */
+	uint32_t seen[FFS_NDATA]; /* gen each data thread caught up to */
 	bool exited[FFS_NDATA];	  /* that thread has left its loop */
 
 	uint8_t irq[FFS_IRQ_QUEUE][RDC_USB_EVENT_SIZE];
@@ -87,7 +87,7 @@ struct rdcd_ffs {
 	uint8_t *outbuf, *inbuf, *stage;
 };
 
-/* ---- Descriptors ---------------------------------------------------------- */
+/* ---- Descriptors -------------------------------------------------------- */
 
 /* htole16/32 are not constant expressions: these are, for the tables. */
 #if __BYTE_ORDER == __LITTLE_ENDIAN
@@ -98,6 +98,7 @@ struct rdcd_ffs {
 #define FFS_LE32(x) ((__le32)__builtin_bswap32(x))
 #endif
 
+/* clang-format off */
 struct ffs_intf_descs {
 	struct usb_interface_descriptor intf;
 	struct usb_endpoint_descriptor_no_audio out, in, irq;
@@ -135,7 +136,7 @@ static const struct {
 		.bDescriptorType = USB_DT_ENDPOINT,                            \
 		.bEndpointAddress = (addr),                                    \
 		.bmAttributes = (type),                                        \
-		.wMaxPacketSize = FFS_LE16(maxp),                               \
+		.wMaxPacketSize = FFS_LE16(maxp),                              \
 		.bInterval = (interval),                                       \
 	}
 	.fs = {
@@ -175,6 +176,7 @@ static const struct {
 	},
 	.lang0 = {FFS_LE16(0x0409), FFS_INTF_STR},
 };
+/* clang-format on */
 
 /* ---- Threads and sessions ------------------------------------------------ */
 
@@ -277,8 +279,7 @@ static void ffs_session_start(struct rdcd_ffs *f)
 	if (write(f->wake, &one, sizeof(one)) < 0)
 		rdcd_log(f->d, RDCD_LOG_ERR, "ffs:%s: eventfd: %s", f->dir,
 			 strerror(errno));
-	rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: session %u", f->dir,
-		 f->session);
+	rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: session %u", f->dir, f->session);
 }
 
 /*
@@ -294,7 +295,7 @@ static void ffs_session_dead(struct rdcd_ffs *f, uint32_t gen)
 	if (gen != f->gen || f->dead)
 		return;
 	rdcd_log(f->d, RDCD_LOG_INFO,
-		 "ffs:%s: session %u closed by rdcd: halting the bulk endpoints",
+		 "ffs:%s: rdcd closed session %u: halting bulk endpoints",
 		 f->dir, f->session);
 	f->dead = true;
 	pthread_cond_broadcast(&f->cond);
@@ -328,8 +329,8 @@ static void ffs_halt(struct rdcd_ffs *f, enum ffs_ep ep, uint32_t gen)
 		usleep(10000);
 	}
 	if (r < 0 && errno != EBADMSG && errno != EINTR)
-		rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: halting ep%d: %s", f->dir,
-			 ep + 1, strerror(errno));
+		rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: halting ep%d: %s",
+			 f->dir, ep + 1, strerror(errno));
 	else
 		rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: ep%d halted (%zd)",
 			 f->dir, ep + 1, r);
@@ -410,7 +411,8 @@ static void ffs_irq_push(struct rdcd_ffs *f, const uint8_t *ev)
 		f->irq_n--;
 		if (!(f->irq_dropped++ % 1000))
 			rdcd_log(f->d, RDCD_LOG_INFO,
-				 "ffs:%s: the host does not read interrupt events: dropping",
+				 "ffs:%s: the host does not read interrupt "
+				 "events: dropping",
 				 f->dir);
 	}
 	memcpy(f->irq[(f->irq_head + f->irq_n) % FFS_IRQ_QUEUE], ev,
@@ -663,10 +665,12 @@ static void ffs_setup(struct rdcd_ffs *f, const struct usb_ctrlrequest *s)
 		pthread_mutex_lock(&f->lock);
 		rdc_proto_put32(info + 12, f->session);
 		pthread_mutex_unlock(&f->lock);
-		r = write(f->ep0, info, wlen < sizeof(info) ? wlen : sizeof(info));
+		r = write(f->ep0, info,
+			  wlen < sizeof(info) ? wlen : sizeof(info));
 	} else {
 		rdcd_log(f->d, RDCD_LOG_INFO,
-			 "ffs:%s: control request %02x/%02x (wLength %u) not ours: stall",
+			 "ffs:%s: control request %02x/%02x (wLength %u) not "
+			 "ours: stall",
 			 f->dir, s->bRequestType, s->bRequest, wlen);
 		/* I/O against the request's direction stalls it */
 		r = in ? read(f->ep0, &b, 0) : write(f->ep0, &b, 0);
@@ -694,10 +698,11 @@ static void ffs_event(struct rdcd_ffs *f, const struct usb_functionfs_event *e)
 		pthread_mutex_lock(&f->lock);
 		f->enabled = false;
 		ffs_session_end(f, e->type == FUNCTIONFS_UNBIND ? "unbound"
-								 : "disabled");
+								: "disabled");
 		pthread_mutex_unlock(&f->lock);
 		if (e->type == FUNCTIONFS_UNBIND)
-			rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: unbound", f->dir);
+			rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: unbound",
+				 f->dir);
 		break;
 	case FUNCTIONFS_ENABLE:
 		pthread_mutex_lock(&f->lock);
@@ -809,8 +814,7 @@ static int ffs_open_file(struct rdcd_ffs *f, const char *name)
 	return open(path, O_RDWR | O_CLOEXEC);
 }
 
-int rdcd_ffs_open(const struct rdcd *d, const char *dir,
-		  struct rdcd_ffs **out)
+int rdcd_ffs_open(const struct rdcd *d, const char *dir, struct rdcd_ffs **out)
 {
 	static void *(*const fn[FFS_NT])(void *) = {
 		[FFS_T_OUT] = ffs_out_thread,
@@ -824,8 +828,8 @@ int rdcd_ffs_open(const struct rdcd *d, const char *dir,
 
 	*out = NULL;
 	if (!*dir || strlen(dir) >= sizeof(f->dir)) {
-		rdcd_log(d, RDCD_LOG_ERR, "ffs:%s: want ffs:DIR (a functionfs mount)",
-			 dir);
+		rdcd_log(d, RDCD_LOG_ERR,
+			 "ffs:%s: want ffs:DIR (a functionfs mount)", dir);
 		return -1;
 	}
 	f = calloc(1, sizeof(*f));
@@ -857,7 +861,8 @@ int rdcd_ffs_open(const struct rdcd *d, const char *dir,
 	f->ep0 = ffs_open_file(f, "ep0");
 	if (f->ep0 < 0) {
 		rdcd_log(d, RDCD_LOG_ERR,
-			 "ffs:%s: ep0: %s (is functionfs mounted there? scripts/rdc-gadget.sh)",
+			 "ffs:%s: ep0: %s (is functionfs mounted there? "
+			 "scripts/rdc-gadget.sh)",
 			 dir, strerror(errno));
 		goto fail;
 	}
@@ -866,7 +871,8 @@ int rdcd_ffs_open(const struct rdcd *d, const char *dir,
 	    write(f->ep0, &ffs_strings, sizeof(ffs_strings)) !=
 		    (ssize_t)sizeof(ffs_strings)) {
 		rdcd_log(d, RDCD_LOG_ERR,
-			 "ffs:%s: writing descriptors: %s (in use by another program?)",
+			 "ffs:%s: writing descriptors: %s (in use by another "
+			 "program?)",
 			 dir, strerror(errno));
 		goto fail;
 	}
