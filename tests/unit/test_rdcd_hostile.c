@@ -540,7 +540,7 @@ static void small_quarantine(void)
  * far below what 120 full queues would take (about 4.5 GiB before).
  */
 #define HOG_CLIENTS 120
-#define DOC_RSS_LIMIT_KB (512ul << 10)
+#define DOC_RSS_LIMIT_KB (560ul << 10)
 
 static void test_output_bounded(void **state)
 {

@@ -23,7 +23,7 @@
 
 #define SOAK_MS 12000
 #define ROUND_TRIP_BOUND_MS 2000
-#define DOC_RSS_LIMIT_KB (512ul << 10)
+#define DOC_RSS_LIMIT_KB (560ul << 10)
 #define STALLERS 60
 #define SILENT 24
 

@@ -46,6 +46,9 @@
  * (the longest without taking anything) be disconnected until it fits.
  */
 #define RDCD_OUT_TOTAL (64u << 20)
+/* DELTA subscribers' copies of their last frame, in all; past it a
+ * subscriber without one gets RLE frames until there is room. */
+#define RDCD_PREV_TOTAL (64u << 20)
 /* Longest wait or step a client may ask for: one simulated minute. */
 #define RDCD_MAX_BUDGET_S 60u
 /* Listeners on the chip's trace hook (trace.c). */
@@ -113,6 +116,7 @@ struct rdcd_client {
 	uint32_t sub_events, sub_every, sub_enc;
 	uint64_t frame_tick, frames_sent, frames_dropped;
 	uint32_t *prev; /* the last frame queued (RDC_ENC_DELTA base) */
+	size_t prev_bytes;
 	uint32_t prev_w, prev_h;
 };
 
@@ -140,6 +144,7 @@ struct rdcd {
 	unsigned int nclients; /* that said HELLO */
 	int accept_lis; /* listener whose connection is being made, or -1 */
 	size_t out_total; /* bytes queued for every client */
+	size_t prev_total; /* bytes of every client's DELTA base */
 	/* what runs on the chip's stack: the paced/fast loop's advance to
 	 * adv_target, or (stepped) chip_client's pending request */
 	uint64_t adv_target;

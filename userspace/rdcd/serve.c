@@ -151,6 +151,15 @@ static struct rdcd_obuf *rdcd_frame_msg(const uint32_t *pix,
 	return b;
 }
 
+/* A DELTA subscriber's copy of the last frame it was sent, gone. */
+static void rdcd_prev_free(struct rdcd *d, struct rdcd_client *c)
+{
+	free(c->prev);
+	c->prev = NULL;
+	d->prev_total -= c->prev_bytes;
+	c->prev_bytes = 0;
+}
+
 static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 				 const uint32_t *xrgb, uint32_t w, uint32_t h,
 				 uint64_t number)
@@ -159,6 +168,7 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 	const uint32_t *prev = NULL;
 	struct rdcd_obuf *b;
 	size_t px = (size_t)w * h;
+	uint32_t enc = c->sub_enc;
 
 	if (c->dead || !(c->sub_events & RDC_SUB_FRAMES))
 		return;
@@ -175,29 +185,32 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 		c->frames_dropped++;
 		return;
 	}
-	if (c->sub_enc == RDC_ENC_DELTA) {
-		if (c->prev && (c->prev_w != w || c->prev_h != h)) {
-			free(c->prev);
-			c->prev = NULL;
-		}
-		if (!c->prev) {
+	if (enc == RDC_ENC_DELTA) {
+		if (c->prev && (c->prev_w != w || c->prev_h != h))
+			rdcd_prev_free(d, c);
+		if (c->prev) {
+			prev = c->prev;
+		} else if (d->prev_total + px * 4 > RDCD_PREV_TOTAL) {
+			/* no room for another base: this frame in RLE */
+			enc = RDC_ENC_RLE;
+		} else {
 			c->prev = malloc(px * 4 + 4);
 			if (!c->prev) {
 				c->frames_dropped++;
 				return;
 			}
-		} else {
-			prev = c->prev;
+			c->prev_bytes = px * 4;
+			d->prev_total += c->prev_bytes;
 		}
 	}
 	f.dropped = (uint32_t)c->frames_dropped;
-	b = rdcd_frame_msg(xrgb, prev, w, h, c->sub_enc, &f);
+	b = rdcd_frame_msg(xrgb, prev, w, h, enc, &f);
 	if (!b || d->out_total + b->len > RDCD_OUT_TOTAL) {
 		free(b);
 		c->frames_dropped++;
 		return;
 	}
-	if (c->sub_enc == RDC_ENC_DELTA) {
+	if (enc == RDC_ENC_DELTA) {
 		memcpy(c->prev, xrgb, px * 4);
 		c->prev_w = w;
 		c->prev_h = h;
@@ -452,7 +465,7 @@ void rdcd_client_free(struct rdcd *d, struct rdcd_client *c)
 	rdcd_client_drop_output(d, c);
 	free(c->body);
 	free(c->pend_words);
-	free(c->prev);
+	rdcd_prev_free(d, c);
 	free(c);
 }
 
@@ -1243,8 +1256,7 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		c->sub_every = every ? every : 1;
 		c->sub_enc = enc;
 		c->frame_tick = 0;
-		free(c->prev);
-		c->prev = NULL;
+		rdcd_prev_free(d, c);
 		rdcd_reply(d, c, h, RDC_ST_OK, NULL, 0);
 		break;
 	}
