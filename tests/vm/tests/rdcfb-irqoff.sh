@@ -99,6 +99,8 @@ mount -t debugfs none /sys/kernel/debug 2>/dev/null
 for d in "$SYS" "$SYS1"; do
 	echo "# irqs off, ${d##*/}: longest $(cat "$d/irqs_off_max_ns") ns," \
 		"ended at $(cat "$d/irqs_off_max_at")"
+	[ -r "$d/fb_dropped" ] &&
+		echo "# ${d##*/}: fb_ops records dropped at a full queue: $(cat "$d/fb_dropped")"
 	fb=$(ls "$d/graphics" 2>/dev/null)
 	[ -r "/sys/kernel/debug/rdcfb/$fb/irqs_off" ] &&
 		tr '\n' ' ' <"/sys/kernel/debug/rdcfb/$fb/irqs_off" |
