@@ -177,6 +177,24 @@ static bool rl_not_past_end(const struct rl_arc *r, rl_wide x, rl_wide y)
 	return rl_wcross(r->ex, r->ey, x, y) <= 0;
 }
 
+/*
+ * docs/commands.md's rule where the end points' rounding and the sweep
+ * disagree: two half-planes, intersected up to half a turn (and cut to
+ * s's side of the centre below it), joined above.
+ */
+static bool rl_half_planes(const struct rl_arc *r, rl_wide x, rl_wide y)
+{
+	bool a = rl_wcross(r->sx, r->sy, x, y) >= 0;
+	bool b = rl_wcross(x, y, r->ex, r->ey) >= 0;
+
+	if (r->sweep > 0x8000)
+		return a || b;
+	if (r->sweep < 0x8000 && rl_wcross(r->sx, r->sy, r->ex, r->ey) <= 0 &&
+	    r->sx * x + r->sy * y < 0)
+		return false;
+	return a && b;
+}
+
 bool rdc_ref_arc_generic(uint32_t rx, uint32_t ry, uint32_t start,
 			 uint32_t end)
 {
@@ -198,6 +216,7 @@ void rdc_ref_arc(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 		 uint32_t start, uint32_t end, uint32_t mode,
 		 rdc_ref_plot_fn plot, void *ctx)
 {
+	bool generic = rdc_ref_arc_generic(rx, ry, start, end);
 	struct rl_arc r;
 	int64_t x, y;
 
@@ -219,6 +238,8 @@ void rdc_ref_arc(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 			else if (mode == RDC_ARC_CHORD)
 				in = rl_wcross(r.ex - r.sx, r.ey - r.sy,
 					       px - r.sx, py - r.sy) <= 0;
+			else if (!generic)
+				in = rl_half_planes(&r, px, py);
 			else /* the sector has its apex */
 				in = (!x && !y) || rl_not_past_end(&r, px, py);
 			if (in)

@@ -27,16 +27,17 @@ void rdc_ref_dash_line(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
  * ELLIPSE (outline) or FILL_ELLIPSE (pie, chord) whose centre p lies in
  * the sector, i.e. p is the centre itself or no further counter-clockwise
  * from the start point's direction than the end point's (pie, outline),
- * or not left of the line from the start to the end point (chord).  Only
- * for rdc_ref_arc_generic angles is that ARC's documented rule.
+ * or not left of the line from the start to the end point (chord).  For
+ * angles that are not rdc_ref_arc_generic the sector is the documented
+ * half-plane rule instead.
  */
 void rdc_ref_arc(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 		 uint32_t start, uint32_t end, uint32_t mode,
 		 rdc_ref_plot_fn plot, void *ctx);
 /*
  * False when the end points' rounding puts the end on the other side of
- * the start than the sweep says (sweeps within about 2^-13 turn of none,
- * half or a whole turn), where ARC's half-plane rule decides instead.
+ * the start than the sweep says, where only ARC's half-plane rule
+ * decides (docs/commands.md says this never happens; the tests check).
  */
 bool rdc_ref_arc_generic(uint32_t rx, uint32_t ry, uint32_t start,
 			 uint32_t end);

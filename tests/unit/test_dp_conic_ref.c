@@ -286,9 +286,6 @@ static void test_conic_clipped(void **state)
 			clip.x1 = clip.x0 + tdp_range(&seed, 0, 80);
 			clip.y1 = clip.y0 + tdp_range(&seed, 0, 80);
 		}
-		if (c.shape == S_ARC &&
-		    !rdc_ref_arc_generic(c.rx, c.ry, c.start, c.end))
-			continue;
 		conic_check(t, &c, clip);
 	}
 }
@@ -305,7 +302,7 @@ static void test_arc_sweep(void **state)
 	};
 	struct tdp *t = *state;
 	struct conic c = { .shape = S_ARC, .cx = 410, .cy = 410 };
-	uint32_t seed = 0xa2c5, k = 0, i, skipped = 0, checked = 0;
+	uint32_t seed = 0xa2c5, k = 0, i, rounded = 0, checked = 0;
 
 	for (c.rx = 0; c.rx <= 40 + RDC_ARRAY_SIZE(flat_rx); c.rx++) {
 		uint32_t rx = c.rx;
@@ -322,20 +319,47 @@ static void test_arc_sweep(void **state)
 					c.end = tdp_rand(&seed) & 0xffff;
 				}
 				c.mode = k % 3;
-				if (!rdc_ref_arc_generic(c.rx, c.ry, c.start,
-							 c.end)) {
-					skipped++;
-					continue;
-				}
+				rounded += !rdc_ref_arc_generic(c.rx, c.ry,
+								c.start, c.end);
 				conic_check(t, &c, no_clip);
 				checked++;
 			}
 			c.rx = rx;
 		}
 	}
-	print_message("arcs checked %u, left to the half-plane rule %u\n",
-		      checked, skipped);
+	print_message("arcs checked %u\n", checked);
 	assert_true(checked > 3000);
+	assert_int_equal(rounded, 0);
+}
+
+/*
+ * Sweeps closest to none, half and a whole turn, where the end points'
+ * rounding could put the end ray on the wrong side of the start ray: it
+ * never does (so the documented half-plane rule and the angle order
+ * agree), and the pixels are the reference's.
+ */
+static void test_arc_rounded(void **state)
+{
+	static const uint32_t near[] = {1, 2, 3, 5, 0x7ffd, 0x7ffe, 0x7fff,
+					0x8000, 0x8001, 0x8002, 0xfffd, 0xfffe,
+					0xffff};
+	struct tdp *t = *state;
+	struct conic c = { .shape = S_ARC, .cx = 410, .cy = 410 };
+	uint32_t s, i, rounded = 0, seed = 0x5eed;
+
+	for (s = 0; s < 0x10000; s += 0x100 + 7)
+		for (i = 0; i < RDC_ARRAY_SIZE(near); i++) {
+			/* small radii: the end vectors' truncation counts */
+			c.rx = (uint32_t)tdp_range(&seed, 1, i % 2 ? 4 : 40);
+			c.ry = (uint32_t)tdp_range(&seed, 1, i % 2 ? 4 : 40);
+			c.start = s;
+			c.end = (s + near[i]) & 0xffff;
+			c.mode = (s + i) % 3;
+			rounded += !rdc_ref_arc_generic(c.rx, c.ry, c.start,
+							c.end);
+			conic_check(t, &c, no_clip);
+		}
+	assert_int_equal(rounded, 0);
 }
 
 int main(void)
@@ -346,6 +370,7 @@ int main(void)
 		CONIC_TEST(test_circle_sweep),
 		CONIC_TEST(test_conic_clipped),
 		CONIC_TEST(test_arc_sweep),
+		CONIC_TEST(test_arc_rounded),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

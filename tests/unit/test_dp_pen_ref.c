@@ -3,7 +3,8 @@
  * The stroker's fast paths against ref_lines.c on seeded random input:
  * convex pieces (scan-line crossings against edge functions), dashed
  * lines (spans of the midpoint line against a per-step walk) and arcs
- * (half-plane tests against ordered pseudo-angles).
+ * (half-plane tests against directions ordered by exact cross products,
+ * end points from the reference's own sine table).
  */
 #include "test_dp_common.h"
 #include "dp_int.h"

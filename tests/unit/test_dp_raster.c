@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
  * The DP's rasterisers against the plain reference versions in
- * firmware-model/ref.c, on seeded random input in every format and ROP,
+ * tests/unit/ref.c, on seeded random input in every format and ROP,
  * plus the properties the command reference promises: line symmetry,
  * translation and clip invariance, each pixel drawn once.
  */
