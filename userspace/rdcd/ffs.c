@@ -921,13 +921,7 @@ void rdcd_ffs_accept(struct rdcd *d, struct rdcd_ffs *f)
 	pthread_mutex_unlock(&f->lock);
 	if (fd < 0)
 		return; /* it ended before we came to it */
-	if (d->nclients >= RDCD_MAX_CLIENTS) {
-		rdcd_log(d, RDCD_LOG_WARN,
-			 "%u clients already: refusing USB session %u",
-			 d->nclients, s);
-		close(fd); /* the bridge halts: the host sees a stall */
-		return;
-	}
+	/* admitted as any connection: the HELLO decides (serve.c) */
 	snprintf(peer, sizeof(peer), "usb session %u", s);
 	if (!rdcd_client_new(d, fd, false, peer)) {
 		rdcd_log(d, RDCD_LOG_ERR, "out of memory");
