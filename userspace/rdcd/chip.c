@@ -37,9 +37,13 @@
 #include <sanitizer/common_interface_defs.h>
 #endif
 
-/* The chip's stack: the core is kernel code (small frames), librdc's
- * calls on top of it are shallow; the sanitizer's frames are larger. */
-#define CHIP_STACK (1u << 20)
+/*
+ * The chip's stack: the core is kernel code (small frames), librdc's
+ * calls on top of it are shallow, but the frame sinks (a PNG encoder)
+ * run on it too, and the sanitizer's frames are larger.  Pages are
+ * touched only as used.
+ */
+#define CHIP_STACK (4u << 20)
 #define NS_PER_US 1000u
 
 struct rdcd_chip {
