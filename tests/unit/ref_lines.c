@@ -52,8 +52,8 @@ void rdc_ref_convex(const int64_t *xy, uint32_t n, unsigned int frac,
 
 				if (area < 0)
 					e = -e;
-				if (e < 0 || (e == 0 && !(nx > 0 ||
-							  (nx == 0 && ny > 0))))
+				if (e < 0 || (e == 0 &&
+					      !(nx > 0 || (nx == 0 && ny > 0))))
 					in = false;
 			}
 			if (in)
@@ -195,8 +195,7 @@ static bool rl_half_planes(const struct rl_arc *r, rl_wide x, rl_wide y)
 	return a && b;
 }
 
-bool rdc_ref_arc_generic(uint32_t rx, uint32_t ry, uint32_t start,
-			 uint32_t end)
+bool rdc_ref_arc_generic(uint32_t rx, uint32_t ry, uint32_t start, uint32_t end)
 {
 	struct rl_arc r;
 	rl_wide c;
@@ -226,12 +225,13 @@ void rdc_ref_arc(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 	for (y = -(int64_t)ry; y <= (int64_t)ry; y++) {
 		for (x = -(int64_t)rx; x <= (int64_t)rx; x++) {
 			/* the pixel's centre, y up, on the end points' scale */
-			rl_wide px = (rl_wide)x * 16384, py = -(rl_wide)y * 16384;
+			rl_wide px = (rl_wide)x * 16384,
+				py = -(rl_wide)y * 16384;
 			bool in;
 
-			if (mode == RDC_ARC_OUTLINE ?
-				    !rdc_ref_ellipse_has(rx, ry, x, y) :
-				    !rdc_ref_ellipse_fill_has(rx, ry, x, y))
+			if (mode == RDC_ARC_OUTLINE
+				    ? !rdc_ref_ellipse_has(rx, ry, x, y)
+				    : !rdc_ref_ellipse_fill_has(rx, ry, x, y))
 				continue;
 			if (!r.sweep)
 				in = true;

@@ -12,26 +12,29 @@
 #include "ref_lines.h"
 
 /* an I8 surface in the middle of VRAM, padded so stray writes show */
-#define CS_W 840
-#define CS_H 840
-#define CS_PAD 16
+#define CS_W	840
+#define CS_H	840
+#define CS_PAD	16
 #define CS_BASE 65536u
 
 static const struct rdc_surface cs = {
-	.base = CS_BASE, .stride = CS_W + CS_PAD, .width = CS_W,
-	.height = CS_H, .format = RDC_FMT_I8,
+	.base = CS_BASE,
+	.stride = CS_W + CS_PAD,
+	.width = CS_W,
+	.height = CS_H,
+	.format = RDC_FMT_I8,
 };
 
 /* long radii of the flat ellipses; each with ry = 1..6, and transposed */
-static const uint32_t flat_rx[] = {8, 9, 31, 32, 33, 71, 72, 100, 128,
-				   200, 288, 314, 400};
+static const uint32_t flat_rx[] = {8,	9,   31,  32,  33,  71, 72,
+				   100, 128, 200, 288, 314, 400};
 
 enum shape { S_CIRCLE, S_FCIRCLE, S_ELLIPSE, S_FELLIPSE, S_ARC };
 
 struct conic {
 	enum shape shape;
 	int32_t cx, cy;
-	uint32_t rx, ry; /* a circle's radius is rx */
+	uint32_t rx, ry;	   /* a circle's radius is rx */
 	uint32_t start, end, mode; /* ARC */
 };
 
@@ -79,8 +82,8 @@ static void conic_draw(struct tdp *t, const struct conic *c)
 		break;
 	case S_ARC:
 		tdp_cmd(t, RDC_OP_ARC, c->mode, 3,
-			(uint32_t[]){ xy, RDC_WH(c->rx, c->ry),
-				      c->start | c->end << 16 });
+			(uint32_t[]){xy, RDC_WH(c->rx, c->ry),
+				     c->start | c->end << 16});
 		break;
 	}
 	tdp_drain(t);
@@ -97,10 +100,12 @@ static uint32_t conic_check(struct tdp *t, const struct conic *c,
 {
 	int32_t bx0 = RDC_MAX(c->cx - (int32_t)c->rx - 2, 0);
 	int32_t bx1 = RDC_MIN(c->cx + (int32_t)c->rx + 3, CS_W);
-	int32_t by0 = RDC_MAX(c->cy - (int32_t)(c->shape >= S_ELLIPSE ?
-						c->ry : c->rx) - 2, 0);
-	int32_t by1 = RDC_MIN(c->cy + (int32_t)(c->shape >= S_ELLIPSE ?
-						c->ry : c->rx) + 3, CS_H);
+	int32_t by0 = RDC_MAX(
+		c->cy - (int32_t)(c->shape >= S_ELLIPSE ? c->ry : c->rx) - 2,
+		0);
+	int32_t by1 = RDC_MIN(
+		c->cy + (int32_t)(c->shape >= S_ELLIPSE ? c->ry : c->rx) + 3,
+		CS_H);
 	uint32_t n = 0;
 	int32_t x, y;
 
@@ -116,38 +121,38 @@ static uint32_t conic_check(struct tdp *t, const struct conic *c,
 		uint8_t *row = t->vram + cs.base + (size_t)y * cs.stride;
 
 		for (x = bx0; x < bx1; x++) {
-			bool in = x >= clip.x0 && x < clip.x1 &&
-				  y >= clip.y0 && y < clip.y1;
-			bool want = in && (c->shape == S_ARC ?
-						   arc_map[y * CS_W + x] :
-						   conic_has(c, x - c->cx,
-							     y - c->cy));
+			bool in = x >= clip.x0 && x < clip.x1 && y >= clip.y0 &&
+				  y < clip.y1;
+			bool want = in &&
+				    (c->shape == S_ARC ? arc_map[y * CS_W + x]
+						       : conic_has(c, x - c->cx,
+								   y - c->cy));
 
 			if ((row[x] != 0) != want)
 				fail_msg("shape %d r %u,%u at %d,%d angles "
 					 "%u..%u mode %u: offset %d,%d %s",
 					 c->shape, c->rx, c->ry, c->cx, c->cy,
-					 c->start, c->end, c->mode,
-					 x - c->cx, y - c->cy,
-					 want ? "missing" : "extra");
+					 c->start, c->end, c->mode, x - c->cx,
+					 y - c->cy, want ? "missing" : "extra");
 			n += row[x] != 0;
 			row[x] = 0;
 		}
 	}
 	for (y = 0; y < CS_H; y++) {
-		const uint8_t *pad = t->vram + cs.base + (size_t)y * cs.stride +
-				     CS_W;
+		const uint8_t *pad =
+			t->vram + cs.base + (size_t)y * cs.stride + CS_W;
 
 		for (x = 0; x < CS_PAD; x++)
 			if (pad[x])
 				fail_msg("shape %d r %u,%u: padding of row %d "
-					 "written", c->shape, c->rx, c->ry, y);
+					 "written",
+					 c->shape, c->rx, c->ry, y);
 	}
 	return n;
 }
 
-static const struct rdc_rect no_clip = { RDC_COORD_MIN, RDC_COORD_MIN,
-					 RDC_COORD_MAX, RDC_COORD_MAX };
+static const struct rdc_rect no_clip = {RDC_COORD_MIN, RDC_COORD_MIN,
+					RDC_COORD_MAX, RDC_COORD_MAX};
 
 static int conic_setup(void **state)
 {
@@ -161,14 +166,14 @@ static int conic_setup(void **state)
 	return 0;
 }
 
-#define CONIC_TEST(fn) \
+#define CONIC_TEST(fn)                                                         \
 	cmocka_unit_test_setup_teardown(fn, conic_setup, tdp_teardown)
 
 /* Every rx, ry in 0..40, outline and fill. */
 static void test_ellipse_sweep(void **state)
 {
 	struct tdp *t = *state;
-	struct conic c = { .cx = 100, .cy = 100 };
+	struct conic c = {.cx = 100, .cy = 100};
 
 	for (c.rx = 0; c.rx <= 40; c.rx++)
 		for (c.ry = 0; c.ry <= 40; c.ry++)
@@ -206,10 +211,12 @@ static void test_ellipse_flat(void **state)
 				tdp_drain(t);
 				assert_int_equal(tdp_get(t->vram, &cs,
 							 c.cx + (int32_t)c.rx,
-							 c.cy), 1);
+							 c.cy),
+						 1);
 				assert_int_equal(tdp_get(t->vram, &cs,
 							 c.cx - (int32_t)c.rx,
-							 c.cy), 1);
+							 c.cy),
+						 1);
 				assert_int_equal(tdp_get(t->vram, &cs, c.cx,
 							 c.cy + (int32_t)c.ry),
 						 1);
@@ -223,7 +230,7 @@ static void test_circle_sweep(void **state)
 {
 	static const uint32_t big[] = {63, 100, 255, 400};
 	struct tdp *t = *state;
-	struct conic c = { .cx = 410, .cy = 410 };
+	struct conic c = {.cx = 410, .cy = 410};
 	uint32_t i, n;
 
 	for (c.rx = 0; c.rx <= 40 + RDC_ARRAY_SIZE(big); c.rx++) {
@@ -271,12 +278,12 @@ static void test_conic_clipped(void **state)
 		if (k % 7 == 0)
 			c.ry = (uint32_t)tdp_range(&seed, 1, 6);
 		/* near an edge or a corner of the surface */
-		c.cx = tdp_rand(&seed) % 2 ? tdp_range(&seed, -40, 40) :
-					     tdp_range(&seed, CS_W - 40,
-						       CS_W + 40);
-		c.cy = tdp_rand(&seed) % 2 ? tdp_range(&seed, -40, 40) :
-					     tdp_range(&seed, CS_H - 40,
-						       CS_H + 40);
+		c.cx = tdp_rand(&seed) % 2
+			       ? tdp_range(&seed, -40, 40)
+			       : tdp_range(&seed, CS_W - 40, CS_W + 40);
+		c.cy = tdp_rand(&seed) % 2
+			       ? tdp_range(&seed, -40, 40)
+			       : tdp_range(&seed, CS_H - 40, CS_H + 40);
 		if (k % 3 == 0) {
 			/* a clip rectangle across the shape instead */
 			c.cx = tdp_range(&seed, 100, CS_W - 100);
@@ -297,11 +304,11 @@ static void test_conic_clipped(void **state)
 static void test_arc_sweep(void **state)
 {
 	static const uint32_t fixed[][2] = {
-		{0, 16384}, {16384, 49152}, {49152, 8192}, {60000, 1000},
-		{1234, 1234}, {32768, 0},
+		{0, 16384},    {16384, 49152}, {49152, 8192},
+		{60000, 1000}, {1234, 1234},   {32768, 0},
 	};
 	struct tdp *t = *state;
-	struct conic c = { .shape = S_ARC, .cx = 410, .cy = 410 };
+	struct conic c = {.shape = S_ARC, .cx = 410, .cy = 410};
 	uint32_t seed = 0xa2c5, k = 0, i, rounded = 0, checked = 0;
 
 	for (c.rx = 0; c.rx <= 40 + RDC_ARRAY_SIZE(flat_rx); c.rx++) {
@@ -340,11 +347,11 @@ static void test_arc_sweep(void **state)
  */
 static void test_arc_rounded(void **state)
 {
-	static const uint32_t near[] = {1, 2, 3, 5, 0x7ffd, 0x7ffe, 0x7fff,
-					0x8000, 0x8001, 0x8002, 0xfffd, 0xfffe,
-					0xffff};
+	static const uint32_t near[] = {1,	2,	3,	5,	0x7ffd,
+					0x7ffe, 0x7fff, 0x8000, 0x8001, 0x8002,
+					0xfffd, 0xfffe, 0xffff};
 	struct tdp *t = *state;
-	struct conic c = { .shape = S_ARC, .cx = 410, .cy = 410 };
+	struct conic c = {.shape = S_ARC, .cx = 410, .cy = 410};
 	uint32_t s, i, rounded = 0, seed = 0x5eed;
 
 	for (s = 0; s < 0x10000; s += 0x100 + 7)
@@ -365,12 +372,9 @@ static void test_arc_rounded(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		CONIC_TEST(test_ellipse_sweep),
-		CONIC_TEST(test_ellipse_flat),
-		CONIC_TEST(test_circle_sweep),
-		CONIC_TEST(test_conic_clipped),
-		CONIC_TEST(test_arc_sweep),
-		CONIC_TEST(test_arc_rounded),
+		CONIC_TEST(test_ellipse_sweep), CONIC_TEST(test_ellipse_flat),
+		CONIC_TEST(test_circle_sweep),	CONIC_TEST(test_conic_clipped),
+		CONIC_TEST(test_arc_sweep),	CONIC_TEST(test_arc_rounded),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
