@@ -77,7 +77,7 @@ STATE=$STATE/$NAME
 # A process that exists and is not a zombie.
 alive() {
 	[ -n "$1" ] && [ -r "/proc/$1/stat" ] &&
-		! sed 's/^.*) //' "/proc/$1/stat" | grep -q '^Z'
+		! sed 's/^.*) //' "/proc/$1/stat" 2>/dev/null | grep -q '^Z'
 }
 
 descriptors_written() {

@@ -79,5 +79,18 @@ grep '^# finding' "$T/check.out"
 check "  ... the device side wrote 512, 0 and 100 bytes" wait $zdev
 sed 's/^/    /' "$T/zlpdev.log"
 check "  ... removed" "$GADGET" down --name zlp
+
+# docs/usb.md's recipe: rdc-gadget.sh starting rdcd itself, and stopping it
+USB_SERIAL=recipe
+check "rdc-gadget.sh up --rdcd: rdcd started, gadget bound" \
+	"$GADGET" up --name recipe --serial recipe --rdcd "$B/rdcd" -- --stepped
+check "  ... the host sees it" usb_wait present 20
+check "  ... and talks to it" $B/usb_raw --serial recipe basic
+check "  ... status" "$GADGET" status --name recipe
+check "  ... down: unbound, rdcd stopped, nothing left" \
+	"$GADGET" down --name recipe
+check "  ... the device is gone" usb_wait gone 10
+check "  ... and no rdcd runs on it" \
+	sh -c '! grep -qs "ffs:/dev/ffs-recip[e]" /proc/[0-9]*/cmdline'
 [ -z "${USB_CONFIGFS:-}" ] || umount /sys/kernel/config 2>/dev/null
 finish
