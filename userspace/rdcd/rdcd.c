@@ -72,11 +72,13 @@ void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
 
 	if (level > d->log_level)
 		return;
+	flockfile(stderr); /* one line at a time: ffs.c logs from threads */
 	fprintf(stderr, "rdcd: %s: ", name[level]);
 	va_start(ap, fmt);
 	vfprintf(stderr, fmt, ap);
 	va_end(ap);
 	fputc('\n', stderr);
+	funlockfile(stderr);
 }
 
 static void usage(FILE *f)
