@@ -90,9 +90,11 @@ static void test_errors_and_exit_codes(void **state)
 #else
 	assert_non_null(strstr(out, "not supported"));
 #endif
-	/* nobody listening there */
+	/* nobody listening there: the reason, and what to do */
 	assert_int_equal(ctl("--connect unix:/nonexistent-dir/x stats"), 1);
 	assert_non_null(strstr(out, "transport failure"));
+	assert_non_null(strstr(out, "No such file or directory"));
+	assert_non_null(strstr(out, "is rdcd running?"));
 	assert_int_equal(ctl("--uri nope: stats"), 1);
 
 	fd = mkstemp(path);
@@ -110,6 +112,121 @@ static void test_errors_and_exit_codes(void **state)
 		snprintf(want, sizeof(want), "%s:4: error:", path);
 		assert_non_null(strstr(out, want));
 	}
+	unlink(path);
+}
+
+/*
+ * A file that cannot be written fails the command with its name and the
+ * system's reason, before any figures are printed.
+ */
+static void test_output_errors(void **state)
+{
+	char dir[] = "/tmp/rdcctl_out_XXXXXX", args[256], path[128];
+	int n;
+
+	(void)state;
+	assert_int_equal(ctl("run examples/demo.rdl -o /nonexistent-dir/x.png"),
+			 1);
+	assert_non_null(strstr(out, "/nonexistent-dir/x.png"));
+	assert_non_null(strstr(out, "No such file or directory"));
+	assert_null(strstr(out, "crc32"));
+	assert_null(strstr(out, "cycles"));
+
+	/* stream --png makes its directory, parents too */
+	assert_non_null(mkdtemp(dir));
+	snprintf(args, sizeof(args),
+		 "stream --fast --script examples/demo.rdl --png %s/a/shots "
+		 "--png-every 2 --frames 5",
+		 dir);
+	assert_int_equal(ctl(args), 0);
+	for (n = 0; n < 6; n++) {
+		snprintf(path, sizeof(path), "%s/a/shots/frame-%08d.png", dir,
+			 n);
+		assert_int_equal(access(path, R_OK), n % 2 || n == 5 ? -1 : 0);
+		if (!access(path, R_OK))
+			unlink(path);
+	}
+	snprintf(path, sizeof(path), "%s/a/shots", dir);
+	assert_int_equal(rmdir(path), 0);
+	/* where it cannot: the command fails once, saying why */
+	snprintf(path, sizeof(path), "%s/a/file", dir);
+	{
+		FILE *f = fopen(path, "w");
+
+		assert_non_null(f);
+		fclose(f);
+	}
+	snprintf(args, sizeof(args),
+		 "stream --fast --script examples/demo.rdl --png %s/shots "
+		 "--png-every 1 --frames 5",
+		 path);
+	assert_int_equal(ctl(args), 1);
+	assert_non_null(strstr(out, "Not a directory"));
+	assert_non_null(strstr(out, path));
+	assert_null(strstr(strstr(out, "Not a directory") + 1,
+			   "Not a directory"));
+	unlink(path);
+	snprintf(path, sizeof(path), "%s/a", dir);
+	assert_int_equal(rmdir(path), 0);
+	assert_int_equal(rmdir(dir), 0);
+}
+
+/* A script error names the file, line and column; English plurals. */
+static void test_script_messages(void **state)
+{
+	char path[] = "/tmp/rdcctl_rdl_XXXXXX", args[128], want[64];
+	int fd = mkstemp(path);
+	FILE *f;
+
+	(void)state;
+	assert_true(fd >= 0);
+	f = fdopen(fd, "w");
+	assert_non_null(f);
+	fputs("mode 320x200 xrgb8888\n  fg #gg0000\n", f);
+	fclose(f);
+	snprintf(args, sizeof(args), "run %s", path);
+	assert_int_equal(ctl(args), 1);
+	snprintf(want, sizeof(want), "%s:2:6: error: bad colour '#gg0000'",
+		 path);
+	assert_non_null(strstr(out, want));
+	f = fopen(path, "w");
+	assert_non_null(f);
+	fputs("fill 1\n", f);
+	fclose(f);
+	assert_int_equal(ctl(args), 1);
+	assert_non_null(strstr(out, "fill: 1 argument (takes 4)"));
+	unlink(path);
+}
+
+/*
+ * A trace cut short (rdcd still recording, or killed) is replayed up to
+ * its last complete record and said to be truncated; one that is not a
+ * trace is refused as such.
+ */
+static void test_replay_messages(void **state)
+{
+	char path[] = "/tmp/rdcctl_trace_XXXXXX", args[128];
+	int fd = mkstemp(path);
+	FILE *f;
+
+	(void)state;
+	assert_true(fd >= 0);
+	f = fdopen(fd, "w");
+	assert_non_null(f);
+	/* a header (version 2, 64 KiB of VRAM) and half a record */
+	fwrite("RDCTRACE\x02\0\0\0\0\0\x01\0\x05\0\0", 1, 19, f);
+	fclose(f);
+	snprintf(args, sizeof(args), "replay %s", path);
+	assert_int_equal(ctl(args), 0);
+	assert_non_null(strstr(out, "truncated trace"));
+	assert_non_null(strstr(out, "records 0"));
+	f = fopen(path, "w");
+	assert_non_null(f);
+	fputs("fill 0 0 1 1\n", f);
+	fclose(f);
+	assert_int_equal(ctl(args), 1);
+	assert_non_null(strstr(out, "not an rdcd trace"));
+	assert_null(strstr(out, "syntax"));
 	unlink(path);
 }
 
@@ -131,6 +248,9 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_run_matches_library),
 		cmocka_unit_test(test_errors_and_exit_codes),
 		cmocka_unit_test(test_regs_and_stats),
+		cmocka_unit_test(test_output_errors),
+		cmocka_unit_test(test_script_messages),
+		cmocka_unit_test(test_replay_messages),
 	};
 	char self[400];
 

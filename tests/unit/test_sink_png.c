@@ -144,9 +144,6 @@ static void test_png_bad_specs(void **state)
 {
 	char spec[128];
 	rdc_sink *s = NULL;
-	uint32_t px[4] = { 0 };
-	struct rdc_frame f = { .xrgb = px, .width = 2, .height = 2,
-			       .stride = 2 };
 
 	(void)state;
 	assert_int_equal(rdc_sink_open("png:", &s), RDC_E_URI);
@@ -159,12 +156,60 @@ static void test_png_bad_specs(void **state)
 	snprintf(spec, sizeof(spec), "png:%s,speed", tdir);
 	assert_int_equal(rdc_sink_open(spec, &s), RDC_E_URI);
 	assert_null(s);
-	/* A directory that is not there: the frame is reported, not lost
-	 * silently. */
-	snprintf(spec, sizeof(spec), "png:%s/missing,every=1", tdir);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_URI), "speed"));
+}
+
+/*
+ * A directory that is not there is made, parents too (mkdir -p); one that
+ * cannot be made fails the open with its name and the reason; one that
+ * goes away later fails the frame the same way, never silently.
+ */
+static void test_png_directories(void **state)
+{
+	char spec[160], path[160], file[200];
+	rdc_sink *s = NULL;
+	uint32_t px[4] = { 0 };
+	struct rdc_frame f = { .xrgb = px, .width = 2, .height = 2,
+			       .stride = 2 };
+	FILE *fp;
+
+	(void)state;
+	snprintf(spec, sizeof(spec), "png:%s/a/b/,every=1", tdir);
 	assert_int_equal(rdc_sink_open(spec, &s), 0);
+	assert_int_equal(rdc_sink_frame(s, &f), 0);
+	snprintf(file, sizeof(file), "%s/a/b/frame-00000000.png", tdir);
+	assert_int_equal(access(file, R_OK), 0);
+	/* the directory goes away under the sink */
+	assert_int_equal(unlink(file), 0);
+	snprintf(path, sizeof(path), "%s/a/b", tdir);
+	assert_int_equal(rmdir(path), 0);
+	f.seq = 1;
 	assert_int_equal(rdc_sink_frame(s, &f), RDC_E_FILE);
+	snprintf(file, sizeof(file), "%s/a/b//frame-00000001.png", tdir);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE), file));
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "No such file or directory"));
 	rdc_sink_close(s);
+	snprintf(path, sizeof(path), "%s/a", tdir);
+	assert_int_equal(rmdir(path), 0);
+
+	/* under a regular file: refused at open */
+	snprintf(path, sizeof(path), "%s/plain", tdir);
+	fp = fopen(path, "w");
+	assert_non_null(fp);
+	fclose(fp);
+	snprintf(spec, sizeof(spec), "png:%s/plain/shots,every=1", tdir);
+	s = NULL;
+	assert_int_equal(rdc_sink_open(spec, &s), RDC_E_FILE);
+	assert_null(s);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE), path));
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "Not a directory"));
+	snprintf(spec, sizeof(spec), "png:%s/plain,every=1", tdir);
+	assert_int_equal(rdc_sink_open(spec, &s), RDC_E_FILE);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "not a directory"));
+	unlink(path);
 }
 
 int main(void)
@@ -175,6 +220,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_png_on_demand_and_pixels,
 						setup, teardown),
 		cmocka_unit_test_setup_teardown(test_png_bad_specs, setup,
+						teardown),
+		cmocka_unit_test_setup_teardown(test_png_directories, setup,
 						teardown),
 	};
 

@@ -68,7 +68,7 @@ enum rdc_error {
 	RDC_E_DEVICE = -7,  /* the device reported an error (rdc_dev_error) */
 	RDC_E_HALTED = -8,  /* the display processor is halted on an error */
 	RDC_E_RANGE = -9,   /* address or size outside the device */
-	RDC_E_PARSE = -10,  /* script syntax error (rdc_script_*) */
+	RDC_E_PARSE = -10,  /* malformed script or trace */
 	RDC_E_PROTO = -11,  /* protocol violation by the other side */
 	RDC_E_BUSY = -12,   /* another client controls the device */
 	RDC_E_FILE = -13,   /* file could not be read or written */
@@ -80,6 +80,17 @@ enum rdc_error {
 
 /* A short English description of an enum rdc_error value. */
 const char *rdc_strerror(int err);
+/*
+ * What lies behind an error, when librdc knows more than the code says:
+ * the file, socket or device concerned and the system's reason, e.g.
+ * "unix:/tmp/rdc.sock: connect: No such file or directory (is rdcd
+ * running? start it with rdcd --listen unix:/tmp/rdc.sock)".  Kept per
+ * thread: the detail of the calling thread's most recent failure that
+ * recorded one, returned only if that failure's code is `err` (so it never
+ * describes some other error), else "".  Valid until the thread's next
+ * librdc call.
+ */
+const char *rdc_last_error_detail(int err);
 /* The name of a device error code (enum rdc_err), e.g. "RANGE". */
 const char *rdc_dev_strerror(uint32_t code);
 
@@ -514,13 +525,19 @@ struct rdc_replay_result {
 	uint32_t width, height;
 	/* CRC-32 of every frame's CRC-32 in order, as little-endian u32s */
 	uint32_t frames_crc;
+	/* 1: the trace ends without its END record (the recorder is still
+	 * running, or was killed); everything up to its last complete
+	 * record was replayed */
+	uint32_t truncated;
 };
 
 /*
  * Play a trace back on a fresh sim: device: the same operations at the
  * same simulated times give the same frames and cycle counts.  `dev_out`
  * (may be NULL) receives the device afterwards, for the caller to
- * inspect and rdc_close.  RDC_E_FILE, RDC_E_PARSE for a damaged trace.
+ * inspect and rdc_close.  RDC_E_FILE, RDC_E_PARSE for a damaged trace
+ * (rdc_last_error_detail says where); a trace cut short is not damaged:
+ * 0 with res->truncated set.
  */
 int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 		    rdc_dev **dev_out);

@@ -3,6 +3,9 @@
  * librdc core: the public device API on top of a backend's operations.
  * Nothing here knows which backend it runs on.
  */
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <zlib.h>
@@ -30,7 +33,7 @@ static const char *const rdc_error_str[] = {
 	[-RDC_E_DEVICE] = "the device reported an error",
 	[-RDC_E_HALTED] = "the display processor is halted",
 	[-RDC_E_RANGE] = "address or size out of range",
-	[-RDC_E_PARSE] = "script syntax error",
+	[-RDC_E_PARSE] = "malformed script or trace",
 	[-RDC_E_PROTO] = "protocol violation",
 	[-RDC_E_BUSY] = "device busy",
 	[-RDC_E_FILE] = "file could not be read or written",
@@ -44,6 +47,36 @@ const char *rdc_strerror(int err)
 	if (err > 0 || err <= RDC_E_COUNT_)
 		return "unknown error";
 	return rdc_error_str[-err];
+}
+
+/* The thread's last recorded detail (rdc_last_error_detail). */
+static __thread struct {
+	int err;
+	char msg[320];
+} rdc_detail;
+
+int rdc_err_detail(int err, const char *fmt, ...)
+{
+	int saved = errno;
+	va_list ap;
+
+	rdc_detail.err = err;
+	va_start(ap, fmt);
+	vsnprintf(rdc_detail.msg, sizeof(rdc_detail.msg), fmt, ap);
+	va_end(ap);
+	errno = saved;
+	return err;
+}
+
+void rdc_err_detail_clear(void)
+{
+	rdc_detail.err = 0;
+	rdc_detail.msg[0] = 0;
+}
+
+const char *rdc_last_error_detail(int err)
+{
+	return err && rdc_detail.err == err ? rdc_detail.msg : "";
 }
 
 static const char *const rdc_dev_error_str[RDC_ERR_COUNT] = {
@@ -77,6 +110,7 @@ int rdc_open(const char *uri, rdc_dev **out)
 	rdc_dev *dev;
 	int ret;
 
+	rdc_err_detail_clear();
 	if (!out)
 		return RDC_E_INVAL;
 	*out = NULL;
@@ -93,9 +127,14 @@ int rdc_open(const char *uri, rdc_dev **out)
 			be = rdc_backends[i];
 	}
 	if (!be)
-		return RDC_E_URI;
+		return rdc_err_detail(RDC_E_URI,
+				      "'%.*s:' is not a device kind (sim:, "
+				      "unix:, tcp:, usb:, fbdev:)",
+				      (int)RDC_MIN(slen, (size_t)40), uri);
 	if (!be->open)
-		return RDC_E_NOSYS;
+		return rdc_err_detail(RDC_E_NOSYS,
+				      "%s: this librdc was built without it",
+				      be->scheme);
 	dev = calloc(1, sizeof(*dev));
 	if (!dev)
 		return RDC_E_NOMEM;

@@ -680,7 +680,9 @@ static int sock_send(struct rdc_xport *x, const struct iovec *iov, int n)
 		if (k < 0) {
 			if (errno == EINTR)
 				continue;
-			return RDC_E_IO;
+			return rdc_err_detail(RDC_E_IO,
+					      "sending to rdcd: %s",
+					      strerror(errno));
 		}
 		while (mh.msg_iovlen && (size_t)k >= mh.msg_iov->iov_len) {
 			k -= (ssize_t)mh.msg_iov->iov_len;
@@ -712,12 +714,20 @@ static ssize_t sock_recv(struct rdc_xport *x, void *buf, size_t len,
 			if (r == 0)
 				return RDC_E_TIMEOUT;
 			if (r < 0)
-				return RDC_E_IO;
+				return rdc_err_detail(RDC_E_IO, "poll: %s",
+						      strerror(errno));
 		}
 		k = read(s->fd, buf, len);
 		if (k < 0 && errno == EINTR)
 			continue;
-		return k <= 0 ? RDC_E_IO : k;
+		if (k < 0)
+			return rdc_err_detail(RDC_E_IO,
+					      "receiving from rdcd: %s",
+					      strerror(errno));
+		if (k == 0)
+			return rdc_err_detail(RDC_E_IO,
+					      "rdcd closed the connection");
+		return k;
 	}
 }
 
@@ -735,6 +745,19 @@ static const struct rdc_xport_ops sock_ops = {
 	.close = sock_close,
 };
 
+/* A connect() that failed: the address, the reason, and what to try. */
+static int net_connect_failed(const char *uri)
+{
+	bool absent = errno == ENOENT || errno == ECONNREFUSED;
+
+	return rdc_err_detail(RDC_E_IO, "%s: connect: %s%s%s%s", uri,
+			      strerror(errno),
+			      absent ? " (is rdcd running? start it with "
+				       "rdcd --listen "
+				     : "",
+			      absent ? uri : "", absent ? ")" : "");
+}
+
 static int net_connect_unix(const char *path)
 {
 	struct sockaddr_un sa = {.sun_family = AF_UNIX};
@@ -747,14 +770,22 @@ static int net_connect_unix(const char *path)
 		path = def;
 	}
 	if (strlen(path) >= sizeof(sa.sun_path))
-		return RDC_E_URI;
+		return rdc_err_detail(RDC_E_URI,
+				      "unix:%.200s: a socket path has at most "
+				      "%zu bytes",
+				      path, sizeof(sa.sun_path) - 1);
 	strcpy(sa.sun_path, path);
 	fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
 	if (fd < 0)
-		return RDC_E_IO;
+		return rdc_err_detail(RDC_E_IO, "socket: %s", strerror(errno));
 	if (connect(fd, (struct sockaddr *)&sa, sizeof(sa))) {
+		char uri[300]; /* "unix:" and up to 255 bytes */
+		int ret;
+
+		snprintf(uri, sizeof(uri), "unix:%s", path);
+		ret = net_connect_failed(uri);
 		close(fd);
-		return RDC_E_IO;
+		return ret;
 	}
 	return fd;
 }
@@ -764,11 +795,15 @@ static int net_connect_tcp(const char *hostport)
 	char host[256];
 	const char *colon = strrchr(hostport, ':'), *port;
 	struct addrinfo hints = {.ai_socktype = SOCK_STREAM}, *res, *ai;
+	const char *whole = hostport;
+	char uri[300]; /* "tcp:" and up to 255 bytes */
 	size_t hlen;
-	int fd = RDC_E_IO;
+	int fd = RDC_E_IO, ret;
 
 	if (!colon || !colon[1])
-		return RDC_E_URI;
+		return rdc_err_detail(RDC_E_URI,
+				      "tcp:%.200s: HOST:PORT expected",
+				      hostport);
 	port = colon + 1;
 	hlen = (size_t)(colon - hostport);
 	/* [::1]:7000 */
@@ -780,15 +815,18 @@ static int net_connect_tcp(const char *hostport)
 		return RDC_E_URI;
 	memcpy(host, hostport, hlen);
 	host[hlen] = 0;
-	if (getaddrinfo(host, port, &hints, &res))
-		return RDC_E_URI;
+	ret = getaddrinfo(host, port, &hints, &res);
+	if (ret)
+		return rdc_err_detail(RDC_E_URI, "tcp:%.200s: %s", whole,
+				      gai_strerror(ret));
 	for (ai = res; ai; ai = ai->ai_next) {
 		int one = 1;
 
 		fd = socket(ai->ai_family, ai->ai_socktype | SOCK_CLOEXEC,
 			    ai->ai_protocol);
 		if (fd < 0) {
-			fd = RDC_E_IO;
+			fd = rdc_err_detail(RDC_E_IO, "socket: %s",
+					    strerror(errno));
 			continue;
 		}
 		if (!connect(fd, ai->ai_addr, ai->ai_addrlen)) {
@@ -797,6 +835,8 @@ static int net_connect_tcp(const char *hostport)
 				   sizeof(one));
 			break;
 		}
+		snprintf(uri, sizeof(uri), "tcp:%s", whole);
+		net_connect_failed(uri);
 		close(fd);
 		fd = RDC_E_IO;
 	}

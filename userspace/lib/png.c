@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /* PNG output of XRGB8888 frames through libpng. */
+#include <errno.h>
 #include <png.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "rdc_priv.h"
 
@@ -26,16 +28,23 @@ int rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,
 	f = fopen(path, "wb");
 	if (!f) {
 		free(row);
-		return RDC_E_FILE;
+		return rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+				      strerror(errno));
 	}
 	png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
 	if (png)
 		info = png_create_info_struct(png);
-	if (!png || !info)
+	if (!png || !info) {
+		ret = RDC_E_NOMEM;
 		goto out;
+	}
 	/* libpng reports errors by longjmp: land here with ret unset. */
-	if (setjmp(png_jmpbuf(png)))
+	if (setjmp(png_jmpbuf(png))) {
+		rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+			       errno ? strerror(errno) : "libpng failed");
 		goto out;
+	}
+	errno = 0;
 	png_init_io(png, f);
 	png_set_IHDR(png, info, w, h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
 		     PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -55,7 +64,8 @@ int rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,
 out:
 	png_destroy_write_struct(&png, &info);
 	if (fclose(f) && !ret)
-		ret = RDC_E_FILE;
+		ret = rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+				     strerror(errno));
 	free(row);
 	return ret;
 }

@@ -190,6 +190,14 @@ int rdc_rec_close(struct rdc_rec *rec, rdc_dev *dev);
  * nothing.
  */
 void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from);
+/*
+ * A client is about to get an answer that depends on time moved outside
+ * the handle (a wait rdcd ran on the chip): write that time as its step
+ * now and flush, so a replay of the file so far reaches the same point.
+ * The recorder does this itself after REG_READ and WAIT records.  NULL
+ * rec: nothing.
+ */
+void rdc_rec_sync(struct rdc_rec *rec);
 
 struct rdc_dev {
 	const struct rdc_backend *be;
@@ -224,6 +232,16 @@ int rdc_pins_wait_regs(rdc_dev *dev, uint32_t pins, uint32_t edges,
 		       uint64_t budget, struct rdc_pin_edge *ev);
 /* CLOCK_MONOTONIC in nanoseconds (pins.c). */
 uint64_t rdc_pins_wall_ns(void);
+
+/*
+ * Record the detail of a failure for rdc_last_error_detail (core.c):
+ * formats it into the thread's buffer and returns `err`, so a failing
+ * path reads `return rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+ * strerror(errno));`.  errno is kept.  rdc_err_detail_clear forgets it.
+ */
+int rdc_err_detail(int err, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+void rdc_err_detail_clear(void);
 
 /* RDC_E_DEVICE if the device has a pending error, else 0 (core.c). */
 int rdc_check_error(rdc_dev *dev);

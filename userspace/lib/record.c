@@ -24,7 +24,15 @@
  *
  * Version 1 is version 2 without PINS: such traces still replay.  The
  * same layout, as a table: docs/protocol.md, "Traces".
+ *
+ * The file is flushed whenever a client gets an answer (after REG_READ,
+ * WAIT, POWER and END records): a replay while the recorder still runs
+ * sees every operation up to the last answer, and a trace that stops
+ * without END (the recorder still running, or killed) is replayed up to
+ * its last complete record and reported as truncated.
  */
+#include <errno.h>
+#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -67,6 +75,13 @@ static const struct rdc_backend rdc_backend_rec;
 static void rec_put(struct rdc_rec *r, const void *p, size_t n)
 {
 	if (n && fwrite(p, 1, n, r->f) != n)
+		r->err = RDC_E_FILE;
+}
+
+/* A client is about to see an answer: what led to it goes to the file. */
+static void rec_sync(struct rdc_rec *r)
+{
+	if (fflush(r->f))
 		r->err = RDC_E_FILE;
 }
 
@@ -118,6 +133,7 @@ struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size)
 		return NULL;
 	r->f = fopen(path, "wb");
 	if (!r->f) {
+		rdc_err_detail(RDC_E_FILE, "%s: %s", path, strerror(errno));
 		free(r);
 		return NULL;
 	}
@@ -125,6 +141,7 @@ struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size)
 	rdc_proto_put32(b, REC_VERSION);
 	rdc_proto_put32(b + 4, vram_size);
 	rec_put(r, b, sizeof(b));
+	rec_sync(r);
 	return r;
 }
 
@@ -140,6 +157,7 @@ void rdc_rec_attach(struct rdc_rec *r, rdc_dev *dev)
 void rdc_rec_power(struct rdc_rec *r)
 {
 	rec_head(r, REC_POWER);
+	rec_sync(r);
 	r->hw = NULL;
 }
 
@@ -199,6 +217,7 @@ static int rec_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 	rdc_proto_put32(b + 9, reg);
 	rdc_proto_put32(b + 13, ret ? 0 : *val);
 	rec_put(r, b, sizeof(b));
+	rec_sync(r);
 	return ret;
 }
 
@@ -250,6 +269,7 @@ static int rec_wait(rdc_dev *dev, const struct rdc_wait *w)
 	rdc_proto_wait_encode(b, &pw);
 	rdc_proto_put32(b + RDC_PROTO_WAIT_SIZE, (uint32_t)ret);
 	rec_put(r, b, sizeof(b));
+	rec_sync(r);
 	return ret;
 }
 
@@ -290,6 +310,14 @@ static int rec_step(rdc_dev *dev, uint64_t cycles)
 	return REC_INNER(dev, r, step(dev, cycles));
 }
 
+void rdc_rec_sync(struct rdc_rec *rec)
+{
+	if (!rec)
+		return;
+	rec_flush_moved(rec);
+	rec_sync(rec);
+}
+
 void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from)
 {
 	if (rec && !rec->moved) {
@@ -328,16 +356,33 @@ static const struct rdc_backend rdc_backend_rec = {
 
 struct replay {
 	FILE *f;
+	const char *path;
 	struct rdc_replay_result *res;
 	rdc_dev *dev;
 	uint32_t version;
 	uint32_t vram;
 	uint8_t *buf;
+	uint64_t off;	/* bytes read */
+	bool cut;	/* the file ended inside a record */
 };
 
+/* n bytes, or RDC_E_PARSE with p->cut set when the file ends first. */
 static int rp_get(struct replay *p, void *b, size_t n)
 {
-	return fread(b, 1, n, p->f) == n ? 0 : RDC_E_PARSE;
+	size_t got = fread(b, 1, n, p->f);
+
+	p->off += got;
+	if (got == n)
+		return 0;
+	p->cut = !ferror(p->f);
+	return RDC_E_PARSE;
+}
+
+/* A trace that is not one, or is damaged: say where. */
+static int rp_bad(struct replay *p, const char *why, uint64_t at)
+{
+	return rdc_err_detail(RDC_E_PARSE, "%s: %s at byte %" PRIu64,
+			      p->path, why, at);
 }
 
 static void rp_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
@@ -470,25 +515,49 @@ int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 		*dev_out = NULL;
 	p.res = res ? res : &dummy;
 	memset(p.res, 0, sizeof(*p.res));
+	rdc_err_detail_clear();
+	p.path = path;
 	p.f = fopen(path, "rb");
 	if (!p.f)
-		return RDC_E_FILE;
+		return rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+				      strerror(errno));
 	ret = rp_get(&p, hdr, sizeof(hdr));
 	p.version = ret ? 0 : rdc_proto_get32(hdr + REC_MAGIC_LEN);
-	if (!ret && (memcmp(hdr, REC_MAGIC, REC_MAGIC_LEN) ||
-		     p.version < REC_VERSION_MIN || p.version > REC_VERSION))
-		ret = RDC_E_PARSE;
+	if (ret || memcmp(hdr, REC_MAGIC, REC_MAGIC_LEN))
+		ret = rp_bad(&p, "not an rdcd trace (no RDCTRACE header)", 0);
+	else if (p.version < REC_VERSION_MIN || p.version > REC_VERSION)
+		ret = rdc_err_detail(RDC_E_PARSE,
+				     "%s: trace version %u (this build reads "
+				     "%u to %u)",
+				     path, p.version, REC_VERSION_MIN,
+				     REC_VERSION);
 	if (!ret) {
 		p.vram = rdc_proto_get32(hdr + REC_MAGIC_LEN + 4);
 		p.buf = p.vram <= REC_MAX_VRAM_WRITE ? malloc(p.vram + 1) : NULL;
-		ret = p.buf ? rp_open(&p) : RDC_E_PARSE;
+		ret = p.buf ? rp_open(&p)
+			    : rp_bad(&p, "VRAM size out of range",
+				     REC_MAGIC_LEN + 4);
 	}
 	while (!ret) {
-		uint64_t t;
+		uint64_t t, at = p.off;
 
 		ret = rp_get(&p, rec, sizeof(rec));
-		if (ret)
-			break; /* no END record: a trace cut short */
+		/* Cut short (no END record): the recorder is still running,
+		 * or was killed.  What is complete has been replayed; an
+		 * unknown op in the last bytes is damage all the same. */
+		if (ret && p.cut && (p.off == at ||
+				     (rec[0] >= REC_REG_WRITE &&
+				      rec[0] <= REC_PINS))) {
+			p.res->truncated = 1;
+			ret = 0;
+			break;
+		}
+		if (ret) {
+			ret = p.cut ? rp_bad(&p, "unknown record type", at)
+				    : rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+						     strerror(errno));
+			break;
+		}
 		t = rdc_proto_get64(rec + 1);
 		if (rec[0] == REC_END) {
 			struct rdc_hw *hw = rdc_sim_hw(p.dev);
@@ -500,6 +569,15 @@ int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 			break;
 		}
 		ret = rp_one(&p, rec[0], t);
+		if (ret && p.cut) {
+			/* the last record is incomplete: not replayed */
+			p.res->truncated = 1;
+			ret = 0;
+			break;
+		}
+		if (ret == RDC_E_PARSE &&
+		    !*rdc_last_error_detail(RDC_E_PARSE))
+			rp_bad(&p, "bad record", at);
 		p.res->records++;
 	}
 	if (p.dev)

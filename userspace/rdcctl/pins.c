@@ -12,6 +12,7 @@
 
 #include "pins.h"
 #include "rdc.h"
+#include "report.h"
 
 #define PINS_MAX_SET 8
 /* One wait of --watch, so a signal is noticed (microseconds). */
@@ -231,8 +232,7 @@ int rdcctl_pins_main(int argc, char **argv)
 
 	ret = rdc_open(o.uri, &dev);
 	if (ret) {
-		fprintf(stderr, "rdcctl: cannot open '%s': %s\n", o.uri,
-			rdc_strerror(ret));
+		rdcctl_open_error(o.uri, ret);
 		return 1;
 	}
 	if (o.set_mask) {

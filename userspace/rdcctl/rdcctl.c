@@ -9,6 +9,7 @@
 
 #include "pins.h"
 #include "rdc.h"
+#include "report.h"
 #include "stream.h"
 
 #define RDCCTL_DEFAULT_URI "sim:"
@@ -118,7 +119,7 @@ static int run_script(rdc_dev *dev, const char *path,
 	else if (res->error_msg[0])
 		fprintf(stderr, "rdcctl: %s\n", res->error_msg);
 	else
-		fprintf(stderr, "rdcctl: %s: %s\n", path, rdc_strerror(ret));
+		rdcctl_error(path, ret);
 	return ret;
 }
 
@@ -165,8 +166,7 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 				"not '%s'\n",
 				o->uri);
 		else if (ret)
-			fprintf(stderr, "rdcctl: %s: %s\n", o->vcd,
-				rdc_strerror(ret));
+			rdcctl_error(o->vcd, ret);
 		if (ret)
 			goto out;
 	}
@@ -186,13 +186,21 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 			  : RDC_E_NOMEM;
 	}
 	if (ret) {
-		fprintf(stderr, "rdcctl: frame: %s\n", rdc_strerror(ret));
+		rdcctl_error("frame", ret);
 		goto out;
 	}
 	ret = rdc_frame_crc(dev, &crc);
 	if (ret) {
-		fprintf(stderr, "rdcctl: crc: %s\n", rdc_strerror(ret));
+		rdcctl_error("crc", ret);
 		goto out;
+	}
+	/* the PNG first: a run that fails prints no figures */
+	if (o->png) {
+		ret = rdc_png_write(o->png, pix, w, h, w);
+		if (ret) {
+			rdcctl_error(o->png, ret);
+			goto out;
+		}
 	}
 	print_classes(res);
 	if (res->readbacks)
@@ -202,19 +210,12 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 	       hz ? (double)t * 1000.0 / hz : 0.0, hz);
 	printf("frame %ux%u\n", w, h);
 	printf("crc32 %08x\n", crc);
-	if (o->png) {
-		ret = rdc_png_write(o->png, pix, w, h, w);
-		if (ret)
-			fprintf(stderr, "rdcctl: %s: %s\n", o->png,
-				rdc_strerror(ret));
-	}
 out:
 	if (vcd) {
 		int err = rdc_vcd_close(vcd);
 
 		if (err)
-			fprintf(stderr, "rdcctl: %s: %s\n", o->vcd,
-				rdc_strerror(err));
+			rdcctl_error(o->vcd, err);
 		if (!ret)
 			ret = err;
 	}
@@ -238,8 +239,7 @@ static int cmd_regs(rdc_dev *dev)
 		}
 		ret = rdc_reg_read(dev, reg, &v);
 		if (ret) {
-			fprintf(stderr, "rdcctl: %s: %s\n", name,
-				rdc_strerror(ret));
+			rdcctl_error(name, ret);
 			return ret;
 		}
 		printf("0x%03x %-18s 0x%08x %u\n", reg, name, v, v);
@@ -256,7 +256,7 @@ static int cmd_stats(rdc_dev *dev)
 	if (!ret)
 		ret = rdc_sim_core_hz(dev, &hz);
 	if (ret) {
-		fprintf(stderr, "rdcctl: stats: %s\n", rdc_strerror(ret));
+		rdcctl_error("stats", ret);
 		return ret;
 	}
 	printf("time         %llu cycles (%.3f ms)\n",
@@ -287,10 +287,16 @@ static int cmd_replay(const struct opts *o)
 	}
 	ret = rdc_replay_file(o->script, &res, &dev);
 	if (ret) {
-		fprintf(stderr, "rdcctl: %s: %s\n", o->script,
-			rdc_strerror(ret));
+		rdcctl_error(o->script, ret);
 		return 1;
 	}
+	if (res.truncated)
+		fprintf(stderr,
+			"rdcctl: %s: truncated trace: it ends without its END "
+			"record (rdcd is still recording, or was stopped "
+			"without closing it); replayed up to its last complete "
+			"record\n",
+			o->script);
 	printf("records %llu\n", (unsigned long long)res.records);
 	printf("total %llu cycles\n", (unsigned long long)res.time);
 	printf("frames %llu\n", (unsigned long long)res.frames);
@@ -309,8 +315,7 @@ static int cmd_replay(const struct opts *o)
 		if (!ret)
 			ret = rdc_png_write(o->png, pix, w, h, w);
 		if (ret)
-			fprintf(stderr, "rdcctl: %s: %s\n", o->png,
-				rdc_strerror(ret));
+			rdcctl_error(o->png, ret);
 		free(pix);
 	}
 	rdc_close(dev);
@@ -328,7 +333,7 @@ static int cmd_list(void)
 	int n = rdc_list(list_one, NULL);
 
 	if (n < 0) {
-		fprintf(stderr, "rdcctl: list: %s\n", rdc_strerror(n));
+		rdcctl_error("list", n);
 		return 1;
 	}
 	if (!n)
@@ -366,8 +371,7 @@ int main(int argc, char **argv)
 	}
 	ret = rdc_open(o.uri, &dev);
 	if (ret) {
-		fprintf(stderr, "rdcctl: cannot open '%s': %s\n", o.uri,
-			rdc_strerror(ret));
+		rdcctl_open_error(o.uri, ret);
 		return 1;
 	}
 	if (!strcmp(o.cmd, "run")) {

@@ -12,6 +12,7 @@
 
 #include "rdc.h"
 #include "rdc_sink.h"
+#include "report.h"
 #include "stream.h"
 
 #define STREAM_MAX_SINKS 8
@@ -145,8 +146,10 @@ static int stream_add(rdc_sink **sinks, int *n, const char *spec)
 	}
 	ret = rdc_sink_open(spec, &sinks[*n]);
 	if (ret) {
-		fprintf(stderr, "rdcctl: stream: sink '%s': %s\n", spec,
-			rdc_strerror(ret));
+		char what[STREAM_SPEC_MAX + 32];
+
+		snprintf(what, sizeof(what), "stream: sink '%s'", spec);
+		rdcctl_report(what, NULL, ret);
 		return ret;
 	}
 	(*n)++;
@@ -277,8 +280,11 @@ static int stream_run(rdc_dev *dev, const struct stream_opts *o,
 			}
 		}
 		if (ret) {
-			fprintf(stderr, "rdcctl: stream: frame %llu: %s\n",
-				(unsigned long long)seq, rdc_strerror(ret));
+			char what[48];
+
+			snprintf(what, sizeof(what), "stream: frame %llu",
+				 (unsigned long long)seq);
+			rdcctl_report(what, NULL, ret);
 			break;
 		}
 		if (rdc_sink_interval(dev, &n2, &d2))
@@ -291,14 +297,23 @@ static int stream_run(rdc_dev *dev, const struct stream_opts *o,
 		f.seq = seq;
 		f.interval_num = n2;
 		f.interval_den = d2;
-		for (int i = 0; i < nsinks; i++) {
-			int sr = rdc_sink_frame(sinks[i], &f);
+		/* A sink that cannot go on (a PNG that cannot be
+		 * written) ends the stream: a failure, not a warning per
+		 * frame. */
+		for (int i = 0; !ret && i < nsinks; i++) {
+			ret = rdc_sink_frame(sinks[i], &f);
+			if (ret) {
+				char what[64];
 
-			if (sr)
-				fprintf(stderr, "rdcctl: stream: %s sink: %s\n",
-					rdc_sink_kind(sinks[i]),
-					rdc_strerror(sr));
+				snprintf(what, sizeof(what),
+					 "stream: %s sink: frame %llu",
+					 rdc_sink_kind(sinks[i]),
+					 (unsigned long long)seq);
+				rdcctl_report(what, NULL, ret);
+			}
 		}
+		if (ret)
+			break;
 		if (o->fast || !n2 || !d2)
 			continue;
 		/* Pace: frame k of this rate leaves at t0 + k * interval. */
@@ -380,8 +395,7 @@ int rdcctl_stream_main(int argc, char **argv)
 
 	ret = rdc_open(o.uri, &dev);
 	if (ret) {
-		fprintf(stderr, "rdcctl: cannot open '%s': %s\n", o.uri,
-			rdc_strerror(ret));
+		rdcctl_open_error(o.uri, ret);
 		return 1;
 	}
 	ret = stream_open_sinks(&o, sinks, &nsinks);

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /* The png sink: numbered stills, every Nth frame and on demand. */
+#include <errno.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
+#include "rdc_priv.h"
 #include "sink_priv.h"
 
 #define PNG_PREFIX_MAX 64
@@ -32,7 +35,8 @@ static int png_frame(rdc_sink *s, const struct rdc_frame *f)
 	n = snprintf(path, sizeof(path), "%s/%s-%08" PRIu64 ".png", p->dir,
 		     p->prefix, f->seq);
 	if (n < 0 || (size_t)n >= sizeof(path))
-		return RDC_E_FILE;
+		return rdc_err_detail(RDC_E_FILE, "%.200s/...: path too long",
+				      p->dir);
 	ret = rdc_png_write(path, f->xrgb, f->width, f->height, f->stride);
 	if (ret) {
 		s->st.dropped++;
@@ -59,6 +63,45 @@ static void png_close(rdc_sink *s)
 	free(p->dir);
 	free(p);
 	s->priv = NULL;
+}
+
+/*
+ * The directory and its parents, as mkdir -p makes them (the mode is
+ * 0777 less the umask).  Created at open, so a sink that could never
+ * write fails there, before the first frame.
+ */
+static int png_mkdir_p(const char *dir)
+{
+	char *d = strdup(dir), *p;
+	struct stat st;
+	int ret = 0;
+
+	if (!d)
+		return RDC_E_NOMEM;
+	for (p = d + 1;; p++) {
+		bool last = !*p;
+
+		if (*p != '/' && !last)
+			continue;
+		*p = 0;
+		if (mkdir(d, 0777) && errno != EEXIST) {
+			ret = rdc_err_detail(RDC_E_FILE,
+					     "png sink: cannot create '%s': %s",
+					     d, strerror(errno));
+			break;
+		}
+		if (last)
+			break;
+		*p = '/';
+	}
+	if (!ret && stat(dir, &st))
+		ret = rdc_err_detail(RDC_E_FILE, "png sink: '%s': %s", dir,
+				     strerror(errno));
+	else if (!ret && !S_ISDIR(st.st_mode))
+		ret = rdc_err_detail(RDC_E_FILE,
+				     "png sink: '%s' is not a directory", dir);
+	free(d);
+	return ret;
 }
 
 /* A prefix becomes part of a file name: keep it to a safe alphabet. */
@@ -106,6 +149,12 @@ static int png_open(rdc_sink *s, const char *args)
 			ret = RDC_E_URI;
 	}
 	free(dup);
+	if (ret == RDC_E_URI)
+		rdc_err_detail(ret, "png:%.200s: png:DIR[,every=N][,prefix="
+			       "NAME] expected (NAME: letters, digits, _-.)",
+			       args);
+	if (!ret)
+		ret = png_mkdir_p(p->dir);
 	if (ret)
 		png_close(s);
 	return ret;

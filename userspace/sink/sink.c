@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "rdc_priv.h"
 #include "sink_priv.h"
 
 static const struct rdc_sink_ops *const sink_kinds[] = {
@@ -57,14 +58,17 @@ int rdc_sink_open(const char *spec, rdc_sink **out)
 	const char *colon;
 	size_t klen;
 
+	rdc_err_detail_clear();
 	if (!spec || !out)
 		return RDC_E_INVAL;
 	*out = NULL;
 	if (strnlen(spec, SINK_SPEC_MAX) >= SINK_SPEC_MAX)
-		return RDC_E_URI;
+		return rdc_err_detail(RDC_E_URI, "sink spec longer than %d "
+				      "bytes", SINK_SPEC_MAX - 1);
 	colon = strchr(spec, ':');
 	if (!colon)
-		return RDC_E_URI;
+		return rdc_err_detail(RDC_E_URI, "'%.60s': KIND:ARGS expected "
+				      "(v4l2:, png:, vnc:)", spec);
 	klen = (size_t)(colon - spec);
 	for (size_t i = 0; i < sizeof(sink_kinds) / sizeof(sink_kinds[0]);
 	     i++) {
@@ -86,7 +90,8 @@ int rdc_sink_open(const char *spec, rdc_sink **out)
 		*out = s;
 		return 0;
 	}
-	return RDC_E_URI;
+	return rdc_err_detail(RDC_E_URI, "'%.*s': not a sink kind (v4l2, png, "
+			      "vnc)", (int)RDC_MIN(klen, (size_t)40), spec);
 }
 
 int rdc_sink_frame(rdc_sink *s, const struct rdc_frame *f)

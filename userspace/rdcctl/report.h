@@ -1,0 +1,42 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+#ifndef RDCCTL_REPORT_H
+#define RDCCTL_REPORT_H
+
+#include <stdio.h>
+#include <string.h>
+
+#include "rdc.h"
+
+/*
+ * "rdcctl: WHAT: ERROR: DETAIL" on stderr: the error's name, then what
+ * librdc knows of its cause (rdc_last_error_detail: the system's reason,
+ * a hint), when it knows something.  A detail that starts with `name`
+ * (the path or URI already in WHAT) loses it, so it is not said twice.
+ */
+static inline void rdcctl_report(const char *what, const char *name, int err)
+{
+	const char *d = rdc_last_error_detail(err);
+	size_t n = name ? strlen(name) : 0;
+
+	if (n && !strncmp(d, name, n) && !strncmp(d + n, ": ", 2))
+		d += n + 2;
+	fprintf(stderr, "rdcctl: %s: %s%s%s\n", what, rdc_strerror(err),
+		*d ? ": " : "", d);
+}
+
+/* An error about `what`, a file, a URI or a step. */
+static inline void rdcctl_error(const char *what, int err)
+{
+	rdcctl_report(what, what, err);
+}
+
+/* rdc_open(uri) failed. */
+static inline void rdcctl_open_error(const char *uri, int err)
+{
+	char what[300];
+
+	snprintf(what, sizeof(what), "cannot open '%s'", uri);
+	rdcctl_report(what, uri, err);
+}
+
+#endif
