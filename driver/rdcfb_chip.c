@@ -311,7 +311,6 @@ void rdcfb_chip_start(struct rdcfb_chip *chip)
 /* Stop the clock and end every wait; the chip itself stays until free. */
 void rdcfb_chip_stop(struct rdcfb_chip *chip)
 {
-
 	rdcfb_chip_lock(chip);
 	WRITE_ONCE(chip->dying, true);
 	rdcfb_chip_unlock(chip);
@@ -383,7 +382,6 @@ u32 rdcfb_reg_read(struct rdcfb_chip *chip, u32 reg)
 
 void rdcfb_reg_write(struct rdcfb_chip *chip, u32 reg, u32 val)
 {
-
 	rdcfb_chip_lock(chip);
 	rdc_hw_write(&chip->hw, reg, val);
 	/* CONTROL (reset), FIFO_DATA: the DP's state may no longer be ours */
@@ -548,7 +546,7 @@ static int rdcfb_chip_wait_sig(struct rdcfb_chip *chip,
 		     (w->term[i].reg % sizeof(u32) ||
 		      w->term[i].reg >= RDC_REG_WINDOW)))
 			return -EINVAL;
-	if (w->flags & ~RDCFB_WAIT_NEEDS_DP || w->budget > RDCFB_MAX_CYCLES)
+	if (w->flags & ~RDCFB_WAIT_NEEDS_DP)
 		return -EINVAL;
 	if (READ_ONCE(chip->dying))
 		return -ENODEV;

@@ -1027,6 +1027,9 @@ static int rdcfb_ioctl(struct fb_info *info, unsigned int cmd,
 	case RDCFB_IOC_WAIT:
 		if (copy_from_user(&w, argp, sizeof(w)))
 			return -EFAULT;
+		/* the driver's own waits (vsync, SUBMIT) are not capped */
+		if (w.budget > RDCFB_MAX_CYCLES)
+			return -EINVAL;
 		return rdcfb_chip_wait(chip, &w);
 	case RDCFB_IOC_STEP:
 		if (copy_from_user(&st, argp, sizeof(st)))
