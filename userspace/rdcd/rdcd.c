@@ -829,8 +829,8 @@ int main(int argc, char **argv)
 		int err = rdc_sink_open(o.sinks[i], &d.sinks[d.nsinks]);
 
 		if (err) {
-			rdcd_log(&d, RDCD_LOG_ERR, "sink %s: %s", o.sinks[i],
-				 rdc_strerror(err));
+			rdcd_log(&d, RDCD_LOG_ERR, "sink %s: %s: %s", o.sinks[i],
+				 rdc_strerror(err), rdc_last_error_detail(err));
 			goto out;
 		}
 		d.nsinks++;

@@ -85,6 +85,9 @@ int rdc_sink_open(const char *spec, rdc_sink **out)
 		ret = ops->open(s, colon + 1);
 		if (ret) {
 			free(s);
+			if (ret == RDC_E_URI && !*rdc_last_error_detail(ret))
+				rdc_err_detail(ret, "'%.200s': bad %s sink spec "
+					       "(rdc_sink.h)", spec, ops->kind);
 			return ret;
 		}
 		*out = s;

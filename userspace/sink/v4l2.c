@@ -28,6 +28,7 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
+#include "rdc_priv.h"
 #include "sink_priv.h"
 
 #define V4L2LOOPBACK_DRIVER "v4l2 loopback"
@@ -96,11 +97,13 @@ static int v4l2_connect(struct v4l2_sink *v)
 	int fd = v->io.open(v->path, O_WRONLY | O_NONBLOCK | O_CLOEXEC);
 
 	if (fd < 0)
-		return RDC_E_FILE;
+		return rdc_err_detail(RDC_E_FILE, "%s: %s", v->path,
+				      strerror(errno));
 	memset(&cap, 0, sizeof(cap));
 	if (v->io.ioctl(fd, VIDIOC_QUERYCAP, &cap) < 0) {
 		v->io.close(fd);
-		return RDC_E_NOSYS;
+		return rdc_err_detail(RDC_E_NOSYS, "%s: not a V4L2 device",
+				      v->path);
 	}
 	caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps
 							  : cap.capabilities;
@@ -112,7 +115,10 @@ static int v4l2_connect(struct v4l2_sink *v)
 		caps |= V4L2_CAP_VIDEO_OUTPUT;
 	if (!(caps & V4L2_CAP_VIDEO_OUTPUT) || !(caps & V4L2_CAP_READWRITE)) {
 		v->io.close(fd);
-		return RDC_E_NOSYS;
+		return rdc_err_detail(RDC_E_NOSYS,
+				      "%s: not a V4L2 output that takes "
+				      "write() (a v4l2loopback device?)",
+				      v->path);
 	}
 	v->fd = fd;
 	v->away_frames = 0;

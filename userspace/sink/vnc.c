@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "rdc_priv.h"
 #include "sink_priv.h"
 
 #ifdef RDC_HAVE_VNC
@@ -80,7 +81,9 @@ static int vnc_start(struct vnc_sink *v, uint32_t w, uint32_t h)
 	scr->listen6Interface = v->listen6;
 	rfbInitServer(scr);
 	if (scr->listenSock == RFB_INVALID_SOCKET)
-		return RDC_E_IO;
+		return rdc_err_detail(RDC_E_IO,
+				      "vnc sink: cannot listen on port %u",
+				      v->port);
 	v->width = w;
 	v->height = h;
 	return 0;
@@ -226,7 +229,9 @@ static int vnc_open(rdc_sink *s, const char *args)
 {
 	(void)s;
 	(void)args;
-	return RDC_E_NOSYS;
+	return rdc_err_detail(RDC_E_NOSYS,
+			      "vnc sink: built without libvncserver (Debian: "
+			      "libvncserver-dev)");
 }
 
 static int vnc_frame(rdc_sink *s, const struct rdc_frame *f)
