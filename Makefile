@@ -25,6 +25,10 @@ SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all \
 SAN_CFLAGS := $(BASE_CFLAGS) -O1 -g $(SAN_FLAGS)
 
 LIBS := $(shell $(PKG_CONFIG) --libs libpng zlib 2>/dev/null || echo -lpng -lz)
+# Optional libraries: a build without one says so when it builds librdc
+# (not while make reads this file: `make demo` and `make check` install
+# them first, and their inner make is the one that builds).
+MISSING :=
 # The vnc frame sink needs libvncserver; without it the build goes on and
 # that sink answers RDC_E_NOSYS.
 HAVE_VNC := $(shell $(PKG_CONFIG) --exists libvncserver 2>/dev/null && echo 1)
@@ -34,7 +38,7 @@ REL_CFLAGS += $(VNC_CFLAGS)
 SAN_CFLAGS += $(VNC_CFLAGS)
 LIBS += $(shell $(PKG_CONFIG) --libs libvncserver)
 else
-$(info libvncserver not found (Debian: libvncserver-dev): building without the vnc sink)
+MISSING += "libvncserver not found (Debian: libvncserver-dev): building without the vnc sink"
 endif
 # The usb: backend and rdcd's FunctionFS listener need libusb-1.0 (the
 # listener itself only the kernel's FunctionFS headers); without it usb:
@@ -46,7 +50,7 @@ REL_CFLAGS += $(USB_CFLAGS)
 SAN_CFLAGS += $(USB_CFLAGS)
 LIBS += $(shell $(PKG_CONFIG) --libs libusb-1.0)
 else
-$(info libusb-1.0 not found (Debian: libusb-1.0-0-dev): building without the usb: backend)
+MISSING += "libusb-1.0 not found (Debian: libusb-1.0-0-dev): building without the usb: backend"
 endif
 # GPIO lines (fbdev: pins, rdcd's gpio-sim bridge) need libgpiod's v2 API;
 # Debian 12 has it in bookworm-backports (scripts/deps.sh).
@@ -57,7 +61,7 @@ REL_CFLAGS += $(GPIOD_CFLAGS)
 SAN_CFLAGS += $(GPIOD_CFLAGS)
 LIBS += $(shell $(PKG_CONFIG) --libs libgpiod)
 else
-$(info libgpiod >= 2.0 not found (Debian 12: libgpiod-dev from bookworm-backports): building without GPIO lines)
+MISSING += "libgpiod >= 2.0 not found (Debian 12: libgpiod-dev from bookworm-backports): building without GPIO lines"
 endif
 LIBS += -lpthread
 CMOCKA_LIBS := $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
@@ -88,7 +92,7 @@ help:
 	@echo "make golden       regenerate tests/golden/golden.txt and write PNGs to $(O)/golden"
 	@echo "make freestanding compile hw-sim/ and firmware-model/ with no libc headers"
 	@echo "make speed        time a full-screen fill through the command path against memset"
-	@echo "make bench        BENCHMARKS.md workloads against the plain-C limits, then rdcd and sinks"
+	@echo "make bench        the workloads (bench/README.md) against plain-C limits, then rdcd, sinks"
 	@echo "make bench-peers  the same, also against pixman, cairo and SDL2_gfx"
 	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
 	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
@@ -111,10 +115,12 @@ $(O)/san/%.o: %.c
 
 $(O)/rel/librdc.a: $(REL_OBJS)
 	@rm -f $@
+	@for m in $(MISSING); do echo "$$m"; done
 	ar rcs $@ $^
 
 $(O)/san/librdc.a: $(SAN_OBJS)
 	@rm -f $@
+	@for m in $(MISSING); do echo "$$m"; done
 	ar rcs $@ $^
 
 $(O)/rel/rdcctl: $(patsubst %.c,$(O)/rel/%.o,$(CTL_SRCS)) $(O)/rel/librdc.a
@@ -146,7 +152,7 @@ check test: deps
 $(O)/rel/rdc-bench: $(O)/rel/bench/rdc_bench.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
-# The workloads of BENCHMARKS.md (bench/README.md), then rdcd's and the
+# The workloads defined in bench/README.md, then rdcd's and the
 # v4l2 sink's figures; BENCH_ARGS="-w fill -r 5" to narrow the first part.
 bench: $(O)/rel/rdc-bench $(O)/rel/sink-bench $(O)/rel/net_bench $(O)/rel/rdcd
 	$(O)/rel/rdc-bench $(BENCH_ARGS)

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /*
  * rdc-bench internals shared by the driver (rdc_bench.c) and the peer
- * libraries (peer_*.c): the workloads' inputs, drawn once from the
- * BENCHMARKS.md random stream before anything is timed, so that rdc, the
+ * libraries (peer_*.c): the workloads' inputs (bench/README.md), drawn
+ * once from their random stream before anything is timed, so that rdc, the
  * plain-C limits and every peer draw exactly the same primitives.
  */
 #ifndef RDC_BENCH_H
@@ -37,7 +37,7 @@
 #define BENCH_TEXT_OPS	      1000000u
 #define BENCH_SCANOUT_FRAMES  600u
 
-/* BENCHMARKS.md's distributions */
+/* the workloads' distributions (bench/README.md) */
 #define BENCH_RECT_MAX	      256 /* fill, blit: w, h = 1 + r() % this */
 #define BENCH_RADIUS_MAX      128 /* circle: radius = 1 + r() % this */
 #define BENCH_DISC_RADIUS_MAX 64  /* fill_circle */
@@ -74,7 +74,7 @@ enum bench_kind {
  *   polygon:     n, index of the first vertex in xy, colour
  *   text:        glyph, fg, bg, x, y (of its cell)
  * prefill (blit) holds BENCH_FILL_OPS fill records.  Colours carry
- * BENCH_OPAQUE as BENCHMARKS.md draws them.
+ * BENCH_OPAQUE as the workloads draw them.
  */
 struct bench_input {
 	enum bench_kind kind;
@@ -85,11 +85,11 @@ struct bench_input {
 	uint8_t font[BENCH_GLYPHS * BENCH_GLYPH_H]; /* bit 7 leftmost */
 	uint32_t clut[BENCH_CLUT_SIZE];		    /* 0x00RRGGBB */
 	uint8_t *index;				    /* scanout: 8 bpp */
-	uint64_t pixels; /* as BENCHMARKS.md counts */
+	uint64_t pixels; /* as the workloads' rules count */
 	uint64_t *cum;	 /* pixels of the first i primitives, i = 0..ops */
 };
 
-/* The clipped size of a fill record (BENCHMARKS.md's clipping rule). */
+/* The clipped size of a fill record (the workloads' clipping rule). */
 static inline uint32_t bench_fill_w(const uint32_t *a)
 {
 	return a[2] < BENCH_W - a[0] ? a[2] : BENCH_W - a[0];

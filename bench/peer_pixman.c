@@ -4,7 +4,8 @@
  * (pixman_fill), blit (pixman_blt), text (a solid colour composited
  * through an a1 glyph mask over a pixman_fill of the cell) and scanout
  * (an indexed c8 image composited to x8r8g8b8).  Every result is checked
- * by CRC against BENCHMARKS.md, so the work is the same as rdc's.
+ * by CRC against the workloads of bench/README.md, so the work is the same
+ * as rdc's.
  */
 #include <stdlib.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * rdc-bench: the workloads of BENCHMARKS.md through the real command path
+ * rdc-bench: the workloads of bench/README.md through the real command path
  * (librdc sim: -> command words -> display-processor firmware -> hw-sim,
  * cycle counting on), each against the plain-C limit of the same work and,
  * when built with them, the libraries a user would otherwise draw with.
@@ -8,7 +8,7 @@
  *   rdc-bench [-w WORKLOAD[,WORKLOAD...]] [-r REPEATS] [--json] [--peers]
  *             [--full]
  *
- * One JSON object a workload on stdout, BENCHMARKS.md's keys first, then
+ * One JSON object a workload on stdout, the workloads' keys first, then
  * the limits, the peers and the ratios; then, unless --json, a table.
  * Every wall time is the median of the repeats, measured around the
  * drawing only; crc32 is the zlib CRC-32 of the target surface after the
@@ -68,7 +68,7 @@
 /* A sink that discards: png writes only the frames asked for (never). */
 #define RT_SINK "png:/nonexistent,every=0"
 
-/* Expected CRCs (BENCHMARKS.md); 0 where none is given. */
+/* Expected CRCs (bench/README.md); 0 where none is given. */
 static const uint32_t expect_crc[BENCH_KIND_COUNT] = {
 	[BENCH_FILL] = 0xcce4ceedu,	[BENCH_BLIT] = 0x039b2ef6u,
 	[BENCH_BLIT_XOR] = 0x96d2b63du, [BENCH_TEXT] = 0x7c6efccau,
@@ -209,7 +209,7 @@ static void *xcalloc(size_t n, size_t size)
 	return p;
 }
 
-/* ---- inputs and BENCHMARKS.md's pixel counts ----------------------------- */
+/* ---- inputs and the workloads' pixel counts ---------------------------- */
 
 static void make_fills(uint32_t *arg, uint32_t seed, uint32_t ops, bool indexed)
 {
@@ -1436,9 +1436,9 @@ static void run_kind(struct result *res, enum bench_kind kind,
 }
 
 /*
- * A wrong CRC from rdc or from a limit means the work differs from
- * BENCHMARKS.md's: the figures are void and the run fails.  (Targets
- * missed do not fail it.)
+ * A wrong CRC from rdc or from a limit means the work differs from the
+ * workloads' (bench/README.md): the figures are void and the run fails.
+ * (Targets missed do not fail it.)
  */
 static int crc_failures(const struct result *res, size_t n)
 {

@@ -1,14 +1,18 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
 # Run every cmocka test program in $1/tests from the source root and close
-# with one summary line: "tests: N passed, M failed".
+# with one summary line: "tests: N passed, M failed, K skipped" (cmocka's
+# skip(): a test that cannot run here, e.g. a library this build lacks,
+# says why in its output), after the names of the skipped tests.
 set -u
 dir=${1:-build/san}
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 pass=0
 fail=0
+skipped=0
 bad=""
+skips=""
 for t in "$dir"/tests/test_*; do
 	[ -x "$t" ] || continue
 	out=$("$t" 2>&1)
@@ -16,13 +20,21 @@ for t in "$dir"/tests/test_*; do
 	printf '%s\n' "$out"
 	p=$(printf '%s\n' "$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -n 1)
 	f=$(printf '%s\n' "$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -n 1)
+	# cmocka 1.1: "[  SKIPPED ] N test(s), listed below:", then a line
+	# per skipped test
+	s=$(printf '%s\n' "$out" | sed -n 's/^\[  SKIPPED \] \([0-9]*\) test(s), listed below:.*/\1/p' | tail -n 1)
+	for n in $(printf '%s\n' "$out" | sed -n '/^\[  SKIPPED \] [0-9]* test(s), listed below:/,$ s/^\[  SKIPPED \] \([^ ]*\)$/\1/p'); do
+		skips="$skips $(basename "$t"):$n"
+	done
 	pass=$((pass + ${p:-0}))
+	skipped=$((skipped + ${s:-0}))
 	if [ $rc -ne 0 ] && [ -z "$f" ]; then
 		f=1 # crashed or sanitizer abort before cmocka's summary
 	fi
 	fail=$((fail + ${f:-0}))
 	[ $rc -ne 0 ] && bad="$bad $(basename "$t")"
 done
+[ -n "$skips" ] && echo "skipped tests:$skips"
 [ -n "$bad" ] && echo "failing programs:$bad"
-echo "tests: $pass passed, $fail failed"
+echo "tests: $pass passed, $fail failed, $skipped skipped"
 [ $fail -eq 0 ] && [ $pass -gt 0 ]

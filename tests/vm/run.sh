@@ -3,7 +3,8 @@
 # The VM test harness: boot Debian's own kernel under QEMU with a small
 # initramfs, share this machine's root file system with the guest over
 # virtio-9p (read-only), and run every tests/vm/tests/*.sh there against
-# real kernel modules.  Prints TAP and closes with "vm: N passed, M failed".
+# real kernel modules.  Prints TAP and closes with
+# "vm: N passed, M failed, K skipped" (a test skips, exit 77, saying why).
 #
 #   tests/vm/run.sh [--auto] [BUILD_DIR]
 #
@@ -157,6 +158,7 @@ echo "vm: guest ran $(($(date +%s) - start)) s (console: $LOG)"
 # ---- Results: TAP -------------------------------------------------------------
 pass=0
 fail=0
+skipped=0
 i=0
 set -- $TESTS
 echo "1..$#"
@@ -165,7 +167,13 @@ for n in $TESTS; do
 	res=$(tr -d '\r' <"$LOG" | sed -n "s/.*RDC-VM-RESULT $n \([0-9]*\).*/\1/p" | tail -n 1)
 	case $res in
 	0) echo "ok $i - $n"; pass=$((pass + 1)) ;;
-	77) echo "ok $i - $n # SKIP" ;;
+	77) # the reason: the last line the test printed
+		why=$(tr -d '\r' <"$LOG" | awk -v b="RDC-VM-BEGIN $n" -v r="RDC-VM-RESULT $n " '
+			index($0, r) { on = 0 }
+			on && NF { last = $0 }
+			index($0, b) && index($0, b) == length($0) - length(b) + 1 { on = 1 }
+			END { print last }' | sed 's/^# *//')
+		echo "ok $i - $n # SKIP${why:+ $why}"; skipped=$((skipped + 1)) ;;
 	"") echo "not ok $i - $n (no result: guest died? qemu status $qrc)"; fail=$((fail + 1)) ;;
 	*) echo "not ok $i - $n (exit $res)"; fail=$((fail + 1)) ;;
 	esac
@@ -179,5 +187,5 @@ if [ $fail -ne 0 ]; then
 	echo "# last console lines:"
 	grep -v '^RDC-VM' "$LOG" | tail -n 20 | sed 's/^/# /'
 fi
-echo "vm: $pass passed, $fail failed"
+echo "vm: $pass passed, $fail failed, $skipped skipped"
 [ $fail -eq 0 ]
