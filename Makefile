@@ -81,7 +81,8 @@ TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
-	bench-sink vm-test bench-net bench-usb fuzz fuzz-long bench-peers module \
+	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
+	bench-peers module \
 	module-clean checkpatch
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a
 
@@ -97,7 +98,9 @@ help:
 	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
 	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
 	@echo "make bench-usb    the same over USB against the socket, in the VM (figures only)"
-	@echo "make fuzz         short libFuzzer runs: protocol parser, USB framing (fuzz-long: 10 min each)"
+	@echo "make fuzz         short libFuzzer runs: protocol codec, USB framing, rdcd, .rdl"
+	@echo "make fuzz-long    the same targets, ten minutes in all (FUZZ_LONG_TIME s each)"
+	@echo "make fuzz-cov     line coverage per file of the fuzz corpora (llvm-14)"
 	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/*"
 	@echo "make module       build rdcfb.ko in $(O)/kmod (KDIR= for another kernel)"
 	@echo "make checkpatch   the kernel's checkpatch.pl over driver/ and the core"
@@ -209,35 +212,133 @@ bench-net: $(O)/rel/net_bench $(O)/rel/rdcd
 bench-usb: $(O)/rel/net_bench $(O)/rel/rdcd
 	RDC_VM_TESTS=usb-bench tests/vm/run.sh $(O)
 
-# libFuzzer on the protocol parser (needs clang).  `make fuzz` is the short
-# run `make check` does; `make fuzz-long` searches for ten minutes and keeps
-# its corpus in $(O)/fuzz/corpus.
+# libFuzzer targets (needs clang; tests/fuzz/README.md):
+#   fuzz_proto   the wire protocol's codec (userspace/lib/proto.c)
+#   fuzz_usb     the host side of the USB framing (usb_host.c)
+#   fuzz_rdcd    rdcd's request handling, several clients (rdcd/serve.c)
+#   fuzz_script  the .rdl interpreter on a sim: device (lib/script.c)
+# `make fuzz` is the short run `make check` does (fuzz_proto and fuzz_usb
+# a million inputs each, the other two FUZZ_TIME seconds each from their
+# seeds in tests/fuzz/seeds/); `make fuzz-long` gives each target
+# FUZZ_LONG_TIME seconds (150: ten minutes in all) and keeps its corpus in
+# $(FUZZ_DIR)/corpus-NAME; `make fuzz-cov` runs the seeds and those corpora
+# once through coverage builds and prints line coverage per file.
 FUZZ_CC ?= clang
-FUZZ_CFLAGS := -std=gnu11 -g -O1 -fsanitize=fuzzer,address,undefined \
-	-fno-sanitize-recover=all $(INC) -D_GNU_SOURCE
+FUZZ_DIR ?= $(O)/fuzz
+FUZZ_INSTR ?= -fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_CFLAGS := -std=gnu11 -g -O1 -fsanitize=fuzzer $(FUZZ_INSTR) $(INC) \
+	-D_GNU_SOURCE
 FUZZ_RUNS ?= 1000000
-$(O)/fuzz/fuzz_proto: tests/fuzz/fuzz_proto.c userspace/lib/proto.c \
+FUZZ_TIME ?= 15
+FUZZ_LONG_TIME ?= 150
+FUZZ_TARGETS := proto usb rdcd script
+FUZZ_BINS := $(patsubst %,$(FUZZ_DIR)/fuzz_%,$(FUZZ_TARGETS))
+$(FUZZ_DIR)/fuzz_proto: tests/fuzz/fuzz_proto.c userspace/lib/proto.c \
 		userspace/include/rdc_proto.h
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) tests/fuzz/fuzz_proto.c userspace/lib/proto.c -o $@
 
 # The host side of the USB framing: bulk chunks and interrupt transfers
 # from a device into whole messages (userspace/lib/usb_host.c).
-$(O)/fuzz/fuzz_usb: tests/fuzz/fuzz_usb.c userspace/lib/usb_host.c \
+$(FUZZ_DIR)/fuzz_usb: tests/fuzz/fuzz_usb.c userspace/lib/usb_host.c \
 		userspace/lib/usb_host.h userspace/lib/proto.c \
 		userspace/include/rdc_proto.h userspace/include/rdc_usb.h
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) tests/fuzz/fuzz_usb.c userspace/lib/usb_host.c \
 		userspace/lib/proto.c -o $@
 
-fuzz: $(O)/fuzz/fuzz_proto $(O)/fuzz/fuzz_usb
-	$(O)/fuzz/fuzz_proto -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
-	$(O)/fuzz/fuzz_usb -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
+# fuzz_rdcd and fuzz_script run on the whole of librdc and rdcd's objects
+# but rdcd.c (main and the poll loop: the target turns the loop itself),
+# compiled once more with the fuzzer's instrumentation.  Some library
+# calls are wrapped at link time (--wrap) to bound the work per input
+# (waits in the simulator, `step`) and to keep `screenshot` from writing
+# files: the targets' comments say which and why.
+FUZZ_LIB_CFLAGS := -std=gnu11 -g -O1 -fsanitize=fuzzer-no-link $(FUZZ_INSTR) \
+	$(INC) -D_GNU_SOURCE $(VNC_CFLAGS) $(USB_CFLAGS) $(GPIOD_CFLAGS)
+FUZZ_LIB_OBJS := $(patsubst %.c,$(FUZZ_DIR)/obj/%.o,$(CORE_SRCS) $(LIB_SRCS))
+FUZZ_RDCD_OBJS := $(patsubst %.c,$(FUZZ_DIR)/obj/%.o,\
+	$(filter-out userspace/rdcd/rdcd.c,$(RDCD_SRCS)))
+$(FUZZ_DIR)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_LIB_CFLAGS) -MMD -MP -c $< -o $@
+$(FUZZ_DIR)/obj/tests/fuzz/%.o: tests/fuzz/%.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_LIB_CFLAGS) $(WARN) -Iuserspace/rdcd -MMD -MP -c $< -o $@
+$(FUZZ_DIR)/librdc.a: $(FUZZ_LIB_OBJS)
+	@rm -f $@
+	ar rcs $@ $^
+$(FUZZ_DIR)/librdcd.a: $(FUZZ_RDCD_OBJS)
+	@rm -f $@
+	ar rcs $@ $^
+FUZZ_ALLOC := $(FUZZ_DIR)/obj/tests/fuzz/fuzz_alloc.o
+FUZZ_WRAP_ALLOC := -Wl,--wrap=calloc,--wrap=free
+$(FUZZ_DIR)/fuzz_rdcd: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_rdcd.o $(FUZZ_ALLOC) \
+		$(FUZZ_DIR)/librdcd.a $(FUZZ_DIR)/librdc.a
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_WRAP_ALLOC) \
+		-Wl,--wrap=rdc_hw_wait_begin $^ $(LIBS) -o $@
+$(FUZZ_DIR)/fuzz_script: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_script.o \
+		$(FUZZ_ALLOC) $(FUZZ_DIR)/librdc.a
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_WRAP_ALLOC) \
+		-Wl,--wrap=rdc_png_write,--wrap=rdc_sim_step \
+		-Wl,--wrap=rdc_sim_run_until,--wrap=rdc_hw_wait_begin \
+		$^ $(LIBS) -o $@
 
-fuzz-long: $(O)/fuzz/fuzz_proto $(O)/fuzz/fuzz_usb
-	@mkdir -p $(O)/fuzz/corpus $(O)/fuzz/corpus-usb
-	$(O)/fuzz/fuzz_proto -max_total_time=600 -max_len=65536 $(O)/fuzz/corpus
-	$(O)/fuzz/fuzz_usb -max_total_time=600 -max_len=65536 $(O)/fuzz/corpus-usb
+fuzz-bins: $(FUZZ_BINS)
+
+# fuzz_rdcd and fuzz_script start from their seeds each time (a fresh
+# $(FUZZ_DIR)/short-NAME, so a run does not depend on the last one).
+fuzz: $(FUZZ_BINS)
+	$(FUZZ_DIR)/fuzz_proto -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
+	$(FUZZ_DIR)/fuzz_usb -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
+	@for t in rdcd script; do \
+		rm -rf $(FUZZ_DIR)/short-$$t && mkdir -p $(FUZZ_DIR)/short-$$t; \
+		dict=; [ -f tests/fuzz/$$t.dict ] && dict=-dict=tests/fuzz/$$t.dict; \
+		cmd="$(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_TIME) -seed=1"; \
+		cmd="$$cmd -timeout=60 -print_final_stats=1 $$dict"; \
+		cmd="$$cmd $(FUZZ_DIR)/short-$$t tests/fuzz/seeds/$$t"; \
+		echo "$$cmd (log: $(FUZZ_DIR)/short-$$t.log)"; \
+		if ! $$cmd >$(FUZZ_DIR)/short-$$t.log 2>&1; then \
+			tail -n 80 $(FUZZ_DIR)/short-$$t.log; exit 1; fi; \
+		grep -E '^(Done|stat::number_of_executed_units|stat::peak_rss)' \
+			$(FUZZ_DIR)/short-$$t.log; \
+	done
+
+fuzz-long: $(FUZZ_BINS)
+	@for t in $(FUZZ_TARGETS); do \
+		mkdir -p $(FUZZ_DIR)/corpus-$$t; \
+		seeds=; [ -d tests/fuzz/seeds/$$t ] && seeds=tests/fuzz/seeds/$$t; \
+		dict=; [ -f tests/fuzz/$$t.dict ] && dict=-dict=tests/fuzz/$$t.dict; \
+		echo "$(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_LONG_TIME)" \
+			"-max_len=65536 $$dict $(FUZZ_DIR)/corpus-$$t $$seeds"; \
+		$(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_LONG_TIME) \
+			-max_len=65536 -timeout=60 $$dict -print_final_stats=1 \
+			$(FUZZ_DIR)/corpus-$$t $$seeds || exit 1; \
+	done
+
+# Line coverage per file of what the seeds and fuzz-long's corpora reach:
+# the targets built with clang's source-based coverage in $(O)/fuzz-cov,
+# each run once over its inputs (-runs=0), llvm-cov's report per file.
+LLVM_PROFDATA ?= llvm-profdata-14
+LLVM_COV ?= llvm-cov-14
+FUZZ_COV_DIR := $(O)/fuzz-cov
+FUZZ_COV_FILES := userspace/lib/proto.c userspace/lib/usb_host.c \
+	userspace/rdcd/serve.c userspace/lib/script.c
+fuzz-cov:
+	$(MAKE) FUZZ_DIR=$(FUZZ_COV_DIR) \
+		FUZZ_INSTR="-fprofile-instr-generate -fcoverage-mapping" fuzz-bins
+	@set -e; rm -f $(FUZZ_COV_DIR)/*.profraw; objs=; \
+	for t in $(FUZZ_TARGETS); do \
+		ins=; for d in $(FUZZ_DIR)/corpus-$$t tests/fuzz/seeds/$$t; do \
+			[ -d $$d ] && ins="$$ins $$d"; done; \
+		[ -n "$$ins" ] || { echo "fuzz-cov: no inputs for $$t"; continue; }; \
+		LLVM_PROFILE_FILE=$(FUZZ_COV_DIR)/$$t.profraw \
+			$(FUZZ_COV_DIR)/fuzz_$$t -runs=0 $$ins >/dev/null 2>&1; \
+		objs="$$objs -object $(FUZZ_COV_DIR)/fuzz_$$t"; \
+	done; \
+	$(LLVM_PROFDATA) merge -sparse $(FUZZ_COV_DIR)/*.profraw \
+		-o $(FUZZ_COV_DIR)/all.profdata; \
+	$(LLVM_COV) report $$objs -instr-profile=$(FUZZ_COV_DIR)/all.profdata \
+		$(FUZZ_COV_FILES)
 
 # The v4l2 sink's conversions against memcpy, per frame.
 bench-sink: $(O)/rel/sink-bench

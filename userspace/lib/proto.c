@@ -268,7 +268,7 @@ size_t rdc_proto_frame_encode(uint8_t *out, size_t cap, uint32_t enc,
 			      uint32_t w, uint32_t h)
 {
 	size_t n = (size_t)w * h, o = 0;
-	uint32_t runs;
+	uint32_t runs = 0; /* an empty row (w == 0) has none */
 
 	switch (enc) {
 	case RDC_ENC_RAW:

@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-only
+"""Write the seed inputs of fuzz_rdcd (tests/fuzz/seeds/rdcd) in the record
+format tests/fuzz/fuzz_rdcd.c reads, and fuzz_script's (seeds/script) from
+examples/*.rdl and tests/golden/scenes/*.rdl.  Run from the top of the tree
+when the formats change; the output is checked in."""
+import os
+import shutil
+import struct
+
+HELLO, REG_READ, REG_WRITE, VRAM_READ, VRAM_WRITE, SUBMIT, WAIT, STEP, \
+    FRAME_GRAB, SUBSCRIBE, STATS, RESET, CLAIM, RELEASE, PING, PINS_SET = \
+    range(1, 17)
+REG_STATUS, REG_IRQ_STATUS, REG_IRQ_ENABLE = 0x014, 0x018, 0x01c
+REG_FB_FORMAT, REG_MODE_PRESET, REG_FRAME_COUNT = 0x130, 0x140, 0x13c
+OP_SET_FG, OP_SET_DST, OP_FILL_RECT, OP_FENCE = 0x10, 0x14, 0x24, 0x01
+
+
+def u32(*v):
+    return b"".join(struct.pack("<I", x & 0xffffffff) for x in v)
+
+
+def cmd(op, *args):
+    return u32(op << 24 | len(args), *args)
+
+
+class Seed:
+    def __init__(self, mode, vram256=False, token=False):
+        self.b = bytearray([mode | (4 if vram256 else 0) | (8 if token else 0)])
+
+    def connect(self, tcp=False):
+        self.b.append(0x80 if tcp else 0)
+
+    def hello(self, c, control=False, token=0):
+        # token: 0 none, 2 right, 0x82 one byte short
+        self.b += bytes([4 | c << 3, (1 if control else 0) | token])
+
+    def msg(self, c, typ, pl=b""):
+        assert len(pl) < 2048
+        self.b += bytes([3 | c << 3 | (len(pl) >> 8) << 5, typ, len(pl) & 255])
+        self.b += pl
+
+    def raw(self, c, data):
+        assert len(data) < 2048
+        self.b += bytes([2 | c << 3 | (len(data) >> 8) << 5, len(data) & 255])
+        self.b += data
+
+    def time(self, units):
+        self.b += bytes([5, units - 1])
+
+    def turns(self, n):
+        self.b += bytes([6 | (n - 1) << 3])
+
+    def hangup(self, c):
+        self.b += bytes([1 | c << 3])
+
+    def drop(self, c):
+        self.b += bytes([7 | c << 3])
+
+
+def wait(budget, needs_dp=0, terms=()):
+    t = list(terms) + [(0, 0, 0, 0)] * (2 - len(terms))
+    return struct.pack("<QI", budget, needs_dp) + b"".join(u32(*x) for x in t)
+
+
+def small_mode(s, c):
+    s.msg(c, REG_WRITE, u32(REG_FB_FORMAT, 3))  # i8: 320x200 fits 64 KiB
+    s.msg(c, REG_WRITE, u32(REG_MODE_PRESET, 0))
+    s.msg(c, REG_WRITE, u32(REG_IRQ_ENABLE, 0xffffffff))
+
+
+def draw(fg=5):
+    return (cmd(OP_SET_DST, 0, 320, 200 << 16 | 320, 3) + cmd(OP_SET_FG, fg) +
+            cmd(OP_FILL_RECT, 10 << 16 | 10, 40 << 16 | 50) +
+            cmd(OP_FENCE, 7))
+
+
+def seeds():
+    out = {}
+    for mode, name in ((2, "stepped"), (1, "fast"), (0, "paced")):
+        s = Seed(mode)
+        s.connect()
+        s.hello(0, control=True)
+        small_mode(s, 0)
+        s.msg(0, SUBSCRIBE, u32(3, 1, 2))  # frames and IRQs, delta
+        s.msg(0, SUBMIT, draw())
+        s.msg(0, STEP, struct.pack("<Q", 2000000))
+        s.time(255)
+        s.time(255)
+        s.msg(0, WAIT, wait(300000, 1))
+        s.msg(0, WAIT, wait(1000000, 0, [(3, REG_FRAME_COUNT, 0xff, 3)]))
+        s.time(255)
+        s.time(200)
+        s.msg(0, FRAME_GRAB, u32(1, 1 << 20))
+        s.msg(0, FRAME_GRAB, u32(2, 100))
+        s.msg(0, SUBMIT, draw(9))
+        s.time(255)
+        s.msg(0, STATS)
+        s.msg(0, VRAM_WRITE, u32(0x100) + bytes(range(64)))
+        s.msg(0, VRAM_READ, u32(0xf0, 96))
+        s.msg(0, REG_READ, u32(REG_STATUS))
+        s.msg(0, PINS_SET, u32(0, 0))
+        s.msg(0, PINS_SET, u32(0xc, 0x4))
+        s.msg(0, RESET, u32(0))
+        s.msg(0, SUBSCRIBE, u32(1, 2, 1))
+        s.time(255)
+        s.msg(0, RESET, u32(1))
+        s.msg(0, RELEASE)
+        s.msg(0, CLAIM)
+        s.msg(0, PING)
+        out["single-" + name] = s.b
+
+        s = Seed(mode, vram256=True)
+        s.connect()
+        s.connect()
+        s.hello(0, control=True)
+        s.hello(1)
+        small_mode(s, 0)
+        s.msg(1, REG_WRITE, u32(REG_IRQ_STATUS, 1))  # busy
+        s.msg(1, SUBSCRIBE, u32(1, 1, 0))
+        s.msg(0, SUBSCRIBE, u32(2, 0, 0))
+        s.msg(0, SUBMIT, draw())
+        s.msg(0, WAIT, wait(0, 1))
+        s.time(100)
+        s.msg(1, FRAME_GRAB, u32(0, 1 << 22))
+        s.time(255)
+        s.msg(1, CLAIM)
+        s.msg(0, RELEASE)
+        s.msg(1, CLAIM)
+        s.msg(1, STEP, struct.pack("<Q", 100000))
+        s.time(50)
+        s.hangup(0)
+        s.time(50)
+        s.drop(1)
+        s.connect()
+        s.hello(0, control=True)
+        s.turns(4)
+        out["two-" + name] = s.b
+
+    s = Seed(0, token=True)
+    for _ in range(4):
+        s.connect(tcp=True)
+    s.hello(0, token=2, control=True)
+    s.hello(1, token=0x82)
+    s.hello(2)
+    s.raw(3, u32(0x200000, HELLO << 0, 1, 0))  # too big
+    s.msg(0, PING)
+    s.msg(0, HELLO, u32(0x31434452, 1, 0, 0, 0))  # repeated
+    s.turns(2)
+    out["token"] = s.b
+
+    s = Seed(1)
+    s.connect()
+    s.msg(0, PING)  # before HELLO
+    hello = u32(20, HELLO, 1, 0) + u32(0x31434452, 1, 0x1f, 1, 0)
+    s.raw(0, hello[:7])
+    s.turns(1)
+    s.raw(0, hello[7:])
+    s.msg(0, 99, b"x")
+    s.msg(0, REG_READ, u32(1))
+    s.msg(0, REG_READ, u32(0x220))
+    s.msg(0, WAIT, wait(100, 2))
+    s.msg(0, WAIT, wait(100, 0, [(9, 0, 0, 0)]))
+    s.msg(0, SUBMIT, b"abc")
+    s.msg(0, VRAM_READ, u32(0xfff0, 64))
+    s.msg(0, RESET, u32(5))
+    s.raw(0, u32(8, STEP, 77, 0) + b"\xff" * 4)  # cut short
+    s.hangup(0)
+    out["malformed"] = s.b
+    return out
+
+
+def main():
+    d = "tests/fuzz/seeds/rdcd"
+    shutil.rmtree(d, ignore_errors=True)
+    os.makedirs(d)
+    for name, b in seeds().items():
+        with open(os.path.join(d, name), "wb") as f:
+            f.write(b)
+    d = "tests/fuzz/seeds/script"
+    shutil.rmtree(d, ignore_errors=True)
+    os.makedirs(d)
+    srcs = [("examples", f) for f in sorted(os.listdir("examples"))]
+    srcs += [("tests/golden/scenes", f)
+             for f in sorted(os.listdir("tests/golden/scenes"))]
+    for top, f in srcs:
+        if f.endswith(".rdl"):
+            shutil.copy(os.path.join(top, f), os.path.join(d, f))
+
+
+if __name__ == "__main__":
+    main()
