@@ -1375,6 +1375,15 @@ static void rdcd_take_request(struct rdcd *d, struct rdcd_client *c)
 	c->body_got = 0;
 }
 
+/* A header refused on its length: before HELLO nothing larger than a
+ * HELLO. */
+static bool rdcd_too_big(const struct rdcd_client *c)
+{
+	return c->hdr.len > RDC_PROTO_MAX_REQUEST ||
+	       (!c->hello &&
+		c->hdr.len > RDC_PROTO_HELLO_FIXED + RDC_PROTO_MAX_TOKEN);
+}
+
 /* A request's payload buffer grows with what arrives, from this size. */
 #define RDCD_BODY_FIRST 4096u
 
@@ -1434,12 +1443,13 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 			if (c->hdr_got < RDC_PROTO_HDR_SIZE)
 				continue;
 			rdc_proto_hdr_decode(c->hdrbuf, &c->hdr);
-			/* before HELLO nothing larger than a HELLO */
-			if (c->hdr.len > RDC_PROTO_MAX_REQUEST ||
-			    (!c->hello &&
-			     c->hdr.len > RDC_PROTO_HELLO_FIXED +
-						  RDC_PROTO_MAX_TOKEN)) {
-				rdcd_fatal(d, c, &c->hdr, RDC_ST_TOOBIG);
+			if (rdcd_too_big(c)) {
+				/* replies in request order: after the pending
+				 * one (rdcd_release_held) */
+				if (c->pend != RDCD_PEND_NONE)
+					c->held = true;
+				else
+					rdcd_fatal(d, c, &c->hdr, RDC_ST_TOOBIG);
 				return;
 			}
 			c->body_got = 0;
@@ -1462,7 +1472,16 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 void rdcd_release_held(struct rdcd *d)
 {
 	for (struct rdcd_client *c = d->clients; c; c = c->next) {
-		if (!c->held || c->dead || !rdcd_may_dispatch(d, c))
+		if (!c->held || c->dead)
+			continue;
+		if (rdcd_too_big(c)) { /* no payload read: only this */
+			if (c->pend == RDCD_PEND_NONE) {
+				c->held = false;
+				rdcd_fatal(d, c, &c->hdr, RDC_ST_TOOBIG);
+			}
+			continue;
+		}
+		if (!rdcd_may_dispatch(d, c))
 			continue;
 		c->held = false;
 		rdcd_take_request(d, c);
