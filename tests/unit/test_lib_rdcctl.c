@@ -163,8 +163,8 @@ static void test_output_errors(void **state)
 	assert_int_equal(ctl(args), 1);
 	assert_non_null(strstr(out, "Not a directory"));
 	assert_non_null(strstr(out, path));
-	assert_null(strstr(strstr(out, "Not a directory") + 1,
-			   "Not a directory"));
+	assert_null(
+		strstr(strstr(out, "Not a directory") + 1, "Not a directory"));
 	unlink(path);
 	snprintf(path, sizeof(path), "%s/a", dir);
 	assert_int_equal(rmdir(path), 0);

@@ -140,8 +140,7 @@ static void test_live_and_cut(void **state)
 	copy_cut(10, NULL, 0);
 	assert_int_equal(rdc_replay_file(cut, &res, NULL), RDC_E_PARSE);
 	assert_non_null(strstr(rdc_last_error_detail(RDC_E_PARSE), cut));
-	assert_non_null(strstr(rdc_last_error_detail(RDC_E_PARSE),
-			       "RDCTRACE"));
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_PARSE), "RDCTRACE"));
 	/* an unknown record type is damage, even in the last bytes */
 	copy_cut(size, "\x63", 1);
 	assert_int_equal(rdc_replay_file(cut, &res, NULL), RDC_E_PARSE);
@@ -151,14 +150,14 @@ static void test_live_and_cut(void **state)
 		char want[64];
 
 		snprintf(want, sizeof(want), "at byte %ld", size);
-		assert_non_null(strstr(rdc_last_error_detail(RDC_E_PARSE),
-				       want));
+		assert_non_null(
+			strstr(rdc_last_error_detail(RDC_E_PARSE), want));
 	}
 	/* a missing file says which and why */
 	unlink(cut);
 	assert_int_equal(rdc_replay_file(cut, &res, NULL), RDC_E_FILE);
-	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
-			       "No such file"));
+	assert_non_null(
+		strstr(rdc_last_error_detail(RDC_E_FILE), "No such file"));
 	/* a detail is only given for the error it belongs to */
 	assert_string_equal(rdc_last_error_detail(RDC_E_PARSE), "");
 }

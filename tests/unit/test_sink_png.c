@@ -168,9 +168,8 @@ static void test_png_directories(void **state)
 {
 	char spec[160], path[160], file[200];
 	rdc_sink *s = NULL;
-	uint32_t px[4] = { 0 };
-	struct rdc_frame f = { .xrgb = px, .width = 2, .height = 2,
-			       .stride = 2 };
+	uint32_t px[4] = {0};
+	struct rdc_frame f = {.xrgb = px, .width = 2, .height = 2, .stride = 2};
 	FILE *fp;
 
 	(void)state;
@@ -203,12 +202,12 @@ static void test_png_directories(void **state)
 	assert_int_equal(rdc_sink_open(spec, &s), RDC_E_FILE);
 	assert_null(s);
 	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE), path));
-	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
-			       "Not a directory"));
+	assert_non_null(
+		strstr(rdc_last_error_detail(RDC_E_FILE), "Not a directory"));
 	snprintf(spec, sizeof(spec), "png:%s/plain,every=1", tdir);
 	assert_int_equal(rdc_sink_open(spec, &s), RDC_E_FILE);
-	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
-			       "not a directory"));
+	assert_non_null(
+		strstr(rdc_last_error_detail(RDC_E_FILE), "not a directory"));
 	unlink(path);
 }
 

@@ -680,8 +680,7 @@ static int sock_send(struct rdc_xport *x, const struct iovec *iov, int n)
 		if (k < 0) {
 			if (errno == EINTR)
 				continue;
-			return rdc_err_detail(RDC_E_IO,
-					      "sending to rdcd: %s",
+			return rdc_err_detail(RDC_E_IO, "sending to rdcd: %s",
 					      strerror(errno));
 		}
 		while (mh.msg_iovlen && (size_t)k >= mh.msg_iov->iov_len) {
@@ -801,9 +800,8 @@ static int net_connect_tcp(const char *hostport)
 	int fd = RDC_E_IO, ret;
 
 	if (!colon || !colon[1])
-		return rdc_err_detail(RDC_E_URI,
-				      "tcp:%.200s: HOST:PORT expected",
-				      hostport);
+		return rdc_err_detail(
+			RDC_E_URI, "tcp:%.200s: HOST:PORT expected", hostport);
 	port = colon + 1;
 	hlen = (size_t)(colon - hostport);
 	/* [::1]:7000 */

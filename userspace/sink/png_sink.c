@@ -150,8 +150,9 @@ static int png_open(rdc_sink *s, const char *args)
 	}
 	free(dup);
 	if (ret == RDC_E_URI)
-		rdc_err_detail(ret, "png:%.200s: png:DIR[,every=N][,prefix="
-			       "NAME] expected (NAME: letters, digits, _-.)",
+		rdc_err_detail(ret,
+			       "png:%.200s: png:DIR[,every=N][,prefix=NAME] "
+			       "expected (NAME: letters, digits, _-.)",
 			       args);
 	if (!ret)
 		ret = png_mkdir_p(p->dir);

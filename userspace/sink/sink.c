@@ -63,12 +63,15 @@ int rdc_sink_open(const char *spec, rdc_sink **out)
 		return RDC_E_INVAL;
 	*out = NULL;
 	if (strnlen(spec, SINK_SPEC_MAX) >= SINK_SPEC_MAX)
-		return rdc_err_detail(RDC_E_URI, "sink spec longer than %d "
-				      "bytes", SINK_SPEC_MAX - 1);
+		return rdc_err_detail(RDC_E_URI,
+				      "sink spec longer than %d bytes",
+				      SINK_SPEC_MAX - 1);
 	colon = strchr(spec, ':');
 	if (!colon)
-		return rdc_err_detail(RDC_E_URI, "'%.60s': KIND:ARGS expected "
-				      "(v4l2:, png:, vnc:)", spec);
+		return rdc_err_detail(RDC_E_URI,
+				      "'%.60s': KIND:ARGS expected (v4l2:, "
+				      "png:, vnc:)",
+				      spec);
 	klen = (size_t)(colon - spec);
 	for (size_t i = 0; i < sizeof(sink_kinds) / sizeof(sink_kinds[0]);
 	     i++) {
@@ -86,15 +89,18 @@ int rdc_sink_open(const char *spec, rdc_sink **out)
 		if (ret) {
 			free(s);
 			if (ret == RDC_E_URI && !*rdc_last_error_detail(ret))
-				rdc_err_detail(ret, "'%.200s': bad %s sink spec "
-					       "(rdc_sink.h)", spec, ops->kind);
+				rdc_err_detail(ret,
+					       "'%.200s': bad %s sink spec "
+					       "(rdc_sink.h)",
+					       spec, ops->kind);
 			return ret;
 		}
 		*out = s;
 		return 0;
 	}
-	return rdc_err_detail(RDC_E_URI, "'%.*s': not a sink kind (v4l2, png, "
-			      "vnc)", (int)RDC_MIN(klen, (size_t)40), spec);
+	return rdc_err_detail(RDC_E_URI,
+			      "'%.*s': not a sink kind (v4l2, png, vnc)",
+			      (int)RDC_MIN(klen, (size_t)40), spec);
 }
 
 int rdc_sink_frame(rdc_sink *s, const struct rdc_frame *f)
