@@ -541,6 +541,46 @@ static void test_subscribe(void **state)
 	assert_int_equal(netd_stop(&d), 0);
 }
 
+/*
+ * An interrupt the host acknowledged (IRQ_STATUS is write-one-to-clear)
+ * and the chip raised again is a new event: one vblank event per frame
+ * whose vblank was cleared in between, not one for the first only.
+ */
+static void test_irq_event_after_ack(void **state)
+{
+	const char *args[] = {"--stepped", "-q", NULL};
+	rdc_dev *dev = NULL, *irq = NULL;
+	struct rdc_event ev;
+	struct netd d;
+	char uri[200];
+	int vblanks = 0;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args), 0);
+	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
+	snprintf(uri, sizeof(uri), "%s?observe", d.unix_uri);
+	assert_int_equal(rdc_open(uri, &irq), 0);
+	assert_int_equal(rdc_subscribe(irq, RDC_EVENT_IRQ, 0, 0), 0);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70,
+				      RDC_FMT_XRGB8888, 0),
+			 0);
+	for (int i = 0; i < 5; i++) {
+		assert_int_equal(rdc_vblank_wait(dev), 0);
+		assert_int_equal(rdc_reg_write(dev, RDC_REG_IRQ_STATUS,
+					       RDC_IRQ_VBLANK),
+				 0);
+	}
+	while (rdc_event_next(irq, &ev, NULL, 0, 2000) == 0) {
+		assert_int_equal(ev.type, RDC_EVENT_IRQ);
+		if (ev.irq & RDC_IRQ_VBLANK)
+			vblanks++;
+	}
+	assert_true(vblanks >= 5);
+	rdc_close(irq);
+	rdc_close(dev);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
 /* rdcd --record, then replay: the same frames and cycle counts. */
 static void test_record_replay(void **state)
 {
@@ -1115,6 +1155,7 @@ int main(void)
 		cmocka_unit_test(test_token_required),
 		cmocka_unit_test(test_many_clients),
 		cmocka_unit_test(test_subscribe),
+		cmocka_unit_test(test_irq_event_after_ack),
 		cmocka_unit_test(test_record_replay),
 		cmocka_unit_test(test_record_replay_pins),
 		cmocka_unit_test(test_random_requests),

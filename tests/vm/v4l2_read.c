@@ -40,7 +40,7 @@
 #define RETRY_NS (50 * NS_PER_MS)
 #define POLL_NS (2 * NS_PER_MS)
 #define RATE_MIN 0.7
-#define RATE_MAX 5.0
+#define RATE_SLOW 5.0
 
 struct expect {
 	const char *script;
@@ -318,11 +318,16 @@ static int read_device(struct ropts *o)
 			 * newest frame, so under emulation on a busy host it
 			 * sees fewer frames than were sent: frames closer
 			 * together than the mode's interval mean an unpaced
-			 * writer; much farther apart, a stalled one.
+			 * writer, which is a fault whatever the load.  Much
+			 * farther apart may be a stalled writer or only a
+			 * busy host: that is said, not failed.
 			 */
-			if (o->check_rate && (got_ms < RATE_MIN * want_ms ||
-					      got_ms > RATE_MAX * want_ms))
+			if (o->check_rate && got_ms < RATE_MIN * want_ms)
 				rate_bad++;
+			if (got_ms > RATE_SLOW * want_ms)
+				printf("# frames %.1fx the mode's interval "
+				       "apart: a stalled writer or a busy "
+				       "host\n", got_ms / want_ms);
 		}
 	}
 	free(buf);

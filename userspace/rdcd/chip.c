@@ -58,6 +58,9 @@ struct rdcd_chip {
 	bool running; /* a run began and has not ended */
 	bool on_chip; /* executing on the chip's stack */
 	bool aborting;
+	/* suspended at a yield point of the chip function's own, between
+	 * pieces of time (not inside a DP command) */
+	bool between;
 	uint64_t slice_end_ns;
 
 #ifdef RDCD_ASAN
@@ -224,6 +227,14 @@ void rdcd_chip_abort(struct rdcd *d)
 /* For chip functions that move time in pieces of their own (a step). */
 void rdcd_chip_yield_point(struct rdcd *d)
 {
-	if (d->chip)
-		chip_poll(d->chip);
+	if (!d->chip)
+		return;
+	d->chip->between = true;
+	chip_poll(d->chip);
+	d->chip->between = false;
+}
+
+bool rdcd_chip_between(const struct rdcd *d)
+{
+	return d->chip && d->chip->running && d->chip->between;
 }

@@ -245,6 +245,12 @@ void rdcd_chip_abort(struct rdcd *d);
 void rdcd_chip_attach(struct rdcd *d);
 /* In a chip function: yield if the slice is spent (as the poll hook). */
 void rdcd_chip_yield_point(struct rdcd *d);
+/*
+ * Is the run suspended at such a yield point, between pieces of time,
+ * rather than inside a DP command?  There a trace can replay a read (the
+ * time moved so far is recorded as a step before it).
+ */
+bool rdcd_chip_between(const struct rdcd *d);
 
 /*
  * ffs.c: the FunctionFS listener (ffs:DIR, the RDC-1 as a USB device).

@@ -1177,6 +1177,9 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		ret = rdc_reg_write(d->dev, rdc_proto_get32(pl),
 				    rdc_proto_get32(pl + 4));
 		rdcd_reply_err(d, c, h, ret);
+		/* a W1C of IRQ_STATUS (or a reset) lowers bits: the next raise
+		 * of one of them is an event again */
+		rdcd_irq_events(d);
 		break;
 	case RDC_MSG_VRAM_READ: {
 		uint32_t addr = rdc_proto_get32(pl), len = rdc_proto_get32(pl + 4);
@@ -1332,11 +1335,11 @@ static bool rdcd_touches_chip(const struct rdcd *d,
 		return true;
 	case RDC_MSG_REG_READ:
 		/* a trace replays reads between commands, never inside */
-		return d->rec || h->len < 4 ||
+		return (d->rec && !rdcd_chip_between(d)) || h->len < 4 ||
 		       rdcd_reg_read_changes(rdc_proto_get32(pl));
 	case RDC_MSG_VRAM_READ:
 	case RDC_MSG_STATS:
-		return d->rec != NULL;
+		return d->rec && !rdcd_chip_between(d);
 	default:
 		return false;
 	}
