@@ -140,7 +140,7 @@ $(O)/san/rdcctl: $(patsubst %.c,$(O)/san/%.o,$(CTL_SRCS)) $(O)/san/librdc.a
 
 $(O)/san/tests/%: $(O)/san/tests/unit/%.o $(TEST_HELPER_OBJS) $(O)/san/librdc.a
 	@mkdir -p $(dir $@)
-	$(CC) $(SAN_CFLAGS) $^ $(CMOCKA_LIBS) $(LIBS) -o $@
+	$(CC) $(SAN_CFLAGS) $^ $(CMOCKA_LIBS) $(LIBS) -lm -o $@
 
 demo: deps
 	$(MAKE) all
@@ -333,8 +333,9 @@ fuzz-cov:
 		[ -n "$$ins" ] || { echo "fuzz-cov: no inputs for $$t"; continue; }; \
 		LLVM_PROFILE_FILE=$(FUZZ_COV_DIR)/$$t.profraw \
 			$(FUZZ_COV_DIR)/fuzz_$$t -runs=0 $$ins >/dev/null 2>&1; \
-		objs="$$objs -object $(FUZZ_COV_DIR)/fuzz_$$t"; \
+		objs="$${objs:+$$objs -object }$(FUZZ_COV_DIR)/fuzz_$$t"; \
 	done; \
+	[ -n "$$objs" ] || { echo "fuzz-cov: nothing ran"; exit 1; }; \
 	$(LLVM_PROFDATA) merge -sparse $(FUZZ_COV_DIR)/*.profraw \
 		-o $(FUZZ_COV_DIR)/all.profdata; \
 	$(LLVM_COV) report $$objs -instr-profile=$(FUZZ_COV_DIR)/all.profdata \
