@@ -313,6 +313,14 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 	case RDC_OP_AA_CIRCLE:
 	case RDC_OP_AA_ELLIPSE:
 		return rdc_dp_aa_cmd(dp, op, a);
+	case RDC_OP_DECODE:
+	case RDC_OP_HISTOGRAM:
+	case RDC_OP_MAP_BUILD:
+	case RDC_OP_MAP_APPLY:
+	case RDC_OP_MAP_CLUT:
+	case RDC_OP_CONVOLVE:
+	case RDC_OP_THRESHOLD:
+		return dp_cmd_image(dp, op, fl, len, a);
 	case RDC_OP_READBACK:
 		if (!xy_ok(a[0]) || !wh_ok(a[1]))
 			return RDC_ERR_RANGE;

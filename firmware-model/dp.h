@@ -8,6 +8,7 @@
 #define RDC_DP_H
 
 #include "../hw-sim/hw.h"
+#include "image.h"
 
 #define RDC_DP_CHUNK 1024u /* pixels staged per span */
 #define RDC_DP_RB_CHUNK 256u /* READBACK words packed per span read */
@@ -183,6 +184,9 @@ struct rdc_dp {
 	uint8_t nibble_px[16][16];
 	uint32_t nibble_fg, nibble_bg;
 	bool nibble_ok;
+
+	/* DECODE, HISTOGRAM, MAP_*, CONVOLVE, THRESHOLD (image.h) */
+	struct rdc_dp_img img;
 };
 
 /* Initialise and connect to the chip (rdc_hw_set_dp). */

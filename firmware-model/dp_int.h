@@ -228,6 +228,13 @@ uint32_t dp_cmd_arc(struct rdc_dp *dp, uint32_t fl, const uint32_t *a);
 uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		      uint32_t len, const uint32_t *a);
 
+/*
+ * Image commands (image.c, decode.c, filter.c): DECODE, HISTOGRAM,
+ * MAP_BUILD, MAP_APPLY, MAP_CLUT, CONVOLVE, THRESHOLD; an enum rdc_err.
+ */
+uint32_t dp_cmd_image(struct rdc_dp *dp, uint32_t op, uint32_t fl,
+		      uint32_t len, const uint32_t *a);
+
 /* Words a row of w pixels of `fmt` occupies, padded to a word. */
 static inline uint32_t rdc_dp_words_per_row(unsigned int fmt, uint32_t w)
 {

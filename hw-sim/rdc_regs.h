@@ -243,6 +243,11 @@ enum rdc_err {
 	RDC_ERR_MODE = 9, /* CRTC timing refused at latch */
 	/* display-list nesting too deep, or RET outside a list */
 	RDC_ERR_STACK = 10,
+	/*
+	 * DECODE: the image stream is corrupt (bad header, truncated, a run
+	 * past the image, bytes left over); nothing is drawn
+	 */
+	RDC_ERR_DATA = 11,
 	RDC_ERR_COUNT
 };
 
@@ -436,6 +441,31 @@ enum rdc_opcode {
 	 * (else flat, the first vertex's colour)
 	 */
 	RDC_OP_TRIANGLE = 0x38,
+
+	/*
+	 * Image decompression and processing (docs/commands.md, "Images";
+	 * stream formats in rdc_image.h)
+	 */
+	/* addr, size (bytes the stream may span), xy: decode it into DST */
+	RDC_OP_DECODE = 0x60,
+	/*
+	 * xy, wh (of SRC), table: 256 32-bit bins; flags RDC_CHAN_* and
+	 * RDC_HIST_ACCUM
+	 */
+	RDC_OP_HISTOGRAM = 0x61,
+	/* hist, map (256 bytes), param; flags enum rdc_map_mode */
+	RDC_OP_MAP_BUILD = 0x62,
+	/* xy, wh (of DST), map: every pixel (each channel) through the map */
+	RDC_OP_MAP_APPLY = 0x63,
+	/* map: CLUT[i] = grey map[i] for i = 0..255 */
+	RDC_OP_MAP_CLUT = 0x64,
+	/*
+	 * sxy, dxy, wh, then 3 kernel rows and div/bias (KERNEL), or div/bias
+	 * alone (SOBEL): 3x3 convolution SRC to DST; flags RDC_CONV_*
+	 */
+	RDC_OP_CONVOLVE = 0x65,
+	/* xy, wh (of DST), level: intensity >= level: FG, else BG; RDC_CHAN_* */
+	RDC_OP_THRESHOLD = 0x66,
 	RDC_OP_COUNT = 0x100
 };
 
@@ -466,6 +496,7 @@ static inline int rdc_cmd_args(uint32_t op)
 	case RDC_OP_SET_COLORKEY:
 	case RDC_OP_SET_AA_RAMP:
 	case RDC_OP_CLEAR_Z:
+	case RDC_OP_MAP_CLUT:
 		return 1;
 	case RDC_OP_REG_WRITE:
 	case RDC_OP_SET_CLIP:
@@ -484,6 +515,11 @@ static inline int rdc_cmd_args(uint32_t op)
 		return 2;
 	case RDC_OP_BLIT:
 	case RDC_OP_ARC:
+	case RDC_OP_DECODE:
+	case RDC_OP_HISTOGRAM:
+	case RDC_OP_MAP_BUILD:
+	case RDC_OP_MAP_APPLY:
+	case RDC_OP_THRESHOLD:
 		return 3;
 	case RDC_OP_SET_DST:
 	case RDC_OP_SET_SRC:
@@ -507,6 +543,7 @@ static inline int rdc_cmd_args(uint32_t op)
 	case RDC_OP_HOST_BLIT:
 	case RDC_OP_MONO:
 	case RDC_OP_TEXT:
+	case RDC_OP_CONVOLVE:
 		return RDC_ARGS_VARIABLE;
 	default:
 		return RDC_ARGS_UNKNOWN;
@@ -537,6 +574,39 @@ static inline int rdc_cmd_args(uint32_t op)
 #define RDC_Z_TEST BIT(0) /* draw only where z < stored depth */
 #define RDC_Z_WRITE BIT(1) /* store z where drawn */
 #define RDC_TRI_GOURAUD BIT(0)
+/*
+ * HISTOGRAM and THRESHOLD: what a pixel's value is.  Indexed formats: the
+ * index (RDC_CHAN_LUMA only).  RGB formats: the channel widened to 8 bits
+ * (v << 3 | v >> 2 for 5 bits, v << 2 | v >> 4 for 6), or the luma
+ * (77 R + 150 G + 29 B + 128) >> 8 of the widened channels.
+ */
+#define RDC_CHAN_SEL GENMASK(1, 0)
+#define RDC_CHAN_LUMA 0u
+#define RDC_CHAN_RED 1u
+#define RDC_CHAN_GREEN 2u
+#define RDC_CHAN_BLUE 3u
+#define RDC_HIST_ACCUM BIT(2) /* add to the table's counts */
+/* MAP_BUILD modes (flags) */
+enum rdc_map_mode {
+	RDC_MAP_STRETCH = 0, /* param [7:0] lo, [15:8] hi: linear lo..hi to 0..255 */
+	/* lo, hi: the first and last bins with a count above param */
+	RDC_MAP_STRETCH_AUTO = 1,
+	RDC_MAP_EQUALIZE = 2, /* (255 cdf(v) + N / 2) / N; param 0 */
+	RDC_MAP_MODE_COUNT
+};
+/*
+ * CONVOLVE: flags [3:0] the mode, RDC_CONV_ABS; a kernel row word holds
+ * three signed 8-bit coefficients, left in [7:0]; the scale word the
+ * divisor (1..65535) in [15:0] and a signed bias in [31:16]
+ */
+#define RDC_CONV_MODE GENMASK(3, 0)
+#define RDC_CONV_KERNEL 0u /* 7 words: sxy, dxy, wh, row0..row2, scale */
+#define RDC_CONV_SOBEL 1u /* 4 words: sxy, dxy, wh, scale; |Gx| + |Gy| */
+#define RDC_CONV_ABS BIT(4) /* KERNEL: the sum's absolute value */
+#define RDC_CONV_KERNEL_WORDS 7u
+#define RDC_CONV_SOBEL_WORDS 4u
+#define RDC_CONV_DIV GENMASK(15, 0)
+#define RDC_CONV_BIAS GENMASK(31, 16)
 
 enum rdc_pattern_mode {
 	RDC_PAT_NONE = 0, /* solid FG */
@@ -597,5 +667,7 @@ static inline int rdc_rop_reads_dst(unsigned int rop)
 	return rop != RDC_ROP_CLEAR && rop != RDC_ROP_COPY &&
 	       rop != RDC_ROP_COPY_INVERTED && rop != RDC_ROP_SET;
 }
+
+#include "rdc_image.h"
 
 #endif /* RDC_REGS_H */

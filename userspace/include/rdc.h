@@ -542,6 +542,41 @@ struct rdc_replay_result {
 int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 		    rdc_dev **dev_out);
 
+/* ---- Compressed images (the DECODE command) ------------------------------ */
+/*
+ * Streams in the formats of rdc_image.h (RDC_IMG_RLE, RDC_IMG_DPCM,
+ * RDC_IMG_BTC), for the DP to decode from VRAM.  Samples are 8 bits, a
+ * pixel is `channels` of them: 1 (grey or a CLUT index) or 3 (R, G, B);
+ * w 1..RDC_IMG_MAX_WIDTH, h 1..RDC_IMG_MAX_HEIGHT.
+ */
+/* Largest stream rdc_image_encode can write for such an image; 0 if bad. */
+size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
+		       uint32_t channels);
+/*
+ * Encode w x h pixels (rows `pitch` bytes apart) into out (cap bytes);
+ * *len gets the stream's size, header included.  RDC_E_INVAL for a bad
+ * codec, size or channel count; RDC_E_RANGE if cap is too small (*len
+ * says how much was needed); RDC_E_NOMEM.  RLE and DPCM are lossless;
+ * BTC keeps each 4x4 block's mean within 1/2 and every sample within
+ * its block's range (max - min).
+ */
+int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w,
+		     uint32_t h, uint32_t channels, size_t pitch, uint8_t *out,
+		     size_t cap, size_t *len);
+/*
+ * XRGB8888 pixels (rows `pitch` words apart) to w * h * channels samples:
+ * channels 3 gives R, G, B; 1 the luma (77 R + 150 G + 29 B + 128) >> 8.
+ */
+int rdc_image_samples(const uint32_t *xrgb, uint32_t w, uint32_t h,
+		      size_t pitch, uint32_t channels, uint8_t *out);
+/*
+ * Read a PNG as XRGB8888 into a new buffer (*xrgb, to be released with
+ * free()).  RDC_E_FILE (unreadable, not a PNG), RDC_E_RANGE past
+ * RDC_IMG_MAX_WIDTH x RDC_IMG_MAX_HEIGHT, RDC_E_NOMEM.
+ */
+int rdc_image_png_read(const char *path, uint32_t **xrgb, uint32_t *w,
+		       uint32_t *h);
+
 /* ---- PNG ----------------------------------------------------------------- */
 /* Write w x h XRGB8888 pixels (row `pitch` words) as an RGB PNG. */
 int rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,

@@ -1,0 +1,307 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * DECODE: an RLE, DPCM or BTC image stream in VRAM (rdc_image.h) decoded
+ * into DST.
+ *
+ * The stream is distrusted: every byte comes through a reader bounded by
+ * the header's payload size, itself bounded by the command's size
+ * argument, so nothing past the stream is read.  RLE and DPCM are decoded
+ * twice: once to check the stream (nothing written), then to draw it, so
+ * a corrupt stream is rejected with RDC_ERR_DATA before any pixel
+ * changes, as every rejected command.  A BTC stream's size says whether
+ * it is whole, and any bytes are valid levels and bitmaps.
+ */
+#include "img_int.h"
+
+/* A bounded byte and bit reader over the payload. */
+struct img_in {
+	uint32_t addr, end; /* next VRAM byte to read; end of the payload */
+	uint32_t pos, len; /* bytes of dp->img.in used, held */
+	uint32_t acc, nbits; /* bits not yet used, most significant first */
+};
+
+struct dec {
+	uint32_t codec, ch, w, h, payload;
+	int32_t x, y; /* where the image's top-left pixel lands in DST */
+	struct rdc_rect clip;
+	bool emit; /* false: the check pass */
+};
+
+static void in_start(struct img_in *r, uint32_t addr, uint32_t bytes)
+{
+	r->addr = addr;
+	r->end = addr + bytes;
+	r->pos = 0;
+	r->len = 0;
+	r->acc = 0;
+	r->nbits = 0;
+}
+
+/* The next piece of at most RDC_DP_IMG_IN_CHUNK bytes, as one read span. */
+static bool in_fill(struct rdc_dp *dp, struct img_in *r)
+{
+	const uint8_t *p;
+	uint32_t n;
+
+	if (r->addr >= r->end)
+		return false;
+	n = RDC_MIN(r->end - r->addr, RDC_DP_IMG_IN_CHUNK);
+	p = rdc_port_span(dp->hw, r->addr, n, RDC_BUS_READ);
+	if (!p)
+		return false;
+	rdc_memcpy(dp->img.in, p, n);
+	r->addr += n;
+	r->pos = 0;
+	r->len = n;
+	return true;
+}
+
+static bool in_byte(struct rdc_dp *dp, struct img_in *r, uint32_t *b)
+{
+	if (r->pos == r->len && !in_fill(dp, r))
+		return false;
+	*b = dp->img.in[r->pos++];
+	return true;
+}
+
+/* Bytes of the payload not yet taken. */
+static uint32_t in_left(const struct img_in *r)
+{
+	return r->end - r->addr + r->len - r->pos;
+}
+
+/* n <= 16 bits, most significant first. */
+static bool in_bits(struct rdc_dp *dp, struct img_in *r, uint32_t n,
+		    uint32_t *v)
+{
+	uint32_t b;
+
+	while (r->nbits < n) {
+		if (!in_byte(dp, r, &b))
+			return false;
+		r->acc = r->acc << 8 | b;
+		r->nbits += 8;
+	}
+	*v = n ? r->acc >> (r->nbits - n) & ((1u << n) - 1) : 0;
+	r->nbits -= n;
+	return true;
+}
+
+/* Row `row` of the image (samples s) into DST, clipped, through the ROP. */
+static void emit_row(struct rdc_dp *dp, const struct dec *d, uint32_t row,
+		     const uint8_t *s)
+{
+	uint32_t fmt = dp->st.dst.format, n, i;
+	int32_t y = d->y + (int32_t)row, x0, x1, x;
+	const uint8_t *p;
+
+	if (!d->emit || y < d->clip.y0 || y >= d->clip.y1)
+		return;
+	x0 = RDC_MAX(d->x, d->clip.x0);
+	x1 = RDC_MIN(d->x + (int32_t)d->w, d->clip.x1);
+	for (x = x0; x < x1; x += (int32_t)n) {
+		n = (uint32_t)RDC_MIN(x1 - x, (int32_t)RDC_DP_CHUNK);
+		p = s + (uint32_t)(x - d->x) * d->ch;
+		for (i = 0; i < n; i++, p += d->ch) {
+			if (d->ch == 3)
+				dp->px[i] = img_pack_rgb(fmt, p[0], p[1], p[2]);
+			else if (rdc_format_indexed(fmt))
+				dp->px[i] = p[0];
+			else
+				dp->px[i] = img_pack_rgb(fmt, p[0], p[0], p[0]);
+		}
+		rdc_dp_span_px(dp, y, x, n, 0, dp->px, NULL);
+	}
+}
+
+static uint32_t dec_rle(struct rdc_dp *dp, const struct dec *d,
+			struct img_in *r)
+{
+	uint8_t *row = dp->img.u.dec[0];
+	uint32_t run = 0, lit = 0, px[3] = { 0 }, c, x, y, k, i;
+
+	for (y = 0; y < d->h; y++) {
+		for (x = 0, i = 0; x < d->w; x++, i += d->ch) {
+			if (!run && !lit) {
+				if (!in_byte(dp, r, &c))
+					return RDC_ERR_DATA;
+				if (c < RDC_IMG_RLE_LITERAL_MAX) {
+					lit = c + 1;
+				} else {
+					run = c - 126;
+					for (k = 0; k < d->ch; k++)
+						if (!in_byte(dp, r, &px[k]))
+							return RDC_ERR_DATA;
+				}
+			}
+			if (lit) {
+				for (k = 0; k < d->ch; k++) {
+					if (!in_byte(dp, r, &c))
+						return RDC_ERR_DATA;
+					row[i + k] = (uint8_t)c;
+				}
+				lit--;
+			} else {
+				for (k = 0; k < d->ch; k++)
+					row[i + k] = (uint8_t)px[k];
+				run--;
+			}
+		}
+		emit_row(dp, d, y, row);
+	}
+	/* a packet past the last pixel, or bytes after it */
+	return run || lit || in_left(r) ? RDC_ERR_DATA : RDC_ERR_NONE;
+}
+
+/* The median edge detector (LOCO-I): a left, b above, c above-left. */
+static uint32_t med(uint32_t a, uint32_t b, uint32_t c)
+{
+	uint32_t lo = RDC_MIN(a, b), hi = RDC_MAX(a, b);
+
+	if (c >= hi)
+		return lo;
+	if (c <= lo)
+		return hi;
+	return a + b - c;
+}
+
+static uint32_t dec_dpcm(struct rdc_dp *dp, const struct dec *d,
+			 struct img_in *r)
+{
+	uint32_t x, y, k, q, m, bit, p, i, n = d->w * d->ch, ch = d->ch;
+	uint8_t *cur, *prev;
+
+	for (y = 0; y < d->h; y++) {
+		cur = dp->img.u.dec[y & 1];
+		prev = dp->img.u.dec[(y & 1) ^ 1];
+		if (!in_bits(dp, r, RDC_IMG_DPCM_KBITS, &k))
+			return RDC_ERR_DATA;
+		for (i = 0; i < n; i++) {
+			x = i / ch;
+			if (!y)
+				p = x ? cur[i - ch] : 128;
+			else if (!x)
+				p = prev[i];
+			else
+				p = med(cur[i - ch], prev[i], prev[i - ch]);
+			for (q = 0; q < RDC_IMG_DPCM_ESCAPE; q++) {
+				if (!in_bits(dp, r, 1, &bit))
+					return RDC_ERR_DATA;
+				if (!bit)
+					break;
+			}
+			if (q == RDC_IMG_DPCM_ESCAPE) {
+				if (!in_bits(dp, r, 8, &m))
+					return RDC_ERR_DATA;
+			} else {
+				if (!in_bits(dp, r, k, &m))
+					return RDC_ERR_DATA;
+				m |= q << k;
+				if (m > 255) /* no encoder writes it */
+					return RDC_ERR_DATA;
+			}
+			/* zigzag back: 0, -1, 1, -2, ... */
+			cur[i] = (uint8_t)(m & 1 ? p - (m + 1) / 2 : p + m / 2);
+		}
+		emit_row(dp, d, y, cur);
+	}
+	return in_left(r) ? RDC_ERR_DATA : RDC_ERR_NONE;
+}
+
+static uint32_t dec_btc(struct rdc_dp *dp, const struct dec *d,
+			struct img_in *r)
+{
+	uint8_t *blk = dp->img.u.dec[0], *row = dp->img.u.dec[1];
+	uint32_t bw = (d->w + 3) / 4, bh = (d->h + 3) / 4, bytes, by, ry, x,
+		 c, i, b;
+	const uint8_t *e;
+
+	bytes = bw * d->ch * RDC_IMG_BTC_BYTES;
+	for (by = 0; by < bh; by++) {
+		for (i = 0; i < bytes; i++) {
+			if (!in_byte(dp, r, &b))
+				return RDC_ERR_DATA;
+			blk[i] = (uint8_t)b;
+		}
+		for (ry = 0; ry < 4 && by * 4 + ry < d->h; ry++) {
+			for (x = 0, i = 0; x < d->w; x++) {
+				e = blk + (x / 4) * d->ch * RDC_IMG_BTC_BYTES;
+				for (c = 0; c < d->ch; c++, i++) {
+					b = rdc_ld16(e + 4 * c + 2) >>
+						    (ry * 4 + x % 4) & 1;
+					row[i] = e[4 * c + b];
+				}
+			}
+			emit_row(dp, d, by * 4 + ry, row);
+		}
+	}
+	return in_left(r) ? RDC_ERR_DATA : RDC_ERR_NONE;
+}
+
+static uint32_t dec_run(struct rdc_dp *dp, const struct dec *d,
+			uint32_t base)
+{
+	struct img_in r;
+
+	in_start(&r, base, d->payload);
+	switch (d->codec) {
+	case RDC_IMG_RLE:
+		return dec_rle(dp, d, &r);
+	case RDC_IMG_DPCM:
+		return dec_dpcm(dp, d, &r);
+	default:
+		return dec_btc(dp, d, &r);
+	}
+}
+
+uint32_t dp_cmd_decode(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
+{
+	uint32_t addr = a[0], size = a[1], err;
+	const uint8_t *h;
+	struct dec d;
+	uint64_t blocks;
+
+	if (fl)
+		return RDC_ERR_ARG;
+	if (RDC_X(a[2]) < RDC_COORD_MIN || RDC_X(a[2]) > RDC_COORD_MAX ||
+	    RDC_Y(a[2]) < RDC_COORD_MIN || RDC_Y(a[2]) > RDC_COORD_MAX ||
+	    (uint64_t)addr + size > dp->hw->vram_size)
+		return RDC_ERR_RANGE;
+	if (size < RDC_IMG_HDR_BYTES)
+		return RDC_ERR_DATA;
+	h = rdc_port_span(dp->hw, addr, RDC_IMG_HDR_BYTES, RDC_BUS_READ);
+	if (!h)
+		return RDC_ERR_RANGE;
+	d.codec = h[RDC_IMG_OFF_CODEC];
+	d.ch = h[RDC_IMG_OFF_CHANNELS];
+	d.w = rdc_ld16(h + RDC_IMG_OFF_WIDTH);
+	d.h = rdc_ld16(h + RDC_IMG_OFF_HEIGHT);
+	d.payload = rdc_ld32(h + RDC_IMG_OFF_PAYLOAD);
+	if (rdc_ld32(h + RDC_IMG_OFF_MAGIC) != RDC_IMG_MAGIC ||
+	    rdc_ld16(h + RDC_IMG_OFF_RESERVED) || d.codec < RDC_IMG_RLE ||
+	    d.codec >= RDC_IMG_CODEC_END || (d.ch != 1 && d.ch != 3) ||
+	    !d.w || d.w > RDC_IMG_MAX_WIDTH || !d.h ||
+	    d.h > RDC_IMG_MAX_HEIGHT ||
+	    d.payload > size - RDC_IMG_HDR_BYTES)
+		return RDC_ERR_DATA;
+	if (d.codec == RDC_IMG_BTC) {
+		blocks = (uint64_t)((d.w + 3) / 4) * ((d.h + 3) / 4);
+		if (d.payload != blocks * d.ch * RDC_IMG_BTC_BYTES)
+			return RDC_ERR_DATA;
+	}
+	/* three channels need an RGB destination */
+	if (d.ch == 3 && rdc_format_indexed(dp->st.dst.format))
+		return RDC_ERR_ARG;
+	d.x = RDC_X(a[2]);
+	d.y = RDC_Y(a[2]);
+	d.clip = rdc_dp_eff_clip(dp);
+	addr += RDC_IMG_HDR_BYTES;
+	if (d.codec != RDC_IMG_BTC) {
+		d.emit = false;
+		err = dec_run(dp, &d, addr);
+		if (err)
+			return err;
+	}
+	d.emit = true;
+	return dec_run(dp, &d, addr);
+}

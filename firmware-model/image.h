@@ -1,0 +1,29 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * Scratch memory of the image commands (image.c, decode.c, filter.c),
+ * part of struct rdc_dp: the caller's memory, as everything of the DP.
+ */
+#ifndef RDC_DP_IMAGE_H
+#define RDC_DP_IMAGE_H
+
+#include "../hw-sim/rdc_regs.h"
+
+#define RDC_DP_IMG_IN_CHUNK 256u /* stream bytes read per span */
+#define RDC_DP_HIST_BINS 256u
+
+struct rdc_dp_img {
+	/* DECODE's stream reader: bytes read, not yet used */
+	uint8_t in[RDC_DP_IMG_IN_CHUNK];
+	/* HISTOGRAM's counts; MAP_* keep the map in map[] */
+	uint32_t hist[RDC_DP_HIST_BINS];
+	uint8_t map[RDC_DP_HIST_BINS];
+	union {
+		/* DECODE: this row's and the last row's samples */
+		uint8_t dec[2][RDC_IMG_MAX_WIDTH * 3];
+		/* CONVOLVE: three SRC rows, one pixel more at each end */
+		uint32_t conv[3][RDC_IMG_MAX_WIDTH + 2];
+	} u;
+	int32_t conv_row[3]; /* SRC row held by conv[i], or -1 */
+};
+
+#endif /* RDC_DP_IMAGE_H */

@@ -1,0 +1,76 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * RDC-1 compressed image streams, as the DECODE command reads them from
+ * VRAM and librdc's rdc_image_encode() writes them.  Included by
+ * rdc_regs.h; docs/commands.md ("Image streams") is the prose reference.
+ *
+ * A stream is a 16-byte header and a payload, little-endian:
+ *
+ *   0   u32  RDC_IMG_MAGIC
+ *   4   u8   codec (enum rdc_img_codec)
+ *   5   u8   channels: 1 (grey or CLUT index) or 3 (R, G, B)
+ *   6   u16  0
+ *   8   u16  width  1..RDC_IMG_MAX_WIDTH
+ *   10  u16  height 1..RDC_IMG_MAX_HEIGHT
+ *   12  u32  payload bytes that follow the header
+ *
+ * Samples are 8 bits, a pixel is `channels` samples (R, G, B in that
+ * order), pixels in raster order.
+ *
+ * RLE (PackBits on pixels): a control byte c, then for c < 128 a literal
+ * of c + 1 pixels, for c >= 128 one pixel repeated c - 126 (2..129) times.
+ * Runs and literals may cross rows; they must end exactly at the last
+ * pixel, and the payload exactly there.
+ *
+ * DPCM (lossless predictive coding): a bit stream, most significant bit of
+ * each byte first.  Each row starts with RDC_IMG_DPCM_KBITS bits k (the
+ * Rice parameter, 0..7), then codes for its samples in order (pixel by
+ * pixel, channel by channel).  A sample v is predicted from its neighbours
+ * in the same channel, a left, b above, c above-left:
+ *   row 0: a (128 for the first pixel); column 0: b; else the median
+ *   predictor: min(a, b) if c >= max(a, b), max(a, b) if c <= min(a, b),
+ *   else a + b - c.
+ * The residual e = (v - P) mod 256 as a signed byte, zigzagged to
+ * m = 2e (e >= 0) or -2e - 1 (e < 0), is coded as q = m >> k one bits, a
+ * zero bit and the k low bits of m when q < RDC_IMG_DPCM_ESCAPE; else as
+ * RDC_IMG_DPCM_ESCAPE one bits and the 8 bits of m.  The decoder takes
+ * v = (P + e) mod 256.  The payload is the bits rounded up to a byte.
+ *
+ * BTC (block truncation coding, lossy): 4x4 blocks in raster order,
+ * ceil(w / 4) x ceil(h / 4) of them (pixels past the image's edge are
+ * not stored); per block and channel 4 bytes: low level, high level, a
+ * 16-bit bitmap (bit 4 * row + column, 1 = high).  Payload: exactly
+ * blocks * channels * 4 bytes.
+ */
+#ifndef RDC_IMAGE_H
+#define RDC_IMAGE_H
+
+#define RDC_IMG_MAGIC 0x49434452u /* "RDCI" little-endian */
+#define RDC_IMG_HDR_BYTES 16u
+#define RDC_IMG_MAX_WIDTH 4096u /* also CONVOLVE's widest rectangle */
+#define RDC_IMG_MAX_HEIGHT 16384u
+#define RDC_IMG_DPCM_KBITS 3u
+#define RDC_IMG_DPCM_KMAX 7u
+#define RDC_IMG_DPCM_ESCAPE 16u
+#define RDC_IMG_BTC_BLOCK 4u
+#define RDC_IMG_BTC_BYTES 4u /* per block and channel */
+#define RDC_IMG_RLE_LITERAL_MAX 128u
+#define RDC_IMG_RLE_RUN_MAX 129u
+
+enum rdc_img_codec {
+	RDC_IMG_RLE = 1,
+	RDC_IMG_DPCM = 2,
+	RDC_IMG_BTC = 3,
+	RDC_IMG_CODEC_END
+};
+
+/* Header field offsets */
+#define RDC_IMG_OFF_MAGIC 0
+#define RDC_IMG_OFF_CODEC 4
+#define RDC_IMG_OFF_CHANNELS 5
+#define RDC_IMG_OFF_RESERVED 6
+#define RDC_IMG_OFF_WIDTH 8
+#define RDC_IMG_OFF_HEIGHT 10
+#define RDC_IMG_OFF_PAYLOAD 12
+
+#endif /* RDC_IMAGE_H */

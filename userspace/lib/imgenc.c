@@ -1,0 +1,384 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Host-side image encoders for the DP's DECODE command: RLE (PackBits on
+ * pixels), DPCM (median predictor, Rice codes with a parameter chosen
+ * per row) and BTC (absolute-moment block truncation coding, 4x4).  The
+ * stream formats are rdc_image.h's; this file never calls the firmware.
+ */
+#include <errno.h>
+#include <png.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "rdc_priv.h"
+
+#define IMG_LUMA(r, g, b) ((77u * (r) + 150u * (g) + 29u * (b) + 128u) >> 8)
+
+static void img_put16(uint8_t *p, uint32_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+}
+
+static void img_put32(uint8_t *p, uint32_t v)
+{
+	img_put16(p, v);
+	img_put16(p + 2, v >> 16);
+}
+
+static int img_args_ok(uint32_t w, uint32_t h, uint32_t channels)
+{
+	return w >= 1 && w <= RDC_IMG_MAX_WIDTH && h >= 1 &&
+	       h <= RDC_IMG_MAX_HEIGHT && (channels == 1 || channels == 3);
+}
+
+size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
+		       uint32_t channels)
+{
+	uint64_t n = (uint64_t)w * h, p;
+
+	if (!img_args_ok(w, h, channels))
+		return 0;
+	switch (codec) {
+	case RDC_IMG_RLE: /* all literals: a control byte per 128 pixels */
+		p = n * channels +
+		    (n + RDC_IMG_RLE_LITERAL_MAX - 1) / RDC_IMG_RLE_LITERAL_MAX;
+		break;
+	case RDC_IMG_DPCM: /* every sample escaped */
+		p = ((uint64_t)h * (RDC_IMG_DPCM_KBITS +
+				    (uint64_t)w * channels *
+					    (RDC_IMG_DPCM_ESCAPE + 8)) +
+		     7) / 8;
+		break;
+	case RDC_IMG_BTC:
+		p = (uint64_t)((w + 3) / 4) * ((h + 3) / 4) * channels *
+		    RDC_IMG_BTC_BYTES;
+		break;
+	default:
+		return 0;
+	}
+	return (size_t)(RDC_IMG_HDR_BYTES + p);
+}
+
+struct img_src {
+	const uint8_t *px;
+	uint32_t w, h, ch;
+	size_t pitch;
+};
+
+/* Sample c of pixel i in raster order. */
+static uint8_t img_at(const struct img_src *s, uint64_t i, uint32_t c)
+{
+	return s->px[(size_t)(i / s->w) * s->pitch +
+		     (size_t)(i % s->w) * s->ch + c];
+}
+
+static int img_same(const struct img_src *s, uint64_t i, uint64_t j)
+{
+	for (uint32_t c = 0; c < s->ch; c++)
+		if (img_at(s, i, c) != img_at(s, j, c))
+			return 0;
+	return 1;
+}
+
+/* Equal pixels from i on, at most `max`. */
+static uint32_t img_run(const struct img_src *s, uint64_t i, uint64_t n,
+			uint32_t max)
+{
+	uint32_t r = 1;
+
+	while (r < max && i + r < n && img_same(s, i, i + r))
+		r++;
+	return r;
+}
+
+static size_t enc_rle(const struct img_src *s, uint8_t *o)
+{
+	uint64_t n = (uint64_t)s->w * s->h, i = 0, j;
+	size_t k = 0;
+	uint32_t r, c;
+
+	while (i < n) {
+		r = img_run(s, i, n, RDC_IMG_RLE_RUN_MAX);
+		if (r >= 2) {
+			o[k++] = (uint8_t)(r + 126);
+			for (c = 0; c < s->ch; c++)
+				o[k++] = img_at(s, i, c);
+			i += r;
+			continue;
+		}
+		/* a literal up to the next run of three or more */
+		for (j = i + 1; j < n && j - i < RDC_IMG_RLE_LITERAL_MAX; j++)
+			if (img_run(s, j, n, 3) >= 3)
+				break;
+		o[k++] = (uint8_t)(j - i - 1);
+		for (; i < j; i++)
+			for (c = 0; c < s->ch; c++)
+				o[k++] = img_at(s, i, c);
+	}
+	return k;
+}
+
+struct bitw {
+	uint8_t *o;
+	size_t k;
+	uint32_t acc, n;
+};
+
+static void bits_put(struct bitw *b, uint32_t v, uint32_t n)
+{
+	while (n--) {
+		b->acc = b->acc << 1 | ((v >> n) & 1);
+		if (++b->n == 8) {
+			b->o[b->k++] = (uint8_t)b->acc;
+			b->acc = 0;
+			b->n = 0;
+		}
+	}
+}
+
+static uint32_t dpcm_pred(const struct img_src *s, uint32_t x, uint32_t y,
+			  uint32_t c)
+{
+	const uint8_t *row = s->px + (size_t)y * s->pitch;
+	const uint8_t *up = row - s->pitch;
+	uint32_t a, b, d, lo, hi;
+
+	if (!y)
+		return x ? row[(x - 1) * s->ch + c] : 128;
+	if (!x)
+		return up[c];
+	a = row[(x - 1) * s->ch + c];
+	b = up[x * s->ch + c];
+	d = up[(x - 1) * s->ch + c];
+	lo = a < b ? a : b;
+	hi = a < b ? b : a;
+	if (d >= hi)
+		return lo;
+	if (d <= lo)
+		return hi;
+	return a + b - d;
+}
+
+static uint32_t rice_bits(uint32_t m, uint32_t k)
+{
+	uint32_t q = m >> k;
+
+	return q < RDC_IMG_DPCM_ESCAPE ? q + 1 + k : RDC_IMG_DPCM_ESCAPE + 8;
+}
+
+static size_t enc_dpcm(const struct img_src *s, uint8_t *o, uint16_t *res)
+{
+	struct bitw b = { .o = o };
+	uint32_t n = s->w * s->ch, x, y, i, k, best, bk;
+	uint64_t cost;
+
+	for (y = 0; y < s->h; y++) {
+		for (i = 0; i < n; i++) {
+			x = i / s->ch;
+			int e = (int)s->px[(size_t)y * s->pitch + i] -
+				(int)dpcm_pred(s, x, y, i % s->ch);
+			int8_t se = (int8_t)(uint8_t)(e & 0xff);
+
+			res[i] = (uint16_t)(se >= 0 ? 2 * se : -2 * se - 1);
+		}
+		best = UINT32_MAX;
+		bk = 0;
+		for (k = 0; k <= RDC_IMG_DPCM_KMAX; k++) {
+			cost = 0;
+			for (i = 0; i < n; i++)
+				cost += rice_bits(res[i], k);
+			if (cost < best) {
+				best = (uint32_t)cost;
+				bk = k;
+			}
+		}
+		bits_put(&b, bk, RDC_IMG_DPCM_KBITS);
+		for (i = 0; i < n; i++) {
+			uint32_t q = res[i] >> bk;
+
+			if (q < RDC_IMG_DPCM_ESCAPE) {
+				bits_put(&b, (1u << q) - 1, q);
+				bits_put(&b, 0, 1);
+				bits_put(&b, res[i], bk);
+			} else {
+				bits_put(&b, (1u << RDC_IMG_DPCM_ESCAPE) - 1,
+					 RDC_IMG_DPCM_ESCAPE);
+				bits_put(&b, res[i], 8);
+			}
+		}
+	}
+	if (b.n)
+		bits_put(&b, 0, 8 - b.n);
+	return b.k;
+}
+
+/*
+ * AMBTC: the pixels at or above the block's mean take the rounded mean of
+ * that group, the others the rounded mean of theirs.
+ */
+static size_t enc_btc(const struct img_src *s, uint8_t *o)
+{
+	uint32_t bw = (s->w + 3) / 4, bh = (s->h + 3) / 4, bx, by, c, i;
+	size_t k = 0;
+
+	for (by = 0; by < bh; by++) {
+		for (bx = 0; bx < bw; bx++) {
+			for (c = 0; c < s->ch; c++) {
+				uint32_t v[16], in[16], n = 0, sum = 0;
+				uint32_t hs = 0, hn = 0, ls = 0, ln = 0;
+				uint32_t bits = 0, lo, hi;
+
+				for (i = 0; i < 16; i++) {
+					uint32_t x = bx * 4 + i % 4;
+					uint32_t y = by * 4 + i / 4;
+
+					in[i] = x < s->w && y < s->h;
+					if (!in[i])
+						continue;
+					v[i] = s->px[(size_t)y * s->pitch +
+						     x * s->ch + c];
+					sum += v[i];
+					n++;
+				}
+				for (i = 0; i < 16; i++) {
+					if (!in[i])
+						continue;
+					if (v[i] * n >= sum) {
+						hs += v[i];
+						hn++;
+						bits |= 1u << i;
+					} else {
+						ls += v[i];
+						ln++;
+					}
+				}
+				hi = (2 * hs + hn) / (2 * hn);
+				lo = ln ? (2 * ls + ln) / (2 * ln) : hi;
+				o[k++] = (uint8_t)lo;
+				o[k++] = (uint8_t)hi;
+				o[k++] = (uint8_t)bits;
+				o[k++] = (uint8_t)(bits >> 8);
+			}
+		}
+	}
+	return k;
+}
+
+int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w,
+		     uint32_t h, uint32_t channels, size_t pitch, uint8_t *out,
+		     size_t cap, size_t *len)
+{
+	struct img_src s = { px, w, h, channels, pitch };
+	size_t bound = rdc_image_bound(codec, w, h, channels), payload;
+	uint8_t *tmp;
+	uint16_t *res = NULL;
+
+	if (!bound || !px || !len || (!out && cap) ||
+	    pitch < (size_t)w * channels)
+		return RDC_E_INVAL;
+	/* encode into a buffer of the bound, then copy what fits */
+	tmp = malloc(bound);
+	if (!tmp)
+		return RDC_E_NOMEM;
+	switch (codec) {
+	case RDC_IMG_RLE:
+		payload = enc_rle(&s, tmp + RDC_IMG_HDR_BYTES);
+		break;
+	case RDC_IMG_DPCM:
+		res = malloc((size_t)w * channels * sizeof(*res));
+		if (!res) {
+			free(tmp);
+			return RDC_E_NOMEM;
+		}
+		payload = enc_dpcm(&s, tmp + RDC_IMG_HDR_BYTES, res);
+		free(res);
+		break;
+	default:
+		payload = enc_btc(&s, tmp + RDC_IMG_HDR_BYTES);
+		break;
+	}
+	memset(tmp, 0, RDC_IMG_HDR_BYTES);
+	img_put32(tmp + RDC_IMG_OFF_MAGIC, RDC_IMG_MAGIC);
+	tmp[RDC_IMG_OFF_CODEC] = (uint8_t)codec;
+	tmp[RDC_IMG_OFF_CHANNELS] = (uint8_t)channels;
+	img_put16(tmp + RDC_IMG_OFF_WIDTH, w);
+	img_put16(tmp + RDC_IMG_OFF_HEIGHT, h);
+	img_put32(tmp + RDC_IMG_OFF_PAYLOAD, (uint32_t)payload);
+	*len = RDC_IMG_HDR_BYTES + payload;
+	if (*len > cap) {
+		free(tmp);
+		return RDC_E_RANGE;
+	}
+	memcpy(out, tmp, *len);
+	free(tmp);
+	return 0;
+}
+
+int rdc_image_samples(const uint32_t *xrgb, uint32_t w, uint32_t h,
+		      size_t pitch, uint32_t channels, uint8_t *out)
+{
+	if (!xrgb || !out || !img_args_ok(w, h, channels) || pitch < w)
+		return RDC_E_INVAL;
+	for (uint32_t y = 0; y < h; y++) {
+		for (uint32_t x = 0; x < w; x++) {
+			uint32_t p = xrgb[(size_t)y * pitch + x];
+			uint32_t r = (p >> 16) & 0xff, g = (p >> 8) & 0xff;
+			uint32_t b = p & 0xff;
+			uint8_t *o = out + ((size_t)y * w + x) * channels;
+
+			if (channels == 1) {
+				o[0] = (uint8_t)IMG_LUMA(r, g, b);
+			} else {
+				o[0] = (uint8_t)r;
+				o[1] = (uint8_t)g;
+				o[2] = (uint8_t)b;
+			}
+		}
+	}
+	return 0;
+}
+
+int rdc_image_png_read(const char *path, uint32_t **xrgb, uint32_t *w,
+		       uint32_t *h)
+{
+	png_image img;
+	uint32_t *buf;
+	uint8_t *rgb;
+
+	if (!path || !xrgb || !w || !h)
+		return RDC_E_INVAL;
+	memset(&img, 0, sizeof(img));
+	img.version = PNG_IMAGE_VERSION;
+	if (!png_image_begin_read_from_file(&img, path))
+		return rdc_err_detail(RDC_E_FILE, "%s: %s", path, img.message);
+	if (!img.width || !img.height || img.width > RDC_IMG_MAX_WIDTH ||
+	    img.height > RDC_IMG_MAX_HEIGHT) {
+		png_image_free(&img);
+		return rdc_err_detail(RDC_E_RANGE, "%s: %ux%u (at most %ux%u)",
+				      path, img.width, img.height,
+				      RDC_IMG_MAX_WIDTH, RDC_IMG_MAX_HEIGHT);
+	}
+	img.format = PNG_FORMAT_RGB;
+	rgb = malloc((size_t)img.width * img.height * 3);
+	buf = malloc((size_t)img.width * img.height * 4);
+	if (!rgb || !buf) {
+		free(rgb);
+		free(buf);
+		png_image_free(&img);
+		return RDC_E_NOMEM;
+	}
+	if (!png_image_finish_read(&img, NULL, rgb, 0, NULL)) {
+		free(rgb);
+		free(buf);
+		return rdc_err_detail(RDC_E_FILE, "%s: %s", path, img.message);
+	}
+	for (size_t i = 0; i < (size_t)img.width * img.height; i++)
+		buf[i] = (uint32_t)rgb[3 * i] << 16 |
+			 (uint32_t)rgb[3 * i + 1] << 8 | rgb[3 * i + 2];
+	free(rgb);
+	*xrgb = buf;
+	*w = img.width;
+	*h = img.height;
+	return 0;
+}
