@@ -158,7 +158,7 @@ static void arc_run(const struct arc_ctx *ac, int32_t dy, int32_t xa,
 	}
 }
 
-/* Row t of the symmetric shape, as raster.c's ELLIPSE emits it. */
+/* Row t of the symmetric shape, as shape.c's ELLIPSE emits it. */
 static void arc_row(const struct arc_ctx *ac, uint32_t t, uint32_t amin,
 		    uint32_t amax, bool fill)
 {

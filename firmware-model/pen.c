@@ -3,7 +3,7 @@
  * Pens and dashes: the stroker behind LINE, POLYLINE, POLYGON, RECT
  * outlines and the curves.
  *
- * Width 1 without a dash is the midpoint line of raster.c, unchanged.  A
+ * Width 1 without a dash is the midpoint line of line.c, unchanged.  A
  * dash selects which steps of those same lines are drawn.  Wider pens
  * build each segment, cap and join as a convex piece (or a disk) in 24.8
  * fixed point and queue it; at the end of the stroke the queue is drawn

@@ -1,0 +1,354 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/* HOST_BLIT, MONO and TEXT: rows of pixels from command data. */
+#include "raster.h"
+
+/* Byte k of a little-endian word stream. */
+static inline uint32_t word_byte(const uint32_t *w, uint32_t k)
+{
+	return (w[k / 4] >> (8 * (k % 4))) & 0xff;
+}
+
+/* Pixel at bit offset `bit` of a row of host words (same packing as VRAM). */
+static uint32_t word_px(const uint32_t *w, unsigned int bpp, uint32_t bit)
+{
+	uint32_t k = bit / 8, v = 0;
+	unsigned int i;
+
+	if (bpp < 8)
+		return (word_byte(w, k) >> (8 - bpp - (bit & 7))) &
+		       fmt_mask(bpp);
+	for (i = 0; i < bpp / 8; i++)
+		v |= word_byte(w, k + i) << (8 * i);
+	return v;
+}
+
+/*
+ * Rows of pixels produced from command data: get(x) gives pixel x of row r
+ * (relative to the rectangle) and whether it is drawn.  Shared by
+ * HOST_BLIT, MONO and TEXT.
+ */
+struct row_src {
+	unsigned int kind;
+	const uint32_t *data;
+	uint32_t wpr; /* words a data row */
+	unsigned int bpp;
+	uint32_t fg, bg;
+	bool transparent;
+};
+
+enum { SRC_HOST, SRC_MONO, SRC_TEXT };
+
+/* Byte k (8 pixels, bit 7 leftmost) of row r of a MONO or TEXT source. */
+static inline uint32_t bits_byte(const struct row_src *rs, uint32_t r,
+				 uint32_t k)
+{
+	if (rs->kind == SRC_MONO)
+		return word_byte(rs->data + (size_t)r * rs->wpr, k);
+	return rdc_font8x16[word_byte(rs->data, k) * 16 + r];
+}
+
+/*
+ * Stage pixels [bx, bx + n) of row r of a MONO or TEXT source as FG/BG
+ * in dp->px (set bits in dp->on): a byte of bits is fetched once for its
+ * eight pixels.
+ */
+static void bits_expand(struct rdc_dp *dp, const struct row_src *rs,
+			uint32_t r, uint32_t bx, uint32_t n)
+{
+	uint32_t i = 0, fg = rs->fg, bg = rs->bg;
+
+	while (i < n) {
+		uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
+		unsigned int b = (bx + i) % 8;
+
+		for (; b < 8 && i < n; b++, i++) {
+			uint32_t set = (byte >> (7 - b)) & 1;
+
+			dp->px[i] = set ? fg : bg;
+			dp->on[i] = (uint8_t)set;
+		}
+	}
+}
+
+/*
+ * Pixels [bx, bx + n) of row r of a MONO or TEXT source as XRGB8888 at q,
+ * FG and BG both written: with `table`, whole bytes of bits as two
+ * 4-pixel groups from dp->nibble_px (nibble_fill); otherwise, and at the
+ * ragged ends, pixel by pixel.
+ */
+#define BIT_PX(q, k)                                                           \
+	rdc_st32((q) + 4 * (k), bg ^ (diff & -((byte >> (7 - (k))) & 1)))
+
+static inline void bits_write32(struct rdc_dp *dp, uint8_t *q,
+				const struct row_src *rs, uint32_t r,
+				uint32_t bx, uint32_t n, bool table)
+{
+	uint32_t i = 0, bg = rs->bg, diff = rs->fg ^ rs->bg;
+	unsigned int b;
+
+	if (table && bx % 8 == 0) /* whole bytes from the first pixel */
+		for (; n - i >= 8; i += 8, q += 32) {
+			uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
+
+			rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
+			rdc_memcpy(q + 16, dp->nibble_px[byte & 15], 16);
+		}
+	while (i < n) {
+		uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
+
+		b = (bx + i) % 8;
+		/* a set bit turns BG into FG: bg ^ (diff & -bit) */
+		if (b == 0 && n - i >= 8) {
+			if (table) {
+				rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
+				rdc_memcpy(q + 16, dp->nibble_px[byte & 15],
+					   16);
+				q += 32;
+			} else {
+				/* written out: constant shifts, no loop */
+				BIT_PX(q, 0);
+				BIT_PX(q, 1);
+				BIT_PX(q, 2);
+				BIT_PX(q, 3);
+				BIT_PX(q, 4);
+				BIT_PX(q, 5);
+				BIT_PX(q, 6);
+				BIT_PX(q, 7);
+				q += 32;
+			}
+			i += 8;
+			continue;
+		}
+		for (; b < 8 && i < n; b++, i++, q += 4)
+			rdc_st32(q, bg ^ (diff & -((byte >> (7 - b)) & 1)));
+	}
+}
+
+/*
+ * bits_write32 for `rows` rows of exactly one whole byte of a MONO
+ * source (bx a multiple of 8, n 8, with the table), the console's 8-pixel
+ * glyph rows: the row loop without a call or the ragged-end tests per row.
+ */
+static inline void mono8_rows32(const struct rdc_dp *dp, uint8_t *q,
+				uint32_t stride, const struct row_src *rs,
+				uint32_t r, uint32_t bx, uint32_t rows)
+{
+	const uint32_t *d = rs->data + (size_t)r * rs->wpr;
+	uint32_t k;
+
+	for (k = 0; k < rows; k++, q += stride, d += rs->wpr) {
+		uint32_t byte = word_byte(d, bx / 8);
+
+		rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
+		rdc_memcpy(q + 16, dp->nibble_px[byte & 15], 16);
+	}
+}
+
+/*
+ * dp->nibble_px for FG and BG (group v's pixel k is FG if bit 3 - k is
+ * set), unless it holds them already.  False where the `n` pixels to draw
+ * with it (all rows: an 8x16 glyph is 128) are too few to repay building
+ * it (a byte of bits is two lookups instead of eight selects; the table
+ * is 64 stores).
+ */
+#define NIBBLE_MIN_PX 32u
+
+static bool nibble_fill(struct rdc_dp *dp, uint32_t fg, uint32_t bg,
+			uint64_t n)
+{
+	uint8_t pair[4][8]; /* pair[u]: pixel k is FG if bit 1 - k of u */
+	unsigned int v;
+
+	if (dp->nibble_ok && dp->nibble_fg == fg && dp->nibble_bg == bg)
+		return true;
+	if (n < NIBBLE_MIN_PX)
+		return false;
+	/* from the four 2-pixel pairs: 8 stores and 32 copies, not 64 */
+	for (v = 0; v < 4; v++) {
+		rdc_st32(pair[v], v & 2 ? fg : bg);
+		rdc_st32(pair[v] + 4, v & 1 ? fg : bg);
+	}
+	for (v = 0; v < 16; v++) {
+		rdc_memcpy(dp->nibble_px[v], pair[v >> 2], 8);
+		rdc_memcpy(dp->nibble_px[v] + 8, pair[v & 3], 8);
+	}
+	dp->nibble_fg = fg;
+	dp->nibble_bg = bg;
+	dp->nibble_ok = true;
+	return true;
+}
+
+/*
+ * Opaque MONO and TEXT rows in XRGB8888 with ROP COPY, the console's
+ * case: the rows [ya, yb) of pixels [xa, xb) are charged as one span
+ * each in a port window (rdc_port_window_rows) and expanded straight into
+ * VRAM; a row the scanout interrupts is charged on its own by
+ * rdc_port_span, as span_emit would.  Same spans, same order, same bytes.
+ */
+static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
+			int64_t xb, int64_t ya, int64_t yb,
+			const struct row_src *rs)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	struct rdc_hw *hw = dp->hw;
+	uint32_t n = (uint32_t)(xb - xa), bx = (uint32_t)(xa - x);
+	uint32_t addr, rows, done, r, k;
+	struct rdc_port_window w;
+	uint64_t pixels = 0;
+	bool table, mono8;
+	uint8_t *p;
+
+	if (ya >= yb)
+		return;
+	table = nibble_fill(dp, rs->fg, rs->bg,
+			    (uint64_t)n * (uint64_t)(yb - ya));
+	mono8 = table && rs->kind == SRC_MONO && n == 8 && bx % 8 == 0;
+	addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
+	rows = (uint32_t)(yb - ya);
+	r = (uint32_t)(ya - y);
+	rdc_port_window_open(hw, &w);
+	while (rows) {
+		done = rdc_port_window_rows(hw, &w, addr, n * 4, s->stride,
+					    rows);
+		if (mono8) {
+			mono8_rows32(dp, w.vram + addr, s->stride, rs, r, bx,
+				     done);
+			r += done;
+			addr += done * s->stride;
+		} else {
+			for (k = 0; k < done; k++, r++, addr += s->stride)
+				bits_write32(dp, w.vram + addr, rs, r, bx, n,
+					     table);
+		}
+		pixels += (uint64_t)done * n;
+		rows -= done;
+		if (!rows)
+			break;
+		/* the span span_emit would charge, then the same bytes */
+		rdc_port_window_close(hw, &w);
+		hw->perf.pixels += pixels;
+		pixels = 0;
+		p = rdc_port_span(hw, addr, n * 4, RDC_BUS_WRITE);
+		if (p) {
+			bits_write32(dp, p, rs, r, bx, n, table);
+			hw->perf.pixels += n;
+		}
+		rdc_port_window_open(hw, &w);
+		r++;
+		addr += s->stride;
+		rows--;
+	}
+	rdc_port_window_close(hw, &w);
+	hw->perf.pixels += pixels;
+}
+
+static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+		      uint32_t h, const struct row_src *rs)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	int64_t xa = RDC_MAX((int64_t)x, (int64_t)c.x0);
+	int64_t xb = RDC_MIN((int64_t)x + w, (int64_t)c.x1); /* exclusive */
+	int64_t ya = RDC_MAX((int64_t)y, (int64_t)c.y0);
+	int64_t yb = RDC_MIN((int64_t)y + h, (int64_t)c.y1);
+	int64_t row, col;
+
+	if (rs->kind != SRC_HOST && !rs->transparent && !dp->ref_paths &&
+	    dp->st.rop == RDC_ROP_COPY && dp->st.dst.format == RDC_FMT_XRGB8888 &&
+	    xa < xb && xb - xa <= (int64_t)RDC_DP_CHUNK) {
+		rows_text32(dp, x, y, xa, xb, ya, yb, rs);
+		return;
+	}
+
+	for (row = ya; row < yb; row++) {
+		uint32_t r = (uint32_t)(row - y);
+
+		for (col = xa; col < xb; col += RDC_DP_CHUNK) {
+			uint32_t n = (uint32_t)RDC_MIN(xb - col,
+						       (int64_t)RDC_DP_CHUNK);
+			uint32_t i;
+
+			if (rs->kind != SRC_HOST && !dp->ref_paths) {
+				bits_expand(dp, rs, r, (uint32_t)(col - x), n);
+				rdc_dp_span_px(dp, (int32_t)row,
+					       (int32_t)col, n, 0, dp->px,
+					       rs->transparent ? dp->on : NULL);
+				continue;
+			}
+			for (i = 0; i < n; i++) {
+				uint32_t bx = (uint32_t)(col - x) + i;
+				uint32_t bit;
+				bool set;
+
+				switch (rs->kind) {
+				case SRC_HOST:
+					dp->px[i] = word_px(rs->data +
+							    (size_t)r * rs->wpr,
+							    rs->bpp,
+							    bx * rs->bpp);
+					dp->on[i] = 1;
+					continue;
+				case SRC_MONO:
+					bit = word_byte(rs->data +
+							(size_t)r * rs->wpr,
+							bx / 8);
+					break;
+				default: /* SRC_TEXT: r is the glyph row */
+					bit = rdc_font8x16[word_byte(rs->data,
+								     bx / 8) *
+								   16 + r];
+					break;
+				}
+				set = (bit >> (7 - bx % 8)) & 1;
+				dp->px[i] = set ? rs->fg : rs->bg;
+				dp->on[i] = set;
+			}
+			if (rs->kind == SRC_HOST)
+				dp_blit_span(dp, (int32_t)row, (int32_t)col, n);
+			else
+				rdc_dp_span_px(dp, (int32_t)row,
+					       (int32_t)col, n, 0, dp->px,
+					       rs->transparent ? dp->on : NULL);
+		}
+	}
+}
+
+void rdc_dp_host_blit(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+		      uint32_t h, const uint32_t *data)
+{
+	unsigned int fmt = dp->st.dst.format;
+	struct row_src rs = {
+		.kind = SRC_HOST, .data = data,
+		.wpr = rdc_dp_words_per_row(fmt, w),
+		.bpp = rdc_format_bpp(fmt),
+	};
+
+	if (blit_drawn(dp))
+		rows_draw(dp, x, y, w, h, &rs);
+}
+
+void rdc_dp_mono(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
+		 uint32_t h, const uint32_t *data, bool transparent)
+{
+	struct row_src rs = {
+		.kind = SRC_MONO, .data = data,
+		.wpr = rdc_dp_words_per_row(RDC_FMT_I1, w),
+		.fg = dp->st.fg, .bg = dp->st.bg, .transparent = transparent,
+	};
+
+	rows_draw(dp, x, y, w, h, &rs);
+}
+
+#define RDC_GLYPH_W 8
+#define RDC_GLYPH_H 16
+
+/* One span per glyph row across the whole string. */
+void rdc_dp_text(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t count,
+		 const uint32_t *chars, bool transparent)
+{
+	struct row_src rs = {
+		.kind = SRC_TEXT, .data = chars,
+		.fg = dp->st.fg, .bg = dp->st.bg, .transparent = transparent,
+	};
+
+	rows_draw(dp, x, y, count * RDC_GLYPH_W, RDC_GLYPH_H, &rs);
+}

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Shared by the rasterisers (span.c, line.c, shape.c, blit.c, mono.c):
+ * pixel access, the solid runs and their queue.  Not for other files.
+ */
+#ifndef RDC_RASTER_H
+#define RDC_RASTER_H
+
+#include "dp_int.h"
+#include "../hw-sim/bus.h"
+
+static inline uint32_t fmt_mask(unsigned int bpp)
+{
+	return bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
+}
+
+/* Pixel at bit offset `bit` from p (sub-byte pixels MSB first). */
+static inline uint32_t px_ld(const uint8_t *p, unsigned int bpp, uint32_t bit)
+{
+	switch (bpp) {
+	case 32:
+		return rdc_ld32(p + bit / 8);
+	case 24:
+		return rdc_ld24(p + bit / 8);
+	case 16:
+		return rdc_ld16(p + bit / 8);
+	case 8:
+		return p[bit / 8];
+	default:
+		return (p[bit / 8] >> (8 - bpp - (bit & 7))) & fmt_mask(bpp);
+	}
+}
+
+static inline void px_st(uint8_t *p, unsigned int bpp, uint32_t bit,
+			 uint32_t v)
+{
+	unsigned int sh;
+	uint32_t m;
+
+	switch (bpp) {
+	case 32:
+		rdc_st32(p + bit / 8, v);
+		break;
+	case 24:
+		rdc_st24(p + bit / 8, v);
+		break;
+	case 16:
+		rdc_st16(p + bit / 8, v);
+		break;
+	case 8:
+		p[bit / 8] = (uint8_t)v;
+		break;
+	default:
+		sh = 8 - bpp - (bit & 7);
+		m = fmt_mask(bpp) << sh;
+		p[bit / 8] = (uint8_t)((p[bit / 8] & ~m) | ((v << sh) & m));
+		break;
+	}
+}
+
+#define FILL_BLOCK 64 /* bytes of pattern copied at a time */
+
+/*
+ * n XRGB8888 pixels of v: memset when the bytes agree, else a pattern block the
+ * compiler turns into wide stores.
+ */
+void dp_fill32(uint8_t *p, uint32_t v, uint32_t n);
+
+/*
+ * A run of v (XRGB8888, `pair` holding it twice in VRAM byte order) at q:
+ * a span, or a column of r->count pixels `stride` apart.  Every pixel is
+ * v, so 8-byte stores of two of them may overlap: a short span's first
+ * and last 8, 16 or 32 bytes cover it in a fixed number of stores.
+ * Returns the pixels written.
+ */
+static inline uint32_t run_store32(uint8_t *q, const struct rdc_port_run *r,
+				   uint32_t stride, const uint8_t *pair,
+				   uint32_t v)
+{
+	uint32_t len = r->len, cnt = r->count, k;
+
+	if (cnt != 1) {
+		/* the count held in a register: byte stores may alias r */
+		for (k = 0; k < cnt; k++, q += stride)
+			rdc_memcpy(q, pair, 4);
+		return cnt;
+	}
+	if (len == 4) {
+		rdc_memcpy(q, pair, 4);
+	} else if (len <= 16) {
+		rdc_memcpy(q, pair, 8);
+		rdc_memcpy(q + len - 8, pair, 8);
+	} else if (len <= 32) {
+		rdc_memcpy(q, pair, 8);
+		rdc_memcpy(q + 8, pair, 8);
+		rdc_memcpy(q + len - 16, pair, 8);
+		rdc_memcpy(q + len - 8, pair, 8);
+	} else if (len < FILL_BLOCK) {
+		for (k = 0; k < 32; k += 8)
+			rdc_memcpy(q + k, pair, 8);
+		for (k = 0; k < 32; k += 8)
+			rdc_memcpy(q + len - 32 + k, pair, 8);
+	} else {
+		dp_fill32(q, v, len / 4);
+	}
+	return len / 4;
+}
+
+/* DST formats the run queue takes (see span.c). */
+bool dp_runs_ok(const struct rdc_dp *dp);
+/* The pixels of run r at p with colour fg through the ROP. */
+void dp_run_write(struct rdc_dp *dp, uint8_t *p,
+		  const struct rdc_port_run *r, uint32_t fg);
+/* Charge and write the queued runs dp->runs[0, nruns). */
+void dp_runs_flush(struct rdc_dp *dp);
+/* Queue count pixels down from x, y (count 1: n pixels across). */
+void dp_queue_run(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t n,
+		  uint32_t count);
+/* Solid span [xa, xb] of row y, clipped here. */
+void dp_span_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t y,
+		  int32_t xa, int32_t xb, uint32_t colour);
+/* Solid vertical run [ya, yb] of column x, clipped here. */
+void dp_col_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t x,
+		 int32_t ya, int32_t yb, uint32_t colour);
+/* The staged pixels dp->px[0, n) of a BLIT or HOST_BLIT to DST row y. */
+void dp_blit_span(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n);
+
+/* Does the global alpha let a BLIT or HOST_BLIT draw at all? */
+static inline bool blit_drawn(const struct rdc_dp *dp)
+{
+	return !rdc_format_indexed(dp->st.dst.format) ||
+	       dp->st.alpha >= RDC_ALPHA_THRESHOLD;
+}
+
+#endif /* RDC_RASTER_H */
