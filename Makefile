@@ -216,7 +216,7 @@ bench-usb: $(O)/rel/net_bench $(O)/rel/rdcd
 #   fuzz_proto   the wire protocol's codec (userspace/lib/proto.c)
 #   fuzz_usb     the host side of the USB framing (usb_host.c)
 #   fuzz_rdcd    rdcd's request handling, several clients (rdcd/serve.c)
-#   fuzz_script  the .rdl interpreter on a sim: device (lib/script.c)
+#   fuzz_script  the .rdl interpreter on a sim: device (lib/script*.c)
 # `make fuzz` is the short run `make check` does (fuzz_proto and fuzz_usb
 # a million inputs each, the other two FUZZ_TIME seconds each from their
 # seeds in tests/fuzz/seeds/); `make fuzz-long` gives each target
@@ -285,6 +285,14 @@ $(FUZZ_DIR)/fuzz_script: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_script.o \
 
 fuzz-bins: $(FUZZ_BINS)
 
+# A target's seed directories, in the shell variable seeds ($$t: target):
+# fuzz_script also starts from every .rdl of examples/ and the golden
+# scenes (read only: libFuzzer writes to the first directory it is given).
+FUZZ_SEEDS = case $$t in \
+	rdcd) seeds=tests/fuzz/seeds/rdcd;; \
+	script) seeds="tests/fuzz/seeds/script examples tests/golden/scenes";; \
+	*) seeds=;; esac
+
 # fuzz_rdcd and fuzz_script start from their seeds each time (a fresh
 # $(FUZZ_DIR)/short-NAME, so a run does not depend on the last one).
 fuzz: $(FUZZ_BINS)
@@ -295,7 +303,7 @@ fuzz: $(FUZZ_BINS)
 		dict=; [ -f tests/fuzz/$$t.dict ] && dict=-dict=tests/fuzz/$$t.dict; \
 		cmd="$(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_TIME) -seed=1"; \
 		cmd="$$cmd -timeout=60 -print_final_stats=1 $$dict"; \
-		cmd="$$cmd $(FUZZ_DIR)/short-$$t tests/fuzz/seeds/$$t"; \
+		$(FUZZ_SEEDS); cmd="$$cmd $(FUZZ_DIR)/short-$$t $$seeds"; \
 		echo "$$cmd (log: $(FUZZ_DIR)/short-$$t.log)"; \
 		if ! $$cmd >$(FUZZ_DIR)/short-$$t.log 2>&1; then \
 			tail -n 80 $(FUZZ_DIR)/short-$$t.log; exit 1; fi; \
@@ -306,7 +314,7 @@ fuzz: $(FUZZ_BINS)
 fuzz-long: $(FUZZ_BINS)
 	@for t in $(FUZZ_TARGETS); do \
 		mkdir -p $(FUZZ_DIR)/corpus-$$t; \
-		seeds=; [ -d tests/fuzz/seeds/$$t ] && seeds=tests/fuzz/seeds/$$t; \
+		$(FUZZ_SEEDS); \
 		dict=; [ -f tests/fuzz/$$t.dict ] && dict=-dict=tests/fuzz/$$t.dict; \
 		echo "$(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_LONG_TIME)" \
 			"-max_len=65536 $$dict $(FUZZ_DIR)/corpus-$$t $$seeds"; \
@@ -322,13 +330,14 @@ LLVM_PROFDATA ?= llvm-profdata-14
 LLVM_COV ?= llvm-cov-14
 FUZZ_COV_DIR := $(O)/fuzz-cov
 FUZZ_COV_FILES := userspace/lib/proto.c userspace/lib/usb_host.c \
-	userspace/rdcd/serve.c userspace/lib/script.c
+	userspace/rdcd/serve.c $(sort $(wildcard userspace/lib/script*.c))
 fuzz-cov:
 	$(MAKE) FUZZ_DIR=$(FUZZ_COV_DIR) \
 		FUZZ_INSTR="-fprofile-instr-generate -fcoverage-mapping" fuzz-bins
 	@set -e; rm -f $(FUZZ_COV_DIR)/*.profraw; objs=; \
 	for t in $(FUZZ_TARGETS); do \
-		ins=; for d in $(FUZZ_DIR)/corpus-$$t tests/fuzz/seeds/$$t; do \
+		$(FUZZ_SEEDS); \
+		ins=; for d in $(FUZZ_DIR)/corpus-$$t $$seeds; do \
 			[ -d $$d ] && ins="$$ins $$d"; done; \
 		[ -n "$$ins" ] || { echo "fuzz-cov: no inputs for $$t"; continue; }; \
 		LLVM_PROFILE_FILE=$(FUZZ_COV_DIR)/$$t.profraw \
