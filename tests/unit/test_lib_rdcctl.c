@@ -131,6 +131,10 @@ static void test_output_errors(void **state)
 	assert_non_null(strstr(out, "No such file or directory"));
 	assert_null(strstr(out, "crc32"));
 	assert_null(strstr(out, "cycles"));
+	assert_int_equal(
+		ctl("run examples/demo.rdl --vcd /nonexistent-dir/x.vcd"), 1);
+	assert_non_null(strstr(out, "/nonexistent-dir/x.vcd"));
+	assert_non_null(strstr(out, "No such file or directory"));
 
 	/* stream --png makes its directory, parents too */
 	assert_non_null(mkdtemp(dir));

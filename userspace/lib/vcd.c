@@ -429,7 +429,8 @@ int rdc_vcd_new(const char *path, struct rdc_hw *const *hw, rdc_vcd **out)
 	v->fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
 	if (v->fd < 0) {
 		free(v);
-		return RDC_E_FILE;
+		return rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+				      strerror(errno));
 	}
 	v->hwp = hw;
 	v->core_hz = (*hw)->core_hz ? (*hw)->core_hz : RDC_DEFAULT_CORE_HZ;
