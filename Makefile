@@ -285,7 +285,7 @@ $(FUZZ_DIR)/fuzz_script: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_script.o \
 
 fuzz-bins: $(FUZZ_BINS)
 
-# A target's seed directories, in the shell variable seeds ($$t: target):
+# A target's seed directories, in the shell variable seeds (t: the target):
 # fuzz_script also starts from every .rdl of examples/ and the golden
 # scenes (read only: libFuzzer writes to the first directory it is given).
 FUZZ_SEEDS = case $$t in \

@@ -5,8 +5,9 @@
  * 1 MiB of VRAM (320x200 in every format and the display lists of the
  * golden scenes fit; larger modes are refused as they would be on such a
  * device).  Every statement kind is reachable, `list ... end` blocks
- * included; the seeds are the .rdl files of examples/ and tests/golden/scenes/
- * (tests/fuzz/seeds/script), script.dict lists the keywords.
+ * included; the seeds are the .rdl files of examples/ and
+ * tests/golden/scenes/ and, for what those never use, tests/fuzz/seeds/script;
+ * script.dict lists the keywords.
  *
  * Checked: the run ends with 0 or an RDC_E_* code; an error names a line
  * of the script (1-based, at most one past the last) and carries a

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-2.0-only
 """Write the seed inputs of fuzz_rdcd (tests/fuzz/seeds/rdcd) in the record
-format tests/fuzz/fuzz_rdcd.c reads, and fuzz_script's (seeds/script) from
-examples/*.rdl and tests/golden/scenes/*.rdl.  Run from the top of the tree
-when the formats change; the output is checked in."""
+format tests/fuzz/fuzz_rdcd.c reads, and the few scripts fuzz_script takes
+beside examples/ and tests/golden/scenes/ (seeds/script: the statements
+those never use).  Run from the top of the tree when the formats change;
+the output is checked in."""
 import os
 import shutil
 import struct
@@ -170,6 +171,45 @@ def seeds():
     return out
 
 
+SCRIPTS = {
+    "host": """mode 320x200 i8
+palette 0 #000000 #ff0000 #00ff00
+raw 0x10000001 2
+cmd 0x24 0x000a000a 0x00100010
+step 100000
+run-until 3000000
+wait-frame
+finish
+vsync
+screenshot fuzz.png
+reset
+""",
+    "lists": """mode 320x200 rgb565
+list 0x40000
+fill 0 0 10 10
+call 0x40100
+ret
+end
+list 0x40100
+line 0 0 5 5 \\
+  # continued
+ret
+end
+call 0x40000
+readback 0 0 4 4
+list 0x40200
+end
+""",
+}
+# one error each (a script stops at its first)
+for i, line in enumerate([
+        "list 0x40001", "end", "list 0x40000\nlist 0x40004",
+        "list 0x40000\nreadback 0 0 1 1", 'text 1 1 "unterminated',
+        "fg #12345", "host-blit 0 0 2 2 data 1 2 3", "step 99999999999",
+        "run-until -1", "screenshot", "raw", "list 0x40000\nfill 0 0 1 1"]):
+    SCRIPTS["error%02d" % i] = "mode 320x200 xrgb8888\n" + line + "\n"
+
+
 def main():
     d = "tests/fuzz/seeds/rdcd"
     shutil.rmtree(d, ignore_errors=True)
@@ -177,16 +217,14 @@ def main():
     for name, b in seeds().items():
         with open(os.path.join(d, name), "wb") as f:
             f.write(b)
+    # fuzz_script also reads examples/ and tests/golden/scenes/ (the
+    # Makefile names them): here only what those never say
     d = "tests/fuzz/seeds/script"
     shutil.rmtree(d, ignore_errors=True)
     os.makedirs(d)
-    srcs = [("examples", f) for f in sorted(os.listdir("examples"))]
-    srcs += [("tests/golden/scenes", f)
-             for f in sorted(os.listdir("tests/golden/scenes"))]
-    for top, f in srcs:
-        if f.endswith(".rdl"):
-            shutil.copy(os.path.join(top, f), os.path.join(d, f))
-
+    for name, text in SCRIPTS.items():
+        with open(os.path.join(d, name + ".rdl"), "w") as f:
+            f.write(text)
 
 if __name__ == "__main__":
     main()
