@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define FZ_BIG (8u << 20)
+#define FZ_BIG	 (8u << 20)
 #define FZ_SLOTS 4
 
 void *__real_calloc(size_t n, size_t size);

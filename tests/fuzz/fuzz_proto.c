@@ -16,11 +16,11 @@
 
 #include "rdc_proto.h"
 
-#define RDC_MIN(a, b) ((a) < (b) ? (a) : (b))
+#define RDC_MIN(a, b)	  ((a) < (b) ? (a) : (b))
 #define RDC_ARRAY_SIZE(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Decoded frames are capped so that a run stays fast and small. */
-#define FUZZ_MAX_PIXELS (256u * 256u)
+#define FUZZ_MAX_PIXELS	    (256u * 256u)
 #define FUZZ_ENC_MAX_PIXELS 512u
 
 static uint32_t fuzz_pix[FUZZ_MAX_PIXELS];

@@ -45,29 +45,29 @@
 #include "hw.h"
 #include "rdcd.h"
 
-#define FZ_CLIENTS 4
-#define FZ_MAX_RECORDS 512
-#define FZ_EXPECT 1024 /* requests in flight per client */
-#define FZ_TIME_UNIT 4096u
-#define FZ_MAX_WAIT 4000000u	/* 40 ms at the default clock */
-#define FZ_MAX_CYCLES 100000000u /* 1 simulated second per input */
-#define FZ_SETTLE_TURNS 64
+#define FZ_CLIENTS	 4
+#define FZ_MAX_RECORDS	 512
+#define FZ_EXPECT	 1024 /* requests in flight per client */
+#define FZ_TIME_UNIT	 4096u
+#define FZ_MAX_WAIT	 4000000u   /* 40 ms at the default clock */
+#define FZ_MAX_CYCLES	 100000000u /* 1 simulated second per input */
+#define FZ_SETTLE_TURNS	 64
 #define FZ_SETTLE_CYCLES (1u << 17) /* 64 of them: 2^23, over any wait */
-#define FZ_SOCKBUF (4 << 20)
-#define FZ_MAX_PIXELS RDC_PROTO_MAX_FRAME_PIXELS
-#define FZ_CONNS 64 /* the daemon's clients: ours, and ours gone */
-#define FZ_WALL_START (1000ull * 1000000000ull)
-#define FZ_WALL_TURN_NS (200ull * 1000000ull)
+#define FZ_SOCKBUF	 (4 << 20)
+#define FZ_MAX_PIXELS	 RDC_PROTO_MAX_FRAME_PIXELS
+#define FZ_CONNS	 64 /* the daemon's clients: ours, and ours gone */
+#define FZ_WALL_START	 (1000ull * 1000000000ull)
+#define FZ_WALL_TURN_NS	 (200ull * 1000000ull)
 
 static const uint8_t fz_token[] = "fuzz-token";
 
-#define fz_assert(c)                                                          \
-	do {                                                                  \
-		if (!(c)) {                                                   \
+#define fz_assert(c)                                                           \
+	do {                                                                   \
+		if (!(c)) {                                                    \
 			fprintf(stderr, "fuzz_rdcd: %s:%d: %s\n", __FILE__,    \
-				__LINE__, #c);                                \
-			abort();                                              \
-		}                                                             \
+				__LINE__, #c);                                 \
+			abort();                                               \
+		}                                                              \
 	} while (0)
 
 /* A request the client sent, whose reply it still waits for. */
@@ -90,10 +90,10 @@ struct fz_out {
 
 struct fz_client {
 	bool used;
-	int fd;			  /* our end */
+	int fd;			 /* our end */
 	struct rdcd_client *srv; /* the daemon's, NULL once freed */
-	bool hung_up;		  /* we closed our end */
-	bool closed;		  /* a reply said the daemon hangs up */
+	bool hung_up;		 /* we closed our end */
+	bool closed;		 /* a reply said the daemon hangs up */
 	bool eof;
 	struct fz_out out;
 	struct fz_req exp[FZ_EXPECT];
@@ -256,7 +256,8 @@ static void fz_check_frame(struct fz_client *c, const uint8_t *p, size_t len,
 			pix = c->prev;
 		}
 	} else {
-		fz_assert(f.encoding == rdc_proto_get32(c->exp[c->exp_head].pl));
+		fz_assert(f.encoding ==
+			  rdc_proto_get32(c->exp[c->exp_head].pl));
 	}
 	fz_assert(!rdc_proto_frame_decode(pix, f.width, f.height, f.encoding,
 					  p + RDC_PROTO_FRAME_HDR,
@@ -287,7 +288,8 @@ static void fz_check_reply(struct fz *z, struct fz_client *c,
 	if (h->status == RDC_ST_OK) {
 		switch (r->type) {
 		case RDC_MSG_HELLO:
-			fz_assert(!rdc_proto_hello_reply_decode(p, h->len, &hr));
+			fz_assert(
+				!rdc_proto_hello_reply_decode(p, h->len, &hr));
 			fz_assert(hr.version == RDC_PROTO_VERSION);
 			fz_assert(hr.vram_size == z->d.vram_size);
 			fz_assert(hr.run_mode == (uint32_t)z->d.mode);
@@ -318,8 +320,7 @@ static void fz_check_reply(struct fz *z, struct fz_client *c,
 		default:
 			break;
 		}
-	} else if (r->type == RDC_MSG_FRAME_GRAB &&
-		   h->status == RDC_ST_RANGE) {
+	} else if (r->type == RDC_MSG_FRAME_GRAB && h->status == RDC_ST_RANGE) {
 		want = RDC_PROTO_FRAME_HDR;
 	}
 	fz_assert(h->len == want);
@@ -337,8 +338,11 @@ static void fz_check_msg(struct fz *z, struct fz_client *c)
 	const struct rdc_proto_hdr *h = &c->ih;
 
 	if (fz_verbose)
-		fprintf(stderr, "client %td: type %u flags %u seq %u status %u len %u\n",
-			c - z->cl, h->type, h->flags, h->seq, h->status, h->len);
+		fprintf(stderr,
+			"client %td: type %u flags %u seq %u status %u len "
+			"%u\n",
+			c - z->cl, h->type, h->flags, h->seq, h->status,
+			h->len);
 	if (h->flags == RDC_MSGF_REPLY) {
 		fz_check_reply(z, c, h, c->ibody);
 		return;
@@ -456,8 +460,9 @@ static void fz_turn(struct fz *z, uint64_t cycles)
 		fz_assert(n < FZ_CONNS);
 		cl[n] = s;
 		pfd[n].fd = s->fd;
-		pfd[n].events = (short)((rdcd_client_wants_read(s) ? POLLIN : 0) |
-					(s->out_head ? POLLOUT : 0));
+		pfd[n].events =
+			(short)((rdcd_client_wants_read(s) ? POLLIN : 0) |
+				(s->out_head ? POLLOUT : 0));
 		pfd[n++].revents = 0;
 	}
 	fz_assert(poll(pfd, n, 0) >= 0);

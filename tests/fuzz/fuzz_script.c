@@ -36,13 +36,13 @@
 #define FZ_MAX_STEP 4000000u /* 40 ms of the default core clock */
 #define FZ_MAX_WAIT 4000000u
 
-#define fz_assert(c)                                                          \
-	do {                                                                  \
-		if (!(c)) {                                                   \
+#define fz_assert(c)                                                           \
+	do {                                                                   \
+		if (!(c)) {                                                    \
 			fprintf(stderr, "fuzz_script: %s:%d: %s\n", __FILE__,  \
-				__LINE__, #c);                                \
-			abort();                                              \
-		}                                                             \
+				__LINE__, #c);                                 \
+			abort();                                               \
+		}                                                              \
 	} while (0)
 
 void __real_rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w);
@@ -62,8 +62,8 @@ void __wrap_rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w)
 
 int __wrap_rdc_sim_step(rdc_dev *dev, uint64_t cycles)
 {
-	return __real_rdc_sim_step(dev, cycles < FZ_MAX_STEP ? cycles
-							      : FZ_MAX_STEP);
+	return __real_rdc_sim_step(dev,
+				   cycles < FZ_MAX_STEP ? cycles : FZ_MAX_STEP);
 }
 
 int __wrap_rdc_sim_run_until(rdc_dev *dev, uint64_t t)

@@ -39,9 +39,8 @@ static void test_delta_empty_rows(void **state)
 	assert_int_equal(n, 3 * 4);
 	for (unsigned int y = 0; y < 3; y++)
 		assert_int_equal(rdc_proto_get32(out + 4 * y), 0);
-	assert_int_equal(rdc_proto_frame_decode(back, 0, 3, RDC_ENC_DELTA,
-						out, n),
-			 0);
+	assert_int_equal(
+		rdc_proto_frame_decode(back, 0, 3, RDC_ENC_DELTA, out, n), 0);
 }
 
 /*
@@ -55,7 +54,8 @@ static void test_toobig_behind_pending(void **state)
 {
 	static const char *const args[] = {"-q", NULL}; /* paced */
 	struct rdc_proto_hdr big = {.len = RDC_PROTO_MAX_REQUEST + 1,
-				    .type = RDC_MSG_VRAM_WRITE, .seq = 2};
+				    .type = RDC_MSG_VRAM_WRITE,
+				    .seq = 2};
 	uint8_t step[8], hb[RDC_PROTO_HDR_SIZE];
 	struct rdc_proto_hdr h;
 	struct netd d;
@@ -69,8 +69,7 @@ static void test_toobig_behind_pending(void **state)
 			 RDC_ST_OK);
 	/* half a simulated second: pending for as long on the wall clock */
 	rdc_proto_put64(step, 50000000u);
-	assert_int_equal(netd_send(fd, RDC_MSG_STEP, 1, step, sizeof(step)),
-			 0);
+	assert_int_equal(netd_send(fd, RDC_MSG_STEP, 1, step, sizeof(step)), 0);
 	rdc_proto_hdr_encode(hb, &big);
 	assert_int_equal(netd_write(fd, hb, sizeof(hb)), 0);
 	assert_int_equal(netd_reply(fd, &h, NULL, 0), 0);
