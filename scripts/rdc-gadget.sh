@@ -14,7 +14,10 @@
 #                                     umount, remove the configfs tree
 #   rdc-gadget.sh status
 #
-# Options: --name NAME (gadget and function instance, default rdc),
+# Options: --personality rdc|udl (rdc: rdc_usb.h's interface, the default;
+# udl: DisplayLink's command set for Linux's udl DRM driver, IDs
+# 0x17e9/0x5244, rdcd --listen udl:DIR), --name NAME (gadget and function
+# instance, default rdc),
 # --dir DIR (functionfs mount, default /dev/ffs-NAME), --vid/--pid (default
 # rdc_usb.h's 0x1209/0x0001), --serial S (default generated), --udc NAME
 # (default the first in /sys/class/udc), --rdcd PATH, --log FILE (rdcd's
@@ -24,8 +27,9 @@ set -u
 
 NAME=rdc
 DIR=""
-VID=0x1209
-PID=0x0001
+PERSONALITY=rdc
+VID=""
+PID=""
 SERIAL=""
 UDC=""
 RDCD=""
@@ -38,7 +42,7 @@ die() {
 }
 
 usage() {
-	sed -n '3,22s/^# \{0,1\}//p' "$0"
+	sed -n '3,25s/^# \{0,1\}//p' "$0"
 	exit "${1:-0}"
 }
 
@@ -47,9 +51,11 @@ CMD=$1
 shift
 while [ $# -gt 0 ]; do
 	case $1 in
-	--name | --dir | --vid | --pid | --serial | --udc | --rdcd | --log)
+	--name | --dir | --vid | --pid | --serial | --udc | --rdcd | --log | \
+		--personality)
 		[ $# -ge 2 ] || die "$1 needs a value"
 		case $1 in
+		--personality) PERSONALITY=$2 ;;
 		--name) NAME=$2 ;;
 		--dir) DIR=$2 ;;
 		--vid) VID=$2 ;;
@@ -67,6 +73,13 @@ while [ $# -gt 0 ]; do
 	esac
 done
 case $NAME in *[!A-Za-z0-9_-]* | "") die "bad --name '$NAME'" ;; esac
+# udl matches DisplayLink's vendor ID and the interface class alone; the
+# product ID is this simulation's, no DisplayLink product's.
+case $PERSONALITY in
+rdc) VID=${VID:-0x1209} PID=${PID:-0x0001} ;;
+udl) VID=${VID:-0x17e9} PID=${PID:-0x5244} ;;
+*) die "bad --personality '$PERSONALITY' (rdc or udl)" ;;
+esac
 G=$CFG/usb_gadget/$NAME
 F=functions/ffs.$NAME
 
@@ -105,8 +118,11 @@ gadget_create() {
 	echo high-speed >"$G/max_speed" 2>/dev/null
 	mkdir "$G/strings/0x409"
 	echo "rdc project" >"$G/strings/0x409/manufacturer"
-	echo "RDC-1 raster display controller (simulated)" \
-		>"$G/strings/0x409/product"
+	if [ "$PERSONALITY" = udl ]; then
+		echo "RDC-1 raster display controller (simulated, DisplayLink command set)"
+	else
+		echo "RDC-1 raster display controller (simulated)"
+	fi >"$G/strings/0x409/product"
 	echo "$SERIAL" >"$G/strings/0x409/serialnumber"
 	mkdir "$G/configs/c.1" "$G/configs/c.1/strings/0x409"
 	echo "RDC-1" >"$G/configs/c.1/strings/0x409/configuration"
@@ -119,6 +135,7 @@ gadget_create() {
 	mkdir -p "$STATE"
 	echo "$DIR" >"$STATE/dir"
 	echo "$SERIAL" >"$STATE/serial"
+	echo "$PERSONALITY" >"$STATE/personality"
 }
 
 gadget_remove() {
@@ -133,7 +150,8 @@ gadget_remove() {
 rdcd_start() {
 	[ -x "$RDCD" ] || die "--rdcd $RDCD is not executable"
 	[ -n "$LOG" ] || LOG=$STATE/rdcd.log
-	"$RDCD" --listen "ffs:$DIR" "$@" >"$LOG" 2>&1 </dev/null &
+	if [ "$PERSONALITY" = udl ]; then lis=udl; else lis=ffs; fi
+	"$RDCD" --listen "$lis:$DIR" "$@" >"$LOG" 2>&1 </dev/null &
 	echo $! >"$STATE/rdcd.pid"
 }
 
@@ -205,7 +223,8 @@ up)
 		echo "rdc-gadget: $NAME up on $UDC, serial $SERIAL, rdcd $(cat "$STATE/rdcd.pid")"
 	else
 		echo "rdc-gadget: $NAME created, functionfs at $DIR, serial $SERIAL;"
-		echo "  now: rdcd --listen ffs:$DIR ... and then: $0 bind --name $NAME"
+		[ "$PERSONALITY" = udl ] && lis=udl || lis=ffs
+		echo "  now: rdcd --listen $lis:$DIR ... and then: $0 bind --name $NAME"
 	fi
 	;;
 bind) do_bind ;;

@@ -94,6 +94,8 @@ static void usage(FILE *f)
 	      "                   --token.  PORT 0: the kernel picks one.\n"
 	      "                   ffs:DIR: the RDC-1 as a USB device on the\n"
 	      "                   functionfs mounted at DIR (docs/usb.md)\n"
+	      "                   udl:DIR[?pad=N]: the same with DisplayLink's\n"
+	      "                   command set, for Linux's udl DRM driver\n"
 	      "  --fast           run unpaced, as fast as the host allows\n"
 	      "  --stepped        time moves only when the controlling client\n"
 	      "                   waits or steps, as on sim: (reproducible)\n"
@@ -360,9 +362,14 @@ static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
 		l->fd = rdcd_ffs_open(d, uri + 4, &l->ffs);
 		snprintf(l->uri, sizeof(l->uri), "%s", uri);
 		ret = l->fd < 0 ? -1 : 0;
+	} else if (!strncmp(uri, "udl:", 4)) {
+		l->fd = rdcd_udl_open(d, uri + 4, &l->udl);
+		snprintf(l->uri, sizeof(l->uri), "%s", uri);
+		ret = l->fd < 0 ? -1 : 0;
 	} else {
 		rdcd_log(d, RDCD_LOG_ERR,
-			 "%s: want unix:PATH, tcp:HOST:PORT or ffs:DIR", uri);
+			 "%s: want unix:PATH, tcp:HOST:PORT, ffs:DIR or udl:DIR",
+			 uri);
 		return -1;
 	}
 	if (ret)
@@ -385,6 +392,11 @@ static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 	d->accept_lis = (int)(l - d->lis);
 	if (l->ffs) {
 		rdcd_ffs_accept(d, l->ffs);
+		d->accept_lis = -1;
+		return;
+	}
+	if (l->udl) {
+		rdcd_udl_accept(d, l->udl);
 		d->accept_lis = -1;
 		return;
 	}
@@ -879,6 +891,8 @@ out:
 	for (unsigned int i = 0; i < d.nlis; i++) {
 		if (d.lis[i].ffs)
 			rdcd_ffs_close(d.lis[i].ffs); /* closes fd */
+		else if (d.lis[i].udl)
+			rdcd_udl_close(d.lis[i].udl); /* closes fd */
 		else
 			close(d.lis[i].fd);
 		if (d.lis[i].path[0])

@@ -121,6 +121,7 @@ struct rdcd_client {
 };
 
 struct rdcd_ffs;
+struct rdcd_udl;
 
 struct rdcd_listener {
 	int fd;
@@ -128,6 +129,7 @@ struct rdcd_listener {
 	char path[sizeof(((struct sockaddr_un *)0)->sun_path)];
 	char uri[160];
 	struct rdcd_ffs *ffs; /* ffs: (USB device): fd wakes for a session */
+	struct rdcd_udl *udl; /* udl: (DisplayLink personality): the same */
 };
 
 struct rdcd {
@@ -263,6 +265,15 @@ int rdcd_ffs_open(const struct rdcd *d, const char *dir,
 		  struct rdcd_ffs **out);
 void rdcd_ffs_accept(struct rdcd *d, struct rdcd_ffs *f);
 void rdcd_ffs_close(struct rdcd_ffs *f);
+
+/*
+ * udl.c: the DisplayLink personality (udl:DIR[?pad=N]), which Linux's udl
+ * DRM driver drives; the same three calls as ffs.c's.
+ */
+int rdcd_udl_open(const struct rdcd *d, const char *spec,
+		  struct rdcd_udl **out);
+void rdcd_udl_accept(struct rdcd *d, struct rdcd_udl *u);
+void rdcd_udl_close(struct rdcd_udl *u);
 
 /*
  * trace.c: listeners on the chip's trace hook (RDC_TRACE_*), kept across
