@@ -53,6 +53,7 @@ static void dp_reset_state(struct rdc_dp *dp)
 	st->z_base = 0;
 	st->z_stride = 0;
 	st->z_flags = 0;
+	dp_3d_reset(dp);
 }
 
 static void dp_reset(void *opaque)
@@ -321,6 +322,22 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 	case RDC_OP_CONVOLVE:
 	case RDC_OP_THRESHOLD:
 		return dp_cmd_image(dp, op, fl, len, a);
+	case RDC_OP_MATRIX_LOAD:
+	case RDC_OP_MATRIX_MULT:
+	case RDC_OP_TRANSLATE:
+	case RDC_OP_SCALE:
+	case RDC_OP_ROTATE:
+	case RDC_OP_PUSH_MATRIX:
+	case RDC_OP_POP_MATRIX:
+	case RDC_OP_SET_VIEW:
+	case RDC_OP_SET_VIEWPORT3:
+	case RDC_OP_SET_LIGHT:
+	case RDC_OP_SET_AMBIENT:
+	case RDC_OP_SET_MATERIAL:
+	case RDC_OP_MESH:
+	case RDC_OP_PATCH:
+	case RDC_OP_BEZIER3:
+		return dp_cmd_3d(dp, op, fl, len, a);
 	case RDC_OP_READBACK:
 		if (!xy_ok(a[0]) || !wh_ok(a[1]))
 			return RDC_ERR_RANGE;

@@ -9,6 +9,7 @@
 
 #include "../hw-sim/hw.h"
 #include "image.h"
+#include "geom3d.h"
 
 #define RDC_DP_CHUNK 1024u /* pixels staged per span */
 #define RDC_DP_RB_CHUNK 256u /* READBACK words packed per span read */
@@ -187,6 +188,16 @@ struct rdc_dp {
 
 	/* DECODE, HISTOGRAM, MAP_*, CONVOLVE, THRESHOLD (image.h) */
 	struct rdc_dp_img img;
+
+	/*
+	 * 3D (geom3d.c, light.c, patch.c): the state, the post-transform
+	 * vertex cache, a MESH's or PATCH's triangles as indices, and the
+	 * wireframe's edges (low index << 16 | high index)
+	 */
+	struct rdc_dp_3d g3;
+	struct rdc_dp_v3 v3[RDC_MESH_MAX_VERTS];
+	uint16_t v3_idx[3 * RDC_MESH_MAX_TRIS];
+	uint32_t v3_edge[3 * RDC_MESH_MAX_TRIS];
 };
 
 /* Initialise and connect to the chip (rdc_hw_set_dp). */

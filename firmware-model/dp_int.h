@@ -235,6 +235,19 @@ uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 uint32_t dp_cmd_image(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		      uint32_t len, const uint32_t *a);
 
+/*
+ * 3D (geom3d.c): the commands 0x40..0x5f (an enum rdc_err) and the reset
+ * state.  dp_tri_draw (tri.c) rasterises a triangle of device pixels with
+ * DST pixel values and depths 0..65535, no transform, as TRIANGLE does;
+ * dp_zbuf_ready says whether the depth surface, when in use, fits DST.
+ */
+uint32_t dp_cmd_3d(struct rdc_dp *dp, uint32_t op, uint32_t fl, uint32_t len,
+		   const uint32_t *a);
+void dp_3d_reset(struct rdc_dp *dp);
+void dp_tri_draw(struct rdc_dp *dp, const int32_t *x, const int32_t *y,
+		 const uint32_t *col, const uint32_t *z, bool gouraud);
+bool dp_zbuf_ready(const struct rdc_dp *dp);
+
 /* Words a row of w pixels of `fmt` occupies, padded to a word. */
 static inline uint32_t rdc_dp_words_per_row(unsigned int fmt, uint32_t w)
 {

@@ -223,46 +223,40 @@ static void tri_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb,
 	}
 }
 
-uint32_t dp_cmd_triangle(struct rdc_dp *dp, uint32_t flags, const uint32_t *a)
+bool dp_zbuf_ready(const struct rdc_dp *dp)
 {
 	const struct rdc_dp_state *st = &dp->st;
-	unsigned int bpp = rdc_format_bpp(st->dst.format), k, i;
-	uint32_t mask = bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
-	struct tri t = { .gouraud = flags & RDC_TRI_GOURAUD };
+
+	return !(st->z_stride && st->z_flags) ||
+	       zbuf_fits(dp, st->z_base, st->z_stride);
+}
+
+void dp_tri_draw(struct rdc_dp *dp, const int32_t *x, const int32_t *y,
+		 const uint32_t *col, const uint32_t *z, bool gouraud)
+{
+	const struct rdc_dp_state *st = &dp->st;
+	struct tri t = { .gouraud = gouraud };
 	int32_t *xy = dp->poly_xy;
-	uint32_t col[TRI_VERTS];
+	unsigned int k, i;
 
-	if (flags & ~RDC_TRI_GOURAUD)
-		return RDC_ERR_ARG;
 	for (i = 0; i < TRI_VERTS; i++) {
-		const uint32_t *v = a + i * TRI_WORDS;
-		int32_t x = RDC_X(v[0]), y = RDC_Y(v[0]);
-
-		if (x < RDC_COORD_MIN || x > RDC_COORD_MAX ||
-		    y < RDC_COORD_MIN || y > RDC_COORD_MAX || v[2] > Z_MAX ||
-		    !dp_xform(dp, &x, &y))
-			return RDC_ERR_RANGE;
-		t.x[i] = xy[2 * i] = x;
-		t.y[i] = xy[2 * i + 1] = y;
-		col[i] = v[1] & mask;
+		t.x[i] = xy[2 * i] = x[i];
+		t.y[i] = xy[2 * i + 1] = y[i];
 	}
-	if (st->z_stride && st->z_flags &&
-	    !zbuf_fits(dp, st->z_base, st->z_stride))
-		return RDC_ERR_SURFACE;
 	t.ztest = st->z_flags & RDC_Z_TEST;
 	t.zwrite = st->z_flags & RDC_Z_WRITE;
 	t.flat = col[0];
 	t.area2 = ((int64_t)t.x[1] - t.x[0]) * ((int64_t)t.y[2] - t.y[0]) -
 		  ((int64_t)t.x[2] - t.x[0]) * ((int64_t)t.y[1] - t.y[0]);
 	if (!t.area2)
-		return RDC_ERR_NONE; /* no pixel centre inside */
+		return; /* no pixel centre inside */
 	t.nch = channels(st->dst.format, t.shift, t.width) + 1;
 	for (k = 0; k < t.nch; k++) {
 		int64_t v[TRI_VERTS];
 
 		for (i = 0; i < TRI_VERTS; i++) {
 			if (k + 1 == t.nch)
-				v[i] = a[i * TRI_WORDS + 2];
+				v[i] = z[i];
 			else
 				v[i] = (col[i] >> t.shift[k]) &
 				       ((1u << t.width[k]) - 1);
@@ -274,5 +268,32 @@ uint32_t dp_cmd_triangle(struct rdc_dp *dp, uint32_t flags, const uint32_t *a)
 		t.hi[k] = RDC_MAX(RDC_MAX(v[0], v[1]), v[2]);
 	}
 	dp_poly_scan(dp, xy, TRI_VERTS, false, tri_span, &t);
+}
+
+uint32_t dp_cmd_triangle(struct rdc_dp *dp, uint32_t flags, const uint32_t *a)
+{
+	unsigned int bpp = rdc_format_bpp(dp->st.dst.format), i;
+	uint32_t mask = bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
+	int32_t tx[TRI_VERTS], ty[TRI_VERTS];
+	uint32_t col[TRI_VERTS], z[TRI_VERTS];
+
+	if (flags & ~RDC_TRI_GOURAUD)
+		return RDC_ERR_ARG;
+	for (i = 0; i < TRI_VERTS; i++) {
+		const uint32_t *v = a + i * TRI_WORDS;
+		int32_t x = RDC_X(v[0]), y = RDC_Y(v[0]);
+
+		if (x < RDC_COORD_MIN || x > RDC_COORD_MAX ||
+		    y < RDC_COORD_MIN || y > RDC_COORD_MAX || v[2] > Z_MAX ||
+		    !dp_xform(dp, &x, &y))
+			return RDC_ERR_RANGE;
+		tx[i] = x;
+		ty[i] = y;
+		col[i] = v[1] & mask;
+		z[i] = v[2];
+	}
+	if (!dp_zbuf_ready(dp))
+		return RDC_ERR_SURFACE;
+	dp_tri_draw(dp, tx, ty, col, z, flags & RDC_TRI_GOURAUD);
 	return RDC_ERR_NONE;
 }

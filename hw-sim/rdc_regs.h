@@ -443,6 +443,46 @@ enum rdc_opcode {
 	RDC_OP_TRIANGLE = 0x38,
 
 	/*
+	 * 3D geometry (docs/commands.md, "3D").  Matrices are the top three
+	 * rows of a 4x4 (bottom row 0 0 0 1), row by row, signed 15.16; a
+	 * new matrix M applies to vertices first: CTM = CTM * M.
+	 */
+	RDC_OP_MATRIX_LOAD = 0x40, /* 12 words, or none for the identity */
+	RDC_OP_MATRIX_MULT = 0x41, /* 12 words: CTM = CTM * M */
+	RDC_OP_TRANSLATE = 0x42, /* tx ty tz (15.16) */
+	RDC_OP_SCALE = 0x43, /* sx sy sz (15.16) */
+	/* angle in 1/65536 turn, counter-clockwise; flags enum rdc_axis */
+	RDC_OP_ROTATE = 0x44,
+	RDC_OP_PUSH_MATRIX = 0x45, /* none: save the CTM */
+	RDC_OP_POP_MATRIX = 0x46, /* none: restore the CTM */
+	/*
+	 * VRP xyz, VPN xyz, VUP xyz (world), PRP uvn (view reference
+	 * coordinates), umin umax vmin vmax (window), F, B: 18 words, 15.16;
+	 * flags RDC_VIEW_PERSPECTIVE (else parallel)
+	 */
+	RDC_OP_SET_VIEW = 0x48,
+	/* xy0, xy1: the corner pixels canonical (-1, -1) and (1, 1) land on */
+	RDC_OP_SET_VIEWPORT3 = 0x49,
+	/*
+	 * colour 0x00RRGGBB, dx dy dz (towards the light, 15.16), or none:
+	 * off; flags: the light's number 0..RDC_LIGHTS - 1
+	 */
+	RDC_OP_SET_LIGHT = 0x4a,
+	RDC_OP_SET_AMBIENT = 0x4b, /* colour 0x00RRGGBB of the ambient light */
+	/* ambient, diffuse, specular (0x00RRGGBB reflectances), shininess */
+	RDC_OP_SET_MATERIAL = 0x4c,
+	/*
+	 * vbase, vcount, ibase, tcount: triangles of 16-bit indices at ibase
+	 * into vertices of 3 (or with RDC_MESH_NORMALS 6) 15.16 words at vbase;
+	 * flags RDC_MESH_*
+	 */
+	RDC_OP_MESH = 0x50,
+	/* mode (RDC_MESH_* | steps << 8), 16 control points xyz: 49 words */
+	RDC_OP_PATCH = 0x51,
+	/* 4 control points xyz (12 words, 15.16); flags: steps (0 = 16) */
+	RDC_OP_BEZIER3 = 0x52,
+
+	/*
 	 * Image decompression and processing (docs/commands.md, "Images";
 	 * stream formats in rdc_image.h)
 	 */
@@ -482,6 +522,8 @@ static inline int rdc_cmd_args(uint32_t op)
 	switch (op) {
 	case RDC_OP_WAIT_VBLANK:
 	case RDC_OP_RET:
+	case RDC_OP_PUSH_MATRIX:
+	case RDC_OP_POP_MATRIX:
 		return 0;
 	case RDC_OP_FENCE:
 	case RDC_OP_WAIT_LINE:
@@ -496,6 +538,8 @@ static inline int rdc_cmd_args(uint32_t op)
 	case RDC_OP_SET_COLORKEY:
 	case RDC_OP_SET_AA_RAMP:
 	case RDC_OP_CLEAR_Z:
+	case RDC_OP_ROTATE:
+	case RDC_OP_SET_AMBIENT:
 	case RDC_OP_MAP_CLUT:
 		return 1;
 	case RDC_OP_REG_WRITE:
@@ -512,6 +556,7 @@ static inline int rdc_cmd_args(uint32_t op)
 	case RDC_OP_AA_LINE:
 	case RDC_OP_AA_CIRCLE:
 	case RDC_OP_AA_ELLIPSE:
+	case RDC_OP_SET_VIEWPORT3:
 		return 2;
 	case RDC_OP_BLIT:
 	case RDC_OP_ARC:
@@ -523,17 +568,31 @@ static inline int rdc_cmd_args(uint32_t op)
 		return 3;
 	case RDC_OP_SET_DST:
 	case RDC_OP_SET_SRC:
+	case RDC_OP_SET_MATERIAL:
+	case RDC_OP_MESH:
 	case RDC_OP_BEZIER:
 	case RDC_OP_HERMITE:
 		return 4;
 	case RDC_OP_SET_VIEWPORT:
 		return 6;
+	case RDC_OP_TRANSLATE:
+	case RDC_OP_SCALE:
+		return 3;
 	case RDC_OP_TRIANGLE:
 		return 9;
+	case RDC_OP_MATRIX_MULT:
+	case RDC_OP_BEZIER3:
+		return 12;
+	case RDC_OP_SET_VIEW:
+		return 18;
+	case RDC_OP_PATCH:
+		return 49;
 	case RDC_OP_NOP:
 	case RDC_OP_LOAD_CLUT:
 	case RDC_OP_SET_TRANSFORM:
 	case RDC_OP_SET_PATTERN:
+	case RDC_OP_MATRIX_LOAD:
+	case RDC_OP_SET_LIGHT:
 	case RDC_OP_SET_ZBUF:
 	case RDC_OP_POLYLINE:
 	case RDC_OP_POLYGON:
@@ -574,6 +633,41 @@ static inline int rdc_cmd_args(uint32_t op)
 #define RDC_Z_TEST BIT(0) /* draw only where z < stored depth */
 #define RDC_Z_WRITE BIT(1) /* store z where drawn */
 #define RDC_TRI_GOURAUD BIT(0)
+/*
+ * 3D (docs/commands.md, "3D"; cycle constants in docs/hardware.md).
+ * Limits: the matrix stack, lights, a MESH's vertices and triangles, a
+ * PATCH's subdivision.
+ */
+#define RDC_MATRIX_STACK_DEPTH 16
+#define RDC_LIGHTS 4
+#define RDC_MESH_MAX_VERTS 2048u
+#define RDC_MESH_MAX_TRIS 4096u
+#define RDC_PATCH_MAX_STEPS 32u
+#define RDC_BEZIER3_STEPS 16u /* BEZIER3 with steps 0 */
+enum rdc_axis { RDC_AXIS_X = 0, RDC_AXIS_Y = 1, RDC_AXIS_Z = 2 };
+#define RDC_VIEW_PERSPECTIVE BIT(0)
+#define RDC_MESH_NORMALS BIT(0) /* vertices carry a normal: 6 words */
+#define RDC_MESH_WIRE BIT(1) /* each edge once, FG lines (else filled) */
+#define RDC_MESH_CULL BIT(2) /* leave out back faces (clockwise on screen) */
+#define RDC_MESH_LIT BIT(3) /* illumination (else FG) */
+#define RDC_MESH_GOURAUD BIT(4) /* lit per vertex (else per face, flat) */
+#define RDC_MESH_TWO_SIDED BIT(5) /* normals turned towards the viewer */
+#define RDC_MESH_FLAGS GENMASK(5, 0)
+#define RDC_PATCH_STEPS GENMASK(15, 8) /* PATCH mode word: 1..32 */
+/*
+ * Geometry engine cycles (one multiply-accumulate a cycle): a vertex
+ * through the CTM and the view (21 MACs and the checks), its lighting
+ * (normal through the cofactor matrix and normalised, then per light
+ * diffuse, reflection, power, colour), a triangle's setup (facing, screen
+ * mapping), each vertex a clip plane makes, and a tessellated patch or
+ * curve point (forward differences).
+ */
+#define RDC_T_VERTEX3 24u
+#define RDC_T_LIGHT3 16u
+#define RDC_T_LIGHT3_EACH 32u
+#define RDC_T_TRI3 8u
+#define RDC_T_CLIP3 8u
+#define RDC_T_TESS3 12u
 /*
  * HISTOGRAM and THRESHOLD: what a pixel's value is.  Indexed formats: the
  * index (RDC_CHAN_LUMA only).  RGB formats: the channel widened to 8 bits

@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Polygon meshes: a vertex buffer and an index buffer in VRAM, every
+ * vertex through the pipeline once (the post-transform cache dp->v3),
+ * then each triangle rejected by its outcodes, clipped in homogeneous
+ * coordinates when it crosses the volume, culled by the orientation of
+ * its projection, and filled by TRIANGLE's rasteriser (flat or Gouraud,
+ * with the depth buffer of SET_ZBUF) or drawn as each edge once.
+ *
+ * Facing is decided after clipping, from the exact signed area of the
+ * projected polygon's integer vertices, the same vertices the rasteriser
+ * fills: a triangle counter-clockwise on the screen (y up) is a front
+ * face.  Clipped vertices are computed from the inside end of each edge,
+ * so triangles sharing an edge meet on the same pixels.
+ */
+#include "geom3d_int.h"
+#include "../hw-sim/bus.h"
+
+#define IDX_BYTES 2u
+
+static void pv_from(struct g3_pv *p, const struct rdc_dp_v3 *v)
+{
+	int i;
+
+	for (i = 0; i < 4; i++)
+		p->c[i] = v->c[i];
+	p->col[0] = (int32_t)(v->rgb >> 16 & 0xff);
+	p->col[1] = (int32_t)(v->rgb >> 8 & 0xff);
+	p->col[2] = (int32_t)(v->rgb & 0xff);
+}
+
+static uint32_t pv_rgb(const struct g3_pv *p)
+{
+	uint32_t out = 0;
+	int k;
+
+	for (k = 0; k < 3; k++)
+		out |= (uint32_t)RDC_MIN(RDC_MAX(p->col[k], 0), 255)
+		       << (16 - 8 * k);
+	return out;
+}
+
+/* The flat colour of triangle a, b, c: its face normal, lit at the centroid */
+static uint32_t face_rgb(struct rdc_dp *dp, const struct rdc_dp_v3 *a,
+			 const struct rdc_dp_v3 *b, const struct rdc_dp_v3 *c,
+			 bool two_sided)
+{
+	int64_t e1[3], e2[3], n[3], m = 0;
+	int32_t un[3], pc[3];
+	int i, sh = 0;
+
+	for (i = 0; i < 3; i++) {
+		e1[i] = (int64_t)b->w[i] - a->w[i];
+		e2[i] = (int64_t)c->w[i] - a->w[i];
+		m = RDC_MAX(m, RDC_MAX(e1[i] < 0 ? -e1[i] : e1[i],
+				       e2[i] < 0 ? -e2[i] : e2[i]));
+		pc[i] = (int32_t)(((int64_t)a->w[i] + b->w[i] + c->w[i]) / 3);
+	}
+	while ((m >> sh) >= ((int64_t)1 << 30))
+		sh++;
+	for (i = 0; i < 3; i++) {
+		e1[i] >>= sh;
+		e2[i] >>= sh;
+	}
+	n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+	n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+	n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+	if (!g3_normalize(n, un))
+		return 0;
+	rdc_port_compute(dp->hw, g3_light_cycles(dp));
+	return g3_light(dp, pc, un, two_sided);
+}
+
+/*
+ * Triangle i0, i1, i2 clipped and projected into x, y, z, rgb (at most
+ * G3_POLY_MAX vertices); returns the count (0: nothing visible) and
+ * *area2, twice the signed area on the screen with y down (negative for
+ * a front face).
+ */
+static uint32_t tri_project(struct rdc_dp *dp, const struct rdc_dp_v3 *v[3],
+			    int32_t *x, int32_t *y, uint32_t *z, uint32_t *rgb,
+			    int64_t *area2)
+{
+	struct g3_pv p[G3_POLY_MAX], tmp[G3_POLY_MAX];
+	uint32_t n = 3, i;
+	int64_t a = 0;
+
+	if (v[0]->out & v[1]->out & v[2]->out)
+		return 0;
+	if (!(v[0]->out | v[1]->out | v[2]->out)) {
+		for (i = 0; i < 3; i++) {
+			x[i] = v[i]->sx;
+			y[i] = v[i]->sy;
+			z[i] = v[i]->z;
+			rgb[i] = v[i]->rgb;
+		}
+	} else {
+		for (i = 0; i < 3; i++)
+			pv_from(&p[i], v[i]);
+		n = g3_clip_poly(dp, p, 3, tmp);
+		for (i = 0; i < n; i++) {
+			g3_project(dp, p[i].c, &x[i], &y[i], &z[i]);
+			rgb[i] = pv_rgb(&p[i]);
+		}
+	}
+	for (i = 0; i < n; i++) {
+		uint32_t j = (i + 1) % n;
+
+		a += (int64_t)x[i] * y[j] - (int64_t)x[j] * y[i];
+	}
+	*area2 = a;
+	return n;
+}
+
+/* Sift-down heapsort of the edge keys: no scratch, O(n log n). */
+static void edge_sort(uint32_t *e, uint32_t n)
+{
+	uint32_t start = n / 2, end = n, root, child, t;
+
+	while (end > 1) {
+		if (start > 0) {
+			start--;
+		} else {
+			end--;
+			t = e[end];
+			e[end] = e[0];
+			e[0] = t;
+		}
+		root = start;
+		while ((child = 2 * root + 1) < end) {
+			if (child + 1 < end && e[child] < e[child + 1])
+				child++;
+			if (e[root] >= e[child])
+				break;
+			t = e[root];
+			e[root] = e[child];
+			e[child] = t;
+			root = child;
+		}
+	}
+}
+
+void g3_draw_segment(struct rdc_dp *dp, const struct rdc_dp_v3 *a,
+		     const struct rdc_dp_v3 *b, bool skip_first)
+{
+	struct g3_pv pa, pb;
+	int32_t x0, y0, x1, y1;
+	uint32_t z;
+
+	if (a->out & b->out)
+		return;
+	pv_from(&pa, a);
+	pv_from(&pb, b);
+	if ((a->out | b->out) && !g3_clip_line(&pa, &pb))
+		return;
+	if (a->out | b->out)
+		rdc_port_compute(dp->hw, RDC_T_CLIP3);
+	g3_project(dp, pa.c, &x0, &y0, &z);
+	g3_project(dp, pb.c, &x1, &y1, &z);
+	rdc_dp_line(dp, x0, y0, x1, y1, skip_first && !a->out, false);
+}
+
+void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
+{
+	bool wire = fl & RDC_MESH_WIRE, cull = fl & RDC_MESH_CULL;
+	bool lit = fl & RDC_MESH_LIT, gouraud = lit && (fl & RDC_MESH_GOURAUD);
+	bool two = fl & RDC_MESH_TWO_SIDED;
+	int32_t x[G3_POLY_MAX], y[G3_POLY_MAX];
+	uint32_t z[G3_POLY_MAX], rgb[G3_POLY_MAX], col[G3_POLY_MAX];
+	uint32_t t, i, n, nedge = 0;
+
+	for (t = 0; t < ntri; t++) {
+		const uint16_t *ix = dp->v3_idx + 3 * t;
+		const struct rdc_dp_v3 *v[3] = { &dp->v3[ix[0]], &dp->v3[ix[1]],
+						 &dp->v3[ix[2]] };
+		int64_t area2;
+
+		rdc_port_compute(dp->hw, RDC_T_TRI3);
+		n = tri_project(dp, v, x, y, z, rgb, &area2);
+		if (!n || (cull && area2 >= 0))
+			continue;
+		if (wire) {
+			for (i = 0; i < 3; i++) {
+				uint32_t a = ix[i], b = ix[(i + 1) % 3];
+
+				dp->v3_edge[nedge++] = RDC_MIN(a, b) << 16 |
+						       RDC_MAX(a, b);
+			}
+			continue;
+		}
+		if (!area2)
+			continue; /* no pixel centre inside */
+		if (gouraud) {
+			for (i = 0; i < n; i++)
+				col[i] = g3_pixel(dp, rgb[i]);
+		} else {
+			uint32_t c = lit ? g3_pixel(dp, face_rgb(dp, v[0], v[1],
+							       v[2], two)) :
+					   dp->st.fg;
+
+			for (i = 0; i < n; i++)
+				col[i] = c;
+		}
+		/* a fan over the clipped polygon */
+		for (i = 1; i + 1 < n; i++) {
+			int32_t tx[3] = { x[0], x[i], x[i + 1] };
+			int32_t ty[3] = { y[0], y[i], y[i + 1] };
+			uint32_t tz[3] = { z[0], z[i], z[i + 1] };
+			uint32_t tc[3] = { col[0], col[i], col[i + 1] };
+
+			dp_tri_draw(dp, tx, ty, tc, tz, gouraud);
+		}
+	}
+	if (!wire)
+		return;
+	edge_sort(dp->v3_edge, nedge);
+	for (i = 0; i < nedge; i++) {
+		uint32_t e = dp->v3_edge[i];
+
+		if (i && e == dp->v3_edge[i - 1])
+			continue;
+		g3_draw_segment(dp, &dp->v3[e >> 16], &dp->v3[e & 0xffffu],
+				false);
+	}
+}
+
+uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint32_t vbase = a[0], vcount = a[1], ibase = a[2], tcount = a[3];
+	uint32_t words = fl & RDC_MESH_NORMALS ? 6 : 3, i, j;
+	bool lit = fl & RDC_MESH_LIT;
+	bool vlit = lit && (fl & RDC_MESH_GOURAUD);
+	struct g3_nmat nm;
+	const uint8_t *p;
+
+	if (fl & ~RDC_MESH_FLAGS)
+		return RDC_ERR_ARG;
+	/* lighting per vertex needs the vertices' normals */
+	if (vlit && !(fl & RDC_MESH_NORMALS))
+		return RDC_ERR_ARG;
+	if (vcount < 1 || vcount > RDC_MESH_MAX_VERTS ||
+	    tcount > RDC_MESH_MAX_TRIS || vbase % sizeof(uint32_t) ||
+	    (uint64_t)vbase + (uint64_t)vcount * words * sizeof(uint32_t) >
+		    hw->vram_size ||
+	    (uint64_t)ibase + (uint64_t)tcount * 3 * IDX_BYTES > hw->vram_size)
+		return RDC_ERR_RANGE;
+	if (!(fl & RDC_MESH_WIRE) && !dp_zbuf_ready(dp))
+		return RDC_ERR_SURFACE;
+	/* the indices, all checked before anything is drawn */
+	if (tcount) {
+		p = rdc_port_span(hw, ibase, tcount * 3 * IDX_BYTES,
+				  RDC_BUS_READ);
+		if (!p)
+			return RDC_ERR_RANGE;
+		for (i = 0; i < 3 * tcount; i++) {
+			dp->v3_idx[i] = rdc_ld16(p + i * IDX_BYTES);
+			if (dp->v3_idx[i] >= vcount)
+				return RDC_ERR_RANGE;
+		}
+	}
+	p = rdc_port_span(hw, vbase, vcount * words * (uint32_t)sizeof(uint32_t),
+			  RDC_BUS_READ);
+	if (!p)
+		return RDC_ERR_RANGE;
+	g3_normal_matrix(dp, &nm);
+	for (i = 0; i < vcount; i++) {
+		const uint8_t *q = p + i * words * sizeof(uint32_t);
+		int32_t v[6];
+
+		for (j = 0; j < words; j++)
+			v[j] = (int32_t)rdc_ld32(q + j * sizeof(uint32_t));
+		if (!g3_vertex(dp, v, words == 6 ? v + 3 : NULL, &nm, vlit,
+			       fl & RDC_MESH_TWO_SIDED, &dp->v3[i]))
+			return RDC_ERR_RANGE;
+	}
+	rdc_port_compute(hw, vcount * (RDC_T_VERTEX3 +
+				       (vlit ? g3_light_cycles(dp) : 0)));
+	g3_draw_tris(dp, fl, tcount);
+	return RDC_ERR_NONE;
+}

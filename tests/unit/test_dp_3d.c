@@ -1,0 +1,1191 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The 3D geometry stage against an independent double-precision model of
+ * the course's pipeline, written here from Foley & van Dam ch. 6 and 16:
+ * the matrices T(-VRP), R, SH_par, T_par / T(-PRP), S_par / S_per and Mper
+ * multiplied out in doubles, homogeneous clipping by Sutherland-Hodgman,
+ * the viewport mapping, and the illumination equation.  Nothing here
+ * calls the DP's code; the DP is driven through the FIFO only.
+ *
+ * Tolerances: the DP rounds each projected vertex to a pixel, so a pixel
+ * it fills has its centre within 0.75 pixel (Euclidean) of the exact
+ * projected polygon, and every pixel whose centre lies 0.75 pixel or more
+ * inside it is filled.  Colours agree within 2 of 255 per channel.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "test_dp_common.h"
+
+#define SW 640
+#define SH 480
+#define STRIDE (SW * 4)
+#define ZBASE 0x200000u
+#define VBASE 0x300000u
+#define IBASE 0x380000u
+#define COV_TOL 0.75
+#define COL_TOL 2
+
+static int32_t fx(double d)
+{
+	return (int32_t)lround(d * 65536.0);
+}
+
+/* ---- the reference pipeline -------------------------------------------- */
+
+struct ref_view {
+	double vrp[3], vpn[3], vup[3], prp[3];
+	double umin, umax, vmin, vmax, F, B;
+	bool persp;
+	int vx0, vy0, vx1, vy1;
+};
+
+typedef double mat4[4][4];
+
+static void m_ident(mat4 m)
+{
+	memset(m, 0, sizeof(mat4));
+	for (int i = 0; i < 4; i++)
+		m[i][i] = 1;
+}
+
+/* a = a * b */
+static void m_mul(mat4 a, mat4 b)
+{
+	mat4 c;
+
+	for (int i = 0; i < 4; i++)
+		for (int j = 0; j < 4; j++) {
+			c[i][j] = 0;
+			for (int k = 0; k < 4; k++)
+				c[i][j] += a[i][k] * b[k][j];
+		}
+	memcpy(a, c, sizeof(mat4));
+}
+
+static void m_trans(mat4 a, double x, double y, double z)
+{
+	mat4 t;
+
+	m_ident(t);
+	t[0][3] = x;
+	t[1][3] = y;
+	t[2][3] = z;
+	m_mul(a, t);
+}
+
+static void m_scale(mat4 a, double x, double y, double z)
+{
+	mat4 t;
+
+	m_ident(t);
+	t[0][0] = x;
+	t[1][1] = y;
+	t[2][2] = z;
+	m_mul(a, t);
+}
+
+static void m_rot(mat4 a, int axis, double ang)
+{
+	mat4 t;
+	int r = (axis + 1) % 3, k = (axis + 2) % 3;
+
+	m_ident(t);
+	t[r][r] = cos(ang);
+	t[r][k] = -sin(ang);
+	t[k][r] = sin(ang);
+	t[k][k] = cos(ang);
+	m_mul(a, t);
+}
+
+static void v_norm(double *v)
+{
+	double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+
+	for (int i = 0; i < 3; i++)
+		v[i] /= l;
+}
+
+static void v_cross(const double *a, const double *b, double *o)
+{
+	o[0] = a[1] * b[2] - a[2] * b[1];
+	o[1] = a[2] * b[0] - a[0] * b[2];
+	o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double v_dot(const double *a, const double *b)
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* Foley's N_par, or M_per N_per: world to the parallel canonical volume */
+static void ref_view_matrix(const struct ref_view *v, mat4 N)
+{
+	double n[3], u[3], vv[3], cu = (v->umax + v->umin) / 2;
+	double cv = (v->vmax + v->vmin) / 2, dop[3], shx, shy;
+	mat4 t;
+
+	memcpy(n, v->vpn, sizeof(n));
+	v_norm(n);
+	v_cross(v->vup, n, u);
+	v_norm(u);
+	v_cross(n, u, vv);
+	dop[0] = cu - v->prp[0];
+	dop[1] = cv - v->prp[1];
+	dop[2] = -v->prp[2];
+	shx = -dop[0] / dop[2];
+	shy = -dop[1] / dop[2];
+	m_ident(N);
+	if (!v->persp) {
+		m_scale(N, 2 / (v->umax - v->umin), 2 / (v->vmax - v->vmin),
+			1 / (v->F - v->B));
+		m_trans(N, -cu, -cv, -v->F);
+	} else {
+		double vz = -v->prp[2];
+		double zmin = -(vz + v->F) / (vz + v->B);
+
+		m_ident(t);
+		t[2][2] = 1 / (1 + zmin);
+		t[2][3] = -zmin / (1 + zmin);
+		t[3][2] = -1;
+		t[3][3] = 0;
+		m_mul(N, t);
+		m_scale(N, 2 * vz / ((v->umax - v->umin) * (vz + v->B)),
+			2 * vz / ((v->vmax - v->vmin) * (vz + v->B)),
+			-1 / (vz + v->B));
+	}
+	m_ident(t);
+	t[0][2] = shx;
+	t[1][2] = shy;
+	m_mul(N, t);
+	if (v->persp)
+		m_trans(N, -v->prp[0], -v->prp[1], -v->prp[2]);
+	m_ident(t);
+	for (int j = 0; j < 3; j++) {
+		t[0][j] = u[j];
+		t[1][j] = vv[j];
+		t[2][j] = n[j];
+	}
+	m_mul(N, t);
+	m_trans(N, -v->vrp[0], -v->vrp[1], -v->vrp[2]);
+}
+
+static void m_apply(mat4 m, const double *p, double *o)
+{
+	for (int i = 0; i < 4; i++)
+		o[i] = m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] +
+		       m[i][3];
+}
+
+struct hv {
+	double c[4];
+};
+
+static double ref_dist(const double *c, int k)
+{
+	switch (k) {
+	case 0: return c[3] + c[0];
+	case 1: return c[3] - c[0];
+	case 2: return c[3] + c[1];
+	case 3: return c[3] - c[1];
+	case 4: return -c[2];
+	default: return c[3] + c[2];
+	}
+}
+
+/* Sutherland-Hodgman in homogeneous coordinates; returns the count */
+static int ref_clip(struct hv *p, int n)
+{
+	struct hv o[16];
+
+	for (int k = 0; k < 6 && n; k++) {
+		int m = 0;
+
+		for (int i = 0; i < n; i++) {
+			struct hv *a = &p[i], *b = &p[(i + 1) % n];
+			double da = ref_dist(a->c, k), db = ref_dist(b->c, k);
+
+			if (da >= 0)
+				o[m++] = *a;
+			if ((da >= 0) != (db >= 0)) {
+				double t = da / (da - db);
+
+				for (int j = 0; j < 4; j++)
+					o[m].c[j] = a->c[j] +
+						    t * (b->c[j] - a->c[j]);
+				m++;
+			}
+		}
+		memcpy(p, o, sizeof(struct hv) * m);
+		n = m;
+	}
+	return n;
+}
+
+static void ref_screen(const struct ref_view *v, const double *c, double *s)
+{
+	s[0] = v->vx0 + (c[0] / c[3] + 1) / 2 * (v->vx1 - v->vx0);
+	s[1] = v->vy1 - (c[1] / c[3] + 1) / 2 * (v->vy1 - v->vy0);
+	s[2] = -c[2] / c[3] * 65535;
+}
+
+/* Signed distance of (x, y) to the convex polygon: > 0 inside. */
+static double poly_sdist(const double (*s)[3], int n, double x, double y)
+{
+	double best = 1e30, area = 0;
+	bool inside = true;
+
+	for (int i = 0; i < n; i++) {
+		const double *a = s[i], *b = s[(i + 1) % n];
+
+		area += a[0] * b[1] - b[0] * a[1];
+	}
+	for (int i = 0; i < n; i++) {
+		const double *a = s[i], *b = s[(i + 1) % n];
+		double ex = b[0] - a[0], ey = b[1] - a[1];
+		double l2 = ex * ex + ey * ey, t, dx, dy, cr;
+
+		t = l2 > 0 ? ((x - a[0]) * ex + (y - a[1]) * ey) / l2 : 0;
+		t = t < 0 ? 0 : t > 1 ? 1 : t;
+		dx = x - (a[0] + t * ex);
+		dy = y - (a[1] + t * ey);
+		best = fmin(best, sqrt(dx * dx + dy * dy));
+		cr = ex * (y - a[1]) - ey * (x - a[0]);
+		if ((area > 0 && cr < 0) || (area < 0 && cr > 0))
+			inside = false;
+	}
+	if (area == 0)
+		inside = false;
+	return inside ? best : -best;
+}
+
+/* ---- driving the DP ------------------------------------------------------ */
+
+static void send_view(struct tdp *t, const struct ref_view *v)
+{
+	uint32_t a[18];
+	int i;
+
+	for (i = 0; i < 3; i++) {
+		a[i] = (uint32_t)fx(v->vrp[i]);
+		a[3 + i] = (uint32_t)fx(v->vpn[i]);
+		a[6 + i] = (uint32_t)fx(v->vup[i]);
+		a[9 + i] = (uint32_t)fx(v->prp[i]);
+	}
+	a[12] = (uint32_t)fx(v->umin);
+	a[13] = (uint32_t)fx(v->umax);
+	a[14] = (uint32_t)fx(v->vmin);
+	a[15] = (uint32_t)fx(v->vmax);
+	a[16] = (uint32_t)fx(v->F);
+	a[17] = (uint32_t)fx(v->B);
+	tdp_cmd(t, RDC_OP_SET_VIEW, v->persp ? RDC_VIEW_PERSPECTIVE : 0, 18, a);
+	TDP_CMD(t, RDC_OP_SET_VIEWPORT3, RDC_XY(v->vx0, v->vy0),
+		RDC_XY(v->vx1, v->vy1));
+}
+
+static void put_mesh(struct tdp *t, const double (*p)[3],
+		     const double (*nrm)[3], uint32_t nv, const uint16_t *idx,
+		     uint32_t nt)
+{
+	uint32_t words = nrm ? 6 : 3;
+
+	for (uint32_t i = 0; i < nv; i++) {
+		for (int k = 0; k < 3; k++) {
+			rdc_st32(t->vram + VBASE + (i * words + k) * 4,
+				 (uint32_t)fx(p[i][k]));
+			if (nrm)
+				rdc_st32(t->vram + VBASE +
+						 (i * words + 3 + k) * 4,
+					 (uint32_t)fx(nrm[i][k]));
+		}
+	}
+	for (uint32_t i = 0; i < 3 * nt; i++)
+		rdc_st16(t->vram + IBASE + 2 * i, idx[i]);
+}
+
+static void mesh(struct tdp *t, uint32_t fl, uint32_t nv, uint32_t nt)
+{
+	tdp_cmd(t, RDC_OP_MESH, fl, 4,
+		(const uint32_t[]){ VBASE, nv, IBASE, nt });
+}
+
+static uint32_t px(struct tdp *t, int x, int y)
+{
+	return rdc_ld32(t->vram + (uint32_t)y * STRIDE + (uint32_t)x * 4) &
+	       0xffffffu;
+}
+
+static void clear_screen(struct tdp *t)
+{
+	memset(t->vram, 0, STRIDE * SH);
+}
+
+static struct ref_view std_view(bool persp)
+{
+	struct ref_view v = {
+		.vrp = { 0, 0, 0 }, .vpn = { 0, 0, 1 }, .vup = { 0, 1, 0 },
+		.prp = { 0, 0, 4 }, .umin = -2, .umax = 2, .vmin = -1.5,
+		.vmax = 1.5, .F = 2, .B = -6, .persp = persp,
+		.vx0 = 0, .vy0 = 0, .vx1 = SW - 1, .vy1 = SH - 1,
+	};
+	return v;
+}
+
+static double frand(uint32_t *s, double lo, double hi)
+{
+	return lo + (hi - lo) * (tdp_rand(s) / 4294967296.0);
+}
+
+static void rand_view(uint32_t *s, struct ref_view *v)
+{
+	do {
+		for (int i = 0; i < 3; i++) {
+			v->vrp[i] = frand(s, -3, 3);
+			v->vpn[i] = frand(s, -1, 1);
+			v->vup[i] = frand(s, -1, 1);
+		}
+		double c[3];
+
+		v_cross(v->vup, v->vpn, c);
+		if (sqrt(v_dot(c, c)) > 0.3 && sqrt(v_dot(v->vpn, v->vpn)) > 0.3)
+			break;
+	} while (1);
+	v->persp = tdp_rand(s) & 1;
+	v->umin = frand(s, -4, -1);
+	v->umax = frand(s, 1, 4);
+	v->vmin = frand(s, -3, -1);
+	v->vmax = frand(s, 1, 3);
+	v->prp[0] = frand(s, -1, 1);
+	v->prp[1] = frand(s, -1, 1);
+	v->prp[2] = frand(s, 4, 12);
+	v->F = frand(s, 0.5, 3);
+	v->B = frand(s, -20, -5);
+	v->vx0 = (int)frand(s, 0, 100);
+	v->vy0 = (int)frand(s, 0, 100);
+	v->vx1 = (int)frand(s, 400, SW - 1);
+	v->vy1 = (int)frand(s, 300, SH - 1);
+}
+
+/*
+ * Draw triangle p (world = model, CTM identity) with FG white, no culling,
+ * and compare against the reference clipped polygon.
+ */
+static void check_tri(struct tdp *t, const struct ref_view *v,
+		      const double (*p)[3], unsigned long *exact_in,
+		      unsigned long *checked)
+{
+	static const uint16_t idx[3] = { 0, 1, 2 };
+	struct hv h[16];
+	double s[16][3];
+	mat4 N;
+	int n;
+
+	ref_view_matrix(v, N);
+	for (int i = 0; i < 3; i++)
+		m_apply(N, p[i], h[i].c);
+	n = ref_clip(h, 3);
+	for (int i = 0; i < n; i++)
+		ref_screen(v, h[i].c, s[i]);
+	clear_screen(t);
+	put_mesh(t, p, NULL, 3, idx, 1);
+	mesh(t, 0, 3, 1);
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), 0);
+	for (int y = 0; y < SH; y++) {
+		for (int x = 0; x < SW; x++) {
+			bool on = px(t, x, y) != 0;
+			double d = n >= 3 ? poly_sdist((const double (*)[3])s,
+						       n, x + 0.5, y + 0.5) :
+					    -1e9;
+
+			if (on) {
+				if (d < -COV_TOL)
+					fail_msg("pixel %d,%d drawn, %.3f outside",
+						 x, y, -d);
+				if (x < v->vx0 || x > v->vx1 || y < v->vy0 ||
+				    y > v->vy1)
+					fail_msg("pixel %d,%d outside the viewport",
+						 x, y);
+			} else if (d >= COV_TOL) {
+				fail_msg("pixel %d,%d not drawn, %.3f inside",
+					 x, y, d);
+			}
+			if (d >= COV_TOL)
+				(*exact_in)++;
+			(*checked)++;
+		}
+	}
+}
+
+/* Random triangles under random views, most of them clipped. */
+static void test_coverage_random(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t seed = 0x3d3d1234;
+	unsigned long in = 0, all = 0;
+
+	for (int it = 0; it < 60; it++) {
+		struct ref_view v;
+		double p[3][3];
+
+		rand_view(&seed, &v);
+		send_view(t, &v);
+		for (int i = 0; i < 3; i++)
+			for (int k = 0; k < 3; k++)
+				p[i][k] = v.vrp[k] + frand(&seed, -6, 6);
+		check_tri(t, &v, (const double (*)[3])p, &in, &all);
+	}
+	printf("coverage: %lu pixels well inside checked of %lu\n", in, all);
+	assert_true(in > 10000); /* the triangles were not all off screen */
+}
+
+/* Known points to known pixels, both projections. */
+static void test_known_points(void **state)
+{
+	struct tdp *t = *state;
+	/* centre, window corners, a point half-way back in perspective */
+	static const struct {
+		bool persp;
+		double p[3];
+		int x, y;
+	} k[] = {
+		{ false, { 0, 0, 0 }, 320, 240 },
+		{ false, { 1.5, 0.75, 0 }, 560, 120 },
+		{ false, { -1, -0.75, -3 }, 160, 360 },
+		{ false, { 1, 0, 1 }, 480, 240 },
+		{ true, { 0, 0, 0 }, 320, 240 },
+		{ true, { 1.5, 0.75, 0 }, 560, 120 },
+		/* z = -4: twice as far from the eye, half the offset */
+		{ true, { 2, 0, -4 }, 480, 240 },
+		{ true, { -2, 1.5, -4 }, 160, 120 },
+	};
+
+	for (size_t i = 0; i < RDC_ARRAY_SIZE(k); i++) {
+		struct ref_view v = std_view(k[i].persp);
+		uint32_t a[12];
+		int found = 0;
+
+		v.vx1 = 640;
+		v.vy1 = 480;
+		send_view(t, &v);
+		clear_screen(t);
+		for (int j = 0; j < 4; j++)
+			for (int c = 0; c < 3; c++)
+				a[3 * j + c] = (uint32_t)fx(k[i].p[c]);
+		tdp_cmd(t, RDC_OP_BEZIER3, 1, 12, a);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		for (int y = 0; y < SH; y++)
+			for (int x = 0; x < SW; x++)
+				if (px(t, x, y)) {
+					assert_int_equal(x, k[i].x);
+					assert_int_equal(y, k[i].y);
+					found++;
+				}
+		if (found != 1)
+			fail_msg("point %zu: %d pixels", i, found);
+	}
+}
+
+/* ---- closed meshes --------------------------------------------------- */
+
+#define SPH_R 8
+#define SPH_S 12
+
+static uint32_t sphere(double (*p)[3], double (*nrm)[3], uint16_t *idx,
+		       uint32_t *nt)
+{
+	uint32_t nv = 0, t = 0;
+
+	/* poles and rings, counter-clockwise seen from outside */
+	p[nv][0] = 0, p[nv][1] = 1, p[nv][2] = 0, nv++;
+	for (int r = 1; r < SPH_R; r++) {
+		double th = M_PI * r / SPH_R;
+
+		for (int s = 0; s < SPH_S; s++) {
+			double ph = 2 * M_PI * s / SPH_S;
+
+			p[nv][0] = sin(th) * cos(ph);
+			p[nv][1] = cos(th);
+			p[nv][2] = -sin(th) * sin(ph);
+			nv++;
+		}
+	}
+	p[nv][0] = 0, p[nv][1] = -1, p[nv][2] = 0, nv++;
+	for (uint32_t i = 0; i < nv; i++)
+		memcpy(nrm[i], p[i], sizeof(p[i]));
+	for (int s = 0; s < SPH_S; s++) {
+		int s1 = (s + 1) % SPH_S;
+
+		idx[t++] = 0, idx[t++] = (uint16_t)(1 + s),
+		idx[t++] = (uint16_t)(1 + s1);
+		for (int r = 0; r + 1 < SPH_R - 1; r++) {
+			uint16_t a = (uint16_t)(1 + r * SPH_S + s);
+			uint16_t b = (uint16_t)(1 + r * SPH_S + s1);
+			uint16_t c = (uint16_t)(a + SPH_S), d = (uint16_t)(b + SPH_S);
+
+			idx[t++] = a, idx[t++] = c, idx[t++] = d;
+			idx[t++] = a, idx[t++] = d, idx[t++] = b;
+		}
+		idx[t++] = (uint16_t)(nv - 1);
+		idx[t++] = (uint16_t)(1 + (SPH_R - 2) * SPH_S + s1);
+		idx[t++] = (uint16_t)(1 + (SPH_R - 2) * SPH_S + s);
+	}
+	*nt = t / 3;
+	return nv;
+}
+
+/*
+ * A closed sphere under XOR: with culling every pixel inside the
+ * silhouette is covered exactly once (twice would cancel); without it,
+ * front and back faces cover each such pixel twice (all cancel).
+ */
+static void test_closed_mesh_once(void **state)
+{
+	struct tdp *t = *state;
+	static double p[200][3], nrm[200][3];
+	static uint16_t idx[600];
+	static double fs[200][16][3];
+	static int fn[200];
+	static bool ffront[200];
+	uint32_t nt, nv = sphere(p, nrm, idx, &nt), seed = 99;
+
+	put_mesh(t, (const double (*)[3])p, NULL, nv, idx, nt);
+	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_XOR);
+	for (int it = 0; it < 4; it++) {
+		struct ref_view v = std_view(it & 1);
+		uint32_t qx = tdp_rand(&seed) & 0xffff, qy = tdp_rand(&seed) & 0xffff;
+		double ax = qx * 2 * M_PI / 65536, ay = qy * 2 * M_PI / 65536;
+		mat4 M, N;
+		long once = 0, twice = 0;
+
+		send_view(t, &v);
+		m_ident(M);
+		m_rot(M, 0, ax);
+		m_rot(M, 1, ay);
+		/* CTM = Rx(ax) Ry(ay) through ROTATE, angles as the DP has them */
+		tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+		tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_X, 1, &qx);
+		tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_Y, 1, &qy);
+		ref_view_matrix(&v, N);
+		m_mul(N, M);
+		for (uint32_t f = 0; f < nt; f++) {
+			struct hv h[16];
+			double area = 0;
+
+			for (int i = 0; i < 3; i++)
+				m_apply(N, p[idx[3 * f + i]], h[i].c);
+			fn[f] = ref_clip(h, 3);
+			for (int i = 0; i < fn[f]; i++)
+				ref_screen(&v, h[i].c, fs[f][i]);
+			for (int i = 0; i < fn[f]; i++) {
+				const double *a = fs[f][i];
+				const double *b = fs[f][(i + 1) % fn[f]];
+
+				area += a[0] * b[1] - b[0] * a[1];
+			}
+			ffront[f] = area < 0;
+		}
+		for (int pass = 0; pass < 2; pass++) {
+			clear_screen(t);
+			mesh(t, pass ? 0 : RDC_MESH_CULL, nv, nt);
+			tdp_drain(t);
+			assert_int_equal(tdp_err(t), 0);
+			for (int y = 0; y < SH; y++) {
+				for (int x = 0; x < SW; x++) {
+					double bf = -1e9, bb = -1e9;
+
+					for (uint32_t f = 0; f < nt; f++) {
+						double d;
+
+						if (fn[f] < 3)
+							continue;
+						d = poly_sdist((const double (*)[3])fs[f],
+							       fn[f], x + 0.5, y + 0.5);
+						if (ffront[f])
+							bf = fmax(bf, d);
+						else
+							bb = fmax(bb, d);
+					}
+					/*
+					 * well inside a front face: one front
+					 * face covers it (and one back face,
+					 * checked where it is well inside one)
+					 */
+					if (bf < COV_TOL)
+						continue;
+					if (pass == 0) {
+						assert_int_equal(px(t, x, y),
+								 0xffffff);
+						once++;
+					} else if (bb >= COV_TOL) {
+						assert_int_equal(px(t, x, y), 0);
+						twice++;
+					}
+				}
+			}
+			if (pass == 0)
+				assert_true(once > 1000);
+			else
+				assert_true(twice > 1000);
+		}
+	}
+	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_COPY);
+}
+
+/* ---- illumination ----------------------------------------------------- */
+
+struct ref_light {
+	double amb[3], mat_a[3], mat_d[3], mat_s[3];
+	int shine;
+	int nl;
+	double col[4][3], dir[4][3];
+};
+
+static void ref_shade(const struct ref_light *L, const double *nin,
+		      const double *V, double *out)
+{
+	double n[3];
+
+	memcpy(n, nin, sizeof(n));
+	v_norm(n);
+	for (int c = 0; c < 3; c++)
+		out[c] = L->amb[c] * L->mat_a[c];
+	for (int i = 0; i < L->nl; i++) {
+		double l[3], r[3], nl, rv;
+
+		memcpy(l, L->dir[i], sizeof(l));
+		v_norm(l);
+		nl = v_dot(n, l);
+		if (nl <= 0)
+			continue;
+		for (int k = 0; k < 3; k++)
+			r[k] = 2 * nl * n[k] - l[k];
+		rv = v_dot(r, V);
+		for (int c = 0; c < 3; c++)
+			out[c] += L->col[i][c] *
+				  (L->mat_d[c] * nl +
+				   (rv > 0 ? L->mat_s[c] * pow(rv, L->shine) : 0));
+	}
+	for (int c = 0; c < 3; c++)
+		out[c] = fmin(255, out[c] * 255);
+}
+
+static uint32_t rgb_of(const double *c)
+{
+	return (uint32_t)lround(c[0] * 255) << 16 |
+	       (uint32_t)lround(c[1] * 255) << 8 | (uint32_t)lround(c[2] * 255);
+}
+
+static void check_col(uint32_t got, const double *want)
+{
+	for (int c = 0; c < 3; c++) {
+		int g = (int)(got >> (16 - 8 * c) & 0xff);
+
+		if (fabs(g - want[c]) > COL_TOL)
+			fail_msg("channel %d: %d, reference %.2f (pixel %06x)",
+				 c, g, want[c], got);
+	}
+}
+
+/*
+ * A triangle facing the viewer, lit flat (face normal) and Gouraud
+ * (vertex normals all n), parallel view: every pixel is the reference
+ * colour for normal n.  Random lights, materials and normals.
+ */
+static void test_lighting_ref(void **state)
+{
+	struct tdp *t = *state;
+	uint32_t seed = 7777;
+	struct ref_view v = std_view(false);
+	double V[3] = { 0, 0, 1 };
+
+	send_view(t, &v);
+	for (int it = 0; it < 40; it++) {
+		struct ref_light L = { .nl = 1 + (int)(tdp_rand(&seed) % 3) };
+		double n[3], p[3][3], nr[3][3], a[3], b[3], want[3];
+		uint32_t m[4];
+		static const uint16_t idx[3] = { 0, 1, 2 };
+
+		for (int c = 0; c < 3; c++) {
+			L.amb[c] = (tdp_rand(&seed) & 0xff) / 255.0;
+			L.mat_a[c] = (tdp_rand(&seed) & 0xff) / 255.0;
+			L.mat_d[c] = (tdp_rand(&seed) & 0xff) / 255.0;
+			L.mat_s[c] = (tdp_rand(&seed) & 0xff) / 255.0;
+		}
+		L.shine = 1 + (int)(tdp_rand(&seed) % 60);
+		tdp_cmd(t, RDC_OP_SET_AMBIENT, 0, 1,
+			(const uint32_t[]){ rgb_of(L.amb) });
+		m[0] = rgb_of(L.mat_a);
+		m[1] = rgb_of(L.mat_d);
+		m[2] = rgb_of(L.mat_s);
+		m[3] = (uint32_t)L.shine;
+		tdp_cmd(t, RDC_OP_SET_MATERIAL, 0, 4, m);
+		for (int i = 0; i < 4; i++) {
+			if (i >= L.nl) {
+				tdp_cmd(t, RDC_OP_SET_LIGHT, (uint32_t)i, 0, NULL);
+				continue;
+			}
+			for (int c = 0; c < 3; c++) {
+				L.col[i][c] = (tdp_rand(&seed) & 0xff) / 255.0;
+				L.dir[i][c] = frand(&seed, -1, 1);
+			}
+			L.dir[i][2] = frand(&seed, 0.2, 1);
+			tdp_cmd(t, RDC_OP_SET_LIGHT, (uint32_t)i, 4,
+				(const uint32_t[]){ rgb_of(L.col[i]),
+						    (uint32_t)fx(L.dir[i][0]),
+						    (uint32_t)fx(L.dir[i][1]),
+						    (uint32_t)fx(L.dir[i][2]) });
+		}
+		/* the reference takes the quantised inputs */
+		for (int c = 0; c < 3; c++) {
+			L.amb[c] = lround(L.amb[c] * 255) / 255.0;
+			L.mat_a[c] = lround(L.mat_a[c] * 255) / 255.0;
+			L.mat_d[c] = lround(L.mat_d[c] * 255) / 255.0;
+			L.mat_s[c] = lround(L.mat_s[c] * 255) / 255.0;
+			for (int i = 0; i < L.nl; i++)
+				L.col[i][c] = lround(L.col[i][c] * 255) / 255.0;
+		}
+		/* a triangle in the plane through the origin with normal n */
+		n[0] = frand(&seed, -0.7, 0.7);
+		n[1] = frand(&seed, -0.7, 0.7);
+		n[2] = 1;
+		v_norm(n);
+		a[0] = 1, a[1] = 0, a[2] = -n[0] / n[2];
+		v_norm(a);
+		v_cross(n, a, b);
+		for (int c = 0; c < 3; c++) {
+			p[0][c] = -0.8 * a[c] - 0.6 * b[c];
+			p[1][c] = 0.9 * a[c] - 0.5 * b[c];
+			p[2][c] = 0.1 * a[c] + 0.9 * b[c];
+			for (int i = 0; i < 3; i++)
+				nr[i][c] = n[c];
+		}
+		ref_shade(&L, n, V, want);
+		for (int mode = 0; mode < 2; mode++) {
+			clear_screen(t);
+			put_mesh(t, (const double (*)[3])p,
+				 (const double (*)[3])nr, 3, idx, 1);
+			mesh(t, RDC_MESH_NORMALS | RDC_MESH_LIT |
+					(mode ? RDC_MESH_GOURAUD : 0),
+			     3, 1);
+			tdp_drain(t);
+			assert_int_equal(tdp_err(t), 0);
+			/* the centroid's pixel */
+			check_col(px(t, 320, 240 - 8), want);
+		}
+	}
+}
+
+/* ---- the matrix stack and display lists ---------------------------- */
+
+/*
+ * A display list draws a small triangle; the FIFO calls it twice under
+ * PUSH / TRANSLATE / POP.  The same triangles placed by hand must give
+ * the same frame, and the CTM after the last POP is the one before.
+ */
+static void test_stack_lists(void **state)
+{
+	struct tdp *t = *state;
+	static const double p[3][3] = { { 0, 0, 0 }, { 0.5, 0, 0 }, { 0, 0.5, 0 } };
+	static const uint16_t idx[3] = { 0, 1, 2 };
+	const uint32_t list = 0x3c0000u;
+	uint32_t crc1, crc2;
+	struct ref_view v = std_view(true);
+
+	send_view(t, &v);
+	put_mesh(t, p, NULL, 3, idx, 1);
+	rdc_st32(t->vram + list, RDC_CMD(RDC_OP_MESH, 0, 4));
+	rdc_st32(t->vram + list + 4, VBASE);
+	rdc_st32(t->vram + list + 8, 3);
+	rdc_st32(t->vram + list + 12, IBASE);
+	rdc_st32(t->vram + list + 16, 1);
+	rdc_st32(t->vram + list + 20, RDC_CMD(RDC_OP_RET, 0, 0));
+	clear_screen(t);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_Z, 1, (const uint32_t[]){ 4096 });
+	for (int i = 0; i < 2; i++) {
+		tdp_cmd(t, RDC_OP_PUSH_MATRIX, 0, 0, NULL);
+		TDP_CMD(t, RDC_OP_TRANSLATE, (uint32_t)fx(i ? -1 : 1),
+			(uint32_t)fx(0.25), (uint32_t)fx(-1));
+		TDP_CMD(t, RDC_OP_CALL, list);
+		tdp_cmd(t, RDC_OP_POP_MATRIX, 0, 0, NULL);
+	}
+	/* after the POPs the rotation alone: draw at the origin */
+	mesh(t, 0, 3, 1);
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), 0);
+	crc1 = tdp_fnv(2166136261u, t->vram, STRIDE * SH);
+	/* by hand: Rz(22.5 deg) T(...) as one matrix per placement */
+	clear_screen(t);
+	for (int i = 0; i < 3; i++) {
+		double c = cos(M_PI / 8), s = sin(M_PI / 8);
+		double tx = i == 2 ? 0 : i ? -1 : 1, ty = i == 2 ? 0 : 0.25;
+		double tz = i == 2 ? 0 : -1;
+
+		TDP_CMD(t, RDC_OP_MATRIX_LOAD, (uint32_t)fx(c), (uint32_t)fx(-s),
+			0, (uint32_t)fx(c * tx - s * ty), (uint32_t)fx(s),
+			(uint32_t)fx(c), 0, (uint32_t)fx(s * tx + c * ty), 0, 0,
+			(uint32_t)fx(1), (uint32_t)fx(tz));
+		mesh(t, 0, 3, 1);
+	}
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), 0);
+	crc2 = tdp_fnv(2166136261u, t->vram, STRIDE * SH);
+	assert_int_equal(crc1, crc2);
+}
+
+/* ---- wireframe ------------------------------------------------------ */
+
+/*
+ * Two triangles sharing an edge under XOR: the shared edge drawn twice
+ * would vanish.  The frame must equal XOR-drawn LINEs of the five edges
+ * between the exact (integer) vertex pixels.
+ */
+static void test_wire_edges_once(void **state)
+{
+	struct tdp *t = *state;
+	/* parallel view, window 640 x 480 units: one unit a pixel */
+	struct ref_view v = std_view(false);
+	static const double p[4][3] = {
+		{ -200, -100, 0 }, { 150, -120, 0 }, { 180, 90, 0 }, { -170, 130, 0 }
+	};
+	static const uint16_t idx[6] = { 0, 1, 2, 0, 2, 3 };
+	static const int e[5][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 2, 3 }, { 3, 0 } };
+	uint32_t crc1, crc2;
+
+	v.umin = -320, v.umax = 320, v.vmin = -240, v.vmax = 240;
+	v.vx1 = 640;
+	v.vy1 = 480;
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_XOR);
+	clear_screen(t);
+	put_mesh(t, p, NULL, 4, idx, 2);
+	mesh(t, RDC_MESH_WIRE, 4, 2);
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), 0);
+	crc1 = tdp_fnv(2166136261u, t->vram, STRIDE * SH);
+	clear_screen(t);
+	for (int i = 0; i < 5; i++) {
+		const double *a = p[e[i][0]], *b = p[e[i][1]];
+
+		TDP_CMD(t, RDC_OP_LINE,
+			RDC_XY((int)lround(a[0] + 320), (int)lround(240 - a[1])),
+			RDC_XY((int)lround(b[0] + 320), (int)lround(240 - b[1])));
+	}
+	tdp_drain(t);
+	crc2 = tdp_fnv(2166136261u, t->vram, STRIDE * SH);
+	assert_int_equal(crc1, crc2);
+	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_COPY);
+}
+
+/* ---- depth ------------------------------------------------------------ */
+
+/*
+ * Two interpenetrating triangles with the depth buffer: where both cover
+ * a pixel well inside, the one nearer in the reference wins (pixels
+ * whose two depths differ by less than 1/500 of the range are skipped).
+ */
+static void test_zbuffer_ref(void **state)
+{
+	struct tdp *t = *state;
+	struct ref_view v = std_view(true);
+	static const double p[6][3] = {
+		{ -1.5, -1, -2 }, { 1.5, -1, 1 }, { 0, 1.2, -0.5 },
+		{ -1.5, 0.8, 1 }, { 1.2, 1, -2.5 }, { 0, -1.2, -0.5 },
+	};
+	static const uint16_t idx[6] = { 0, 1, 2, 3, 4, 5 };
+	mat4 N;
+	double s[2][3][3];
+	long checked = 0;
+
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	ref_view_matrix(&v, N);
+	for (int f = 0; f < 2; f++)
+		for (int i = 0; i < 3; i++) {
+			struct hv h;
+
+			m_apply(N, p[3 * f + i], h.c);
+			ref_screen(&v, h.c, s[f][i]);
+		}
+	clear_screen(t);
+	put_mesh(t, p, NULL, 6, idx, 2);
+	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST | RDC_Z_WRITE, 2,
+		(const uint32_t[]){ ZBASE, SW * 2 });
+	TDP_CMD(t, RDC_OP_CLEAR_Z, 0xffff);
+	TDP_CMD(t, RDC_OP_SET_FG, 0xff0000);
+	tdp_cmd(t, RDC_OP_MESH, 0, 4, (const uint32_t[]){ VBASE, 3, IBASE, 1 });
+	TDP_CMD(t, RDC_OP_SET_FG, 0x0000ff);
+	tdp_cmd(t, RDC_OP_MESH, 0, 4,
+		(const uint32_t[]){ VBASE + 36, 3, IBASE, 1 });
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), 0);
+	for (int y = 0; y < SH; y++) {
+		for (int x = 0; x < SW; x++) {
+			double z[2];
+			bool in = true;
+
+			for (int f = 0; f < 2; f++) {
+				const double (*q)[3] = (const double (*)[3])s[f];
+				double d = poly_sdist(q, 3, x + 0.5, y + 0.5);
+				/* depth on the screen plane through the vertices */
+				double ax = q[1][0] - q[0][0], ay = q[1][1] - q[0][1];
+				double bx = q[2][0] - q[0][0], by = q[2][1] - q[0][1];
+				double det = ax * by - ay * bx;
+				double px0 = x + 0.5 - q[0][0], py0 = y + 0.5 - q[0][1];
+				double l1 = (px0 * by - py0 * bx) / det;
+				double l2 = (ax * py0 - ay * px0) / det;
+
+				if (d < 1.5)
+					in = false;
+				z[f] = q[0][2] + l1 * (q[1][2] - q[0][2]) +
+				       l2 * (q[2][2] - q[0][2]);
+			}
+			if (!in || fabs(z[0] - z[1]) < 130)
+				continue;
+			assert_int_equal(px(t, x, y),
+					 z[0] < z[1] ? 0xff0000u : 0x0000ffu);
+			checked++;
+		}
+	}
+	assert_true(checked > 2000);
+	tdp_cmd(t, RDC_OP_SET_ZBUF, 0, 0, NULL);
+	TDP_CMD(t, RDC_OP_SET_FG, 0xffffff);
+}
+
+/* ---- bad input -------------------------------------------------------- */
+
+static void expect_err(struct tdp *t, uint32_t code)
+{
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), code);
+	tdp_clear_err(t);
+}
+
+static void test_bad_input(void **state)
+{
+	struct tdp *t = *state;
+	static const double p[3][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+	static const uint16_t idx[3] = { 0, 1, 2 };
+	static const uint16_t bad[3] = { 0, 1, 3 };
+	struct ref_view v = std_view(true);
+	uint32_t h0, a[18], i;
+
+	send_view(t, &v);
+	clear_screen(t);
+	put_mesh(t, p, NULL, 3, idx, 1);
+	h0 = tdp_fnv(2166136261u, t->vram, STRIDE * SH);
+	/* indices past the vertex count: nothing drawn */
+	rdc_st16(t->vram + IBASE + 4, bad[2]);
+	mesh(t, 0, 3, 1);
+	expect_err(t, RDC_ERR_RANGE);
+	assert_int_equal(tdp_fnv(2166136261u, t->vram, STRIDE * SH), h0);
+	rdc_st16(t->vram + IBASE + 4, idx[2]);
+	/* huge meshes, buffers leaving VRAM, misaligned vertices */
+	mesh(t, 0, RDC_MESH_MAX_VERTS + 1, 1);
+	expect_err(t, RDC_ERR_RANGE);
+	mesh(t, 0, 3, RDC_MESH_MAX_TRIS + 1);
+	expect_err(t, RDC_ERR_RANGE);
+	tdp_cmd(t, RDC_OP_MESH, 0, 4,
+		(const uint32_t[]){ TDP_VRAM_SIZE - 24, 3, IBASE, 1 });
+	expect_err(t, RDC_ERR_RANGE);
+	tdp_cmd(t, RDC_OP_MESH, 0, 4,
+		(const uint32_t[]){ VBASE, 3, TDP_VRAM_SIZE - 4, 1 });
+	expect_err(t, RDC_ERR_RANGE);
+	tdp_cmd(t, RDC_OP_MESH, 0, 4,
+		(const uint32_t[]){ 0xfffffff0u, 3, 0xfffffff0u, 0xffff });
+	expect_err(t, RDC_ERR_RANGE);
+	tdp_cmd(t, RDC_OP_MESH, 0, 4, (const uint32_t[]){ VBASE + 2, 3, IBASE, 1 });
+	expect_err(t, RDC_ERR_RANGE);
+	/* lit Gouraud without normals; unknown flags */
+	mesh(t, RDC_MESH_LIT | RDC_MESH_GOURAUD, 3, 1);
+	expect_err(t, RDC_ERR_ARG);
+	mesh(t, 0x80, 3, 1);
+	expect_err(t, RDC_ERR_ARG);
+	/* a buffer exactly at the end of VRAM is fine */
+	memcpy(t->vram + TDP_VRAM_SIZE - 36, t->vram + VBASE, 36);
+	tdp_cmd(t, RDC_OP_MESH, 0, 4,
+		(const uint32_t[]){ TDP_VRAM_SIZE - 36, 3, IBASE, 1 });
+	expect_err(t, 0);
+	/* the stack: 16 pushes fit, the 17th and an empty pop do not */
+	for (i = 0; i < RDC_MATRIX_STACK_DEPTH; i++)
+		tdp_cmd(t, RDC_OP_PUSH_MATRIX, 0, 0, NULL);
+	expect_err(t, 0);
+	tdp_cmd(t, RDC_OP_PUSH_MATRIX, 0, 0, NULL);
+	expect_err(t, RDC_ERR_STACK);
+	for (i = 0; i < RDC_MATRIX_STACK_DEPTH; i++)
+		tdp_cmd(t, RDC_OP_POP_MATRIX, 0, 0, NULL);
+	expect_err(t, 0);
+	tdp_cmd(t, RDC_OP_POP_MATRIX, 0, 0, NULL);
+	expect_err(t, RDC_ERR_STACK);
+	/* matrices out of range, products overflowing, bad axis */
+	TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(20000), 65536, 65536);
+	expect_err(t, RDC_ERR_RANGE);
+	TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(10000), 65536, 65536);
+	expect_err(t, 0);
+	TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(10), 65536, 65536);
+	expect_err(t, RDC_ERR_RANGE);
+	tdp_cmd(t, RDC_OP_ROTATE, 3, 1, (const uint32_t[]){ 0 });
+	expect_err(t, RDC_ERR_ARG);
+	TDP_CMD(t, RDC_OP_MATRIX_LOAD, 1, 2, 3);
+	expect_err(t, RDC_ERR_LENGTH);
+	/* a degenerate (singular) CTM: everything on one line, no crash */
+	TDP_CMD(t, RDC_OP_MATRIX_LOAD, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0);
+	mesh(t, RDC_MESH_LIT, 3, 1);
+	expect_err(t, 0);
+	mesh(t, RDC_MESH_WIRE, 3, 1);
+	expect_err(t, 0);
+	/* bad views: zero VPN, VUP along VPN, eye inside the front plane */
+	for (int k = 0; k < 3; k++) {
+		struct ref_view b = std_view(true);
+
+		if (k == 0)
+			b.vpn[2] = 0;
+		if (k == 1)
+			b.vup[1] = 0, b.vup[2] = 1;
+		if (k == 2)
+			b.F = 5;
+		for (i = 0; i < 3; i++) {
+			a[i] = (uint32_t)fx(b.vrp[i]);
+			a[3 + i] = (uint32_t)fx(b.vpn[i]);
+			a[6 + i] = (uint32_t)fx(b.vup[i]);
+			a[9 + i] = (uint32_t)fx(b.prp[i]);
+		}
+		a[12] = (uint32_t)fx(b.umin);
+		a[13] = (uint32_t)fx(b.umax);
+		a[14] = (uint32_t)fx(b.vmin);
+		a[15] = (uint32_t)fx(b.vmax);
+		a[16] = (uint32_t)fx(b.F);
+		a[17] = (uint32_t)fx(b.B);
+		tdp_cmd(t, RDC_OP_SET_VIEW, RDC_VIEW_PERSPECTIVE, 18, a);
+		expect_err(t, RDC_ERR_ARG);
+	}
+	/* points at the eye and behind it: clipped, nothing behind drawn */
+	{
+		static const double q[3][3] = { { 0, 0, 4 }, { 1, 0, 8 }, { 0, 1, 6 } };
+
+		tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+		clear_screen(t);
+		put_mesh(t, q, NULL, 3, idx, 1);
+		mesh(t, 0, 3, 1);
+		expect_err(t, 0);
+		for (int y = 0; y < SH; y++)
+			for (int x = 0; x < SW; x++)
+				assert_int_equal(px(t, x, y), 0);
+	}
+	/* a far vertex: clip coordinates out of range */
+	{
+		static const double q[3][3] = { { 0, 0, 0 }, { 30000, 0, 0 }, { 0, 1, 0 } };
+
+		put_mesh(t, q, NULL, 3, idx, 1);
+		TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(1000), (uint32_t)fx(1000),
+			(uint32_t)fx(1000));
+		mesh(t, 0, 3, 1);
+		expect_err(t, RDC_ERR_RANGE);
+	}
+	/* a patch with bad steps, lights, materials */
+	{
+		uint32_t pa[49] = { 0 };
+
+		pa[0] = 33u << 8;
+		tdp_cmd(t, RDC_OP_PATCH, 0, 49, pa);
+		expect_err(t, RDC_ERR_RANGE);
+		pa[0] = 4u << 8 | 0x80;
+		tdp_cmd(t, RDC_OP_PATCH, 0, 49, pa);
+		expect_err(t, RDC_ERR_ARG);
+		tdp_cmd(t, RDC_OP_SET_LIGHT, RDC_LIGHTS, 0, NULL);
+		expect_err(t, RDC_ERR_ARG);
+		TDP_CMD(t, RDC_OP_SET_LIGHT, 0, 0, 0, 0);
+		expect_err(t, RDC_ERR_ARG);
+		TDP_CMD(t, RDC_OP_SET_MATERIAL, 0, 0, 0, 0);
+		expect_err(t, RDC_ERR_RANGE);
+	}
+	/* and the DP still draws */
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	send_view(t, &v);
+	clear_screen(t);
+	put_mesh(t, p, NULL, 3, idx, 1);
+	mesh(t, 0, 3, 1);
+	expect_err(t, 0);
+	assert_int_not_equal(tdp_fnv(2166136261u, t->vram, STRIDE * SH), h0);
+}
+
+/* ---- patches ---------------------------------------------------------- */
+
+/*
+ * A flat bicubic patch (control points on a plane, a bilinear grid) is
+ * the plane's quad: its coverage against the reference quad, and every
+ * step count from 1 to 32 gives the same coverage within tolerance.
+ */
+static void test_patch_flat(void **state)
+{
+	struct tdp *t = *state;
+	struct ref_view v = std_view(true);
+	uint32_t a[49];
+	/* a planar quad: z = -1 + (y + 1) / 2.1 */
+	double q[4][3] = { { -1.5, -1, -1 }, { 1.5, -1, -1 }, { 1.2, 1.1, 0 },
+			   { -1.3, 1, -1 + 2 / 2.1 } };
+	mat4 N;
+	double s[4][3];
+
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	ref_view_matrix(&v, N);
+	for (int i = 0; i < 4; i++) {
+		struct hv h;
+
+		m_apply(N, q[i], h.c);
+		ref_screen(&v, h.c, s[i]);
+	}
+	for (int i = 0; i < 4; i++)
+		for (int j = 0; j < 4; j++) {
+			double u = j / 3.0, w = i / 3.0;
+
+			for (int c = 0; c < 3; c++) {
+				/* bilinear: its Bezier points are the grid */
+				double bot = q[0][c] + u * (q[1][c] - q[0][c]);
+				double top = q[3][c] + u * (q[2][c] - q[3][c]);
+
+				a[1 + 3 * (4 * i + j) + c] =
+					(uint32_t)fx(bot + w * (top - bot));
+			}
+		}
+	for (uint32_t n = 1; n <= RDC_PATCH_MAX_STEPS; n += 7) {
+		a[0] = n << 8;
+		clear_screen(t);
+		tdp_cmd(t, RDC_OP_PATCH, 0, 49, a);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		for (int y = 0; y < SH; y++)
+			for (int x = 0; x < SW; x++) {
+				bool on = px(t, x, y) != 0;
+				/* the quad is planar but not a parallelogram */
+				double d = poly_sdist((const double (*)[3])s, 4,
+						      x + 0.5, y + 0.5);
+
+				if (on && d < -COV_TOL - 0.5)
+					fail_msg("n %u: %d,%d outside", n, x, y);
+				if (!on && d > COV_TOL + 0.5)
+					fail_msg("n %u: %d,%d missing", n, x, y);
+			}
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		TDP_TEST(test_known_points),
+		TDP_TEST(test_coverage_random),
+		TDP_TEST(test_closed_mesh_once),
+		TDP_TEST(test_lighting_ref),
+		TDP_TEST(test_stack_lists),
+		TDP_TEST(test_wire_edges_once),
+		TDP_TEST(test_zbuffer_ref),
+		TDP_TEST(test_bad_input),
+		TDP_TEST(test_patch_flat),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
