@@ -274,7 +274,7 @@ static void test_halt_on_error(void **state)
 
 	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
 		     RDC_CONTROL_DP_EN | RDC_CONTROL_HALT_ON_ERR);
-	tdp_push(t, RDC_CMD(0x66, 0, 0));
+	tdp_push(t, RDC_CMD(0x7e, 0, 0));
 	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(8, 8));
 	tdp_drain(t);
 	assert_true(rdc_hw_read(&t->hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED);

@@ -11,6 +11,7 @@
 #include <zlib.h>
 
 #include "script.h"
+#include "script_img.h"
 
 /* Statement handlers get the tokens after the keyword at index 1. */
 typedef int (*rdl_fn)(struct rdl *r, uint32_t op);
@@ -1375,6 +1376,13 @@ static const struct rdl_stmt {
 	{"text", st_text, RDC_OP_TEXT, 3, 4},
 	{"cmd", st_cmd, RDC_OP_NOP, 1, RDC_CMD_MAX_ARGS + 1},
 	{"raw", st_raw, RDC_OP_NOP, 1, RDL_ANY},
+	{"decode", rdl_st_decode, RDC_OP_DECODE, 3, 4},
+	{"histogram", rdl_st_histogram, RDC_OP_HISTOGRAM, 5, 7},
+	{"map-build", rdl_st_map_build, RDC_OP_MAP_BUILD, 3, 4},
+	{"map-apply", rdl_st_map_apply, RDC_OP_MAP_APPLY, 5, 5},
+	{"map-clut", st_words, RDC_OP_MAP_CLUT, 1, 1},
+	{"convolve", rdl_st_convolve, RDC_OP_CONVOLVE, 7, 19},
+	{"threshold", rdl_st_threshold, RDC_OP_THRESHOLD, 5, 6},
 	/* host side (refused inside `list`, as are readback and raw) */
 	{"list", st_list, 0, 1, 1},
 	{"end", st_end, 0, 0, 0},
@@ -1389,6 +1397,9 @@ static const struct rdl_stmt {
 	{"finish", st_finish, 0, 0, 0},
 	{"reset", st_reset, 0, 0, 0},
 	{"screenshot", st_screenshot, 0, 1, 1},
+	{"vram-load", rdl_st_vram_load, 0, 2, 2},
+	{"encode", rdl_st_encode, 0, 6, 7},
+	{"histogram-plot", rdl_st_histogram_plot, RDC_OP_FILL_RECT, 5, 5},
 };
 
 static int rdl_arg_count(struct rdl *r, const struct rdl_stmt *st,
