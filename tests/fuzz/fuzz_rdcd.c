@@ -381,8 +381,10 @@ static void fz_receive(struct fz *z, struct fz_client *c, bool last)
 			return;
 		}
 		if (!k) {
-			/* the daemon hung up: never inside a message */
-			fz_assert(!c->ihdr_got || last);
+			/* the daemon hung up: never inside a message,
+			 * unless we hung up first (it stops writing to a
+			 * client it read the end of) */
+			fz_assert(!c->ihdr_got || last || c->hung_up);
 			c->eof = true;
 			return;
 		}
