@@ -332,6 +332,9 @@ FUZZ_COV_DIR := $(O)/fuzz-cov
 FUZZ_COV_FILES := userspace/lib/proto.c userspace/lib/usb_host.c \
 	userspace/rdcd/serve.c $(sort $(wildcard userspace/lib/script*.c))
 fuzz-cov:
+	@command -v $(LLVM_COV) >/dev/null && command -v $(LLVM_PROFDATA) \
+		>/dev/null || { echo "fuzz-cov: $(LLVM_COV) or $(LLVM_PROFDATA)" \
+		"not found (Debian: apt-get install llvm-14)"; exit 1; }
 	$(MAKE) FUZZ_DIR=$(FUZZ_COV_DIR) \
 		FUZZ_INSTR="-fprofile-instr-generate -fcoverage-mapping" fuzz-bins
 	@set -e; rm -f $(FUZZ_COV_DIR)/*.profraw; objs=; \
