@@ -423,19 +423,16 @@ static void rdcfb_wait_conv(const struct rdcfb_wait *w, u64 budget,
 static int rdcfb_wait_check(struct rdcfb_chip *chip,
 			    const struct rdc_hw_wait *w)
 {
-	struct rdc_hw *hw = &chip->hw;
-	unsigned int i;
-
-	for (i = 0; i < RDC_WAIT_TEST_TERMS; i++)
-		if (rdc_hw_cond_holds(hw, &w->term[i]))
-			return 0;
-	/* STATUS tells the DP's state as of its last run: judge after one */
-	if (w->needs_dp && hw->now != w->start &&
-	    (rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED))
+	switch (rdc_hw_wait_check(&chip->hw, w)) {
+	case RDC_HW_WAIT_DONE:
+		return 0;
+	case RDC_HW_WAIT_HALTED:
 		return -EIO;
-	if (hw->now - w->start >= w->budget)
+	case RDC_HW_WAIT_TIMEOUT:
 		return -ETIMEDOUT;
-	return 1;
+	default:
+		return 1;
+	}
 }
 
 /*

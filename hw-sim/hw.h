@@ -361,6 +361,16 @@ bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c);
 /* Start a wait at hw->now (terms, needs_dp and budget already set). */
 void rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w);
 /*
+ * One look at a wait at hw->now, moving no time, in the order every host
+ * judges it: DONE if a term holds, else HALTED if it needs the DP, the
+ * chip has run since w->start and the DP is halted, else TIMEOUT once
+ * w->budget cycles have passed since w->start; RDC_HW_WAIT_MORE: not
+ * yet.  rdc_hw_wait_run checks with it; a host that moves time itself
+ * (rdcd's paced waits, the driver's) calls it between its own steps.
+ */
+enum rdc_hw_wait_result rdc_hw_wait_check(struct rdc_hw *hw,
+					  const struct rdc_hw_wait *w);
+/*
  * Go on with a wait for at most about `work` cycles (RDC_NEVER: until it
  * ends).  Stopping and resuming never changes where the wait ends: a
  * caller that must not hold a lock for long (a kernel spinlock, a daemon

@@ -56,6 +56,23 @@ static bool dp_halted(struct rdc_hw *hw)
 	return hw->dp_status & RDC_STATUS_DP_HALTED;
 }
 
+enum rdc_hw_wait_result rdc_hw_wait_check(struct rdc_hw *hw,
+					  const struct rdc_hw_wait *w)
+{
+	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++)
+		if (rdc_hw_cond_holds(hw, &w->term[i]))
+			return RDC_HW_WAIT_DONE;
+	/*
+	 * STATUS reflects the DP as of its last run: after a RESUME it
+	 * reads halted until the chip has run, so judge only then.
+	 */
+	if (w->needs_dp && hw->now != w->start && dp_halted(hw))
+		return RDC_HW_WAIT_HALTED;
+	if (hw->now - w->start >= w->budget)
+		return RDC_HW_WAIT_TIMEOUT;
+	return RDC_HW_WAIT_MORE;
+}
+
 void rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w)
 {
 	w->start = hw->now;
@@ -69,18 +86,10 @@ enum rdc_hw_wait_result rdc_hw_wait_run(struct rdc_hw *hw,
 
 	for (;;) {
 		uint64_t before = hw->now;
+		enum rdc_hw_wait_result res = rdc_hw_wait_check(hw, w);
 
-		for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++)
-			if (rdc_hw_cond_holds(hw, &w->term[i]))
-				return RDC_HW_WAIT_DONE;
-		/*
-		 * STATUS reflects the DP as of its last run: after a RESUME it
-		 * reads halted until the chip has run, so judge only then.
-		 */
-		if (w->needs_dp && hw->now != w->start && dp_halted(hw))
-			return RDC_HW_WAIT_HALTED;
-		if (hw->now - w->start >= w->budget)
-			return RDC_HW_WAIT_TIMEOUT;
+		if (res != RDC_HW_WAIT_MORE)
+			return res;
 		/*
 		 * A wait on the DP stops where it runs out of work, so the
 		 * host resumes at that cycle; only a DP already idle (the

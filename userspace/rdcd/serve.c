@@ -911,21 +911,22 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 		break;
 	case RDCD_PEND_WAIT: {
 		struct rdc_hw_wait w;
-		bool hold = false;
 
 		/* time moves with the daemon's clock: only the checks here */
 		rdc_wait_to_hw(&c->pend_wait, &w);
-		for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++)
-			hold |= rdc_hw_cond_holds(d->hw, &w.term[i]);
-		if (hold)
+		w.start = c->pend_start;
+		switch (rdc_hw_wait_check(d->hw, &w)) {
+		case RDC_HW_WAIT_DONE:
 			break;
-		if (w.needs_dp && d->hw->now != c->pend_start &&
-		    rdcd_halted(d))
+		case RDC_HW_WAIT_HALTED:
 			ret = RDC_E_HALTED;
-		else if (d->hw->now - c->pend_start >= w.budget)
+			break;
+		case RDC_HW_WAIT_TIMEOUT:
 			ret = RDC_E_TIMEOUT;
-		else
+			break;
+		default:
 			return false;
+		}
 		break;
 	}
 	case RDCD_PEND_STEP:
