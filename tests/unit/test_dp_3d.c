@@ -835,6 +835,30 @@ static void test_stack_lists(void **state)
 	assert_int_equal(crc1, crc2);
 }
 
+/*
+ * Facing: a triangle counter-clockwise as the viewer sees it (its normal
+ * towards the eye) is drawn with RDC_MESH_CULL, the same one wound the
+ * other way is not; without culling both are.
+ */
+static void test_cull_facing(void **state)
+{
+	struct tdp *t = *state;
+	static const double p[3][3] = { { -1, -1, 0 }, { 1, -1, 0 }, { 0, 1, 0 } };
+	static const uint16_t ccw[3] = { 0, 1, 2 }, cw[3] = { 0, 2, 1 };
+	struct ref_view v = std_view(true);
+
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	for (int k = 0; k < 4; k++) {
+		clear_screen(t);
+		put_mesh(t, p, NULL, 3, k & 1 ? cw : ccw, 1);
+		mesh(t, k & 2 ? 0 : RDC_MESH_CULL, 3, 1);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		assert_int_equal(px(t, 320, 240) != 0, k != 1);
+	}
+}
+
 /* ---- wireframe ------------------------------------------------------ */
 
 /*
@@ -1181,6 +1205,7 @@ int main(void)
 		TDP_TEST(test_closed_mesh_once),
 		TDP_TEST(test_lighting_ref),
 		TDP_TEST(test_stack_lists),
+		TDP_TEST(test_cull_facing),
 		TDP_TEST(test_wire_edges_once),
 		TDP_TEST(test_zbuffer_ref),
 		TDP_TEST(test_bad_input),
