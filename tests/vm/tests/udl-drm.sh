@@ -1,0 +1,154 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only
+# The DisplayLink personality (docs/usb.md): rdcd --listen udl: behind a
+# gadget with DisplayLink's IDs on dummy_hcd, driven by Linux's own udl
+# DRM driver.  udl binds, reads the EDID (the RDC-1's presets, 1024x768
+# first), and its card offers exactly those modes (sysfs, modetest);
+# drm_pattern sets 640x480, 800x600 and 1024x768 with a known pattern and
+# rdcd's frame (read by an observer) equals it in RGB565 exactly; a
+# damaged rectangle changes only itself, for far fewer bytes; fbcon draws
+# on the fbdev emulation's /dev/fbN and its text reaches the frames;
+# unplugging while drawing is clean and plugging in brings the card back.
+# vm-module: dummy_hcd
+# vm-module: libcomposite
+# vm-module: usb_f_fs
+# vm-module: udl
+. "$RDC_TREE/tests/vm/lib.sh"
+
+DRMP=$B/drm_pattern
+usb_require
+[ -x "$DRMP" ] || { echo "drm_pattern is not built (no libdrm-dev?)"; exit 77; }
+command -v modetest >/dev/null || { echo "modetest missing (libdrm-tests)"; exit 77; }
+USB_VID=17e9
+USB_PID=5244
+USB_FFS=/dev/ffs-udl
+OBS="unix:$USB_SOCK?observe"
+PRESETS="320x200 640x480 800x600 1024x768 1280x720 1920x1080"
+
+# udlfb claims the same IDs: it must not be the one that binds
+check "udlfb is not loaded (udl, not udlfb, drives the device)" \
+	sh -c '! grep -q "^udlfb " /proc/modules'
+
+udl_up() {
+	"$GADGET" up --personality udl --dir "$USB_FFS" \
+		--serial "$USB_SERIAL" >"$T/gadget.log" 2>&1 ||
+		{ cat "$T/gadget.log"; return 1; }
+	rm -f "$USB_SOCK" "$T/rdcd.ready"
+	"$USB_RDCD" --listen "udl:$USB_FFS" --listen "unix:$USB_SOCK" \
+		--ready-file "$T/rdcd.ready" --mode 1024x768 -v \
+		>"$USB_RDCD_LOG" 2>&1 &
+	USB_RDCD_PID=$!
+	i=0
+	while ! [ -s "$T/rdcd.ready" ]; do
+		[ $i -lt 300 ] && kill -0 $USB_RDCD_PID 2>/dev/null ||
+			{ cat "$USB_RDCD_LOG"; return 1; }
+		sleep 0.1
+		i=$((i + 1))
+	done
+	"$GADGET" bind >>"$T/gadget.log" 2>&1 || { cat "$T/gadget.log"; return 1; }
+	usb_wait present 30
+}
+
+# udl_card: the sysfs directory of the udl card, once its connector is
+# connected (the EDID read), at most $1 s
+udl_card() {
+	i=0
+	while [ $i -lt $(($1 * 10)) ]; do
+		for c in /sys/class/drm/card[0-9]*; do
+			case $c in *-*) continue ;; esac
+			[ "$(basename "$(readlink -f "$c/device/driver")")" = udl ] ||
+				continue
+			for k in "$c"/"$(basename "$c")"-*; do
+				[ "$(cat "$k/status" 2>/dev/null)" = connected ] &&
+					{ CARD=$c; CONN=$k; return 0; }
+			done
+		done
+		sleep 0.1
+		i=$((i + 1))
+	done
+	echo "no udl card with a connected connector after $1 s"
+	ls -l /sys/class/drm/ 2>&1
+	return 1
+}
+
+dmesg -c >/dev/null 2>&1
+check "the gadget (DisplayLink IDs) enumerates" udl_up
+lsusb -v -d $USB_VID:$USB_PID >"$T/lsusb.txt" 2>&1
+check "lsusb: vendor interface 255/0/0, bulk OUT endpoint 0x01" sh -c '
+	grep -Eq "bInterfaceClass +255" "$1" &&
+	grep -Eq "bInterfaceSubClass +0" "$1" &&
+	grep -Eq "bInterfaceProtocol +0" "$1" &&
+	grep -Eq "bEndpointAddress +0x01 +EP 1 OUT" "$1" ||
+	{ grep -E "bEndpointAddress|Interface" "$1"; false; }' sh "$T/lsusb.txt"
+check "udl binds and its connector is connected" udl_card 60
+check "the card has a node in /dev/dri" test -c "/dev/dri/$(basename "$CARD")"
+modetest -M udl -c >"$T/modetest.txt" 2>&1
+# mode names as modetest lists them ("  #0 1024x768 60.00 ..."), in order
+awk '$1 ~ /^#[0-9]+$/ && $2 ~ /^[0-9]+x[0-9]+$/ { print $2 }' \
+	"$T/modetest.txt" >"$T/modes.txt"
+check "modetest -M udl -c: connected, the RDC-1's presets, 1024x768 first" sh -c '
+	grep -E "[[:space:]]connected[[:space:]]" "$1" || exit 1
+	tr "\n" " " <"$2"; echo
+	[ "$(head -n 1 "$2")" = 1024x768 ] &&
+	[ "$(sort -u "$2" | tr "\n" " ")" = "$(printf "%s\n" $3 | sort | tr "\n" " ")" ]' \
+	sh "$T/modetest.txt" "$T/modes.txt" "$PRESETS"
+# what 6.1's udl logs when the vendor descriptor is stalled (docs/usb.md)
+dmesg >"$T/dmesg1.txt" 2>&1
+check "dmesg: nothing but the documented vendor-descriptor lines" sh -c '
+	grep -Ei "udl|drm|usb" "$1" | sed "s/^/    /"
+	! grep -Ei "error|warn|oops|bug|call trace|fail" "$1" |
+	  grep -Ev "Unrecognized vendor firmware descriptor|vendor descriptor length"' \
+	sh "$T/dmesg1.txt"
+
+for m in 640x480 800x600; do
+	check "drm_pattern $m: the RDC-1's frame is the pattern in RGB565" \
+		"$DRMP" --uri "$OBS" --mode $m
+done
+check "drm_pattern 1024x768, then a 40x30 rectangle: exact, few bytes" \
+	"$DRMP" --uri "$OBS" --mode 1024x768 --rect 300,200,40,30
+grep '^#' "$T/check.out"
+check "figures: full-screen and 64x64 updates (below)" \
+	"$DRMP" --uri "$OBS" --mode 640x480 --bench 2
+grep '^# bench' "$T/check.out"
+
+# fbcon: the fbdev emulation's framebuffer carries the console
+check "the fbdev emulation gives /dev/fbN (udl's)" sh -c '
+	for f in /sys/class/graphics/fb*; do cat "$f/name"; done | grep -q udl'
+crc0=$("$DRMP" --crc "$OBS")
+for i in $(seq 30); do echo "RDC-1 udl fbcon line $i" >/dev/tty1; done
+fbcon_changed() {
+	i=0
+	while [ $i -lt 200 ]; do
+		crc=$("$DRMP" --crc "$OBS")
+		[ -n "$crc" ] && [ "$crc" != "$crc0" ] && { echo "frame $crc0 -> $crc"; return 0; }
+		sleep 0.1
+		i=$((i + 1))
+	done
+	echo "the frame stayed $crc0"
+	return 1
+}
+check "fbcon's text changes the RDC-1's frames" fbcon_changed
+
+# unplug while a client draws full frames
+"$DRMP" --mode 1024x768 --loop >"$T/loop.log" 2>&1 &
+loop=$!
+sleep 2
+dmesg -c >/dev/null 2>&1
+check "unplug (unbind the UDC) while drawing" usb_unplug
+check "the drawing client sees the card go and exits" sh -c '
+	i=0; while kill -0 $1 2>/dev/null && [ $i -lt 300 ]; do sleep 0.1; i=$((i+1)); done
+	! kill -0 $1 2>/dev/null' sh $loop
+wait $loop
+echo "# loop client exit status $?: $(cat "$T/loop.log")"
+dmesg >"$T/dmesg2.txt" 2>&1
+check "dmesg after the unplug: no oops, BUG or warning" sh -c '
+	grep -Ei "udl|drm" "$1" | sed "s/^/    /"
+	! grep -Ei "oops|bug:|warning:|call trace" "$1"' sh "$T/dmesg2.txt"
+check "rdcd still runs" usb_rdcd_alive
+replug() {
+	usb_replug && udl_card 60
+}
+check "plugging in again brings the card back" replug
+check "and it draws again" "$DRMP" --uri "$OBS" --mode 640x480
+check "the gadget goes down cleanly" usb_gadget_down
+finish
