@@ -281,7 +281,7 @@ $(FUZZ_DIR)/fuzz_script: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_script.o \
 	$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_WRAP_ALLOC) \
 		-Wl,--wrap=rdc_png_write,--wrap=rdc_sim_step \
 		-Wl,--wrap=rdc_sim_run_until,--wrap=rdc_hw_wait_begin \
-		$^ $(LIBS) -o $@
+		-Wl,--wrap=fopen $^ $(LIBS) -o $@
 
 fuzz-bins: $(FUZZ_BINS)
 
@@ -400,6 +400,16 @@ $(O)/rel/usb_tool: $(O)/rel/tests/vm/usb_tool.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 $(O)/san/usb_tool: $(O)/san/tests/vm/usb_tool.o $(O)/san/librdc.a
 	$(CC) $(SAN_CFLAGS) $^ $(LIBS) -o $@
+
+# drm_pattern: a DRM/KMS client (libdrm) of the udl card the DisplayLink
+# personality brings up (tests/vm/tests/udl-*.sh, which skip without it).
+HAVE_DRM := $(shell $(PKG_CONFIG) --exists libdrm && echo 1)
+ifeq ($(HAVE_DRM),1)
+VM_BINS += $(O)/rel/drm_pattern
+endif
+$(O)/rel/drm_pattern: tests/vm/drm_pattern.c $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $(shell $(PKG_CONFIG) --cflags libdrm) $^ \
+		$(shell $(PKG_CONFIG) --libs libdrm) $(LIBS) -o $@
 
 vm-test: $(VM_BINS)
 	@tests/vm/run.sh $(O)

@@ -43,7 +43,7 @@ command -v dpkg-query >/dev/null 2>&1 || skip "not a Debian system"
 
 PKGS="qemu-system-x86 linux-image-amd64 linux-headers-amd64 busybox-static
 kmod cpio gzip make gcc ffmpeg v4l-utils fbset linux-source-6.1
-usbutils libusb-1.0-0"
+usbutils libusb-1.0-0 libdrm-tests"
 missing=""
 for p in $PKGS; do
 	dpkg-query -W -f='${Status}' "$p" 2>/dev/null |
