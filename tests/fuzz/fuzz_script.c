@@ -15,26 +15,30 @@
  * text; the counters stay consistent (a readback's word count is zero
  * when no readback ran).
  *
- * Bounded work per input: the link replaces four library calls
+ * Bounded work per input: the link replaces five library calls
  * (-Wl,--wrap, see the Makefile) with stand-ins: rdc_png_write checks its
  * arguments and writes nothing (`screenshot` would otherwise create files
  * anywhere), rdc_sim_step and rdc_sim_run_until move time by at most
  * FZ_MAX_STEP cycles (`step` takes up to ten simulated seconds), and
  * rdc_hw_wait_begin cuts every wait in the simulator to FZ_MAX_WAIT cycles
  * (a display list that jumps to itself would keep the DP busy for the
- * default budget of ten simulated seconds: minutes of fuzzing time).
+ * default budget of ten simulated seconds: minutes of fuzzing time), and
+ * fopen reads only regular files of at most FZ_MAX_FILE bytes.
  */
+#include <errno.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "hw.h"
 #include "rdc.h"
 
 #define FZ_MAX_STEP 4000000u /* 40 ms of the default core clock */
 #define FZ_MAX_WAIT 4000000u
+#define FZ_MAX_FILE (1 << 20)
 
 #define fz_assert(c)                                                           \
 	do {                                                                   \
@@ -52,6 +56,27 @@ int __wrap_rdc_sim_step(rdc_dev *dev, uint64_t cycles);
 int __wrap_rdc_sim_run_until(rdc_dev *dev, uint64_t t);
 int __wrap_rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,
 			 uint32_t h, size_t pitch);
+FILE *__real_fopen(const char *path, const char *mode);
+FILE *__wrap_fopen(const char *path, const char *mode);
+
+/*
+ * `vram-load ADDR FILE` reads any file it is named: here only regular
+ * files of at most FZ_MAX_FILE bytes (a FIFO or a device could block the
+ * run).  Opening to write goes through: libFuzzer writes its corpus and
+ * crash files so, and no statement writes but `screenshot` (above).
+ */
+FILE *__wrap_fopen(const char *path, const char *mode)
+{
+	struct stat st;
+
+	if (!strchr(mode, 'w') && !strchr(mode, 'a') &&
+	    (stat(path, &st) || !S_ISREG(st.st_mode) ||
+	     st.st_size > FZ_MAX_FILE)) {
+		errno = EACCES;
+		return NULL;
+	}
+	return __real_fopen(path, mode);
+}
 
 void __wrap_rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w)
 {
