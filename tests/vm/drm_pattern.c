@@ -36,7 +36,7 @@
 #include "udl_decode.h"
 #endif
 
-#define CHECK_MS 60000 /* at most this long for a frame to show up */
+#define CHECK_MS 180000 /* at most this long for a frame to show up */
 
 struct fb {
 	uint32_t w, h, pitch, handle, id;
