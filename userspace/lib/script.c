@@ -11,6 +11,7 @@
 #include <zlib.h>
 
 #include "script.h"
+#include "script_3d.h"
 #include "script_img.h"
 
 /* Statement handlers get the tokens after the keyword at index 1. */
@@ -853,8 +854,8 @@ static int st_screenshot(struct rdl *r, uint32_t op)
  * to nearest (halves away from zero), in [lo, hi].  Exact: no floating
  * point, so "0.5" is 32768 in 15.16 on every host.
  */
-static int rdl_fixed(struct rdl *r, size_t i, int64_t scale, int64_t lo,
-		     int64_t hi, int64_t *out)
+int rdl_fixed(struct rdl *r, size_t i, int64_t scale, int64_t lo, int64_t hi,
+	      int64_t *out)
 {
 	const char *s;
 	bool neg = false;
@@ -898,8 +899,6 @@ range:
 	return rdl_err(r, RDC_E_PARSE, "argument %zu: '%.40s' out of range", i,
 		       r->tok[i].s);
 }
-
-#define RDL_FIX_ONE 65536 /* 1.0 in 15.16 */
 
 /* pen WIDTH [butt|round|square] [miter|round|bevel] */
 static int st_pen(struct rdl *r, uint32_t op)
@@ -958,7 +957,7 @@ static int st_dash(struct rdl *r, uint32_t op)
 }
 
 /* Degrees (decimals allowed) to 1/65536 turn, modulo a turn. */
-static int rdl_angle(struct rdl *r, size_t i, uint32_t *out)
+int rdl_angle(struct rdl *r, size_t i, uint32_t *out)
 {
 	int64_t v;
 	/* 65536 / 360 = 8192 / 45: scale by 8192, then divide by 45 */
@@ -1383,6 +1382,21 @@ static const struct rdl_stmt {
 	{"map-clut", st_words, RDC_OP_MAP_CLUT, 1, 1},
 	{"convolve", rdl_st_convolve, RDC_OP_CONVOLVE, 7, 19},
 	{"threshold", rdl_st_threshold, RDC_OP_THRESHOLD, 5, 6},
+	{"matrix", rdl_st_matrix, RDC_OP_MATRIX_LOAD, 1, 12},
+	{"matrix-mult", rdl_st_matrix, RDC_OP_MATRIX_MULT, 12, 12},
+	{"translate", rdl_st_vec3, RDC_OP_TRANSLATE, 3, 3},
+	{"scale", rdl_st_vec3, RDC_OP_SCALE, 1, 3},
+	{"rotate", rdl_st_rotate, RDC_OP_ROTATE, 2, 2},
+	{"push", st_words, RDC_OP_PUSH_MATRIX, 0, 0},
+	{"pop", st_words, RDC_OP_POP_MATRIX, 0, 0},
+	{"view", rdl_st_view, RDC_OP_SET_VIEW, 26, 26},
+	{"viewport3", rdl_st_viewport3, RDC_OP_SET_VIEWPORT3, 4, 4},
+	{"light", rdl_st_light, RDC_OP_SET_LIGHT, 2, 5},
+	{"ambient", rdl_st_ambient, RDC_OP_SET_AMBIENT, 1, 1},
+	{"material", rdl_st_material, RDC_OP_SET_MATERIAL, 4, 4},
+	{"mesh", rdl_st_mesh, RDC_OP_MESH, 4, 10},
+	{"patch", rdl_st_patch, RDC_OP_PATCH, 49, 54},
+	{"bezier3", rdl_st_bezier3, RDC_OP_BEZIER3, 12, 14},
 	/* host side (refused inside `list`, as are readback and raw) */
 	{"list", st_list, 0, 1, 1},
 	{"end", st_end, 0, 0, 0},
@@ -1400,6 +1414,9 @@ static const struct rdl_stmt {
 	{"vram-load", rdl_st_vram_load, 0, 2, 2},
 	{"encode", rdl_st_encode, 0, 6, 7},
 	{"histogram-plot", rdl_st_histogram_plot, RDC_OP_FILL_RECT, 5, 5},
+	{"vertices", rdl_st_vertices, 0, 1, RDL_ANY},
+	{"indices", rdl_st_indices, 0, 1, RDL_ANY},
+	{"spin", rdl_st_spin, 0, 1, 1},
 };
 
 static int rdl_arg_count(struct rdl *r, const struct rdl_stmt *st,

@@ -77,6 +77,14 @@ bool rdl_word(struct rdl *r, size_t i, const char *w);
 extern const char *const rdl_fmt_names[RDC_FMT_COUNT];
 int rdl_rop_by_name(const char *s);
 
+/*
+ * script.c: a decimal number (sign, fraction) times `scale`, rounded to
+ * nearest, in [lo, hi]; degrees to 1/65536 turn modulo a turn
+ */
+#define RDL_FIX_ONE 65536 /* 1.0 in 15.16 */
+int rdl_fixed(struct rdl *r, size_t i, int64_t scale, int64_t lo, int64_t hi,
+	      int64_t *out);
+int rdl_angle(struct rdl *r, size_t i, uint32_t *out);
 /* script.c: run the statement in r->tok */
 int rdl_statement(struct rdl *r);
 
