@@ -15,8 +15,8 @@
 
 /* A bounded byte and bit reader over the payload. */
 struct img_in {
-	uint32_t addr, end; /* next VRAM byte to read; end of the payload */
-	uint32_t pos, len; /* bytes of dp->img.in used, held */
+	uint32_t addr, end;  /* next VRAM byte to read; end of the payload */
+	uint32_t pos, len;   /* bytes of dp->img.in used, held */
 	uint32_t acc, nbits; /* bits not yet used, most significant first */
 };
 
@@ -118,7 +118,7 @@ static uint32_t dec_rle(struct rdc_dp *dp, const struct dec *d,
 			struct img_in *r)
 {
 	uint8_t *row = dp->img.u.dec[0];
-	uint32_t run = 0, lit = 0, px[3] = { 0 }, c, x, y, k, i;
+	uint32_t run = 0, lit = 0, px[3] = {0}, c, x, y, k, i;
 
 	for (y = 0; y < d->h; y++) {
 		for (x = 0, i = 0; x < d->w; x++, i += d->ch) {
@@ -212,8 +212,8 @@ static uint32_t dec_btc(struct rdc_dp *dp, const struct dec *d,
 			struct img_in *r)
 {
 	uint8_t *blk = dp->img.u.dec[0], *row = dp->img.u.dec[1];
-	uint32_t bw = (d->w + 3) / 4, bh = (d->h + 3) / 4, bytes, by, ry, x,
-		 c, i, b;
+	uint32_t bw = (d->w + 3) / 4, bh = (d->h + 3) / 4, bytes, by, ry, x, c,
+		 i, b;
 	const uint8_t *e;
 
 	bytes = bw * d->ch * RDC_IMG_BTC_BYTES;
@@ -228,7 +228,8 @@ static uint32_t dec_btc(struct rdc_dp *dp, const struct dec *d,
 				e = blk + (x / 4) * d->ch * RDC_IMG_BTC_BYTES;
 				for (c = 0; c < d->ch; c++, i++) {
 					b = rdc_ld16(e + 4 * c + 2) >>
-						    (ry * 4 + x % 4) & 1;
+						    (ry * 4 + x % 4) &
+					    1;
 					row[i] = e[4 * c + b];
 				}
 			}
@@ -238,8 +239,7 @@ static uint32_t dec_btc(struct rdc_dp *dp, const struct dec *d,
 	return in_left(r) ? RDC_ERR_DATA : RDC_ERR_NONE;
 }
 
-static uint32_t dec_run(struct rdc_dp *dp, const struct dec *d,
-			uint32_t base)
+static uint32_t dec_run(struct rdc_dp *dp, const struct dec *d, uint32_t base)
 {
 	struct img_in r;
 
@@ -279,9 +279,8 @@ uint32_t dp_cmd_decode(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 	d.payload = rdc_ld32(h + RDC_IMG_OFF_PAYLOAD);
 	if (rdc_ld32(h + RDC_IMG_OFF_MAGIC) != RDC_IMG_MAGIC ||
 	    rdc_ld16(h + RDC_IMG_OFF_RESERVED) || d.codec < RDC_IMG_RLE ||
-	    d.codec >= RDC_IMG_CODEC_END || (d.ch != 1 && d.ch != 3) ||
-	    !d.w || d.w > RDC_IMG_MAX_WIDTH || !d.h ||
-	    d.h > RDC_IMG_MAX_HEIGHT ||
+	    d.codec >= RDC_IMG_CODEC_END || (d.ch != 1 && d.ch != 3) || !d.w ||
+	    d.w > RDC_IMG_MAX_WIDTH || !d.h || d.h > RDC_IMG_MAX_HEIGHT ||
 	    d.payload > size - RDC_IMG_HDR_BYTES)
 		return RDC_ERR_DATA;
 	if (d.codec == RDC_IMG_BTC) {

@@ -12,8 +12,8 @@
  */
 #include "img_int.h"
 
-static const int32_t sobel_x[9] = { -1, 0, 1, -2, 0, 2, -1, 0, 1 };
-static const int32_t sobel_y[9] = { -1, -2, -1, 0, 0, 0, 1, 2, 1 };
+static const int32_t sobel_x[9] = {-1, 0, 1, -2, 0, 2, -1, 0, 1};
+static const int32_t sobel_y[9] = {-1, -2, -1, 0, 0, 0, 1, 2, 1};
 
 struct conv {
 	const struct rdc_surface *src;
@@ -37,8 +37,8 @@ static int64_t floor_div(int64_t n, int64_t d)
  * holds columns sx - 1 .. sx + w, the ends clamped to the surface.  The
  * slot taken is one whose row is not in need[].
  */
-static uint32_t *conv_row(struct rdc_dp *dp, const struct conv *cv,
-			  int32_t row, const int32_t *need)
+static uint32_t *conv_row(struct rdc_dp *dp, const struct conv *cv, int32_t row,
+			  const int32_t *need)
 {
 	struct rdc_dp_img *im = &dp->img;
 	int32_t xa = RDC_MAX(cv->sx - 1, 0);
@@ -78,7 +78,8 @@ static uint32_t conv_pixel(const struct conv *cv, uint32_t *const *rows,
 		m = (1u << cv->ch[c].bits) - 1;
 		for (t = 0; t < 9; t++)
 			tap[t] = rows[t / 3][i + (int32_t)(t % 3)] >>
-					 cv->ch[c].shift & m;
+					 cv->ch[c].shift &
+				 m;
 		if (cv->mode == RDC_CONV_SOBEL) {
 			gx = 0;
 			gy = 0;
@@ -117,8 +118,8 @@ uint32_t dp_cmd_convolve(struct rdc_dp *dp, uint32_t fl, uint32_t len,
 	if ((fl & ~(RDC_CONV_MODE | RDC_CONV_ABS)) ||
 	    cv.mode > RDC_CONV_SOBEL || (cv.mode == RDC_CONV_SOBEL && cv.abs))
 		return RDC_ERR_ARG;
-	if (len != (cv.mode == RDC_CONV_KERNEL ? RDC_CONV_KERNEL_WORDS :
-						 RDC_CONV_SOBEL_WORDS))
+	if (len != (cv.mode == RDC_CONV_KERNEL ? RDC_CONV_KERNEL_WORDS
+					       : RDC_CONV_SOBEL_WORDS))
 		return RDC_ERR_LENGTH;
 	sx = RDC_X(a[0]);
 	sy = RDC_Y(a[0]);

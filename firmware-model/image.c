@@ -15,8 +15,8 @@
 
 /* ---- pixels and channels -------------------------------------------- */
 
-static const struct img_chan img_rgb565[3] = { { 11, 5 }, { 5, 6 }, { 0, 5 } };
-static const struct img_chan img_rgb888[3] = { { 16, 8 }, { 8, 8 }, { 0, 8 } };
+static const struct img_chan img_rgb565[3] = {{11, 5}, {5, 6}, {0, 5}};
+static const struct img_chan img_rgb888[3] = {{16, 8}, {8, 8}, {0, 8}};
 
 const struct img_chan *img_channels(uint32_t fmt, uint32_t *n)
 {
@@ -79,7 +79,8 @@ bool img_read_row(struct rdc_dp *dp, const struct rdc_surface *s, int32_t y,
 	if (!n)
 		return true;
 	p = rdc_port_span(dp->hw,
-			  s->base + (uint32_t)y * s->stride + (uint32_t)(bit0 / 8),
+			  s->base + (uint32_t)y * s->stride +
+				  (uint32_t)(bit0 / 8),
 			  (uint32_t)((bit1 + 7) / 8 - bit0 / 8), RDC_BUS_READ);
 	if (!p)
 		return false;
@@ -131,8 +132,7 @@ static bool xy_wh_ok(const uint32_t *a)
 
 /* ---- HISTOGRAM ------------------------------------------------------- */
 
-static uint32_t cmd_histogram(struct rdc_dp *dp, uint32_t fl,
-			      const uint32_t *a)
+static uint32_t cmd_histogram(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 {
 	const struct rdc_surface *s = &dp->st.src;
 	uint32_t sel = fl & RDC_CHAN_SEL, *hist = dp->img.hist, i, n;
@@ -199,8 +199,7 @@ static void map_stretch(uint8_t *map, uint32_t lo, uint32_t hi)
 	}
 }
 
-static uint32_t cmd_map_build(struct rdc_dp *dp, uint32_t fl,
-			      const uint32_t *a)
+static uint32_t cmd_map_build(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 {
 	uint32_t *hist = dp->img.hist, lo, hi, v;
 	uint8_t *map = dp->img.map, *p;
@@ -245,8 +244,8 @@ static uint32_t cmd_map_build(struct rdc_dp *dp, uint32_t fl,
 	default: /* RDC_MAP_EQUALIZE: s_k = (L - 1) sum_{j <= k} n_j / n */
 		for (v = 0; v < RDC_DP_HIST_BINS; v++) {
 			cdf += hist[v];
-			map[v] = n ? (uint8_t)((255 * cdf + n / 2) / n) :
-				     (uint8_t)v;
+			map[v] = n ? (uint8_t)((255 * cdf + n / 2) / n)
+				   : (uint8_t)v;
 		}
 		break;
 	}
@@ -293,15 +292,15 @@ static uint32_t point_op(struct rdc_dp *dp, uint32_t op, uint32_t sel,
 				return RDC_ERR_SURFACE;
 			for (i = 0; i < n; i++) {
 				if (op == RDC_OP_MAP_APPLY)
-					dp->px[i] = map_pixel(dp->img.map,
-							      s->format,
-							      dp->px[i]);
+					dp->px[i] =
+						map_pixel(dp->img.map,
+							  s->format, dp->px[i]);
 				else
 					dp->px[i] = img_intensity(s->format,
 								  dp->px[i],
-								  sel) >= level ?
-							    dp->st.fg :
-							    dp->st.bg;
+								  sel) >= level
+							    ? dp->st.fg
+							    : dp->st.bg;
 			}
 			rdc_dp_span_px(dp, y, x, n, 0, dp->px, NULL);
 		}
@@ -309,8 +308,7 @@ static uint32_t point_op(struct rdc_dp *dp, uint32_t op, uint32_t sel,
 	return RDC_ERR_NONE;
 }
 
-static uint32_t cmd_map_apply(struct rdc_dp *dp, uint32_t fl,
-			      const uint32_t *a)
+static uint32_t cmd_map_apply(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 {
 	if (fl)
 		return RDC_ERR_ARG;
@@ -321,8 +319,7 @@ static uint32_t cmd_map_apply(struct rdc_dp *dp, uint32_t fl,
 	return point_op(dp, RDC_OP_MAP_APPLY, 0, a);
 }
 
-static uint32_t cmd_threshold(struct rdc_dp *dp, uint32_t fl,
-			      const uint32_t *a)
+static uint32_t cmd_threshold(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 {
 	uint32_t sel = fl & RDC_CHAN_SEL;
 
@@ -335,8 +332,7 @@ static uint32_t cmd_threshold(struct rdc_dp *dp, uint32_t fl,
 	return point_op(dp, RDC_OP_THRESHOLD, sel, a);
 }
 
-static uint32_t cmd_map_clut(struct rdc_dp *dp, uint32_t fl,
-			     const uint32_t *a)
+static uint32_t cmd_map_clut(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 {
 	uint32_t i;
 
@@ -350,8 +346,8 @@ static uint32_t cmd_map_clut(struct rdc_dp *dp, uint32_t fl,
 	return RDC_ERR_NONE;
 }
 
-uint32_t dp_cmd_image(struct rdc_dp *dp, uint32_t op, uint32_t fl,
-		      uint32_t len, const uint32_t *a)
+uint32_t dp_cmd_image(struct rdc_dp *dp, uint32_t op, uint32_t fl, uint32_t len,
+		      const uint32_t *a)
 {
 	switch (op) {
 	case RDC_OP_DECODE:

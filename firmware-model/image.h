@@ -9,7 +9,7 @@
 #include "../hw-sim/rdc_regs.h"
 
 #define RDC_DP_IMG_IN_CHUNK 256u /* stream bytes read per span */
-#define RDC_DP_HIST_BINS 256u
+#define RDC_DP_HIST_BINS    256u
 
 struct rdc_dp_img {
 	/* DECODE's stream reader: bytes read, not yet used */

@@ -45,17 +45,17 @@
 #ifndef RDC_IMAGE_H
 #define RDC_IMAGE_H
 
-#define RDC_IMG_MAGIC 0x49434452u /* "RDCI" little-endian */
-#define RDC_IMG_HDR_BYTES 16u
-#define RDC_IMG_MAX_WIDTH 4096u /* also CONVOLVE's widest rectangle */
-#define RDC_IMG_MAX_HEIGHT 16384u
-#define RDC_IMG_DPCM_KBITS 3u
-#define RDC_IMG_DPCM_KMAX 7u
-#define RDC_IMG_DPCM_ESCAPE 16u
-#define RDC_IMG_BTC_BLOCK 4u
-#define RDC_IMG_BTC_BYTES 4u /* per block and channel */
+#define RDC_IMG_MAGIC		0x49434452u /* "RDCI" little-endian */
+#define RDC_IMG_HDR_BYTES	16u
+#define RDC_IMG_MAX_WIDTH	4096u /* also CONVOLVE's widest rectangle */
+#define RDC_IMG_MAX_HEIGHT	16384u
+#define RDC_IMG_DPCM_KBITS	3u
+#define RDC_IMG_DPCM_KMAX	7u
+#define RDC_IMG_DPCM_ESCAPE	16u
+#define RDC_IMG_BTC_BLOCK	4u
+#define RDC_IMG_BTC_BYTES	4u /* per block and channel */
 #define RDC_IMG_RLE_LITERAL_MAX 128u
-#define RDC_IMG_RLE_RUN_MAX 129u
+#define RDC_IMG_RLE_RUN_MAX	129u
 
 enum rdc_img_codec {
 	RDC_IMG_RLE = 1,
@@ -65,12 +65,12 @@ enum rdc_img_codec {
 };
 
 /* Header field offsets */
-#define RDC_IMG_OFF_MAGIC 0
-#define RDC_IMG_OFF_CODEC 4
+#define RDC_IMG_OFF_MAGIC    0
+#define RDC_IMG_OFF_CODEC    4
 #define RDC_IMG_OFF_CHANNELS 5
 #define RDC_IMG_OFF_RESERVED 6
-#define RDC_IMG_OFF_WIDTH 8
-#define RDC_IMG_OFF_HEIGHT 10
-#define RDC_IMG_OFF_PAYLOAD 12
+#define RDC_IMG_OFF_WIDTH    8
+#define RDC_IMG_OFF_HEIGHT   10
+#define RDC_IMG_OFF_PAYLOAD  12
 
 #endif /* RDC_IMAGE_H */

@@ -11,10 +11,10 @@
 #include "test_dp_common.h"
 #include "rdc.h"
 
-#define DST_W 320u
-#define DST_H 240u
+#define DST_W	    320u
+#define DST_H	    240u
 #define STREAM_BASE 0x200000u
-#define SENTINEL 0x5au
+#define SENTINEL    0x5au
 
 static uint32_t rng_next(uint32_t *s)
 {
@@ -39,17 +39,20 @@ static void gen_image(uint8_t *px, uint32_t w, uint32_t h, uint32_t ch,
 				switch (kind) {
 				case 0:
 					v = ((x / 13) * 37 + (y / 9) * 71 +
-					     c * 50) & 0xff;
+					     c * 50) &
+					    0xff;
 					break;
 				case 1:
 					v = (x * 255 / w + y * (c + 1) +
-					     (rng_next(&s) & 3)) & 0xff;
+					     (rng_next(&s) & 3)) &
+					    0xff;
 					break;
 				case 2:
 					v = rng_next(&s) & 0xff;
 					break;
 				default:
-					v = ((x / 3 + y / 3) & 1) ? 200 - c : 20 + c;
+					v = ((x / 3 + y / 3) & 1) ? 200 - c
+								  : 20 + c;
 					break;
 				}
 				px[((size_t)y * w + x) * ch + c] = (uint8_t)v;
@@ -60,7 +63,7 @@ static void gen_image(uint8_t *px, uint32_t w, uint32_t h, uint32_t ch,
 
 static struct rdc_surface dst_surface(uint32_t fmt)
 {
-	struct rdc_surface s = { 0, 0, DST_W, DST_H, fmt };
+	struct rdc_surface s = {0, 0, DST_W, DST_H, fmt};
 
 	s.stride = (DST_W * tdp_bpp(fmt) + 7) / 8;
 	s.stride = (s.stride + 3) & ~3u;
@@ -94,7 +97,8 @@ static uint8_t *encode(uint32_t codec, const uint8_t *px, uint32_t w,
 
 	assert_non_null(out);
 	assert_int_equal(rdc_image_encode(codec, px, w, h, ch, (size_t)w * ch,
-					  out, cap, len), 0);
+					  out, cap, len),
+			 0);
 	assert_true(*len <= cap);
 	return out;
 }
@@ -109,8 +113,8 @@ static void decode_at(struct tdp *t, const uint8_t *stream, size_t len,
 
 /* The DST rectangle at (x, y) holds img (w x h, ch) exactly. */
 static void check_exact(struct tdp *t, const struct rdc_surface *s,
-			const uint8_t *img, uint32_t w, uint32_t h,
-			uint32_t ch, int32_t x0, int32_t y0)
+			const uint8_t *img, uint32_t w, uint32_t h, uint32_t ch,
+			int32_t x0, int32_t y0)
 {
 	uint32_t x, y;
 
@@ -119,21 +123,21 @@ static void check_exact(struct tdp *t, const struct rdc_surface *s,
 			if (tdp_get(t->vram, s, x0 + x, y0 + y) !=
 			    want_px(s->format, img + ((size_t)y * w + x) * ch,
 				    ch))
-				fail_msg("pixel (%u, %u) of %ux%ux%u in format %u",
+				fail_msg("pixel (%u, %u) of %ux%ux%u in format "
+					 "%u",
 					 x, y, w, h, ch, s->format);
 }
 
-static const uint32_t sizes[][2] = { { 1, 1 }, { 7, 5 }, { 129, 3 },
-				     { 4, 4 }, { 300, 200 }, { 33, 1 },
-				     { 1, 40 } };
+static const uint32_t sizes[][2] = {{1, 1},	{7, 5},	 {129, 3}, {4, 4},
+				    {300, 200}, {33, 1}, {1, 40}};
 
 static void roundtrip(void **state, uint32_t codec)
 {
 	struct tdp *t = *state;
 	static const uint32_t fmts[][2] = {
-		{ RDC_FMT_I8, 1 },	 { RDC_FMT_XRGB8888, 3 },
-		{ RDC_FMT_RGB888, 3 },	 { RDC_FMT_XRGB8888, 1 },
-		{ RDC_FMT_RGB565, 3 },
+		{RDC_FMT_I8, 1},     {RDC_FMT_XRGB8888, 3},
+		{RDC_FMT_RGB888, 3}, {RDC_FMT_XRGB8888, 1},
+		{RDC_FMT_RGB565, 3},
 	};
 	uint32_t si, fi, w, h, ch, fmt;
 	int kind;
@@ -186,8 +190,8 @@ static void test_dpcm_roundtrip(void **state)
 static void test_btc(void **state)
 {
 	struct tdp *t = *state;
-	static const uint32_t whs[][2] = { { 4, 4 }, { 5, 7 }, { 64, 48 },
-					   { 1, 1 }, { 130, 9 } };
+	static const uint32_t whs[][2] = {
+		{4, 4}, {5, 7}, {64, 48}, {1, 1}, {130, 9}};
 	uint32_t i, ch, x, y, c, kind;
 
 	for (i = 0; i < RDC_ARRAY_SIZE(whs); i++) {
@@ -195,9 +199,9 @@ static void test_btc(void **state)
 			for (kind = 0; kind < 4; kind++) {
 				uint32_t w = whs[i][0], h = whs[i][1];
 				uint32_t bw = (w + 3) / 4, bh = (h + 3) / 4;
-				struct rdc_surface s = dst_surface(
-					ch == 1 ? RDC_FMT_I8 :
-						  RDC_FMT_XRGB8888);
+				struct rdc_surface s =
+					dst_surface(ch == 1 ? RDC_FMT_I8
+							    : RDC_FMT_XRGB8888);
 				uint8_t *img = malloc((size_t)w * h * ch);
 				uint8_t *dec = malloc((size_t)w * h * ch);
 				uint8_t *st;
@@ -215,7 +219,8 @@ static void test_btc(void **state)
 							const uint8_t *e =
 								st + 16 +
 								(((y / 4) * bw +
-								  x / 4) * ch +
+								  x / 4) *
+									 ch +
 								 c) * 4;
 							uint32_t bm = e[2] |
 								      e[3] << 8;
@@ -224,9 +229,9 @@ static void test_btc(void **state)
 								x % 4;
 
 							dec[((size_t)y * w +
-							     x) * ch + c] =
-								e[(bm >> bit) &
-								  1];
+							     x) * ch +
+							    c] = e[(bm >> bit) &
+								   1];
 						}
 					}
 				}
@@ -239,33 +244,58 @@ static void test_btc(void **state)
 					for (x = 0; x < bw; x++) {
 						for (c = 0; c < ch; c++) {
 							int lo = 255, hi = 0;
-							int so = 0, sd = 0, n = 0;
+							int so = 0, sd = 0,
+							    n = 0;
 							uint32_t px, py;
 
-							for (py = y * 4; py < h &&
-							     py < y * 4 + 4; py++)
+							for (py = y * 4;
+							     py < h &&
+							     py < y * 4 + 4;
+							     py++)
 								for (px = x * 4;
 								     px < w &&
 								     px < x * 4 + 4;
 								     px++) {
-									size_t k = ((size_t)py * w + px) * ch + c;
+									size_t k =
+										((size_t)py *
+											 w +
+										 px) * ch +
+										c;
 
-									lo = RDC_MIN(lo, img[k]);
-									hi = RDC_MAX(hi, img[k]);
-									so += img[k];
-									sd += dec[k];
+									lo = RDC_MIN(
+										lo,
+										img[k]);
+									hi = RDC_MAX(
+										hi,
+										img[k]);
+									so += img
+										[k];
+									sd += dec
+										[k];
 									n++;
 								}
-							assert_true(2 * abs(so - sd) <= n);
-							for (py = y * 4; py < h &&
-							     py < y * 4 + 4; py++)
+							assert_true(
+								2 * abs(so -
+									sd) <=
+								n);
+							for (py = y * 4;
+							     py < h &&
+							     py < y * 4 + 4;
+							     py++)
 								for (px = x * 4;
 								     px < w &&
 								     px < x * 4 + 4;
 								     px++) {
-									size_t k = ((size_t)py * w + px) * ch + c;
+									size_t k =
+										((size_t)py *
+											 w +
+										 px) * ch +
+										c;
 
-									assert_true(abs(img[k] - dec[k]) <= hi - lo);
+									assert_true(
+										abs(img[k] -
+										    dec[k]) <=
+										hi - lo);
 								}
 						}
 					}
@@ -314,7 +344,7 @@ static void expect_bad(struct tdp *t, const uint8_t *stream, size_t len,
 		       uint32_t err)
 {
 	struct rdc_surface s = dst_surface(RDC_FMT_I8);
-	const uint32_t args[] = { addr, size, RDC_XY(0, 0) };
+	const uint32_t args[] = {addr, size, RDC_XY(0, 0)};
 	size_t i;
 
 	prep_dst(t, &s);
@@ -445,8 +475,8 @@ static void test_decode_corrupt(void **state)
 	b[8] = 1;
 	put32(b + 12, 4);
 	b[4] = RDC_IMG_DPCM;
-	b[16] = 0xff; /* k = 7, then 5 ones */
-	b[17] = 0xff; /* 8 more ones */
+	b[16] = 0xff;	     /* k = 7, then 5 ones */
+	b[17] = 0xff;	     /* 8 more ones */
 	b[18] = 0xc0 | 0x00; /* 2 more ones (15), a zero, 5 of 7 bits */
 	b[19] = 0x00;
 	expect_bad(t, b, 20, STREAM_BASE, 20, 0, RDC_ERR_DATA);
@@ -540,44 +570,6 @@ static void test_decode_fuzz(void **state)
 	free(save);
 }
 
-enum { K_READ, K_WRITE, K_RMW };
-
-/* bus.h's formula, transcribed (as in test_dp_key.c). */
-static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind)
-{
-	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
-	uint64_t end = a + n, first = a / RDC_BUS_BYTES, cost = 0;
-	uint64_t last = (end - 1) / RDC_BUS_BYTES;
-
-	while (a < end) {
-		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
-
-		if (be > end)
-			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES;
-		     b++) {
-			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
-						  RDC_DRAM_ROW_BYTES);
-
-			beats++;
-			if (row != *open) {
-				cost += RDC_T_ROW_MISS;
-				*open = row;
-			}
-			if (kind == K_RMW ||
-			    (kind == K_WRITE &&
-			     ((b == first && a % RDC_BUS_BYTES) ||
-			      (b == last && end % RDC_BUS_BYTES))))
-				rmw++;
-		}
-		cost += beats * RDC_T_BEAT;
-		if (rmw)
-			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
-		a = be;
-	}
-	return cost;
-}
-
 /*
  * The documented cost: the header as one 16-byte read; the payload in
  * 256-byte read spans, twice for RLE and DPCM (check, then draw), once
@@ -603,12 +595,13 @@ static void test_decode_cycles(void **state)
 		tdp_set_surface(t, RDC_OP_SET_DST, &s);
 		tdp_drain(t);
 		open = t->hw.bus.open_row;
-		want += bus_span(&open, STREAM_BASE, 16, K_READ);
+		want += tdp_bus_span(&open, STREAM_BASE, 16, TDP_BUS_READ);
 		for (pass = codec == RDC_IMG_BTC; pass < 2; pass++)
-			want += bus_span(&open, STREAM_BASE + 16, pay, K_READ);
+			want += tdp_bus_span(&open, STREAM_BASE + 16, pay,
+					     TDP_BUS_READ);
 		for (y = 0; y < h; y++)
-			want += bus_span(&open, (uint64_t)y * s.stride, w,
-					 K_WRITE);
+			want += tdp_bus_span(&open, (uint64_t)y * s.stride, w,
+					     TDP_BUS_WRITE);
 		TDP_CMD(t, RDC_OP_DECODE, STREAM_BASE, (uint32_t)len,
 			RDC_XY(0, 0));
 		tdp_drain(t);
@@ -622,9 +615,12 @@ static void test_decode_cycles(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_rle_roundtrip),	TDP_TEST(test_dpcm_roundtrip),
-		TDP_TEST(test_btc),		TDP_TEST(test_decode_clip),
-		TDP_TEST(test_decode_corrupt),	TDP_TEST(test_decode_fuzz),
+		TDP_TEST(test_rle_roundtrip),
+		TDP_TEST(test_dpcm_roundtrip),
+		TDP_TEST(test_btc),
+		TDP_TEST(test_decode_clip),
+		TDP_TEST(test_decode_corrupt),
+		TDP_TEST(test_decode_fuzz),
 		TDP_TEST(test_decode_cycles),
 	};
 

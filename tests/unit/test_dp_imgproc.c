@@ -9,8 +9,8 @@
  */
 #include "test_dp_common.h"
 
-#define TABLE 0x300000u
-#define MAP 0x301000u
+#define TABLE  0x300000u
+#define MAP    0x301000u
 #define SURF_W 96u
 #define SURF_H 64u
 
@@ -24,7 +24,7 @@ static uint32_t rng_next(uint32_t *s)
 
 static struct rdc_surface surf(uint32_t fmt, uint32_t base)
 {
-	struct rdc_surface s = { base, 0, SURF_W, SURF_H, fmt };
+	struct rdc_surface s = {base, 0, SURF_W, SURF_H, fmt};
 
 	s.stride = ((SURF_W * tdp_bpp(fmt) + 7) / 8 + 7) & ~7u;
 	return s;
@@ -89,7 +89,8 @@ static uint32_t ref_value(uint32_t fmt, uint32_t px, uint32_t sel)
 static void read_hist(struct tdp *t, uint32_t *h)
 {
 	for (uint32_t i = 0; i < 256; i++)
-		h[i] = t->vram[TABLE + 4 * i] | t->vram[TABLE + 4 * i + 1] << 8 |
+		h[i] = t->vram[TABLE + 4 * i] |
+		       t->vram[TABLE + 4 * i + 1] << 8 |
 		       t->vram[TABLE + 4 * i + 2] << 16 |
 		       (uint32_t)t->vram[TABLE + 4 * i + 3] << 24;
 }
@@ -97,9 +98,8 @@ static void read_hist(struct tdp *t, uint32_t *h)
 static void test_histogram(void **state)
 {
 	struct tdp *t = *state;
-	static const uint32_t fmts[] = { RDC_FMT_I4, RDC_FMT_I8,
-					 RDC_FMT_RGB565, RDC_FMT_RGB888,
-					 RDC_FMT_XRGB8888 };
+	static const uint32_t fmts[] = {RDC_FMT_I4, RDC_FMT_I8, RDC_FMT_RGB565,
+					RDC_FMT_RGB888, RDC_FMT_XRGB8888};
 	uint32_t fi, sel, want[256], got[256], x, y, i, accum;
 
 	for (fi = 0; fi < RDC_ARRAY_SIZE(fmts); fi++) {
@@ -116,23 +116,25 @@ static void test_histogram(void **state)
 				for (y = 40; y < SURF_H; y++)
 					for (x = 50; x < SURF_W; x++)
 						want[ref_value(fmts[fi],
-							       tdp_get(t->vram, &s,
-								       x, y),
+							       tdp_get(t->vram,
+								       &s, x,
+								       y),
 							       sel)]++;
 				if (accum) {
 					for (i = 0; i < 256; i++) {
-						t->vram[TABLE + 4 * i] = (uint8_t)i;
+						t->vram[TABLE + 4 * i] =
+							(uint8_t)i;
 						t->vram[TABLE + 4 * i + 1] = 0;
 						t->vram[TABLE + 4 * i + 2] = 0;
 						t->vram[TABLE + 4 * i + 3] = 0;
 						want[i] += i;
 					}
 				}
-				tdp_push(t, RDC_CMD(RDC_OP_HISTOGRAM,
-						    sel | (accum ?
-								   RDC_HIST_ACCUM :
-								   0),
-						    3));
+				tdp_push(t,
+					 RDC_CMD(RDC_OP_HISTOGRAM,
+						 sel | (accum ? RDC_HIST_ACCUM
+							      : 0),
+						 3));
 				tdp_push(t, RDC_XY(50, 40));
 				tdp_push(t, RDC_WH(100, 100));
 				tdp_push(t, TABLE);
@@ -141,7 +143,8 @@ static void test_histogram(void **state)
 				read_hist(t, got);
 				for (i = 0; i < 256; i++)
 					if (got[i] != want[i])
-						fail_msg("format %u sel %u bin %u: %u, want %u",
+						fail_msg("format %u sel %u bin "
+							 "%u: %u, want %u",
 							 fmts[fi], sel, i,
 							 got[i], want[i]);
 			}
@@ -202,11 +205,15 @@ static void test_map_build(void **state)
 
 		for (k = 0; k < 256; k++) {
 			/* sparse, peaked and flat histograms */
-			h[k] = trial % 3 == 0 ? (rng_next(&seed) % 7 == 0 ?
-							 rng_next(&seed) % 1000 : 0) :
-			       trial % 3 == 1 ? (k > 90 && k < 120 ?
-							 rng_next(&seed) % 50000 : 0) :
-						rng_next(&seed) % 100;
+			h[k] = trial % 3 == 0
+				       ? (rng_next(&seed) % 7 == 0
+						  ? rng_next(&seed) % 1000
+						  : 0)
+			       : trial % 3 == 1
+				       ? (k > 90 && k < 120
+						  ? rng_next(&seed) % 50000
+						  : 0)
+				       : rng_next(&seed) % 100;
 			n += h[k];
 		}
 		put_hist(t, h);
@@ -298,7 +305,8 @@ static void test_point_ops(void **state)
 		for (op = 0; op < 2; op++) {
 			for (sel = 0; sel < (op && fmt > RDC_FMT_I8 ? 4u : 1u);
 			     sel++) {
-				const uint32_t fg = 0x12345678u, bg = 0x9abcdef0u;
+				const uint32_t fg = 0x12345678u,
+					       bg = 0x9abcdef0u;
 				uint32_t lvl = rng_next(&seed) & 0xff;
 
 				fill_random(t, &s, fmt * 10 + op + sel, 0);
@@ -308,7 +316,8 @@ static void test_point_ops(void **state)
 				for (y = 0; y < SURF_H; y++)
 					for (x = 0; x < SURF_W; x++)
 						before[y * SURF_W + x] =
-							tdp_get(t->vram, &s, x, y);
+							tdp_get(t->vram, &s, x,
+								y);
 				tdp_set_surface(t, RDC_OP_SET_DST, &s);
 				TDP_CMD(t, RDC_OP_SET_CLIP, RDC_XY(3, 2),
 					RDC_XY(80, 60));
@@ -329,22 +338,42 @@ static void test_point_ops(void **state)
 				assert_int_equal(tdp_err(t), RDC_ERR_NONE);
 				for (y = 0; y < SURF_H; y++) {
 					for (x = 0; x < SURF_W; x++) {
-						uint32_t b = before[y * SURF_W + x];
+						uint32_t b =
+							before[y * SURF_W + x];
 						uint32_t want = b;
 
-						if (x >= 3 && x < 80 && y >= 2 &&
-						    y < 60 && x < 85 && y < 71) {
+						if (x >= 3 && x < 80 &&
+						    y >= 2 && y < 60 &&
+						    x < 85 && y < 71) {
 							if (op == 0)
-								want = ref_map(fmt, t->vram + MAP, b);
+								want = ref_map(
+									fmt,
+									t->vram +
+										MAP,
+									b);
 							else
-								want = (ref_value(fmt, b, sel) >= lvl ? fg : bg) &
-								       tdp_mask(fmt);
+								want = (ref_value(
+										fmt,
+										b,
+										sel) >= lvl
+										? fg
+										: bg) &
+								       tdp_mask(
+									       fmt);
 						}
-						if (tdp_get(t->vram, &s, x, y) != want)
-							fail_msg("fmt %u op %u sel %u (%u, %u): %x want %x",
-								 fmt, op, sel, x, y,
-								 tdp_get(t->vram, &s, x, y),
-								 want);
+						if (tdp_get(t->vram, &s, x,
+							    y) != want)
+							fail_msg(
+								"fmt %u op %u "
+								"sel %u (%u, "
+								"%u): %x want "
+								"%x",
+								fmt, op, sel, x,
+								y,
+								tdp_get(t->vram,
+									&s, x,
+									y),
+								want);
 					}
 				}
 				TDP_CMD(t, RDC_OP_SET_CLIP,
@@ -389,8 +418,8 @@ static uint32_t ref_conv(const uint32_t *src, uint32_t fmt, int32_t x,
 			 int32_t y, const int32_t *k, uint32_t mode,
 			 uint32_t absf, int32_t div, int32_t bias)
 {
-	static const int32_t gx[9] = { -1, 0, 1, -2, 0, 2, -1, 0, 1 };
-	static const int32_t gy[9] = { -1, -2, -1, 0, 0, 0, 1, 2, 1 };
+	static const int32_t gx[9] = {-1, 0, 1, -2, 0, 2, -1, 0, 1};
+	static const int32_t gy[9] = {-1, -2, -1, 0, 0, 0, 1, 2, 1};
 	uint32_t sh[3], b[3], n = chans(fmt, sh, b), c, out, centre;
 	int32_t dx, dy;
 
@@ -404,8 +433,14 @@ static uint32_t ref_conv(const uint32_t *src, uint32_t fmt, int32_t x,
 				int32_t px = x + dx, py = y + dy;
 				int64_t p;
 
-				px = px < 0 ? 0 : px >= (int32_t)SURF_W ? (int32_t)SURF_W - 1 : px;
-				py = py < 0 ? 0 : py >= (int32_t)SURF_H ? (int32_t)SURF_H - 1 : py;
+				px = px < 0 ? 0
+				     : px >= (int32_t)SURF_W
+					     ? (int32_t)SURF_W - 1
+					     : px;
+				py = py < 0 ? 0
+				     : py >= (int32_t)SURF_H
+					     ? (int32_t)SURF_H - 1
+					     : py;
 				p = (src[py * SURF_W + px] >> sh[c]) & max;
 				s += k[(dy + 1) * 3 + dx + 1] * p;
 				sx += gx[(dy + 1) * 3 + dx + 1] * p;
@@ -438,10 +473,10 @@ static void test_convolve(void **state)
 {
 	struct tdp *t = *state;
 	static const int32_t presets[][11] = {
-		{ 1, 1, 1, 1, 1, 1, 1, 1, 1, 9, 0 },	  /* box */
-		{ 1, 2, 1, 2, 4, 2, 1, 2, 1, 16, 0 },	  /* Gauss */
-		{ 0, -1, 0, -1, 5, -1, 0, -1, 0, 1, 0 },  /* sharpen */
-		{ -1, -1, -1, -1, 8, -1, -1, -1, -1, 1, 128 }, /* Laplace */
+		{1, 1, 1, 1, 1, 1, 1, 1, 1, 9, 0},	     /* box */
+		{1, 2, 1, 2, 4, 2, 1, 2, 1, 16, 0},	     /* Gauss */
+		{0, -1, 0, -1, 5, -1, 0, -1, 0, 1, 0},	     /* sharpen */
+		{-1, -1, -1, -1, 8, -1, -1, -1, -1, 1, 128}, /* Laplace */
 	};
 	uint32_t seed = 99, trial, fmt, x, y, w, h;
 	uint32_t *src = malloc(SURF_W * SURF_H * 4);
@@ -452,7 +487,8 @@ static void test_convolve(void **state)
 	for (trial = 0; trial < 120; trial++) {
 		struct rdc_surface s, d;
 		int32_t k[9], div, bias, sx, sy, dx, dy, cx0, cy0, cx1, cy1, i;
-		uint32_t mode = trial % 5 == 4 ? RDC_CONV_SOBEL : RDC_CONV_KERNEL;
+		uint32_t mode =
+			trial % 5 == 4 ? RDC_CONV_SOBEL : RDC_CONV_KERNEL;
 		uint32_t absf = mode == RDC_CONV_KERNEL && trial % 7 == 3;
 		int inplace = trial % 4 == 1;
 
@@ -489,20 +525,25 @@ static void test_convolve(void **state)
 		cy1 = cy0 + (int32_t)(rng_next(&seed) % 60);
 		for (y = 0; y < SURF_H; y++) {
 			for (x = 0; x < SURF_W; x++) {
-				src[y * SURF_W + x] = tdp_get(t->vram, &s, x, y);
-				dst[y * SURF_W + x] = tdp_get(t->vram, &d, x, y);
+				src[y * SURF_W + x] =
+					tdp_get(t->vram, &s, x, y);
+				dst[y * SURF_W + x] =
+					tdp_get(t->vram, &d, x, y);
 			}
 		}
 		/* the reference over the copies */
 		for (y = 0; y < h; y++) {
 			for (x = 0; x < w; x++) {
-				int32_t ax = sx + (int32_t)x, ay = sy + (int32_t)y;
-				int32_t bx = dx + (int32_t)x, by = dy + (int32_t)y;
+				int32_t ax = sx + (int32_t)x,
+					ay = sy + (int32_t)y;
+				int32_t bx = dx + (int32_t)x,
+					by = dy + (int32_t)y;
 
 				if (ax < 0 || ay < 0 || ax >= (int32_t)SURF_W ||
 				    ay >= (int32_t)SURF_H || bx < cx0 ||
 				    by < cy0 || bx >= cx1 || by >= cy1 ||
-				    bx >= (int32_t)SURF_W || by >= (int32_t)SURF_H)
+				    bx >= (int32_t)SURF_W ||
+				    by >= (int32_t)SURF_H)
 					continue;
 				dst[by * SURF_W + bx] =
 					ref_conv(src, fmt, ax, ay, k, mode,
@@ -522,7 +563,8 @@ static void test_convolve(void **state)
 			tdp_push(t, krow(k + 3));
 			tdp_push(t, krow(k + 6));
 		} else {
-			tdp_push(t, RDC_CMD(RDC_OP_CONVOLVE, RDC_CONV_SOBEL, 4));
+			tdp_push(t,
+				 RDC_CMD(RDC_OP_CONVOLVE, RDC_CONV_SOBEL, 4));
 			tdp_push(t, RDC_XY(sx, sy));
 			tdp_push(t, RDC_XY(dx, dy));
 			tdp_push(t, RDC_WH(w, h));
@@ -534,7 +576,8 @@ static void test_convolve(void **state)
 			for (x = 0; x < SURF_W; x++)
 				if (tdp_get(t->vram, &d, x, y) !=
 				    (dst[y * SURF_W + x] & tdp_mask(fmt)))
-					fail_msg("trial %u fmt %u (%u, %u): %x want %x",
+					fail_msg("trial %u fmt %u (%u, %u): %x "
+						 "want %x",
 						 trial, fmt, x, y,
 						 tdp_get(t->vram, &d, x, y),
 						 dst[y * SURF_W + x]);
@@ -558,8 +601,8 @@ static void test_convolve_errors(void **state)
 {
 	struct tdp *t = *state;
 	struct rdc_surface a = surf(RDC_FMT_I8, 0), b = surf(RDC_FMT_RGB565, 0);
-	const uint32_t ok[7] = { 0, 0, RDC_WH(4, 4), 0x010101, 0x010101,
-				 0x010101, 9 };
+	const uint32_t ok[7] = {0,	  0, RDC_WH(4, 4), 0x010101, 0x010101,
+				0x010101, 9};
 	uint32_t bad[7];
 
 	tdp_set_surface(t, RDC_OP_SET_SRC, &a);
@@ -586,9 +629,9 @@ static void test_convolve_errors(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_histogram),  TDP_TEST(test_map_build),
-		TDP_TEST(test_point_ops),  TDP_TEST(test_map_clut),
-		TDP_TEST(test_convolve),   TDP_TEST(test_convolve_errors),
+		TDP_TEST(test_histogram), TDP_TEST(test_map_build),
+		TDP_TEST(test_point_ops), TDP_TEST(test_map_clut),
+		TDP_TEST(test_convolve),  TDP_TEST(test_convolve_errors),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -15,7 +15,7 @@
 
 static int rdl_chan(struct rdl *r, size_t i, uint32_t *sel)
 {
-	static const char *const names[] = { "luma", "red", "green", "blue" };
+	static const char *const names[] = {"luma", "red", "green", "blue"};
 
 	for (uint32_t k = 0; k < RDC_ARRAY_SIZE(names); k++) {
 		if (rdl_word(r, i, names[k])) {
@@ -23,8 +23,10 @@ static int rdl_chan(struct rdl *r, size_t i, uint32_t *sel)
 			return 0;
 		}
 	}
-	return rdl_err(r, RDC_E_PARSE, "%s: '%.40s' is not luma, red, green "
-		       "or blue", r->tok[0].s, r->tok[i].s);
+	return rdl_err(r, RDC_E_PARSE,
+		       "%s: '%.40s' is not luma, red, green "
+		       "or blue",
+		       r->tok[0].s, r->tok[i].s);
 }
 
 /* X Y W H from token `first` on, as a point and a size word. */
@@ -97,7 +99,7 @@ int rdl_st_histogram(struct rdl *r, uint32_t op)
  */
 int rdl_st_map_build(struct rdl *r, uint32_t op)
 {
-	uint32_t a[3] = { 0, 0, 0 }, mode, lo, hi;
+	uint32_t a[3] = {0, 0, 0}, mode, lo, hi;
 	int ret;
 
 	if (rdl_word(r, 1, "stretch")) {
@@ -116,19 +118,22 @@ int rdl_st_map_build(struct rdl *r, uint32_t op)
 		a[2] = lo | hi << 8;
 	} else if (rdl_word(r, 1, "stretch-auto") ||
 		   rdl_word(r, 1, "equalize")) {
-		mode = rdl_word(r, 1, "equalize") ? RDC_MAP_EQUALIZE :
-						     RDC_MAP_STRETCH_AUTO;
-		if (r->ntok < 4 || r->ntok > (mode == RDC_MAP_EQUALIZE ? 4u : 5u))
+		mode = rdl_word(r, 1, "equalize") ? RDC_MAP_EQUALIZE
+						  : RDC_MAP_STRETCH_AUTO;
+		if (r->ntok < 4 ||
+		    r->ntok > (mode == RDC_MAP_EQUALIZE ? 4u : 5u))
 			return rdl_err(r, RDC_E_PARSE,
 				       "map-build %s HIST MAP%s", r->tok[1].s,
-				       mode == RDC_MAP_EQUALIZE ? "" : " [MIN]");
+				       mode == RDC_MAP_EQUALIZE ? ""
+								: " [MIN]");
 		ret = rdl_u32(r, 2, &a[0]);
 		if (!ret)
 			ret = rdl_u32(r, 3, &a[1]);
 		if (!ret && r->ntok == 5)
 			ret = rdl_u32(r, 4, &a[2]);
 	} else {
-		return rdl_err(r, RDC_E_PARSE, "map-build: '%.40s' is not "
+		return rdl_err(r, RDC_E_PARSE,
+			       "map-build: '%.40s' is not "
 			       "stretch, stretch-auto or equalize",
 			       r->tok[1].s);
 	}
@@ -172,12 +177,12 @@ static const struct {
 	int16_t bias;
 	uint8_t flags;
 } rdl_kernels[] = {
-	{ "box", { 1, 1, 1, 1, 1, 1, 1, 1, 1 }, 9, 0, 0 },
-	{ "gauss", { 1, 2, 1, 2, 4, 2, 1, 2, 1 }, 16, 0, 0 },
-	{ "sharpen", { 0, -1, 0, -1, 5, -1, 0, -1, 0 }, 1, 0, 0 },
-	{ "laplace", { 0, 1, 0, 1, -4, 1, 0, 1, 0 }, 1, 0, RDC_CONV_ABS },
-	{ "emboss", { -2, -1, 0, -1, 1, 1, 0, 1, 2 }, 1, 0, 0 },
-	{ "sobel", { 0 }, 1, 0, RDC_CONV_SOBEL },
+	{"box", {1, 1, 1, 1, 1, 1, 1, 1, 1}, 9, 0, 0},
+	{"gauss", {1, 2, 1, 2, 4, 2, 1, 2, 1}, 16, 0, 0},
+	{"sharpen", {0, -1, 0, -1, 5, -1, 0, -1, 0}, 1, 0, 0},
+	{"laplace", {0, 1, 0, 1, -4, 1, 0, 1, 0}, 1, 0, RDC_CONV_ABS},
+	{"emboss", {-2, -1, 0, -1, 1, 1, 0, 1, 2}, 1, 0, 0},
+	{"sobel", {0}, 1, 0, RDC_CONV_SOBEL},
 };
 
 static uint32_t krow(const int32_t *k)
@@ -222,7 +227,8 @@ int rdl_st_convolve(struct rdl *r, uint32_t op)
 		i = 8;
 	} else {
 		if (end < 17)
-			return rdl_err(r, RDC_E_PARSE, "convolve: a kernel name "
+			return rdl_err(r, RDC_E_PARSE,
+				       "convolve: a kernel name "
 				       "(box gauss sharpen laplace emboss "
 				       "sobel) or 9 coefficients and DIV");
 		for (int t = 0; t < 9; t++, i++) {
@@ -278,8 +284,10 @@ int rdl_st_vram_load(struct rdl *r, uint32_t op)
 	if (fseek(f, 0, SEEK_END) || (n = ftell(f)) < 0 ||
 	    (unsigned long)n > RDL_VRAM_FILE_MAX || fseek(f, 0, SEEK_SET)) {
 		fclose(f);
-		return rdl_err(r, RDC_E_FILE, "vram-load: '%.80s': not a "
-			       "readable file of at most 256 MiB", r->tok[2].s);
+		return rdl_err(r, RDC_E_FILE,
+			       "vram-load: '%.80s': not a "
+			       "readable file of at most 256 MiB",
+			       r->tok[2].s);
 	}
 	buf = malloc((size_t)n + 1);
 	if (!buf) {
@@ -305,7 +313,7 @@ int rdl_st_vram_load(struct rdl *r, uint32_t op)
  */
 int rdl_st_encode(struct rdl *r, uint32_t op)
 {
-	static const char *const codecs[] = { "rle", "dpcm", "btc" };
+	static const char *const codecs[] = {"rle", "dpcm", "btc"};
 	uint32_t codec = 0, addr, xy, wh, fw, fh, w, h, ch = 3, *pix = NULL;
 	uint8_t *smp = NULL, *out = NULL;
 	size_t cap, len;
@@ -317,8 +325,10 @@ int rdl_st_encode(struct rdl *r, uint32_t op)
 		if (rdl_word(r, 1, codecs[k]))
 			codec = RDC_IMG_RLE + k;
 	if (!codec)
-		return rdl_err(r, RDC_E_PARSE, "encode: '%.40s' is not rle, "
-			       "dpcm or btc", r->tok[1].s);
+		return rdl_err(r, RDC_E_PARSE,
+			       "encode: '%.40s' is not rle, "
+			       "dpcm or btc",
+			       r->tok[1].s);
 	ret = rdl_u32(r, 2, &addr);
 	if (!ret)
 		ret = rdl_rect(r, 3, &xy, &wh);
@@ -343,8 +353,10 @@ int rdl_st_encode(struct rdl *r, uint32_t op)
 	if (x < 0 || y < 0 || !w || !h || (uint64_t)x + w > fw ||
 	    (uint64_t)y + h > fh) {
 		free(pix);
-		return rdl_err(r, RDC_E_RANGE, "encode: the rectangle leaves "
-			       "the %ux%u screen", fw, fh);
+		return rdl_err(r, RDC_E_RANGE,
+			       "encode: the rectangle leaves "
+			       "the %ux%u screen",
+			       fw, fh);
 	}
 	cap = rdc_image_bound(codec, w, h, ch);
 	smp = malloc((size_t)w * h * ch);
@@ -403,8 +415,7 @@ int rdl_st_histogram_plot(struct rdl *r, uint32_t op)
 
 		if (bh)
 			ret = rdc_batch_fill_rect(r->b, RDC_X(xy) + (int32_t)c,
-						  RDC_Y(xy) +
-							  (int32_t)(h - bh),
+						  RDC_Y(xy) + (int32_t)(h - bh),
 						  1, bh);
 	}
 	free(cols);

@@ -19,7 +19,7 @@ const char rdcctl_image_usage[] =
 	"                             with --grey); print the sizes and\n"
 	"                             the ratio to the raw samples\n";
 
-static const char *const image_codecs[] = { "rle", "dpcm", "btc" };
+static const char *const image_codecs[] = {"rle", "dpcm", "btc"};
 
 static int image_encode(int argc, char **argv)
 {
@@ -37,7 +37,8 @@ static int image_encode(int argc, char **argv)
 			v = a + 9;
 		} else if (!strcmp(a, "--format")) {
 			if (i + 1 >= argc) {
-				fprintf(stderr, "rdcctl: --format needs a value\n");
+				fprintf(stderr,
+					"rdcctl: --format needs a value\n");
 				return 2;
 			}
 			v = argv[++i];
@@ -45,7 +46,8 @@ static int image_encode(int argc, char **argv)
 			ch = 1;
 			continue;
 		} else if (a[0] == '-' && a[1]) {
-			fprintf(stderr, "rdcctl: image encode: unknown option '%s'\n",
+			fprintf(stderr,
+				"rdcctl: image encode: unknown option '%s'\n",
 				a);
 			return 2;
 		} else if (!in) {
@@ -55,7 +57,9 @@ static int image_encode(int argc, char **argv)
 			out = a;
 			continue;
 		} else {
-			fprintf(stderr, "rdcctl: image encode: unexpected argument '%s'\n",
+			fprintf(stderr,
+				"rdcctl: image encode: unexpected argument "
+				"'%s'\n",
 				a);
 			return 2;
 		}
@@ -64,14 +68,16 @@ static int image_encode(int argc, char **argv)
 			if (!strcmp(v, image_codecs[k]))
 				codec = RDC_IMG_RLE + k;
 		if (!codec) {
-			fprintf(stderr, "rdcctl: image encode: format '%s' is not "
-				"rle, dpcm or btc\n", v);
+			fprintf(stderr,
+				"rdcctl: image encode: format '%s' is not "
+				"rle, dpcm or btc\n",
+				v);
 			return 2;
 		}
 	}
 	if (!codec || !in || !out) {
 		fprintf(stderr, "usage: rdcctl image encode --format "
-			"rle|dpcm|btc [--grey] IN.png OUT\n");
+				"rle|dpcm|btc [--grey] IN.png OUT\n");
 		return 2;
 	}
 	ret = rdc_image_png_read(in, &pix, &w, &h);
@@ -106,12 +112,12 @@ static int image_encode(int argc, char **argv)
 		ret = RDC_E_FILE;
 		goto out;
 	}
-	printf("%s: %ux%u, %u channel%s, %zu bytes of samples\n", in, w, h,
-	       ch, ch == 1 ? "" : "s", raw);
+	printf("%s: %ux%u, %u channel%s, %zu bytes of samples\n", in, w, h, ch,
+	       ch == 1 ? "" : "s", raw);
 	printf("%s: %s, %zu bytes (header %u), ratio %.2f:1, %.3f bits a "
-	       "pixel\n", out, image_codecs[codec - RDC_IMG_RLE], len,
-	       RDC_IMG_HDR_BYTES, (double)raw / (double)len,
-	       8.0 * (double)len / ((double)w * h));
+	       "pixel\n",
+	       out, image_codecs[codec - RDC_IMG_RLE], len, RDC_IMG_HDR_BYTES,
+	       (double)raw / (double)len, 8.0 * (double)len / ((double)w * h));
 out:
 	free(pix);
 	free(smp);
@@ -132,6 +138,6 @@ int rdcctl_image_main(int argc, char **argv)
 	if (i + 1 < argc && !strcmp(argv[i + 1], "encode"))
 		return image_encode(argc - i - 2, argv + i + 2);
 	fprintf(stderr, "usage: rdcctl image encode --format rle|dpcm|btc "
-		"[--grey] IN.png OUT\n");
+			"[--grey] IN.png OUT\n");
 	return 2;
 }
