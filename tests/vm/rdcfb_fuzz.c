@@ -197,12 +197,15 @@ static uint32_t make_bad(enum fuzz_kind kind, uint32_t *w, uint32_t vram)
 			w[n++] = i;
 		break;
 	case FZ_OPCODE: {
-		/* gaps in the opcode map, and the top of it */
+		/*
+		 * gaps in the opcode map, and the top of it: unknown by the
+		 * table the DP and the driver's check both read
+		 */
 		uint32_t op;
 
 		do {
 			op = rnd_below(RDC_OP_COUNT);
-		} while (rdc_op_name(op));
+		} while (rdc_cmd_args(op) != RDC_ARGS_UNKNOWN);
 		w[n++] = RDC_CMD(op, 0, rnd_below(4));
 		for (uint32_t i = 0; i < RDC_CMD_LEN(w[n - 1]); i++)
 			w[n++] = 0;
