@@ -233,7 +233,7 @@ static void fence_wait_msg(uint8_t *b, uint32_t value)
 	struct rdc_proto_wait pw = {.budget = 60ull * RDC_DEFAULT_CORE_HZ,
 				    .needs_dp = 1};
 
-	pw.term[0].kind = RDC_WAIT_EQ;
+	pw.term[0].kind = RDC_WAIT_TEST_EQ;
 	pw.term[0].reg = RDC_REG_FENCE;
 	pw.term[0].mask = ~0u;
 	pw.term[0].value = value;

@@ -1113,7 +1113,7 @@ static void test_stepped_wait_serves_others(void **state)
 	obs = hello_fd(&d, 0);
 	assert_true(ctl >= 0 && obs >= 0);
 	/* a fence value nobody writes: only the budget would end it */
-	pw.term[0].kind = RDC_WAIT_EQ;
+	pw.term[0].kind = RDC_WAIT_TEST_EQ;
 	pw.term[0].reg = RDC_REG_FENCE;
 	pw.term[0].mask = ~0u;
 	pw.term[0].value = 0xdeadbeefu;

@@ -420,7 +420,7 @@ int rdc_mode_set(rdc_dev *dev, uint32_t preset, uint32_t format, uint32_t base)
 
 /* ---- Waits and submission ------------------------------------------------ */
 
-int rdc_wait_one(rdc_dev *dev, enum rdc_wait_kind kind, uint32_t reg,
+int rdc_wait_one(rdc_dev *dev, enum rdc_wait_test kind, uint32_t reg,
 		 uint32_t mask, uint32_t value, bool needs_dp)
 {
 	struct rdc_wait w = {
@@ -464,8 +464,8 @@ int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
 						? (uint32_t)n
 						: RDC_FIFO_DEPTH / 2;
 
-			ret = rdc_wait_one(dev, RDC_WAIT_GE, RDC_REG_FIFO_FREE,
-					   ~0u, want, true);
+			ret = rdc_wait_one(dev, RDC_WAIT_TEST_GE,
+					   RDC_REG_FIFO_FREE, ~0u, want, true);
 			if (ret)
 				return ret;
 			continue;
@@ -495,8 +495,8 @@ int rdc_fence_wait(rdc_dev *dev, uint32_t value)
 
 	if (!dev)
 		return RDC_E_INVAL;
-	ret = rdc_wait_one(dev, RDC_WAIT_WRAP_GE, RDC_REG_FENCE, ~0u, value,
-			   true);
+	ret = rdc_wait_one(dev, RDC_WAIT_TEST_WRAP_GE, RDC_REG_FENCE, ~0u,
+			   value, true);
 	return ret ? ret : rdc_check_error(dev);
 }
 
@@ -530,8 +530,8 @@ int rdc_finish(rdc_dev *dev)
 	if (!ret)
 		ret = rdc_submit(dev, cmd, 2);
 	if (!ret)
-		ret = rdc_wait_one(dev, RDC_WAIT_EQ, RDC_REG_FENCE, ~0u, cmd[1],
-				   true);
+		ret = rdc_wait_one(dev, RDC_WAIT_TEST_EQ, RDC_REG_FENCE, ~0u,
+				   cmd[1], true);
 	/* An application fence with the same value may have matched first;
 	 * nothing is queued behind ours, so idle settles it. */
 	return ret ? ret : rdc_idle_wait(dev);
@@ -544,7 +544,7 @@ int rdc_idle_wait(rdc_dev *dev)
 
 	if (!dev)
 		return RDC_E_INVAL;
-	ret = rdc_wait_one(dev, RDC_WAIT_EQ, RDC_REG_STATUS, mask,
+	ret = rdc_wait_one(dev, RDC_WAIT_TEST_EQ, RDC_REG_STATUS, mask,
 			   RDC_STATUS_FIFO_EMPTY, true);
 	return ret ? ret : rdc_check_error(dev);
 }
@@ -559,8 +559,8 @@ int rdc_vblank_wait(rdc_dev *dev)
 	ret = rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &fc);
 	if (ret)
 		return ret;
-	return rdc_wait_one(dev, RDC_WAIT_WRAP_GE, RDC_REG_FRAME_COUNT, ~0u,
-			    fc + 1, false);
+	return rdc_wait_one(dev, RDC_WAIT_TEST_WRAP_GE, RDC_REG_FRAME_COUNT,
+			    ~0u, fc + 1, false);
 }
 
 int rdc_frame_wait(rdc_dev *dev)
@@ -580,8 +580,8 @@ int rdc_frame_wait(rdc_dev *dev)
 	 * vertical blanking one would do for VRAM contents, but not for a
 	 * mode set there, which is latched only at the next vblank.
 	 */
-	return rdc_wait_one(dev, RDC_WAIT_WRAP_GE, RDC_REG_FRAME_COUNT, ~0u,
-			    fc + 2, false);
+	return rdc_wait_one(dev, RDC_WAIT_TEST_WRAP_GE, RDC_REG_FRAME_COUNT,
+			    ~0u, fc + 2, false);
 }
 
 /* ---- Host <-> screen ---------------------------------------------------- */
@@ -630,9 +630,10 @@ int rdc_readback(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h, void *buf,
 		struct rdc_wait wt = {
 			.term =
 				{
-					{RDC_WAIT_GE, RDC_REG_RDATA_COUNT, ~0u,
-					 1},
-					{RDC_WAIT_EQ, RDC_REG_FENCE, ~0u, seq},
+					{RDC_WAIT_TEST_GE, RDC_REG_RDATA_COUNT,
+					 ~0u, 1},
+					{RDC_WAIT_TEST_EQ, RDC_REG_FENCE, ~0u,
+					 seq},
 				},
 			.needs_dp = true,
 		};

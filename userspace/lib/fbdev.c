@@ -285,14 +285,14 @@ static int fbdev_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 	return 0;
 }
 
-static uint32_t fbdev_wait_kind(enum rdc_wait_kind k)
+static uint32_t fbdev_wait_kind(enum rdc_wait_test k)
 {
 	switch (k) {
-	case RDC_WAIT_GE:
+	case RDC_WAIT_TEST_GE:
 		return RDCFB_WAIT_GE;
-	case RDC_WAIT_WRAP_GE:
+	case RDC_WAIT_TEST_WRAP_GE:
 		return RDCFB_WAIT_WRAP_GE;
-	case RDC_WAIT_EQ:
+	case RDC_WAIT_TEST_EQ:
 		return RDCFB_WAIT_EQ;
 	default:
 		return RDCFB_WAIT_NONE;
@@ -307,7 +307,7 @@ static int fbdev_wait(rdc_dev *dev, const struct rdc_wait *w)
 	uint64_t ms;
 
 	memset(&rw, 0, sizeof(rw));
-	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
 		rw.term[i].kind = fbdev_wait_kind(w->term[i].kind);
 		rw.term[i].reg = w->term[i].reg;
 		rw.term[i].mask = w->term[i].mask;

@@ -534,7 +534,7 @@ int rdc_client_wait(rdc_dev *dev, const struct rdc_wait *w)
 				    .needs_dp = w->needs_dp};
 	uint8_t b[RDC_PROTO_WAIT_SIZE];
 
-	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
 		pw.term[i].kind = w->term[i].kind;
 		pw.term[i].reg = w->term[i].reg;
 		pw.term[i].mask = w->term[i].mask;

@@ -73,7 +73,7 @@ int rdc_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 
 /*
  * Each turn waits until one watched pin differs from the level it had,
- * two terms at most (TE and IRQ: RDC_WAIT_TERMS), then looks at what
+ * two terms at most (TE and IRQ: RDC_WAIT_TEST_TERMS), then looks at what
  * changed: an edge of an unwanted kind only moves the reference on.
  */
 int rdc_pins_wait_regs(rdc_dev *dev, uint32_t pins, uint32_t edges,
@@ -84,7 +84,7 @@ int rdc_pins_wait_regs(rdc_dev *dev, uint32_t pins, uint32_t edges,
 	uint32_t cur, next;
 	int ret;
 
-	_Static_assert(RDC_ARRAY_SIZE(order) <= RDC_WAIT_TERMS,
+	_Static_assert(RDC_ARRAY_SIZE(order) <= RDC_WAIT_TEST_TERMS,
 		       "one wait term per output pin");
 	ret = rdc_sim_time(dev, &start);
 	if (!ret)
@@ -101,7 +101,7 @@ int rdc_pins_wait_regs(rdc_dev *dev, uint32_t pins, uint32_t edges,
 			if (!(pins & order[i]))
 				continue;
 			w.term[k++] = (struct rdc_wait_term){
-				.kind = RDC_WAIT_EQ,
+				.kind = RDC_WAIT_TEST_EQ,
 				.reg = RDC_REG_PINS,
 				.mask = order[i],
 				.value = ~cur & order[i],

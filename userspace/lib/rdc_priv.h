@@ -19,24 +19,17 @@
 /*
  * A wait condition, evaluated by the backend on its side of the transport
  * (so a remote device can wait without a round trip per check).  The wait
- * ends when ANY of the terms holds.
+ * ends when ANY of the terms holds.  The tests are the core's (enum
+ * rdc_wait_test, RDC_WAIT_TEST_TERMS in hw-sim/hw.h); the wire carries
+ * their values, and rdcfb's ioctl its own RDCFB_WAIT_* (fbdev.c maps them).
  */
-enum rdc_wait_kind {
-	RDC_WAIT_NONE,	  /* unused term */
-	RDC_WAIT_GE,	  /* (reg & mask) >= value, unsigned */
-	RDC_WAIT_WRAP_GE, /* (int32_t)((reg & mask) - value) >= 0 */
-	RDC_WAIT_EQ,	  /* (reg & mask) == value */
-};
-
-#define RDC_WAIT_TERMS 2
-
 struct rdc_wait_term {
-	enum rdc_wait_kind kind;
+	enum rdc_wait_test kind;
 	uint32_t reg, mask, value;
 };
 
 struct rdc_wait {
-	struct rdc_wait_term term[RDC_WAIT_TERMS];
+	struct rdc_wait_term term[RDC_WAIT_TEST_TERMS];
 	/* Fail with RDC_E_HALTED if the DP halts: set for conditions that
 	 * only the DP can make true. */
 	bool needs_dp;
@@ -47,25 +40,17 @@ struct rdc_wait {
 /* Ten simulated seconds of the default 100 MHz core clock. */
 #define RDC_WAIT_BUDGET_DEFAULT (10ull * RDC_DEFAULT_CORE_HZ)
 
-_Static_assert(RDC_WAIT_TERMS == RDC_WAIT_TEST_TERMS, "one wait, two forms");
-
 /* The chip's form of a wait (hw-sim/wait.c), budget defaulted. */
 static inline void rdc_wait_to_hw(const struct rdc_wait *w,
 				  struct rdc_hw_wait *out)
 {
-	static const uint32_t test[] = {
-		[RDC_WAIT_NONE] = RDC_WAIT_TEST_NONE,
-		[RDC_WAIT_GE] = RDC_WAIT_TEST_GE,
-		[RDC_WAIT_WRAP_GE] = RDC_WAIT_TEST_WRAP_GE,
-		[RDC_WAIT_EQ] = RDC_WAIT_TEST_EQ,
-	};
-
-	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
 		const struct rdc_wait_term *t = &w->term[i];
 
 		out->term[i] = (struct rdc_wait_cond){
-			.test = (unsigned int)t->kind < RDC_ARRAY_SIZE(test)
-					? test[t->kind]
+			/* an unknown test is an unused term */
+			.test = (unsigned int)t->kind <= RDC_WAIT_TEST_EQ
+					? (uint32_t)t->kind
 					: RDC_WAIT_TEST_NONE,
 			.reg = t->reg,
 			.mask = t->mask,
@@ -210,7 +195,7 @@ struct rdc_dev {
 };
 
 /* Run a wait with one term (core.c). */
-int rdc_wait_one(rdc_dev *dev, enum rdc_wait_kind kind, uint32_t reg,
+int rdc_wait_one(rdc_dev *dev, enum rdc_wait_test kind, uint32_t reg,
 		 uint32_t mask, uint32_t value, bool needs_dp);
 /*
  * The FIFO_DATA loop (core.c): words go in as FIFO_FREE allows; on a full

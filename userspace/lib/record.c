@@ -258,7 +258,7 @@ static int rec_wait(rdc_dev *dev, const struct rdc_wait *w)
 	uint8_t b[RDC_PROTO_WAIT_SIZE + 4];
 	int ret;
 
-	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
+	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
 		pw.term[i].kind = w->term[i].kind;
 		pw.term[i].reg = w->term[i].reg;
 		pw.term[i].mask = w->term[i].mask;
@@ -463,10 +463,10 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 			return RDC_E_PARSE;
 		w.budget = pw.budget;
 		w.needs_dp = pw.needs_dp;
-		for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
-			if (pw.term[i].kind > RDC_WAIT_EQ)
+		for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
+			if (pw.term[i].kind > RDC_WAIT_TEST_EQ)
 				return RDC_E_PARSE;
-			w.term[i].kind = (enum rdc_wait_kind)pw.term[i].kind;
+			w.term[i].kind = (enum rdc_wait_test)pw.term[i].kind;
 			w.term[i].reg = pw.term[i].reg;
 			w.term[i].mask = pw.term[i].mask;
 			w.term[i].value = pw.term[i].value;

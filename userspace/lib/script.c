@@ -471,8 +471,8 @@ static int st_readback(struct rdl *r, uint32_t op)
 	struct rdc_wait wt = {
 		.term =
 			{
-				{RDC_WAIT_GE, RDC_REG_RDATA_COUNT, ~0u, 1},
-				{RDC_WAIT_EQ, RDC_REG_STATUS, idle,
+				{RDC_WAIT_TEST_GE, RDC_REG_RDATA_COUNT, ~0u, 1},
+				{RDC_WAIT_TEST_EQ, RDC_REG_STATUS, idle,
 				 RDC_STATUS_FIFO_EMPTY},
 			},
 		.needs_dp = true,

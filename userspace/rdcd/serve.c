@@ -708,14 +708,14 @@ static int rdcd_wait_from_proto(const uint8_t *pl, size_t len,
 		return RDC_ST_RANGE;
 	w->budget = pw.budget;
 	w->needs_dp = pw.needs_dp;
-	for (unsigned int i = 0; i < RDC_WAIT_TERMS; i++) {
-		if (pw.term[i].kind > RDC_WAIT_EQ)
+	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
+		if (pw.term[i].kind > RDC_WAIT_TEST_EQ)
 			return RDC_ST_INVAL;
-		if (pw.term[i].kind != RDC_WAIT_NONE &&
+		if (pw.term[i].kind != RDC_WAIT_TEST_NONE &&
 		    (!rdcd_reg_ok(pw.term[i].reg) ||
 		     rdcd_reg_read_changes(pw.term[i].reg)))
 			return RDC_ST_INVAL;
-		w->term[i].kind = (enum rdc_wait_kind)pw.term[i].kind;
+		w->term[i].kind = (enum rdc_wait_test)pw.term[i].kind;
 		w->term[i].reg = pw.term[i].reg;
 		w->term[i].mask = pw.term[i].mask;
 		w->term[i].value = pw.term[i].value;
@@ -782,7 +782,7 @@ static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 			return ret;
 		if (!room) {
 			struct rdc_wait rw = {
-				.term[0] = {.kind = RDC_WAIT_GE,
+				.term[0] = {.kind = RDC_WAIT_TEST_GE,
 					    .reg = RDC_REG_FIFO_FREE,
 					    .mask = ~0u,
 					    .value = left < RDC_FIFO_DEPTH / 2
