@@ -6,7 +6,8 @@
  * badly formed) and of how the protocol client reads (any sizes).  What
  * comes out must always be a stream of whole messages whose headers pass
  * the caps, with each interrupt event whole between two of them; every
- * payload then goes through the protocol decoders, frames included.
+ * payload then goes through the protocol decoders, frames included.  The
+ * same bytes are also parsed as a usb: address (rdc_usb_addr_parse).
  * Built and run by `make fuzz` beside fuzz_proto.
  */
 #include <stddef.h>
@@ -118,6 +119,30 @@ static void fuzz_event(uint8_t *ev, const uint8_t *p)
 	memcpy(ev + RDC_PROTO_HDR_SIZE, p, 12);
 }
 
+/*
+ * The same bytes as a usb: address: what parses is whole, and a path
+ * formats back to text that parses to the same path.
+ */
+static void fuzz_addr(const uint8_t *data, size_t size)
+{
+	struct rdc_usb_addr a, b;
+	char text[64];
+
+	if (rdc_usb_addr_parse((const char *)data, RDC_MIN(size, 300), &a))
+		return;
+	if (a.kind > RDC_USB_ADDR_SERIAL || a.nports > RDC_USB_MAX_PORTS ||
+	    !memchr(a.serial, 0, sizeof(a.serial)))
+		abort();
+	if (a.kind != RDC_USB_ADDR_PATH)
+		return;
+	if (rdc_usb_path_format(text, sizeof(text), a.bus, a.ports,
+				a.nports) ||
+	    rdc_usb_addr_parse(text, strlen(text), &b) ||
+	    b.kind != RDC_USB_ADDR_PATH || b.bus != a.bus ||
+	    b.nports != a.nports || memcmp(b.ports, a.ports, a.nports))
+		abort();
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -128,6 +153,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	uint64_t good = 0;
 	size_t i = 0;
 
+	fuzz_addr(data, size);
 	if (rdc_usb_rx_init(&rx, FUZZ_RING))
 		return 0;
 	memset(&r, 0, sizeof(r));
