@@ -135,8 +135,7 @@ static void fuzz_addr(const uint8_t *data, size_t size)
 		abort();
 	if (a.kind != RDC_USB_ADDR_PATH)
 		return;
-	if (rdc_usb_path_format(text, sizeof(text), a.bus, a.ports,
-				a.nports) ||
+	if (rdc_usb_path_format(text, sizeof(text), a.bus, a.ports, a.nports) ||
 	    rdc_usb_addr_parse(text, strlen(text), &b) ||
 	    b.kind != RDC_USB_ADDR_PATH || b.bus != a.bus ||
 	    b.nports != a.nports || memcmp(b.ports, a.ports, a.nports))
