@@ -209,6 +209,9 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c);
 /* After simulated time moved: finish pending requests, push IRQ events. */
 void rdcd_after_advance(struct rdcd *d);
 bool rdcd_has_pending(const struct rdcd *d);
+/* Paced and fast modes, inside the loop's advance: refill the FIFO from
+ * the pending SUBMITs; true while one still has words left. */
+bool rdcd_feed_pending(struct rdcd *d);
 /* Close connections past their HELLO deadline; ns until the next one is
  * due (UINT64_MAX: none). */
 uint64_t rdcd_hello_deadlines(struct rdcd *d);

@@ -940,6 +940,19 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 	return true;
 }
 
+bool rdcd_feed_pending(struct rdcd *d)
+{
+	bool more = false;
+
+	for (struct rdcd_client *c = d->clients; c; c = c->next) {
+		if (c->pend != RDCD_PEND_SUBMIT || c->dead)
+			continue;
+		if (!rdcd_pending_step(d, c))
+			more = true;
+	}
+	return more;
+}
+
 bool rdcd_has_pending(const struct rdcd *d)
 {
 	for (const struct rdcd_client *c = d->clients; c; c = c->next)

@@ -6,9 +6,10 @@
 # first), and its card offers exactly those modes (sysfs, modetest);
 # drm_pattern sets 640x480, 800x600 and 1024x768 with a known pattern and
 # rdcd's frame (read by an observer) equals it in RGB565 exactly; a
-# damaged rectangle changes only itself, for far fewer bytes; fbcon draws
-# on the fbdev emulation's /dev/fbN and its text reaches the frames;
-# unplugging while drawing is clean and plugging in brings the card back.
+# damaged rectangle changes only itself, for far fewer bytes; the
+# full-screen and 64x64 update rates as figures.  (Kept short for CI:
+# unplug under load is usb-unplug's and usb-hostile's, on the same
+# FunctionFS plumbing.)
 # vm-module: dummy_hcd
 # vm-module: libcomposite
 # vm-module: usb_f_fs
@@ -108,47 +109,8 @@ check "drm_pattern 1024x768, then a 40x30 rectangle: exact, few bytes" \
 	"$DRMP" --uri "$OBS" --mode 1024x768 --rect 300,200,40,30
 grep '^#' "$T/check.out"
 check "figures: full-screen and 64x64 updates (below)" \
-	"$DRMP" --uri "$OBS" --mode 640x480 --bench 2
+	"$DRMP" --uri "$OBS" --mode 640x480 --bench 1
 grep '^# bench' "$T/check.out"
 
-# fbcon: the fbdev emulation's framebuffer carries the console
-check "the fbdev emulation gives /dev/fbN (udl's)" sh -c '
-	for f in /sys/class/graphics/fb*; do cat "$f/name"; done | grep -q udl'
-crc0=$("$DRMP" --crc "$OBS")
-for i in $(seq 30); do echo "RDC-1 udl fbcon line $i" >/dev/tty1; done
-fbcon_changed() {
-	i=0
-	while [ $i -lt 200 ]; do
-		crc=$("$DRMP" --crc "$OBS")
-		[ -n "$crc" ] && [ "$crc" != "$crc0" ] && { echo "frame $crc0 -> $crc"; return 0; }
-		sleep 0.1
-		i=$((i + 1))
-	done
-	echo "the frame stayed $crc0"
-	return 1
-}
-check "fbcon's text changes the RDC-1's frames" fbcon_changed
-
-# unplug while a client draws full frames
-"$DRMP" --mode 1024x768 --loop >"$T/loop.log" 2>&1 &
-loop=$!
-sleep 2
-dmesg -c >/dev/null 2>&1
-check "unplug (unbind the UDC) while drawing" usb_unplug
-check "the drawing client sees the card go and exits" sh -c '
-	i=0; while kill -0 $1 2>/dev/null && [ $i -lt 300 ]; do sleep 0.1; i=$((i+1)); done
-	! kill -0 $1 2>/dev/null' sh $loop
-wait $loop
-echo "# loop client exit status $?: $(cat "$T/loop.log")"
-dmesg >"$T/dmesg2.txt" 2>&1
-check "dmesg after the unplug: no oops, BUG or warning" sh -c '
-	grep -Ei "udl|drm" "$1" | sed "s/^/    /"
-	! grep -Ei "oops|bug:|warning:|call trace" "$1"' sh "$T/dmesg2.txt"
-check "rdcd still runs" usb_rdcd_alive
-replug() {
-	usb_replug && udl_card 60
-}
-check "plugging in again brings the card back" replug
-check "and it draws again" "$DRMP" --uri "$OBS" --mode 640x480
 check "the gadget goes down cleanly" usb_gadget_down
 finish
