@@ -15,6 +15,7 @@ HELLO, REG_READ, REG_WRITE, VRAM_READ, VRAM_WRITE, SUBMIT, WAIT, STEP, \
 REG_STATUS, REG_IRQ_STATUS, REG_IRQ_ENABLE = 0x014, 0x018, 0x01c
 REG_FB_FORMAT, REG_MODE_PRESET, REG_FRAME_COUNT = 0x130, 0x140, 0x13c
 OP_SET_FG, OP_SET_DST, OP_FILL_RECT, OP_FENCE = 0x10, 0x14, 0x24, 0x01
+OP_CALL, OP_JUMP = 0x06, 0x08
 
 
 def u32(*v):
@@ -137,6 +138,29 @@ def seeds():
         s.hello(0, control=True)
         s.turns(4)
         out["two-" + name] = s.b
+
+    # a RESET read one request ahead of a pending STEP, WAIT or SUBMIT
+    # (the SUBMIT calls a display list that jumps to itself)
+    for mode, name in ((2, "stepped"), (1, "fast"), (0, "paced")):
+        s = Seed(mode)
+        s.connect()
+        s.connect()
+        s.hello(0, control=True)
+        s.hello(1)
+        s.msg(0, STEP, struct.pack("<Q", 900000))
+        s.msg(0, RESET, u32(0))
+        s.msg(0, WAIT, wait(2000000, 1))
+        s.msg(1, PING)
+        s.msg(0, RESET, u32(1))
+        s.msg(0, VRAM_WRITE, u32(0x8000) + cmd(OP_JUMP, 0x8000))
+        s.msg(0, SUBMIT, cmd(OP_CALL, 0x8000) + draw())
+        s.msg(1, STATS)
+        s.msg(0, RESET, u32(0))
+        s.msg(0, SUBMIT, cmd(OP_CALL, 0x8000))
+        s.time(10)
+        s.msg(0, RESET, u32(1))
+        s.time(10)
+        out["reset-ahead-" + name] = s.b
 
     s = Seed(0, token=True)
     for _ in range(4):
