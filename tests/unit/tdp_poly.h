@@ -64,50 +64,6 @@ static inline void tpp_fill_poly(struct tdp *t, const int32_t *xy, uint32_t n,
 	free(w);
 }
 
-enum { TPP_READ, TPP_WRITE, TPP_RMW };
-
-/*
- * bus.h, transcribed: bursts at multiples of BURST_BEATS * BYTES; per
- * burst beats * T_BEAT + misses * T_ROW_MISS, plus for written bursts
- * T_TURN + rmw_beats * T_BEAT when any beat is read-modify-written.
- */
-static inline uint64_t tpp_bus(uint32_t *open, uint64_t a, uint64_t n,
-			       int kind, int head_partial, int tail_partial)
-{
-	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
-	uint64_t end = a + n, first_beat = a / RDC_BUS_BYTES;
-	uint64_t last_beat = (end - 1) / RDC_BUS_BYTES, cost = 0;
-	int head = head_partial || a % RDC_BUS_BYTES;
-	int tail = tail_partial || end % RDC_BUS_BYTES;
-
-	while (a < end) {
-		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
-
-		if (be > end)
-			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES; b++) {
-			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
-						  RDC_DRAM_ROW_BYTES);
-
-			beats++;
-			if (row != *open) {
-				cost += RDC_T_ROW_MISS;
-				*open = row;
-			}
-			if (kind == TPP_RMW ||
-			    (kind == TPP_WRITE &&
-			     ((b == first_beat && head) ||
-			      (b == last_beat && tail))))
-				rmw++;
-		}
-		cost += beats * RDC_T_BEAT;
-		if (kind != TPP_READ && rmw)
-			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
-		a = be;
-	}
-	return cost;
-}
-
 /* Cost of writing pixels [x, x + n) of row y of s (32 bpp or 8 bpp). */
 static inline uint64_t tpp_row_cost(uint32_t *open,
 				    const struct rdc_surface *s, int32_t x,
@@ -115,9 +71,9 @@ static inline uint64_t tpp_row_cost(uint32_t *open,
 {
 	uint32_t bpp = tdp_bpp(s->format);
 
-	return tpp_bus(open, s->base + (uint64_t)y * s->stride +
-				     (uint64_t)x * bpp / 8,
-		       (uint64_t)n * bpp / 8, kind, 0, 0);
+	return tdp_bus_edges(
+		open, s->base + (uint64_t)y * s->stride + (uint64_t)x * bpp / 8,
+		(uint64_t)n * bpp / 8, kind, 0, 0);
 }
 
 static inline uint32_t tpp_last_cycles(struct tdp *t)

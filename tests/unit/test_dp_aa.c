@@ -468,46 +468,6 @@ static void test_aa_translate(void **state)
 
 /* ---- cycle counts ------------------------------------------------------ */
 
-enum { K_READ, K_WRITE, K_RMW };
-
-/* bus.h's formula, transcribed (as in test_dp_cmds.c). */
-static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind,
-			 int head_partial, int tail_partial)
-{
-	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
-	uint64_t end = a + n, first_beat = a / RDC_BUS_BYTES;
-	uint64_t last_beat = (end - 1) / RDC_BUS_BYTES, cost = 0;
-	int head = head_partial || a % RDC_BUS_BYTES;
-	int tail = tail_partial || end % RDC_BUS_BYTES;
-
-	while (a < end) {
-		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
-
-		if (be > end)
-			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES;
-		     b++) {
-			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
-						  RDC_DRAM_ROW_BYTES);
-
-			beats++;
-			if (row != *open) {
-				cost += RDC_T_ROW_MISS;
-				*open = row;
-			}
-			if (kind == K_RMW ||
-			    (kind == K_WRITE && ((b == first_beat && head) ||
-						 (b == last_beat && tail))))
-				rmw++;
-		}
-		cost += beats * RDC_T_BEAT;
-		if (rmw)
-			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
-		a = be;
-	}
-	return cost;
-}
-
 static uint32_t last_cycles(struct tdp *t)
 {
 	return rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES);
@@ -528,7 +488,8 @@ static void test_aa_cycles(void **state)
 	tdp_drain(t);
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE +
-	       bus_span(&open, 10 * 4 + 7 * 2560, 31 * 4, K_RMW, 0, 0);
+	       tdp_bus_edges(&open, 10 * 4 + 7 * 2560, 31 * 4, TDP_BUS_RMW, 0,
+			     0);
 	TDP_CMD(t, RDC_OP_AA_LINE, RDC_XY(10, 7), RDC_XY(40, 7));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -536,17 +497,17 @@ static void test_aa_cycles(void **state)
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (y = 10; y <= 20; y++)
-		want += bus_span(&open, 5 * 4 + (uint64_t)y * 2560, 4, K_RMW, 0,
-				 0);
+		want += tdp_bus_edges(&open, 5 * 4 + (uint64_t)y * 2560, 4,
+				      TDP_BUS_RMW, 0, 0);
 	TDP_CMD(t, RDC_OP_AA_LINE, RDC_XY(5, 20), RDC_XY(5, 10));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
 
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE +
-	       bus_span(&open, 0, 7 * 4, K_RMW, 0, 0) +
-	       bus_span(&open, 2560 + 4, 6 * 4, K_RMW, 0, 0) +
-	       bus_span(&open, 2560 + 7 * 4, 4, K_RMW, 0, 0);
+	       tdp_bus_edges(&open, 0, 7 * 4, TDP_BUS_RMW, 0, 0) +
+	       tdp_bus_edges(&open, 2560 + 4, 6 * 4, TDP_BUS_RMW, 0, 0) +
+	       tdp_bus_edges(&open, 2560 + 7 * 4, 4, TDP_BUS_RMW, 0, 0);
 	TDP_CMD(t, RDC_OP_AA_LINE, RDC_XY(7, 1), RDC_XY(0, 0));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -568,7 +529,7 @@ static void test_aa_cycles_indexed(void **state)
 	tdp_drain(t);
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE +
-	       bus_span(&open, 3 + 9 * 640, 50, K_WRITE, 0, 0);
+	       tdp_bus_edges(&open, 3 + 9 * 640, 50, TDP_BUS_WRITE, 0, 0);
 	TDP_CMD(t, RDC_OP_AA_LINE, RDC_XY(3, 9), RDC_XY(52, 9));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -577,7 +538,7 @@ static void test_aa_cycles_indexed(void **state)
 	tdp_drain(t);
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE +
-	       bus_span(&open, 1 + 9 * 320, 25, K_WRITE, 1, 0);
+	       tdp_bus_edges(&open, 1 + 9 * 320, 25, TDP_BUS_WRITE, 1, 0);
 	TDP_CMD(t, RDC_OP_AA_LINE, RDC_XY(3, 9), RDC_XY(52, 9));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);

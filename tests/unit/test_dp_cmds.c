@@ -623,50 +623,6 @@ static void test_polyline_closed_xor(void **state)
 
 /* ---- cycle counts ---------------------------------------------------- */
 
-enum { K_READ, K_WRITE, K_RMW };
-
-/*
- * bus.h, transcribed: bursts at multiples of BURST_BEATS * BYTES; per
- * burst beats * T_BEAT + misses * T_ROW_MISS, plus for written bursts
- * T_TURN + rmw_beats * T_BEAT when any beat is read-modify-written.
- */
-static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind,
-			 int head_partial, int tail_partial)
-{
-	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
-	uint64_t end = a + n, first_beat = a / RDC_BUS_BYTES;
-	uint64_t last_beat = (end - 1) / RDC_BUS_BYTES, cost = 0;
-	int head = head_partial || a % RDC_BUS_BYTES;
-	int tail = tail_partial || end % RDC_BUS_BYTES;
-
-	while (a < end) {
-		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
-
-		if (be > end)
-			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES; b++) {
-			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
-						  RDC_DRAM_ROW_BYTES);
-
-			beats++;
-			if (row != *open) {
-				cost += RDC_T_ROW_MISS;
-				*open = row;
-			}
-			if (kind == K_RMW ||
-			    (kind == K_WRITE &&
-			     ((b == first_beat && head) ||
-			      (b == last_beat && tail))))
-				rmw++;
-		}
-		cost += beats * RDC_T_BEAT;
-		if (rmw)
-			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
-		a = be;
-	}
-	return cost;
-}
-
 static uint32_t last_cycles(struct tdp *t)
 {
 	return rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES);
@@ -683,8 +639,8 @@ static void test_cycles_fill(void **state)
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (y = 0; y < 4; y++)
-		want += bus_span(&open, 64 * 4 + (uint64_t)(10 + y) * 2560,
-				 32 * 4, K_WRITE, 0, 0);
+		want += tdp_bus_edges(&open, 64 * 4 + (uint64_t)(10 + y) * 2560,
+				      32 * 4, TDP_BUS_WRITE, 0, 0);
 	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(64, 10), RDC_WH(32, 4));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -701,7 +657,7 @@ static void test_cycles_pixel(void **state)
 	tdp_drain(t);
 	open = t->hw.bus.open_row;
 	want = 2 * RDC_T_FIFO_WORD + RDC_T_DECODE +
-	       bus_span(&open, 5 * 4 + 7 * 2560, 4, K_WRITE, 0, 0);
+	       tdp_bus_edges(&open, 5 * 4 + 7 * 2560, 4, TDP_BUS_WRITE, 0, 0);
 	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(5, 7));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -722,8 +678,8 @@ static void test_cycles_rmw(void **state)
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (y = 0; y < 3; y++)
-		want += bus_span(&open, 3 * 4 + (uint64_t)(100 + y) * 2560,
-				 300 * 4, K_RMW, 0, 0);
+		want += tdp_bus_edges(&open, 3 * 4 + (uint64_t)(100 + y) * 2560,
+				      300 * 4, TDP_BUS_RMW, 0, 0);
 	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(3, 100), RDC_WH(300, 3));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -734,7 +690,8 @@ static void test_cycles_rmw(void **state)
 	tdp_drain(t);
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE +
-	       bus_span(&open, 0x100000 + 64 * 2 + 1, 20, K_WRITE, 1, 1);
+	       tdp_bus_edges(&open, 0x100000 + 64 * 2 + 1, 20, TDP_BUS_WRITE, 1,
+			     1);
 	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(3, 2), RDC_WH(38, 1));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -751,8 +708,8 @@ static void test_cycles_column(void **state)
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (y = 20; y <= 29; y++)
-		want += bus_span(&open, 5 * 4 + (uint64_t)y * 2560, 4, K_WRITE,
-				 0, 0);
+		want += tdp_bus_edges(&open, 5 * 4 + (uint64_t)y * 2560, 4,
+				      TDP_BUS_WRITE, 0, 0);
 	TDP_CMD(t, RDC_OP_LINE, RDC_XY(5, 20), RDC_XY(5, 29));
 	tdp_drain(t);
 	assert_int_equal(last_cycles(t), want);
@@ -774,9 +731,10 @@ static void test_cycles_ring(void **state)
 	rdc_hw_write(&t->hw, RDC_REG_RING_TAIL, tail);
 	open = t->hw.bus.open_row;
 	/* the header is read on its own, then the two argument words */
-	want = bus_span(&open, base, 4, K_READ, 0, 0) +
-	       bus_span(&open, base + 4, 8, K_READ, 0, 0) + RDC_T_DECODE +
-	       bus_span(&open, 0, 16 * 4, K_WRITE, 0, 0);
+	want = tdp_bus_edges(&open, base, 4, TDP_BUS_READ, 0, 0) +
+	       tdp_bus_edges(&open, base + 4, 8, TDP_BUS_READ, 0, 0) +
+	       RDC_T_DECODE +
+	       tdp_bus_edges(&open, 0, 16 * 4, TDP_BUS_WRITE, 0, 0);
 	rdc_hw_write(&t->hw, RDC_REG_CONTROL,
 		     RDC_CONTROL_DP_EN | RDC_CONTROL_RING_EN);
 	rdc_hw_run_until(&t->hw, t->hw.now + TDP_RUN_STEP);
@@ -804,8 +762,8 @@ static void test_cycles_vblank(void **state)
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (y = 0; y < 16; y++)
-		want += bus_span(&open, (uint64_t)(200 + y) * 2560, 640 * 4,
-				 K_WRITE, 0, 0);
+		want += tdp_bus_edges(&open, (uint64_t)(200 + y) * 2560,
+				      640 * 4, TDP_BUS_WRITE, 0, 0);
 	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(0, 200), RDC_WH(640, 16));
 	rdc_hw_run_until(&t->hw, t->hw.now + 5000);
 	assert_true(rdc_hw_read(&t->hw, RDC_REG_STATUS) & RDC_STATUS_VBLANK);

@@ -239,4 +239,63 @@ static inline uint32_t tdp_fnv(uint32_t h, const void *p, size_t n)
 	return h;
 }
 
+/*
+ * The VRAM bus cost of one span: hw-sim/bus.h's formula transcribed beat
+ * by beat, independently of bus.h's own code, the one model the cycle
+ * tests hold the chip against.  Bytes [a, a + n) go in bursts at
+ * multiples of RDC_BUS_BURST_BEATS * RDC_BUS_BYTES; a burst costs beats *
+ * T_BEAT + misses * T_ROW_MISS (*open is the open DRAM row, updated),
+ * plus T_TURN + rmw_beats * T_BEAT when any of its beats is
+ * read-modify-written: every beat of an RMW span; of a write, its first
+ * and last beat when partly written (not aligned to the bus, or
+ * head_partial / tail_partial: sub-byte pixels at the edges).
+ */
+enum { TDP_BUS_READ, TDP_BUS_WRITE, TDP_BUS_RMW };
+
+static inline uint64_t tdp_bus_edges(uint32_t *open, uint64_t a, uint64_t n,
+				     int kind, int head_partial,
+				     int tail_partial)
+{
+	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
+	uint64_t end = a + n, first_beat = a / RDC_BUS_BYTES;
+	uint64_t last_beat = (end - 1) / RDC_BUS_BYTES, cost = 0;
+	int head = head_partial || a % RDC_BUS_BYTES;
+	int tail = tail_partial || end % RDC_BUS_BYTES;
+
+	while (a < end) {
+		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
+
+		if (be > end)
+			be = end;
+		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES;
+		     b++) {
+			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
+						  RDC_DRAM_ROW_BYTES);
+
+			beats++;
+			if (row != *open) {
+				cost += RDC_T_ROW_MISS;
+				*open = row;
+			}
+			if (kind == TDP_BUS_RMW ||
+			    (kind == TDP_BUS_WRITE &&
+			     ((b == first_beat && head) ||
+			      (b == last_beat && tail))))
+				rmw++;
+		}
+		cost += beats * RDC_T_BEAT;
+		if (rmw)
+			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
+		a = be;
+	}
+	return cost;
+}
+
+/* tdp_bus_edges with the edges partial only where they are not aligned. */
+static inline uint64_t tdp_bus_span(uint32_t *open, uint64_t a, uint64_t n,
+				    int kind)
+{
+	return tdp_bus_edges(open, a, n, kind, 0, 0);
+}
+
 #endif /* TEST_DP_COMMON_H */

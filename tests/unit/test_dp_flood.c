@@ -379,11 +379,11 @@ static void test_cycles(void **state)
 	tdp_drain(t);
 	open = t->hw.bus.open_row;
 	want = 2 * RDC_T_FIFO_WORD + RDC_T_DECODE;
-	want += tpp_row_cost(&open, &s, 20, 10, 2, TPP_READ);
-	want += tpp_row_cost(&open, &s, 19, 10, 3, TPP_READ);
-	want += tpp_row_cost(&open, &s, 20, 10, 1, TPP_WRITE);
-	want += tpp_row_cost(&open, &s, 20, 9, 2, TPP_READ);
-	want += tpp_row_cost(&open, &s, 20, 11, 2, TPP_READ);
+	want += tpp_row_cost(&open, &s, 20, 10, 2, TDP_BUS_READ);
+	want += tpp_row_cost(&open, &s, 19, 10, 3, TDP_BUS_READ);
+	want += tpp_row_cost(&open, &s, 20, 10, 1, TDP_BUS_WRITE);
+	want += tpp_row_cost(&open, &s, 20, 9, 2, TDP_BUS_READ);
+	want += tpp_row_cost(&open, &s, 20, 11, 2, TDP_BUS_READ);
 	TDP_CMD(t, RDC_OP_FLOOD_FILL, RDC_XY(20, 10));
 	tdp_drain(t);
 	assert_int_equal(tdp_err(t), 0);

@@ -274,44 +274,6 @@ static void test_key_bad_args(void **state)
 	assert_int_equal(t->dp.st.colorkey_on, 0);
 }
 
-enum { K_READ, K_WRITE, K_RMW };
-
-/* bus.h's formula, transcribed (as in test_dp_cmds.c). */
-static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind)
-{
-	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
-	uint64_t end = a + n, first = a / RDC_BUS_BYTES, cost = 0;
-	uint64_t last = (end - 1) / RDC_BUS_BYTES;
-
-	while (a < end) {
-		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
-
-		if (be > end)
-			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES;
-		     b++) {
-			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
-						  RDC_DRAM_ROW_BYTES);
-
-			beats++;
-			if (row != *open) {
-				cost += RDC_T_ROW_MISS;
-				*open = row;
-			}
-			if (kind == K_RMW ||
-			    (kind == K_WRITE &&
-			     ((b == first && a % RDC_BUS_BYTES) ||
-			      (b == last && end % RDC_BUS_BYTES))))
-				rmw++;
-		}
-		cost += beats * RDC_T_BEAT;
-		if (rmw)
-			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
-		a = be;
-	}
-	return cost;
-}
-
 /* Per row: the source read span, then the destination as one
  * read-modify-write span (blend or key), or a plain write (neither). */
 static void test_key_cycles(void **state)
@@ -329,11 +291,11 @@ static void test_key_cycles(void **state)
 		tdp_drain(t);
 		open = t->hw.bus.open_row;
 		for (y = 0; y < 3; y++) {
-			want += bus_span(&open, 8 * 4 + (uint64_t)y * 2560,
-					 40 * 4, K_READ);
-			want += bus_span(&open,
-					 16 * 4 + (uint64_t)(100 + y) * 2560,
-					 40 * 4, pass ? K_RMW : K_WRITE);
+			want += tdp_bus_span(&open, 8 * 4 + (uint64_t)y * 2560,
+					     40 * 4, TDP_BUS_READ);
+			want += tdp_bus_span(
+				&open, 16 * 4 + (uint64_t)(100 + y) * 2560,
+				40 * 4, pass ? TDP_BUS_RMW : TDP_BUS_WRITE);
 		}
 		TDP_CMD(t, RDC_OP_BLIT, RDC_XY(8, 0), RDC_XY(16, 100),
 			RDC_WH(40, 3));

@@ -350,40 +350,6 @@ static void test_list_ring(void **state)
 
 /* ---- cycle counts ------------------------------------------------------ */
 
-enum { K_READ, K_WRITE, K_RMW };
-
-/* bus.h's formula, transcribed (as in test_dp_cmds.c). */
-static uint64_t bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind)
-{
-	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
-	uint64_t end = a + n, cost = 0;
-
-	while (a < end) {
-		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
-
-		if (be > end)
-			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES;
-		     b++) {
-			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
-						  RDC_DRAM_ROW_BYTES);
-
-			beats++;
-			if (row != *open) {
-				cost += RDC_T_ROW_MISS;
-				*open = row;
-			}
-			if (kind == K_RMW)
-				rmw++;
-		}
-		cost += beats * RDC_T_BEAT;
-		if (rmw)
-			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
-		a = be;
-	}
-	return cost;
-}
-
 /*
  * CALL from the FIFO: its two words and the decode.  Each list command:
  * a 4-byte read of its header, one read span of its arguments, the
@@ -406,13 +372,14 @@ static void test_list_cycles(void **state)
 	rdc_hw_write(&t->hw, RDC_REG_PERF_CTRL, RDC_PERF_CTRL_CLEAR);
 	open = t->hw.bus.open_row;
 	want = 2 * RDC_T_FIFO_WORD + RDC_T_DECODE;
-	want += bus_span(&open, pc, 4, K_READ) +
-		bus_span(&open, pc + 4, 4, K_READ) + RDC_T_DECODE;
+	want += tdp_bus_span(&open, pc, 4, TDP_BUS_READ) +
+		tdp_bus_span(&open, pc + 4, 4, TDP_BUS_READ) + RDC_T_DECODE;
 	pc += 8;
-	want += bus_span(&open, pc, 4, K_READ) +
-		bus_span(&open, pc + 4, 40 * 4, K_READ) + RDC_T_DECODE;
+	want += tdp_bus_span(&open, pc, 4, TDP_BUS_READ) +
+		tdp_bus_span(&open, pc + 4, 40 * 4, TDP_BUS_READ) +
+		RDC_T_DECODE;
 	pc += 4 + 40 * 4;
-	want += bus_span(&open, pc, 4, K_READ) + RDC_T_DECODE;
+	want += tdp_bus_span(&open, pc, 4, TDP_BUS_READ) + RDC_T_DECODE;
 	TDP_CMD(t, RDC_OP_CALL, LIST_A + 64);
 	tdp_drain(t);
 	busy = rdc_hw_read(&t->hw, RDC_REG_PERF_BUSY_LO);

@@ -403,42 +403,6 @@ static void test_thick_once(void **state)
 
 /* ---- cycle counts ------------------------------------------------------ */
 
-enum { PK_WRITE, PK_RMW };
-
-/* bus.h's burst formula for one span, transcribed. */
-static uint64_t pen_bus_span(uint32_t *open, uint64_t a, uint64_t n, int kind)
-{
-	const uint64_t burst = RDC_BUS_BURST_BEATS * RDC_BUS_BYTES;
-	uint64_t end = a + n, first_beat = a / RDC_BUS_BYTES;
-	uint64_t last_beat = (end - 1) / RDC_BUS_BYTES, cost = 0;
-	int head = a % RDC_BUS_BYTES != 0, tail = end % RDC_BUS_BYTES != 0;
-
-	while (a < end) {
-		uint64_t be = (a / burst + 1) * burst, b, rmw = 0, beats = 0;
-
-		if (be > end)
-			be = end;
-		for (b = a / RDC_BUS_BYTES; b <= (be - 1) / RDC_BUS_BYTES; b++) {
-			uint32_t row = (uint32_t)(b * RDC_BUS_BYTES /
-						  RDC_DRAM_ROW_BYTES);
-
-			beats++;
-			if (row != *open) {
-				cost += RDC_T_ROW_MISS;
-				*open = row;
-			}
-			if (kind == PK_RMW || (b == first_beat && head) ||
-			    (b == last_beat && tail))
-				rmw++;
-		}
-		cost += beats * RDC_T_BEAT;
-		if (rmw)
-			cost += RDC_T_TURN + rmw * RDC_T_BEAT;
-		a = be;
-	}
-	return cost;
-}
-
 /* A wide horizontal line is w spans, as FILL_RECT: decode, three FIFO
  * words, and one span per row; a dashed line one span per dash. */
 static void test_cycles(void **state)
@@ -453,8 +417,8 @@ static void test_cycles(void **state)
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (y = 98; y < 102; y++)
-		want += pen_bus_span(&open, 16 * 4 + (uint64_t)y * stride,
-				     64 * 4, PK_WRITE);
+		want += tdp_bus_span(&open, 16 * 4 + (uint64_t)y * stride,
+				     64 * 4, TDP_BUS_WRITE);
 	TDP_CMD(t, RDC_OP_LINE, RDC_XY(16, 100), RDC_XY(80, 100));
 	tdp_drain(t);
 	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES), want);
@@ -465,8 +429,9 @@ static void test_cycles(void **state)
 	open = t->hw.bus.open_row;
 	want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (d = 0; d < 4; d++)
-		want += pen_bus_span(&open, (uint64_t)(8 * d) * 4 + 200 * stride,
-				     4 * 4, PK_WRITE);
+		want += tdp_bus_span(&open,
+				     (uint64_t)(8 * d) * 4 + 200 * stride,
+				     4 * 4, TDP_BUS_WRITE);
 	TDP_CMD(t, RDC_OP_LINE, RDC_XY(0, 200), RDC_XY(31, 200));
 	tdp_drain(t);
 	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES), want);

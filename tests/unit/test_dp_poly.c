@@ -497,7 +497,7 @@ static void test_cycles(void **state)
 		open = t->hw.bus.open_row;
 		tpp_fill_poly(t, xy, n, iter % 2 ? RDC_FILL_NONZERO : 0);
 		want = (1 + n) * RDC_T_FIFO_WORD + RDC_T_DECODE +
-		       image_runs_cost(t, &s, open, TPP_WRITE);
+		       image_runs_cost(t, &s, open, TDP_BUS_WRITE);
 		assert_int_equal(tpp_last_cycles(t), want);
 	}
 
@@ -515,9 +515,9 @@ static void test_cycles(void **state)
 			want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 			for (y = 4; y < 4 + 9; y++)
 				want += tpp_row_cost(&open, &s, 3, y, 50,
-						     mode == RDC_PAT_MONO ?
-							     TPP_WRITE :
-							     TPP_RMW);
+						     mode == RDC_PAT_MONO
+							     ? TDP_BUS_WRITE
+							     : TDP_BUS_RMW);
 			TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(3, 4),
 				RDC_WH(50, 9));
 			tdp_drain(t);

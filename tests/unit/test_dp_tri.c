@@ -412,10 +412,13 @@ static void test_cycles(void **state)
 					x1++;
 				n = (uint32_t)(x1 - x + 1);
 				if (zon)
-					want += tpp_bus(&open,
-							ZBASE + (uint64_t)y * zs + 2 * (uint64_t)x,
-							2 * n, TPP_RMW, 0, 0);
-				want += tpp_row_cost(&open, &s, x, y, n, TPP_WRITE);
+					want += tdp_bus_edges(
+						&open,
+						ZBASE + (uint64_t)y * zs +
+							2 * (uint64_t)x,
+						2 * n, TDP_BUS_RMW, 0, 0);
+				want += tpp_row_cost(&open, &s, x, y, n,
+						     TDP_BUS_WRITE);
 				x = x1;
 			}
 		assert_int_equal(tpp_last_cycles(t), want);
@@ -446,8 +449,9 @@ static void test_cycles_state(void **state)
 	open = t->hw.bus.open_row;
 	want = 2 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 	for (y = 7; y < 20; y++)
-		want += tpp_bus(&open, ZBASE + 6 + (uint64_t)y * zs + 2 * 5,
-				2 * 56, TPP_WRITE, 0, 0);
+		want += tdp_bus_edges(&open,
+				      ZBASE + 6 + (uint64_t)y * zs + 2 * 5,
+				      2 * 56, TDP_BUS_WRITE, 0, 0);
 	TDP_CMD(t, RDC_OP_CLEAR_Z, 1234);
 	tdp_drain(t);
 	assert_int_equal(tdp_err(t), 0);
