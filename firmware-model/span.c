@@ -28,36 +28,6 @@ struct rdc_rect rdc_dp_eff_clip(const struct rdc_dp *dp)
 }
 
 /*
- * n XRGB8888 pixels of v: memset when the bytes agree, else a pattern block the
- * compiler turns into wide stores.
- */
-void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
-{
-	size_t len = (size_t)n * 4, i;
-	uint8_t pair[8];
-	uint64_t v2;
-
-	if ((v & 0xff) * 0x01010101u == v) {
-		rdc_memset(p, (int)(v & 0xff), len);
-		return;
-	}
-	if (len < FILL_BLOCK) {
-		for (i = 0; i < len; i += 4)
-			rdc_st32(p + i, v);
-		return;
-	}
-	/* one block by 8-byte stores, then doubling copies of it */
-	rdc_st32(pair, v);
-	rdc_st32(pair + 4, v);
-	rdc_memcpy(&v2, pair, sizeof(v2));
-	for (i = 0; i < FILL_BLOCK; i += sizeof(v2))
-		rdc_memcpy(p + i, &v2, sizeof(v2));
-	for (; i * 2 <= len; i *= 2)
-		rdc_memcpy(p + i, p, i);
-	rdc_memcpy(p + i, p, len - i);
-}
-
-/*
  * Write pixels [xa, xa + n) of destination row y, already inside the
  * effective clip.  vals == NULL: every pixel gets `solid`; on != NULL:
  * only pixels with on[i] set are written (transparent mono and text),
