@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * The .rdl statements (docs/rdl.md): one handler each, and the table that
- * names them with their command class and argument counts.
+ * The .rdl script interpreter (the format is documented in docs/rdl.md).
+ * rdc_script_run (at the end) reads a logical line, script_lex.c splits it
+ * into tokens, and the statement's handler here (or in script_img.c or
+ * script_3d.c, by the table below) reads its values, encodes its commands
+ * and hands the batch to script_run.c, which runs it and charges its
+ * cycles.  script_names.c holds the names of opcodes, registers, ROPs and
+ * formats.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -849,57 +854,6 @@ static int st_screenshot(struct rdl *r, uint32_t op)
 
 /* ---- Pens, dashes, arcs, curves, transforms ------------------------------ */
 
-/*
- * A decimal number with optional sign and fraction, times `scale`, rounded
- * to nearest (halves away from zero), in [lo, hi].  Exact: no floating
- * point, so "0.5" is 32768 in 15.16 on every host.
- */
-int rdl_fixed(struct rdl *r, size_t i, int64_t scale, int64_t lo, int64_t hi,
-	      int64_t *out)
-{
-	const char *s;
-	bool neg = false;
-	uint64_t ip = 0, fp = 0, den = 1;
-	int digits = 0;
-	int64_t v;
-
-	if (i >= r->ntok)
-		return rdl_err(r, RDC_E_PARSE, "missing argument %zu", i);
-	s = r->tok[i].s;
-	if (r->tok[i].quoted)
-		goto bad;
-	if (*s == '-' || *s == '+')
-		neg = *s++ == '-';
-	for (; *s >= '0' && *s <= '9'; s++, digits++) {
-		ip = ip * 10 + (uint64_t)(*s - '0');
-		if (ip > ((uint64_t)1 << 32))
-			goto range;
-	}
-	if (*s == '.') {
-		for (s++; *s >= '0' && *s <= '9'; s++, digits++) {
-			/* digits past the ninth cannot move the result */
-			if (den < 1000000000u) {
-				fp = fp * 10 + (uint64_t)(*s - '0');
-				den *= 10;
-			}
-		}
-	}
-	if (*s || !digits)
-		goto bad;
-	v = (int64_t)(ip * (uint64_t)scale +
-		      (fp * (uint64_t)scale * 2 + den) / (2 * den));
-	*out = neg ? -v : v;
-	if (*out < lo || *out > hi)
-		goto range;
-	return 0;
-bad:
-	return rdl_err(r, RDC_E_PARSE, "argument %zu: '%.40s' is not a number",
-		       i, r->tok[i].s);
-range:
-	return rdl_err(r, RDC_E_PARSE, "argument %zu: '%.40s' out of range", i,
-		       r->tok[i].s);
-}
-
 /* pen WIDTH [butt|round|square] [miter|round|bevel] */
 static int st_pen(struct rdl *r, uint32_t op)
 {
@@ -954,22 +908,6 @@ static int st_dash(struct rdl *r, uint32_t op)
 		return ret;
 	return rdl_encoded(r, op, rdc_batch_dash(r->b, bits, (uint32_t)len,
 						 (uint32_t)off));
-}
-
-/* Degrees (decimals allowed) to 1/65536 turn, modulo a turn. */
-int rdl_angle(struct rdl *r, size_t i, uint32_t *out)
-{
-	int64_t v;
-	/* 65536 / 360 = 8192 / 45: scale by 8192, then divide by 45 */
-	int ret = rdl_fixed(r, i, 8192, -((int64_t)1 << 40), (int64_t)1 << 40,
-			    &v);
-	int64_t q;
-
-	if (ret)
-		return ret;
-	q = v >= 0 ? (v + 22) / 45 : -((-v + 22) / 45);
-	*out = (uint32_t)(((q % 65536) + 65536) % 65536);
-	return 0;
 }
 
 /* arc CX CY RX RY START END [pie|chord] */
@@ -1450,7 +1388,7 @@ static bool rdl_list_refused(const struct rdl_stmt *st)
 	return st >= rdl_stmts + i;
 }
 
-int rdl_statement(struct rdl *r)
+static int rdl_statement(struct rdl *r)
 {
 	const struct rdl_tok *kw = &r->tok[0];
 	uint32_t nargs = (uint32_t)RDC_MIN(r->ntok - 1, (size_t)RDL_ANY - 1);
@@ -1474,4 +1412,155 @@ int rdl_statement(struct rdl *r)
 		return st->fn(r, st->op);
 	}
 	return rdl_err(r, RDC_E_PARSE, "unknown statement '%.40s'", kw->s);
+}
+
+/* Copy the next logical line (joining "\\\n" continuations) into r->buf. */
+static int rdl_next_line(struct rdl *r, const char **pos, const char *end,
+			 uint32_t *phys)
+{
+	size_t n = 0;
+	const char *p = *pos;
+
+	r->line = *phys + 1;
+	r->src = p;
+	r->src_end = end;
+	while (p < end) {
+		const char *nl = memchr(p, '\n', (size_t)(end - p));
+		size_t len = nl ? (size_t)(nl - p) : (size_t)(end - p);
+		bool cont;
+
+		(*phys)++;
+		if (memchr(p, '\0', len))
+			return rdl_err(r, RDC_E_PARSE, "NUL byte in line");
+		if (len && p[len - 1] == '\r')
+			len--; /* CRLF files */
+		cont = len && p[len - 1] == '\\';
+		if (cont)
+			len--;
+		if (n + len + 2 > RDL_MAX_LINE)
+			return rdl_err(r, RDC_E_PARSE, "line too long");
+		if (n + len + 2 > r->buf_cap) {
+			size_t cap = RDC_MAX(r->buf_cap * 2, n + len + 2);
+			char *b = realloc(r->buf, cap);
+
+			if (!b)
+				return rdl_err(r, RDC_E_NOMEM, "out of memory");
+			r->buf = b;
+			r->buf_cap = cap;
+		}
+		memcpy(r->buf + n, p, len);
+		n += len;
+		r->buf[n++] = ' ';
+		p = nl ? nl + 1 : end;
+		if (!cont)
+			break;
+	}
+	*pos = p;
+	r->buf[n] = 0; /* the loop ran at least once: buf exists */
+	return 0;
+}
+
+int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
+		   struct rdc_script_result *res)
+{
+	struct rdc_script_result local;
+	struct rdl r = {.dev = dev};
+	const char *pos = text, *end;
+	uint32_t phys = 0;
+	int ret = 0;
+
+	if (!res)
+		res = &local;
+	memset(res, 0, sizeof(*res));
+	r.res = res;
+	if (!dev || (!text && len))
+		return RDC_E_INVAL;
+	if (!len)
+		return 0;
+	end = text + len;
+	r.b = rdc_batch_new();
+	if (!r.b)
+		return rdl_err(&r, RDC_E_NOMEM, "out of memory");
+	while (!ret && pos < end) {
+		ret = rdl_next_line(&r, &pos, end, &phys);
+		if (!ret)
+			ret = rdl_tokenize(&r);
+		if (!ret && r.ntok)
+			ret = rdl_statement(&r);
+	}
+	if (!ret && r.list_on) {
+		r.line = r.list_line;
+		ret = rdl_err(&r, RDC_E_PARSE, "list without end");
+	}
+	free(r.list_w);
+	rdc_batch_free(r.b);
+	free(r.tok);
+	free(r.buf);
+	return ret;
+}
+
+int rdc_script_frame_wait(rdc_dev *dev, const struct rdc_script_result *res)
+{
+	if (!dev || !res)
+		return RDC_E_INVAL;
+	return res->frame_ready ? 0 : rdc_frame_wait(dev);
+}
+
+int rdc_script_run_file(rdc_dev *dev, const char *path,
+			struct rdc_script_result *res)
+{
+	struct rdc_script_result local;
+	char *text = NULL;
+	size_t len = 0, cap = 0;
+	FILE *f;
+	int ret;
+
+	if (!res)
+		res = &local;
+	memset(res, 0, sizeof(*res));
+	if (!dev || !path)
+		return RDC_E_INVAL;
+	f = fopen(path, "rb");
+	if (!f) {
+		snprintf(res->error_msg, sizeof(res->error_msg),
+			 "cannot open '%.100s': %s", path, strerror(errno));
+		return RDC_E_FILE;
+	}
+	for (;;) {
+		size_t got;
+
+		if (len == cap) {
+			char *t;
+
+			if (cap >= RDL_MAX_FILE) {
+				ret = RDC_E_FILE;
+				snprintf(res->error_msg, sizeof(res->error_msg),
+					 "'%.100s' is larger than %u bytes",
+					 path, RDL_MAX_FILE);
+				goto out;
+			}
+			cap = cap ? cap * 2 : 65536;
+			t = realloc(text, cap);
+			if (!t) {
+				ret = RDC_E_NOMEM;
+				goto out;
+			}
+			text = t;
+		}
+		got = fread(text + len, 1, cap - len, f);
+		len += got;
+		if (got == 0)
+			break;
+	}
+	if (ferror(f)) {
+		ret = RDC_E_FILE;
+		snprintf(res->error_msg, sizeof(res->error_msg),
+			 "cannot read '%.100s'", path);
+		goto out;
+	}
+	ret = rdc_script_run(dev, text, len, res);
+out:
+	fclose(f);
+	free(text);
+	return ret;
 }

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * The .rdl interpreter inside librdc: script_run.c (lines, execution,
- * errors), script_lex.c (tokens and values), script_names.c (names) and
- * script.c (statements).  Not part of the public API.
+ * The .rdl interpreter inside librdc: script.c (the statements, their
+ * table and rdc_script_run's loop over lines), script_img.c and
+ * script_3d.c (more statements), script_lex.c (tokens and values),
+ * script_run.c (running a statement's batch; errors) and script_names.c
+ * (names).  Calls go that way only.  Not part of the public API.
  */
 #ifndef RDC_SCRIPT_H
 #define RDC_SCRIPT_H
@@ -78,14 +80,11 @@ extern const char *const rdl_fmt_names[RDC_FMT_COUNT];
 int rdl_rop_by_name(const char *s);
 
 /*
- * script.c: a decimal number (sign, fraction) times `scale`, rounded to
- * nearest, in [lo, hi]; degrees to 1/65536 turn modulo a turn
+ * script_lex.c: a decimal number (sign, fraction) times `scale`, rounded
+ * to nearest, in [lo, hi]; degrees to 1/65536 turn modulo a turn
  */
 #define RDL_FIX_ONE 65536 /* 1.0 in 15.16 */
 int rdl_fixed(struct rdl *r, size_t i, int64_t scale, int64_t lo, int64_t hi,
 	      int64_t *out);
 int rdl_angle(struct rdl *r, size_t i, uint32_t *out);
-/* script.c: run the statement in r->tok */
-int rdl_statement(struct rdl *r);
-
 #endif /* RDC_SCRIPT_H */

@@ -306,3 +306,70 @@ bool rdl_word(struct rdl *r, size_t i, const char *w)
 {
 	return i < r->ntok && !r->tok[i].quoted && !strcmp(r->tok[i].s, w);
 }
+
+/*
+ * A decimal number with optional sign and fraction, times `scale`, rounded
+ * to nearest (halves away from zero), in [lo, hi].  Exact: no floating
+ * point, so "0.5" is 32768 in 15.16 on every host.
+ */
+int rdl_fixed(struct rdl *r, size_t i, int64_t scale, int64_t lo, int64_t hi,
+	      int64_t *out)
+{
+	const char *s;
+	bool neg = false;
+	uint64_t ip = 0, fp = 0, den = 1;
+	int digits = 0;
+	int64_t v;
+
+	if (i >= r->ntok)
+		return rdl_err(r, RDC_E_PARSE, "missing argument %zu", i);
+	s = r->tok[i].s;
+	if (r->tok[i].quoted)
+		goto bad;
+	if (*s == '-' || *s == '+')
+		neg = *s++ == '-';
+	for (; *s >= '0' && *s <= '9'; s++, digits++) {
+		ip = ip * 10 + (uint64_t)(*s - '0');
+		if (ip > ((uint64_t)1 << 32))
+			goto range;
+	}
+	if (*s == '.') {
+		for (s++; *s >= '0' && *s <= '9'; s++, digits++) {
+			/* digits past the ninth cannot move the result */
+			if (den < 1000000000u) {
+				fp = fp * 10 + (uint64_t)(*s - '0');
+				den *= 10;
+			}
+		}
+	}
+	if (*s || !digits)
+		goto bad;
+	v = (int64_t)(ip * (uint64_t)scale +
+		      (fp * (uint64_t)scale * 2 + den) / (2 * den));
+	*out = neg ? -v : v;
+	if (*out < lo || *out > hi)
+		goto range;
+	return 0;
+bad:
+	return rdl_err(r, RDC_E_PARSE, "argument %zu: '%.40s' is not a number",
+		       i, r->tok[i].s);
+range:
+	return rdl_err(r, RDC_E_PARSE, "argument %zu: '%.40s' out of range", i,
+		       r->tok[i].s);
+}
+
+/* Degrees (decimals allowed) to 1/65536 turn, modulo a turn. */
+int rdl_angle(struct rdl *r, size_t i, uint32_t *out)
+{
+	int64_t v;
+	/* 65536 / 360 = 8192 / 45: scale by 8192, then divide by 45 */
+	int ret = rdl_fixed(r, i, 8192, -((int64_t)1 << 40), (int64_t)1 << 40,
+			    &v);
+	int64_t q;
+
+	if (ret)
+		return ret;
+	q = v >= 0 ? (v + 22) / 45 : -((-v + 22) / 45);
+	*out = (uint32_t)(((q % 65536) + 65536) % 65536);
+	return 0;
+}

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * The .rdl script interpreter (the format is documented in docs/rdl.md):
- * this file reads lines, runs statements and reports errors;
- * script_lex.c splits a line into tokens and reads their values,
- * script_names.c holds the names of opcodes, registers, ROPs and
- * formats, and script.c the statements.
+ * How the .rdl interpreter's statements run, and its errors: the layer
+ * under the statements (script.c, script_img.c, script_3d.c), which call
+ * it with their batch once it is encoded.
  *
  * Each statement is parsed completely before anything is sent, so a
  * syntax error never leaves half a command in the FIFO.  Every statement
@@ -13,7 +11,6 @@
  * that statement alone, which makes the per-class accounting in struct
  * rdc_script_result exact without any help from the device.
  */
-#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -163,155 +160,4 @@ int rdl_encoded(struct rdl *r, uint32_t op, int enc)
 	if (r->list_on)
 		return rdl_list_add(r);
 	return rdl_run_batch(r, op);
-}
-
-/* Copy the next logical line (joining "\\\n" continuations) into r->buf. */
-static int rdl_next_line(struct rdl *r, const char **pos, const char *end,
-			 uint32_t *phys)
-{
-	size_t n = 0;
-	const char *p = *pos;
-
-	r->line = *phys + 1;
-	r->src = p;
-	r->src_end = end;
-	while (p < end) {
-		const char *nl = memchr(p, '\n', (size_t)(end - p));
-		size_t len = nl ? (size_t)(nl - p) : (size_t)(end - p);
-		bool cont;
-
-		(*phys)++;
-		if (memchr(p, '\0', len))
-			return rdl_err(r, RDC_E_PARSE, "NUL byte in line");
-		if (len && p[len - 1] == '\r')
-			len--; /* CRLF files */
-		cont = len && p[len - 1] == '\\';
-		if (cont)
-			len--;
-		if (n + len + 2 > RDL_MAX_LINE)
-			return rdl_err(r, RDC_E_PARSE, "line too long");
-		if (n + len + 2 > r->buf_cap) {
-			size_t cap = RDC_MAX(r->buf_cap * 2, n + len + 2);
-			char *b = realloc(r->buf, cap);
-
-			if (!b)
-				return rdl_err(r, RDC_E_NOMEM, "out of memory");
-			r->buf = b;
-			r->buf_cap = cap;
-		}
-		memcpy(r->buf + n, p, len);
-		n += len;
-		r->buf[n++] = ' ';
-		p = nl ? nl + 1 : end;
-		if (!cont)
-			break;
-	}
-	*pos = p;
-	r->buf[n] = 0; /* the loop ran at least once: buf exists */
-	return 0;
-}
-
-int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
-		   struct rdc_script_result *res)
-{
-	struct rdc_script_result local;
-	struct rdl r = {.dev = dev};
-	const char *pos = text, *end;
-	uint32_t phys = 0;
-	int ret = 0;
-
-	if (!res)
-		res = &local;
-	memset(res, 0, sizeof(*res));
-	r.res = res;
-	if (!dev || (!text && len))
-		return RDC_E_INVAL;
-	if (!len)
-		return 0;
-	end = text + len;
-	r.b = rdc_batch_new();
-	if (!r.b)
-		return rdl_err(&r, RDC_E_NOMEM, "out of memory");
-	while (!ret && pos < end) {
-		ret = rdl_next_line(&r, &pos, end, &phys);
-		if (!ret)
-			ret = rdl_tokenize(&r);
-		if (!ret && r.ntok)
-			ret = rdl_statement(&r);
-	}
-	if (!ret && r.list_on) {
-		r.line = r.list_line;
-		ret = rdl_err(&r, RDC_E_PARSE, "list without end");
-	}
-	free(r.list_w);
-	rdc_batch_free(r.b);
-	free(r.tok);
-	free(r.buf);
-	return ret;
-}
-
-int rdc_script_frame_wait(rdc_dev *dev, const struct rdc_script_result *res)
-{
-	if (!dev || !res)
-		return RDC_E_INVAL;
-	return res->frame_ready ? 0 : rdc_frame_wait(dev);
-}
-
-int rdc_script_run_file(rdc_dev *dev, const char *path,
-			struct rdc_script_result *res)
-{
-	struct rdc_script_result local;
-	char *text = NULL;
-	size_t len = 0, cap = 0;
-	FILE *f;
-	int ret;
-
-	if (!res)
-		res = &local;
-	memset(res, 0, sizeof(*res));
-	if (!dev || !path)
-		return RDC_E_INVAL;
-	f = fopen(path, "rb");
-	if (!f) {
-		snprintf(res->error_msg, sizeof(res->error_msg),
-			 "cannot open '%.100s': %s", path, strerror(errno));
-		return RDC_E_FILE;
-	}
-	for (;;) {
-		size_t got;
-
-		if (len == cap) {
-			char *t;
-
-			if (cap >= RDL_MAX_FILE) {
-				ret = RDC_E_FILE;
-				snprintf(res->error_msg, sizeof(res->error_msg),
-					 "'%.100s' is larger than %u bytes",
-					 path, RDL_MAX_FILE);
-				goto out;
-			}
-			cap = cap ? cap * 2 : 65536;
-			t = realloc(text, cap);
-			if (!t) {
-				ret = RDC_E_NOMEM;
-				goto out;
-			}
-			text = t;
-		}
-		got = fread(text + len, 1, cap - len, f);
-		len += got;
-		if (got == 0)
-			break;
-	}
-	if (ferror(f)) {
-		ret = RDC_E_FILE;
-		snprintf(res->error_msg, sizeof(res->error_msg),
-			 "cannot read '%.100s'", path);
-		goto out;
-	}
-	ret = rdc_script_run(dev, text, len, res);
-out:
-	fclose(f);
-	free(text);
-	return ret;
 }
