@@ -17,6 +17,8 @@
 #include "../hw-sim/bus.h"
 
 #define IDX_BYTES 2u
+#define SORT_DEPTH_MAX ((1u << 20) - 1)
+#define SORT_TRI 0xfffu /* RDC_MESH_MAX_TRIS - 1 */
 
 static void pv_from(struct g3_pv *p, const struct rdc_dp_v3 *v)
 {
@@ -160,6 +162,53 @@ void g3_draw_segment(struct rdc_dp *dp, const struct rdc_dp_v3 *a,
 	rdc_dp_line(dp, x0, y0, x1, y1, skip_first && !a->out, false);
 }
 
+/*
+ * Extents: false when every vertex the triangles use lies outside one
+ * and the same clip plane (the mesh's box is outside the volume).
+ */
+static bool g3_any_inside(const struct rdc_dp *dp, uint32_t ntri)
+{
+	uint8_t all = 0xff;
+	uint32_t i;
+
+	for (i = 0; i < 3 * ntri && all; i++)
+		all &= dp->v3[dp->v3_idx[i]].out;
+	return !all;
+}
+
+/* Depth of a clip-space vertex for the painter's sort: -z / w in 0..2^20. */
+static uint32_t sort_depth(const struct rdc_dp_v3 *v)
+{
+	int64_t w = v->c[3], z = -(int64_t)v->c[2], d;
+
+	if (w <= 0)
+		return 0; /* at or behind the eye: clipped anyway */
+	d = z <= 0 ? 0 : z >= w ? SORT_DEPTH_MAX : (z << 20) / w;
+	return (uint32_t)RDC_MIN(d, (int64_t)SORT_DEPTH_MAX);
+}
+
+/*
+ * Painter's order: dp->v3_edge[k] = (far key << 12 | triangle), sorted so
+ * the farthest triangle (by its farthest vertex) comes first, ties in
+ * their order in the mesh.
+ */
+static void depth_sort(struct rdc_dp *dp, uint32_t ntri)
+{
+	uint32_t t, i, levels = 0;
+
+	for (t = 0; t < ntri; t++) {
+		uint32_t d = 0;
+
+		for (i = 0; i < 3; i++)
+			d = RDC_MAX(d, sort_depth(&dp->v3[dp->v3_idx[3 * t + i]]));
+		dp->v3_edge[t] = (SORT_DEPTH_MAX - d) << 12 | t;
+	}
+	edge_sort(dp->v3_edge, ntri);
+	while ((1u << levels) < ntri)
+		levels++;
+	rdc_port_compute(dp->hw, ntri * levels * RDC_T_SORT3);
+}
+
 void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 {
 	bool wire = fl & RDC_MESH_WIRE, cull = fl & RDC_MESH_CULL;
@@ -167,14 +216,24 @@ void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 	bool two = fl & RDC_MESH_TWO_SIDED;
 	int32_t x[G3_POLY_MAX], y[G3_POLY_MAX];
 	uint32_t z[G3_POLY_MAX], rgb[G3_POLY_MAX], col[G3_POLY_MAX];
-	uint32_t t, i, n, nedge = 0;
+	bool sort = !wire && (fl & RDC_MESH_SORT);
+	uint32_t k, t, i, n, nedge = 0;
 
-	for (t = 0; t < ntri; t++) {
-		const uint16_t *ix = dp->v3_idx + 3 * t;
-		const struct rdc_dp_v3 *v[3] = { &dp->v3[ix[0]], &dp->v3[ix[1]],
-						 &dp->v3[ix[2]] };
+	/* every vertex outside one clip plane: nothing to set up */
+	if (!g3_any_inside(dp, ntri))
+		return;
+	if (sort)
+		depth_sort(dp, ntri);
+	for (k = 0; k < ntri; k++) {
+		const uint16_t *ix;
+		const struct rdc_dp_v3 *v[3];
 		int64_t area2;
 
+		t = sort ? dp->v3_edge[k] & SORT_TRI : k;
+		ix = dp->v3_idx + 3 * t;
+		v[0] = &dp->v3[ix[0]];
+		v[1] = &dp->v3[ix[1]];
+		v[2] = &dp->v3[ix[2]];
 		rdc_port_compute(dp->hw, RDC_T_TRI3);
 		n = tri_project(dp, v, x, y, z, rgb, &area2);
 		if (!n || (cull && area2 >= 0))

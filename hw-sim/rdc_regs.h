@@ -652,7 +652,9 @@ enum rdc_axis { RDC_AXIS_X = 0, RDC_AXIS_Y = 1, RDC_AXIS_Z = 2 };
 #define RDC_MESH_LIT BIT(3) /* illumination (else FG) */
 #define RDC_MESH_GOURAUD BIT(4) /* lit per vertex (else per face, flat) */
 #define RDC_MESH_TWO_SIDED BIT(5) /* normals turned towards the viewer */
-#define RDC_MESH_FLAGS GENMASK(5, 0)
+/* filled: draw the triangles farthest first (painter's algorithm) */
+#define RDC_MESH_SORT BIT(6)
+#define RDC_MESH_FLAGS GENMASK(6, 0)
 #define RDC_PATCH_STEPS GENMASK(15, 8) /* PATCH mode word: 1..32 */
 /*
  * Geometry engine cycles (one multiply-accumulate a cycle): a vertex
@@ -660,7 +662,8 @@ enum rdc_axis { RDC_AXIS_X = 0, RDC_AXIS_Y = 1, RDC_AXIS_Z = 2 };
  * (normal through the cofactor matrix and normalised, then per light
  * diffuse, reflection, power, colour), a triangle's setup (facing, screen
  * mapping), each vertex a clip plane makes, and a tessellated patch or
- * curve point (forward differences).
+ * curve point (forward differences), and the painter's sort (per
+ * triangle and per halving).
  */
 #define RDC_T_VERTEX3 24u
 #define RDC_T_LIGHT3 16u
@@ -668,6 +671,7 @@ enum rdc_axis { RDC_AXIS_X = 0, RDC_AXIS_Y = 1, RDC_AXIS_Z = 2 };
 #define RDC_T_TRI3 8u
 #define RDC_T_CLIP3 8u
 #define RDC_T_TESS3 12u
+#define RDC_T_SORT3 2u /* per triangle and level of the depth sort */
 /*
  * HISTOGRAM and THRESHOLD: what a pixel's value is.  Indexed formats: the
  * index (RDC_CHAN_LUMA only).  RGB formats: the channel widened to 8 bits

@@ -859,6 +859,53 @@ static void test_cull_facing(void **state)
 	}
 }
 
+/*
+ * Painter's order: a near triangle listed before a far one that it
+ * hides, told apart by their normals (one faces a red light, the other a
+ * blue one).  Without the depth buffer, mesh order lets the far one
+ * overwrite the near one; RDC_MESH_SORT draws the far one first.
+ */
+static void test_painter_sort(void **state)
+{
+	struct tdp *t = *state;
+	static const double p[6][3] = {
+		{ -1, -1, 1 }, { 1, -1, 1 }, { 0, 1, 1 },
+		{ -1.5, -1.2, -2 }, { 1.5, -1.2, -2 }, { 0, 1.5, -2 },
+	};
+	static const double nr[6][3] = {
+		{ 1, 0, 0.2 }, { 1, 0, 0.2 }, { 1, 0, 0.2 },
+		{ -1, 0, 0.2 }, { -1, 0, 0.2 }, { -1, 0, 0.2 },
+	};
+	static const uint16_t idx[6] = { 0, 1, 2, 3, 4, 5 };
+	struct ref_view v = std_view(true);
+
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	TDP_CMD(t, RDC_OP_SET_AMBIENT, 0);
+	TDP_CMD(t, RDC_OP_SET_MATERIAL, 0, 0xffffff, 0, 1);
+	tdp_cmd(t, RDC_OP_SET_LIGHT, 0, 4,
+		(const uint32_t[]){ 0xff0000, (uint32_t)fx(1), 0, 0 });
+	tdp_cmd(t, RDC_OP_SET_LIGHT, 1, 4,
+		(const uint32_t[]){ 0x0000ff, (uint32_t)fx(-1), 0, 0 });
+	put_mesh(t, p, nr, 6, idx, 2);
+	for (int k = 0; k < 2; k++) {
+		uint32_t c;
+
+		clear_screen(t);
+		mesh(t, RDC_MESH_NORMALS | RDC_MESH_LIT | RDC_MESH_GOURAUD |
+				(k ? RDC_MESH_SORT : 0),
+		     6, 2);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		c = px(t, 320, 240);
+		if (k)
+			assert_true((c >> 16) > 0x80 && (c & 0xff) == 0);
+		else
+			assert_true((c & 0xff) > 0x80 && (c >> 16) == 0);
+	}
+	tdp_cmd(t, RDC_OP_SET_LIGHT, 1, 0, NULL);
+}
+
 /* ---- wireframe ------------------------------------------------------ */
 
 /*
@@ -1206,6 +1253,7 @@ int main(void)
 		TDP_TEST(test_lighting_ref),
 		TDP_TEST(test_stack_lists),
 		TDP_TEST(test_cull_facing),
+		TDP_TEST(test_painter_sort),
 		TDP_TEST(test_wire_edges_once),
 		TDP_TEST(test_zbuffer_ref),
 		TDP_TEST(test_bad_input),

@@ -1332,8 +1332,8 @@ static const struct rdl_stmt {
 	{"light", rdl_st_light, RDC_OP_SET_LIGHT, 2, 5},
 	{"ambient", rdl_st_ambient, RDC_OP_SET_AMBIENT, 1, 1},
 	{"material", rdl_st_material, RDC_OP_SET_MATERIAL, 4, 4},
-	{"mesh", rdl_st_mesh, RDC_OP_MESH, 4, 10},
-	{"patch", rdl_st_patch, RDC_OP_PATCH, 49, 54},
+	{"mesh", rdl_st_mesh, RDC_OP_MESH, 4, 11},
+	{"patch", rdl_st_patch, RDC_OP_PATCH, 49, 55},
 	{"bezier3", rdl_st_bezier3, RDC_OP_BEZIER3, 12, 14},
 	/* host side (refused inside `list`, as are readback and raw) */
 	{"list", st_list, 0, 1, 1},

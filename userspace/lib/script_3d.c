@@ -199,7 +199,7 @@ static int rdl_mesh_flags(struct rdl *r, size_t i, bool normals,
 	} f[] = { { "normals", RDC_MESH_NORMALS }, { "wire", RDC_MESH_WIRE },
 		  { "cull", RDC_MESH_CULL },	     { "lit", RDC_MESH_LIT },
 		  { "gouraud", RDC_MESH_GOURAUD },
-		  { "two-sided", RDC_MESH_TWO_SIDED } };
+		  { "two-sided", RDC_MESH_TWO_SIDED }, { "sort", RDC_MESH_SORT } };
 
 	*fl = 0;
 	for (; i < r->ntok; i++) {
@@ -216,7 +216,10 @@ static int rdl_mesh_flags(struct rdl *r, size_t i, bool normals,
 	return 0;
 }
 
-/* mesh VBASE VCOUNT IBASE TCOUNT [normals] [wire] [cull] [lit] [gouraud] [two-sided] */
+/*
+ * mesh VBASE VCOUNT IBASE TCOUNT [normals] [wire] [cull] [lit] [gouraud]
+ *      [two-sided] [sort]
+ */
 int rdl_st_mesh(struct rdl *r, uint32_t op)
 {
 	uint32_t a[4], fl;
@@ -231,12 +234,12 @@ int rdl_st_mesh(struct rdl *r, uint32_t op)
 		return ret;
 	if (next != r->ntok)
 		return rdl_err(r, RDC_E_PARSE, "mesh: '%.40s' is not normals, "
-			       "wire, cull, lit, gouraud or two-sided",
+			       "wire, cull, lit, gouraud, two-sided or sort",
 			       r->tok[next].s);
 	return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, fl, a, 4));
 }
 
-/* patch STEPS [wire] [cull] [lit] [gouraud] [two-sided] then 16 x X Y Z */
+/* patch STEPS [wire] [cull] [lit] [gouraud] [two-sided] [sort] 16 x X Y Z */
 int rdl_st_patch(struct rdl *r, uint32_t op)
 {
 	uint32_t a[49], fl;
