@@ -43,11 +43,15 @@ scroll_kmsg() {
 	done
 }
 
-# every golden scene through fbdev: on the paced clock, ending as it does
-# on sim: (a scene rdcctl refuses is refused on both)
+# every golden scene through fbdev: on the paced clock, from a reset chip
+# and zeroed VRAM, ending as it does on sim: (a scene rdcctl refuses is
+# refused on both)
 scenes() {
 	for s in "$RDC_TREE"/tests/golden/scenes/*.rdl; do
-		"$RDCCTL" run "$s" >"$T/sim.out" 2>&1
+		prep=$("$B/fbdev_ioctl" --device $FB --prepare) ||
+			{ echo "prepare failed"; return 1; }
+		vram=${prep##* vram }
+		"$RDCCTL" --connect "sim:vram=$vram" run "$s" >"$T/sim.out" 2>&1
 		rs=$?
 		"$RDCCTL" --connect "fbdev:$FB" run "$s" -o "$T/scene.png" \
 			>"$T/scene.out" 2>&1
