@@ -691,7 +691,8 @@ static void check_col(uint32_t got, const double *want)
 /*
  * A triangle facing the viewer, lit flat (face normal) and Gouraud
  * (vertex normals all n), parallel view: every pixel is the reference
- * colour for normal n.  Random lights, materials and normals.
+ * colour for normal n.  Then flat under perspective, where V runs from
+ * the face's centroid to the eye.  Random lights, materials and normals.
  */
 static void test_lighting_ref(void **state)
 {
@@ -773,6 +774,28 @@ static void test_lighting_ref(void **state)
 			assert_int_equal(tdp_err(t), 0);
 			/* the centroid's pixel */
 			check_col(px(t, 320, 240 - 8), want);
+		}
+		/*
+		 * perspective, flat: the face lit at its centroid, V from
+		 * there to the centre of projection (0, 0, 4)
+		 */
+		{
+			struct ref_view pv = std_view(true);
+			double c[3], vp[3];
+
+			for (int k = 0; k < 3; k++) {
+				c[k] = (p[0][k] + p[1][k] + p[2][k]) / 3;
+				vp[k] = pv.prp[k] - c[k];
+			}
+			v_norm(vp);
+			ref_shade(&L, n, vp, want);
+			send_view(t, &pv);
+			clear_screen(t);
+			mesh(t, RDC_MESH_NORMALS | RDC_MESH_LIT, 3, 1);
+			tdp_drain(t);
+			assert_int_equal(tdp_err(t), 0);
+			check_col(px(t, 320, 240 - 8), want);
+			send_view(t, &v);
 		}
 	}
 }
