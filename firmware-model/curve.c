@@ -25,20 +25,6 @@ struct cv_poly {
 	int64_t div;
 };
 
-static int64_t cv_div_round(int64_t n, int64_t d)
-{
-	/* d > 0 */
-	int64_t q = n / d, r = n % d;
-
-	if (r < 0) {
-		q--;
-		r += d;
-	}
-	if (2 * r >= d)
-		q++;
-	return q;
-}
-
 static int32_t cv_abs(int32_t v)
 {
 	return v < 0 ? -v : v;
@@ -102,11 +88,11 @@ static void cv_trace_poly(struct cv_trace *tr, const struct cv_poly *px,
 	uint32_t i, k;
 
 	for (k = 0; k < 2; k++) {
-		int64_t a3 = cv_div_round(p[k]->a * CV_ONE, n3 * p[k]->div);
-		int64_t b2 = cv_div_round(p[k]->b * CV_ONE, n2 * p[k]->div);
-		int64_t c1 = cv_div_round(p[k]->c * CV_ONE, n1 * p[k]->div);
+		int64_t a3 = dp_div_round(p[k]->a * CV_ONE, n3 * p[k]->div);
+		int64_t b2 = dp_div_round(p[k]->b * CV_ONE, n2 * p[k]->div);
+		int64_t c1 = dp_div_round(p[k]->c * CV_ONE, n1 * p[k]->div);
 
-		f[k] = cv_div_round(p[k]->d * CV_ONE, p[k]->div);
+		f[k] = dp_div_round(p[k]->d * CV_ONE, p[k]->div);
 		d1[k] = a3 + b2 + c1;
 		d2[k] = 6 * a3 + 2 * b2;
 		d3[k] = 6 * a3;
@@ -224,9 +210,9 @@ uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		cv_bspline(&px, x[0], x[1], x[2], x[3]);
 		cv_bspline(&py, y[0], y[1], y[2], y[3]);
 		n = cv_steps(fl, cv_polygon(x, y));
-		ex = (int32_t)cv_div_round((int64_t)x[1] + 4 * (int64_t)x[2] +
+		ex = (int32_t)dp_div_round((int64_t)x[1] + 4 * (int64_t)x[2] +
 						   x[3], 6);
-		ey = (int32_t)cv_div_round((int64_t)y[1] + 4 * (int64_t)y[2] +
+		ey = (int32_t)dp_div_round((int64_t)y[1] + 4 * (int64_t)y[2] +
 						   y[3], 6);
 		/* the first point of later segments is the previous end */
 		cv_trace_poly(&tr, &px, &py, n, i > 3, ex, ey);

@@ -254,4 +254,45 @@ static inline uint32_t rdc_dp_words_per_row(unsigned int fmt, uint32_t w)
 	return (uint32_t)(((uint64_t)w * rdc_format_bpp(fmt) + 31) / 32);
 }
 
+/*
+ * Integer division rounded down, up and to nearest (halves up), for the
+ * rasterisers' exact arithmetic (C's division truncates towards zero).
+ * b > 0 for the first two; dp_div_round takes either sign of d.  None of
+ * them overflows where the quotient fits.
+ */
+static inline int64_t dp_div_floor(int64_t a, int64_t b)
+{
+	int64_t q = a / b;
+
+	if (a % b && a < 0)
+		q--;
+	return q;
+}
+
+static inline int64_t dp_div_ceil(int64_t a, int64_t b)
+{
+	int64_t q = a / b;
+
+	if (a % b && a > 0)
+		q++;
+	return q;
+}
+
+static inline int64_t dp_div_round(int64_t n, int64_t d)
+{
+	int64_t q, r;
+
+	if (d < 0)
+		n = -n, d = -d;
+	q = n / d;
+	r = n % d;
+	if (r < 0) {
+		q--;
+		r += d;
+	}
+	if (r >= d - r)
+		q++;
+	return q;
+}
+
 #endif /* RDC_DP_INT_H */

@@ -2,16 +2,6 @@
 /* LINE: clipped midpoint lines, drawn as runs (span.c). */
 #include "raster.h"
 
-static int64_t div_ceil(int64_t a, int64_t b)
-{
-	/* b > 0 */
-	return a >= 0 ? (a + b - 1) / b : -((-a) / b);
-}
-
-static int64_t div_floor(int64_t a, int64_t b)
-{
-	return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
 /*
  * Midpoint line.  The endpoints are first put in a canonical order (the
  * major axis increasing), so line(a, b) and line(b, a) are the same pixels.
@@ -223,10 +213,10 @@ void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 	if (n > 0 && m > 0) {
 		/* j(i) >= jlo  <=>  i >= ceil((2n*jlo - n) / 2m) */
 		if (jlo > 0)
-			ilo = RDC_MAX(ilo, div_ceil(2 * n * jlo - n, 2 * m));
+			ilo = RDC_MAX(ilo, dp_div_ceil(2 * n * jlo - n, 2 * m));
 		/* j(i) <= jhi  <=>  2im < 2n(jhi + 1) - n */
 		ihi = RDC_MIN(ihi,
-			      div_ceil(2 * n * (jhi + 1) - n, 2 * m) - 1);
+			      dp_div_ceil(2 * n * (jhi + 1) - n, 2 * m) - 1);
 	} else if (jlo > 0) {
 		return; /* j is always 0 */
 	}
@@ -234,7 +224,7 @@ void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		return;
 
 	if (n > 0) {
-		j = div_floor(2 * ilo * m + n, 2 * n);
+		j = dp_div_floor(2 * ilo * m + n, 2 * n);
 		rem = 2 * ilo * m + n - j * 2 * n;
 	} else {
 		j = 0;

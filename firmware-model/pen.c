@@ -24,22 +24,6 @@
  */
 #define PEN_MITER_DIV 8
 
-static int64_t pen_div_floor(int64_t a, int64_t b)
-{
-	/* b > 0 */
-	return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
-static int64_t pen_div_ceil(int64_t a, int64_t b)
-{
-	return -pen_div_floor(-a, b);
-}
-
-static int64_t pen_div_round(int64_t a, int64_t b)
-{
-	return pen_div_floor(2 * a + b, 2 * b);
-}
-
 uint64_t dp_isqrt(uint64_t v)
 {
 	uint64_t r = 0, bit = (uint64_t)1 << 62;
@@ -91,8 +75,8 @@ static bool convex_row(const int64_t *vx, const int64_t *vy, unsigned int n,
 		 * first pixel whose centre is at or right of the crossing:
 		 * ceil(x_cross / PEN_ONE)
 		 */
-		x = pen_div_ceil(vx[a] * dy + (sy - vy[a]) * (vx[b] - vx[a]),
-				 dy * PEN_ONE);
+		x = dp_div_ceil(vx[a] * dy + (sy - vy[a]) * (vx[b] - vx[a]),
+				dy * PEN_ONE);
 		xl = any ? RDC_MIN(xl, x) : x;
 		xr = any ? RDC_MAX(xr, x) : x;
 		any = true;
@@ -116,8 +100,8 @@ static bool disk_row(int64_t px, int64_t py, int64_t r, int64_t y,
 	s = (int64_t)dp_isqrt((uint64_t)d);
 	if (s * s == d)
 		s--; /* |dx| < sqrt(d) */
-	*xa = pen_div_ceil(px - s, PEN_ONE);
-	*xb = pen_div_floor(px + s, PEN_ONE) + 1;
+	*xa = dp_div_ceil(px - s, PEN_ONE);
+	*xb = dp_div_floor(px + s, PEN_ONE) + 1;
 	return *xa < *xb;
 }
 
@@ -216,8 +200,8 @@ void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
 		ymin = RDC_MIN(ymin, v[i].y);
 		ymax = RDC_MAX(ymax, v[i].y);
 	}
-	pc = pen_queue(dp, pen_div_ceil(ymin, PEN_ONE),
-		       pen_div_ceil(ymax, PEN_ONE) - 1);
+	pc = pen_queue(dp, dp_div_ceil(ymin, PEN_ONE),
+		       dp_div_ceil(ymax, PEN_ONE) - 1);
 	if (!pc)
 		return;
 	pc->n = n;
@@ -230,9 +214,9 @@ void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
 /* Disk of radius r (24.8) at p. */
 static void pen_disk(struct rdc_dp *dp, struct pen_vec p, int64_t r)
 {
-	struct rdc_pen_piece *pc = pen_queue(dp, pen_div_floor(p.y - r,
-							       PEN_ONE),
-					     pen_div_ceil(p.y + r, PEN_ONE));
+	struct rdc_pen_piece *pc = pen_queue(dp, dp_div_floor(p.y - r,
+							      PEN_ONE),
+					     dp_div_ceil(p.y + r, PEN_ONE));
 
 	if (!pc)
 		return;
@@ -260,10 +244,10 @@ static void pen_axes(struct pen_vec a, struct pen_vec b, int64_t h,
 
 	if (!len)
 		len = 1;
-	nrm->x = pen_div_round(-dy * h, len);
-	nrm->y = pen_div_round(dx * h, len);
-	dir->x = pen_div_round(dx * h, len);
-	dir->y = pen_div_round(dy * h, len);
+	nrm->x = dp_div_round(-dy * h, len);
+	nrm->y = dp_div_round(dx * h, len);
+	dir->x = dp_div_round(dx * h, len);
+	dir->y = dp_div_round(dy * h, len);
 }
 
 static struct pen_vec pt_add(struct pen_vec a, struct pen_vec b, int s)
@@ -366,8 +350,8 @@ static void pen_join(struct rdc_dp *dp, struct pen_vec v, struct pen_vec n1,
 	q[1] = pt_add(v, n1, s);
 	if (dp->st.pen_join == RDC_JOIN_MITER && turn &&
 	    (h2 + dot) * PEN_MITER_DIV >= h2) {
-		q[2].x = v.x + s * pen_div_round((n1.x + n2.x) * h2, h2 + dot);
-		q[2].y = v.y + s * pen_div_round((n1.y + n2.y) * h2, h2 + dot);
+		q[2].x = v.x + s * dp_div_round((n1.x + n2.x) * h2, h2 + dot);
+		q[2].y = v.y + s * dp_div_round((n1.y + n2.y) * h2, h2 + dot);
 		q[3] = pt_add(v, n2, s);
 		dp_pen_fill_convex(dp, q, 4);
 		return;
@@ -388,8 +372,8 @@ static struct pen_vec pen_at(struct pen_vec a, struct pen_vec b, int64_t i,
 			    int64_t n)
 {
 	struct pen_vec r = {
-		a.x + pen_div_round((b.x - a.x) * i, n),
-		a.y + pen_div_round((b.y - a.y) * i, n),
+		a.x + dp_div_round((b.x - a.x) * i, n),
+		a.y + dp_div_round((b.y - a.y) * i, n),
 	};
 
 	return r;

@@ -78,23 +78,6 @@ static void parent_line(const struct pctx *pc, int32_t parent,
 	}
 }
 
-/* round(num / den) to nearest, halves up; den != 0 */
-static int64_t div_round(int64_t num, int64_t den)
-{
-	int64_t a, b;
-
-	if (den < 0)
-		num = -num, den = -den;
-	a = 2 * num + den;
-	b = 2 * den;
-	return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
-static int64_t div_floor64(int64_t a, int64_t b)
-{
-	return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
 /* plane: 0 x >= c.x0, 1 x <= c.x1, 2 y >= c.y0, 3 y <= c.y1 */
 static int32_t plane_bound(const struct rdc_rect *c, unsigned int plane)
 {
@@ -140,17 +123,17 @@ static struct rdc_dp_pvert plane_cross(const struct pctx *pc,
 		d = (int64_t)l.x1 - l.x0;
 		if (d)
 			r.y = (int32_t)((int64_t)l.y0 * FX_ONE +
-					div_round(((int64_t)bound - l.x0) *
+					dp_div_round(((int64_t)bound - l.x0) *
 							  (l.y1 - l.y0) * FX_ONE,
-						  d));
+						     d));
 	} else {
 		r.y = (int32_t)((int64_t)bound * FX_ONE);
 		d = (int64_t)l.y1 - l.y0;
 		if (d)
 			r.x = (int32_t)((int64_t)l.x0 * FX_ONE +
-					div_round(((int64_t)bound - l.y0) *
+					dp_div_round(((int64_t)bound - l.y0) *
 							  (l.x1 - l.x0) * FX_ONE,
-						  d));
+						     d));
 	}
 	return r;
 }
@@ -193,7 +176,7 @@ static int32_t sh_pass(const struct pctx *pc, const struct rdc_dp_pvert *in,
 /* ceil((v - 1/2) / 1): the first row whose centre is at or below v */
 static int32_t fx_row(int64_t v)
 {
-	return (int32_t)div_floor64(v - FX_HALF + FX_ONE - 1, FX_ONE);
+	return (int32_t)dp_div_floor(v - FX_HALF + FX_ONE - 1, FX_ONE);
 }
 
 /*
@@ -232,9 +215,9 @@ static void et_add(struct rdc_dp *dp, const struct pctx *pc,
 	/* B(r0) = floor((N + den - 1) / den), kept as quotient, remainder */
 	num = (2 * (int64_t)r0 + 1 - 2 * (int64_t)l.y0) * dx +
 	      (2 * (int64_t)l.x0 - 1) * dy + den - 1;
-	q = div_floor64(num, den);
+	q = dp_div_floor(num, den);
 	step = 2 * dx;
-	dq = div_floor64(step, den);
+	dq = dp_div_floor(step, den);
 	e = &dp->poly_e[*ne];
 	e->q = (int32_t)q;
 	e->r = (int32_t)(num - q * den);

@@ -123,17 +123,6 @@ static unsigned int channels(unsigned int fmt, unsigned int *shift,
 	return 3;
 }
 
-static int64_t div_round(int64_t num, int64_t den)
-{
-	int64_t a, b;
-
-	if (den < 0)
-		num = -num, den = -den;
-	a = 2 * num + den;
-	b = 2 * den;
-	return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
 /* Channel k's plane numerator at the centre of pixel (px, py). */
 static int64_t plane_num(const struct tri *t, unsigned int k, int32_t px,
 			 int32_t py)
@@ -179,7 +168,7 @@ static void tri_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb,
 
 			for (k = 0; k < t->nch; k++) {
 				int64_t v = t->a0[k] +
-					    div_round(num[k], 2 * t->area2);
+					    dp_div_round(num[k], 2 * t->area2);
 
 				v = RDC_MAX(v, t->lo[k]);
 				v = RDC_MIN(v, t->hi[k]);

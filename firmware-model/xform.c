@@ -21,22 +21,6 @@
 #define XF_S32_MAX ((int64_t)0x7fffffff)
 #define XF_S32_MIN (-XF_S32_MAX - 1)
 
-/* floor(n / d) for d > 0: C division truncates towards zero. */
-static int64_t div_floor(int64_t n, int64_t d)
-{
-	int64_t q = n / d;
-
-	if ((n % d) && n < 0)
-		q--;
-	return q;
-}
-
-/* n / d rounded to nearest, halves towards +infinity, for d > 0. */
-static int64_t div_round(int64_t n, int64_t d)
-{
-	return div_floor(n + d / 2, d);
-}
-
 void dp_xform_reset(struct rdc_dp_state *st)
 {
 	rdc_memset(st->xf, 0, sizeof(st->xf));
@@ -73,8 +57,8 @@ bool dp_xform(const struct rdc_dp *dp, int32_t *x, int32_t *y)
 		return false;
 	nx = m[0][0] * px + m[0][1] * py + m[0][2];
 	ny = m[1][0] * px + m[1][1] * py + m[1][2];
-	rx = div_round(nx, w);
-	ry = div_round(ny, w);
+	rx = dp_div_round(nx, w);
+	ry = dp_div_round(ny, w);
 	if (rx < RDC_COORD_MIN || rx > RDC_COORD_MAX || ry < RDC_COORD_MIN ||
 	    ry > RDC_COORD_MAX)
 		return false;
@@ -87,7 +71,7 @@ bool dp_xform(const struct rdc_dp *dp, int32_t *x, int32_t *y)
 static bool scale_size(int32_t m, uint32_t *v)
 {
 	int64_t s = m < 0 ? -(int64_t)m : m;
-	int64_t r = div_round(s * *v, XF_ONE);
+	int64_t r = dp_div_round(s * *v, XF_ONE);
 
 	if (r > RDC_SIZE_MAX)
 		return false;
@@ -139,13 +123,13 @@ static bool vp_axis(int32_t w0, int32_t w1, int32_t v0, int32_t v1,
 
 	if (dw < 0) {
 		dw = -dw;
-		s = div_round(-((int64_t)v1 - v0) * XF_ONE * XF_ONE, dw);
+		s = dp_div_round(-((int64_t)v1 - v0) * XF_ONE * XF_ONE, dw);
 	} else {
-		s = div_round(((int64_t)v1 - v0) * XF_ONE * XF_ONE, dw);
+		s = dp_div_round(((int64_t)v1 - v0) * XF_ONE * XF_ONE, dw);
 	}
 	if (s < XF_S32_MIN || s > XF_S32_MAX)
 		return false;
-	o = (int64_t)v0 * XF_ONE - div_round(s * w0, XF_ONE);
+	o = (int64_t)v0 * XF_ONE - dp_div_round(s * w0, XF_ONE);
 	if (o < XF_S32_MIN || o > XF_S32_MAX)
 		return false;
 	*scale = (int32_t)s;
@@ -196,8 +180,8 @@ bool dp_xform_vec(const struct rdc_dp *dp, int32_t *x, int32_t *y)
 	if (m[2][2] <= 0 || vx < -XF_IN_MAX || vx > XF_IN_MAX ||
 	    vy < -XF_IN_MAX || vy > XF_IN_MAX)
 		return false;
-	rx = div_round(m[0][0] * vx + m[0][1] * vy, m[2][2]);
-	ry = div_round(m[1][0] * vx + m[1][1] * vy, m[2][2]);
+	rx = dp_div_round(m[0][0] * vx + m[0][1] * vy, m[2][2]);
+	ry = dp_div_round(m[1][0] * vx + m[1][1] * vy, m[2][2]);
 	if (rx < -XF_IN_MAX || rx > XF_IN_MAX || ry < -XF_IN_MAX ||
 	    ry > XF_IN_MAX)
 		return false;
