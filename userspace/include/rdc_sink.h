@@ -20,7 +20,10 @@
  *       PNG files DIR/NAME-NNNNNNNN.png (NAME default "frame", NNNNNNNN
  *       the frame's sequence number): every Nth frame handed to the sink
  *       (the first, the N+1th, ...; N 0, the default, means none), plus
- *       the next frame after each rdc_sink_snapshot().
+ *       the next frame after each rdc_sink_snapshot().  DIR and its
+ *       parents are created at open when missing (as mkdir -p does);
+ *       RDC_E_FILE there, or from a frame whose file cannot be written,
+ *       with rdc_last_error_detail naming the path and the reason.
  *   vnc:PORT[,listen=ADDR]
  *       A VNC server (libvncserver) on TCP PORT, loopback only unless
  *       listen= says otherwise; only rows that changed since the previous
