@@ -152,6 +152,17 @@ static void test_output_errors(void **state)
 	}
 	snprintf(path, sizeof(path), "%s/a/shots", dir);
 	assert_int_equal(rmdir(path), 0);
+	/* --png alone: every 60th frame, as rdcd's --png */
+	snprintf(args, sizeof(args),
+		 "stream --fast --script examples/demo.rdl --png %s/a "
+		 "--frames 61",
+		 dir);
+	assert_int_equal(ctl(args), 0);
+	assert_non_null(strstr(out, "written 2 "));
+	for (n = 0; n <= 60; n += 60) {
+		snprintf(path, sizeof(path), "%s/a/frame-%08d.png", dir, n);
+		assert_int_equal(unlink(path), 0);
+	}
 	/* where it cannot: the command fails once, saying why */
 	snprintf(path, sizeof(path), "%s/a/file", dir);
 	{

@@ -16,6 +16,7 @@
 #include "stream.h"
 
 #define STREAM_MAX_SINKS 8
+#define STREAM_PNG_EVERY_DEFAULT 60 /* rdcd's --png too */
 #define STREAM_MAX_SCRIPTS 16
 #define STREAM_SPEC_MAX 4200
 #define NS_PER_S 1000000000ull
@@ -32,7 +33,8 @@ const char rdcctl_stream_usage[] =
 	"    --v4l2 /dev/videoN       v4l2loopback output\n"
 	"    --format F               bgr32 (default), xrgb32, rgb24, yuyv\n"
 	"    --png DIR                stills to DIR (every --png-every N)\n"
-	"    --png-every N            every Nth frame (default 0: none)\n"
+	"    --png-every N            every Nth frame (default 60, as rdcd's\n"
+	"                             --png; 0: none)\n"
 	"    --vnc PORT               VNC server on 127.0.0.1:PORT\n"
 	"    --sink SPEC              any sink spec (see rdc_sink.h)\n"
 	"    --frames N               stop after N frames (default: never)\n"
@@ -47,6 +49,7 @@ struct stream_opts {
 	const char *uri;
 	const char *v4l2, *format, *png, *vnc;
 	uint32_t png_every;
+	bool png_every_set;
 	const char *specs[STREAM_MAX_SINKS];
 	int nspecs;
 	struct stream_script scripts[STREAM_MAX_SCRIPTS];
@@ -105,6 +108,7 @@ static int stream_parse(int argc, char **argv, struct stream_opts *o)
 			if (parse_u64(v, &n) || n > UINT32_MAX)
 				goto bad;
 			o->png_every = (uint32_t)n;
+			o->png_every_set = true;
 		} else if (!strcmp(a, "--frames")) {
 			if (parse_u64(v, &o->frames))
 				goto bad;
@@ -169,7 +173,8 @@ static int stream_open_sinks(const struct stream_opts *o, rdc_sink **sinks,
 	}
 	if (!ret && o->png) {
 		snprintf(spec, sizeof(spec), "png:%s,every=%u", o->png,
-			 o->png_every);
+			 o->png_every_set ? o->png_every
+					  : STREAM_PNG_EVERY_DEFAULT);
 		ret = stream_add(sinks, n, spec);
 	}
 	if (!ret && o->vnc) {
