@@ -263,7 +263,9 @@ static uint32_t view_set(struct rdc_dp *dp, bool persp, const int32_t *p)
 	} else {
 		aw = g3_div_round(wd * G3_LIN_ONE, 2 * (int64_t)prp[2]);
 		e = g3_div_round(((int64_t)prp[2] - B) * G3_LIN_ONE, F - B);
-		if (aw >= G3_FACTOR_MAX || e >= G3_FACTOR_MAX)
+		/* aw * e must fit: each below 2^38, their product below 2^62 */
+		if (aw <= 0 || aw >= G3_FACTOR_MAX || e >= G3_FACTOR_MAX ||
+		    e > ((int64_t)1 << 62) / aw)
 			return RDC_ERR_RANGE;
 		az = g3_div_round(aw * e, G3_LIN_ONE);
 	}

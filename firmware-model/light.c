@@ -89,9 +89,10 @@ uint32_t g3_light(const struct rdc_dp *dp, const int32_t *pw, const int32_t *n,
 			continue;
 		nl = RDC_MIN(nl, (int64_t)L_ONE);
 		if (g->mat_spec) {
+			/* |R| is 1: the difference fits, its terms may not */
 			for (j = 0; j < 3; j++)
-				r[j] = (int32_t)((2 * nl * nn[j]) >> L_FRAC) -
-				       l->dir[j];
+				r[j] = (int32_t)(((2 * nl * nn[j]) >> L_FRAC) -
+						 l->dir[j]);
 			rv = cos16(r, v);
 			if (rv > 0)
 				s = pow16(RDC_MIN(rv, (int64_t)L_ONE),
