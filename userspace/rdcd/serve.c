@@ -849,6 +849,8 @@ static void rdcd_stepped_job(struct rdcd *d, void *arg)
 	default:
 		break;
 	}
+	/* the answer depends on the time moved: a live trace has it first */
+	rdc_rec_sync(d->rec);
 	rdcd_pending_end(d, c, ret);
 	d->chip_client = NULL;
 }
