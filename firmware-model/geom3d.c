@@ -42,15 +42,15 @@
 #include "geom3d_int.h"
 #include "../hw-sim/bus.h"
 
-#define G3_LIN_MAX ((int64_t)1 << 30) /* |CTM linear entry| < 2^14 */
+#define G3_LIN_MAX  ((int64_t)1 << 30) /* |CTM linear entry| < 2^14 */
 #define G3_COEF_MAX ((int64_t)1 << 28) /* view coefficient < 16.0 */
 /* the view's ratios before the common scaling: < 2^14 */
 #define G3_FACTOR_MAX ((int64_t)1 << 38)
-#define G3_S32_MAX ((int64_t)0x7fffffff)
-#define G3_CLIP_MAX G3_S32_MAX
-#define G3_Z_MAX 65535
-#define G3_T_SHIFT 30 /* clip parameter t in 2.30 */
-#define G3_LIN_ONE ((int64_t)1 << G3_LIN_SHIFT)
+#define G3_S32_MAX    ((int64_t)0x7fffffff)
+#define G3_CLIP_MAX   G3_S32_MAX
+#define G3_Z_MAX      65535
+#define G3_T_SHIFT    30 /* clip parameter t in 2.30 */
+#define G3_LIN_ONE    ((int64_t)1 << G3_LIN_SHIFT)
 
 int64_t g3_div_round(int64_t n, int64_t d)
 {
@@ -94,8 +94,8 @@ bool g3_normalize(const int64_t *v, int32_t *out)
 			s[i] *= 2;
 		m *= 2;
 	}
-	len = (int64_t)dp_isqrt((uint64_t)(s[0] * s[0] + s[1] * s[1] +
-					   s[2] * s[2]));
+	len = (int64_t)dp_isqrt(
+		(uint64_t)(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]));
 	if (!len)
 		return false;
 	for (i = 0; i < 3; i++)
@@ -127,7 +127,7 @@ static bool mat_ok(const int32_t m[3][4])
 /* CTM = CTM * b; false (CTM unchanged) when the product leaves the range. */
 static bool ctm_mult(struct rdc_dp *dp, const int32_t b[3][4])
 {
-	int32_t (*a)[4] = dp->g3.ctm;
+	int32_t(*a)[4] = dp->g3.ctm;
 	int32_t c[3][4];
 	int r, k, j;
 
@@ -317,17 +317,17 @@ static uint32_t view_set(struct rdc_dp *dp, bool persp, const int32_t *p)
 			int64_t s = (int64_t)R[0][j] * prp[0] +
 				    (int64_t)R[1][j] * prp[1] +
 				    (int64_t)R[2][j] * prp[2];
-			int64_t v = vrp[j] + g3_div_round(
-						     s, (int64_t)1 << G3_UNIT_SHIFT);
+			int64_t v =
+				vrp[j] +
+				g3_div_round(s, (int64_t)1 << G3_UNIT_SHIFT);
 
 			if (!s32_ok(v))
 				return RDC_ERR_RANGE;
 			eye[j] = (int32_t)v;
 		}
 	} else {
-		int64_t d[3] = { 2 * (int64_t)prp[0] - cu2,
-				 2 * (int64_t)prp[1] - cv2,
-				 2 * (int64_t)prp[2] };
+		int64_t d[3] = {2 * (int64_t)prp[0] - cu2,
+				2 * (int64_t)prp[1] - cv2, 2 * (int64_t)prp[2]};
 
 		for (j = 0; j < 3; j++)
 			t[j] = R[0][j] * (d[0] >> 4) + R[1][j] * (d[1] >> 4) +
@@ -346,7 +346,7 @@ static uint32_t view_set(struct rdc_dp *dp, bool persp, const int32_t *p)
 
 void g3_normal_matrix(const struct rdc_dp *dp, struct g3_nmat *nm)
 {
-	const int32_t (*a)[4] = dp->g3.ctm;
+	const int32_t(*a)[4] = dp->g3.ctm;
 	int64_t m = 0, det;
 	int r, c, sh = 0;
 
@@ -488,8 +488,8 @@ static int64_t plane_dist(const int64_t *c, unsigned int k)
  * computed from the inside end, so the two triangles sharing an edge
  * clip it to the same point.
  */
-static void plane_cut(const struct g3_pv *a, const struct g3_pv *b,
-		      int64_t da, int64_t db, unsigned int k, struct g3_pv *o)
+static void plane_cut(const struct g3_pv *a, const struct g3_pv *b, int64_t da,
+		      int64_t db, unsigned int k, struct g3_pv *o)
 {
 	int64_t t = g3_div_round(da << G3_T_SHIFT, da - db);
 	int i;
@@ -533,7 +533,8 @@ uint32_t g3_clip_poly(struct rdc_dp *dp, struct g3_pv *p, uint32_t n,
 		m = 0;
 		for (i = 0; i < n; i++) {
 			const struct g3_pv *a = &p[i], *b = &p[(i + 1) % n];
-			int64_t da = plane_dist(a->c, k), db = plane_dist(b->c, k);
+			int64_t da = plane_dist(a->c, k),
+				db = plane_dist(b->c, k);
 
 			if (da >= 0)
 				tmp[m++] = *a;
@@ -581,18 +582,18 @@ bool g3_clip_line(struct g3_pv *a, struct g3_pv *b)
 /* ---- commands ----------------------------------------------------------- */
 
 static const int32_t view_reset[18] = {
-	0, 0, 0, /* VRP */
-	0, 0, G3_ONE, /* VPN */
-	0, G3_ONE, 0, /* VUP */
-	0, 0, G3_ONE, /* PRP */
-	-G3_ONE, G3_ONE, -G3_ONE, G3_ONE, /* window */
-	G3_ONE, -G3_ONE, /* F, B */
+	0,	 0,	  0,		   /* VRP */
+	0,	 0,	  G3_ONE,	   /* VPN */
+	0,	 G3_ONE,  0,		   /* VUP */
+	0,	 0,	  G3_ONE,	   /* PRP */
+	-G3_ONE, G3_ONE,  -G3_ONE, G3_ONE, /* window */
+	G3_ONE,	 -G3_ONE,		   /* F, B */
 };
 
 void dp_3d_reset(struct rdc_dp *dp)
 {
 	struct rdc_dp_3d *g = &dp->g3;
-	struct rdc_timing tm = { 0 };
+	struct rdc_timing tm = {0};
 	int i;
 
 	mat_identity(g->ctm);

@@ -17,7 +17,7 @@
 
 struct rdc_dp_light {
 	uint32_t on;
-	uint32_t rgb; /* 0x00RRGGBB */
+	uint32_t rgb;	/* 0x00RRGGBB */
 	int32_t dir[3]; /* unit, 2.30, towards the light, world */
 };
 
@@ -46,13 +46,13 @@ struct rdc_dp_3d {
 
 /* One vertex through the pipeline (the post-transform cache). */
 struct rdc_dp_v3 {
-	int32_t c[4]; /* clip X, Y, Z, W */
-	int32_t w[3]; /* world position, 15.16 */
-	int32_t n[3]; /* world normal, unit 2.30 (0: none) */
+	int32_t c[4];	/* clip X, Y, Z, W */
+	int32_t w[3];	/* world position, 15.16 */
+	int32_t n[3];	/* world normal, unit 2.30 (0: none) */
 	int32_t sx, sy; /* screen pixel, valid when out == 0 */
-	uint32_t z; /* depth 0..65535, valid when out == 0 */
-	uint32_t rgb; /* lit colour 0x00RRGGBB */
-	uint8_t out; /* outcode: bit k set when outside clip plane k */
+	uint32_t z;	/* depth 0..65535, valid when out == 0 */
+	uint32_t rgb;	/* lit colour 0x00RRGGBB */
+	uint8_t out;	/* outcode: bit k set when outside clip plane k */
 };
 
 #endif /* RDC_GEOM3D_H */

@@ -9,10 +9,10 @@
 
 #include "dp_int.h"
 
-#define G3_ONE (1 << 16) /* 1.0 in 15.16 */
-#define G3_UNIT_SHIFT 30 /* unit vectors are 2.30 */
-#define G3_LIN_SHIFT 24 /* the view's linear part is 7.24 */
-#define G3_PLANES 6 /* clip planes */
+#define G3_ONE	      (1 << 16) /* 1.0 in 15.16 */
+#define G3_UNIT_SHIFT 30	/* unit vectors are 2.30 */
+#define G3_LIN_SHIFT  24	/* the view's linear part is 7.24 */
+#define G3_PLANES     6		/* clip planes */
 /* Sutherland-Hodgman: a triangle gains at most one vertex a plane */
 #define G3_POLY_MAX (3 + G3_PLANES)
 

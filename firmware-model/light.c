@@ -19,8 +19,8 @@
  */
 #include "geom3d_int.h"
 
-#define L_FRAC 16
-#define L_ONE (1 << L_FRAC)
+#define L_FRAC	     16
+#define L_ONE	     (1 << L_FRAC)
 #define L_CH(rgb, k) (((rgb) >> (16 - 8 * (k))) & 0xffu)
 
 static int64_t udot(const int32_t *a, const int32_t *b)

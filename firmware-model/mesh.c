@@ -16,9 +16,9 @@
 #include "geom3d_int.h"
 #include "../hw-sim/bus.h"
 
-#define IDX_BYTES 2u
+#define IDX_BYTES      2u
 #define SORT_DEPTH_MAX ((1u << 20) - 1)
-#define SORT_TRI 0xfffu /* RDC_MESH_MAX_TRIS - 1 */
+#define SORT_TRI       0xfffu /* RDC_MESH_MAX_TRIS - 1 */
 
 static void pv_from(struct g3_pv *p, const struct rdc_dp_v3 *v)
 {
@@ -200,7 +200,8 @@ static void depth_sort(struct rdc_dp *dp, uint32_t ntri)
 		uint32_t d = 0;
 
 		for (i = 0; i < 3; i++)
-			d = RDC_MAX(d, sort_depth(&dp->v3[dp->v3_idx[3 * t + i]]));
+			d = RDC_MAX(d,
+				    sort_depth(&dp->v3[dp->v3_idx[3 * t + i]]));
 		dp->v3_edge[t] = (SORT_DEPTH_MAX - d) << 12 | t;
 	}
 	edge_sort(dp->v3_edge, ntri);
@@ -242,8 +243,8 @@ void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 			for (i = 0; i < 3; i++) {
 				uint32_t a = ix[i], b = ix[(i + 1) % 3];
 
-				dp->v3_edge[nedge++] = RDC_MIN(a, b) << 16 |
-						       RDC_MAX(a, b);
+				dp->v3_edge[nedge++] =
+					RDC_MIN(a, b) << 16 | RDC_MAX(a, b);
 			}
 			continue;
 		}
@@ -254,18 +255,18 @@ void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 				col[i] = g3_pixel(dp, rgb[i]);
 		} else {
 			uint32_t c = lit ? g3_pixel(dp, face_rgb(dp, v[0], v[1],
-							       v[2], two)) :
-					   dp->st.fg;
+								 v[2], two))
+					 : dp->st.fg;
 
 			for (i = 0; i < n; i++)
 				col[i] = c;
 		}
 		/* a fan over the clipped polygon */
 		for (i = 1; i + 1 < n; i++) {
-			int32_t tx[3] = { x[0], x[i], x[i + 1] };
-			int32_t ty[3] = { y[0], y[i], y[i + 1] };
-			uint32_t tz[3] = { z[0], z[i], z[i + 1] };
-			uint32_t tc[3] = { col[0], col[i], col[i + 1] };
+			int32_t tx[3] = {x[0], x[i], x[i + 1]};
+			int32_t ty[3] = {y[0], y[i], y[i + 1]};
+			uint32_t tz[3] = {z[0], z[i], z[i + 1]};
+			uint32_t tc[3] = {col[0], col[i], col[i + 1]};
 
 			dp_tri_draw(dp, tx, ty, tc, tz, gouraud);
 		}
@@ -318,7 +319,8 @@ uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 				return RDC_ERR_RANGE;
 		}
 	}
-	p = rdc_port_span(hw, vbase, vcount * words * (uint32_t)sizeof(uint32_t),
+	p = rdc_port_span(hw, vbase,
+			  vcount * words * (uint32_t)sizeof(uint32_t),
 			  RDC_BUS_READ);
 	if (!p)
 		return RDC_ERR_RANGE;

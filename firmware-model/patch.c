@@ -20,8 +20,8 @@
 #include "geom3d_int.h"
 #include "../hw-sim/bus.h"
 
-#define FD_SHIFT 16
-#define FD_ONE ((int64_t)1 << FD_SHIFT)
+#define FD_SHIFT  16
+#define FD_ONE	  ((int64_t)1 << FD_SHIFT)
 #define PATCH_PTS 16
 
 struct fd {
@@ -116,7 +116,8 @@ uint32_t g3_cmd_patch(struct rdc_dp *dp, const uint32_t *a)
 	for (j = 0; j < 4; j++) {
 		for (k = 0; k < 3; k++) {
 			for (i = 0; i < 4; i++)
-				p[i] = (int64_t)(int32_t)a[1 + 3 * (4 * i + j) + k] *
+				p[i] = (int64_t)(int32_t)
+					       a[1 + 3 * (4 * i + j) + k] *
 				       FD_ONE;
 			fd_bezier(&col[j][k], &dcol[j][k], p, n);
 		}
@@ -161,12 +162,15 @@ uint32_t g3_cmd_patch(struct rdc_dp *dp, const uint32_t *a)
 		s = i / (n + 1);
 		j = i % (n + 1);
 		for (r = 1; zero3(v->n) && r <= n; r++) {
-			if (s + r <= n && !zero3(dp->v3[(s + r) * (n + 1) + j].n))
-				rdc_memcpy(v->n, dp->v3[(s + r) * (n + 1) + j].n,
+			if (s + r <= n &&
+			    !zero3(dp->v3[(s + r) * (n + 1) + j].n))
+				rdc_memcpy(v->n,
+					   dp->v3[(s + r) * (n + 1) + j].n,
 					   sizeof(v->n));
 			else if (s >= r &&
 				 !zero3(dp->v3[(s - r) * (n + 1) + j].n))
-				rdc_memcpy(v->n, dp->v3[(s - r) * (n + 1) + j].n,
+				rdc_memcpy(v->n,
+					   dp->v3[(s - r) * (n + 1) + j].n,
 					   sizeof(v->n));
 		}
 	}
@@ -176,13 +180,12 @@ uint32_t g3_cmd_patch(struct rdc_dp *dp, const uint32_t *a)
 
 		rdc_memcpy(pos, dp->v3[i].w, sizeof(pos));
 		rdc_memcpy(nrm, dp->v3[i].n, sizeof(nrm));
-		if (!g3_vertex(dp, pos, nrm, &nm, vlit,
-			       fl & RDC_MESH_TWO_SIDED, &dp->v3[i]))
+		if (!g3_vertex(dp, pos, nrm, &nm, vlit, fl & RDC_MESH_TWO_SIDED,
+			       &dp->v3[i]))
 			return RDC_ERR_RANGE;
 	}
-	rdc_port_compute(dp->hw,
-			 nv * (RDC_T_TESS3 + RDC_T_VERTEX3 +
-			       (vlit ? g3_light_cycles(dp) : 0)));
+	rdc_port_compute(dp->hw, nv * (RDC_T_TESS3 + RDC_T_VERTEX3 +
+				       (vlit ? g3_light_cycles(dp) : 0)));
 	k = 0;
 	for (s = 0; s < n; s++) {
 		for (j = 0; j < n; j++) {

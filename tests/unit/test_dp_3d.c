@@ -17,12 +17,12 @@
 
 #include "test_dp_common.h"
 
-#define SW 640
-#define SH 480
-#define STRIDE (SW * 4)
-#define ZBASE 0x200000u
-#define VBASE 0x300000u
-#define IBASE 0x380000u
+#define SW	640
+#define SH	480
+#define STRIDE	(SW * 4)
+#define ZBASE	0x200000u
+#define VBASE	0x300000u
+#define IBASE	0x380000u
 #define COV_TOL 0.75
 #define COL_TOL 2
 
@@ -184,12 +184,18 @@ struct hv {
 static double ref_dist(const double *c, int k)
 {
 	switch (k) {
-	case 0: return c[3] + c[0];
-	case 1: return c[3] - c[0];
-	case 2: return c[3] + c[1];
-	case 3: return c[3] - c[1];
-	case 4: return -c[2];
-	default: return c[3] + c[2];
+	case 0:
+		return c[3] + c[0];
+	case 1:
+		return c[3] - c[0];
+	case 2:
+		return c[3] + c[1];
+	case 3:
+		return c[3] - c[1];
+	case 4:
+		return -c[2];
+	default:
+		return c[3] + c[2];
 	}
 }
 
@@ -306,7 +312,7 @@ static void put_mesh(struct tdp *t, const double (*p)[3],
 static void mesh(struct tdp *t, uint32_t fl, uint32_t nv, uint32_t nt)
 {
 	tdp_cmd(t, RDC_OP_MESH, fl, 4,
-		(const uint32_t[]){ VBASE, nv, IBASE, nt });
+		(const uint32_t[]){VBASE, nv, IBASE, nt});
 }
 
 static uint32_t px(struct tdp *t, int x, int y)
@@ -323,10 +329,21 @@ static void clear_screen(struct tdp *t)
 static struct ref_view std_view(bool persp)
 {
 	struct ref_view v = {
-		.vrp = { 0, 0, 0 }, .vpn = { 0, 0, 1 }, .vup = { 0, 1, 0 },
-		.prp = { 0, 0, 4 }, .umin = -2, .umax = 2, .vmin = -1.5,
-		.vmax = 1.5, .F = 2, .B = -6, .persp = persp,
-		.vx0 = 0, .vy0 = 0, .vx1 = SW - 1, .vy1 = SH - 1,
+		.vrp = {0, 0, 0},
+		.vpn = {0, 0, 1},
+		.vup = {0, 1, 0},
+		.prp = {0, 0, 4},
+		.umin = -2,
+		.umax = 2,
+		.vmin = -1.5,
+		.vmax = 1.5,
+		.F = 2,
+		.B = -6,
+		.persp = persp,
+		.vx0 = 0,
+		.vy0 = 0,
+		.vx1 = SW - 1,
+		.vy1 = SH - 1,
 	};
 	return v;
 }
@@ -347,7 +364,8 @@ static void rand_view(uint32_t *s, struct ref_view *v)
 		double c[3];
 
 		v_cross(v->vup, v->vpn, c);
-		if (sqrt(v_dot(c, c)) > 0.3 && sqrt(v_dot(v->vpn, v->vpn)) > 0.3)
+		if (sqrt(v_dot(c, c)) > 0.3 &&
+		    sqrt(v_dot(v->vpn, v->vpn)) > 0.3)
 			break;
 	} while (1);
 	v->persp = tdp_rand(s) & 1;
@@ -374,7 +392,7 @@ static void check_tri(struct tdp *t, const struct ref_view *v,
 		      const double (*p)[3], unsigned long *exact_in,
 		      unsigned long *checked)
 {
-	static const uint16_t idx[3] = { 0, 1, 2 };
+	static const uint16_t idx[3] = {0, 1, 2};
 	struct hv h[16];
 	double s[16][3];
 	mat4 N;
@@ -394,17 +412,19 @@ static void check_tri(struct tdp *t, const struct ref_view *v,
 	for (int y = 0; y < SH; y++) {
 		for (int x = 0; x < SW; x++) {
 			bool on = px(t, x, y) != 0;
-			double d = n >= 3 ? poly_sdist((const double (*)[3])s,
-						       n, x + 0.5, y + 0.5) :
-					    -1e9;
+			double d = n >= 3 ? poly_sdist((const double(*)[3])s, n,
+						       x + 0.5, y + 0.5)
+					  : -1e9;
 
 			if (on) {
 				if (d < -COV_TOL)
-					fail_msg("pixel %d,%d drawn, %.3f outside",
+					fail_msg("pixel %d,%d drawn, %.3f "
+						 "outside",
 						 x, y, -d);
 				if (x < v->vx0 || x > v->vx1 || y < v->vy0 ||
 				    y > v->vy1)
-					fail_msg("pixel %d,%d outside the viewport",
+					fail_msg("pixel %d,%d outside the "
+						 "viewport",
 						 x, y);
 			} else if (d >= COV_TOL) {
 				fail_msg("pixel %d,%d not drawn, %.3f inside",
@@ -433,7 +453,7 @@ static void test_coverage_random(void **state)
 		for (int i = 0; i < 3; i++)
 			for (int k = 0; k < 3; k++)
 				p[i][k] = v.vrp[k] + frand(&seed, -6, 6);
-		check_tri(t, &v, (const double (*)[3])p, &in, &all);
+		check_tri(t, &v, (const double(*)[3])p, &in, &all);
 	}
 	printf("coverage: %lu pixels well inside checked of %lu\n", in, all);
 	assert_true(in > 10000); /* the triangles were not all off screen */
@@ -449,15 +469,15 @@ static void test_known_points(void **state)
 		double p[3];
 		int x, y;
 	} k[] = {
-		{ false, { 0, 0, 0 }, 320, 240 },
-		{ false, { 1.5, 0.75, 0 }, 560, 120 },
-		{ false, { -1, -0.75, -3 }, 160, 360 },
-		{ false, { 1, 0, 1 }, 480, 240 },
-		{ true, { 0, 0, 0 }, 320, 240 },
-		{ true, { 1.5, 0.75, 0 }, 560, 120 },
+		{false, {0, 0, 0}, 320, 240},
+		{false, {1.5, 0.75, 0}, 560, 120},
+		{false, {-1, -0.75, -3}, 160, 360},
+		{false, {1, 0, 1}, 480, 240},
+		{true, {0, 0, 0}, 320, 240},
+		{true, {1.5, 0.75, 0}, 560, 120},
 		/* z = -4: twice as far from the eye, half the offset */
-		{ true, { 2, 0, -4 }, 480, 240 },
-		{ true, { -2, 1.5, -4 }, 160, 120 },
+		{true, {2, 0, -4}, 480, 240},
+		{true, {-2, 1.5, -4}, 160, 120},
 	};
 
 	for (size_t i = 0; i < RDC_ARRAY_SIZE(k); i++) {
@@ -522,7 +542,8 @@ static uint32_t sphere(double (*p)[3], double (*nrm)[3], uint16_t *idx,
 		for (int r = 0; r + 1 < SPH_R - 1; r++) {
 			uint16_t a = (uint16_t)(1 + r * SPH_S + s);
 			uint16_t b = (uint16_t)(1 + r * SPH_S + s1);
-			uint16_t c = (uint16_t)(a + SPH_S), d = (uint16_t)(b + SPH_S);
+			uint16_t c = (uint16_t)(a + SPH_S),
+				 d = (uint16_t)(b + SPH_S);
 
 			idx[t++] = a, idx[t++] = c, idx[t++] = d;
 			idx[t++] = a, idx[t++] = d, idx[t++] = b;
@@ -550,11 +571,12 @@ static void test_closed_mesh_once(void **state)
 	static bool ffront[200];
 	uint32_t nt, nv = sphere(p, nrm, idx, &nt), seed = 99;
 
-	put_mesh(t, (const double (*)[3])p, NULL, nv, idx, nt);
+	put_mesh(t, (const double(*)[3])p, NULL, nv, idx, nt);
 	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_XOR);
 	for (int it = 0; it < 4; it++) {
 		struct ref_view v = std_view(it & 1);
-		uint32_t qx = tdp_rand(&seed) & 0xffff, qy = tdp_rand(&seed) & 0xffff;
+		uint32_t qx = tdp_rand(&seed) & 0xffff,
+			 qy = tdp_rand(&seed) & 0xffff;
 		double ax = qx * 2 * M_PI / 65536, ay = qy * 2 * M_PI / 65536;
 		mat4 M, N;
 		long once = 0, twice = 0;
@@ -563,7 +585,8 @@ static void test_closed_mesh_once(void **state)
 		m_ident(M);
 		m_rot(M, 0, ax);
 		m_rot(M, 1, ay);
-		/* CTM = Rx(ax) Ry(ay) through ROTATE, angles as the DP has them */
+		/* CTM = Rx(ax) Ry(ay) through ROTATE, angles as the DP has them
+		 */
 		tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
 		tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_X, 1, &qx);
 		tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_Y, 1, &qy);
@@ -600,8 +623,11 @@ static void test_closed_mesh_once(void **state)
 
 						if (fn[f] < 3)
 							continue;
-						d = poly_sdist((const double (*)[3])fs[f],
-							       fn[f], x + 0.5, y + 0.5);
+						d = poly_sdist(
+							(const double(*)[3])
+								fs[f],
+							fn[f], x + 0.5,
+							y + 0.5);
 						if (ffront[f])
 							bf = fmax(bf, d);
 						else
@@ -619,7 +645,8 @@ static void test_closed_mesh_once(void **state)
 								 0xffffff);
 						once++;
 					} else if (bb >= COV_TOL) {
-						assert_int_equal(px(t, x, y), 0);
+						assert_int_equal(px(t, x, y),
+								 0);
 						twice++;
 					}
 				}
@@ -665,7 +692,8 @@ static void ref_shade(const struct ref_light *L, const double *nin,
 		for (int c = 0; c < 3; c++)
 			out[c] += L->col[i][c] *
 				  (L->mat_d[c] * nl +
-				   (rv > 0 ? L->mat_s[c] * pow(rv, L->shine) : 0));
+				   (rv > 0 ? L->mat_s[c] * pow(rv, L->shine)
+					   : 0));
 	}
 	for (int c = 0; c < 3; c++)
 		out[c] = fmin(255, out[c] * 255);
@@ -699,14 +727,14 @@ static void test_lighting_ref(void **state)
 	struct tdp *t = *state;
 	uint32_t seed = 7777;
 	struct ref_view v = std_view(false);
-	double V[3] = { 0, 0, 1 };
+	double V[3] = {0, 0, 1};
 
 	send_view(t, &v);
 	for (int it = 0; it < 40; it++) {
-		struct ref_light L = { .nl = 1 + (int)(tdp_rand(&seed) % 3) };
+		struct ref_light L = {.nl = 1 + (int)(tdp_rand(&seed) % 3)};
 		double n[3], p[3][3], nr[3][3], a[3], b[3], want[3];
 		uint32_t m[4];
-		static const uint16_t idx[3] = { 0, 1, 2 };
+		static const uint16_t idx[3] = {0, 1, 2};
 
 		for (int c = 0; c < 3; c++) {
 			L.amb[c] = (tdp_rand(&seed) & 0xff) / 255.0;
@@ -716,7 +744,7 @@ static void test_lighting_ref(void **state)
 		}
 		L.shine = 1 + (int)(tdp_rand(&seed) % 60);
 		tdp_cmd(t, RDC_OP_SET_AMBIENT, 0, 1,
-			(const uint32_t[]){ rgb_of(L.amb) });
+			(const uint32_t[]){rgb_of(L.amb)});
 		m[0] = rgb_of(L.mat_a);
 		m[1] = rgb_of(L.mat_d);
 		m[2] = rgb_of(L.mat_s);
@@ -724,7 +752,8 @@ static void test_lighting_ref(void **state)
 		tdp_cmd(t, RDC_OP_SET_MATERIAL, 0, 4, m);
 		for (int i = 0; i < 4; i++) {
 			if (i >= L.nl) {
-				tdp_cmd(t, RDC_OP_SET_LIGHT, (uint32_t)i, 0, NULL);
+				tdp_cmd(t, RDC_OP_SET_LIGHT, (uint32_t)i, 0,
+					NULL);
 				continue;
 			}
 			for (int c = 0; c < 3; c++) {
@@ -733,10 +762,10 @@ static void test_lighting_ref(void **state)
 			}
 			L.dir[i][2] = frand(&seed, 0.2, 1);
 			tdp_cmd(t, RDC_OP_SET_LIGHT, (uint32_t)i, 4,
-				(const uint32_t[]){ rgb_of(L.col[i]),
-						    (uint32_t)fx(L.dir[i][0]),
-						    (uint32_t)fx(L.dir[i][1]),
-						    (uint32_t)fx(L.dir[i][2]) });
+				(const uint32_t[]){rgb_of(L.col[i]),
+						   (uint32_t)fx(L.dir[i][0]),
+						   (uint32_t)fx(L.dir[i][1]),
+						   (uint32_t)fx(L.dir[i][2])});
 		}
 		/* the reference takes the quantised inputs */
 		for (int c = 0; c < 3; c++) {
@@ -765,10 +794,11 @@ static void test_lighting_ref(void **state)
 		ref_shade(&L, n, V, want);
 		for (int mode = 0; mode < 2; mode++) {
 			clear_screen(t);
-			put_mesh(t, (const double (*)[3])p,
-				 (const double (*)[3])nr, 3, idx, 1);
-			mesh(t, RDC_MESH_NORMALS | RDC_MESH_LIT |
-					(mode ? RDC_MESH_GOURAUD : 0),
+			put_mesh(t, (const double(*)[3])p,
+				 (const double(*)[3])nr, 3, idx, 1);
+			mesh(t,
+			     RDC_MESH_NORMALS | RDC_MESH_LIT |
+				     (mode ? RDC_MESH_GOURAUD : 0),
 			     3, 1);
 			tdp_drain(t);
 			assert_int_equal(tdp_err(t), 0);
@@ -810,8 +840,8 @@ static void test_lighting_ref(void **state)
 static void test_stack_lists(void **state)
 {
 	struct tdp *t = *state;
-	static const double p[3][3] = { { 0, 0, 0 }, { 0.5, 0, 0 }, { 0, 0.5, 0 } };
-	static const uint16_t idx[3] = { 0, 1, 2 };
+	static const double p[3][3] = {{0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}};
+	static const uint16_t idx[3] = {0, 1, 2};
 	const uint32_t list = 0x3c0000u;
 	uint32_t crc1, crc2;
 	struct ref_view v = std_view(true);
@@ -826,7 +856,7 @@ static void test_stack_lists(void **state)
 	rdc_st32(t->vram + list + 20, RDC_CMD(RDC_OP_RET, 0, 0));
 	clear_screen(t);
 	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
-	tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_Z, 1, (const uint32_t[]){ 4096 });
+	tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_Z, 1, (const uint32_t[]){4096});
 	for (int i = 0; i < 2; i++) {
 		tdp_cmd(t, RDC_OP_PUSH_MATRIX, 0, 0, NULL);
 		TDP_CMD(t, RDC_OP_TRANSLATE, (uint32_t)fx(i ? -1 : 1),
@@ -846,10 +876,11 @@ static void test_stack_lists(void **state)
 		double tx = i == 2 ? 0 : i ? -1 : 1, ty = i == 2 ? 0 : 0.25;
 		double tz = i == 2 ? 0 : -1;
 
-		TDP_CMD(t, RDC_OP_MATRIX_LOAD, (uint32_t)fx(c), (uint32_t)fx(-s),
-			0, (uint32_t)fx(c * tx - s * ty), (uint32_t)fx(s),
-			(uint32_t)fx(c), 0, (uint32_t)fx(s * tx + c * ty), 0, 0,
-			(uint32_t)fx(1), (uint32_t)fx(tz));
+		TDP_CMD(t, RDC_OP_MATRIX_LOAD, (uint32_t)fx(c),
+			(uint32_t)fx(-s), 0, (uint32_t)fx(c * tx - s * ty),
+			(uint32_t)fx(s), (uint32_t)fx(c), 0,
+			(uint32_t)fx(s * tx + c * ty), 0, 0, (uint32_t)fx(1),
+			(uint32_t)fx(tz));
 		mesh(t, 0, 3, 1);
 	}
 	tdp_drain(t);
@@ -866,8 +897,8 @@ static void test_stack_lists(void **state)
 static void test_cull_facing(void **state)
 {
 	struct tdp *t = *state;
-	static const double p[3][3] = { { -1, -1, 0 }, { 1, -1, 0 }, { 0, 1, 0 } };
-	static const uint16_t ccw[3] = { 0, 1, 2 }, cw[3] = { 0, 2, 1 };
+	static const double p[3][3] = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+	static const uint16_t ccw[3] = {0, 1, 2}, cw[3] = {0, 2, 1};
 	struct ref_view v = std_view(true);
 
 	send_view(t, &v);
@@ -892,14 +923,14 @@ static void test_painter_sort(void **state)
 {
 	struct tdp *t = *state;
 	static const double p[6][3] = {
-		{ -1, -1, 1 }, { 1, -1, 1 }, { 0, 1, 1 },
-		{ -1.5, -1.2, -2 }, { 1.5, -1.2, -2 }, { 0, 1.5, -2 },
+		{-1, -1, 1},	  {1, -1, 1},	   {0, 1, 1},
+		{-1.5, -1.2, -2}, {1.5, -1.2, -2}, {0, 1.5, -2},
 	};
 	static const double nr[6][3] = {
-		{ 1, 0, 0.2 }, { 1, 0, 0.2 }, { 1, 0, 0.2 },
-		{ -1, 0, 0.2 }, { -1, 0, 0.2 }, { -1, 0, 0.2 },
+		{1, 0, 0.2},  {1, 0, 0.2},  {1, 0, 0.2},
+		{-1, 0, 0.2}, {-1, 0, 0.2}, {-1, 0, 0.2},
 	};
-	static const uint16_t idx[6] = { 0, 1, 2, 3, 4, 5 };
+	static const uint16_t idx[6] = {0, 1, 2, 3, 4, 5};
 	struct ref_view v = std_view(true);
 
 	send_view(t, &v);
@@ -907,16 +938,17 @@ static void test_painter_sort(void **state)
 	TDP_CMD(t, RDC_OP_SET_AMBIENT, 0);
 	TDP_CMD(t, RDC_OP_SET_MATERIAL, 0, 0xffffff, 0, 1);
 	tdp_cmd(t, RDC_OP_SET_LIGHT, 0, 4,
-		(const uint32_t[]){ 0xff0000, (uint32_t)fx(1), 0, 0 });
+		(const uint32_t[]){0xff0000, (uint32_t)fx(1), 0, 0});
 	tdp_cmd(t, RDC_OP_SET_LIGHT, 1, 4,
-		(const uint32_t[]){ 0x0000ff, (uint32_t)fx(-1), 0, 0 });
+		(const uint32_t[]){0x0000ff, (uint32_t)fx(-1), 0, 0});
 	put_mesh(t, p, nr, 6, idx, 2);
 	for (int k = 0; k < 2; k++) {
 		uint32_t c;
 
 		clear_screen(t);
-		mesh(t, RDC_MESH_NORMALS | RDC_MESH_LIT | RDC_MESH_GOURAUD |
-				(k ? RDC_MESH_SORT : 0),
+		mesh(t,
+		     RDC_MESH_NORMALS | RDC_MESH_LIT | RDC_MESH_GOURAUD |
+			     (k ? RDC_MESH_SORT : 0),
 		     6, 2);
 		tdp_drain(t);
 		assert_int_equal(tdp_err(t), 0);
@@ -942,10 +974,9 @@ static void test_wire_edges_once(void **state)
 	/* parallel view, window 640 x 480 units: one unit a pixel */
 	struct ref_view v = std_view(false);
 	static const double p[4][3] = {
-		{ -200, -100, 0 }, { 150, -120, 0 }, { 180, 90, 0 }, { -170, 130, 0 }
-	};
-	static const uint16_t idx[6] = { 0, 1, 2, 0, 2, 3 };
-	static const int e[5][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 2, 3 }, { 3, 0 } };
+		{-200, -100, 0}, {150, -120, 0}, {180, 90, 0}, {-170, 130, 0}};
+	static const uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+	static const int e[5][2] = {{0, 1}, {1, 2}, {2, 0}, {2, 3}, {3, 0}};
 	uint32_t crc1, crc2;
 
 	v.umin = -320, v.umax = 320, v.vmin = -240, v.vmax = 240;
@@ -965,8 +996,10 @@ static void test_wire_edges_once(void **state)
 		const double *a = p[e[i][0]], *b = p[e[i][1]];
 
 		TDP_CMD(t, RDC_OP_LINE,
-			RDC_XY((int)lround(a[0] + 320), (int)lround(240 - a[1])),
-			RDC_XY((int)lround(b[0] + 320), (int)lround(240 - b[1])));
+			RDC_XY((int)lround(a[0] + 320),
+			       (int)lround(240 - a[1])),
+			RDC_XY((int)lround(b[0] + 320),
+			       (int)lround(240 - b[1])));
 	}
 	tdp_drain(t);
 	crc2 = tdp_fnv(2166136261u, t->vram, STRIDE * SH);
@@ -986,10 +1019,10 @@ static void test_zbuffer_ref(void **state)
 	struct tdp *t = *state;
 	struct ref_view v = std_view(true);
 	static const double p[6][3] = {
-		{ -1.5, -1, -2 }, { 1.5, -1, 1 }, { 0, 1.2, -0.5 },
-		{ -1.5, 0.8, 1 }, { 1.2, 1, -2.5 }, { 0, -1.2, -0.5 },
+		{-1.5, -1, -2}, {1.5, -1, 1},	{0, 1.2, -0.5},
+		{-1.5, 0.8, 1}, {1.2, 1, -2.5}, {0, -1.2, -0.5},
 	};
-	static const uint16_t idx[6] = { 0, 1, 2, 3, 4, 5 };
+	static const uint16_t idx[6] = {0, 1, 2, 3, 4, 5};
 	mat4 N;
 	double s[2][3][3];
 	long checked = 0;
@@ -1007,13 +1040,13 @@ static void test_zbuffer_ref(void **state)
 	clear_screen(t);
 	put_mesh(t, p, NULL, 6, idx, 2);
 	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST | RDC_Z_WRITE, 2,
-		(const uint32_t[]){ ZBASE, SW * 2 });
+		(const uint32_t[]){ZBASE, SW * 2});
 	TDP_CMD(t, RDC_OP_CLEAR_Z, 0xffff);
 	TDP_CMD(t, RDC_OP_SET_FG, 0xff0000);
-	tdp_cmd(t, RDC_OP_MESH, 0, 4, (const uint32_t[]){ VBASE, 3, IBASE, 1 });
+	tdp_cmd(t, RDC_OP_MESH, 0, 4, (const uint32_t[]){VBASE, 3, IBASE, 1});
 	TDP_CMD(t, RDC_OP_SET_FG, 0x0000ff);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){ VBASE + 36, 3, IBASE, 1 });
+		(const uint32_t[]){VBASE + 36, 3, IBASE, 1});
 	tdp_drain(t);
 	assert_int_equal(tdp_err(t), 0);
 	for (int y = 0; y < SH; y++) {
@@ -1022,13 +1055,17 @@ static void test_zbuffer_ref(void **state)
 			bool in = true;
 
 			for (int f = 0; f < 2; f++) {
-				const double (*q)[3] = (const double (*)[3])s[f];
+				const double(*q)[3] = (const double(*)[3])s[f];
 				double d = poly_sdist(q, 3, x + 0.5, y + 0.5);
-				/* depth on the screen plane through the vertices */
-				double ax = q[1][0] - q[0][0], ay = q[1][1] - q[0][1];
-				double bx = q[2][0] - q[0][0], by = q[2][1] - q[0][1];
+				/* depth on the screen plane through the
+				 * vertices */
+				double ax = q[1][0] - q[0][0],
+				       ay = q[1][1] - q[0][1];
+				double bx = q[2][0] - q[0][0],
+				       by = q[2][1] - q[0][1];
 				double det = ax * by - ay * bx;
-				double px0 = x + 0.5 - q[0][0], py0 = y + 0.5 - q[0][1];
+				double px0 = x + 0.5 - q[0][0],
+				       py0 = y + 0.5 - q[0][1];
 				double l1 = (px0 * by - py0 * bx) / det;
 				double l2 = (ax * py0 - ay * px0) / det;
 
@@ -1061,9 +1098,9 @@ static void expect_err(struct tdp *t, uint32_t code)
 static void test_bad_input(void **state)
 {
 	struct tdp *t = *state;
-	static const double p[3][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
-	static const uint16_t idx[3] = { 0, 1, 2 };
-	static const uint16_t bad[3] = { 0, 1, 3 };
+	static const double p[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+	static const uint16_t idx[3] = {0, 1, 2};
+	static const uint16_t bad[3] = {0, 1, 3};
 	struct ref_view v = std_view(true);
 	uint32_t h0, a[18], i;
 
@@ -1083,15 +1120,16 @@ static void test_bad_input(void **state)
 	mesh(t, 0, 3, RDC_MESH_MAX_TRIS + 1);
 	expect_err(t, RDC_ERR_RANGE);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){ TDP_VRAM_SIZE - 24, 3, IBASE, 1 });
+		(const uint32_t[]){TDP_VRAM_SIZE - 24, 3, IBASE, 1});
 	expect_err(t, RDC_ERR_RANGE);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){ VBASE, 3, TDP_VRAM_SIZE - 4, 1 });
+		(const uint32_t[]){VBASE, 3, TDP_VRAM_SIZE - 4, 1});
 	expect_err(t, RDC_ERR_RANGE);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){ 0xfffffff0u, 3, 0xfffffff0u, 0xffff });
+		(const uint32_t[]){0xfffffff0u, 3, 0xfffffff0u, 0xffff});
 	expect_err(t, RDC_ERR_RANGE);
-	tdp_cmd(t, RDC_OP_MESH, 0, 4, (const uint32_t[]){ VBASE + 2, 3, IBASE, 1 });
+	tdp_cmd(t, RDC_OP_MESH, 0, 4,
+		(const uint32_t[]){VBASE + 2, 3, IBASE, 1});
 	expect_err(t, RDC_ERR_RANGE);
 	/* lit Gouraud without normals; unknown flags */
 	mesh(t, RDC_MESH_LIT | RDC_MESH_GOURAUD, 3, 1);
@@ -1101,7 +1139,7 @@ static void test_bad_input(void **state)
 	/* a buffer exactly at the end of VRAM is fine */
 	memcpy(t->vram + TDP_VRAM_SIZE - 36, t->vram + VBASE, 36);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){ TDP_VRAM_SIZE - 36, 3, IBASE, 1 });
+		(const uint32_t[]){TDP_VRAM_SIZE - 36, 3, IBASE, 1});
 	expect_err(t, 0);
 	/* the stack: 16 pushes fit, the 17th and an empty pop do not */
 	for (i = 0; i < RDC_MATRIX_STACK_DEPTH; i++)
@@ -1121,7 +1159,7 @@ static void test_bad_input(void **state)
 	expect_err(t, 0);
 	TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(10), 65536, 65536);
 	expect_err(t, RDC_ERR_RANGE);
-	tdp_cmd(t, RDC_OP_ROTATE, 3, 1, (const uint32_t[]){ 0 });
+	tdp_cmd(t, RDC_OP_ROTATE, 3, 1, (const uint32_t[]){0});
 	expect_err(t, RDC_ERR_ARG);
 	TDP_CMD(t, RDC_OP_MATRIX_LOAD, 1, 2, 3);
 	expect_err(t, RDC_ERR_LENGTH);
@@ -1158,7 +1196,7 @@ static void test_bad_input(void **state)
 	}
 	/* points at the eye and behind it: clipped, nothing behind drawn */
 	{
-		static const double q[3][3] = { { 0, 0, 4 }, { 1, 0, 8 }, { 0, 1, 6 } };
+		static const double q[3][3] = {{0, 0, 4}, {1, 0, 8}, {0, 1, 6}};
 
 		tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
 		clear_screen(t);
@@ -1171,7 +1209,8 @@ static void test_bad_input(void **state)
 	}
 	/* a far vertex: clip coordinates out of range */
 	{
-		static const double q[3][3] = { { 0, 0, 0 }, { 30000, 0, 0 }, { 0, 1, 0 } };
+		static const double q[3][3] = {
+			{0, 0, 0}, {30000, 0, 0}, {0, 1, 0}};
 
 		put_mesh(t, q, NULL, 3, idx, 1);
 		TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(1000), (uint32_t)fx(1000),
@@ -1181,7 +1220,7 @@ static void test_bad_input(void **state)
 	}
 	/* a patch with bad steps, lights, materials */
 	{
-		uint32_t pa[49] = { 0 };
+		uint32_t pa[49] = {0};
 
 		pa[0] = 33u << 8;
 		tdp_cmd(t, RDC_OP_PATCH, 0, 49, pa);
@@ -1219,8 +1258,10 @@ static void test_patch_flat(void **state)
 	struct ref_view v = std_view(true);
 	uint32_t a[49];
 	/* a planar quad: z = -1 + (y + 1) / 2.1 */
-	double q[4][3] = { { -1.5, -1, -1 }, { 1.5, -1, -1 }, { 1.2, 1.1, 0 },
-			   { -1.3, 1, -1 + 2 / 2.1 } };
+	double q[4][3] = {{-1.5, -1, -1},
+			  {1.5, -1, -1},
+			  {1.2, 1.1, 0},
+			  {-1.3, 1, -1 + 2 / 2.1}};
 	mat4 N;
 	double s[4][3];
 
@@ -1256,13 +1297,15 @@ static void test_patch_flat(void **state)
 			for (int x = 0; x < SW; x++) {
 				bool on = px(t, x, y) != 0;
 				/* the quad is planar but not a parallelogram */
-				double d = poly_sdist((const double (*)[3])s, 4,
+				double d = poly_sdist((const double(*)[3])s, 4,
 						      x + 0.5, y + 0.5);
 
 				if (on && d < -COV_TOL - 0.5)
-					fail_msg("n %u: %d,%d outside", n, x, y);
+					fail_msg("n %u: %d,%d outside", n, x,
+						 y);
 				if (!on && d > COV_TOL + 0.5)
-					fail_msg("n %u: %d,%d missing", n, x, y);
+					fail_msg("n %u: %d,%d missing", n, x,
+						 y);
 			}
 	}
 }
@@ -1270,16 +1313,11 @@ static void test_patch_flat(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_known_points),
-		TDP_TEST(test_coverage_random),
-		TDP_TEST(test_closed_mesh_once),
-		TDP_TEST(test_lighting_ref),
-		TDP_TEST(test_stack_lists),
-		TDP_TEST(test_cull_facing),
-		TDP_TEST(test_painter_sort),
-		TDP_TEST(test_wire_edges_once),
-		TDP_TEST(test_zbuffer_ref),
-		TDP_TEST(test_bad_input),
+		TDP_TEST(test_known_points),	 TDP_TEST(test_coverage_random),
+		TDP_TEST(test_closed_mesh_once), TDP_TEST(test_lighting_ref),
+		TDP_TEST(test_stack_lists),	 TDP_TEST(test_cull_facing),
+		TDP_TEST(test_painter_sort),	 TDP_TEST(test_wire_edges_once),
+		TDP_TEST(test_zbuffer_ref),	 TDP_TEST(test_bad_input),
 		TDP_TEST(test_patch_flat),
 	};
 

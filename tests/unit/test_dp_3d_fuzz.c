@@ -14,22 +14,35 @@
 
 #include "test_dp_common.h"
 
-#define F_W 320u
-#define F_H 200u
+#define F_W	 320u
+#define F_H	 200u
 #define F_STRIDE (F_W * 4u)
-#define F_ZBASE 0x100000u
-#define F_BUFS 0x200000u /* random vertex and index data from here */
-#define F_IDX 0x380000u /* indices below 16 from here */
-#define F_CMDS 6000u
+#define F_ZBASE	 0x100000u
+#define F_BUFS	 0x200000u /* random vertex and index data from here */
+#define F_IDX	 0x380000u /* indices below 16 from here */
+#define F_CMDS	 6000u
 
 static const uint8_t ops[] = {
-	RDC_OP_MATRIX_LOAD, RDC_OP_MATRIX_MULT, RDC_OP_TRANSLATE,
-	RDC_OP_SCALE,	    RDC_OP_ROTATE,	RDC_OP_PUSH_MATRIX,
-	RDC_OP_POP_MATRIX,  RDC_OP_SET_VIEW,	RDC_OP_SET_VIEWPORT3,
-	RDC_OP_SET_LIGHT,   RDC_OP_SET_AMBIENT, RDC_OP_SET_MATERIAL,
-	RDC_OP_MESH,	    RDC_OP_MESH,	RDC_OP_MESH,
-	RDC_OP_PATCH,	    RDC_OP_BEZIER3,	0x47,
-	0x4d,		    0x53,
+	RDC_OP_MATRIX_LOAD,
+	RDC_OP_MATRIX_MULT,
+	RDC_OP_TRANSLATE,
+	RDC_OP_SCALE,
+	RDC_OP_ROTATE,
+	RDC_OP_PUSH_MATRIX,
+	RDC_OP_POP_MATRIX,
+	RDC_OP_SET_VIEW,
+	RDC_OP_SET_VIEWPORT3,
+	RDC_OP_SET_LIGHT,
+	RDC_OP_SET_AMBIENT,
+	RDC_OP_SET_MATERIAL,
+	RDC_OP_MESH,
+	RDC_OP_MESH,
+	RDC_OP_MESH,
+	RDC_OP_PATCH,
+	RDC_OP_BEZIER3,
+	0x47,
+	0x4d,
+	0x53,
 };
 
 /* Mostly modest 15.16 numbers, sometimes 0 or an extreme. */
@@ -93,7 +106,8 @@ static void fuzz_cmd(struct tdp *t, uint32_t *rng)
 		fl = tdp_rand(rng) % 2;
 		break;
 	case RDC_OP_SET_VIEWPORT3:
-		a[0] = RDC_XY(tdp_range(rng, -50, 200), tdp_range(rng, -50, 150));
+		a[0] = RDC_XY(tdp_range(rng, -50, 200),
+			      tdp_range(rng, -50, 150));
 		a[1] = RDC_XY(tdp_range(rng, 0, 400), tdp_range(rng, 0, 300));
 		break;
 	case RDC_OP_ROTATE:
@@ -123,12 +137,15 @@ static void fuzz_cmd(struct tdp *t, uint32_t *rng)
 			break;
 		}
 		a[0] = rnd_addr(rng);
-		a[1] = tdp_rand(rng) % 8 ? tdp_rand(rng) % 64 :
-					   tdp_rand(rng) % (RDC_MESH_MAX_VERTS + 2);
+		a[1] = tdp_rand(rng) % 8
+			       ? tdp_rand(rng) % 64
+			       : tdp_rand(rng) % (RDC_MESH_MAX_VERTS + 2);
 		a[2] = rnd_addr(rng);
-		a[3] = tdp_rand(rng) % 8 ? tdp_rand(rng) % 64 :
-					   tdp_rand(rng) % (RDC_MESH_MAX_TRIS + 2);
-		fl = tdp_rand(rng) % 8 ? tdp_rand(rng) & 0x7f : tdp_rand(rng) & 0xff;
+		a[3] = tdp_rand(rng) % 8
+			       ? tdp_rand(rng) % 64
+			       : tdp_rand(rng) % (RDC_MESH_MAX_TRIS + 2);
+		fl = tdp_rand(rng) % 8 ? tdp_rand(rng) & 0x7f
+				       : tdp_rand(rng) & 0xff;
 		break;
 	case RDC_OP_PATCH:
 		a[0] = (tdp_rand(rng) & 0x7f) | (tdp_rand(rng) % 12) << 8;
@@ -150,8 +167,8 @@ static void fuzz_cmd(struct tdp *t, uint32_t *rng)
 static void known_scene(struct tdp *t)
 {
 	static const int32_t v[6][3] = {
-		{ 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 },
-		{ 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 },
+		{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+		{0, -1, 0}, {0, 0, 1},	{0, 0, -1},
 	};
 	static const uint16_t ix[24] = {
 		0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
@@ -172,15 +189,16 @@ static void known_scene(struct tdp *t)
 	TDP_CMD(t, RDC_OP_SET_DST, 0, F_STRIDE, RDC_WH(F_W, F_H),
 		RDC_FMT_XRGB8888);
 	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST | RDC_Z_WRITE, 2,
-		(const uint32_t[]){ F_ZBASE, F_W * 2 });
+		(const uint32_t[]){F_ZBASE, F_W * 2});
 	TDP_CMD(t, RDC_OP_CLEAR_Z, 0xffff);
-	TDP_CMD(t, RDC_OP_SET_VIEWPORT3, RDC_XY(0, 0), RDC_XY(F_W - 1, F_H - 1));
+	TDP_CMD(t, RDC_OP_SET_VIEWPORT3, RDC_XY(0, 0),
+		RDC_XY(F_W - 1, F_H - 1));
 	tdp_cmd(t, RDC_OP_SET_VIEW, RDC_VIEW_PERSPECTIVE, 18,
-		(const uint32_t[]){ 0, 0, 0, 1 << 16, 1 << 16, 2 << 16, 0,
-				    1 << 16, 0, 0, 0, 6 << 16,
-				    (uint32_t)(-2 * 65536), 2 << 16,
-				    (uint32_t)(-5 * 32768), 5 << 15, 3 << 16,
-				    (uint32_t)(-3 * 65536) });
+		(const uint32_t[]){0, 0, 0, 1 << 16, 1 << 16, 2 << 16, 0,
+				   1 << 16, 0, 0, 0, 6 << 16,
+				   (uint32_t)(-2 * 65536), 2 << 16,
+				   (uint32_t)(-5 * 32768), 5 << 15, 3 << 16,
+				   (uint32_t)(-3 * 65536)});
 	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
 	TDP_CMD(t, RDC_OP_SET_AMBIENT, 0x202020);
 	TDP_CMD(t, RDC_OP_SET_MATERIAL, 0xff8040, 0xff8040, 0xffffff, 20);
@@ -190,7 +208,7 @@ static void known_scene(struct tdp *t)
 	tdp_cmd(t, RDC_OP_MESH,
 		RDC_MESH_NORMALS | RDC_MESH_CULL | RDC_MESH_LIT |
 			RDC_MESH_GOURAUD,
-		4, (const uint32_t[]){ base, 6, ibase, 8 });
+		4, (const uint32_t[]){base, 6, ibase, 8});
 	tdp_drain(t);
 }
 
@@ -207,14 +225,14 @@ static void test_fuzz_3d(void **state)
 	h_fresh = tdp_fnv(2166136261u, t->vram, F_STRIDE * F_H);
 	/* random buffers */
 	for (uint32_t i = F_BUFS; i < F_IDX; i += 4)
-		rdc_st32(t->vram + i, tdp_rand(&rng) % 4 ? rnd_fix(&rng) :
-							    tdp_rand(&rng));
+		rdc_st32(t->vram + i,
+			 tdp_rand(&rng) % 4 ? rnd_fix(&rng) : tdp_rand(&rng));
 	for (uint32_t i = F_IDX; i < TDP_VRAM_SIZE; i += 2)
 		rdc_st16(t->vram + i, tdp_rand(&rng) % 16);
 	TDP_CMD(t, RDC_OP_SET_DST, 0, F_STRIDE, RDC_WH(F_W, F_H),
 		RDC_FMT_XRGB8888);
 	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST | RDC_Z_WRITE, 2,
-		(const uint32_t[]){ F_ZBASE, F_W * 2 });
+		(const uint32_t[]){F_ZBASE, F_W * 2});
 	tdp_drain(t);
 	memcpy(shadow, t->vram, TDP_VRAM_SIZE);
 	for (uint32_t i = 0; i < F_CMDS; i++) {
@@ -235,11 +253,13 @@ static void test_fuzz_3d(void **state)
 		bool z = i >= F_ZBASE && i < F_ZBASE + F_W * 2 * F_H;
 
 		if (!dst && !z && t->vram[i] != shadow[i])
-			fail_msg("VRAM byte 0x%x changed outside the surfaces", i);
+			fail_msg("VRAM byte 0x%x changed outside the surfaces",
+				 i);
 	}
 	free(shadow);
 	printf("3d fuzz: %u commands, errors seen in %u of %u batches, "
-	       "%llu DP cycles\n", F_CMDS, errors, F_CMDS / 64,
+	       "%llu DP cycles\n",
+	       F_CMDS, errors, F_CMDS / 64,
 	       (unsigned long long)t->hw.perf.busy);
 	assert_true(errors > 0); /* the stream did hit the checks */
 	/* a soft reset, then the known picture again */

@@ -68,7 +68,7 @@ static uint32_t screen_hash(rdc_dev *dev)
 	return fnv(buf, sizeof(buf));
 }
 
-#define FX(v) ((uint32_t)(int32_t)((v) * 65536))
+#define FX(v) ((uint32_t)(int32_t)((v)*65536))
 
 static const char scene_setup[] = "mode 320x200 xrgb8888\n"
 				  "fg #000000\n"
@@ -83,32 +83,33 @@ static void test_statements_encode(void **state)
 	rdc_batch *b;
 	uint32_t h1, h2, w[49];
 	static const uint32_t cube_v[] = {
-		FX(-1), FX(-1), FX(1), FX(1), FX(-1), FX(1), FX(0), FX(1), FX(0),
+		FX(-1), FX(-1), FX(1), FX(1), FX(-1),
+		FX(1),	FX(0),	FX(1), FX(0),
 	};
 
 	assert_int_equal(run(dev, scene_setup), 0);
-	assert_int_equal(
-		run(dev,
-		    "view perspective vrp 0 0 0 vpn 0 0 1 vup 0 1 0 prp 0.5 0 6 "
-		    "window -2 2 -1.25 1.25 front 3 back -4\n"
-		    "viewport3 0 0 319 199\n"
-		    "ambient #101010\n"
-		    "light 0 #ffffff 0 0 1\n"
-		    "light 1 #ff0000 1 0 0.5\n"
-		    "light 1 off\n"
-		    "material #808080 #c0c0c0 #ffffff 12\n"
-		    "matrix identity\n"
-		    "push\n"
-		    "rotate y 30\n"
-		    "translate 0.25 0 0\n"
-		    "scale 1.5\n"
-		    "vertices 0x180000 -1 -1 1 1 -1 1 0 1 0\n"
-		    "indices 0x181000 0 1 2\n"
-		    "mesh 0x180000 3 0x181000 1 lit two-sided\n"
-		    "pop\n"
-		    "fg #ffff00\n"
-		    "bezier3 -1 -1 0 -1 1 0 1 1 0 1 -1 0 steps 12\n"),
-		0);
+	assert_int_equal(run(dev,
+			     "view perspective vrp 0 0 0 vpn 0 0 1 vup 0 1 0 "
+			     "prp 0.5 0 6 "
+			     "window -2 2 -1.25 1.25 front 3 back -4\n"
+			     "viewport3 0 0 319 199\n"
+			     "ambient #101010\n"
+			     "light 0 #ffffff 0 0 1\n"
+			     "light 1 #ff0000 1 0 0.5\n"
+			     "light 1 off\n"
+			     "material #808080 #c0c0c0 #ffffff 12\n"
+			     "matrix identity\n"
+			     "push\n"
+			     "rotate y 30\n"
+			     "translate 0.25 0 0\n"
+			     "scale 1.5\n"
+			     "vertices 0x180000 -1 -1 1 1 -1 1 0 1 0\n"
+			     "indices 0x181000 0 1 2\n"
+			     "mesh 0x180000 3 0x181000 1 lit two-sided\n"
+			     "pop\n"
+			     "fg #ffff00\n"
+			     "bezier3 -1 -1 0 -1 1 0 1 1 0 1 -1 0 steps 12\n"),
+			 0);
 	assert_int_equal(reg(dev, RDC_REG_ERR_CODE), 0);
 	h1 = screen_hash(dev);
 	/* the same from words */
@@ -117,41 +118,59 @@ static void test_statements_encode(void **state)
 	assert_non_null(b);
 	{
 		const uint32_t view[18] = {
-			0, 0, 0, 0, 0, FX(1), 0, FX(1), 0, FX(0.5), 0, FX(6),
+			0,	0,     0,	  0,	    0,	   FX(1),
+			0,	FX(1), 0,	  FX(0.5),  0,	   FX(6),
 			FX(-2), FX(2), FX(-1.25), FX(1.25), FX(3), FX(-4),
 		};
-		const uint32_t vp[2] = { RDC_XY(0, 0), RDC_XY(319, 199) };
-		const uint32_t amb = 0x101010, l0[4] = { 0xffffff, 0, 0, FX(1) };
-		const uint32_t l1[4] = { 0xff0000, FX(1), 0, FX(0.5) };
-		const uint32_t mat[4] = { 0x808080, 0xc0c0c0, 0xffffff, 12 };
+		const uint32_t vp[2] = {RDC_XY(0, 0), RDC_XY(319, 199)};
+		const uint32_t amb = 0x101010, l0[4] = {0xffffff, 0, 0, FX(1)};
+		const uint32_t l1[4] = {0xff0000, FX(1), 0, FX(0.5)};
+		const uint32_t mat[4] = {0x808080, 0xc0c0c0, 0xffffff, 12};
 		const uint32_t rot = 5461; /* 30 degrees: 5461.33, rounded */
-		const uint32_t tr[3] = { FX(0.25), 0, 0 };
-		const uint32_t sc[3] = { FX(1.5), FX(1.5), FX(1.5) };
-		const uint32_t mesh[4] = { 0x180000, 3, 0x181000, 1 };
+		const uint32_t tr[3] = {FX(0.25), 0, 0};
+		const uint32_t sc[3] = {FX(1.5), FX(1.5), FX(1.5)};
+		const uint32_t mesh[4] = {0x180000, 3, 0x181000, 1};
 		const uint32_t fg = 0xffff00;
 
 		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_VIEW,
-					       RDC_VIEW_PERSPECTIVE, view, 18), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_VIEWPORT3, 0, vp, 2), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_AMBIENT, 0, &amb, 1), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_LIGHT, 0, l0, 4), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_LIGHT, 1, l1, 4), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_LIGHT, 1, NULL, 0), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_MATERIAL, 0, mat, 4), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_MATRIX_LOAD, 0, NULL, 0), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_PUSH_MATRIX, 0, NULL, 0), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_ROTATE, RDC_AXIS_Y, &rot, 1), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_TRANSLATE, 0, tr, 3), 0);
+					       RDC_VIEW_PERSPECTIVE, view, 18),
+				 0);
+		assert_int_equal(
+			rdc_batch_cmd(b, RDC_OP_SET_VIEWPORT3, 0, vp, 2), 0);
+		assert_int_equal(
+			rdc_batch_cmd(b, RDC_OP_SET_AMBIENT, 0, &amb, 1), 0);
+		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_LIGHT, 0, l0, 4),
+				 0);
+		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_LIGHT, 1, l1, 4),
+				 0);
+		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_LIGHT, 1, NULL, 0),
+				 0);
+		assert_int_equal(
+			rdc_batch_cmd(b, RDC_OP_SET_MATERIAL, 0, mat, 4), 0);
+		assert_int_equal(
+			rdc_batch_cmd(b, RDC_OP_MATRIX_LOAD, 0, NULL, 0), 0);
+		assert_int_equal(
+			rdc_batch_cmd(b, RDC_OP_PUSH_MATRIX, 0, NULL, 0), 0);
+		assert_int_equal(
+			rdc_batch_cmd(b, RDC_OP_ROTATE, RDC_AXIS_Y, &rot, 1),
+			0);
+		assert_int_equal(rdc_batch_cmd(b, RDC_OP_TRANSLATE, 0, tr, 3),
+				 0);
 		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SCALE, 0, sc, 3), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_MESH,
-					       RDC_MESH_LIT | RDC_MESH_TWO_SIDED,
-					       mesh, 4), 0);
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_POP_MATRIX, 0, NULL, 0), 0);
+		assert_int_equal(
+			rdc_batch_cmd(b, RDC_OP_MESH,
+				      RDC_MESH_LIT | RDC_MESH_TWO_SIDED, mesh,
+				      4),
+			0);
+		assert_int_equal(
+			rdc_batch_cmd(b, RDC_OP_POP_MATRIX, 0, NULL, 0), 0);
 		assert_int_equal(rdc_batch_fg(b, fg), 0);
 		for (int i = 0; i < 12; i++)
-			w[i] = (uint32_t[]){ FX(-1), FX(-1), 0, FX(-1), FX(1), 0,
-					     FX(1), FX(1), 0, FX(1), FX(-1), 0 }[i];
-		assert_int_equal(rdc_batch_cmd(b, RDC_OP_BEZIER3, 12, w, 12), 0);
+			w[i] = (uint32_t[]){FX(-1), FX(-1), 0,	    FX(-1),
+					    FX(1),  0,	    FX(1),  FX(1),
+					    0,	    FX(1),  FX(-1), 0}[i];
+		assert_int_equal(rdc_batch_cmd(b, RDC_OP_BEZIER3, 12, w, 12),
+				 0);
 	}
 	/* the vertex and index bytes as documented: little-endian */
 	{
@@ -160,9 +179,12 @@ static void test_statements_encode(void **state)
 		for (size_t i = 0; i < RDC_ARRAY_SIZE(cube_v); i++)
 			for (int k = 0; k < 4; k++)
 				v[4 * i + k] = (uint8_t)(cube_v[i] >> (8 * k));
-		ix[0] = 0, ix[1] = 0, ix[2] = 1, ix[3] = 0, ix[4] = 2, ix[5] = 0;
-		assert_int_equal(rdc_vram_write(dev, 0x180000, v, sizeof(v)), 0);
-		assert_int_equal(rdc_vram_write(dev, 0x181000, ix, sizeof(ix)), 0);
+		ix[0] = 0, ix[1] = 0, ix[2] = 1, ix[3] = 0, ix[4] = 2,
+		ix[5] = 0;
+		assert_int_equal(rdc_vram_write(dev, 0x180000, v, sizeof(v)),
+				 0);
+		assert_int_equal(rdc_vram_write(dev, 0x181000, ix, sizeof(ix)),
+				 0);
 	}
 	assert_int_equal(rdc_batch_submit(dev, b), 0);
 	assert_int_equal(rdc_idle_wait(dev), 0);
@@ -185,7 +207,7 @@ static void test_vertices_indices(void **state)
 		0x00, 0x00, 0xfe, 0xff, /* -2 */
 		0x01, 0x00, 0x00, 0x00, /* 1/65536 */
 	};
-	static const uint8_t want_i[6] = { 1, 0, 0xff, 0xff, 0x34, 0x12 };
+	static const uint8_t want_i[6] = {1, 0, 0xff, 0xff, 0x34, 0x12};
 
 	assert_int_equal(run(dev, "vertices 0x200000 0.5 -2 0.0000153\n"
 				  "indices 0x200100 1 65535 0x1234\n"),
@@ -249,12 +271,12 @@ static void test_device_errors(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_statements_encode, dev_setup,
-						dev_teardown),
-		cmocka_unit_test_setup_teardown(test_vertices_indices, dev_setup,
-						dev_teardown),
-		cmocka_unit_test_setup_teardown(test_statement_errors, dev_setup,
-						dev_teardown),
+		cmocka_unit_test_setup_teardown(test_statements_encode,
+						dev_setup, dev_teardown),
+		cmocka_unit_test_setup_teardown(test_vertices_indices,
+						dev_setup, dev_teardown),
+		cmocka_unit_test_setup_teardown(test_statement_errors,
+						dev_setup, dev_teardown),
 		cmocka_unit_test_setup_teardown(test_device_errors, dev_setup,
 						dev_teardown),
 	};

@@ -39,9 +39,12 @@ int rdl_st_matrix(struct rdl *r, uint32_t op)
 	    rdl_word(r, 1, "identity"))
 		return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, 0, NULL, 0));
 	if (r->ntok != 13)
-		return rdl_err(r, RDC_E_PARSE, "%s: 12 numbers (rows 0..2 of "
-			       "the 4x4)%s", r->tok[0].s,
-			       op == RDC_OP_MATRIX_LOAD ? " or 'identity'" : "");
+		return rdl_err(r, RDC_E_PARSE,
+			       "%s: 12 numbers (rows 0..2 of "
+			       "the 4x4)%s",
+			       r->tok[0].s,
+			       op == RDC_OP_MATRIX_LOAD ? " or 'identity'"
+							: "");
 	ret = rdl_fix_words(r, 1, 12, m);
 	if (ret)
 		return ret;
@@ -72,7 +75,7 @@ int rdl_st_vec3(struct rdl *r, uint32_t op)
 /* rotate x|y|z DEGREES */
 int rdl_st_rotate(struct rdl *r, uint32_t op)
 {
-	static const char *const axes[] = { "x", "y", "z" };
+	static const char *const axes[] = {"x", "y", "z"};
 	uint32_t a, axis;
 	int ret;
 
@@ -96,8 +99,8 @@ int rdl_st_view(struct rdl *r, uint32_t op)
 	static const struct {
 		const char *name;
 		size_t n;
-	} part[] = { { "vrp", 3 }, { "vpn", 3 }, { "vup", 3 }, { "prp", 3 },
-		     { "window", 4 }, { "front", 1 }, { "back", 1 } };
+	} part[] = {{"vrp", 3},	   {"vpn", 3},	 {"vup", 3}, {"prp", 3},
+		    {"window", 4}, {"front", 1}, {"back", 1}};
 	uint32_t a[18], fl;
 	size_t t = 2, w = 0;
 	int ret;
@@ -111,8 +114,10 @@ int rdl_st_view(struct rdl *r, uint32_t op)
 			       "view: 'parallel' or 'perspective' first");
 	for (size_t k = 0; k < RDC_ARRAY_SIZE(part); k++) {
 		if (!rdl_word(r, t, part[k].name))
-			return rdl_err(r, RDC_E_PARSE, "view: '%s' expected "
-				       "as argument %zu", part[k].name, t);
+			return rdl_err(r, RDC_E_PARSE,
+				       "view: '%s' expected "
+				       "as argument %zu",
+				       part[k].name, t);
 		ret = rdl_fix_words(r, t + 1, part[k].n, a + w);
 		if (ret)
 			return ret;
@@ -148,8 +153,8 @@ int rdl_st_light(struct rdl *r, uint32_t op)
 	if (ret)
 		return ret;
 	if (r->ntok == 3 && rdl_word(r, 2, "off"))
-		return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, (uint32_t)n,
-							NULL, 0));
+		return rdl_encoded(
+			r, op, rdc_batch_cmd(r->b, op, (uint32_t)n, NULL, 0));
 	if (r->ntok != 6)
 		return rdl_err(r, RDC_E_PARSE,
 			       "light: N COLOUR DX DY DZ, or N off");
@@ -190,16 +195,19 @@ int rdl_st_material(struct rdl *r, uint32_t op)
 }
 
 /* The RDC_MESH_* words from token i while they are flags; *next after. */
-static int rdl_mesh_flags(struct rdl *r, size_t i, bool normals,
-			  uint32_t *fl, size_t *next)
+static int rdl_mesh_flags(struct rdl *r, size_t i, bool normals, uint32_t *fl,
+			  size_t *next)
 {
 	static const struct {
 		const char *name;
 		uint32_t bit;
-	} f[] = { { "normals", RDC_MESH_NORMALS }, { "wire", RDC_MESH_WIRE },
-		  { "cull", RDC_MESH_CULL },	     { "lit", RDC_MESH_LIT },
-		  { "gouraud", RDC_MESH_GOURAUD },
-		  { "two-sided", RDC_MESH_TWO_SIDED }, { "sort", RDC_MESH_SORT } };
+	} f[] = {{"normals", RDC_MESH_NORMALS},
+		 {"wire", RDC_MESH_WIRE},
+		 {"cull", RDC_MESH_CULL},
+		 {"lit", RDC_MESH_LIT},
+		 {"gouraud", RDC_MESH_GOURAUD},
+		 {"two-sided", RDC_MESH_TWO_SIDED},
+		 {"sort", RDC_MESH_SORT}};
 
 	*fl = 0;
 	for (; i < r->ntok; i++) {
@@ -233,7 +241,8 @@ int rdl_st_mesh(struct rdl *r, uint32_t op)
 	if (ret)
 		return ret;
 	if (next != r->ntok)
-		return rdl_err(r, RDC_E_PARSE, "mesh: '%.40s' is not normals, "
+		return rdl_err(r, RDC_E_PARSE,
+			       "mesh: '%.40s' is not normals, "
 			       "wire, cull, lit, gouraud, two-sided or sort",
 			       r->tok[next].s);
 	return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, fl, a, 4));
@@ -252,7 +261,8 @@ int rdl_st_patch(struct rdl *r, uint32_t op)
 	if (ret)
 		return ret;
 	if (r->ntok - next != 48)
-		return rdl_err(r, RDC_E_PARSE, "patch: 16 control points X Y Z "
+		return rdl_err(r, RDC_E_PARSE,
+			       "patch: 16 control points X Y Z "
 			       "(48 numbers) after the steps and flags");
 	ret = rdl_fix_words(r, next, 48, a + 1);
 	if (ret)
