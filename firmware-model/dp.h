@@ -172,7 +172,7 @@ struct rdc_dp {
 
 	/*
 	 * Solid runs (lines, outlines, fills) queued for rdc_port_runs;
-	 * queue_spans: solid spans and columns go to the queue (raster.c)
+	 * queue_spans: solid spans and columns go to the queue (span.c)
 	 */
 	struct rdc_port_run runs[RDC_DP_CHUNK];
 	uint32_t nruns;

@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /*
  * Display-processor internals shared by the decoder (dp.c) and the
- * rasterisers (raster.c).  Arguments reaching these functions have been
- * range-checked by the decoder: coordinates in [RDC_COORD_MIN,
- * RDC_COORD_MAX], sizes and radii in [0, RDC_SIZE_MAX], surfaces inside
- * VRAM.  Everything is clipped here against rdc_dp_eff_clip().
+ * rasterisers (span.c, line.c, shape.c, blit.c, mono.c and the others;
+ * what only those five share is in raster.h).  Arguments reaching these
+ * functions have been range-checked by the decoder: coordinates in
+ * [RDC_COORD_MIN, RDC_COORD_MAX], sizes and radii in [0, RDC_SIZE_MAX],
+ * surfaces inside VRAM.  Everything is clipped here against
+ * rdc_dp_eff_clip().
  */
 #ifndef RDC_DP_INT_H
 #define RDC_DP_INT_H
@@ -56,6 +58,9 @@ void rdc_dp_span_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
  */
 bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 		    uint32_t *out);
+/* The same for row y of any surface s (inside s). */
+bool rdc_dp_read_row(struct rdc_dp *dp, const struct rdc_surface *s,
+		     int32_t y, int32_t xa, uint32_t n, uint32_t *out);
 /*
  * Pixel at bit offset `bit` from p in a surface of `bpp` bits per pixel
  * (sub-byte pixels MSB first); the store masks v to bpp bits.
@@ -204,7 +209,7 @@ void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
 void dp_pen_flush(struct rdc_dp *dp);
 
 /*
- * The midpoint ellipse (raster.c), shared by ELLIPSE, FILL_ELLIPSE and ARC:
+ * The midpoint ellipse (shape.c), shared by ELLIPSE, FILL_ELLIPSE and ARC:
  * after dp_ellipse_begin (rx, ry >= 1) each dp_ellipse_row gives the next
  * row offset t (ry down to 0) and the outline's pixels amin..amax right of
  * the centre on it (the fill's row is -amax..amax), false after row 0.

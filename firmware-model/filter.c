@@ -57,8 +57,8 @@ static uint32_t *conv_row(struct rdc_dp *dp, const struct conv *cv, int32_t row,
 	}
 	buf = im->u.conv[slot];
 	im->conv_row[slot] = row;
-	if (!img_read_row(dp, cv->src, row, xa, (uint32_t)(xb - xa),
-			  buf + (xa - (cv->sx - 1))))
+	if (!rdc_dp_read_row(dp, cv->src, row, xa, (uint32_t)(xb - xa),
+			     buf + (xa - (cv->sx - 1))))
 		return NULL;
 	if (cv->sx == 0)
 		buf[0] = buf[1];

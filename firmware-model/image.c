@@ -63,32 +63,6 @@ uint32_t img_pack_rgb(uint32_t fmt, uint32_t r, uint32_t g, uint32_t b)
 	return r << 16 | g << 8 | b;
 }
 
-/*
- * Read pixels [x, x + n) of row y of surface s as one read span into out;
- * the caller keeps them on the surface.  false if the span left VRAM
- * (which a checked surface cannot).
- */
-bool img_read_row(struct rdc_dp *dp, const struct rdc_surface *s, int32_t y,
-		  int32_t x, uint32_t n, uint32_t *out)
-{
-	unsigned int bpp = rdc_format_bpp(s->format);
-	uint64_t bit0 = (uint64_t)x * bpp, bit1 = bit0 + (uint64_t)n * bpp;
-	const uint8_t *p;
-	uint32_t i;
-
-	if (!n)
-		return true;
-	p = rdc_port_span(dp->hw,
-			  s->base + (uint32_t)y * s->stride +
-				  (uint32_t)(bit0 / 8),
-			  (uint32_t)((bit1 + 7) / 8 - bit0 / 8), RDC_BUS_READ);
-	if (!p)
-		return false;
-	for (i = 0; i < n; i++)
-		out[i] = rdc_dp_px_load(p, bpp, (uint32_t)(bit0 & 7) + i * bpp);
-	return true;
-}
-
 /* A table in VRAM: 4-aligned and inside it. */
 static bool table_ok(const struct rdc_dp *dp, uint32_t addr, uint32_t bytes)
 {
@@ -156,7 +130,7 @@ static uint32_t cmd_histogram(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 	for (y = y0; y < y1; y++) {
 		for (x = x0; x < x1; x += (int32_t)n) {
 			n = (uint32_t)RDC_MIN(x1 - x, (int32_t)RDC_DP_CHUNK);
-			if (!img_read_row(dp, s, y, x, n, dp->px))
+			if (!rdc_dp_read_row(dp, s, y, x, n, dp->px))
 				return RDC_ERR_SURFACE;
 			for (i = 0; i < n; i++)
 				hist[img_intensity(s->format, dp->px[i], sel) &

@@ -20,9 +20,6 @@ uint32_t img_widen(uint32_t v, uint32_t bits);
 uint32_t img_intensity(uint32_t fmt, uint32_t px, uint32_t sel);
 /* 8-bit R, G, B as a pixel of an RGB format. */
 uint32_t img_pack_rgb(uint32_t fmt, uint32_t r, uint32_t g, uint32_t b);
-/* Pixels [x, x + n) of row y of surface s, read as one span. */
-bool img_read_row(struct rdc_dp *dp, const struct rdc_surface *s, int32_t y,
-		  int32_t x, uint32_t n, uint32_t *out);
 
 uint32_t dp_cmd_decode(struct rdc_dp *dp, uint32_t fl, const uint32_t *a);
 uint32_t dp_cmd_convolve(struct rdc_dp *dp, uint32_t fl, uint32_t len,

@@ -371,10 +371,9 @@ void rdc_dp_span_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 	span_emit(dp, y, xa, n, solid, vals, on);
 }
 
-bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
-		    uint32_t *out)
+bool rdc_dp_read_row(struct rdc_dp *dp, const struct rdc_surface *s,
+		     int32_t y, int32_t xa, uint32_t n, uint32_t *out)
 {
-	const struct rdc_surface *s = &dp->st.dst;
 	unsigned int bpp = rdc_format_bpp(s->format);
 	uint64_t bit0 = (uint64_t)xa * bpp, bit1 = bit0 + (uint64_t)n * bpp;
 	const uint8_t *p;
@@ -390,6 +389,12 @@ bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 	for (i = 0; i < n; i++)
 		out[i] = px_ld(p, bpp, (uint32_t)(bit0 & 7) + i * bpp);
 	return true;
+}
+
+bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
+		    uint32_t *out)
+{
+	return rdc_dp_read_row(dp, &dp->st.dst, y, xa, n, out);
 }
 
 uint32_t rdc_dp_px_load(const uint8_t *p, unsigned int bpp, uint32_t bit)
