@@ -202,26 +202,10 @@ int rdcctl_pins_main(int argc, char **argv)
 	struct sigaction sa;
 	uint32_t levels;
 	rdc_dev *dev;
-	int i = 1, ret;
+	int i, ret;
 
-	/* Leading --uri/--connect options belong to rdcctl; then the
-	 * command. */
-	while (i < argc) {
-		const char *a = argv[i];
-
-		if (!strncmp(a, "--uri=", 6) || !strncmp(a, "--connect=", 10)) {
-			o.uri = strchr(a, '=') + 1;
-			i++;
-		} else if (!strcmp(a, "--uri") || !strcmp(a, "--connect")) {
-			if (i + 1 >= argc)
-				return -1;
-			o.uri = argv[i + 1];
-			i += 2;
-		} else {
-			break;
-		}
-	}
-	if (i >= argc || strcmp(argv[i], "pins"))
+	i = rdcctl_command_at(argc, argv, "pins", &o.uri);
+	if (i < 0)
 		return -1;
 	if (pins_parse(argc - i - 1, argv + i + 1, &o))
 		return 2;

@@ -30,6 +30,36 @@ static inline void rdcctl_error(const char *what, int err)
 	rdcctl_report(what, what, err);
 }
 
+/*
+ * Where subcommand `cmd` stands in argv after rdcctl's leading --uri /
+ * --connect options (their URI to *uri), or -1 if argv is not that
+ * subcommand or an option lacks its value.
+ */
+static inline int rdcctl_command_at(int argc, char **argv, const char *cmd,
+				    const char **uri)
+{
+	int i = 1;
+
+	while (i < argc) {
+		const char *a = argv[i];
+
+		if (!strncmp(a, "--uri=", 6) || !strncmp(a, "--connect=", 10)) {
+			*uri = strchr(a, '=') + 1;
+			i++;
+		} else if (!strcmp(a, "--uri") || !strcmp(a, "--connect")) {
+			if (i + 1 >= argc)
+				return -1;
+			*uri = argv[i + 1];
+			i += 2;
+		} else {
+			break;
+		}
+	}
+	if (i >= argc || strcmp(argv[i], cmd))
+		return -1;
+	return i;
+}
+
 /* rdc_open(uri) failed. */
 static inline void rdcctl_open_error(const char *uri, int err)
 {

@@ -367,28 +367,12 @@ int rdcctl_stream_main(int argc, char **argv)
 {
 	struct stream_opts o = { .uri = "sim:" };
 	rdc_sink *sinks[STREAM_MAX_SINKS];
-	int i = 1, nsinks = 0, ret;
+	int i, nsinks = 0, ret;
 	struct sigaction sa;
 	rdc_dev *dev;
 
-	/* Leading --uri/--connect options belong to rdcctl; then the
-	 * command. */
-	while (i < argc) {
-		const char *a = argv[i];
-
-		if (!strncmp(a, "--uri=", 6) || !strncmp(a, "--connect=", 10)) {
-			o.uri = strchr(a, '=') + 1;
-			i++;
-		} else if (!strcmp(a, "--uri") || !strcmp(a, "--connect")) {
-			if (i + 1 >= argc)
-				return -1;
-			o.uri = argv[i + 1];
-			i += 2;
-		} else {
-			break;
-		}
-	}
-	if (i >= argc || strcmp(argv[i], "stream"))
+	i = rdcctl_command_at(argc, argv, "stream", &o.uri);
+	if (i < 0)
 		return -1;
 	if (stream_parse(argc - i - 1, argv + i + 1, &o))
 		return 2;
