@@ -1,4 +1,4 @@
-// SPDX-License-Identifier: GPL-2.0-only
+/* SPDX-License-Identifier: GPL-2.0-only */
 /*
  * Shared by the rasterisers (span.c, line.c, shape.c, blit.c, mono.c):
  * pixel access, the solid runs and their queue.  Not for other files.

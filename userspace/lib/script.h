@@ -1,4 +1,4 @@
-// SPDX-License-Identifier: GPL-2.0-only
+/* SPDX-License-Identifier: GPL-2.0-only */
 /*
  * The .rdl interpreter inside librdc: script.c (the statements, their
  * table and rdc_script_run's loop over lines), script_img.c and
