@@ -2,9 +2,9 @@
 /*
  * libFuzzer target for the .rdl interpreter (userspace/lib/script.c): the
  * input is a script, run by rdc_script_run on a fresh sim: device with
- * 1 MiB of VRAM (320x200 in every format and the display lists of the
- * golden scenes fit; larger modes are refused as they would be on such a
- * device).  Every statement kind is reachable, `list ... end` blocks
+ * 2 MiB of VRAM: the seeds' modes fit (up to 640x480 and 800x600 in
+ * XRGB8888, which the image and 3D scenes use), larger ones are refused
+ * as they would be on such a device.  Every statement kind is reachable, `list ... end` blocks
  * included; the seeds are the .rdl files of examples/ and
  * tests/golden/scenes/ and, for what those never use, tests/fuzz/seeds/script;
  * script.dict lists the keywords.
@@ -133,7 +133,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	rdc_dev *dev;
 	int ret;
 
-	fz_assert(!rdc_open("sim:vram=1M", &dev));
+	fz_assert(!rdc_open("sim:vram=2M", &dev));
 	ret = rdc_script_run(dev, (const char *)data, size, &res);
 	fz_assert(ret <= 0 && rdc_strerror(ret));
 	fz_assert(memchr(res.error_msg, 0, sizeof(res.error_msg)));
