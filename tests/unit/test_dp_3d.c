@@ -830,6 +830,88 @@ static void test_lighting_ref(void **state)
 	}
 }
 
+/*
+ * The lit colour in each DST format: RGB565 rounded per channel, RGB888
+ * as is, indexed through the AA ramp from FG.  A face lit by the ambient
+ * term alone (no lights) has the colour ambient * reflectance.
+ */
+static void test_lit_formats(void **state)
+{
+	struct tdp *t = *state;
+	static const double p[3][3] = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+	static const uint16_t idx[3] = {0, 1, 2};
+	struct ref_view v = std_view(false);
+	const uint32_t base = 0x100000; /* below the mesh buffers */
+	uint32_t seed = 4242;
+
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	for (uint32_t l = 0; l < RDC_LIGHTS; l++)
+		tdp_cmd(t, RDC_OP_SET_LIGHT, l, 0, NULL);
+	put_mesh(t, p, NULL, 3, idx, 1);
+	for (int it = 0; it < 30; it++) {
+		uint32_t fmt = (uint32_t[]){RDC_FMT_RGB565, RDC_FMT_RGB888,
+					    RDC_FMT_I8}[it % 3];
+		uint32_t amb = tdp_rand(&seed) & 0xffffff;
+		uint32_t mat = tdp_rand(&seed) & 0xffffff;
+		uint32_t ramp = 2 + tdp_rand(&seed) % 30, fg = 40, want, got;
+		uint32_t c[3], bpp = tdp_bpp(fmt);
+		struct rdc_surface s = {base, SW * 4, SW, SH, fmt};
+
+		for (int k = 0; k < 3; k++) {
+			uint32_t a = amb >> (16 - 8 * k) & 0xff;
+			uint32_t m = mat >> (16 - 8 * k) & 0xff;
+
+			/* the reference: a m / 255 rounded */
+			c[k] = (uint32_t)lround(a * m / 255.0);
+		}
+		if (fmt == RDC_FMT_RGB565)
+			want = (uint32_t)lround(c[0] * 31 / 255.0) << 11 |
+			       (uint32_t)lround(c[1] * 63 / 255.0) << 5 |
+			       (uint32_t)lround(c[2] * 31 / 255.0);
+		else if (fmt == RDC_FMT_RGB888)
+			want = c[0] << 16 | c[1] << 8 | c[2];
+		else
+			want = fg +
+			       (uint32_t)lround((255 - lround((77.0 * c[0] +
+							       150.0 * c[1] +
+							       29.0 * c[2]) /
+							      256.0)) *
+						(ramp - 1) / 255.0);
+		tdp_set_surface(t, RDC_OP_SET_DST, &s);
+		TDP_CMD(t, RDC_OP_SET_FG, fg);
+		TDP_CMD(t, RDC_OP_SET_AA_RAMP, ramp);
+		TDP_CMD(t, RDC_OP_SET_AMBIENT, amb);
+		TDP_CMD(t, RDC_OP_SET_MATERIAL, mat, 0xffffff, 0, 1);
+		memset(t->vram + base, 0, SW * 4 * SH);
+		mesh(t, RDC_MESH_LIT, 3, 1);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		got = tdp_get(t->vram, &s, 320, 240);
+		/* rounding of halves may differ by one step */
+		if (fmt == RDC_FMT_RGB888) {
+			for (int k = 0; k < 3; k++)
+				assert_true(
+					abs((int)(got >> (16 - 8 * k) & 0xff) -
+					    (int)c[k]) <= 1);
+		} else if (fmt == RDC_FMT_RGB565) {
+			assert_true(abs((int)(got >> 11) - (int)(want >> 11)) <=
+				    1);
+			assert_true(abs((int)(got >> 5 & 63) -
+					(int)(want >> 5 & 63)) <= 1);
+			assert_true(abs((int)(got & 31) - (int)(want & 31)) <=
+				    1);
+		} else {
+			assert_true(abs((int)got - (int)want) <= 1);
+			assert_true(got >= fg && got < fg + ramp);
+		}
+		(void)bpp;
+	}
+	tdp_set_surface(
+		t, RDC_OP_SET_DST,
+		&(struct rdc_surface){0, SW * 4, SW, SH, RDC_FMT_XRGB8888});
+}
+
 /* ---- the matrix stack and display lists ---------------------------- */
 
 /*
@@ -1318,7 +1400,7 @@ int main(void)
 		TDP_TEST(test_stack_lists),	 TDP_TEST(test_cull_facing),
 		TDP_TEST(test_painter_sort),	 TDP_TEST(test_wire_edges_once),
 		TDP_TEST(test_zbuffer_ref),	 TDP_TEST(test_bad_input),
-		TDP_TEST(test_patch_flat),
+		TDP_TEST(test_patch_flat),	 TDP_TEST(test_lit_formats),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
