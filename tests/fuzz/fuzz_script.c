@@ -2,12 +2,13 @@
 /*
  * libFuzzer target for the .rdl interpreter (userspace/lib/script.c): the
  * input is a script, run by rdc_script_run on a fresh sim: device with
- * 2 MiB of VRAM: the seeds' modes fit (up to 640x480 and 800x600 in
- * XRGB8888, which the image and 3D scenes use), larger ones are refused
- * as they would be on such a device.  Every statement kind is reachable, `list ... end` blocks
- * included; the seeds are the .rdl files of examples/ and
- * tests/golden/scenes/ and, for what those never use, tests/fuzz/seeds/script;
- * script.dict lists the keywords.
+ * 4 MiB of VRAM (a quarter of rdcd's default): what the seeds use fits
+ * (640x480 and 800x600 in XRGB8888, the image scenes' tables at 2 MiB,
+ * the 3D scenes' Z buffer up to 3.1 MiB); more is refused as it would be
+ * on such a device.  FUZZ_SCRIPT_VERBOSE=1 prints each input's error.  Every
+ * statement kind is reachable, `list ... end` blocks included; the seeds are
+ * the .rdl files of examples/ and tests/golden/scenes/ and, for what those
+ * never use, tests/fuzz/seeds/script; script.dict lists the keywords.
  *
  * Checked: the run ends with 0 or an RDC_E_* code; an error names a line
  * of the script (1-based, at most one past the last) and carries a
@@ -133,8 +134,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	rdc_dev *dev;
 	int ret;
 
-	fz_assert(!rdc_open("sim:vram=2M", &dev));
+	fz_assert(!rdc_open("sim:vram=4M", &dev));
 	ret = rdc_script_run(dev, (const char *)data, size, &res);
+	if (ret && getenv("FUZZ_SCRIPT_VERBOSE"))
+		fprintf(stderr, "line %u col %u: %s (%s)\n", res.error_line,
+			res.error_col, res.error_msg, rdc_strerror(ret));
 	fz_assert(ret <= 0 && rdc_strerror(ret));
 	fz_assert(memchr(res.error_msg, 0, sizeof(res.error_msg)));
 	if (ret) {
