@@ -64,10 +64,23 @@ scenes() {
 }
 
 # frames through sysfs and the FRAME ioctl, alternately
+# A read answers EAGAIN while a device has no frame yet: fb1's scenes
+# each begin with a reset, which starts the frames over.
+crc_read() {
+	k=0
+	until cat "$1" >/dev/null 2>"$T/crc.err"; do
+		grep -q 'temporarily unavailable' "$T/crc.err" &&
+			[ $k -lt 100 ] || { cat "$T/crc.err"; return 1; }
+		k=$((k + 1))
+		sleep 0.05
+	done
+}
+
 snapshots() {
 	i=0
 	while [ $i -lt 60 ]; do
-		cat "$SYS/frame_crc" "$SYS1/frame_crc" >/dev/null || return 1
+		crc_read "$SYS/frame_crc" || return 1
+		crc_read "$SYS1/frame_crc" || return 1
 		"$TOOL" frame /dev/fb0 "$T/frame.raw" >/dev/null || return 1
 		"$TOOL" frame $FB "$T/frame.raw" >/dev/null || return 1
 		i=$((i + 1))
