@@ -77,6 +77,8 @@ for t in "$HERE"/tests/*.sh; do
 	n=$(basename "$t" .sh)
 	if [ -n "${RDC_VM_TESTS:-}" ]; then
 		case " $RDC_VM_TESTS " in *" $n "*) ;; *) continue ;; esac
+	elif grep -q '^# vm-bench' "$t"; then
+		continue # figures only: run when named (make bench-usb)
 	fi
 	TESTS="$TESTS $n"
 done

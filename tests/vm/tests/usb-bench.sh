@@ -6,7 +6,9 @@
 # frames per second received in each encoding, and the bytes a frame
 # takes in each encoding with the rate USB 2.0 high speed (35-40 MB/s in
 # practice) would carry.  Printed as TAP comments; only "it ran" is
-# checked.  `make bench-usb` runs this test alone.
+# checked.  `make bench-usb` runs this test alone; the suite leaves it
+# out unless RDC_VM_TESTS names it.
+# vm-bench
 # vm-module: dummy_hcd
 # vm-module: libcomposite
 # vm-module: usb_f_fs
