@@ -85,11 +85,53 @@ static void test_toobig_behind_pending(void **state)
 	assert_int_equal(netd_stop(&d), 0);
 }
 
+/*
+ * fuzz_rdcd: a RESET of an unknown kind read one request ahead of a
+ * pending STEP.  A RESET may overtake what is pending (it ends it, the
+ * pending request answered first with RDC_ST_RESET); this one was
+ * answered RDC_ST_INVAL at once, before the STEP: out of request order.
+ * Now it waits its turn like any other request.
+ */
+static void test_bad_reset_behind_pending(void **state)
+{
+	static const char *const args[] = {"-q", NULL}; /* paced */
+	uint8_t step[8], kind[4];
+	struct rdc_proto_hdr h;
+	struct netd d;
+	int fd;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args), 0);
+	fd = netd_connect(d.sock);
+	assert_true(fd >= 0);
+	assert_int_equal(netd_hello(fd, RDC_HELLO_CONTROL, NULL, NULL),
+			 RDC_ST_OK);
+	rdc_proto_put64(step, 50000000u); /* half a simulated second */
+	rdc_proto_put32(kind, 7);
+	assert_int_equal(netd_send(fd, RDC_MSG_STEP, 1, step, sizeof(step)), 0);
+	assert_int_equal(netd_send(fd, RDC_MSG_RESET, 2, kind, sizeof(kind)),
+			 0);
+	assert_int_equal(netd_reply(fd, &h, NULL, 0), 0);
+	assert_int_equal(h.type, RDC_MSG_STEP);
+	assert_int_equal(h.seq, 1);
+	assert_int_equal(h.status, RDC_ST_OK);
+	assert_int_equal(netd_reply(fd, &h, NULL, 0), 0);
+	assert_int_equal(h.type, RDC_MSG_RESET);
+	assert_int_equal(h.seq, 2);
+	assert_int_equal(h.status, RDC_ST_INVAL);
+	/* and the connection goes on */
+	assert_int_equal(netd_call(fd, RDC_MSG_PING, 3, NULL, 0, NULL, 0),
+			 RDC_ST_OK);
+	close(fd);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_delta_empty_rows),
 		cmocka_unit_test(test_toobig_behind_pending),
+		cmocka_unit_test(test_bad_reset_behind_pending),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

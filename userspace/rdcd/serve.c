@@ -1372,8 +1372,11 @@ static bool rdcd_may_dispatch(const struct rdcd *d,
 			      const struct rdcd_client *c)
 {
 	const struct rdc_proto_hdr *h = &c->hdr;
+	/* only a RESET that will act may overtake: one of an unknown kind
+	 * is answered in its turn */
 	bool reset = c->hello && d->ctl == c && h->type == RDC_MSG_RESET &&
-		     h->len == 4 && !h->flags && !h->status;
+		     h->len == 4 && !h->flags && !h->status &&
+		     rdc_proto_get32(c->body) <= RDC_RESET_POWER;
 
 	if (!c->hello)
 		return true;
