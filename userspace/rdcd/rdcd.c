@@ -244,6 +244,14 @@ static int rdcd_listen_unix(struct rdcd *d, struct rdcd_listener *l,
 	}
 	umask(old);
 	chmod(l->path, group ? 0660 : 0600);
+	{
+		struct stat bound;
+
+		if (!lstat(l->path, &bound)) {
+			l->path_dev = (uint64_t)bound.st_dev;
+			l->path_ino = (uint64_t)bound.st_ino;
+		}
+	}
 	l->fd = fd;
 	/* uri holds "unix:" and any sun_path */
 	strcpy(l->uri, "unix:");
@@ -910,8 +918,15 @@ out:
 			rdcd_udl_close(d.lis[i].udl); /* closes fd */
 		else
 			close(d.lis[i].fd);
-		if (d.lis[i].path[0])
-			unlink(d.lis[i].path);
+		if (d.lis[i].path[0]) {
+			struct stat st;
+
+			/* not a socket another rdcd has bound there since */
+			if (!lstat(d.lis[i].path, &st) &&
+			    (uint64_t)st.st_dev == d.lis[i].path_dev &&
+			    (uint64_t)st.st_ino == d.lis[i].path_ino)
+				unlink(d.lis[i].path);
+		}
 	}
 	rdcd_gpiosim_close(&d);
 	if (vcd) {

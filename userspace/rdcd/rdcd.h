@@ -127,6 +127,8 @@ struct rdcd_listener {
 	int fd;
 	bool tcp, need_token;
 	char path[sizeof(((struct sockaddr_un *)0)->sun_path)];
+	/* the socket file bound at path: removed at exit only if still ours */
+	uint64_t path_dev, path_ino;
 	char uri[160];
 	struct rdcd_ffs *ffs; /* ffs: (USB device): fd wakes for a session */
 	struct rdcd_udl *udl; /* udl: (DisplayLink personality): the same */

@@ -12,6 +12,8 @@ if ! [ -x "$RDCD" ] || ! "$RDCD" --help | grep -q -- --v4l2; then
 	exit 77
 fi
 scene=$SCENES/stream_a.rdl
+# the scratch directory outlives a test: no earlier test's ready file
+rm -f "$T/ready" "$T/rdc.sock"
 "$RDCD" --listen "unix:$T/rdc.sock" --ready-file "$T/ready" --v4l2 "$DEV" \
 	>"$T/rdcd.log" 2>&1 &
 rdcd=$!
