@@ -30,20 +30,15 @@
  */
 #include <endian.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <linux/usb/ch9.h>
-#include <linux/usb/functionfs.h>
-#include <poll.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/eventfd.h>
-#include <sys/socket.h>
-#include <time.h>
 #include <unistd.h>
 
+#include "ffs_dev.h"
 #include "rdc_usb.h"
 #include "rdcd.h"
 
@@ -53,6 +48,8 @@
 #define FFS_IRQ_QUEUE 64u
 /* The interface string (the device strings come from the gadget). */
 #define FFS_INTF_STR "RDC-1 display controller"
+/* The signal that wakes a thread out of a blocking read or write. */
+#define FFS_KICK (SIGRTMIN + 4)
 
 enum ffs_ep { FFS_EP_OUT, FFS_EP_IN, FFS_EP_IRQ, FFS_NEP };
 enum ffs_thread { FFS_T_OUT, FFS_T_IN, FFS_T_IRQ, FFS_T_EP0, FFS_NT };
@@ -60,25 +57,11 @@ enum ffs_thread { FFS_T_OUT, FFS_T_IN, FFS_T_IRQ, FFS_T_EP0, FFS_NT };
 #define FFS_NDATA FFS_T_EP0
 
 struct rdcd_ffs {
-	const struct rdcd *d; /* for logging */
-	char dir[128];
-	int ep0, ep[FFS_NEP];
-	int wake;   /* eventfd: the listener's fd in rdcd's loop */
-	int stopfd; /* eventfd: wakes the ep0 thread to stop */
+	struct ffs_dev v; /* ep0, threads, sessions (v.session: REQ_INFO) */
+	int ep[FFS_NEP];
 
-	pthread_t th[FFS_NT];
-	bool running[FFS_NT]; /* started, not yet joined */
-
-	pthread_mutex_t lock; /* everything below */
-	pthread_cond_t cond;
-	bool stop, enabled;
-	uint32_t gen;	  /* bumped when a session ends */
-	uint32_t session; /* sessions started (RDC_USB_REQ_INFO) */
-	int bfd;	  /* the bridge's end of the session, or -1 */
-	int pending;	  /* the daemon's end, not yet accepted, or -1 */
-	bool dead;	  /* rdcd hung up on this session */
-	uint32_t seen[FFS_NDATA]; /* gen each data thread caught up to */
-	bool exited[FFS_NDATA];	  /* that thread has left its loop */
+	/* under v.lock */
+	bool dead; /* rdcd hung up on this session */
 
 	uint8_t irq[FFS_IRQ_QUEUE][RDC_USB_EVENT_SIZE];
 	unsigned int irq_head, irq_n;
@@ -180,106 +163,28 @@ static const struct {
 
 /* ---- Threads and sessions ------------------------------------------------ */
 
-/* The signal that wakes a thread out of a blocking read or write. */
-#define FFS_KICK (SIGRTMIN + 4)
-
-static void ffs_on_kick(int sig)
+/* Lock held, with the generation just moved on: no session is dead. */
+static void ffs_session_reset(struct ffs_dev *v)
 {
-	(void)sig;
-}
+	struct rdcd_ffs *f = (struct rdcd_ffs *)v;
 
-/* Only FFS_KICK reaches a bridge thread, and interrupts its system call. */
-static void ffs_thread_signals(void)
-{
-	sigset_t set;
-
-	sigfillset(&set);
-	sigdelset(&set, FFS_KICK);
-	pthread_sigmask(SIG_SETMASK, &set, NULL);
-}
-
-static void ffs_timed_wait(struct rdcd_ffs *f, long ms)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	ts.tv_nsec += ms * 1000000L;
-	if (ts.tv_nsec >= 1000000000L) {
-		ts.tv_sec++;
-		ts.tv_nsec -= 1000000000L;
-	}
-	pthread_cond_timedwait(&f->cond, &f->lock, &ts);
-}
-
-/* Lock held: until every data thread has let go of older sessions. */
-static void ffs_wait_threads(struct rdcd_ffs *f)
-{
-	for (unsigned int tries = 0;; tries++) {
-		bool all = true;
-
-		for (unsigned int t = 0; t < FFS_NDATA; t++) {
-			if (f->running[t] && !f->exited[t] &&
-			    f->seen[t] != f->gen) {
-				all = false;
-				pthread_kill(f->th[t], FFS_KICK);
-			}
-		}
-		if (all)
-			return;
-		if (tries == 200)
-			rdcd_log(f->d, RDCD_LOG_WARN,
-				 "ffs:%s: a bridge thread is slow to let go",
-				 f->dir);
-		ffs_timed_wait(f, 10);
-	}
+	f->dead = false;
+	f->irq_n = 0;
 }
 
 /* Lock held: drop the current session, if any. */
 static void ffs_session_end(struct rdcd_ffs *f, const char *why)
 {
-	int old = f->bfd;
-
-	if (old < 0 && f->pending < 0)
-		return;
-	f->gen++;
-	f->bfd = -1;
-	f->dead = false;
-	f->irq_n = 0;
-	if (f->pending >= 0) {
-		close(f->pending); /* never accepted */
-		f->pending = -1;
-	}
-	if (old >= 0)
-		shutdown(old, SHUT_RDWR); /* serve.c sees the client leave */
-	pthread_cond_broadcast(&f->cond);
-	ffs_wait_threads(f);
-	if (old >= 0)
-		close(old);
-	rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: session %u ended (%s)", f->dir,
-		 f->session, why);
+	if (ffs_dev_session_end(&f->v, ffs_session_reset))
+		rdcd_log(f->v.d, RDCD_LOG_INFO, "ffs:%s: session %u ended (%s)",
+			 f->v.dir, f->v.session, why);
 }
 
 /* Lock held: a new session, handed to rdcd's loop through `wake`. */
 static void ffs_session_start(struct rdcd_ffs *f)
 {
-	uint64_t one = 1;
-	int sv[2];
-
-	if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv)) {
-		rdcd_log(f->d, RDCD_LOG_ERR, "ffs:%s: socketpair: %s", f->dir,
-			 strerror(errno));
-		return;
-	}
-	fcntl(sv[0], F_SETFL, O_NONBLOCK); /* the daemon's end */
-	f->pending = sv[0];
-	f->bfd = sv[1];
-	f->dead = false;
-	f->session++;
-	pthread_cond_broadcast(&f->cond);
-	if (write(f->wake, &one, sizeof(one)) < 0)
-		rdcd_log(f->d, RDCD_LOG_ERR, "ffs:%s: eventfd: %s", f->dir,
-			 strerror(errno));
-	rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: session %u", f->dir, f->session);
+	if (ffs_dev_session_start(&f->v))
+		f->dead = false;
 }
 
 /*
@@ -292,15 +197,15 @@ static void ffs_session_start(struct rdcd_ffs *f)
  */
 static void ffs_session_dead(struct rdcd_ffs *f, uint32_t gen)
 {
-	if (gen != f->gen || f->dead)
+	if (gen != f->v.gen || f->dead)
 		return;
-	rdcd_log(f->d, RDCD_LOG_INFO,
+	rdcd_log(f->v.d, RDCD_LOG_INFO,
 		 "ffs:%s: rdcd closed session %u: halting bulk endpoints",
-		 f->dir, f->session);
+		 f->v.dir, f->v.session);
 	f->dead = true;
-	pthread_cond_broadcast(&f->cond);
-	if (f->running[FFS_T_OUT])
-		pthread_kill(f->th[FFS_T_OUT], FFS_KICK);
+	pthread_cond_broadcast(&f->v.cond);
+	if (f->v.running[FFS_T_OUT])
+		pthread_kill(f->v.th[FFS_T_OUT], FFS_KICK);
 }
 
 /*
@@ -321,19 +226,19 @@ static void ffs_halt(struct rdcd_ffs *f, enum ffs_ep ep, uint32_t gen)
 				     : read(f->ep[ep], &b, 0);
 		if (r >= 0 || errno != EAGAIN)
 			break;
-		pthread_mutex_lock(&f->lock);
-		gone = gen != f->gen || f->stop;
-		pthread_mutex_unlock(&f->lock);
+		pthread_mutex_lock(&f->v.lock);
+		gone = gen != f->v.gen || f->v.stop;
+		pthread_mutex_unlock(&f->v.lock);
 		if (gone)
 			return;
 		usleep(10000);
 	}
 	if (r < 0 && errno != EBADMSG && errno != EINTR)
-		rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: halting ep%d: %s",
-			 f->dir, ep + 1, strerror(errno));
+		rdcd_log(f->v.d, RDCD_LOG_WARN, "ffs:%s: halting ep%d: %s",
+			 f->v.dir, ep + 1, strerror(errno));
 	else
-		rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: ep%d halted (%zd)",
-			 f->dir, ep + 1, r);
+		rdcd_log(f->v.d, RDCD_LOG_DEBUG, "ffs:%s: ep%d halted (%zd)",
+			 f->v.dir, ep + 1, r);
 }
 
 /* Write all of p to fd (a blocking socket); false if it broke. */
@@ -357,49 +262,49 @@ static void *ffs_out_thread(void *arg)
 	uint32_t halted = 0;
 	bool halt_valid = false;
 
-	ffs_thread_signals();
-	pthread_mutex_lock(&f->lock);
-	while (!f->stop) {
-		uint32_t g = f->gen;
-		int fd = f->bfd, err;
+	ffs_dev_thread_signals(&f->v);
+	pthread_mutex_lock(&f->v.lock);
+	while (!f->v.stop) {
+		uint32_t g = f->v.gen;
+		int fd = f->v.bfd, err;
 		ssize_t n;
 		bool ok = true;
 
-		f->seen[FFS_T_OUT] = g;
+		f->v.seen[FFS_T_OUT] = g;
 		if (fd < 0 || (halt_valid && halted == g)) {
-			pthread_cond_broadcast(&f->cond);
-			pthread_cond_wait(&f->cond, &f->lock);
+			pthread_cond_broadcast(&f->v.cond);
+			pthread_cond_wait(&f->v.cond, &f->v.lock);
 			continue;
 		}
 		if (f->dead) {
-			pthread_mutex_unlock(&f->lock);
+			pthread_mutex_unlock(&f->v.lock);
 			ffs_halt(f, FFS_EP_OUT, g);
-			pthread_mutex_lock(&f->lock);
+			pthread_mutex_lock(&f->v.lock);
 			halted = g;
 			halt_valid = true;
 			continue;
 		}
-		pthread_mutex_unlock(&f->lock);
+		pthread_mutex_unlock(&f->v.lock);
 		n = read(f->ep[FFS_EP_OUT], f->outbuf, FFS_BUF);
 		err = n < 0 ? errno : 0;
 		if (n > 0)
 			ok = ffs_write_all(fd, f->outbuf, (size_t)n);
-		pthread_mutex_lock(&f->lock);
-		if (g != f->gen || f->stop)
+		pthread_mutex_lock(&f->v.lock);
+		if (g != f->v.gen || f->v.stop)
 			continue; /* that session is gone: so are its bytes */
 		if (n < 0 && err != EINTR) {
 			/* ESHUTDOWN: disabled; the ep0 thread hears of it */
-			rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: bulk OUT: %s",
-				 f->dir, strerror(err));
+			rdcd_log(f->v.d, RDCD_LOG_DEBUG, "ffs:%s: bulk OUT: %s",
+				 f->v.dir, strerror(err));
 			halted = g;
 			halt_valid = true;
 		} else if (!ok) {
 			ffs_session_dead(f, g);
 		}
 	}
-	f->exited[FFS_T_OUT] = true;
-	pthread_cond_broadcast(&f->cond);
-	pthread_mutex_unlock(&f->lock);
+	f->v.exited[FFS_T_OUT] = true;
+	pthread_cond_broadcast(&f->v.cond);
+	pthread_mutex_unlock(&f->v.lock);
 	return NULL;
 }
 
@@ -410,15 +315,15 @@ static void ffs_irq_push(struct rdcd_ffs *f, const uint8_t *ev)
 		f->irq_head = (f->irq_head + 1) % FFS_IRQ_QUEUE;
 		f->irq_n--;
 		if (!(f->irq_dropped++ % 1000))
-			rdcd_log(f->d, RDCD_LOG_INFO,
+			rdcd_log(f->v.d, RDCD_LOG_INFO,
 				 "ffs:%s: the host does not read interrupt "
 				 "events: dropping",
-				 f->dir);
+				 f->v.dir);
 	}
 	memcpy(f->irq[(f->irq_head + f->irq_n) % FFS_IRQ_QUEUE], ev,
 	       RDC_USB_EVENT_SIZE);
 	f->irq_n++;
-	pthread_cond_broadcast(&f->cond);
+	pthread_cond_broadcast(&f->v.cond);
 }
 
 /*
@@ -502,9 +407,9 @@ static bool ffs_parse(struct rdcd_ffs *f, struct ffs_parse *ps,
 			memcpy(ps->ev + ps->evgot, p, take);
 			ps->evgot += take;
 			if (ps->evgot == RDC_USB_EVENT_SIZE) {
-				pthread_mutex_lock(&f->lock);
+				pthread_mutex_lock(&f->v.lock);
 				ffs_irq_push(f, ps->ev);
-				pthread_mutex_unlock(&f->lock);
+				pthread_mutex_unlock(&f->v.lock);
 			}
 		} else {
 			memcpy(f->stage + *staged, p, take);
@@ -525,34 +430,34 @@ static void *ffs_in_thread(void *arg)
 	uint32_t mine = 0, halted = 0, ended = 0;
 	bool halt_valid = false, end_valid = false;
 
-	ffs_thread_signals();
-	pthread_mutex_lock(&f->lock);
-	while (!f->stop) {
-		uint32_t g = f->gen;
-		int fd = f->bfd, err = 0;
+	ffs_dev_thread_signals(&f->v);
+	pthread_mutex_lock(&f->v.lock);
+	while (!f->v.stop) {
+		uint32_t g = f->v.gen;
+		int fd = f->v.bfd, err = 0;
 		size_t staged = 0;
 		ssize_t n;
 
-		f->seen[FFS_T_IN] = g;
+		f->v.seen[FFS_T_IN] = g;
 		if (g != mine) {
 			memset(&ps, 0, sizeof(ps)); /* a new stream */
 			mine = g;
 		}
 		if (fd < 0 || (halt_valid && halted == g)) {
-			pthread_cond_broadcast(&f->cond);
-			pthread_cond_wait(&f->cond, &f->lock);
+			pthread_cond_broadcast(&f->v.cond);
+			pthread_cond_wait(&f->v.cond, &f->v.lock);
 			continue;
 		}
 		if (end_valid && ended == g) {
 			/* rdcd's stream ended and all of it went out */
-			pthread_mutex_unlock(&f->lock);
+			pthread_mutex_unlock(&f->v.lock);
 			ffs_halt(f, FFS_EP_IN, g);
-			pthread_mutex_lock(&f->lock);
+			pthread_mutex_lock(&f->v.lock);
 			halted = g;
 			halt_valid = true;
 			continue;
 		}
-		pthread_mutex_unlock(&f->lock);
+		pthread_mutex_unlock(&f->v.lock);
 		/* at most FFS_BUF - HDR, so a header always fits beside it */
 		n = read(fd, f->inbuf, FFS_BUF - RDC_PROTO_HDR_SIZE);
 		if (n < 0 && errno == EINTR)
@@ -563,29 +468,29 @@ static void *ffs_in_thread(void *arg)
 			err = EPROTO;
 		else if (staged)
 			err = -ffs_in_write(f, f->stage, staged);
-		pthread_mutex_lock(&f->lock);
-		if (g != f->gen || f->stop || !err)
+		pthread_mutex_lock(&f->v.lock);
+		if (g != f->v.gen || f->v.stop || !err)
 			continue;
 		if (err == EPIPE || err == EPROTO || err == EINTR) {
 			/* EINTR with the session alive: bytes may be lost */
 			if (err == EPROTO)
-				rdcd_log(f->d, RDCD_LOG_ERR,
+				rdcd_log(f->v.d, RDCD_LOG_ERR,
 					 "ffs:%s: rdcd's stream is corrupt",
-					 f->dir);
+					 f->v.dir);
 			ffs_session_dead(f, g);
 			ended = g;
 			end_valid = true;
 		} else {
 			/* ESHUTDOWN: disabled; the ep0 thread hears of it */
-			rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: bulk IN: %s",
-				 f->dir, strerror(err));
+			rdcd_log(f->v.d, RDCD_LOG_DEBUG, "ffs:%s: bulk IN: %s",
+				 f->v.dir, strerror(err));
 			halted = g;
 			halt_valid = true;
 		}
 	}
-	f->exited[FFS_T_IN] = true;
-	pthread_cond_broadcast(&f->cond);
-	pthread_mutex_unlock(&f->lock);
+	f->v.exited[FFS_T_IN] = true;
+	pthread_cond_broadcast(&f->v.cond);
+	pthread_mutex_unlock(&f->v.lock);
 	return NULL;
 }
 
@@ -596,37 +501,38 @@ static void *ffs_irq_thread(void *arg)
 	uint32_t broken = 0;
 	bool broken_valid = false;
 
-	ffs_thread_signals();
-	pthread_mutex_lock(&f->lock);
-	while (!f->stop) {
-		uint32_t g = f->gen;
+	ffs_dev_thread_signals(&f->v);
+	pthread_mutex_lock(&f->v.lock);
+	while (!f->v.stop) {
+		uint32_t g = f->v.gen;
 		uint8_t ev[RDC_USB_EVENT_SIZE];
 		ssize_t n;
 
-		f->seen[FFS_T_IRQ] = g;
-		if (f->bfd < 0 || !f->irq_n || (broken_valid && broken == g)) {
-			pthread_cond_broadcast(&f->cond);
-			pthread_cond_wait(&f->cond, &f->lock);
+		f->v.seen[FFS_T_IRQ] = g;
+		if (f->v.bfd < 0 || !f->irq_n ||
+		    (broken_valid && broken == g)) {
+			pthread_cond_broadcast(&f->v.cond);
+			pthread_cond_wait(&f->v.cond, &f->v.lock);
 			continue;
 		}
 		memcpy(ev, f->irq[f->irq_head], sizeof(ev));
 		f->irq_head = (f->irq_head + 1) % FFS_IRQ_QUEUE;
 		f->irq_n--;
-		pthread_mutex_unlock(&f->lock);
+		pthread_mutex_unlock(&f->v.lock);
 		n = write(f->ep[FFS_EP_IRQ], ev, sizeof(ev));
 		if (n < 0 && errno != EINTR) {
 			/* ESHUTDOWN: disabled; wait for the next session */
-			rdcd_log(f->d, RDCD_LOG_DEBUG,
-				 "ffs:%s: interrupt IN: %s", f->dir,
+			rdcd_log(f->v.d, RDCD_LOG_DEBUG,
+				 "ffs:%s: interrupt IN: %s", f->v.dir,
 				 strerror(errno));
 			broken = g;
 			broken_valid = true;
 		}
-		pthread_mutex_lock(&f->lock);
+		pthread_mutex_lock(&f->v.lock);
 	}
-	f->exited[FFS_T_IRQ] = true;
-	pthread_cond_broadcast(&f->cond);
-	pthread_mutex_unlock(&f->lock);
+	f->v.exited[FFS_T_IRQ] = true;
+	pthread_cond_broadcast(&f->v.cond);
+	pthread_mutex_unlock(&f->v.lock);
 	return NULL;
 }
 
@@ -649,74 +555,77 @@ static void ffs_setup(struct rdcd_ffs *f, const struct usb_ctrlrequest *s)
 
 	if (ffs_is_ours(s) && s->bRequest == RDC_USB_REQ_RESET && !in &&
 	    !wlen) {
-		pthread_mutex_lock(&f->lock);
+		pthread_mutex_lock(&f->v.lock);
 		ffs_session_end(f, "reset by the host");
-		if (f->enabled)
+		if (f->v.enabled)
 			ffs_session_start(f);
-		pthread_mutex_unlock(&f->lock);
+		pthread_mutex_unlock(&f->v.lock);
 		/* the status stage: only now may the host send again */
-		r = read(f->ep0, &b, 0);
+		r = read(f->v.ep0, &b, 0);
 	} else if (ffs_is_ours(s) && s->bRequest == RDC_USB_REQ_INFO && in) {
 		uint8_t info[RDC_USB_INFO_SIZE];
 
 		rdc_proto_put32(info, RDC_PROTO_MAGIC);
 		rdc_proto_put32(info + 4, RDC_PROTO_VERSION);
 		rdc_proto_put32(info + 8, RDC_PROTO_MAX_REQUEST);
-		pthread_mutex_lock(&f->lock);
-		rdc_proto_put32(info + 12, f->session);
-		pthread_mutex_unlock(&f->lock);
-		r = write(f->ep0, info,
+		pthread_mutex_lock(&f->v.lock);
+		rdc_proto_put32(info + 12, f->v.session);
+		pthread_mutex_unlock(&f->v.lock);
+		r = write(f->v.ep0, info,
 			  wlen < sizeof(info) ? wlen : sizeof(info));
 	} else {
-		rdcd_log(f->d, RDCD_LOG_INFO,
+		rdcd_log(f->v.d, RDCD_LOG_INFO,
 			 "ffs:%s: control request %02x/%02x (wLength %u) not "
 			 "ours: stall",
-			 f->dir, s->bRequestType, s->bRequest, wlen);
+			 f->v.dir, s->bRequestType, s->bRequest, wlen);
 		/* I/O against the request's direction stalls it */
-		r = in ? read(f->ep0, &b, 0) : write(f->ep0, &b, 0);
+		r = in ? read(f->v.ep0, &b, 0) : write(f->v.ep0, &b, 0);
 		if (r < 0 && errno == EL2HLT)
 			r = 0;
 	}
 	if (r < 0 && errno != EIDRM)
-		rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: ep0: %s", f->dir,
+		rdcd_log(f->v.d, RDCD_LOG_WARN, "ffs:%s: ep0: %s", f->v.dir,
 			 strerror(errno));
 }
 
-static void ffs_event(struct rdcd_ffs *f, const struct usb_functionfs_event *e)
+static void ffs_event(struct ffs_dev *v, const struct usb_functionfs_event *e)
 {
+	struct rdcd_ffs *f = (struct rdcd_ffs *)v;
+
 	switch (e->type) {
 	case FUNCTIONFS_BIND:
 		/* an UNBIND just before may have been folded into this one */
-		pthread_mutex_lock(&f->lock);
-		f->enabled = false;
+		pthread_mutex_lock(&f->v.lock);
+		f->v.enabled = false;
 		ffs_session_end(f, "bound again");
-		pthread_mutex_unlock(&f->lock);
-		rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: bound to a UDC", f->dir);
+		pthread_mutex_unlock(&f->v.lock);
+		rdcd_log(f->v.d, RDCD_LOG_INFO, "ffs:%s: bound to a UDC",
+			 f->v.dir);
 		break;
 	case FUNCTIONFS_UNBIND:
 	case FUNCTIONFS_DISABLE:
-		pthread_mutex_lock(&f->lock);
-		f->enabled = false;
+		pthread_mutex_lock(&f->v.lock);
+		f->v.enabled = false;
 		ffs_session_end(f, e->type == FUNCTIONFS_UNBIND ? "unbound"
 								: "disabled");
-		pthread_mutex_unlock(&f->lock);
+		pthread_mutex_unlock(&f->v.lock);
 		if (e->type == FUNCTIONFS_UNBIND)
-			rdcd_log(f->d, RDCD_LOG_INFO, "ffs:%s: unbound",
-				 f->dir);
+			rdcd_log(f->v.d, RDCD_LOG_INFO, "ffs:%s: unbound",
+				 f->v.dir);
 		break;
 	case FUNCTIONFS_ENABLE:
-		pthread_mutex_lock(&f->lock);
-		f->enabled = true;
+		pthread_mutex_lock(&f->v.lock);
+		f->v.enabled = true;
 		ffs_session_end(f, "configured again");
 		ffs_session_start(f);
-		pthread_mutex_unlock(&f->lock);
+		pthread_mutex_unlock(&f->v.lock);
 		break;
 	case FUNCTIONFS_SETUP:
 		ffs_setup(f, &e->u.setup);
 		break;
 	case FUNCTIONFS_SUSPEND:
 	case FUNCTIONFS_RESUME:
-		rdcd_log(f->d, RDCD_LOG_DEBUG, "ffs:%s: %s", f->dir,
+		rdcd_log(f->v.d, RDCD_LOG_DEBUG, "ffs:%s: %s", f->v.dir,
 			 e->type == FUNCTIONFS_SUSPEND ? "suspend" : "resume");
 		break;
 	default:
@@ -724,94 +633,21 @@ static void ffs_event(struct rdcd_ffs *f, const struct usb_functionfs_event *e)
 	}
 }
 
-static void *ffs_ep0_thread(void *arg)
-{
-	struct rdcd_ffs *f = arg;
-
-	ffs_thread_signals();
-	for (;;) {
-		struct pollfd p[2] = {{.fd = f->ep0, .events = POLLIN},
-				      {.fd = f->stopfd, .events = POLLIN}};
-		struct usb_functionfs_event ev[4];
-		ssize_t n;
-
-		if (poll(p, 2, -1) < 0 && errno != EINTR)
-			break;
-		if (p[1].revents)
-			break;
-		if (!(p[0].revents & POLLIN))
-			continue;
-		n = read(f->ep0, ev, sizeof(ev));
-		if (n < 0) {
-			if (errno == EINTR || errno == EIDRM || errno == EAGAIN)
-				continue;
-			rdcd_log(f->d, RDCD_LOG_ERR, "ffs:%s: ep0: %s", f->dir,
-				 strerror(errno));
-			break;
-		}
-		for (size_t i = 0; i < (size_t)n / sizeof(ev[0]); i++)
-			ffs_event(f, &ev[i]);
-	}
-	return NULL;
-}
-
 /* ---- The listener ----------------------------------------------------- */
 
 void rdcd_ffs_close(struct rdcd_ffs *f)
 {
-	uint64_t one = 1;
-
 	if (!f)
 		return;
-	pthread_mutex_lock(&f->lock);
-	f->stop = true;
-	pthread_cond_broadcast(&f->cond);
-	pthread_mutex_unlock(&f->lock);
-	if (f->running[FFS_T_EP0]) {
-		if (write(f->stopfd, &one, sizeof(one)) < 0)
-			rdcd_log(f->d, RDCD_LOG_WARN, "ffs:%s: eventfd: %s",
-				 f->dir, strerror(errno));
-		pthread_kill(f->th[FFS_T_EP0], FFS_KICK); /* if in ep0 I/O */
-		pthread_join(f->th[FFS_T_EP0], NULL);
-		f->running[FFS_T_EP0] = false;
-	}
-	/* the ep0 thread is gone: nothing starts a session now */
-	pthread_mutex_lock(&f->lock);
-	f->gen++; /* wakes every data thread out of its call */
-	pthread_cond_broadcast(&f->cond);
-	ffs_wait_threads(f);
-	pthread_mutex_unlock(&f->lock);
-	for (unsigned int t = 0; t < FFS_NDATA; t++)
-		if (f->running[t])
-			pthread_join(f->th[t], NULL);
-	if (f->pending >= 0)
-		close(f->pending);
-	if (f->bfd >= 0)
-		close(f->bfd);
+	ffs_dev_stop(&f->v, false);
 	for (unsigned int i = 0; i < FFS_NEP; i++)
 		if (f->ep[i] >= 0)
 			close(f->ep[i]);
-	/* closing ep0 withdraws the function: the gadget leaves its UDC */
-	if (f->ep0 >= 0)
-		close(f->ep0);
-	if (f->wake >= 0)
-		close(f->wake);
-	if (f->stopfd >= 0)
-		close(f->stopfd);
-	pthread_cond_destroy(&f->cond);
-	pthread_mutex_destroy(&f->lock);
+	ffs_dev_fini(&f->v);
 	free(f->outbuf);
 	free(f->inbuf);
 	free(f->stage);
 	free(f);
-}
-
-static int ffs_open_file(struct rdcd_ffs *f, const char *name)
-{
-	char path[sizeof(f->dir) + 8];
-
-	snprintf(path, sizeof(path), "%s/%s", f->dir, name);
-	return open(path, O_RDWR | O_CLOEXEC);
 }
 
 int rdcd_ffs_open(const struct rdcd *d, const char *dir, struct rdcd_ffs **out)
@@ -820,14 +656,12 @@ int rdcd_ffs_open(const struct rdcd *d, const char *dir, struct rdcd_ffs **out)
 		[FFS_T_OUT] = ffs_out_thread,
 		[FFS_T_IN] = ffs_in_thread,
 		[FFS_T_IRQ] = ffs_irq_thread,
-		[FFS_T_EP0] = ffs_ep0_thread,
+		[FFS_T_EP0] = ffs_dev_ep0_thread,
 	};
-	struct sigaction sa = {.sa_handler = ffs_on_kick};
-	pthread_condattr_t ca;
 	struct rdcd_ffs *f;
 
 	*out = NULL;
-	if (!*dir || strlen(dir) >= sizeof(f->dir)) {
+	if (!*dir || strlen(dir) >= sizeof(f->v.dir)) {
 		rdcd_log(d, RDCD_LOG_ERR,
 			 "ffs:%s: want ffs:DIR (a functionfs mount)", dir);
 		return -1;
@@ -835,70 +669,37 @@ int rdcd_ffs_open(const struct rdcd *d, const char *dir, struct rdcd_ffs **out)
 	f = calloc(1, sizeof(*f));
 	if (!f)
 		return -1;
-	f->d = d;
-	strcpy(f->dir, dir);
-	f->ep0 = f->wake = f->stopfd = f->bfd = f->pending = -1;
+	ffs_dev_init(&f->v, d, "ffs", FFS_KICK, FFS_NDATA, ffs_event);
+	strcpy(f->v.dir, dir);
 	for (unsigned int i = 0; i < FFS_NEP; i++)
 		f->ep[i] = -1;
-	pthread_mutex_init(&f->lock, NULL);
-	pthread_condattr_init(&ca);
-	pthread_condattr_setclock(&ca, CLOCK_MONOTONIC);
-	pthread_cond_init(&f->cond, &ca);
-	pthread_condattr_destroy(&ca);
-	/* no SA_RESTART: the kick must interrupt blocking I/O */
-	sigaction(FFS_KICK, &sa, NULL);
 
 	f->outbuf = malloc(FFS_BUF);
 	f->inbuf = malloc(FFS_BUF);
 	f->stage = malloc(FFS_BUF);
-	f->wake = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
-	f->stopfd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
-	if (!f->outbuf || !f->inbuf || !f->stage || f->wake < 0 ||
-	    f->stopfd < 0) {
+	if (!f->outbuf || !f->inbuf || !f->stage || f->v.wake < 0 ||
+	    f->v.stopfd < 0) {
 		rdcd_log(d, RDCD_LOG_ERR, "ffs:%s: out of memory or fds", dir);
 		goto fail;
 	}
-	f->ep0 = ffs_open_file(f, "ep0");
-	if (f->ep0 < 0) {
-		rdcd_log(d, RDCD_LOG_ERR,
-			 "ffs:%s: ep0: %s (is functionfs mounted there? "
-			 "scripts/rdc-gadget.sh)",
-			 dir, strerror(errno));
+	if (ffs_dev_open_ep0(&f->v, &ffs_descs, sizeof(ffs_descs), &ffs_strings,
+			     sizeof(ffs_strings), "scripts/rdc-gadget.sh"))
 		goto fail;
-	}
-	if (write(f->ep0, &ffs_descs, sizeof(ffs_descs)) !=
-		    (ssize_t)sizeof(ffs_descs) ||
-	    write(f->ep0, &ffs_strings, sizeof(ffs_strings)) !=
-		    (ssize_t)sizeof(ffs_strings)) {
-		rdcd_log(d, RDCD_LOG_ERR,
-			 "ffs:%s: writing descriptors: %s (in use by another "
-			 "program?)",
-			 dir, strerror(errno));
-		goto fail;
-	}
 	for (unsigned int i = 0; i < FFS_NEP; i++) {
 		char name[8];
 
 		snprintf(name, sizeof(name), "ep%u", i + 1);
-		f->ep[i] = ffs_open_file(f, name);
+		f->ep[i] = ffs_dev_open_file(&f->v, name);
 		if (f->ep[i] < 0) {
 			rdcd_log(d, RDCD_LOG_ERR, "ffs:%s: %s: %s", dir, name,
 				 strerror(errno));
 			goto fail;
 		}
 	}
-	for (unsigned int t = 0; t < FFS_NT; t++) {
-		int err = pthread_create(&f->th[t], NULL, fn[t], f);
-
-		if (err) {
-			rdcd_log(d, RDCD_LOG_ERR, "ffs:%s: thread: %s", dir,
-				 strerror(err));
-			goto fail;
-		}
-		f->running[t] = true;
-	}
+	if (ffs_dev_start(&f->v, fn, f))
+		goto fail;
 	*out = f;
-	return f->wake;
+	return f->v.wake;
 fail:
 	rdcd_ffs_close(f);
 	return -1;
@@ -906,25 +707,5 @@ fail:
 
 void rdcd_ffs_accept(struct rdcd *d, struct rdcd_ffs *f)
 {
-	char peer[64];
-	uint64_t v;
-	uint32_t s;
-	int fd;
-
-	if (read(f->wake, &v, sizeof(v)) < 0 && errno != EAGAIN)
-		rdcd_log(d, RDCD_LOG_WARN, "ffs:%s: eventfd: %s", f->dir,
-			 strerror(errno));
-	pthread_mutex_lock(&f->lock);
-	fd = f->pending;
-	f->pending = -1;
-	s = f->session;
-	pthread_mutex_unlock(&f->lock);
-	if (fd < 0)
-		return; /* it ended before we came to it */
-	/* admitted as any connection: the HELLO decides (serve.c) */
-	snprintf(peer, sizeof(peer), "usb session %u", s);
-	if (!rdcd_client_new(d, fd, false, peer)) {
-		rdcd_log(d, RDCD_LOG_ERR, "out of memory");
-		close(fd);
-	}
+	ffs_dev_accept(d, &f->v, "usb");
 }

@@ -25,21 +25,18 @@
  */
 #include <endian.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <linux/usb/ch9.h>
-#include <linux/usb/functionfs.h>
-#include <poll.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/eventfd.h>
 #include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "ffs_dev.h"
 #include "rdcd.h"
 #include "udl_decode.h"
 
@@ -64,23 +61,13 @@ static const uint8_t udl_channel_std[16] = {0x57, 0xcd, 0xdc, 0xa7, 0x1c, 0x88,
 enum { T_OUT, T_REPLY, T_EP0, T_N };
 
 struct rdcd_udl {
-	const struct rdcd *d;
-	char dir[128];
+	struct ffs_dev v; /* ep0, threads, sessions */
 	unsigned int pad;
 	uint32_t vram_size;
 	uint8_t edid[RDC_UDL_EDID_SIZE];
-	int ep0, epd; /* ep0 and the data endpoint's file */
-	int wake, stopfd;
-	pthread_t th[T_N];
-	bool running[T_N];
+	int epd; /* the data endpoint's file */
 
-	pthread_mutex_t lock; /* everything below */
-	pthread_cond_t cond;
-	bool stop, enabled;
-	uint32_t gen, session;
-	int bfd, pending;
-	uint32_t seen[T_EP0];
-	bool exited[T_EP0];
+	/* under v.lock */
 	bool controlling;
 	struct rdc_udl_stats stats; /* a copy, after each transfer */
 	uint64_t replies_bad;
@@ -101,20 +88,6 @@ static uint64_t udl_now_ns(void)
 
 	clock_gettime(CLOCK_MONOTONIC, &ts);
 	return (uint64_t)ts.tv_sec * 1000000000ull + (uint64_t)ts.tv_nsec;
-}
-
-static void udl_on_kick(int sig)
-{
-	(void)sig;
-}
-
-static void udl_thread_signals(void)
-{
-	sigset_t set;
-
-	sigfillset(&set);
-	sigdelset(&set, UDL_KICK);
-	pthread_sigmask(SIG_SETMASK, &set, NULL);
 }
 
 /* ---- Descriptors ----------------------------------------------------------- */
@@ -198,79 +171,27 @@ static const struct {
 
 /* ---- Sessions ---------------------------------------------------------------- */
 
-/* Lock held: until both data threads have let go of older sessions. */
-static void udl_wait_threads(struct rdcd_udl *u)
-{
-	for (unsigned int tries = 0;; tries++) {
-		bool all = true;
-
-		for (unsigned int t = 0; t < T_EP0; t++) {
-			if (u->running[t] && !u->exited[t] &&
-			    u->seen[t] != u->gen) {
-				all = false;
-				pthread_kill(u->th[t], UDL_KICK);
-			}
-		}
-		if (all)
-			return;
-		if (tries == 200)
-			rdcd_log(u->d, RDCD_LOG_WARN,
-				 "udl:%s: a bridge thread is slow to let go",
-				 u->dir);
-		pthread_mutex_unlock(&u->lock);
-		usleep(10000);
-		pthread_mutex_lock(&u->lock);
-	}
-}
-
+/* Lock held: drop the current session, if any. */
 static void udl_session_end(struct rdcd_udl *u, const char *why)
 {
-	int old = u->bfd;
-
-	if (old < 0 && u->pending < 0)
+	if (!ffs_dev_session_end(&u->v, NULL))
 		return;
-	u->gen++;
-	u->bfd = -1;
-	if (u->pending >= 0) {
-		close(u->pending);
-		u->pending = -1;
-	}
-	if (old >= 0)
-		shutdown(old, SHUT_RDWR);
-	pthread_cond_broadcast(&u->cond);
-	udl_wait_threads(u);
-	if (old >= 0)
-		close(old);
-	rdcd_log(u->d, RDCD_LOG_INFO,
+	rdcd_log(u->v.d, RDCD_LOG_INFO,
 		 "udl:%s: session %u ended (%s): %llu bytes, %llu commands, "
 		 "%llu errors",
-		 u->dir, u->session, why, (unsigned long long)u->stats.bytes,
+		 u->v.dir, u->v.session, why,
+		 (unsigned long long)u->stats.bytes,
 		 (unsigned long long)u->stats.cmds,
 		 (unsigned long long)u->stats.errors);
 }
 
+/* Lock held: a new session, handed to rdcd's loop through `wake`. */
 static void udl_session_start(struct rdcd_udl *u)
 {
-	uint64_t one = 1;
-	int sv[2];
-
-	if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv)) {
-		rdcd_log(u->d, RDCD_LOG_ERR, "udl:%s: socketpair: %s", u->dir,
-			 strerror(errno));
+	if (!ffs_dev_session_start(&u->v))
 		return;
-	}
-	fcntl(sv[0], F_SETFL, O_NONBLOCK);
-	u->pending = sv[0];
-	u->bfd = sv[1];
 	u->controlling = false;
-	u->session++;
 	memset(&u->stats, 0, sizeof(u->stats));
-	pthread_cond_broadcast(&u->cond);
-	if (write(u->wake, &one, sizeof(one)) < 0)
-		rdcd_log(u->d, RDCD_LOG_ERR, "udl:%s: eventfd: %s", u->dir,
-			 strerror(errno));
-	rdcd_log(u->d, RDCD_LOG_INFO, "udl:%s: session %u", u->dir,
-		 u->session);
 }
 
 /* ---- The out thread: bulk OUT -> decoder -> requests -------------------------- */
@@ -340,9 +261,9 @@ static void udl_maybe_claim(struct rdcd_udl *u)
 	bool ctl;
 	uint64_t now;
 
-	pthread_mutex_lock(&u->lock);
+	pthread_mutex_lock(&u->v.lock);
 	ctl = u->controlling;
-	pthread_mutex_unlock(&u->lock);
+	pthread_mutex_unlock(&u->v.lock);
 	now = udl_now_ns();
 	if (ctl || now - u->claim_ns < UDL_CLAIM_EVERY_NS)
 		return;
@@ -409,20 +330,20 @@ static void *udl_out_thread(void *arg)
 	uint32_t begun = 0, idle = 0;
 	bool begun_valid = false, idle_valid = false;
 
-	udl_thread_signals();
-	pthread_mutex_lock(&u->lock);
-	while (!u->stop) {
-		uint32_t g = u->gen;
-		int fd = u->bfd, err;
+	ffs_dev_thread_signals(&u->v);
+	pthread_mutex_lock(&u->v.lock);
+	while (!u->v.stop) {
+		uint32_t g = u->v.gen;
+		int fd = u->v.bfd, err;
 		ssize_t n;
 
-		u->seen[T_OUT] = g;
+		u->v.seen[T_OUT] = g;
 		if (fd < 0 || (idle_valid && idle == g)) {
-			pthread_cond_broadcast(&u->cond);
-			pthread_cond_wait(&u->cond, &u->lock);
+			pthread_cond_broadcast(&u->v.cond);
+			pthread_cond_wait(&u->v.cond, &u->v.lock);
 			continue;
 		}
-		pthread_mutex_unlock(&u->lock);
+		pthread_mutex_unlock(&u->v.lock);
 		if (!begun_valid || begun != g) {
 			udl_out_begin(u, fd);
 			begun = g;
@@ -434,27 +355,27 @@ static void *udl_out_thread(void *arg)
 			rdc_udl_feed(&u->dec, u->in, (size_t)n);
 			udl_flush(u);
 		}
-		pthread_mutex_lock(&u->lock);
-		if (g != u->gen || u->stop)
+		pthread_mutex_lock(&u->v.lock);
+		if (g != u->v.gen || u->v.stop)
 			continue;
 		u->stats = u->dec.st;
 		if (n < 0 && err != EINTR) {
 			/* ESHUTDOWN: disabled; the ep0 thread ends the session */
-			rdcd_log(u->d, RDCD_LOG_DEBUG, "udl:%s: bulk OUT: %s",
-				 u->dir, strerror(err));
+			rdcd_log(u->v.d, RDCD_LOG_DEBUG, "udl:%s: bulk OUT: %s",
+				 u->v.dir, strerror(err));
 			idle = g;
 			idle_valid = true;
 		} else if (u->broken) {
-			rdcd_log(u->d, RDCD_LOG_ERR,
-				 "udl:%s: rdcd closed session %u", u->dir,
-				 u->session);
+			rdcd_log(u->v.d, RDCD_LOG_ERR,
+				 "udl:%s: rdcd closed session %u", u->v.dir,
+				 u->v.session);
 			idle = g;
 			idle_valid = true;
 		}
 	}
-	u->exited[T_OUT] = true;
-	pthread_cond_broadcast(&u->cond);
-	pthread_mutex_unlock(&u->lock);
+	u->v.exited[T_OUT] = true;
+	pthread_cond_broadcast(&u->v.cond);
+	pthread_mutex_unlock(&u->v.lock);
 	return NULL;
 }
 
@@ -499,33 +420,33 @@ static bool udl_reply(struct rdcd_udl *u, int fd)
 			if (!rdc_proto_hello_reply_decode(pl, k, &r)) {
 				bool ctl = r.flags & RDC_HELLO_CONTROL;
 
-				pthread_mutex_lock(&u->lock);
+				pthread_mutex_lock(&u->v.lock);
 				u->controlling = ctl;
-				pthread_mutex_unlock(&u->lock);
+				pthread_mutex_unlock(&u->v.lock);
 				if (!ctl)
-					rdcd_log(u->d, RDCD_LOG_WARN,
+					rdcd_log(u->v.d, RDCD_LOG_WARN,
 						 "udl:%s: another client controls "
 						 "the RDC-1: the host's drawing "
 						 "waits for control",
-						 u->dir);
+						 u->v.dir);
 			}
 		}
 		left -= k;
 	}
 	if (!(h.flags & RDC_MSGF_REPLY))
 		return true; /* an event: none is asked for */
-	pthread_mutex_lock(&u->lock);
+	pthread_mutex_lock(&u->v.lock);
 	if (h.type == RDC_MSG_CLAIM && h.status == RDC_ST_OK)
 		u->controlling = true;
 	if (h.status == RDC_ST_BUSY)
 		u->controlling = false;
 	if (h.status != RDC_ST_OK && !(u->replies_bad++ % 1000))
-		rdcd_log(u->d, RDCD_LOG_WARN,
+		rdcd_log(u->v.d, RDCD_LOG_WARN,
 			 "udl:%s: rdcd answered request type %u with status "
 			 "%u (%llu so far)",
-			 u->dir, h.type, h.status,
+			 u->v.dir, h.type, h.status,
 			 (unsigned long long)u->replies_bad);
-	pthread_mutex_unlock(&u->lock);
+	pthread_mutex_unlock(&u->v.lock);
 	return true;
 }
 
@@ -535,30 +456,30 @@ static void *udl_reply_thread(void *arg)
 	uint32_t done = 0;
 	bool done_valid = false;
 
-	udl_thread_signals();
-	pthread_mutex_lock(&u->lock);
-	while (!u->stop) {
-		uint32_t g = u->gen;
-		int fd = u->bfd;
+	ffs_dev_thread_signals(&u->v);
+	pthread_mutex_lock(&u->v.lock);
+	while (!u->v.stop) {
+		uint32_t g = u->v.gen;
+		int fd = u->v.bfd;
 		bool ok;
 
-		u->seen[T_REPLY] = g;
+		u->v.seen[T_REPLY] = g;
 		if (fd < 0 || (done_valid && done == g)) {
-			pthread_cond_broadcast(&u->cond);
-			pthread_cond_wait(&u->cond, &u->lock);
+			pthread_cond_broadcast(&u->v.cond);
+			pthread_cond_wait(&u->v.cond, &u->v.lock);
 			continue;
 		}
-		pthread_mutex_unlock(&u->lock);
+		pthread_mutex_unlock(&u->v.lock);
 		ok = udl_reply(u, fd);
-		pthread_mutex_lock(&u->lock);
-		if (!ok && g == u->gen) {
+		pthread_mutex_lock(&u->v.lock);
+		if (!ok && g == u->v.gen) {
 			done = g;
 			done_valid = true;
 		}
 	}
-	u->exited[T_REPLY] = true;
-	pthread_cond_broadcast(&u->cond);
-	pthread_mutex_unlock(&u->lock);
+	u->v.exited[T_REPLY] = true;
+	pthread_cond_broadcast(&u->v.cond);
+	pthread_mutex_unlock(&u->v.lock);
 	return NULL;
 }
 
@@ -570,19 +491,19 @@ static void udl_check_endpoint(struct rdcd_udl *u)
 	int r = ioctl(u->epd, FUNCTIONFS_ENDPOINT_DESC, &desc);
 
 	if (r < 0)
-		rdcd_log(u->d, RDCD_LOG_WARN,
+		rdcd_log(u->v.d, RDCD_LOG_WARN,
 			 "udl:%s: cannot read the data endpoint's address: %s",
-			 u->dir, strerror(errno));
+			 u->v.dir, strerror(errno));
 	else if (desc.bEndpointAddress != (1 | USB_DIR_OUT))
-		rdcd_log(u->d, RDCD_LOG_ERR,
+		rdcd_log(u->v.d, RDCD_LOG_ERR,
 			 "udl:%s: the UDC made the data endpoint 0x%02x, but "
 			 "udl sends to 0x01: try udl:%s?pad=N with another N "
 			 "(now %u)",
-			 u->dir, desc.bEndpointAddress, u->dir, u->pad);
+			 u->v.dir, desc.bEndpointAddress, u->v.dir, u->pad);
 	else
-		rdcd_log(u->d, RDCD_LOG_DEBUG,
+		rdcd_log(u->v.d, RDCD_LOG_DEBUG,
 			 "udl:%s: data endpoint 0x01 (after %u padding)",
-			 u->dir, u->pad);
+			 u->v.dir, u->pad);
 }
 
 static void udl_stall(struct rdcd_udl *u, const struct usb_ctrlrequest *s)
@@ -590,13 +511,13 @@ static void udl_stall(struct rdcd_udl *u, const struct usb_ctrlrequest *s)
 	uint8_t b = 0;
 	ssize_t r;
 
-	rdcd_log(u->d, RDCD_LOG_INFO,
+	rdcd_log(u->v.d, RDCD_LOG_INFO,
 		 "udl:%s: control request %02x/%02x wValue %04x wIndex %04x "
 		 "(wLength %u) not served: stall",
-		 u->dir, s->bRequestType, s->bRequest, le16toh(s->wValue),
+		 u->v.dir, s->bRequestType, s->bRequest, le16toh(s->wValue),
 		 le16toh(s->wIndex), le16toh(s->wLength));
-	r = s->bRequestType & USB_DIR_IN ? read(u->ep0, &b, 0)
-					 : write(u->ep0, &b, 0);
+	r = s->bRequestType & USB_DIR_IN ? read(u->v.ep0, &b, 0)
+					 : write(u->v.ep0, &b, 0);
 	(void)r;
 }
 
@@ -611,58 +532,60 @@ static void udl_setup(struct rdcd_udl *u, const struct usb_ctrlrequest *s)
 	    wlen <= 64) {
 		uint8_t key[64];
 
-		r = read(u->ep0, key, wlen); /* the data stage */
+		r = read(u->v.ep0, key, wlen); /* the data stage */
 		if (r == (ssize_t)sizeof(udl_channel_std) &&
 		    !memcmp(key, udl_channel_std, sizeof(key[0]) * 16))
-			rdcd_log(u->d, RDCD_LOG_DEBUG,
-				 "udl:%s: standard channel selected", u->dir);
+			rdcd_log(u->v.d, RDCD_LOG_DEBUG,
+				 "udl:%s: standard channel selected", u->v.dir);
 		else
-			rdcd_log(u->d, RDCD_LOG_INFO,
+			rdcd_log(u->v.d, RDCD_LOG_INFO,
 				 "udl:%s: channel select with %zd unknown "
 				 "bytes: the command set stays the same",
-				 u->dir, r);
+				 u->v.dir, r);
 	} else if (vendor && in && s->bRequest == RDC_UDL_REQ_EDID &&
 		   le16toh(s->wIndex) == UDL_EDID_INDEX && wlen >= 1) {
 		uint8_t ans[2] = {0, u->edid[wval >> 8]}; /* status, byte */
 
-		r = write(u->ep0, ans, wlen < 2 ? wlen : 2);
+		r = write(u->v.ep0, ans, wlen < 2 ? wlen : 2);
 	} else if (vendor && in && s->bRequest == RDC_UDL_REQ_STATS &&
 		   wlen >= 1) {
 		uint8_t st[RDC_UDL_STATS_SIZE];
 
-		pthread_mutex_lock(&u->lock);
+		pthread_mutex_lock(&u->v.lock);
 		rdc_udl_stats_encode(st, &u->stats);
-		pthread_mutex_unlock(&u->lock);
-		r = write(u->ep0, st, wlen < sizeof(st) ? wlen : sizeof(st));
+		pthread_mutex_unlock(&u->v.lock);
+		r = write(u->v.ep0, st, wlen < sizeof(st) ? wlen : sizeof(st));
 	} else {
 		udl_stall(u, s);
 		return;
 	}
 	if (r < 0 && errno != EIDRM)
-		rdcd_log(u->d, RDCD_LOG_WARN, "udl:%s: ep0: %s", u->dir,
+		rdcd_log(u->v.d, RDCD_LOG_WARN, "udl:%s: ep0: %s", u->v.dir,
 			 strerror(errno));
 }
 
-static void udl_event(struct rdcd_udl *u, const struct usb_functionfs_event *e)
+static void udl_event(struct ffs_dev *v, const struct usb_functionfs_event *e)
 {
+	struct rdcd_udl *u = (struct rdcd_udl *)v;
+
 	switch (e->type) {
 	case FUNCTIONFS_BIND:
 	case FUNCTIONFS_UNBIND:
 	case FUNCTIONFS_DISABLE:
-		pthread_mutex_lock(&u->lock);
-		u->enabled = false;
+		pthread_mutex_lock(&u->v.lock);
+		u->v.enabled = false;
 		udl_session_end(u, e->type == FUNCTIONFS_BIND	  ? "bound again"
 				   : e->type == FUNCTIONFS_UNBIND ? "unbound"
 								  : "disabled");
-		pthread_mutex_unlock(&u->lock);
+		pthread_mutex_unlock(&u->v.lock);
 		break;
 	case FUNCTIONFS_ENABLE:
 		udl_check_endpoint(u);
-		pthread_mutex_lock(&u->lock);
-		u->enabled = true;
+		pthread_mutex_lock(&u->v.lock);
+		u->v.enabled = true;
 		udl_session_end(u, "configured again");
 		udl_session_start(u);
-		pthread_mutex_unlock(&u->lock);
+		pthread_mutex_unlock(&u->v.lock);
 		break;
 	case FUNCTIONFS_SETUP:
 		udl_setup(u, &e->u.setup);
@@ -672,80 +595,16 @@ static void udl_event(struct rdcd_udl *u, const struct usb_functionfs_event *e)
 	}
 }
 
-static void *udl_ep0_thread(void *arg)
-{
-	struct rdcd_udl *u = arg;
-
-	udl_thread_signals();
-	for (;;) {
-		struct pollfd p[2] = {{.fd = u->ep0, .events = POLLIN},
-				      {.fd = u->stopfd, .events = POLLIN}};
-		struct usb_functionfs_event ev[4];
-		ssize_t n;
-
-		if (poll(p, 2, -1) < 0 && errno != EINTR)
-			break;
-		if (p[1].revents)
-			break;
-		if (!(p[0].revents & POLLIN))
-			continue;
-		n = read(u->ep0, ev, sizeof(ev));
-		if (n < 0) {
-			if (errno == EINTR || errno == EIDRM || errno == EAGAIN)
-				continue;
-			rdcd_log(u->d, RDCD_LOG_ERR, "udl:%s: ep0: %s", u->dir,
-				 strerror(errno));
-			break;
-		}
-		for (size_t i = 0; i < (size_t)n / sizeof(ev[0]); i++)
-			udl_event(u, &ev[i]);
-	}
-	return NULL;
-}
-
 /* ---- The listener ------------------------------------------------------------------- */
 
 void rdcd_udl_close(struct rdcd_udl *u)
 {
-	uint64_t one = 1;
-
 	if (!u)
 		return;
-	pthread_mutex_lock(&u->lock);
-	u->stop = true;
-	pthread_cond_broadcast(&u->cond);
-	pthread_mutex_unlock(&u->lock);
-	if (u->running[T_EP0]) {
-		if (write(u->stopfd, &one, sizeof(one)) < 0)
-			rdcd_log(u->d, RDCD_LOG_WARN, "udl:%s: eventfd: %s",
-				 u->dir, strerror(errno));
-		pthread_kill(u->th[T_EP0], UDL_KICK);
-		pthread_join(u->th[T_EP0], NULL);
-	}
-	pthread_mutex_lock(&u->lock);
-	if (u->bfd >= 0)
-		shutdown(u->bfd, SHUT_RDWR);
-	u->gen++;
-	pthread_cond_broadcast(&u->cond);
-	udl_wait_threads(u);
-	pthread_mutex_unlock(&u->lock);
-	for (unsigned int t = 0; t < T_EP0; t++)
-		if (u->running[t])
-			pthread_join(u->th[t], NULL);
-	if (u->pending >= 0)
-		close(u->pending);
-	if (u->bfd >= 0)
-		close(u->bfd);
+	ffs_dev_stop(&u->v, true);
 	if (u->epd >= 0)
 		close(u->epd);
-	if (u->ep0 >= 0)
-		close(u->ep0);
-	if (u->wake >= 0)
-		close(u->wake);
-	if (u->stopfd >= 0)
-		close(u->stopfd);
-	pthread_cond_destroy(&u->cond);
-	pthread_mutex_destroy(&u->lock);
+	ffs_dev_fini(&u->v);
 	free(u->in);
 	free(u->stage);
 	free(u);
@@ -757,10 +616,10 @@ static int udl_parse(struct rdcd_udl *u, const char *spec)
 	const char *q = strchr(spec, '?');
 	size_t len = q ? (size_t)(q - spec) : strlen(spec);
 
-	if (!len || len >= sizeof(u->dir))
+	if (!len || len >= sizeof(u->v.dir))
 		return -1;
-	memcpy(u->dir, spec, len);
-	u->dir[len] = 0;
+	memcpy(u->v.dir, spec, len);
+	u->v.dir[len] = 0;
 	u->pad = UDL_PAD_DEFAULT;
 	if (q) {
 		char *end;
@@ -782,24 +641,21 @@ int rdcd_udl_open(const struct rdcd *d, const char *spec,
 	static void *(*const fn[T_N])(void *) = {
 		[T_OUT] = udl_out_thread,
 		[T_REPLY] = udl_reply_thread,
-		[T_EP0] = udl_ep0_thread,
+		[T_EP0] = ffs_dev_ep0_thread,
 	};
-	struct sigaction sa = {.sa_handler = udl_on_kick};
 	uint8_t descs[12 + 8 + 2 * (USB_DT_INTERFACE_SIZE +
 				    (UDL_PAD_MAX + 1) * USB_DT_ENDPOINT_SIZE)];
 	uint32_t preset = RDC_PRESET_COUNT;
-	char path[sizeof(((struct rdcd_udl *)0)->dir) + 8];
 	struct rdcd_udl *u;
+	char name[16];
 	size_t dlen;
 
 	*out = NULL;
 	u = calloc(1, sizeof(*u));
 	if (!u)
 		return -1;
-	u->d = d;
-	u->ep0 = u->epd = u->wake = u->stopfd = u->bfd = u->pending = -1;
-	pthread_mutex_init(&u->lock, NULL);
-	pthread_cond_init(&u->cond, NULL);
+	ffs_dev_init(&u->v, d, "udl", UDL_KICK, T_EP0, udl_event);
+	u->epd = -1;
 	if (udl_parse(u, spec)) {
 		rdcd_log(d, RDCD_LOG_ERR,
 			 "udl:%s: want udl:DIR[?pad=N] (a functionfs mount; N "
@@ -807,7 +663,6 @@ int rdcd_udl_open(const struct rdcd *d, const char *spec,
 			 spec, UDL_PAD_MAX);
 		goto fail;
 	}
-	sigaction(UDL_KICK, &sa, NULL);
 	u->vram_size = d->vram_size;
 	/* the mode rdcd started with comes first in the EDID */
 	if (rdc_reg_read(d->dev, RDC_REG_MODE_PRESET, &preset))
@@ -815,51 +670,27 @@ int rdcd_udl_open(const struct rdcd *d, const char *spec,
 	rdc_udl_edid(u->edid, preset, u->vram_size);
 	u->in = malloc(UDL_READ);
 	u->stage = malloc(UDL_STAGE);
-	u->wake = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
-	u->stopfd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
-	if (!u->in || !u->stage || u->wake < 0 || u->stopfd < 0) {
+	if (!u->in || !u->stage || u->v.wake < 0 || u->v.stopfd < 0) {
 		rdcd_log(d, RDCD_LOG_ERR, "udl:%s: out of memory or fds",
-			 u->dir);
-		goto fail;
-	}
-	snprintf(path, sizeof(path), "%s/ep0", u->dir);
-	u->ep0 = open(path, O_RDWR | O_CLOEXEC);
-	if (u->ep0 < 0) {
-		rdcd_log(d, RDCD_LOG_ERR,
-			 "udl:%s: ep0: %s (is functionfs mounted there? "
-			 "scripts/rdc-gadget.sh --personality udl)",
-			 u->dir, strerror(errno));
+			 u->v.dir);
 		goto fail;
 	}
 	dlen = udl_descs(descs, u->pad);
-	if (write(u->ep0, descs, dlen) != (ssize_t)dlen ||
-	    write(u->ep0, &udl_strings, sizeof(udl_strings)) !=
-		    (ssize_t)sizeof(udl_strings)) {
-		rdcd_log(d, RDCD_LOG_ERR,
-			 "udl:%s: writing descriptors: %s (in use by another "
-			 "program?)",
-			 u->dir, strerror(errno));
+	if (ffs_dev_open_ep0(&u->v, descs, dlen, &udl_strings,
+			     sizeof(udl_strings),
+			     "scripts/rdc-gadget.sh --personality udl"))
 		goto fail;
-	}
-	snprintf(path, sizeof(path), "%s/ep%u", u->dir, u->pad + 1);
-	u->epd = open(path, O_RDWR | O_CLOEXEC);
+	snprintf(name, sizeof(name), "ep%u", u->pad + 1);
+	u->epd = ffs_dev_open_file(&u->v, name);
 	if (u->epd < 0) {
-		rdcd_log(d, RDCD_LOG_ERR, "udl:%s: %s: %s", u->dir, path,
-			 strerror(errno));
+		rdcd_log(d, RDCD_LOG_ERR, "udl:%s: %s/%s: %s", u->v.dir,
+			 u->v.dir, name, strerror(errno));
 		goto fail;
 	}
-	for (unsigned int t = 0; t < T_N; t++) {
-		int err = pthread_create(&u->th[t], NULL, fn[t], u);
-
-		if (err) {
-			rdcd_log(d, RDCD_LOG_ERR, "udl:%s: thread: %s", u->dir,
-				 strerror(err));
-			goto fail;
-		}
-		u->running[t] = true;
-	}
+	if (ffs_dev_start(&u->v, fn, u))
+		goto fail;
 	*out = u;
-	return u->wake;
+	return u->v.wake;
 fail:
 	rdcd_udl_close(u);
 	return -1;
@@ -867,24 +698,5 @@ fail:
 
 void rdcd_udl_accept(struct rdcd *d, struct rdcd_udl *u)
 {
-	char peer[64];
-	uint64_t v;
-	uint32_t s;
-	int fd;
-
-	if (read(u->wake, &v, sizeof(v)) < 0 && errno != EAGAIN)
-		rdcd_log(d, RDCD_LOG_WARN, "udl:%s: eventfd: %s", u->dir,
-			 strerror(errno));
-	pthread_mutex_lock(&u->lock);
-	fd = u->pending;
-	u->pending = -1;
-	s = u->session;
-	pthread_mutex_unlock(&u->lock);
-	if (fd < 0)
-		return;
-	snprintf(peer, sizeof(peer), "udl session %u", s);
-	if (!rdcd_client_new(d, fd, false, peer)) {
-		rdcd_log(d, RDCD_LOG_ERR, "out of memory");
-		close(fd);
-	}
+	ffs_dev_accept(d, &u->v, "udl");
 }
