@@ -31,7 +31,9 @@
 
 #define NETD_START_MS 20000 /* ASan start-up on a loaded host */
 #define NETD_STOP_MS 20000
-#define NETD_IO_MS 20000
+/* how long a reply may take: a stepped minute of waits under ASan on a
+ * loaded host; only a failing test waits it out */
+#define NETD_IO_MS 60000
 
 struct netd {
 	pid_t pid;
