@@ -281,8 +281,8 @@ static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t w = c->cur.h_display, bytes;
 	uint32_t *out = hw->frame[hw->frame_back] + (size_t)n * w;
-	bool lit = hw->pins_in & RDC_PIN_BL_EN;
 	uint64_t addr;
+	bool lit;
 
 	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
 		uint64_t start = RDC_MAX(when, c->fetch_end);
@@ -291,12 +291,15 @@ static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
 							 addr, bytes);
 		if (hidden)
 			return;
+		/* read past the hidden-frame return: that path is the hot one */
+		lit = hw->pins_in & RDC_PIN_BL_EN;
 		if (lit)
 			convert_line(hw, out, hw->vram + addr, w,
 				     c->cur_format);
 		else
 			rdc_memset(out, 0, (size_t)w * sizeof(*out));
 	} else {
+		lit = hw->pins_in & RDC_PIN_BL_EN;
 		rdc_memset(out, 0, (size_t)w * sizeof(*out));
 	}
 	if (lit && (hw->control & RDC_CONTROL_CURSOR_EN))
