@@ -65,12 +65,14 @@ scenes() {
 
 # frames through sysfs and the FRAME ioctl, alternately
 # A read answers EAGAIN while a device has no frame yet: fb1's scenes
-# each begin with a reset, which starts the frames over.
-crc_read() {
+# each begin with a reset, which starts the frames over.  Such a read
+# (through sysfs or the ioctl) is tried again, up to 5 s; any other
+# error fails at once.
+again() {
 	k=0
-	until cat "$1" >/dev/null 2>"$T/crc.err"; do
-		grep -q 'temporarily unavailable' "$T/crc.err" &&
-			[ $k -lt 100 ] || { cat "$T/crc.err"; return 1; }
+	until "$@" >/dev/null 2>"$T/again.err"; do
+		grep -q 'temporarily unavailable' "$T/again.err" &&
+			[ $k -lt 100 ] || { cat "$T/again.err"; return 1; }
 		k=$((k + 1))
 		sleep 0.05
 	done
@@ -79,10 +81,10 @@ crc_read() {
 snapshots() {
 	i=0
 	while [ $i -lt 60 ]; do
-		crc_read "$SYS/frame_crc" || return 1
-		crc_read "$SYS1/frame_crc" || return 1
-		"$TOOL" frame /dev/fb0 "$T/frame.raw" >/dev/null || return 1
-		"$TOOL" frame $FB "$T/frame.raw" >/dev/null || return 1
+		again cat "$SYS/frame_crc" || return 1
+		again cat "$SYS1/frame_crc" || return 1
+		again "$TOOL" frame /dev/fb0 "$T/frame.raw" || return 1
+		again "$TOOL" frame $FB "$T/frame.raw" || return 1
 		i=$((i + 1))
 	done
 }
