@@ -29,12 +29,12 @@
 #include "rdc.h"
 #include "rdc_proto.h"
 
-#define BENCH_BATCH 1024     /* commands per submit */
-#define BENCH_SUBMIT_S 2.0   /* seconds of submitting */
-#define BENCH_RTT_N 20000    /* register reads */
-#define BENCH_FRAMES_S 3.0   /* seconds of watching frames */
-#define BENCH_RTT_URI_N 2000 /* register reads with --uri (slow links) */
-#define BENCH_USB_HS_LO 35e6 /* USB 2.0 high speed, bytes/s in practice */
+#define BENCH_BATCH	1024  /* commands per submit */
+#define BENCH_SUBMIT_S	2.0   /* seconds of submitting */
+#define BENCH_RTT_N	20000 /* register reads */
+#define BENCH_FRAMES_S	3.0   /* seconds of watching frames */
+#define BENCH_RTT_URI_N 2000  /* register reads with --uri (slow links) */
+#define BENCH_USB_HS_LO 35e6  /* USB 2.0 high speed, bytes/s in practice */
 #define BENCH_USB_HS_HI 40e6
 
 /* "unix", "usb"...: the JSON lines' transport */
@@ -66,7 +66,7 @@ static pid_t start_daemon(const char *rdcd, const char *dir, const char *mode,
 		_exit(127);
 	}
 	for (int i = 0; i < 1000; i++) {
-		struct timespec ts = {0, 10000000};
+		struct timespec ts = { 0, 10000000 };
 
 		if (access(ready, F_OK) == 0)
 			return pid;
@@ -107,8 +107,8 @@ static void bench_submit(rdc_dev *dev)
 	t = now_s();
 	printf("{\"bench\":\"submit\",\"transport\":\"%s\",\"batch_cmds\":%d,"
 	       "\"commands\":%llu,\"seconds\":%.3f,\"commands_per_s\":%.0f}\n",
-	       bench_transport, 2 * BENCH_BATCH, (unsigned long long)cmds, t - t0,
-	       (double)cmds / (t - t0));
+	       bench_transport, 2 * BENCH_BATCH, (unsigned long long)cmds,
+	       t - t0, (double)cmds / (t - t0));
 	rdc_batch_free(b);
 }
 
@@ -137,7 +137,7 @@ static void bench_frames(const char *uri)
 	static uint32_t pix[1024 * 768];
 	char obs_uri[320];
 	rdc_dev *obs;
-	struct rdc_event ev = {0};
+	struct rdc_event ev = { 0 };
 	uint64_t first = 0, got = 0;
 	double t0, t = 0;
 
@@ -152,9 +152,9 @@ static void bench_frames(const char *uri)
 	 */
 	for (uint32_t run = 0; run <= RDC_FRAME_DELTA + 1; run++) {
 		uint32_t enc = run <= RDC_FRAME_DELTA ? run : RDC_FRAME_RAW;
-		uint32_t every = run <= RDC_FRAME_DELTA || sim_fps < 120
-					 ? 1
-					 : (uint32_t)(sim_fps / 60);
+		uint32_t every = run <= RDC_FRAME_DELTA || sim_fps < 120 ?
+					 1 :
+					 (uint32_t)(sim_fps / 60);
 
 		rdc_subscribe(obs, RDC_EVENT_FRAME, every, enc);
 		got = 0;
@@ -182,15 +182,17 @@ static void bench_frames(const char *uri)
 			       "\"received_fps\":%.1f,\"simulated_fps\":%.1f,"
 			       "\"dropped\":%u,\"ok_60fps_no_drops\":%s}\n",
 			       every,
-			       enc == 0 ? "raw" : enc == 1 ? "rle" : "delta",
+			       enc == 0 ? "raw" :
+			       enc == 1 ? "rle" :
+					  "delta",
 			       (unsigned long long)got, t - t0,
 			       (double)got / (t - t0),
 			       (double)(ev.number - first) / (t - t0),
 			       ev.dropped - d0,
 			       (double)got / (t - t0) >= 60.0 &&
-					       ev.dropped == d0
-				       ? "true"
-				       : "false");
+					       ev.dropped == d0 ?
+				       "true" :
+				       "false");
 		}
 	}
 	rdc_close(obs);
@@ -200,7 +202,7 @@ static void bench_paced(rdc_dev *dev, const char *uri)
 {
 	static uint32_t pix[1024 * 768];
 	char obs_uri[320];
-	struct rdc_event ev = {0};
+	struct rdc_event ev = { 0 };
 	rdc_dev *obs;
 	uint64_t got = 0, first;
 	double t0, t = 0;
@@ -249,10 +251,10 @@ static void bench_draw(rdc_dev *dev)
 static void bench_frames_self(rdc_dev *dev)
 {
 	static uint32_t pix[1024 * 768];
-	static const char *const name[] = {"raw", "rle", "delta"};
+	static const char *const name[] = { "raw", "rle", "delta" };
 
 	for (uint32_t enc = RDC_FRAME_RAW; enc <= RDC_FRAME_DELTA; enc++) {
-		struct rdc_event ev = {0};
+		struct rdc_event ev = { 0 };
 		uint64_t got = 0, first;
 		uint32_t d0;
 		double t0, t = 0;
@@ -295,10 +297,10 @@ static void bench_frame_bytes(rdc_dev *dev)
 		uint32_t enc;
 		int prev;
 	} e[] = {
-		{"raw", RDC_ENC_RAW, 0},
-		{"rle", RDC_ENC_RLE, 0},
-		{"delta_unchanged", RDC_ENC_DELTA, 1},
-		{"delta_every_row", RDC_ENC_DELTA, 0},
+		{ "raw", RDC_ENC_RAW, 0 },
+		{ "rle", RDC_ENC_RLE, 0 },
+		{ "delta_unchanged", RDC_ENC_DELTA, 1 },
+		{ "delta_every_row", RDC_ENC_DELTA, 0 },
 	};
 	uint32_t w, h;
 
@@ -309,8 +311,8 @@ static void bench_frame_bytes(rdc_dev *dev)
 		size_t n = rdc_proto_frame_encode(out, sizeof(out), e[i].enc,
 						  pix, e[i].prev ? pix : NULL,
 						  w, h);
-		double bytes = (double)(n + RDC_PROTO_FRAME_HDR +
-					RDC_PROTO_HDR_SIZE);
+		double bytes =
+			(double)(n + RDC_PROTO_FRAME_HDR + RDC_PROTO_HDR_SIZE);
 
 		printf("{\"bench\":\"frame_bytes\",\"size\":\"%ux%u\","
 		       "\"encoding\":\"%s\",\"bytes\":%.0f,"

@@ -88,9 +88,9 @@ static double cr_run(const struct bench_input *in, uint32_t ops, uint32_t *crc)
 					  BENCH_H);
 	cr = cairo_create(surf);
 	cairo_set_line_width(cr, 1.0);
-	cairo_set_antialias(cr, in->kind == BENCH_AALINE
-					? CAIRO_ANTIALIAS_DEFAULT
-					: CAIRO_ANTIALIAS_NONE);
+	cairo_set_antialias(cr, in->kind == BENCH_AALINE ?
+					CAIRO_ANTIALIAS_DEFAULT :
+					CAIRO_ANTIALIAS_NONE);
 	cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
 	t0 = bench_tic();
 	cr_draw(cr, in, ops);

@@ -75,9 +75,9 @@
  */
 #define T3_SCRIPT "examples/teapot.rdl"
 #define T3_FRAMES 120u
-#define T3_DRAW 0x410000u /* the picture list */
-#define T3_BUF1 0x130000u /* the second screen buffer */
-#define T3_TURN 1092u /* 6 degrees in 1/65536 turn */
+#define T3_DRAW	  0x410000u /* the picture list */
+#define T3_BUF1	  0x130000u /* the second screen buffer */
+#define T3_TURN	  1092u	    /* 6 degrees in 1/65536 turn */
 
 /* Expected CRCs (bench/README.md); 0 where none is given. */
 static const uint32_t expect_crc[BENCH_KIND_COUNT] = {
@@ -225,7 +225,7 @@ static void *xcalloc(size_t n, size_t size)
 
 static void make_fills(uint32_t *arg, uint32_t seed, uint32_t ops, bool indexed)
 {
-	struct rng g = {seed};
+	struct rng g = { seed };
 	uint32_t i;
 
 	for (i = 0; i < ops; i++, arg += BENCH_RECORD) {
@@ -233,8 +233,8 @@ static void make_fills(uint32_t *arg, uint32_t seed, uint32_t ops, bool indexed)
 		arg[1] = r32(&g) % BENCH_H;
 		arg[2] = 1 + r32(&g) % BENCH_RECT_MAX;
 		arg[3] = 1 + r32(&g) % BENCH_RECT_MAX;
-		arg[4] = indexed ? r32(&g) % BENCH_CLUT_SIZE
-				 : r32(&g) | BENCH_OPAQUE;
+		arg[4] = indexed ? r32(&g) % BENCH_CLUT_SIZE :
+				   r32(&g) | BENCH_OPAQUE;
 	}
 }
 
@@ -254,8 +254,8 @@ static uint64_t circle_pixels(int cx, int cy, int r, bool filled)
 		half[k] = -1;
 	while (x <= y) {
 		int pt[8][2] = {
-			{x, y}, {-x, y}, {x, -y}, {-x, -y},
-			{y, x}, {-y, x}, {y, -x}, {-y, -x},
+			{ x, y }, { -x, y }, { x, -y }, { -x, -y },
+			{ y, x }, { -y, x }, { y, -x }, { -y, -x },
 		};
 		int i, j;
 
@@ -338,8 +338,8 @@ static uint64_t polygon_pixels(const int *xy, uint32_t n)
 			/* c - 1/2 = num / (2 dy) */
 			num = 2L * a[0] * dy +
 			      (2L * y + 1 - 2L * a[1]) * (b[0] - a[0]) - dy;
-			cross[m++] = dy > 0 ? ceil_div(num, 2 * dy)
-					    : ceil_div(-num, -2 * dy);
+			cross[m++] = dy > 0 ? ceil_div(num, 2 * dy) :
+					      ceil_div(-num, -2 * dy);
 		}
 		for (k = 1; k < m; k++) { /* a handful: insertion sort */
 			long v = cross[k];
@@ -364,7 +364,7 @@ static void input_px(struct bench_input *in, uint32_t i, uint64_t px)
 
 static void input_make(struct bench_input *in, enum bench_kind kind)
 {
-	struct rng g = {BENCH_SEED};
+	struct rng g = { BENCH_SEED };
 	uint32_t i, *a;
 	size_t nxy = 0;
 
@@ -422,8 +422,8 @@ static void input_make(struct bench_input *in, enum bench_kind kind)
 
 			a[0] = r32(&g) % BENCH_W;
 			a[1] = r32(&g) % BENCH_H;
-			a[2] = 1 + r32(&g) % (fill ? BENCH_DISC_RADIUS_MAX
-						   : BENCH_RADIUS_MAX);
+			a[2] = 1 + r32(&g) % (fill ? BENCH_DISC_RADIUS_MAX :
+						     BENCH_RADIUS_MAX);
 			a[3] = r32(&g) | BENCH_OPAQUE;
 			input_px(in, i,
 				 circle_pixels((int)a[0], (int)a[1], (int)a[2],
@@ -452,7 +452,7 @@ static void input_make(struct bench_input *in, enum bench_kind kind)
 		}
 		break;
 	case BENCH_TEXT: {
-		struct rng f = {BENCH_FONT_SEED};
+		struct rng f = { BENCH_FONT_SEED };
 
 		for (i = 0; i < sizeof(in->font); i++)
 			in->font[i] = (uint8_t)(r32(&f) >> 24);
@@ -653,13 +653,13 @@ static void frames_fn(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 		      uint64_t number)
 {
 	struct frames *f = ctx;
-	struct rdc_frame fr = {.xrgb = xrgb,
-			       .width = w,
-			       .height = h,
-			       .stride = w,
-			       .seq = number,
-			       .interval_num = f->num,
-			       .interval_den = f->den};
+	struct rdc_frame fr = { .xrgb = xrgb,
+				.width = w,
+				.height = h,
+				.stride = w,
+				.seq = number,
+				.interval_num = f->num,
+				.interval_den = f->den };
 
 	f->seen++;
 	if (f->sink)
@@ -682,7 +682,7 @@ struct rdc_res {
  */
 static void rdc_scanout(const struct bench_input *in, struct rdc_res *res)
 {
-	struct frames f = {0};
+	struct frames f = { 0 };
 	struct run r;
 	struct rdc_hw *hw;
 	uint64_t c0, c1;
@@ -723,7 +723,7 @@ static void rdc_scanout(const struct bench_input *in, struct rdc_res *res)
  */
 static void rdc_run(const struct bench_input *in, struct rdc_res *res)
 {
-	struct rdc_stats st0 = {0}, st1 = {0};
+	struct rdc_stats st0 = { 0 }, st1 = { 0 };
 	struct run r;
 	uint64_t c0, c1;
 	double t0;
@@ -822,8 +822,10 @@ static void rdc_teapot3d(struct rt_res *res)
 	memset(&sres, 0, sizeof(sres));
 	err = rdc_script_run_file(r.dev, T3_SCRIPT, &sres);
 	if (err) {
-		fprintf(stderr, "rdc-bench: %s:%u: %s (run from the source "
-			"tree)\n", T3_SCRIPT, sres.error_line, sres.error_msg);
+		fprintf(stderr,
+			"rdc-bench: %s:%u: %s (run from the source "
+			"tree)\n",
+			T3_SCRIPT, sres.error_line, sres.error_msg);
 		exit(1);
 	}
 	if (rdc_reg_read(r.dev, RDC_REG_CORE_KHZ, &res->khz))
@@ -833,8 +835,7 @@ static void rdc_teapot3d(struct rt_res *res)
 	for (i = 0; i < T3_FRAMES; i++) {
 		uint32_t buf = i & 1 ? 0 : T3_BUF1, turn = T3_TURN;
 
-		rdc_batch_dst(r.b, buf, RT_W * 4, RT_W, RT_H,
-			      RDC_FMT_XRGB8888);
+		rdc_batch_dst(r.b, buf, RT_W * 4, RT_W, RT_H, RDC_FMT_XRGB8888);
 		rdc_batch_call(r.b, T3_DRAW);
 		rdc_batch_reg_write(r.b, RDC_REG_FB_BASE, buf);
 		rdc_batch_cmd(r.b, RDC_OP_ROTATE, RDC_AXIS_Z, &turn, 1);
@@ -852,8 +853,8 @@ static void rdc_teapot3d(struct rt_res *res)
 
 static void rdc_realtime(struct rt_res *res)
 {
-	struct frames f = {0};
-	struct rng g = {BENCH_SEED};
+	struct frames f = { 0 };
+	struct rng g = { BENCH_SEED };
 	struct rdc_hw *hw;
 	struct run r;
 	uint64_t c0, c1, f0;
@@ -951,7 +952,7 @@ static double limit_wmemset(const struct bench_input *in, uint32_t *s)
  * the row.
  */
 static double limit_blit_any(const struct bench_input *in, uint32_t *s,
-			     bool xor)
+			     bool do_xor)
 {
 	const uint32_t *a = in->arg;
 	uint32_t tmp[BENCH_RECT_MAX], i, yy, xx;
@@ -970,7 +971,7 @@ static double limit_blit_any(const struct bench_input *in, uint32_t *s,
 			const uint32_t *src =
 				s + (size_t)(sy + row) * BENCH_W + sx;
 
-			if (!xor) {
+			if (!do_xor) {
 				memmove(d, src, (size_t)w * 4);
 				continue;
 			}
@@ -1032,11 +1033,12 @@ static double limit_scanout(const struct bench_input *in, uint32_t *s)
 }
 
 static const struct limit limits[BENCH_KIND_COUNT][2] = {
-	[BENCH_FILL] = {{"store", limit_store}, {"wmemset", limit_wmemset}},
-	[BENCH_BLIT] = {{"memmove", limit_blit}},
-	[BENCH_BLIT_XOR] = {{"xor", limit_blit_xor}},
-	[BENCH_TEXT] = {{"expand", limit_text}},
-	[BENCH_SCANOUT] = {{"lookup", limit_scanout}},
+	[BENCH_FILL] = { { "store", limit_store },
+			 { "wmemset", limit_wmemset } },
+	[BENCH_BLIT] = { { "memmove", limit_blit } },
+	[BENCH_BLIT_XOR] = { { "xor", limit_blit_xor } },
+	[BENCH_TEXT] = { { "expand", limit_text } },
+	[BENCH_SCANOUT] = { { "lookup", limit_scanout } },
 };
 #define MAX_LIMITS 2
 
@@ -1139,7 +1141,7 @@ struct rdc_ctx {
 static double rdc_one(void *ctx, uint32_t ops, uint32_t *crc)
 {
 	struct rdc_ctx *c = ctx;
-	struct rdc_res res = {0};
+	struct rdc_res res = { 0 };
 
 	(void)ops; /* always all of it */
 	rdc_run(c->in, &res);
@@ -1253,8 +1255,8 @@ static void print_figures(const char *key, const struct figure *f, size_t n,
 		       mpix(f[i].pixels, f[i].wall), f[i].crc, f[i].runs);
 		if (expect_crc[res->kind] && f[i].ops == res->ops)
 			printf(",\"crc_ok\":%s",
-			       f[i].crc == expect_crc[res->kind] ? "true"
-								 : "false");
+			       f[i].crc == expect_crc[res->kind] ? "true" :
+								   "false");
 		printf("}");
 		first = false;
 	}
@@ -1347,10 +1349,11 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 			snprintf(buf, sizeof(buf), ">=1.0 best peer");
 		printf("%-16s %s%s\n", buf,
 		       !byte_moving(r->kind) && r->kind != BENCH_REALTIME &&
-				       r->kind != BENCH_TEAPOT3D && !r->best_peer
-			       ? "n/a (no peer)"
-		       : r->met ? "yes"
-				: "NO",
+				       r->kind != BENCH_TEAPOT3D &&
+				       !r->best_peer ?
+			       "n/a (no peer)" :
+		       r->met ? "yes" :
+				"NO",
 		       f->slow ? " *" : "");
 	}
 	printf("\n%-11s %-10s %9s %9s %9s %9s %-17s %-5s %s\n", "workload",
@@ -1370,9 +1373,9 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 				all[m++] = &r->peer[k];
 		for (k = 0; k < m; k++) {
 			const struct figure *f = all[k];
-			bool part =
-				r->kind != BENCH_REALTIME &&
-				r->kind != BENCH_TEAPOT3D && f->ops < r->ops;
+			bool part = r->kind != BENCH_REALTIME &&
+				    r->kind != BENCH_TEAPOT3D &&
+				    f->ops < r->ops;
 			char drawn[40];
 
 			if (r->kind == BENCH_REALTIME)
@@ -1428,7 +1431,7 @@ static void run_kind(struct result *res, enum bench_kind kind,
 	res->rdc.name = "rdc";
 	if (kind == BENCH_TEAPOT3D) {
 		double fps[MAX_REPEAT];
-		struct rt_res rt = {0};
+		struct rt_res rt = { 0 };
 		uint32_t khz;
 		int runs;
 
@@ -1455,7 +1458,7 @@ static void run_kind(struct result *res, enum bench_kind kind,
 	}
 	if (kind == BENCH_REALTIME) {
 		double fps[MAX_REPEAT];
-		struct rt_res rt = {0};
+		struct rt_res rt = { 0 };
 		int runs;
 
 		for (runs = 0; runs < o->repeat; runs++) {
@@ -1482,21 +1485,25 @@ static void run_kind(struct result *res, enum bench_kind kind,
 	memset(&rc, 0, sizeof(rc));
 	rc.in = &in;
 	figure_init(&res->rdc, "rdc", &in, in.ops);
-	e[n++] = (struct entrant){.fig = &res->rdc, .one = rdc_one, .ctx = &rc};
+	e[n++] = (struct entrant){ .fig = &res->rdc,
+				   .one = rdc_one,
+				   .ctx = &rc };
 	for (k = 0; k < MAX_LIMITS && limits[kind][k].name; k++) {
-		lc[k] = (struct limit_ctx){&in, &limits[kind][k]};
+		lc[k] = (struct limit_ctx){ &in, &limits[kind][k] };
 		figure_init(&res->lim[k], limits[kind][k].name, &in, in.ops);
-		e[n++] = (struct entrant){
-			.fig = &res->lim[k], .one = limit_one, .ctx = &lc[k]};
+		e[n++] = (struct entrant){ .fig = &res->lim[k],
+					   .one = limit_one,
+					   .ctx = &lc[k] };
 	}
 	for (k = 0; o->peers && peers[k]; k++) {
 		if (!peers[k]->has(kind))
 			continue;
-		pc[k] = (struct peer_ctx){&in, peers[k]};
+		pc[k] = (struct peer_ctx){ &in, peers[k] };
 		figure_init(&res->peer[k], peers[k]->name, &in,
 			    peer_ops(&in, peers[k], o));
-		e[n++] = (struct entrant){
-			.fig = &res->peer[k], .one = peer_one, .ctx = &pc[k]};
+		e[n++] = (struct entrant){ .fig = &res->peer[k],
+					   .one = peer_one,
+					   .ctx = &pc[k] };
 	}
 	measure(e, n, o);
 	res->cycles = rc.cycles;
@@ -1619,17 +1626,17 @@ static void usage(FILE *to)
 int main(int argc, char **argv)
 {
 	static const struct option lopts[] = {
-		{"workload", required_argument, NULL, 'w'},
-		{"repeat", required_argument, NULL, 'r'},
-		{"json", no_argument, NULL, 'j'},
-		{"peers", no_argument, NULL, 'p'},
-		{"full", no_argument, NULL, 'f'},
-		{"help", no_argument, NULL, 'h'},
-		{NULL, 0, NULL, 0},
+		{ "workload", required_argument, NULL, 'w' },
+		{ "repeat", required_argument, NULL, 'r' },
+		{ "json", no_argument, NULL, 'j' },
+		{ "peers", no_argument, NULL, 'p' },
+		{ "full", no_argument, NULL, 'f' },
+		{ "help", no_argument, NULL, 'h' },
+		{ NULL, 0, NULL, 0 },
 	};
 	static struct result res[BENCH_KIND_COUNT];
-	struct opts o = {.repeat = 3};
-	bool only[BENCH_KIND_COUNT] = {false}, any = false;
+	struct opts o = { .repeat = 3 };
+	bool only[BENCH_KIND_COUNT] = { false }, any = false;
 	size_t n = 0;
 	int c, k;
 

@@ -14,9 +14,9 @@
 
 #include "rdc_sink.h"
 
-#define BENCH_MIN_NS 300000000ull /* measure each case for 0.3 s at least */
+#define BENCH_MIN_NS  300000000ull /* measure each case for 0.3 s at least */
 #define BENCH_REPEATS 3		   /* best of, against scheduler noise */
-#define NS_PER_S 1000000000ull
+#define NS_PER_S      1000000000ull
 
 static uint64_t now_ns(void)
 {
@@ -64,8 +64,9 @@ int main(void)
 		uint32_t w = sizes[i][0], h = sizes[i][1], seed = 0x12345678;
 		uint32_t *px = malloc((size_t)w * h * 4);
 		uint8_t *dst = malloc((size_t)w * h * 4);
-		struct rdc_frame f = { .xrgb = px, .width = w, .height = h,
-				       .stride = w };
+		struct rdc_frame f = {
+			.xrgb = px, .width = w, .height = h, .stride = w
+		};
 		uint64_t n;
 		double base;
 

@@ -31,7 +31,7 @@
 #include "rdcfb_ioctl.h"
 #include "rdcfb_validate.h"
 
-#define RDCFB_NAME "rdcfb"
+#define RDCFB_NAME	  "rdcfb"
 #define RDCFB_MAX_DEVICES 8
 
 /* Every mode the CRTC can show fits the frame buffers (as sim:'s). */
@@ -41,7 +41,7 @@
  * The fb-op queue: 1 MiB of records (a power of two, in words); a record
  * is a header and at most one DP command's data words.
  */
-#define RDCFB_OPQ_WORDS (1u << 18)
+#define RDCFB_OPQ_WORDS	   (1u << 18)
 #define RDCFB_OP_HDR_WORDS 16u
 #define RDCFB_OP_MAX_WORDS (RDCFB_OP_HDR_WORDS + RDC_CMD_MAX_ARGS)
 
@@ -52,8 +52,8 @@ struct rdcfb_gpio;
 
 /* What the GPIO lines' deliverer counted (sysfs pin_*). */
 struct rdcfb_pin_stats {
-	u64 edges; /* TE and IRQ edges delivered */
-	u64 lost; /* dropped at a full queue */
+	u64 edges;		      /* TE and IRQ edges delivered */
+	u64 lost;		      /* dropped at a full queue */
 	u64 late_max_ns, late_avg_ns; /* delivery after the edge (paced) */
 };
 
@@ -80,15 +80,15 @@ void rdcfb_irqoff_end(struct rdcfb_irqoff *st, u64 t0, unsigned long at);
 void rdcfb_irqoff_reset(struct rdcfb_irqoff *st);
 
 /* An irqsave spinlock whose holds are timed: t0 is the lock's own field. */
-#define rdcfb_spin_lock(lock, flags, t0)                      \
-	do {                                                  \
-		spin_lock_irqsave(lock, flags);               \
-		(t0) = rdcfb_irqoff_begin();                  \
+#define rdcfb_spin_lock(lock, flags, t0) \
+	do { \
+		spin_lock_irqsave(lock, flags); \
+		(t0) = rdcfb_irqoff_begin(); \
 	} while (0)
-#define rdcfb_spin_unlock(lock, flags, t0, st)                \
-	do {                                                  \
-		rdcfb_irqoff_end(st, t0, _THIS_IP_);          \
-		spin_unlock_irqrestore(lock, flags);          \
+#define rdcfb_spin_unlock(lock, flags, t0, st) \
+	do { \
+		rdcfb_irqoff_end(st, t0, _THIS_IP_); \
+		spin_unlock_irqrestore(lock, flags); \
 	} while (0)
 
 /*
@@ -97,11 +97,11 @@ void rdcfb_irqoff_reset(struct rdcfb_irqoff *st);
  */
 struct rdcfb_opq {
 	spinlock_t lock;
-	u64 t0; /* lock: when it was taken */
-	u32 *ring; /* RDCFB_OPQ_WORDS */
+	u64 t0;		 /* lock: when it was taken */
+	u32 *ring;	 /* RDCFB_OPQ_WORDS */
 	u32 head, count; /* lock: in words */
-	u64 dropped; /* lock: records refused at a full queue */
-	u32 *buf; /* chip->lock: the record being applied */
+	u64 dropped;	 /* lock: records refused at a full queue */
+	u32 *buf;	 /* chip->lock: the record being applied */
 	struct work_struct work;
 };
 
@@ -110,27 +110,27 @@ struct rdcfb_chip {
 	struct rdcfb_irqoff irqoff;
 	struct rdcfb_opq opq;
 	struct fb_info *info; /* whose fb_ops fill opq */
-	struct rdc_hw hw; /* lock */
-	struct rdc_dp *dp; /* lock; large, so vmalloc'ed */
-	u8 *vram; /* vmalloc_user: mapped to user space as is */
+	struct rdc_hw hw;     /* lock */
+	struct rdc_dp *dp;    /* lock; large, so vmalloc'ed */
+	u8 *vram;	      /* vmalloc_user: mapped to user space as is */
 	u32 *frame[2];
 	struct device *dev;
 
-	bool stepped; /* clock=stepped: time moves only in WAIT/STEP */
-	bool dying; /* the device is going away: waits end with -ENODEV */
+	bool stepped;	 /* clock=stepped: time moves only in WAIT/STEP */
+	bool dying;	 /* the device is going away: waits end with -ENODEV */
 	bool submitting; /* lock: a SUBMIT has words still to push */
 
 	/* paced clock: hw.now follows wall time from these */
 	struct hrtimer timer;
 	struct work_struct pace_work;
 	ktime_t wall_base; /* lock */
-	u64 sim_base; /* lock */
+	u64 sim_base;	   /* lock */
 	u64 period_ns;
 
 	wait_queue_head_t waitq; /* woken whenever simulated time moved */
-	u64 frames; /* lock: frames completed since load */
-	u64 irqs; /* lock: rising edges of the IRQ pin */
-	bool irq_level; /* lock */
+	u64 frames;		 /* lock: frames completed since load */
+	u64 irqs;		 /* lock: rising edges of the IRQ pin */
+	bool irq_level;		 /* lock */
 	/* lock: bumped by anything that may change the DP's drawing state
 	 * behind fb_ops' back
 	 */
@@ -159,8 +159,8 @@ struct rdcfb_par {
 /* rdcfb_chip.c */
 void rdcfb_chip_lock(struct rdcfb_chip *chip);
 void rdcfb_chip_unlock(struct rdcfb_chip *chip);
-int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
-		    u32 vram_size, bool stepped);
+int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev, u32 vram_size,
+		    bool stepped);
 void rdcfb_chip_start(struct rdcfb_chip *chip);
 void rdcfb_chip_stop(struct rdcfb_chip *chip);
 void rdcfb_chip_free(struct rdcfb_chip *chip);
@@ -195,19 +195,26 @@ static inline int rdcfb_gpio_register(struct rdcfb_chip *chip,
 	return -ENODEV;
 }
 
-static inline void rdcfb_gpio_unregister(struct rdcfb_chip *chip) {}
-static inline void rdcfb_gpio_event_locked(struct rdcfb_gpio *g,
-					   ktime_t wall, u32 levels) {}
-static inline void rdcfb_gpio_deliver_now(struct rdcfb_gpio *g) {}
+static inline void rdcfb_gpio_unregister(struct rdcfb_chip *chip)
+{
+}
+static inline void rdcfb_gpio_event_locked(struct rdcfb_gpio *g, ktime_t wall,
+					   u32 levels)
+{
+}
+static inline void rdcfb_gpio_deliver_now(struct rdcfb_gpio *g)
+{
+}
 static inline void rdcfb_gpio_stats(struct rdcfb_gpio *g,
 				    struct rdcfb_pin_stats *s)
 {
 	memset(s, 0, sizeof(*s));
 }
 
-static inline void rdcfb_gpio_module_exit(void) {}
+static inline void rdcfb_gpio_module_exit(void)
+{
+}
 #endif
-
 
 /* rdcfb_fb.c */
 extern const struct fb_ops rdcfb_ops;

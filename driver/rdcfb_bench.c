@@ -19,12 +19,12 @@
 
 #include "rdcfb.h"
 
-#define RDCFB_BENCH_LINES 200u /* text rows drawn */
-#define RDCFB_BENCH_SCROLLS 20u /* screens scrolled */
-#define RDCFB_GLYPH_W 8u
-#define RDCFB_GLYPH_H 16u
-#define RDCFB_TEXT_COLS 80u
-#define RDCFB_PERCENT 100u
+#define RDCFB_BENCH_LINES   200u /* text rows drawn */
+#define RDCFB_BENCH_SCROLLS 20u	 /* screens scrolled */
+#define RDCFB_GLYPH_W	    8u
+#define RDCFB_GLYPH_H	    16u
+#define RDCFB_TEXT_COLS	    80u
+#define RDCFB_PERCENT	    100u
 
 static struct dentry *rdcfb_debugfs_root;
 
@@ -56,7 +56,8 @@ static void rdcfb_text_row(u8 *data, u32 cols)
 		for (c = 0; c < cols; c++)
 			data[y * cols + c] =
 				rdc_font8x16[(u8)text[c % (sizeof(text) - 1)] *
-					     RDCFB_GLYPH_H + y];
+						     RDCFB_GLYPH_H +
+					     y];
 }
 
 static void rdcfb_bench_blit(struct fb_info *info, struct fb_info *sys,
@@ -92,7 +93,10 @@ static void rdcfb_bench_scroll(struct fb_info *info, struct fb_info *sys,
 {
 	struct rdcfb_par *par = info->par;
 	struct fb_copyarea a = {
-		.sx = 0, .sy = RDCFB_GLYPH_H, .dx = 0, .dy = 0,
+		.sx = 0,
+		.sy = RDCFB_GLYPH_H,
+		.dx = 0,
+		.dy = 0,
 		.width = info->var.xres,
 		.height = info->var.yres - RDCFB_GLYPH_H,
 	};
@@ -124,13 +128,17 @@ static void rdcfb_bench_print(struct seq_file *m, struct rdcfb_chip *chip,
 	u64 chip_x100 = div64_u64(chip_ns * RDCFB_PERCENT, sys);
 
 	seq_printf(m, "%s: %u ops\n", what, ops);
-	seq_printf(m, "  through the DP: %llu ns/op wall, %llu DP cycles/op (%llu ns/op at the core clock)\n",
-		   div_u64(r->dp_ns, ops), div_u64(r->busy, ops),
-		   div_u64(chip_ns, ops));
+	seq_printf(
+		m,
+		"  through the DP: %llu ns/op wall, %llu DP cycles/op (%llu ns/op at the core clock)\n",
+		div_u64(r->dp_ns, ops), div_u64(r->busy, ops),
+		div_u64(chip_ns, ops));
 	seq_printf(m, "  sys helper: %llu ns/op\n", div_u64(r->sys_ns, ops));
-	seq_printf(m, "  ratio dp/sys: wall %llu.%02llu, at the core clock %llu.%02llu\n",
-		   wall_x100 / RDCFB_PERCENT, wall_x100 % RDCFB_PERCENT,
-		   chip_x100 / RDCFB_PERCENT, chip_x100 % RDCFB_PERCENT);
+	seq_printf(
+		m,
+		"  ratio dp/sys: wall %llu.%02llu, at the core clock %llu.%02llu\n",
+		wall_x100 / RDCFB_PERCENT, wall_x100 % RDCFB_PERCENT,
+		chip_x100 / RDCFB_PERCENT, chip_x100 % RDCFB_PERCENT);
 }
 
 static int rdcfb_bench_show(struct seq_file *m, void *unused)

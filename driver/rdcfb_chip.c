@@ -36,20 +36,20 @@
 #define RDCFB_SYNC_TRIES 64u
 /* Pacing ticks per frame, and the tick's bounds. */
 #define RDCFB_PACE_TICKS_PER_FRAME 4u
-#define RDCFB_PACE_MIN_NS (1 * NSEC_PER_MSEC)
-#define RDCFB_PACE_MAX_NS (50 * NSEC_PER_MSEC)
+#define RDCFB_PACE_MIN_NS	   (1 * NSEC_PER_MSEC)
+#define RDCFB_PACE_MAX_NS	   (50 * NSEC_PER_MSEC)
 /*
  * A tick this long before each TE edge, so that the tick at the edge itself
  * has little simulation left to do before the edge reaches GPIO consumers;
  * and the shortest time to the next tick.
  */
 #define RDCFB_EDGE_LEAD_NS (500 * NSEC_PER_USEC)
-#define RDCFB_TICK_MIN_NS (50 * NSEC_PER_USEC)
+#define RDCFB_TICK_MIN_NS  (50 * NSEC_PER_USEC)
 /* A host that cannot keep up lets simulated time slip past this lag. */
 #define RDCFB_PACE_MAX_LAG_NS (100 * NSEC_PER_MSEC)
 /* WAIT defaults: 10 s of wall time, 10 simulated seconds. */
 #define RDCFB_WAIT_TIMEOUT_MS 10000u
-#define RDCFB_WAIT_BUDGET_S 10u
+#define RDCFB_WAIT_BUDGET_S   10u
 /* FBIO_WAITFORVSYNC gives up after this (a blanked screen never has one). */
 #define RDCFB_VSYNC_TIMEOUT_MS 1000u
 /* Frame snapshot: bytes copied per lock hold, attempts before one hold. */
@@ -76,8 +76,8 @@ void rdcfb_chip_unlock(struct rdcfb_chip *chip)
 /* The fb-op queue's worker: for work queued where nobody could apply it. */
 static void rdcfb_opq_work(struct work_struct *work)
 {
-	struct rdcfb_chip *chip = container_of(work, struct rdcfb_chip,
-					       opq.work);
+	struct rdcfb_chip *chip =
+		container_of(work, struct rdcfb_chip, opq.work);
 
 	rdcfb_chip_lock(chip);
 	rdcfb_chip_unlock(chip);
@@ -131,9 +131,10 @@ static void rdcfb_trace(void *ctx, u64 time, unsigned int event, u32 a, u32 b)
 	else if (event == RDC_TRACE_ERROR)
 		dev_dbg(chip->dev, "error %u info %#x at %llu\n", a, b, time);
 	else if (event == RDC_TRACE_PINS && chip->gpio)
-		rdcfb_gpio_event_locked(chip->gpio,
-					chip->stepped ? 0 :
-					rdcfb_wall_of_locked(chip, time), a);
+		rdcfb_gpio_event_locked(
+			chip->gpio,
+			chip->stepped ? 0 : rdcfb_wall_of_locked(chip, time),
+			a);
 }
 
 /*
@@ -165,7 +166,8 @@ static void rdcfb_update_period(struct rdcfb_chip *chip)
 	u64 ns = RDCFB_PACE_MAX_NS;
 
 	if (fc)
-		ns = div_u64(mul_u64_u32_div(fc, NSEC_PER_SEC, chip->hw.core_hz),
+		ns = div_u64(mul_u64_u32_div(fc, NSEC_PER_SEC,
+					     chip->hw.core_hz),
 			     RDCFB_PACE_TICKS_PER_FRAME);
 	WRITE_ONCE(chip->period_ns,
 		   clamp_t(u64, ns, RDCFB_PACE_MIN_NS, RDCFB_PACE_MAX_NS));
@@ -207,16 +209,16 @@ static ktime_t rdcfb_next_tick_locked(struct rdcfb_chip *chip)
 
 static void rdcfb_pace_work(struct work_struct *work)
 {
-	struct rdcfb_chip *chip = container_of(work, struct rdcfb_chip,
-					       pace_work);
+	struct rdcfb_chip *chip =
+		container_of(work, struct rdcfb_chip, pace_work);
 	struct rdc_hw *hw = &chip->hw;
 	u64 target, lag = rdcfb_ns_to_cycles(chip, RDCFB_PACE_MAX_LAG_NS);
 	ktime_t now = ktime_get();
 
 	rdcfb_chip_lock(chip);
 	target = chip->sim_base +
-		 rdcfb_ns_to_cycles(chip,
-				    ktime_to_ns(ktime_sub(now, chip->wall_base)));
+		 rdcfb_ns_to_cycles(
+			 chip, ktime_to_ns(ktime_sub(now, chip->wall_base)));
 	/*
 	 * Too far behind (a slow host) or ahead (fb_ops ran the DP
 	 * at once when the FIFO filled): start pacing afresh from here.
@@ -261,8 +263,8 @@ static enum hrtimer_restart rdcfb_tick(struct hrtimer *t)
 	return HRTIMER_NORESTART;
 }
 
-int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
-		    u32 vram_size, bool stepped)
+int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev, u32 vram_size,
+		    bool stepped)
 {
 	struct rdc_hw_config cfg = { .vram_size = vram_size };
 
@@ -283,15 +285,15 @@ int rdcfb_chip_init(struct rdcfb_chip *chip, struct device *dev,
 	chip->frame[1] = vzalloc(array_size(RDCFB_FRAME_CAP, sizeof(u32)));
 	chip->snap = vzalloc(array_size(RDCFB_FRAME_CAP, sizeof(u32)));
 	chip->opq.ring = vmalloc(array_size(RDCFB_OPQ_WORDS, sizeof(u32)));
-	chip->opq.buf = kmalloc_array(RDCFB_OP_MAX_WORDS, sizeof(u32),
-				      GFP_KERNEL);
+	chip->opq.buf =
+		kmalloc_array(RDCFB_OP_MAX_WORDS, sizeof(u32), GFP_KERNEL);
 	if (!chip->vram || !chip->dp || !chip->frame[0] || !chip->frame[1] ||
 	    !chip->snap || !chip->opq.ring || !chip->opq.buf) {
 		rdcfb_chip_free(chip);
 		return -ENOMEM;
 	}
-	rdc_hw_init(&chip->hw, &cfg, chip->vram, chip->frame[0],
-		    chip->frame[1], RDCFB_FRAME_CAP);
+	rdc_hw_init(&chip->hw, &cfg, chip->vram, chip->frame[0], chip->frame[1],
+		    RDCFB_FRAME_CAP);
 	rdc_dp_init(chip->dp, &chip->hw);
 	rdc_hw_set_trace(&chip->hw, rdcfb_trace, chip);
 	rdcfb_update_period(chip);
@@ -494,8 +496,9 @@ static int rdcfb_wait_stepped(struct rdcfb_chip *chip, struct rdc_hw_wait *w)
 static int rdcfb_wait_paced(struct rdcfb_chip *chip, struct rdc_hw_wait *w,
 			    u32 timeout_ms, bool interruptible)
 {
-	unsigned long deadline = jiffies +
-		msecs_to_jiffies(timeout_ms ? timeout_ms : RDCFB_WAIT_TIMEOUT_MS);
+	unsigned long deadline =
+		jiffies + msecs_to_jiffies(timeout_ms ? timeout_ms :
+							RDCFB_WAIT_TIMEOUT_MS);
 	u64 seen;
 	long left;
 	int ret;
@@ -514,13 +517,17 @@ static int rdcfb_wait_paced(struct rdcfb_chip *chip, struct rdc_hw_wait *w,
 		if (left <= 0)
 			return -ETIMEDOUT;
 		if (interruptible)
-			left = wait_event_interruptible_timeout(chip->waitq,
-					READ_ONCE(chip->hw.now) != seen ||
-					READ_ONCE(chip->dying), left);
+			left = wait_event_interruptible_timeout(
+				chip->waitq,
+				READ_ONCE(chip->hw.now) != seen ||
+					READ_ONCE(chip->dying),
+				left);
 		else
-			left = wait_event_killable_timeout(chip->waitq,
-					READ_ONCE(chip->hw.now) != seen ||
-					READ_ONCE(chip->dying), left);
+			left = wait_event_killable_timeout(
+				chip->waitq,
+				READ_ONCE(chip->hw.now) != seen ||
+					READ_ONCE(chip->dying),
+				left);
 		if (left < 0)
 			return left;
 		if (READ_ONCE(chip->dying))
@@ -579,8 +586,8 @@ int rdcfb_chip_step(struct rdcfb_chip *chip, u64 cycles)
 	 * gives the same result run in pieces as in one go.
 	 */
 	while (hw->now < end) {
-		rdc_hw_run_until(hw, min_t(u64, end,
-					   hw->now + RDCFB_RUN_SLICE));
+		rdc_hw_run_until(hw,
+				 min_t(u64, end, hw->now + RDCFB_RUN_SLICE));
 		rdcfb_irq_check_locked(chip);
 		err = rdcfb_chip_pause(chip);
 		if (err)
@@ -642,7 +649,8 @@ int rdcfb_chip_submit(struct rdcfb_chip *chip, const u32 *words, u32 n)
 					     .reg = RDC_REG_FIFO_FREE,
 					     .mask = ~0u,
 					     .value = min_t(u32, n,
-							    RDC_FIFO_DEPTH / 2) },
+							    RDC_FIFO_DEPTH /
+								    2) },
 				.flags = RDCFB_WAIT_NEEDS_DP,
 			};
 
@@ -783,9 +791,11 @@ int rdcfb_chip_snapshot(struct rdcfb_chip *chip)
 		}
 		bytes = (size_t)w * h * sizeof(u32);
 		for (off = 0; off < bytes; off += RDCFB_SNAP_CHUNK) {
-			size_t len = min_t(size_t, RDCFB_SNAP_CHUNK, bytes - off);
+			size_t len =
+				min_t(size_t, RDCFB_SNAP_CHUNK, bytes - off);
 
-			memcpy((u8 *)chip->snap + off, (const u8 *)f + off, len);
+			memcpy((u8 *)chip->snap + off, (const u8 *)f + off,
+			       len);
 			if (tries + 1 == RDCFB_SNAP_TRIES) {
 				cond_resched();
 				continue;

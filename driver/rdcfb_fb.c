@@ -24,7 +24,7 @@
 /* Command words staged on the stack before they go to the FIFO. */
 #define RDCFB_STAGE_WORDS 32u
 /* The argument words ahead of the data of MONO / HOST_BLIT. */
-#define RDCFB_DATA_ARGS 2u
+#define RDCFB_DATA_ARGS	    2u
 #define RDCFB_BITS_PER_WORD 32u
 
 static u32 rdcfb_fmt_of(const struct fb_var_screeninfo *var)
@@ -136,10 +136,14 @@ static int rdcfb_var_timing(const struct fb_var_screeninfo *var,
 	if (h[3] * RDC_DEFAULT_CORE_HZ < (u64)khz * 1000)
 		return -EINVAL;
 	*t = (struct rdc_timing){
-		.h_display = h[0], .h_sync_start = h[1],
-		.h_sync_end = h[2], .h_total = h[3],
-		.v_display = v[0], .v_sync_start = v[1],
-		.v_sync_end = v[2], .v_total = v[3],
+		.h_display = h[0],
+		.h_sync_start = h[1],
+		.h_sync_end = h[2],
+		.h_total = h[3],
+		.v_display = v[0],
+		.v_sync_start = v[1],
+		.v_sync_end = v[2],
+		.v_total = v[3],
 		.pixclk_khz = khz,
 	};
 	if (var->sync & FB_SYNC_HOR_HIGH_ACT)
@@ -179,8 +183,8 @@ static int rdcfb_check_var(struct fb_var_screeninfo *var, struct fb_info *info)
 	if ((u64)stride * var->yres > vram)
 		return -ENOMEM;
 	/* a taller virtual screen than VRAM (or the DP) holds shrinks */
-	var->yres_virtual = min3(var->yres_virtual, vram / stride,
-				 (u32)RDC_SIZE_MAX);
+	var->yres_virtual =
+		min3(var->yres_virtual, vram / stride, (u32)RDC_SIZE_MAX);
 	if (var->xoffset > var->xres_virtual - var->xres ||
 	    var->yoffset > var->yres_virtual - var->yres)
 		return -EINVAL;
@@ -225,8 +229,8 @@ enum rdcfb_op_kind {
 };
 
 struct rdcfb_op {
-	u32 kind; /* enum rdcfb_op_kind */
-	u32 words; /* data words after the header */
+	u32 kind;		 /* enum rdcfb_op_kind */
+	u32 words;		 /* data words after the header */
 	u32 fmt, stride, vw, vh; /* draw ops: the virtual screen */
 	u32 rop, fg, bg;
 	u32 sx, sy, dx, dy, w, h;
@@ -241,7 +245,7 @@ struct rdcfb_qw {
 	struct rdcfb_chip *chip;
 	unsigned long flags;
 	u32 start, tail; /* ring positions of its header, of the next word */
-	u32 acc; /* a data word being filled bits at a time */
+	u32 acc;	 /* a data word being filled bits at a time */
 	u32 acc_bits;
 };
 
@@ -373,8 +377,8 @@ u64 rdcfb_ops_dropped(struct rdcfb_chip *chip)
 static int rdcfb_set_par(struct fb_info *info)
 {
 	static const u32 timing_regs[] = {
-		RDC_REG_H_TOTAL, RDC_REG_H_DISPLAY, RDC_REG_H_SYNC_START,
-		RDC_REG_H_SYNC_END, RDC_REG_V_TOTAL, RDC_REG_V_DISPLAY,
+		RDC_REG_H_TOTAL,      RDC_REG_H_DISPLAY,  RDC_REG_H_SYNC_START,
+		RDC_REG_H_SYNC_END,   RDC_REG_V_TOTAL,	  RDC_REG_V_DISPLAY,
 		RDC_REG_V_SYNC_START, RDC_REG_V_SYNC_END, RDC_REG_PIXCLK_KHZ,
 		RDC_REG_CRTC_FLAGS,
 	};
@@ -440,8 +444,8 @@ static int rdcfb_setcolreg(unsigned int regno, unsigned int red,
 	if (info->fix.visual == FB_VISUAL_PSEUDOCOLOR) {
 		rdcfb_q_regs(par->chip, regs, ARRAY_SIZE(regs) / 2);
 	} else if (regno < RDCFB_PSEUDO_COLOURS) {
-		par->pseudo_palette[regno] = rdcfb_pack(par->fmt, red, green,
-							blue);
+		par->pseudo_palette[regno] =
+			rdcfb_pack(par->fmt, red, green, blue);
 	}
 	return 0;
 }
@@ -551,7 +555,8 @@ static void rdcfb_begin(struct rdcfb_par *par, const struct rdcfb_op *op,
 	    par->dp_wh == wh)
 		return;
 	for (k = 0; k < 2; k++) {
-		rdcfb_put(s, RDC_CMD(k ? RDC_OP_SET_SRC : RDC_OP_SET_DST, 0, 4));
+		rdcfb_put(s,
+			  RDC_CMD(k ? RDC_OP_SET_SRC : RDC_OP_SET_DST, 0, 4));
 		rdcfb_put(s, 0);
 		rdcfb_put(s, op->stride);
 		rdcfb_put(s, wh);
@@ -626,17 +631,17 @@ static void rdcfb_dp_draw(struct rdcfb_par *par, const struct rdcfb_op *op,
 
 /* ---- Drawing: records by the CPU, when the DP cannot take them ---------- */
 
-static void rdcfb_cpu_pixel(u8 *p, u32 bytes, u32 v, bool xor)
+static void rdcfb_cpu_pixel(u8 *p, u32 bytes, u32 v, bool do_xor)
 {
 	switch (bytes) {
 	case 1:
-		*p = xor ? *p ^ v : v;
+		*p = do_xor ? *p ^ v : v;
 		break;
 	case 2:
-		*(u16 *)p = xor ? *(u16 *)p ^ v : v;
+		*(u16 *)p = do_xor ? *(u16 *)p ^ v : v;
 		break;
 	default:
-		*(u32 *)p = xor ? *(u32 *)p ^ v : v;
+		*(u32 *)p = do_xor ? *(u32 *)p ^ v : v;
 		break;
 	}
 }
@@ -696,9 +701,11 @@ static void rdcfb_cpu_draw(struct rdcfb_chip *chip, const struct rdcfb_op *op,
 		      op->dx * bytes;
 		for (x = 0; x < w; x++)
 			rdcfb_cpu_pixel(row + x * bytes, bytes,
-					op->kind == RDCFB_OPK_FILL ? op->fg :
-					rdcfb_cpu_src(op, data + y * wpr, x,
-						      bpp),
+					op->kind == RDCFB_OPK_FILL ?
+						op->fg :
+						rdcfb_cpu_src(op,
+							      data + y * wpr, x,
+							      bpp),
 					op->rop == RDC_ROP_XOR);
 	}
 }
@@ -764,8 +771,10 @@ void rdcfb_ops_apply_locked(struct rdcfb_chip *chip)
 	lockdep_assert_held(&chip->lock);
 	for (;;) {
 		rdcfb_spin_lock(&oq->lock, flags, oq->t0);
-		n = oq->count ? RDCFB_OP_HDR_WORDS +
-				oq->ring[(oq->head + 1) % RDCFB_OPQ_WORDS] : 0;
+		n = oq->count ?
+			    RDCFB_OP_HDR_WORDS +
+				    oq->ring[(oq->head + 1) % RDCFB_OPQ_WORDS] :
+			    0;
 		n = min3(n, oq->count, RDCFB_OP_MAX_WORDS);
 		for (i = 0; i < n; i++)
 			oq->buf[i] = oq->ring[(oq->head + i) % RDCFB_OPQ_WORDS];
@@ -776,7 +785,8 @@ void rdcfb_ops_apply_locked(struct rdcfb_chip *chip)
 			break;
 		memcpy(&op, oq->buf, sizeof(op));
 		op.words = n - RDCFB_OP_HDR_WORDS;
-		rdcfb_op_run(chip->info->par, &op, oq->buf + RDCFB_OP_HDR_WORDS);
+		rdcfb_op_run(chip->info->par, &op,
+			     oq->buf + RDCFB_OP_HDR_WORDS);
 		cond_resched();
 	}
 }
@@ -789,8 +799,11 @@ static struct rdcfb_op rdcfb_op_of(struct fb_info *info, u32 kind)
 	struct rdcfb_par *par = info->par;
 
 	return (struct rdcfb_op){
-		.kind = kind, .fmt = par->fmt, .stride = par->stride,
-		.vw = info->var.xres_virtual, .vh = info->var.yres_virtual,
+		.kind = kind,
+		.fmt = par->fmt,
+		.stride = par->stride,
+		.vw = info->var.xres_virtual,
+		.vh = info->var.yres_virtual,
 		.rop = RDC_ROP_COPY,
 	};
 }
@@ -799,7 +812,8 @@ static u32 rdcfb_colour(struct fb_info *info, u32 idx)
 {
 	struct rdcfb_par *par = info->par;
 	u32 n = info->pseudo_palette == par->pseudo_palette ?
-			RDCFB_PSEUDO_COLOURS : RDC_CLUT_ENTRIES;
+			RDCFB_PSEUDO_COLOURS :
+			RDC_CLUT_ENTRIES;
 
 	if (info->fix.visual != FB_VISUAL_TRUECOLOR)
 		return idx;
@@ -881,9 +895,11 @@ void rdcfb_blit(struct fb_info *info, const struct fb_image *img)
 					rdcfb_q_put_bits(&q, src[x], 8);
 			} else {
 				for (x = 0; x < img->width; x++)
-					rdcfb_q_put_bits(&q,
+					rdcfb_q_put_bits(
+						&q,
 						rdcfb_colour(info, src[x]) &
-						GENMASK(bpp - 1, 0), bpp);
+							GENMASK(bpp - 1, 0),
+						bpp);
 			}
 			rdcfb_q_end_row(&q);
 		}

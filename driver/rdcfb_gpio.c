@@ -52,7 +52,7 @@ enum {
 	RDCFB_LINES,
 };
 
-#define RDCFB_PINS_HOST_IN (RDC_PIN_TE | RDC_PIN_IRQ)
+#define RDCFB_PINS_HOST_IN  (RDC_PIN_TE | RDC_PIN_IRQ)
 #define RDCFB_PINS_HOST_OUT (RDC_PIN_RESET_N | RDC_PIN_BL_EN)
 /* Pin changes waiting for delivery (a power of two). */
 #define RDCFB_PIN_QUEUE 256u
@@ -70,7 +70,7 @@ static DEFINE_MUTEX(rdcfb_gpio_kept_lock);
 
 struct rdcfb_pin_event {
 	ktime_t wall; /* when it happened on the paced clock; 0 stepped */
-	u32 levels; /* TE and IRQ after it */
+	u32 levels;   /* TE and IRQ after it */
 };
 
 struct rdcfb_gpio {
@@ -79,26 +79,27 @@ struct rdcfb_gpio {
 	char label[32];
 
 	spinlock_t ev_lock; /* the queue and the fields marked ev */
-	u64 ev_t0; /* ev: when ev_lock was taken */
+	u64 ev_t0;	    /* ev: when ev_lock was taken */
 	struct rdcfb_pin_event ev[RDCFB_PIN_QUEUE];
 	u32 head, count; /* ev */
-	u32 live; /* ev: TE/IRQ after the last change queued (or lost) */
-	u32 shown; /* ev: after the last change delivered */
+	u32 live;	 /* ev: TE/IRQ after the last change queued (or lost) */
+	u32 shown;	 /* ev: after the last change delivered */
 	bool delivering; /* ev: an edge is in a consumer's hands */
-	u64 edges; /* ev: edges delivered */
-	u64 lost; /* ev: edges dropped at a full queue */
+	u64 edges;	 /* ev: edges delivered */
+	u64 lost;	 /* ev: edges dropped at a full queue */
 	u64 late_max_ns, late_sum_ns, late_n; /* ev: delivery after the edge */
 
 	struct irq_domain *domain;
-	struct list_head kept; /* on rdcfb_gpio_kept once unbound */
-	u8 irq_type[RDCFB_LINES]; /* IRQ_TYPE_EDGE_* a consumer asked for */
+	struct list_head kept;	   /* on rdcfb_gpio_kept once unbound */
+	u8 irq_type[RDCFB_LINES];  /* IRQ_TYPE_EDGE_* a consumer asked for */
 	struct mutex deliver_lock; /* one deliverer at a time, in order */
-	bool gone; /* deliver_lock: the chip is being removed */
+	bool gone;		   /* deliver_lock: the chip is being removed */
 	struct work_struct deliver_work;
 };
 
 /* ev_lock, its holds timed with the chip's other interrupts-off sections */
-#define rdcfb_ev_lock(g, flags) rdcfb_spin_lock(&(g)->ev_lock, flags, (g)->ev_t0)
+#define rdcfb_ev_lock(g, flags) \
+	rdcfb_spin_lock(&(g)->ev_lock, flags, (g)->ev_t0)
 #define rdcfb_ev_unlock(g, flags) \
 	rdcfb_spin_unlock(&(g)->ev_lock, flags, (g)->ev_t0, &(g)->chip->irqoff)
 
@@ -182,16 +183,14 @@ static void rdcfb_gpio_deliver(struct rdcfb_gpio *g)
 		rdcfb_ev_unlock(g, flags);
 		for (line = RDCFB_LINE_TE; line <= RDCFB_LINE_IRQ; line++)
 			if (changed & BIT(line))
-				rdcfb_gpio_edge(g, line,
-						e.levels & BIT(line));
+				rdcfb_gpio_edge(g, line, e.levels & BIT(line));
 	}
 	mutex_unlock(&g->deliver_lock);
 }
 
 static void rdcfb_gpio_deliver_work(struct work_struct *work)
 {
-	rdcfb_gpio_deliver(container_of(work, struct rdcfb_gpio,
-					deliver_work));
+	rdcfb_gpio_deliver(container_of(work, struct rdcfb_gpio, deliver_work));
 }
 
 /* From the pacing work, right after a slice: no detour through a worker. */
@@ -237,8 +236,8 @@ static void rdcfb_gpio_set(struct gpio_chip *gc, unsigned int off, int val)
 		rdcfb_chip_set_pin(g->chip, BIT(off), val);
 }
 
-static int rdcfb_gpio_direction_output(struct gpio_chip *gc,
-				       unsigned int off, int val)
+static int rdcfb_gpio_direction_output(struct gpio_chip *gc, unsigned int off,
+				       int val)
 {
 	if (!(BIT(off) & RDCFB_PINS_HOST_OUT))
 		return -EPERM;

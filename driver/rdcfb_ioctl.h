@@ -62,19 +62,19 @@ struct rdcfb_reg {
  * the display processor.  A rejected buffer changes nothing.
  */
 struct rdcfb_submit {
-	__u64 words; /* user pointer to __u32[count] */
-	__u32 count; /* <= RDCFB_SUBMIT_MAX_WORDS */
-	__u32 flags; /* 0 */
+	__u64 words;	/* user pointer to __u32[count] */
+	__u32 count;	/* <= RDCFB_SUBMIT_MAX_WORDS */
+	__u32 flags;	/* 0 */
 	__u32 bad_word; /* out, on EPROTO: index of the offending word */
 	__u32 reserved;
 };
 
 /* Wait terms, as librdc's: the wait ends when ANY term holds. */
-#define RDCFB_WAIT_NONE 0
-#define RDCFB_WAIT_GE 1	     /* (reg & mask) >= value, unsigned */
+#define RDCFB_WAIT_NONE	   0
+#define RDCFB_WAIT_GE	   1 /* (reg & mask) >= value, unsigned */
 #define RDCFB_WAIT_WRAP_GE 2 /* (__s32)((reg & mask) - value) >= 0 */
-#define RDCFB_WAIT_EQ 3	     /* (reg & mask) == value */
-#define RDCFB_WAIT_TERMS 2
+#define RDCFB_WAIT_EQ	   3 /* (reg & mask) == value */
+#define RDCFB_WAIT_TERMS   2
 
 /* Fail with EIO if the display processor halts (a DP-only condition). */
 #define RDCFB_WAIT_NEEDS_DP (1u << 0)
@@ -88,7 +88,7 @@ struct rdcfb_wait_term {
 
 struct rdcfb_wait {
 	struct rdcfb_wait_term term[RDCFB_WAIT_TERMS];
-	__u32 flags; /* RDCFB_WAIT_NEEDS_DP */
+	__u32 flags;	  /* RDCFB_WAIT_NEEDS_DP */
 	__u32 timeout_ms; /* wall-time cap when paced; 0 = 10 s */
 	/* simulated core cycles, <= RDCFB_MAX_CYCLES; 0 = 10 simulated s */
 	__u64 budget;
@@ -111,7 +111,7 @@ struct rdcfb_counters {
 	__u32 cmds;
 	__u32 last_cycles;
 	__u32 last_opcode;
-	__u32 fence; /* RDC_REG_FENCE */
+	__u32 fence;  /* RDC_REG_FENCE */
 	__u32 frames; /* frames scanned out since load */
 	__u32 reserved;
 };
@@ -119,20 +119,20 @@ struct rdcfb_counters {
 /* The latest complete scanned-out frame (XRGB8888). */
 struct rdcfb_frame {
 	__u64 pixels; /* user pointer to __u32[cap], or 0 for the CRC only */
-	__u32 cap; /* in pixels */
-	__u32 width; /* out */
+	__u32 cap;    /* in pixels */
+	__u32 width;  /* out */
 	__u32 height; /* out */
 	__u32 crc32; /* out: zlib CRC-32 of the pixels as little-endian bytes */
-	__u32 seq; /* out: frame number; 0 = none completed yet (EAGAIN) */
+	__u32 seq;   /* out: frame number; 0 = none completed yet (EAGAIN) */
 	__u32 reserved;
 };
 
-#define RDCFB_IOC_REG_READ _IOWR(RDCFB_IOC_MAGIC, 0x00, struct rdcfb_reg)
+#define RDCFB_IOC_REG_READ  _IOWR(RDCFB_IOC_MAGIC, 0x00, struct rdcfb_reg)
 #define RDCFB_IOC_REG_WRITE _IOW(RDCFB_IOC_MAGIC, 0x01, struct rdcfb_reg)
-#define RDCFB_IOC_SUBMIT _IOWR(RDCFB_IOC_MAGIC, 0x02, struct rdcfb_submit)
-#define RDCFB_IOC_WAIT _IOW(RDCFB_IOC_MAGIC, 0x03, struct rdcfb_wait)
-#define RDCFB_IOC_STEP _IOW(RDCFB_IOC_MAGIC, 0x04, struct rdcfb_step)
-#define RDCFB_IOC_COUNTERS _IOR(RDCFB_IOC_MAGIC, 0x05, struct rdcfb_counters)
-#define RDCFB_IOC_FRAME _IOWR(RDCFB_IOC_MAGIC, 0x06, struct rdcfb_frame)
+#define RDCFB_IOC_SUBMIT    _IOWR(RDCFB_IOC_MAGIC, 0x02, struct rdcfb_submit)
+#define RDCFB_IOC_WAIT	    _IOW(RDCFB_IOC_MAGIC, 0x03, struct rdcfb_wait)
+#define RDCFB_IOC_STEP	    _IOW(RDCFB_IOC_MAGIC, 0x04, struct rdcfb_step)
+#define RDCFB_IOC_COUNTERS  _IOR(RDCFB_IOC_MAGIC, 0x05, struct rdcfb_counters)
+#define RDCFB_IOC_FRAME	    _IOWR(RDCFB_IOC_MAGIC, 0x06, struct rdcfb_frame)
 
 #endif /* RDCFB_IOCTL_H */

@@ -23,8 +23,9 @@ MODULE_PARM_DESC(vram, "VRAM size per device, e.g. 16M (1M..256M)");
 
 static char *mode = "640x480-32";
 module_param(mode, charp, 0444);
-MODULE_PARM_DESC(mode,
-		 "Initial mode WxH[-bpp]: a preset size, 8/16/32 bpp (640x480-32)");
+MODULE_PARM_DESC(
+	mode,
+	"Initial mode WxH[-bpp]: a preset size, 8/16/32 bpp (640x480-32)");
 
 static unsigned int devices = 1;
 module_param(devices, uint, 0444);
@@ -48,15 +49,15 @@ static struct rdcfb_chip *rdcfb_chip_of(struct device *dev)
 	return ((struct rdcfb_par *)info->par)->chip;
 }
 
-#define RDCFB_COUNTER_ATTR(name, expr)                                      \
-	static ssize_t name##_show(struct device *dev,                      \
+#define RDCFB_COUNTER_ATTR(name, expr) \
+	static ssize_t name##_show(struct device *dev, \
 				   struct device_attribute *attr, char *buf) \
-	{                                                                   \
-		struct rdcfb_counters c;                                    \
-									    \
-		rdcfb_chip_counters(rdcfb_chip_of(dev), &c);                \
+	{ \
+		struct rdcfb_counters c; \
+\
+		rdcfb_chip_counters(rdcfb_chip_of(dev), &c); \
 		return sysfs_emit(buf, "%llu\n", (unsigned long long)(expr)); \
-	}                                                                   \
+	} \
 	static DEVICE_ATTR_RO(name)
 
 RDCFB_COUNTER_ATTR(busy_cycles, c.busy);
@@ -66,16 +67,16 @@ RDCFB_COUNTER_ATTR(cmds, c.cmds);
 RDCFB_COUNTER_ATTR(frames, c.frames);
 RDCFB_COUNTER_ATTR(now, c.now);
 
-#define RDCFB_PIN_ATTR(name, field)                                         \
-	static ssize_t name##_show(struct device *dev,                      \
+#define RDCFB_PIN_ATTR(name, field) \
+	static ssize_t name##_show(struct device *dev, \
 				   struct device_attribute *attr, char *buf) \
-	{                                                                   \
-		struct rdcfb_chip *chip = rdcfb_chip_of(dev);               \
-		struct rdcfb_pin_stats s;                                   \
-									    \
-		rdcfb_gpio_stats(READ_ONCE(chip->gpio), &s);                \
+	{ \
+		struct rdcfb_chip *chip = rdcfb_chip_of(dev); \
+		struct rdcfb_pin_stats s; \
+\
+		rdcfb_gpio_stats(READ_ONCE(chip->gpio), &s); \
 		return sysfs_emit(buf, "%llu\n", (unsigned long long)s.field); \
-	}                                                                   \
+	} \
 	static DEVICE_ATTR_RO(name)
 
 RDCFB_PIN_ATTR(pin_edges, edges);
@@ -126,8 +127,7 @@ static ssize_t irqs_off_max_at_show(struct device *dev,
 {
 	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
 
-	return sysfs_emit(buf, "%pS\n",
-			  (void *)READ_ONCE(chip->irqoff.max_at));
+	return sysfs_emit(buf, "%pS\n", (void *)READ_ONCE(chip->irqoff.max_at));
 }
 static DEVICE_ATTR_RO(irqs_off_max_at);
 
@@ -135,8 +135,9 @@ static DEVICE_ATTR_RO(irqs_off_max_at);
 static ssize_t fb_dropped_show(struct device *dev,
 			       struct device_attribute *attr, char *buf)
 {
-	return sysfs_emit(buf, "%llu\n",
-			  (unsigned long long)rdcfb_ops_dropped(rdcfb_chip_of(dev)));
+	return sysfs_emit(
+		buf, "%llu\n",
+		(unsigned long long)rdcfb_ops_dropped(rdcfb_chip_of(dev)));
 }
 static DEVICE_ATTR_RO(fb_dropped);
 
@@ -288,8 +289,8 @@ static int __init rdcfb_init(void)
 		return ret;
 	}
 	for (i = 0; i < devices; i++) {
-		rdcfb_pdev[i] = platform_device_register_simple(RDCFB_NAME, i,
-								NULL, 0);
+		rdcfb_pdev[i] =
+			platform_device_register_simple(RDCFB_NAME, i, NULL, 0);
 		if (IS_ERR(rdcfb_pdev[i])) {
 			ret = PTR_ERR(rdcfb_pdev[i]);
 			rdcfb_pdev[i] = NULL;

@@ -18,13 +18,13 @@
 
 /* Points a POLYLINE/POLYGON, FILL_POLYGON and BSPLINE take at least. */
 #define RDCFB_MIN_STROKE_POINTS 2u
-#define RDCFB_MIN_FILL_POINTS 3u
+#define RDCFB_MIN_FILL_POINTS	3u
 #define RDCFB_MIN_SPLINE_POINTS 4u
 /* Argument words of SET_PATTERN by mode, SET_TRANSFORM, SET_ZBUF. */
-#define RDCFB_PAT_MONO_WORDS 2u
+#define RDCFB_PAT_MONO_WORDS  2u
 #define RDCFB_PAT_COLOR_WORDS 64u
 #define RDCFB_TRANSFORM_WORDS 9u
-#define RDCFB_ZBUF_WORDS 2u
+#define RDCFB_ZBUF_WORDS      2u
 /* HOST_BLIT/MONO/TEXT: the position and size (or count) before the data */
 #define RDCFB_DATA_HDR_WORDS 2u
 /* The widest pixel there is, for HOST_BLIT when DST is not known here. */
@@ -70,7 +70,9 @@ static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 	case RDC_OP_CALL:
 	case RDC_OP_JUMP:
 		return a[0] % sizeof(u32) ||
-		       (u64)a[0] + sizeof(u32) > vram_size ? 0 : -1;
+				       (u64)a[0] + sizeof(u32) > vram_size ?
+			       0 :
+			       -1;
 	case RDC_OP_REG_WRITE:
 		return a[0] % sizeof(u32) || a[0] >= RDC_REG_WINDOW ? 0 : -1;
 	case RDC_OP_SET_ROP:
@@ -103,7 +105,8 @@ static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 	case RDC_OP_BSPLINE:
 		return len < RDCFB_MIN_SPLINE_POINTS ? (int)len : -1;
 	case RDC_OP_FLOOD_FILL:
-		return len != (fl & RDC_FLOOD_BOUNDARY ? 2u : 1u) ? (int)len : -1;
+		return len != (fl & RDC_FLOOD_BOUNDARY ? 2u : 1u) ? (int)len :
+								    -1;
 	case RDC_OP_MONO:
 	case RDC_OP_HOST_BLIT:
 		if (len < RDCFB_DATA_HDR_WORDS)
@@ -121,12 +124,14 @@ static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 		}
 		wpr = len - RDCFB_DATA_HDR_WORDS;
 		return wpr < (u64)RDC_H(a[1]) * lo ||
-		       wpr > (u64)RDC_H(a[1]) * hi ? 1 : -1;
+				       wpr > (u64)RDC_H(a[1]) * hi ?
+			       1 :
+			       -1;
 	case RDC_OP_TEXT:
 		if (len < RDCFB_DATA_HDR_WORDS)
 			return len;
-		return len != RDCFB_DATA_HDR_WORDS + ((u64)a[1] + 3) / 4 ? 1
-									 : -1;
+		return len != RDCFB_DATA_HDR_WORDS + ((u64)a[1] + 3) / 4 ? 1 :
+									   -1;
 	default:
 		return -1;
 	}

@@ -33,8 +33,7 @@
  * gradient is scaled, up or down, to 31 bits a component before its
  * length is taken, so |grad F| has 30 good bits however small the radii.
  */
-static uint32_t aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x,
-			       uint32_t y)
+static uint32_t aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x, uint32_t y)
 {
 	int64_t rx2 = (int64_t)rx * rx, ry2 = (int64_t)ry * ry, f;
 	uint64_t gx, gy, num, den, d;
@@ -77,8 +76,10 @@ static uint32_t aa_ellipse_cov(uint32_t rx, uint32_t ry, uint32_t x,
 uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst, uint32_t a)
 {
 	/* channel fields (shift, width), most significant first */
-	static const uint8_t f565[][2] = {{11, 5}, {5, 6}, {0, 5}};
-	static const uint8_t f888[][2] = {{24, 8}, {16, 8}, {8, 8}, {0, 8}};
+	static const uint8_t f565[][2] = { { 11, 5 }, { 5, 6 }, { 0, 5 } };
+	static const uint8_t f888[][2] = {
+		{ 24, 8 }, { 16, 8 }, { 8, 8 }, { 0, 8 }
+	};
 	const uint8_t(*f)[2];
 	unsigned int n, i;
 	uint32_t r = 0;
@@ -136,7 +137,7 @@ static uint32_t aa_value(const struct rdc_dp *dp, uint32_t cov, uint32_t d,
  * so nothing carries between lanes, and for x <= 65152 the quotient
  * x / 255 is exactly (x + 1 + (x >> 8)) >> 8 (checked for every such x).
  */
-#define LANES 0x00ff00ffu
+#define LANES	 0x00ff00ffu
 #define LANE_ONE 0x00010001u
 
 static inline uint32_t blend_lanes(uint32_t s, uint32_t d, uint32_t a)
@@ -281,9 +282,10 @@ static void aa_col(struct rdc_dp *dp, const struct rdc_rect *c, int32_t x,
 	cov += lo - ya;
 	n = (uint32_t)(hi - lo);
 	bit = (uint32_t)x * bpp;
-	p = rdc_port_column(
-		dp->hw, s->base + (uint32_t)lo * s->stride + bit / 8, s->stride,
-		n, (bpp + 7) / 8, aa_kind(dp, cov, n, sub, sub));
+	p = rdc_port_column(dp->hw,
+			    s->base + (uint32_t)lo * s->stride + bit / 8,
+			    s->stride, n, (bpp + 7) / 8,
+			    aa_kind(dp, cov, n, sub, sub));
 	if (!p)
 		return;
 	if (s->format == RDC_FMT_XRGB8888 && !dp->ref_paths) {
@@ -346,8 +348,8 @@ static void aa_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 	rem = n ? ilo * m % n : 0;
 	run = ilo;
 	for (i = ilo; i <= ihi; i++) {
-		uint32_t f =
-			n ? (uint32_t)((RDC_AA_FULL * rem + n / 2) / n) : 0;
+		uint32_t f = n ? (uint32_t)((RDC_AA_FULL * rem + n / 2) / n) :
+				 0;
 		int64_t nj = j;
 
 		hi[k] = (uint8_t)(RDC_AA_FULL - f);
@@ -427,7 +429,7 @@ static void aa_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 	    (int64_t)cy - ry - 1 >= c.y1)
 		return;
 	for (t = 0; t <= ry + 1; t++) {
-		int32_t rows[2] = {cy - (int32_t)t, cy + (int32_t)t};
+		int32_t rows[2] = { cy - (int32_t)t, cy + (int32_t)t };
 		uint32_t xs = 0, xl, xr, r, nrows = t ? 2 : 1;
 
 		if ((rows[0] < c.y0 || rows[0] >= c.y1) &&

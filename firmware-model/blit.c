@@ -72,9 +72,10 @@ void dp_blit_span(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n)
 			continue;
 		d = px_ld(p, bpp, bit);
 		px_st(p, bpp, bit,
-		      rdc_dp_blend(fmt, rdc_rop_apply(st->rop, dp->px[i], d) &
-						mask,
-				   d, st->alpha) & mask);
+		      rdc_dp_blend(fmt,
+				   rdc_rop_apply(st->rop, dp->px[i], d) & mask,
+				   d, st->alpha) &
+			      mask);
 		cnt++;
 	}
 	dp->hw->perf.pixels += cnt;
@@ -86,8 +87,7 @@ void dp_blit_span(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n)
  * the loop so each case is a plain loop the compiler can widen.
  */
 #define ROP_BLOCK 32u
-static rdc_always_inline void rop_bytes_as(unsigned int r,
-					   uint8_t *restrict d,
+static rdc_always_inline void rop_bytes_as(unsigned int r, uint8_t *restrict d,
 					   const uint8_t *restrict s,
 					   uint32_t len)
 {
@@ -107,9 +107,9 @@ static rdc_always_inline void rop_bytes_as(unsigned int r,
  * d and s do not overlap; blocks of a fixed size with restrict let the
  * compiler use wide registers (kept out of line, where restrict holds).
  */
-static rdc_noinline void
-rop_bytes(uint8_t *restrict d, const uint8_t *restrict s, uint32_t len,
-	  unsigned int rop)
+static rdc_noinline void rop_bytes(uint8_t *restrict d,
+				   const uint8_t *restrict s, uint32_t len,
+				   unsigned int rop)
 {
 	switch (rop) {
 	case RDC_ROP_COPY:
@@ -172,8 +172,8 @@ rop_bytes(uint8_t *restrict d, const uint8_t *restrict s, uint32_t len,
  * the source first, as the per-pixel path does.
  */
 /* len bytes from src to p through the ROP, overlap-safe. */
-static inline void blit_bytes(struct rdc_dp *dp, uint8_t *p,
-			      const uint8_t *src, uint32_t len)
+static inline void blit_bytes(struct rdc_dp *dp, uint8_t *p, const uint8_t *src,
+			      uint32_t len)
 {
 	unsigned int rop = dp->st.rop;
 
@@ -196,13 +196,10 @@ static void blit_row(struct rdc_dp *dp, uint32_t saddr, int32_t y, int32_t xa,
 	const uint8_t *src;
 	uint8_t *p;
 
-	p = rdc_port_span_pair(dp->hw, saddr,
-			       s->base + (uint32_t)y * s->stride +
-				       (uint32_t)xa * bytes,
-			       len,
-			       rdc_rop_reads_dst(rop) ? RDC_BUS_RMW :
-							RDC_BUS_WRITE,
-			       &src);
+	p = rdc_port_span_pair(
+		dp->hw, saddr,
+		s->base + (uint32_t)y * s->stride + (uint32_t)xa * bytes, len,
+		rdc_rop_reads_dst(rop) ? RDC_BUS_RMW : RDC_BUS_WRITE, &src);
 	if (!p)
 		return;
 	blit_bytes(dp, p, src, len);
@@ -304,8 +301,8 @@ void rdc_dp_readback_pack(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 	unsigned int bpp = rdc_format_bpp(s->format);
 	uint64_t byte0 = (uint64_t)word * 4, byte1 = byte0 + (uint64_t)n * 4;
 	int64_t k0 = (int64_t)(byte0 * 8 / bpp);
-	int64_t k1 = RDC_MIN((int64_t)((byte1 * 8 + bpp - 1) / bpp),
-			     (int64_t)w);
+	int64_t k1 =
+		RDC_MIN((int64_t)((byte1 * 8 + bpp - 1) / bpp), (int64_t)w);
 	int64_t sy = (int64_t)y + row, va, vb, k;
 	const uint8_t *p = NULL;
 	uint64_t pbit0 = 0;
@@ -319,17 +316,16 @@ void rdc_dp_readback_pack(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 	if (va >= vb)
 		return;
 	pbit0 = (uint64_t)(x + va) * bpp;
-	p = rdc_port_span(dp->hw,
-			  s->base + (uint32_t)sy * s->stride +
-				  (uint32_t)(pbit0 / 8),
-			  (uint32_t)(((uint64_t)(x + vb) * bpp + 7) / 8 -
-				     pbit0 / 8),
-			  RDC_BUS_READ);
+	p = rdc_port_span(
+		dp->hw,
+		s->base + (uint32_t)sy * s->stride + (uint32_t)(pbit0 / 8),
+		(uint32_t)(((uint64_t)(x + vb) * bpp + 7) / 8 - pbit0 / 8),
+		RDC_BUS_READ);
 	if (!p)
 		return;
 	for (k = va; k < vb; k++) {
-		uint32_t v = px_ld(p, bpp,
-				   (uint32_t)((pbit0 & 7) + (k - va) * bpp));
+		uint32_t v =
+			px_ld(p, bpp, (uint32_t)((pbit0 & 7) + (k - va) * bpp));
 		uint64_t kb = (uint64_t)k * bpp;
 		unsigned int i;
 

@@ -15,7 +15,7 @@
 #include "dp_int.h"
 
 #define CV_FRAC 32
-#define CV_ONE ((int64_t)1 << CV_FRAC)
+#define CV_ONE	((int64_t)1 << CV_FRAC)
 #define CV_HALF (CV_ONE / 2)
 /* Chosen step counts: one step per this many pixels of control polygon */
 #define CV_PX_PER_STEP 4
@@ -140,8 +140,8 @@ static void cv_bspline(struct cv_poly *p, int64_t q0, int64_t q1, int64_t q2,
 	p->div = 6;
 }
 
-uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
-		      uint32_t len, const uint32_t *a)
+uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl, uint32_t len,
+		      const uint32_t *a)
 {
 	int32_t x[4], y[4];
 	struct cv_poly px, py;
@@ -184,7 +184,8 @@ uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 			cv_hermite(&py, y[0], y[1], y[2], y[3]);
 			plen = cv_leg(x[0], y[0], x[1], y[1]) +
 			       (cv_leg(0, 0, x[2], y[2]) +
-				cv_leg(0, 0, x[3], y[3])) / 3;
+				cv_leg(0, 0, x[3], y[3])) /
+				       3;
 			n = cv_steps(fl, plen);
 			cv_trace_poly(&tr, &px, &py, n, 0, x[1], y[1]);
 		}
@@ -210,10 +211,10 @@ uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		cv_bspline(&px, x[0], x[1], x[2], x[3]);
 		cv_bspline(&py, y[0], y[1], y[2], y[3]);
 		n = cv_steps(fl, cv_polygon(x, y));
-		ex = (int32_t)dp_div_round((int64_t)x[1] + 4 * (int64_t)x[2] +
-						   x[3], 6);
-		ey = (int32_t)dp_div_round((int64_t)y[1] + 4 * (int64_t)y[2] +
-						   y[3], 6);
+		ex = (int32_t)dp_div_round(
+			(int64_t)x[1] + 4 * (int64_t)x[2] + x[3], 6);
+		ey = (int32_t)dp_div_round(
+			(int64_t)y[1] + 4 * (int64_t)y[2] + y[3], 6);
 		/* the first point of later segments is the previous end */
 		cv_trace_poly(&tr, &px, &py, n, i > 3, ex, ey);
 	}

@@ -118,7 +118,7 @@ static uint32_t dec_rle(struct rdc_dp *dp, const struct dec *d,
 			struct img_in *r)
 {
 	uint8_t *row = dp->img.u.dec[0];
-	uint32_t run = 0, lit = 0, px[3] = {0}, c, x, y, k, i;
+	uint32_t run = 0, lit = 0, px[3] = { 0 }, c, x, y, k, i;
 
 	for (y = 0; y < d->h; y++) {
 		for (x = 0, i = 0; x < d->w; x++, i += d->ch) {

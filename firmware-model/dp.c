@@ -147,8 +147,7 @@ static bool surface_parse(const struct rdc_hw *hw, const uint32_t *a,
 }
 
 /* Mask colours to the destination's pixel size. */
-static void dp_mask_colours(const struct rdc_dp *dp, uint32_t *fg,
-			    uint32_t *bg)
+static void dp_mask_colours(const struct rdc_dp *dp, uint32_t *fg, uint32_t *bg)
 {
 	unsigned int bpp = rdc_format_bpp(dp->st.dst.format);
 	uint32_t m = bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
@@ -291,8 +290,9 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 			return RDC_ERR_RANGE;
 		fmt = op == RDC_OP_MONO ? RDC_FMT_I1 : dp->st.dst.format;
 		/* the data rows must be there, exactly */
-		if (len != 2 + (uint64_t)RDC_H(a[1]) *
-				       rdc_dp_words_per_row(fmt, RDC_W(a[1])))
+		if (len !=
+		    2 + (uint64_t)RDC_H(a[1]) *
+				    rdc_dp_words_per_row(fmt, RDC_W(a[1])))
 			return RDC_ERR_LENGTH;
 		if (op == RDC_OP_MONO)
 			rdc_dp_mono(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_W(a[1]),
@@ -347,7 +347,8 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		dp->rb_len = 0;
 		dp->rb_words_per_row =
 			RDC_H(a[1]) ? rdc_dp_words_per_row(dp->st.src.format,
-							   RDC_W(a[1])) : 0;
+							   RDC_W(a[1])) :
+				      0;
 		if (!readback_step(dp))
 			dp->phase = RDC_DP_READBACK;
 		return RDC_ERR_NONE;
@@ -485,7 +486,7 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 		return RDC_ERR_NONE;
 	case RDC_OP_REG_WRITE:
 		return rdc_port_reg_write(hw, a[0], a[1]) ? RDC_ERR_REG :
-							     RDC_ERR_NONE;
+							    RDC_ERR_NONE;
 	case RDC_OP_LOAD_CLUT:
 		if (len < 2 || len > RDC_CLUT_ENTRIES + 1)
 			return RDC_ERR_LENGTH;
@@ -508,7 +509,8 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 		return RDC_ERR_NONE;
 	case RDC_OP_SET_CLIP:
 		/* x1/y1 are exclusive, so they may reach RDC_COORD_MAX + 1. */
-		if (RDC_X(a[0]) < RDC_COORD_MIN || RDC_Y(a[0]) < RDC_COORD_MIN ||
+		if (RDC_X(a[0]) < RDC_COORD_MIN ||
+		    RDC_Y(a[0]) < RDC_COORD_MIN ||
 		    RDC_X(a[1]) > RDC_COORD_MAX + 1 ||
 		    RDC_Y(a[1]) > RDC_COORD_MAX + 1 ||
 		    RDC_X(a[0]) > RDC_X(a[1]) || RDC_Y(a[0]) > RDC_Y(a[1]))

@@ -11,8 +11,8 @@
 #include "image.h"
 #include "geom3d.h"
 
-#define RDC_DP_CHUNK 1024u /* pixels staged per span */
-#define RDC_DP_RB_CHUNK 256u /* READBACK words packed per span read */
+#define RDC_DP_CHUNK	1024u /* pixels staged per span */
+#define RDC_DP_RB_CHUNK 256u  /* READBACK words packed per span read */
 /*
  * FILL_POLYGON / TRIANGLE scratch: vertices after Sutherland-Hodgman
  * clipping (a polygon whose clipped form would need more falls back to
@@ -20,16 +20,16 @@
  * table's capacity.  Polygon points must lie within +-RDC_POLY_COORD_LIMIT
  * (16.16 fixed point in 32 bits).
  */
-#define RDC_DP_POLY_VERTS (RDC_CMD_MAX_ARGS + 256u)
+#define RDC_DP_POLY_VERTS    (RDC_CMD_MAX_ARGS + 256u)
 #define RDC_POLY_COORD_LIMIT 32767
 /* FLOOD_FILL's span stack; when full, the fill rescans (flood.c). */
 #define RDC_DP_FLOOD_STACK 4096u
 
 /* A drawing surface in VRAM. */
 struct rdc_surface {
-	uint32_t base, stride; /* bytes */
+	uint32_t base, stride;	/* bytes */
 	uint32_t width, height; /* pixels */
-	uint32_t format; /* enum rdc_format */
+	uint32_t format;	/* enum rdc_format */
 };
 
 /*
@@ -86,11 +86,11 @@ struct rdc_dp_state {
 };
 
 enum rdc_dp_phase {
-	RDC_DP_IDLE, /* between commands */
-	RDC_DP_FETCH, /* header read, waiting for argument words */
+	RDC_DP_IDLE,	 /* between commands */
+	RDC_DP_FETCH,	 /* header read, waiting for argument words */
 	RDC_DP_READBACK, /* READBACK in progress, waiting for RDATA space */
-	RDC_DP_WAIT, /* WAIT_VBLANK / WAIT_LINE until wait_time */
-	RDC_DP_HALTED /* halted on error */
+	RDC_DP_WAIT,	 /* WAIT_VBLANK / WAIT_LINE until wait_time */
+	RDC_DP_HALTED	 /* halted on error */
 };
 
 struct rdc_dp {
@@ -107,13 +107,14 @@ struct rdc_dp {
 	enum rdc_dp_phase phase;
 	unsigned int src; /* RDC_SRC_* of the command being fetched */
 	uint32_t cmd[1 + RDC_CMD_MAX_ARGS]; /* header + arguments */
-	uint32_t cmd_len, cmd_have; /* words expected / fetched (header incl.) */
+	uint32_t cmd_len,
+		cmd_have;   /* words expected / fetched (header incl.) */
 	uint64_t cmd_start; /* time the command's header was fetched */
 	uint64_t wait_time;
 
 	/* display lists: the list being executed and the return stack */
 	uint32_t list_depth; /* 0: commands come from the FIFO or ring */
-	uint32_t list_pc; /* VRAM byte address of the next list word */
+	uint32_t list_pc;    /* VRAM byte address of the next list word */
 	uint32_t list_ret[RDC_CALL_DEPTH];
 
 	/* READBACK progress */

@@ -59,8 +59,8 @@ void rdc_dp_span_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 		    uint32_t *out);
 /* The same for row y of any surface s (inside s). */
-bool rdc_dp_read_row(struct rdc_dp *dp, const struct rdc_surface *s,
-		     int32_t y, int32_t xa, uint32_t n, uint32_t *out);
+bool rdc_dp_read_row(struct rdc_dp *dp, const struct rdc_surface *s, int32_t y,
+		     int32_t xa, uint32_t n, uint32_t *out);
 /*
  * Pixel at bit offset `bit` from p in a surface of `bpp` bits per pixel
  * (sub-byte pixels MSB first); the store masks v to bpp bits.
@@ -76,8 +76,7 @@ void rdc_dp_px_store(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v);
  * indexed format it picks src when a >= RDC_ALPHA_THRESHOLD, else dst.
  */
 uint32_t rdc_dp_aa_cmd(struct rdc_dp *dp, uint32_t op, const uint32_t *a);
-uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst,
-		      uint32_t a);
+uint32_t rdc_dp_blend(unsigned int fmt, uint32_t src, uint32_t dst, uint32_t a);
 
 /*
  * Filled-primitive helpers (pattern.c, poly.c).  dp_fill_span fills
@@ -93,8 +92,8 @@ void dp_fill_span(struct rdc_dp *dp, int32_t x0, int32_t x1, int32_t y);
 void dp_fill_poly(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
 		  bool nonzero);
 /* A run [xa, xb] of row y, inside the effective clip. */
-typedef void (*dp_span_fn)(struct rdc_dp *dp, int32_t y, int32_t xa,
-			   int32_t xb, void *ctx);
+typedef void (*dp_span_fn)(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb,
+			   void *ctx);
 /* dp_fill_poly's pixels, one call per maximal run of a row. */
 void dp_poly_scan(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
 		  bool nonzero, dp_span_fn span, void *ctx);
@@ -216,7 +215,7 @@ void dp_pen_flush(struct rdc_dp *dp);
  */
 struct dp_ellipse {
 	int64_t rx2, ry2, e1, e2; /* radii squared; the two tests, scaled */
-	int64_t b, w1, w2, prev; /* row; widest a of each test; last row's */
+	int64_t b, w1, w2, prev;  /* row; widest a of each test; last row's */
 };
 
 void dp_ellipse_begin(struct dp_ellipse *e, uint32_t rx, uint32_t ry);
@@ -226,19 +225,19 @@ bool dp_ellipse_row(struct dp_ellipse *e, uint32_t *t, uint32_t *amin,
 /* ARC (arc.c): sine and cosine of a 1/65536-turn angle in 16.16. */
 int32_t dp_sin(uint32_t a);
 int32_t dp_cos(uint32_t a);
-void dp_arc(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
-	    uint32_t ry, uint32_t start, uint32_t end, uint32_t mode);
+void dp_arc(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
+	    uint32_t start, uint32_t end, uint32_t mode);
 uint32_t dp_cmd_arc(struct rdc_dp *dp, uint32_t fl, const uint32_t *a);
 /* BEZIER, HERMITE, BSPLINE (curve.c) */
-uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl,
-		      uint32_t len, const uint32_t *a);
+uint32_t dp_cmd_curve(struct rdc_dp *dp, uint32_t op, uint32_t fl, uint32_t len,
+		      const uint32_t *a);
 
 /*
  * Image commands (image.c, decode.c, filter.c): DECODE, HISTOGRAM,
  * MAP_BUILD, MAP_APPLY, MAP_CLUT, CONVOLVE, THRESHOLD; an enum rdc_err.
  */
-uint32_t dp_cmd_image(struct rdc_dp *dp, uint32_t op, uint32_t fl,
-		      uint32_t len, const uint32_t *a);
+uint32_t dp_cmd_image(struct rdc_dp *dp, uint32_t op, uint32_t fl, uint32_t len,
+		      const uint32_t *a);
 
 /*
  * 3D (geom3d.c): the commands 0x40..0x5f (an enum rdc_err) and the reset

@@ -12,8 +12,8 @@
  */
 #include "img_int.h"
 
-static const int32_t sobel_x[9] = {-1, 0, 1, -2, 0, 2, -1, 0, 1};
-static const int32_t sobel_y[9] = {-1, -2, -1, 0, 0, 0, 1, 2, 1};
+static const int32_t sobel_x[9] = { -1, 0, 1, -2, 0, 2, -1, 0, 1 };
+static const int32_t sobel_y[9] = { -1, -2, -1, 0, 0, 0, 1, 2, 1 };
 
 struct conv {
 	const struct rdc_surface *src;
@@ -118,8 +118,8 @@ uint32_t dp_cmd_convolve(struct rdc_dp *dp, uint32_t fl, uint32_t len,
 	if ((fl & ~(RDC_CONV_MODE | RDC_CONV_ABS)) ||
 	    cv.mode > RDC_CONV_SOBEL || (cv.mode == RDC_CONV_SOBEL && cv.abs))
 		return RDC_ERR_ARG;
-	if (len != (cv.mode == RDC_CONV_KERNEL ? RDC_CONV_KERNEL_WORDS
-					       : RDC_CONV_SOBEL_WORDS))
+	if (len != (cv.mode == RDC_CONV_KERNEL ? RDC_CONV_KERNEL_WORDS :
+						 RDC_CONV_SOBEL_WORDS))
 		return RDC_ERR_LENGTH;
 	sx = RDC_X(a[0]);
 	sy = RDC_Y(a[0]);

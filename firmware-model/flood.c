@@ -27,8 +27,8 @@
  */
 #include "dp_int.h"
 
-#define FLOOD_READ 128u /* pixels read per span */
-#define FLOOD_SLOTS 3u /* rows cached: y - 1, y, y + 1 */
+#define FLOOD_READ  128u /* pixels read per span */
+#define FLOOD_SLOTS 3u	 /* rows cached: y - 1, y, y + 1 */
 
 struct flood {
 	struct rdc_dp *dp;

@@ -326,8 +326,9 @@ static uint32_t view_set(struct rdc_dp *dp, bool persp, const int32_t *p)
 			eye[j] = (int32_t)v;
 		}
 	} else {
-		int64_t d[3] = {2 * (int64_t)prp[0] - cu2,
-				2 * (int64_t)prp[1] - cv2, 2 * (int64_t)prp[2]};
+		int64_t d[3] = { 2 * (int64_t)prp[0] - cu2,
+				 2 * (int64_t)prp[1] - cv2,
+				 2 * (int64_t)prp[2] };
 
 		for (j = 0; j < 3; j++)
 			t[j] = R[0][j] * (d[0] >> 4) + R[1][j] * (d[1] >> 4) +
@@ -593,7 +594,7 @@ static const int32_t view_reset[18] = {
 void dp_3d_reset(struct rdc_dp *dp)
 {
 	struct rdc_dp_3d *g = &dp->g3;
-	struct rdc_timing tm = {0};
+	struct rdc_timing tm = { 0 };
 	int i;
 
 	mat_identity(g->ctm);

@@ -15,8 +15,8 @@
 
 /* ---- pixels and channels -------------------------------------------- */
 
-static const struct img_chan img_rgb565[3] = {{11, 5}, {5, 6}, {0, 5}};
-static const struct img_chan img_rgb888[3] = {{16, 8}, {8, 8}, {0, 8}};
+static const struct img_chan img_rgb565[3] = { { 11, 5 }, { 5, 6 }, { 0, 5 } };
+static const struct img_chan img_rgb888[3] = { { 16, 8 }, { 8, 8 }, { 0, 8 } };
 
 const struct img_chan *img_channels(uint32_t fmt, uint32_t *n)
 {
@@ -218,8 +218,8 @@ static uint32_t cmd_map_build(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 	default: /* RDC_MAP_EQUALIZE: s_k = (L - 1) sum_{j <= k} n_j / n */
 		for (v = 0; v < RDC_DP_HIST_BINS; v++) {
 			cdf += hist[v];
-			map[v] = n ? (uint8_t)((255 * cdf + n / 2) / n)
-				   : (uint8_t)v;
+			map[v] = n ? (uint8_t)((255 * cdf + n / 2) / n) :
+				     (uint8_t)v;
 		}
 		break;
 	}
@@ -266,15 +266,16 @@ static uint32_t point_op(struct rdc_dp *dp, uint32_t op, uint32_t sel,
 				return RDC_ERR_SURFACE;
 			for (i = 0; i < n; i++) {
 				if (op == RDC_OP_MAP_APPLY)
-					dp->px[i] =
-						map_pixel(dp->img.map,
-							  s->format, dp->px[i]);
+					dp->px[i] = map_pixel(dp->img.map,
+							      s->format,
+							      dp->px[i]);
 				else
 					dp->px[i] = img_intensity(s->format,
 								  dp->px[i],
-								  sel) >= level
-							    ? dp->st.fg
-							    : dp->st.bg;
+								  sel) >=
+								    level ?
+							    dp->st.fg :
+							    dp->st.bg;
 			}
 			rdc_dp_span_px(dp, y, x, n, 0, dp->px, NULL);
 		}

@@ -66,10 +66,9 @@ static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
  * rdc_dp_line_steps' loop with its runs queued: the same runs, clipped
  * the same way, as dp_span_fill / dp_col_fill would draw them.
  */
-static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c,
-		       bool xmajor, int32_t u0, int32_t v0, int32_t sv,
-		       int64_t n, int64_t m, int64_t ilo, int64_t ihi,
-		       int64_t j, int64_t rem)
+static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
+		       int32_t u0, int32_t v0, int32_t sv, int64_t n, int64_t m,
+		       int64_t ilo, int64_t ihi, int64_t j, int64_t rem)
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	uint32_t bytes = rdc_format_bpp(s->format) / 8;
@@ -83,7 +82,7 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c,
 	 * window refuses takes the port call dp_runs_flush would make.
 	 */
 	bool direct = bytes == 4 && !rdc_rop_reads_dst(dp->st.rop);
-	struct rdc_port_window w = {0};
+	struct rdc_port_window w = { 0 };
 	struct rdc_port_run one;
 	uint64_t pixels = 0;
 	uint32_t fg = 0;

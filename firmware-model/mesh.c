@@ -243,8 +243,8 @@ void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 			for (i = 0; i < 3; i++) {
 				uint32_t a = ix[i], b = ix[(i + 1) % 3];
 
-				dp->v3_edge[nedge++] =
-					RDC_MIN(a, b) << 16 | RDC_MAX(a, b);
+				dp->v3_edge[nedge++] = RDC_MIN(a, b) << 16 |
+						       RDC_MAX(a, b);
 			}
 			continue;
 		}
@@ -255,18 +255,18 @@ void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 				col[i] = g3_pixel(dp, rgb[i]);
 		} else {
 			uint32_t c = lit ? g3_pixel(dp, face_rgb(dp, v[0], v[1],
-								 v[2], two))
-					 : dp->st.fg;
+								 v[2], two)) :
+					   dp->st.fg;
 
 			for (i = 0; i < n; i++)
 				col[i] = c;
 		}
 		/* a fan over the clipped polygon */
 		for (i = 1; i + 1 < n; i++) {
-			int32_t tx[3] = {x[0], x[i], x[i + 1]};
-			int32_t ty[3] = {y[0], y[i], y[i + 1]};
-			uint32_t tz[3] = {z[0], z[i], z[i + 1]};
-			uint32_t tc[3] = {col[0], col[i], col[i + 1]};
+			int32_t tx[3] = { x[0], x[i], x[i + 1] };
+			int32_t ty[3] = { y[0], y[i], y[i + 1] };
+			uint32_t tz[3] = { z[0], z[i], z[i + 1] };
+			uint32_t tc[3] = { col[0], col[i], col[i + 1] };
 
 			dp_tri_draw(dp, tx, ty, tc, tz, gouraud);
 		}

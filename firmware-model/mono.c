@@ -52,8 +52,8 @@ static inline uint32_t bits_byte(const struct row_src *rs, uint32_t r,
  * in dp->px (set bits in dp->on): a byte of bits is fetched once for its
  * eight pixels.
  */
-static void bits_expand(struct rdc_dp *dp, const struct row_src *rs,
-			uint32_t r, uint32_t bx, uint32_t n)
+static void bits_expand(struct rdc_dp *dp, const struct row_src *rs, uint32_t r,
+			uint32_t bx, uint32_t n)
 {
 	uint32_t i = 0, fg = rs->fg, bg = rs->bg;
 
@@ -76,7 +76,7 @@ static void bits_expand(struct rdc_dp *dp, const struct row_src *rs,
  * 4-pixel groups from dp->nibble_px (nibble_fill); otherwise, and at the
  * ragged ends, pixel by pixel.
  */
-#define BIT_PX(q, k)                                                           \
+#define BIT_PX(q, k) \
 	rdc_st32((q) + 4 * (k), bg ^ (diff & -((byte >> (7 - (k))) & 1)))
 
 static inline void bits_write32(struct rdc_dp *dp, uint8_t *q,
@@ -153,8 +153,7 @@ static inline void mono8_rows32(const struct rdc_dp *dp, uint8_t *q,
  */
 #define NIBBLE_MIN_PX 32u
 
-static bool nibble_fill(struct rdc_dp *dp, uint32_t fg, uint32_t bg,
-			uint64_t n)
+static bool nibble_fill(struct rdc_dp *dp, uint32_t fg, uint32_t bg, uint64_t n)
 {
 	uint8_t pair[4][8]; /* pair[u]: pixel k is FG if bit 1 - k of u */
 	unsigned int v;
@@ -253,8 +252,9 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 	int64_t row, col;
 
 	if (rs->kind != SRC_HOST && !rs->transparent && !dp->ref_paths &&
-	    dp->st.rop == RDC_ROP_COPY && dp->st.dst.format == RDC_FMT_XRGB8888 &&
-	    xa < xb && xb - xa <= (int64_t)RDC_DP_CHUNK) {
+	    dp->st.rop == RDC_ROP_COPY &&
+	    dp->st.dst.format == RDC_FMT_XRGB8888 && xa < xb &&
+	    xb - xa <= (int64_t)RDC_DP_CHUNK) {
 		rows_text32(dp, x, y, xa, xb, ya, yb, rs);
 		return;
 	}
@@ -269,8 +269,8 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 
 			if (rs->kind != SRC_HOST && !dp->ref_paths) {
 				bits_expand(dp, rs, r, (uint32_t)(col - x), n);
-				rdc_dp_span_px(dp, (int32_t)row,
-					       (int32_t)col, n, 0, dp->px,
+				rdc_dp_span_px(dp, (int32_t)row, (int32_t)col,
+					       n, 0, dp->px,
 					       rs->transparent ? dp->on : NULL);
 				continue;
 			}
@@ -281,21 +281,21 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 
 				switch (rs->kind) {
 				case SRC_HOST:
-					dp->px[i] = word_px(rs->data +
-							    (size_t)r * rs->wpr,
-							    rs->bpp,
-							    bx * rs->bpp);
+					dp->px[i] = word_px(
+						rs->data + (size_t)r * rs->wpr,
+						rs->bpp, bx * rs->bpp);
 					dp->on[i] = 1;
 					continue;
 				case SRC_MONO:
-					bit = word_byte(rs->data +
-							(size_t)r * rs->wpr,
-							bx / 8);
+					bit = word_byte(
+						rs->data + (size_t)r * rs->wpr,
+						bx / 8);
 					break;
 				default: /* SRC_TEXT: r is the glyph row */
 					bit = rdc_font8x16[word_byte(rs->data,
 								     bx / 8) *
-								   16 + r];
+								   16 +
+							   r];
 					break;
 				}
 				set = (bit >> (7 - bx % 8)) & 1;
@@ -305,8 +305,8 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 			if (rs->kind == SRC_HOST)
 				dp_blit_span(dp, (int32_t)row, (int32_t)col, n);
 			else
-				rdc_dp_span_px(dp, (int32_t)row,
-					       (int32_t)col, n, 0, dp->px,
+				rdc_dp_span_px(dp, (int32_t)row, (int32_t)col,
+					       n, 0, dp->px,
 					       rs->transparent ? dp->on : NULL);
 		}
 	}
@@ -317,7 +317,8 @@ void rdc_dp_host_blit(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 {
 	unsigned int fmt = dp->st.dst.format;
 	struct row_src rs = {
-		.kind = SRC_HOST, .data = data,
+		.kind = SRC_HOST,
+		.data = data,
 		.wpr = rdc_dp_words_per_row(fmt, w),
 		.bpp = rdc_format_bpp(fmt),
 	};
@@ -330,9 +331,12 @@ void rdc_dp_mono(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		 uint32_t h, const uint32_t *data, bool transparent)
 {
 	struct row_src rs = {
-		.kind = SRC_MONO, .data = data,
+		.kind = SRC_MONO,
+		.data = data,
 		.wpr = rdc_dp_words_per_row(RDC_FMT_I1, w),
-		.fg = dp->st.fg, .bg = dp->st.bg, .transparent = transparent,
+		.fg = dp->st.fg,
+		.bg = dp->st.bg,
+		.transparent = transparent,
 	};
 
 	rows_draw(dp, x, y, w, h, &rs);
@@ -346,8 +350,11 @@ void rdc_dp_text(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t count,
 		 const uint32_t *chars, bool transparent)
 {
 	struct row_src rs = {
-		.kind = SRC_TEXT, .data = chars,
-		.fg = dp->st.fg, .bg = dp->st.bg, .transparent = transparent,
+		.kind = SRC_TEXT,
+		.data = chars,
+		.fg = dp->st.fg,
+		.bg = dp->st.bg,
+		.transparent = transparent,
 	};
 
 	rows_draw(dp, x, y, count * RDC_GLYPH_W, RDC_GLYPH_H, &rs);

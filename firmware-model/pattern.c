@@ -8,9 +8,9 @@
  */
 #include "dp_int.h"
 
-#define PAT_SIZE 8
-#define PAT_MASK (PAT_SIZE - 1)
-#define PAT_MONO_WORDS 2 /* 8 rows of 8 bits */
+#define PAT_SIZE	8
+#define PAT_MASK	(PAT_SIZE - 1)
+#define PAT_MONO_WORDS	2 /* 8 rows of 8 bits */
 #define PAT_COLOR_WORDS (PAT_SIZE * PAT_SIZE)
 
 /*
@@ -64,8 +64,8 @@ void dp_fill_span(struct rdc_dp *dp, int32_t x0, int32_t x1, int32_t y)
 		uint32_t i;
 
 		for (i = 0; i < n; i++)
-			dp->on[i] = dp_pat_value(dp, x + (int32_t)i, y,
-						 &dp->px[i]);
+			dp->on[i] =
+				dp_pat_value(dp, x + (int32_t)i, y, &dp->px[i]);
 		rdc_dp_span_px(dp, y, x, n, 0, dp->px,
 			       transparent ? dp->on : NULL);
 	}

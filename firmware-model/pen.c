@@ -16,7 +16,7 @@
 #include "dp_int.h"
 
 #define PEN_FRAC 8 /* fractional bits of the stroke geometry */
-#define PEN_ONE (1 << PEN_FRAC)
+#define PEN_ONE	 (1 << PEN_FRAC)
 /*
  * Miters longer than this many half-widths turn into bevels: with unit normals
  * n1, n2 the miter is h * sqrt(2 / (1 + n1.n2)), so a limit of 4 is 1 + n1.n2
@@ -90,8 +90,8 @@ static bool convex_row(const int64_t *vx, const int64_t *vy, unsigned int n,
  * Row y of the disk of radius r at (px, py): the centres strictly inside it, as
  * [*xa, *xb).
  */
-static bool disk_row(int64_t px, int64_t py, int64_t r, int64_t y,
-		     int64_t *xa, int64_t *xb)
+static bool disk_row(int64_t px, int64_t py, int64_t r, int64_t y, int64_t *xa,
+		     int64_t *xb)
 {
 	int64_t dy = y * PEN_ONE - py, d = r * r - dy * dy, s;
 
@@ -133,7 +133,7 @@ void dp_pen_flush(struct rdc_dp *dp)
 		y1 = RDC_MAX(y1, pc->y1);
 	}
 	for (y = y0; y <= y1; y++) {
-		int32_t (*sp)[2] = dp->pen_span;
+		int32_t(*sp)[2] = dp->pen_span;
 
 		for (i = 0, m = 0; i < n; i++) {
 			const struct rdc_pen_piece *pc = &dp->pen_piece[i];
@@ -214,8 +214,7 @@ void dp_pen_fill_convex(struct rdc_dp *dp, const struct pen_vec *v,
 /* Disk of radius r (24.8) at p. */
 static void pen_disk(struct rdc_dp *dp, struct pen_vec p, int64_t r)
 {
-	struct rdc_pen_piece *pc = pen_queue(dp, dp_div_floor(p.y - r,
-							      PEN_ONE),
+	struct rdc_pen_piece *pc = pen_queue(dp, dp_div_floor(p.y - r, PEN_ONE),
 					     dp_div_ceil(p.y + r, PEN_ONE));
 
 	if (!pc)
@@ -287,7 +286,7 @@ static void pen_body(struct rdc_dp *dp, struct pen_vec a, struct pen_vec b,
 		     struct pen_vec nrm)
 {
 	struct pen_vec q[4] = { pt_add(a, nrm, 1), pt_add(b, nrm, 1),
-			       pt_add(b, nrm, -1), pt_add(a, nrm, -1) };
+				pt_add(b, nrm, -1), pt_add(a, nrm, -1) };
 
 	dp_pen_fill_convex(dp, q, 4);
 }
@@ -364,12 +363,13 @@ static bool dash_on(const struct rdc_dp *dp, int64_t g)
 {
 	const struct rdc_dp_state *st = &dp->st;
 
-	return (st->dash_bits >> ((uint64_t)(g + st->dash_offset) %
-				  st->dash_len)) & 1;
+	return (st->dash_bits >>
+		((uint64_t)(g + st->dash_offset) % st->dash_len)) &
+	       1;
 }
 
 static struct pen_vec pen_at(struct pen_vec a, struct pen_vec b, int64_t i,
-			    int64_t n)
+			     int64_t n)
 {
 	struct pen_vec r = {
 		a.x + dp_div_round((b.x - a.x) * i, n),
@@ -423,7 +423,9 @@ static void seg_draw(struct dp_stroke *sk, int32_t x0, int32_t y0, int32_t x1,
 			 * not one step past it.
 			 */
 			int64_t s = i == 1 && skip_first &&
-						dash_on(dp, sk->base) ? 0 : i;
+						    dash_on(dp, sk->base) ?
+					    0 :
+					    i;
 
 			if (!n)
 				pen_dot(dp, a);
@@ -516,8 +518,8 @@ static void stroke_finish(struct dp_stroke *sk, bool closed)
 		return;
 	}
 	if (closed && sk->segs > 1) {
-		int64_t turn = (int64_t)sk->ldx * sk->fdy -
-			       (int64_t)sk->ldy * sk->fdx;
+		int64_t turn =
+			(int64_t)sk->ldx * sk->fdy - (int64_t)sk->ldy * sk->fdx;
 
 		pen_join(dp, pen_pixel(sk->x0, sk->y0), sk->lnrm, sk->fnrm,
 			 turn);
@@ -547,8 +549,7 @@ uint32_t dp_cmd_set_dash(struct rdc_dp *dp, uint32_t bits, uint32_t v)
 {
 	uint32_t len = FIELD_GET(RDC_DASH_LEN, v);
 
-	if (len > RDC_DASH_MAX_LEN ||
-	    (v & ~(RDC_DASH_LEN | RDC_DASH_OFFSET)))
+	if (len > RDC_DASH_MAX_LEN || (v & ~(RDC_DASH_LEN | RDC_DASH_OFFSET)))
 		return RDC_ERR_ARG;
 	dp->st.dash_bits = bits;
 	dp->st.dash_len = len;

@@ -32,9 +32,9 @@
 #include "dp_int.h"
 
 #define FX_SHIFT 16
-#define FX_ONE ((int64_t)1 << FX_SHIFT)
-#define FX_HALF (FX_ONE / 2)
-#define ET_NONE 0xffffu
+#define FX_ONE	 ((int64_t)1 << FX_SHIFT)
+#define FX_HALF	 (FX_ONE / 2)
+#define ET_NONE	 0xffffu
 
 /* parent codes of the clip sides (>= 0: an edge of the input polygon) */
 enum { SIDE_X0 = -1, SIDE_X1 = -2, SIDE_Y0 = -3, SIDE_Y1 = -4 };
@@ -49,8 +49,7 @@ struct pctx {
 	struct rdc_rect c;
 };
 
-static void parent_line(const struct pctx *pc, int32_t parent,
-			struct pline *l)
+static void parent_line(const struct pctx *pc, int32_t parent, struct pline *l)
 {
 	uint32_t i, j;
 
@@ -124,7 +123,8 @@ static struct rdc_dp_pvert plane_cross(const struct pctx *pc,
 		if (d)
 			r.y = (int32_t)((int64_t)l.y0 * FX_ONE +
 					dp_div_round(((int64_t)bound - l.x0) *
-							  (l.y1 - l.y0) * FX_ONE,
+							     (l.y1 - l.y0) *
+							     FX_ONE,
 						     d));
 	} else {
 		r.y = (int32_t)((int64_t)bound * FX_ONE);
@@ -132,7 +132,8 @@ static struct rdc_dp_pvert plane_cross(const struct pctx *pc,
 		if (d)
 			r.x = (int32_t)((int64_t)l.x0 * FX_ONE +
 					dp_div_round(((int64_t)bound - l.y0) *
-							  (l.x1 - l.x0) * FX_ONE,
+							     (l.x1 - l.x0) *
+							     FX_ONE,
 						     d));
 	}
 	return r;
@@ -145,8 +146,7 @@ static struct rdc_dp_pvert plane_cross(const struct pctx *pc,
  * the parent of the edge it lies on.
  */
 static int32_t sh_pass(const struct pctx *pc, const struct rdc_dp_pvert *in,
-		       uint32_t m, struct rdc_dp_pvert *out,
-		       unsigned int plane)
+		       uint32_t m, struct rdc_dp_pvert *out, unsigned int plane)
 {
 	static const int32_t side[4] = { SIDE_X0, SIDE_X1, SIDE_Y0, SIDE_Y1 };
 	int32_t bound = plane_bound(&pc->c, plane);
@@ -238,7 +238,8 @@ static bool pts_ok(const int32_t *xy, uint32_t n)
 	uint32_t i;
 
 	for (i = 0; i < 2 * n; i++)
-		if (xy[i] < -RDC_POLY_COORD_LIMIT || xy[i] > RDC_POLY_COORD_LIMIT)
+		if (xy[i] < -RDC_POLY_COORD_LIMIT ||
+		    xy[i] > RDC_POLY_COORD_LIMIT)
 			return false;
 	return true;
 }
@@ -330,13 +331,15 @@ void dp_poly_scan(struct rdc_dp *dp, const int32_t *xy, uint32_t n,
 			uint16_t t = dp->poly_aet[k];
 			int32_t tq = dp->poly_e[t].q;
 
-			for (j = k; j > 0 && dp->poly_e[dp->poly_aet[j - 1]].q > tq;
+			for (j = k;
+			     j > 0 && dp->poly_e[dp->poly_aet[j - 1]].q > tq;
 			     j--)
 				dp->poly_aet[j] = dp->poly_aet[j - 1];
 			dp->poly_aet[j] = t;
 		}
 		for (k = 0; k < na; k++) {
-			const struct rdc_dp_edge *ed = &dp->poly_e[dp->poly_aet[k]];
+			const struct rdc_dp_edge *ed =
+				&dp->poly_e[dp->poly_aet[k]];
 			bool was = nonzero ? w != 0 : (w & 1);
 			bool now;
 

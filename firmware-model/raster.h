@@ -31,8 +31,7 @@ static inline uint32_t px_ld(const uint8_t *p, unsigned int bpp, uint32_t bit)
 	}
 }
 
-static inline void px_st(uint8_t *p, unsigned int bpp, uint32_t bit,
-			 uint32_t v)
+static inline void px_st(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v)
 {
 	unsigned int sh;
 	uint32_t m;
@@ -133,8 +132,8 @@ static inline uint32_t run_store32(uint8_t *q, const struct rdc_port_run *r,
 /* DST formats the run queue takes (see span.c). */
 bool dp_runs_ok(const struct rdc_dp *dp);
 /* The pixels of run r at p with colour fg through the ROP. */
-void dp_run_write(struct rdc_dp *dp, uint8_t *p,
-		  const struct rdc_port_run *r, uint32_t fg);
+void dp_run_write(struct rdc_dp *dp, uint8_t *p, const struct rdc_port_run *r,
+		  uint32_t fg);
 /* Charge and write the queued runs dp->runs[0, nruns). */
 void dp_runs_flush(struct rdc_dp *dp);
 /* Queue count pixels down from x, y (count 1: n pixels across). */

@@ -21,8 +21,8 @@ static inline void row_copy(uint8_t *d, const uint8_t *s, size_t n)
  * each row one memcpy of the colour staged in dp->px.  False (nothing
  * done) for other formats and ROPs.
  */
-static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb,
-			int32_t ya, int32_t ye)
+static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
+			int32_t ye)
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	struct rdc_hw *hw = dp->hw;
@@ -262,7 +262,8 @@ void rdc_dp_ellipse(struct rdc_dp *dp, int32_t cx, int32_t cy, uint32_t rx,
 		return;
 	if (ry == 0) {
 		if (fill)
-			dp_fill_span(dp, cx - (int32_t)rx, cx + (int32_t)rx, cy);
+			dp_fill_span(dp, cx - (int32_t)rx, cx + (int32_t)rx,
+				     cy);
 		else
 			dp_span_fill(dp, &c, cy, cx - (int32_t)rx,
 				     cx + (int32_t)rx, dp->st.fg);

@@ -142,8 +142,8 @@ bool dp_runs_ok(const struct rdc_dp *dp)
 }
 
 /* The pixels of run r at p with colour fg through the ROP. */
-void dp_run_write(struct rdc_dp *dp, uint8_t *p,
-		  const struct rdc_port_run *r, uint32_t fg)
+void dp_run_write(struct rdc_dp *dp, uint8_t *p, const struct rdc_port_run *r,
+		  uint32_t fg)
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	unsigned int bpp = rdc_format_bpp(s->format), rop = dp->st.rop;
@@ -226,7 +226,7 @@ void dp_runs_flush(struct rdc_dp *dp)
 	const struct rdc_surface *s = &dp->st.dst;
 	struct rdc_hw *hw = dp->hw;
 	unsigned int kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW :
-							     RDC_BUS_WRITE;
+							    RDC_BUS_WRITE;
 	uint32_t fg = dp->st.fg, i = 0, done;
 	const struct rdc_port_run *r;
 	uint8_t *p;
@@ -371,8 +371,8 @@ void rdc_dp_span_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 	span_emit(dp, y, xa, n, solid, vals, on);
 }
 
-bool rdc_dp_read_row(struct rdc_dp *dp, const struct rdc_surface *s,
-		     int32_t y, int32_t xa, uint32_t n, uint32_t *out)
+bool rdc_dp_read_row(struct rdc_dp *dp, const struct rdc_surface *s, int32_t y,
+		     int32_t xa, uint32_t n, uint32_t *out)
 {
 	unsigned int bpp = rdc_format_bpp(s->format);
 	uint64_t bit0 = (uint64_t)xa * bpp, bit1 = bit0 + (uint64_t)n * bpp;
@@ -382,7 +382,8 @@ bool rdc_dp_read_row(struct rdc_dp *dp, const struct rdc_surface *s,
 	if (!n)
 		return true;
 	p = rdc_port_span(dp->hw,
-			  s->base + (uint32_t)y * s->stride + (uint32_t)(bit0 / 8),
+			  s->base + (uint32_t)y * s->stride +
+				  (uint32_t)(bit0 / 8),
 			  (uint32_t)((bit1 + 7) / 8 - bit0 / 8), RDC_BUS_READ);
 	if (!p)
 		return false;

@@ -29,9 +29,9 @@
 
 #define TRI_VERTS 3
 #define TRI_WORDS 3 /* xy, colour, z */
-#define Z_MAX 0xffffu
-#define Z_BYTES 2u
-#define CH_MAX 4 /* colour channels + depth */
+#define Z_MAX	  0xffffu
+#define Z_BYTES	  2u
+#define CH_MAX	  4 /* colour channels + depth */
 
 struct tri {
 	int32_t x[TRI_VERTS], y[TRI_VERTS];
@@ -90,10 +90,11 @@ uint32_t dp_cmd_clear_z(struct rdc_dp *dp, const uint32_t *a)
 		return RDC_ERR_NONE;
 	for (y = c.y0; y < c.y1; y++) {
 		uint32_t n = (uint32_t)(c.x1 - c.x0), i;
-		uint8_t *p = rdc_port_span(dp->hw,
-					   st->z_base + (uint32_t)y * st->z_stride +
-						   (uint32_t)c.x0 * Z_BYTES,
-					   n * Z_BYTES, RDC_BUS_WRITE);
+		uint8_t *p =
+			rdc_port_span(dp->hw,
+				      st->z_base + (uint32_t)y * st->z_stride +
+					      (uint32_t)c.x0 * Z_BYTES,
+				      n * Z_BYTES, RDC_BUS_WRITE);
 
 		if (!p)
 			continue;
@@ -129,8 +130,10 @@ static int64_t plane_num(const struct tri *t, unsigned int k, int32_t px,
 {
 	int64_t X = 2 * (int64_t)px + 1 - 2 * (int64_t)t->x[0];
 	int64_t Y = 2 * (int64_t)py + 1 - 2 * (int64_t)t->y[0];
-	int64_t ex1 = (int64_t)t->x[1] - t->x[0], ey1 = (int64_t)t->y[1] - t->y[0];
-	int64_t ex2 = (int64_t)t->x[2] - t->x[0], ey2 = (int64_t)t->y[2] - t->y[0];
+	int64_t ex1 = (int64_t)t->x[1] - t->x[0],
+		ey1 = (int64_t)t->y[1] - t->y[0];
+	int64_t ex2 = (int64_t)t->x[2] - t->x[0],
+		ey2 = (int64_t)t->y[2] - t->y[0];
 
 	return t->d1[k] * (X * ey2 - ex2 * Y) + t->d2[k] * (ex1 * Y - X * ey1);
 }
@@ -182,7 +185,8 @@ static void tri_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb,
 			dp->on[i] = 1;
 		}
 		if (zon) {
-			unsigned int kind = t->ztest && t->zwrite ? RDC_BUS_RMW :
+			unsigned int kind = t->ztest && t->zwrite ?
+						    RDC_BUS_RMW :
 					    t->ztest ? RDC_BUS_READ :
 						       RDC_BUS_WRITE;
 			uint8_t *p = rdc_port_span(

@@ -43,7 +43,7 @@ static bool xf_is_identity(const int32_t m[3][3])
 
 bool dp_xform(const struct rdc_dp *dp, int32_t *x, int32_t *y)
 {
-	const int32_t (*m)[3] = dp->st.xf;
+	const int32_t(*m)[3] = dp->st.xf;
 	int64_t px = *x, py = *y, w, nx, ny, rx, ry;
 
 	if (dp->st.xf_identity)
@@ -137,8 +137,7 @@ static bool vp_axis(int32_t w0, int32_t w1, int32_t v0, int32_t v1,
 	return true;
 }
 
-uint32_t dp_cmd_set_viewport(struct rdc_dp *dp, uint32_t len,
-			     const uint32_t *a)
+uint32_t dp_cmd_set_viewport(struct rdc_dp *dp, uint32_t len, const uint32_t *a)
 {
 	int32_t wx0 = (int32_t)a[0], wy0 = (int32_t)a[1];
 	int32_t wx1 = (int32_t)a[2], wy1 = (int32_t)a[3];
@@ -172,7 +171,7 @@ uint32_t dp_cmd_set_viewport(struct rdc_dp *dp, uint32_t len,
 
 bool dp_xform_vec(const struct rdc_dp *dp, int32_t *x, int32_t *y)
 {
-	const int32_t (*m)[3] = dp->st.xf;
+	const int32_t(*m)[3] = dp->st.xf;
 	int64_t vx = *x, vy = *y, rx, ry;
 
 	if (dp->st.xf_identity)

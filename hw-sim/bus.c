@@ -163,9 +163,10 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 }
 
 /* Cost of a column run of rdc_port_runs, RDC_NEVER if it is refused. */
-static rdc_noinline uint64_t
-runs_column_cost(const struct rdc_hw *hw, const struct rdc_port_run *r,
-		 uint64_t stride, unsigned int kind, uint32_t *row)
+static rdc_noinline uint64_t runs_column_cost(const struct rdc_hw *hw,
+					      const struct rdc_port_run *r,
+					      uint64_t stride,
+					      unsigned int kind, uint32_t *row)
 {
 	uint64_t a = r->addr, cost = 0;
 	uint32_t k;
@@ -190,10 +191,11 @@ runs_column_cost(const struct rdc_hw *hw, const struct rdc_port_run *r,
  * is processed meanwhile, so lim holds for the whole batch.  Inlined with
  * kind a constant, the cost formula loses its switch.
  */
-static rdc_always_inline uint32_t
-runs_charge(const struct rdc_hw *hw, const struct rdc_port_run *r, uint32_t n,
-	    uint64_t stride, unsigned int kind, uint32_t *row, uint64_t *tp,
-	    uint64_t lim)
+static rdc_always_inline uint32_t runs_charge(const struct rdc_hw *hw,
+					      const struct rdc_port_run *r,
+					      uint32_t n, uint64_t stride,
+					      unsigned int kind, uint32_t *row,
+					      uint64_t *tp, uint64_t lim)
 {
 	const uint64_t size = hw->vram_size;
 	uint64_t t = *tp;

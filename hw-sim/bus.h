@@ -46,14 +46,14 @@
 #ifndef RDC_BUS_H
 #define RDC_BUS_H
 
-#define RDC_BUS_BYTES 8u /* 64-bit bus */
+#define RDC_BUS_BYTES	    8u	/* 64-bit bus */
 #define RDC_BUS_BURST_BEATS 16u /* 128 bytes a burst */
-#define RDC_DRAM_ROW_BYTES 2048u
-#define RDC_T_BEAT 1u
-#define RDC_T_ROW_MISS 6u
-#define RDC_T_TURN 2u /* read-to-write turnaround of an RMW burst */
-#define RDC_T_FIFO_WORD 1u
-#define RDC_T_DECODE 4u
+#define RDC_DRAM_ROW_BYTES  2048u
+#define RDC_T_BEAT	    1u
+#define RDC_T_ROW_MISS	    6u
+#define RDC_T_TURN	    2u /* read-to-write turnaround of an RMW burst */
+#define RDC_T_FIFO_WORD	    1u
+#define RDC_T_DECODE	    4u
 
 /*
  * The formulas as code, inline for the DP's run loops (bus.c charges

@@ -37,8 +37,7 @@ void rdc_fifo_push(struct rdc_hw *hw, uint32_t word)
 	rdc_fifo_traced(hw);
 }
 
-uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words,
-			  uint32_t n)
+uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words, uint32_t n)
 {
 	uint32_t i, tail;
 
@@ -184,8 +183,8 @@ uint32_t rdc_port_rdata_push(struct rdc_hw *hw, const uint32_t *w, uint32_t n)
 
 	n = RDC_MIN(n, RDC_RDATA_DEPTH - hw->rdata_count);
 	for (i = 0; i < n; i++) {
-		hw->rdata[(hw->rdata_head + hw->rdata_count) %
-			  RDC_RDATA_DEPTH] = w[i];
+		hw->rdata[(hw->rdata_head + hw->rdata_count) % RDC_RDATA_DEPTH] =
+			w[i];
 		hw->rdata_count++;
 	}
 	return n;

@@ -17,21 +17,21 @@
 #define CURSOR_ROW_BYTES (RDC_CURSOR_SIZE / 4) /* 2 bpp */
 
 static const struct rdc_timing rdc_presets[RDC_PRESET_COUNT] = {
-	[RDC_PRESET_320x200_70] = {400, 320, 328, 376, 225, 200, 206, 207, 6300,
-				   0},
-	[RDC_PRESET_640x480_60] = {800, 640, 656, 752, 525, 480, 490, 492,
-				   25175, 0},
-	[RDC_PRESET_800x600_60] = {1056, 800, 840, 968, 628, 600, 601, 605,
-				   40000,
-				   RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS},
-	[RDC_PRESET_1024x768_60] = {1344, 1024, 1048, 1184, 806, 768, 771, 777,
-				    65000, 0},
-	[RDC_PRESET_1280x720_60] = {1650, 1280, 1390, 1430, 750, 720, 725, 730,
-				    74250,
-				    RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS},
-	[RDC_PRESET_1920x1080_60] = {2200, 1920, 2008, 2052, 1125, 1080, 1084,
-				     1089, 148500,
-				     RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS},
+	[RDC_PRESET_320x200_70] = { 400, 320, 328, 376, 225, 200, 206, 207,
+				    6300, 0 },
+	[RDC_PRESET_640x480_60] = { 800, 640, 656, 752, 525, 480, 490, 492,
+				    25175, 0 },
+	[RDC_PRESET_800x600_60] = { 1056, 800, 840, 968, 628, 600, 601, 605,
+				    40000,
+				    RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
+	[RDC_PRESET_1024x768_60] = { 1344, 1024, 1048, 1184, 806, 768, 771, 777,
+				     65000, 0 },
+	[RDC_PRESET_1280x720_60] = { 1650, 1280, 1390, 1430, 750, 720, 725, 730,
+				     74250,
+				     RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
+	[RDC_PRESET_1920x1080_60] = { 2200, 1920, 2008, 2052, 1125, 1080, 1084,
+				      1089, 148500,
+				      RDC_CRTC_HSYNC_POS | RDC_CRTC_VSYNC_POS },
 };
 
 int rdc_preset_timing(uint32_t preset, struct rdc_timing *t)
@@ -182,8 +182,8 @@ static inline void convert_indexed(const uint32_t *clut, uint32_t *out,
  */
 #define XRGB_BLOCK 16u
 
-static rdc_noinline void
-convert_xrgb(uint32_t *restrict out, const uint8_t *restrict src, uint32_t w)
+static rdc_noinline void convert_xrgb(uint32_t *restrict out,
+				      const uint8_t *restrict src, uint32_t w)
 {
 	uint32_t k;
 

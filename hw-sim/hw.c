@@ -7,9 +7,9 @@
 
 #define HZ_PER_KHZ 1000u
 #define RGB_MASK   0x00ffffffu
-#define CONTROL_RW_BITS                                                        \
-	(RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_RING_EN |    \
-	 RDC_CONTROL_HALT_ON_ERR | RDC_CONTROL_CLUT_LATCH |                    \
+#define CONTROL_RW_BITS \
+	(RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_RING_EN | \
+	 RDC_CONTROL_HALT_ON_ERR | RDC_CONTROL_CLUT_LATCH | \
 	 RDC_CONTROL_CURSOR_EN)
 #define PINS_IN (RDC_PIN_RESET_N | RDC_PIN_BL_EN)
 
@@ -305,9 +305,9 @@ static uint32_t timing_reg(struct rdc_timing *t, uint32_t reg, uint32_t **p)
 
 static uint32_t status_reg(struct rdc_hw *hw)
 {
-	uint32_t s =
-		hw->dp_status & (RDC_STATUS_DP_BUSY | RDC_STATUS_DP_HALTED |
-				 RDC_STATUS_DP_WAIT);
+	uint32_t s = hw->dp_status &
+		     (RDC_STATUS_DP_BUSY | RDC_STATUS_DP_HALTED |
+		      RDC_STATUS_DP_WAIT);
 
 	if (!hw->fifo_count)
 		s |= RDC_STATUS_FIFO_EMPTY;

@@ -21,13 +21,13 @@
 #include "rdc_port.h"
 #include "rdc_regs.h"
 
-#define RDC_NEVER UINT64_MAX /* "no such time" */
-#define RDC_DEFAULT_CORE_HZ 100000000u
+#define RDC_NEVER		UINT64_MAX /* "no such time" */
+#define RDC_DEFAULT_CORE_HZ	100000000u
 #define RDC_FIFO_LOWWATER_RESET 64u /* FIFO_LOWWATER after reset */
 /* LINE_COMPARE after reset: beyond any V_TOTAL, so RDC_IRQ_LINE never fires */
 #define RDC_LINE_COMPARE_RESET RDC_CRTC_MAX_TOTAL
-#define RDC_CURSOR_FG_RESET 0x00ffffffu
-#define RDC_CURSOR_BG_RESET 0x00000000u
+#define RDC_CURSOR_FG_RESET    0x00ffffffu
+#define RDC_CURSOR_BG_RESET    0x00000000u
 
 struct rdc_hw;
 
@@ -81,15 +81,15 @@ typedef void (*rdc_frame_fn)(void *ctx, const uint32_t *xrgb, uint32_t width,
  *    changes it (a pop is stamped at the end of its fetch).
  */
 enum rdc_trace_event {
-	RDC_TRACE_REG_READ, /* a = offset, b = value read */
-	RDC_TRACE_REG_WRITE, /* a = offset, b = value written (host) */
+	RDC_TRACE_REG_READ,   /* a = offset, b = value read */
+	RDC_TRACE_REG_WRITE,  /* a = offset, b = value written (host) */
 	RDC_TRACE_VRAM_WRITE, /* a = address, b = bytes (host aperture) */
-	RDC_TRACE_VBLANK, /* a = frame number (low 32 bits) */
-	RDC_TRACE_ERROR, /* a = enum rdc_err, b = ERR_INFO */
-	RDC_TRACE_RESET, /* chip reset (power-on, SOFT_RESET, RESET_N) */
+	RDC_TRACE_VBLANK,     /* a = frame number (low 32 bits) */
+	RDC_TRACE_ERROR,      /* a = enum rdc_err, b = ERR_INFO */
+	RDC_TRACE_RESET,      /* chip reset (power-on, SOFT_RESET, RESET_N) */
 	RDC_TRACE_PINS, /* a = pin levels (RDC_PIN_*) now, b = pins changed */
 	RDC_TRACE_LINE, /* a = beam line starting, b = 1 in vertical blanking */
-	RDC_TRACE_DP, /* a = 1: the DP starts work, 0: it goes idle */
+	RDC_TRACE_DP,	/* a = 1: the DP starts work, 0: it goes idle */
 	RDC_TRACE_FIFO, /* a = command FIFO level in words */
 };
 
@@ -105,7 +105,7 @@ struct rdc_timing {
 
 struct rdc_hw_config {
 	uint32_t vram_size; /* bytes, multiple of 4 */
-	uint32_t core_hz; /* 0 = RDC_DEFAULT_CORE_HZ */
+	uint32_t core_hz;   /* 0 = RDC_DEFAULT_CORE_HZ */
 };
 
 /*
@@ -114,32 +114,32 @@ struct rdc_hw_config {
  * command starts and ends and how many pixels it wrote).
  */
 struct rdc_perf {
-	uint64_t busy; /* cycles the DP spent executing commands */
-	uint64_t stall; /* of which, cycles waiting behind scanout fetches */
+	uint64_t busy;	 /* cycles the DP spent executing commands */
+	uint64_t stall;	 /* of which, cycles waiting behind scanout fetches */
 	uint64_t pixels; /* pixels written by the DP */
-	uint32_t cmds; /* commands executed */
+	uint32_t cmds;	 /* commands executed */
 	uint32_t last_cycles; /* cycles of the last command */
 	uint32_t last_opcode;
 };
 
 /* CRTC working state (what was latched at the last vblank). */
 struct rdc_crtc {
-	struct rdc_timing shadow, cur; /* registers / in force */
-	uint32_t fb_base, fb_stride, fb_format; /* shadows */
+	struct rdc_timing shadow, cur;		   /* registers / in force */
+	uint32_t fb_base, fb_stride, fb_format;	   /* shadows */
 	uint32_t cur_base, cur_stride, cur_format; /* latched */
 	uint32_t line_compare;
 	uint32_t preset;
 	uint32_t cursor_base, cursor_pos, cursor_fg, cursor_bg;
 	uint8_t cursor_img[RDC_CURSOR_BYTES]; /* latched at vblank */
-	int running; /* a mode is in force and scanout is enabled */
-	uint64_t frame_start; /* time line 0 of this frame starts */
+	int running;	       /* a mode is in force and scanout is enabled */
+	uint64_t frame_start;  /* time line 0 of this frame starts */
 	uint64_t frame_cycles; /* core cycles a frame lasts */
-	uint32_t next_line; /* next line whose start is not yet processed */
+	uint32_t next_line;    /* next line whose start is not yet processed */
 	uint64_t next_line_time; /* its start time (RDC_NEVER if stopped) */
-	uint64_t fetch_end; /* end of the current scanout fetch window */
+	uint64_t fetch_end;	 /* end of the current scanout fetch window */
 	uint64_t frame_count;
-	int mode_valid; /* `cur` holds a mode that passed validation */
-	int in_vblank; /* beam in vertical blanking (TE pin level) */
+	int mode_valid;	  /* `cur` holds a mode that passed validation */
+	int in_vblank;	  /* beam in vertical blanking (TE pin level) */
 	int shadow_dirty; /* timing/format shadows written since the latch */
 	int mode_pending; /* `pending` goes in force at the next frame start */
 	struct rdc_timing pending;
@@ -164,15 +164,15 @@ struct rdc_hw {
 	/* registers */
 	uint32_t control, irq_status, irq_enable;
 	uint32_t err_code, err_info;
-	uint32_t pins_in; /* RESET_N, BL_EN as driven from outside */
-	uint32_t perf_hi_snap; /* HI half snapshotted by a LO read */
+	uint32_t pins_in;	/* RESET_N, BL_EN as driven from outside */
+	uint32_t perf_hi_snap;	/* HI half snapshotted by a LO read */
 	uint32_t perf_snap_reg; /* the HI register perf_hi_snap belongs to */
-	int in_reset; /* RESET_N held low */
+	int in_reset;		/* RESET_N held low */
 
 	struct rdc_bus bus;
 	struct rdc_crtc crtc;
 
-	uint32_t clut[RDC_CLUT_ENTRIES]; /* in force, 0x00RRGGBB */
+	uint32_t clut[RDC_CLUT_ENTRIES];	/* in force, 0x00RRGGBB */
 	uint32_t clut_shadow[RDC_CLUT_ENTRIES]; /* latched-mode writes */
 	uint32_t clut_dirty; /* shadow has entries to apply at vblank */
 	uint32_t clut_index;
@@ -218,7 +218,7 @@ struct rdc_hw {
 	 * RDC_TRACE_PINS / RDC_TRACE_DP fire on changes only.
 	 */
 	uint32_t pins_out; /* RDC_PIN_* */
-	int dp_active; /* the DP has work or is inside a command */
+	int dp_active;	   /* the DP has work or is inside a command */
 };
 
 /* ---- Host side ----------------------------------------------------------- */
@@ -288,8 +288,7 @@ void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
  * at a full FIFO instead of overflowing.  Returns how many words were
  * taken (all of them while RESET_N holds the chip, which ignores writes).
  */
-uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words,
-			  uint32_t n);
+uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words, uint32_t n);
 
 /*
  * Host access to VRAM through the aperture, at hw->now (not charged to the DP).
@@ -326,15 +325,15 @@ int rdc_hw_run_until_idle(struct rdc_hw *hw, uint64_t t);
  * cycle the DP ran out of work.
  */
 enum rdc_wait_test {
-	RDC_WAIT_TEST_NONE,	/* unused term */
-	RDC_WAIT_TEST_GE,	/* (reg & mask) >= value, unsigned */
-	RDC_WAIT_TEST_WRAP_GE,	/* (int32_t)((reg & mask) - value) >= 0 */
-	RDC_WAIT_TEST_EQ,	/* (reg & mask) == value */
+	RDC_WAIT_TEST_NONE,    /* unused term */
+	RDC_WAIT_TEST_GE,      /* (reg & mask) >= value, unsigned */
+	RDC_WAIT_TEST_WRAP_GE, /* (int32_t)((reg & mask) - value) >= 0 */
+	RDC_WAIT_TEST_EQ,      /* (reg & mask) == value */
 };
 
-#define RDC_WAIT_TEST_TERMS 2
+#define RDC_WAIT_TEST_TERMS  2
 #define RDC_WAIT_SLICE_FIRST 16u
-#define RDC_WAIT_SLICE_MAX 16384u
+#define RDC_WAIT_SLICE_MAX   16384u
 
 struct rdc_wait_cond {
 	uint32_t test; /* enum rdc_wait_test */
@@ -343,7 +342,7 @@ struct rdc_wait_cond {
 
 struct rdc_hw_wait {
 	struct rdc_wait_cond term[RDC_WAIT_TEST_TERMS];
-	bool needs_dp; /* RDC_HW_WAIT_HALTED if the DP halts */
+	bool needs_dp;	 /* RDC_HW_WAIT_HALTED if the DP halts */
 	uint64_t budget; /* simulated cycles from the start */
 	/* progress, set by rdc_hw_wait_begin */
 	uint64_t start, slice;
@@ -421,10 +420,10 @@ int rdc_preset_timing(uint32_t preset, struct rdc_timing *t);
  * Access kinds for rdc_port_span/rdc_port_column; OR in the PARTIAL flags when
  * the first/last byte is only partly written (sub-byte pixels).
  */
-#define RDC_BUS_READ 0u
-#define RDC_BUS_WRITE 1u
-#define RDC_BUS_RMW 2u /* read then write every beat (ROP reads dst) */
-#define RDC_BUS_KIND_MASK 3u
+#define RDC_BUS_READ	     0u
+#define RDC_BUS_WRITE	     1u
+#define RDC_BUS_RMW	     2u /* read then write every beat (ROP reads dst) */
+#define RDC_BUS_KIND_MASK    3u
 #define RDC_BUS_HEAD_PARTIAL 4u
 #define RDC_BUS_TAIL_PARTIAL 8u
 

@@ -18,7 +18,8 @@
 #define GENMASK(h, l) ((~0u >> (31 - (h))) & (~0u << (l)))
 #endif
 #ifndef FIELD_PREP
-#define FIELD_PREP(mask, val) (((uint32_t)(val) << __builtin_ctz(mask)) & (mask))
+#define FIELD_PREP(mask, val) \
+	(((uint32_t)(val) << __builtin_ctz(mask)) & (mask))
 #endif
 #ifndef FIELD_GET
 #define FIELD_GET(mask, reg) (((uint32_t)(reg) & (mask)) >> __builtin_ctz(mask))

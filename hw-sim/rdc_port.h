@@ -29,9 +29,9 @@
 #include <stdbool.h>
 #endif
 
-#define rdc_memcpy(d, s, n) __builtin_memcpy((d), (s), (n))
+#define rdc_memcpy(d, s, n)  __builtin_memcpy((d), (s), (n))
 #define rdc_memmove(d, s, n) __builtin_memmove((d), (s), (n))
-#define rdc_memset(d, c, n) __builtin_memset((d), (c), (n))
+#define rdc_memset(d, c, n)  __builtin_memset((d), (c), (n))
 
 /*
  * Hide a value from the optimiser (the kernel's OPTIMIZER_HIDE_VAR): a
@@ -46,15 +46,15 @@
 
 /* Inlining decisions the hot paths make on purpose. */
 #ifdef __KERNEL__
-#define rdc_noinline noinline
+#define rdc_noinline	  noinline
 #define rdc_always_inline __always_inline
 #else
-#define rdc_noinline __attribute__((__noinline__))
+#define rdc_noinline	  __attribute__((__noinline__))
 #define rdc_always_inline inline __attribute__((__always_inline__))
 #endif
 
-#define RDC_MIN(a, b) ((a) < (b) ? (a) : (b))
-#define RDC_MAX(a, b) ((a) > (b) ? (a) : (b))
+#define RDC_MIN(a, b)	  ((a) < (b) ? (a) : (b))
+#define RDC_MAX(a, b)	  ((a) > (b) ? (a) : (b))
 #define RDC_ARRAY_SIZE(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Little-endian loads and stores on byte pointers (VRAM is little-endian). */

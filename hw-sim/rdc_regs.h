@@ -20,6 +20,9 @@
 
 #include "rdc_bits.h"
 
+/* the map is laid out by hand, a bit under its register */
+/* clang-format off */
+
 #define RDC_ID_VALUE 0x31434452u /* "RDC1" little-endian */
 #define RDC_VERSION_VALUE 0x00010000u /* 1.0 */
 #define RDC_REG_WINDOW 0x400u
@@ -767,5 +770,7 @@ static inline int rdc_rop_reads_dst(unsigned int rop)
 }
 
 #include "rdc_image.h"
+
+/* clang-format on */
 
 #endif /* RDC_REGS_H */

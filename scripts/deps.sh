@@ -5,7 +5,7 @@
 # anyone else it prints the one apt-get line to run and fails.
 set -e
 
-PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev libusb-1.0-0-dev sigrok-cli libdrm-dev"
+PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev libusb-1.0-0-dev sigrok-cli libdrm-dev clang-format"
 # libgpiod's v2 API (GPIO lines): Debian 13 has it in main; Debian 12 only
 # in bookworm-backports, which is enabled for these two packages alone
 # (apt-get -t for them, the rest stays on bookworm).

@@ -66,7 +66,8 @@ static void fuzz_encoders(const uint32_t *pix, uint32_t w, uint32_t h,
 {
 	static uint32_t prev_w, prev_h;
 	size_t raw = (size_t)w * h * 4;
-	const size_t caps[] = {raw, sizeof(fuzz_enc), raw - RDC_MIN(raw, cut)};
+	const size_t caps[] = { raw, sizeof(fuzz_enc),
+				raw - RDC_MIN(raw, cut) };
 
 	for (uint32_t enc = 0; enc < RDC_ENC_COUNT_ + 1; enc++) {
 		for (size_t i = 0; i < RDC_ARRAY_SIZE(caps); i++) {

@@ -61,13 +61,13 @@
 
 static const uint8_t fz_token[] = "fuzz-token";
 
-#define fz_assert(c)                                                           \
-	do {                                                                   \
-		if (!(c)) {                                                    \
-			fprintf(stderr, "fuzz_rdcd: %s:%d: %s\n", __FILE__,    \
-				__LINE__, #c);                                 \
-			abort();                                               \
-		}                                                              \
+#define fz_assert(c) \
+	do { \
+		if (!(c)) { \
+			fprintf(stderr, "fuzz_rdcd: %s:%d: %s\n", __FILE__, \
+				__LINE__, #c); \
+			abort(); \
+		} \
 	} while (0)
 
 /* A request the client sent, whose reply it still waits for. */
@@ -566,7 +566,7 @@ static void fz_message(struct fz *z, struct fz_client *c, uint16_t type,
 		       const uint8_t *pl, uint32_t len)
 {
 	static uint8_t buf[RDC_PROTO_HDR_SIZE + 65536];
-	struct rdc_proto_hdr h = {.len = len, .type = type, .seq = c->seq++};
+	struct rdc_proto_hdr h = { .len = len, .type = type, .seq = c->seq++ };
 
 	rdc_proto_hdr_encode(buf, &h);
 	memcpy(buf + RDC_PROTO_HDR_SIZE, pl, len);

@@ -41,13 +41,13 @@
 #define FZ_MAX_WAIT 4000000u
 #define FZ_MAX_FILE (1 << 20)
 
-#define fz_assert(c)                                                           \
-	do {                                                                   \
-		if (!(c)) {                                                    \
-			fprintf(stderr, "fuzz_script: %s:%d: %s\n", __FILE__,  \
-				__LINE__, #c);                                 \
-			abort();                                               \
-		}                                                              \
+#define fz_assert(c) \
+	do { \
+		if (!(c)) { \
+			fprintf(stderr, "fuzz_script: %s:%d: %s\n", __FILE__, \
+				__LINE__, #c); \
+			abort(); \
+		} \
 	} while (0)
 
 void __real_rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w);

@@ -12,8 +12,8 @@
 
 #include "rdc.h"
 
-#define W 1024
-#define H 768
+#define W    1024
+#define H    768
 #define REPS 200
 
 static double now_s(void)

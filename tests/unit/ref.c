@@ -132,8 +132,8 @@ void rdc_ref_circle(int32_t cx, int32_t cy, uint32_t r, bool fill,
 
 	for (y = -n; y <= n; y++)
 		for (x = -n; x <= n; x++)
-			if (fill ? rdc_ref_circle_fill_has(r, x, y)
-				 : rdc_ref_circle_has(r, x, y))
+			if (fill ? rdc_ref_circle_fill_has(r, x, y) :
+				   rdc_ref_circle_has(r, x, y))
 				plot(ctx, cx + (int32_t)x, cy + (int32_t)y);
 }
 
@@ -144,7 +144,7 @@ void rdc_ref_ellipse(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 
 	for (y = -(int64_t)ry; y <= (int64_t)ry; y++)
 		for (x = -(int64_t)rx; x <= (int64_t)rx; x++)
-			if (fill ? rdc_ref_ellipse_fill_has(rx, ry, x, y)
-				 : rdc_ref_ellipse_has(rx, ry, x, y))
+			if (fill ? rdc_ref_ellipse_fill_has(rx, ry, x, y) :
+				   rdc_ref_ellipse_has(rx, ry, x, y))
 				plot(ctx, cx + (int32_t)x, cy + (int32_t)y);
 }

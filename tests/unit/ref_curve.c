@@ -52,7 +52,7 @@ struct rc_out {
 
 static void rc_emit(struct rc_out *o, int64_t nx, int64_t ny, int64_t den)
 {
-	struct rdc_ref_curve_pt p = {0, 0, false};
+	struct rdc_ref_curve_pt p = { 0, 0, false };
 
 	p.x = rc_round(nx, den, &p.near_half);
 	p.y = rc_round(ny, den, &p.near_half);
@@ -101,7 +101,7 @@ uint32_t rdc_ref_curve_points(uint32_t op, uint32_t steps, const int32_t *xy,
 			      uint32_t n, struct rdc_ref_curve_pt *out,
 			      uint32_t cap)
 {
-	struct rc_out o = {out, cap, 0};
+	struct rc_out o = { out, cap, 0 };
 	int64_t px[4], py[4], len, i, ns, k;
 
 	if (op != RDC_OP_BSPLINE) {

@@ -229,9 +229,9 @@ void rdc_ref_arc(int32_t cx, int32_t cy, uint32_t rx, uint32_t ry,
 				py = -(rl_wide)y * 16384;
 			bool in;
 
-			if (mode == RDC_ARC_OUTLINE
-				    ? !rdc_ref_ellipse_has(rx, ry, x, y)
-				    : !rdc_ref_ellipse_fill_has(rx, ry, x, y))
+			if (mode == RDC_ARC_OUTLINE ?
+				    !rdc_ref_ellipse_has(rx, ry, x, y) :
+				    !rdc_ref_ellipse_fill_has(rx, ry, x, y))
 				continue;
 			if (!r.sweep)
 				in = true;

@@ -15,7 +15,10 @@ static inline struct rdc_surface tpp_surface(uint32_t fmt, uint32_t w,
 					     uint32_t h)
 {
 	struct rdc_surface s = {
-		.base = TPP_BASE, .width = w, .height = h, .format = fmt,
+		.base = TPP_BASE,
+		.width = w,
+		.height = h,
+		.format = fmt,
 		.stride = rdc_format_row_bytes(fmt, w),
 	};
 
@@ -65,9 +68,8 @@ static inline void tpp_fill_poly(struct tdp *t, const int32_t *xy, uint32_t n,
 }
 
 /* Cost of writing pixels [x, x + n) of row y of s (32 bpp or 8 bpp). */
-static inline uint64_t tpp_row_cost(uint32_t *open,
-				    const struct rdc_surface *s, int32_t x,
-				    int32_t y, uint32_t n, int kind)
+static inline uint64_t tpp_row_cost(uint32_t *open, const struct rdc_surface *s,
+				    int32_t x, int32_t y, uint32_t n, int kind)
 {
 	uint32_t bpp = tdp_bpp(s->format);
 

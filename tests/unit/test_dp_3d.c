@@ -312,7 +312,7 @@ static void put_mesh(struct tdp *t, const double (*p)[3],
 static void mesh(struct tdp *t, uint32_t fl, uint32_t nv, uint32_t nt)
 {
 	tdp_cmd(t, RDC_OP_MESH, fl, 4,
-		(const uint32_t[]){VBASE, nv, IBASE, nt});
+		(const uint32_t[]){ VBASE, nv, IBASE, nt });
 }
 
 static uint32_t px(struct tdp *t, int x, int y)
@@ -329,10 +329,10 @@ static void clear_screen(struct tdp *t)
 static struct ref_view std_view(bool persp)
 {
 	struct ref_view v = {
-		.vrp = {0, 0, 0},
-		.vpn = {0, 0, 1},
-		.vup = {0, 1, 0},
-		.prp = {0, 0, 4},
+		.vrp = { 0, 0, 0 },
+		.vpn = { 0, 0, 1 },
+		.vup = { 0, 1, 0 },
+		.prp = { 0, 0, 4 },
 		.umin = -2,
 		.umax = 2,
 		.vmin = -1.5,
@@ -392,7 +392,7 @@ static void check_tri(struct tdp *t, const struct ref_view *v,
 		      const double (*p)[3], unsigned long *exact_in,
 		      unsigned long *checked)
 {
-	static const uint16_t idx[3] = {0, 1, 2};
+	static const uint16_t idx[3] = { 0, 1, 2 };
 	struct hv h[16];
 	double s[16][3];
 	mat4 N;
@@ -413,8 +413,8 @@ static void check_tri(struct tdp *t, const struct ref_view *v,
 		for (int x = 0; x < SW; x++) {
 			bool on = px(t, x, y) != 0;
 			double d = n >= 3 ? poly_sdist((const double(*)[3])s, n,
-						       x + 0.5, y + 0.5)
-					  : -1e9;
+						       x + 0.5, y + 0.5) :
+					    -1e9;
 
 			if (on) {
 				if (d < -COV_TOL)
@@ -469,15 +469,15 @@ static void test_known_points(void **state)
 		double p[3];
 		int x, y;
 	} k[] = {
-		{false, {0, 0, 0}, 320, 240},
-		{false, {1.5, 0.75, 0}, 560, 120},
-		{false, {-1, -0.75, -3}, 160, 360},
-		{false, {1, 0, 1}, 480, 240},
-		{true, {0, 0, 0}, 320, 240},
-		{true, {1.5, 0.75, 0}, 560, 120},
+		{ false, { 0, 0, 0 }, 320, 240 },
+		{ false, { 1.5, 0.75, 0 }, 560, 120 },
+		{ false, { -1, -0.75, -3 }, 160, 360 },
+		{ false, { 1, 0, 1 }, 480, 240 },
+		{ true, { 0, 0, 0 }, 320, 240 },
+		{ true, { 1.5, 0.75, 0 }, 560, 120 },
 		/* z = -4: twice as far from the eye, half the offset */
-		{true, {2, 0, -4}, 480, 240},
-		{true, {-2, 1.5, -4}, 160, 120},
+		{ true, { 2, 0, -4 }, 480, 240 },
+		{ true, { -2, 1.5, -4 }, 160, 120 },
 	};
 
 	for (size_t i = 0; i < RDC_ARRAY_SIZE(k); i++) {
@@ -692,8 +692,8 @@ static void ref_shade(const struct ref_light *L, const double *nin,
 		for (int c = 0; c < 3; c++)
 			out[c] += L->col[i][c] *
 				  (L->mat_d[c] * nl +
-				   (rv > 0 ? L->mat_s[c] * pow(rv, L->shine)
-					   : 0));
+				   (rv > 0 ? L->mat_s[c] * pow(rv, L->shine) :
+					     0));
 	}
 	for (int c = 0; c < 3; c++)
 		out[c] = fmin(255, out[c] * 255);
@@ -727,14 +727,14 @@ static void test_lighting_ref(void **state)
 	struct tdp *t = *state;
 	uint32_t seed = 7777;
 	struct ref_view v = std_view(false);
-	double V[3] = {0, 0, 1};
+	double V[3] = { 0, 0, 1 };
 
 	send_view(t, &v);
 	for (int it = 0; it < 40; it++) {
-		struct ref_light L = {.nl = 1 + (int)(tdp_rand(&seed) % 3)};
+		struct ref_light L = { .nl = 1 + (int)(tdp_rand(&seed) % 3) };
 		double n[3], p[3][3], nr[3][3], a[3], b[3], want[3];
 		uint32_t m[4];
-		static const uint16_t idx[3] = {0, 1, 2};
+		static const uint16_t idx[3] = { 0, 1, 2 };
 
 		for (int c = 0; c < 3; c++) {
 			L.amb[c] = (tdp_rand(&seed) & 0xff) / 255.0;
@@ -744,7 +744,7 @@ static void test_lighting_ref(void **state)
 		}
 		L.shine = 1 + (int)(tdp_rand(&seed) % 60);
 		tdp_cmd(t, RDC_OP_SET_AMBIENT, 0, 1,
-			(const uint32_t[]){rgb_of(L.amb)});
+			(const uint32_t[]){ rgb_of(L.amb) });
 		m[0] = rgb_of(L.mat_a);
 		m[1] = rgb_of(L.mat_d);
 		m[2] = rgb_of(L.mat_s);
@@ -762,10 +762,11 @@ static void test_lighting_ref(void **state)
 			}
 			L.dir[i][2] = frand(&seed, 0.2, 1);
 			tdp_cmd(t, RDC_OP_SET_LIGHT, (uint32_t)i, 4,
-				(const uint32_t[]){rgb_of(L.col[i]),
-						   (uint32_t)fx(L.dir[i][0]),
-						   (uint32_t)fx(L.dir[i][1]),
-						   (uint32_t)fx(L.dir[i][2])});
+				(const uint32_t[]){
+					rgb_of(L.col[i]),
+					(uint32_t)fx(L.dir[i][0]),
+					(uint32_t)fx(L.dir[i][1]),
+					(uint32_t)fx(L.dir[i][2]) });
 		}
 		/* the reference takes the quantised inputs */
 		for (int c = 0; c < 3; c++) {
@@ -838,8 +839,10 @@ static void test_lighting_ref(void **state)
 static void test_lit_formats(void **state)
 {
 	struct tdp *t = *state;
-	static const double p[3][3] = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
-	static const uint16_t idx[3] = {0, 1, 2};
+	static const double p[3][3] = { { -1, -1, 0 },
+					{ 1, -1, 0 },
+					{ 0, 1, 0 } };
+	static const uint16_t idx[3] = { 0, 1, 2 };
 	struct ref_view v = std_view(false);
 	const uint32_t base = 0x100000; /* below the mesh buffers */
 	uint32_t seed = 4242;
@@ -850,13 +853,13 @@ static void test_lit_formats(void **state)
 		tdp_cmd(t, RDC_OP_SET_LIGHT, l, 0, NULL);
 	put_mesh(t, p, NULL, 3, idx, 1);
 	for (int it = 0; it < 30; it++) {
-		uint32_t fmt = (uint32_t[]){RDC_FMT_RGB565, RDC_FMT_RGB888,
-					    RDC_FMT_I8}[it % 3];
+		uint32_t fmt = (uint32_t[]){ RDC_FMT_RGB565, RDC_FMT_RGB888,
+					     RDC_FMT_I8 }[it % 3];
 		uint32_t amb = tdp_rand(&seed) & 0xffffff;
 		uint32_t mat = tdp_rand(&seed) & 0xffffff;
 		uint32_t ramp = 2 + tdp_rand(&seed) % 30, fg = 40, want, got;
 		uint32_t c[3], bpp = tdp_bpp(fmt);
-		struct rdc_surface s = {base, SW * 4, SW, SH, fmt};
+		struct rdc_surface s = { base, SW * 4, SW, SH, fmt };
 
 		for (int k = 0; k < 3; k++) {
 			uint32_t a = amb >> (16 - 8 * k) & 0xff;
@@ -907,9 +910,9 @@ static void test_lit_formats(void **state)
 		}
 		(void)bpp;
 	}
-	tdp_set_surface(
-		t, RDC_OP_SET_DST,
-		&(struct rdc_surface){0, SW * 4, SW, SH, RDC_FMT_XRGB8888});
+	tdp_set_surface(t, RDC_OP_SET_DST,
+			&(struct rdc_surface){ 0, SW * 4, SW, SH,
+					       RDC_FMT_XRGB8888 });
 }
 
 /* ---- the matrix stack and display lists ---------------------------- */
@@ -922,8 +925,10 @@ static void test_lit_formats(void **state)
 static void test_stack_lists(void **state)
 {
 	struct tdp *t = *state;
-	static const double p[3][3] = {{0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}};
-	static const uint16_t idx[3] = {0, 1, 2};
+	static const double p[3][3] = { { 0, 0, 0 },
+					{ 0.5, 0, 0 },
+					{ 0, 0.5, 0 } };
+	static const uint16_t idx[3] = { 0, 1, 2 };
 	const uint32_t list = 0x3c0000u;
 	uint32_t crc1, crc2;
 	struct ref_view v = std_view(true);
@@ -938,7 +943,7 @@ static void test_stack_lists(void **state)
 	rdc_st32(t->vram + list + 20, RDC_CMD(RDC_OP_RET, 0, 0));
 	clear_screen(t);
 	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
-	tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_Z, 1, (const uint32_t[]){4096});
+	tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_Z, 1, (const uint32_t[]){ 4096 });
 	for (int i = 0; i < 2; i++) {
 		tdp_cmd(t, RDC_OP_PUSH_MATRIX, 0, 0, NULL);
 		TDP_CMD(t, RDC_OP_TRANSLATE, (uint32_t)fx(i ? -1 : 1),
@@ -979,8 +984,10 @@ static void test_stack_lists(void **state)
 static void test_cull_facing(void **state)
 {
 	struct tdp *t = *state;
-	static const double p[3][3] = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
-	static const uint16_t ccw[3] = {0, 1, 2}, cw[3] = {0, 2, 1};
+	static const double p[3][3] = { { -1, -1, 0 },
+					{ 1, -1, 0 },
+					{ 0, 1, 0 } };
+	static const uint16_t ccw[3] = { 0, 1, 2 }, cw[3] = { 0, 2, 1 };
 	struct ref_view v = std_view(true);
 
 	send_view(t, &v);
@@ -1005,14 +1012,14 @@ static void test_painter_sort(void **state)
 {
 	struct tdp *t = *state;
 	static const double p[6][3] = {
-		{-1, -1, 1},	  {1, -1, 1},	   {0, 1, 1},
-		{-1.5, -1.2, -2}, {1.5, -1.2, -2}, {0, 1.5, -2},
+		{ -1, -1, 1 },	    { 1, -1, 1 },      { 0, 1, 1 },
+		{ -1.5, -1.2, -2 }, { 1.5, -1.2, -2 }, { 0, 1.5, -2 },
 	};
 	static const double nr[6][3] = {
-		{1, 0, 0.2},  {1, 0, 0.2},  {1, 0, 0.2},
-		{-1, 0, 0.2}, {-1, 0, 0.2}, {-1, 0, 0.2},
+		{ 1, 0, 0.2 },	{ 1, 0, 0.2 },	{ 1, 0, 0.2 },
+		{ -1, 0, 0.2 }, { -1, 0, 0.2 }, { -1, 0, 0.2 },
 	};
-	static const uint16_t idx[6] = {0, 1, 2, 3, 4, 5};
+	static const uint16_t idx[6] = { 0, 1, 2, 3, 4, 5 };
 	struct ref_view v = std_view(true);
 
 	send_view(t, &v);
@@ -1020,9 +1027,9 @@ static void test_painter_sort(void **state)
 	TDP_CMD(t, RDC_OP_SET_AMBIENT, 0);
 	TDP_CMD(t, RDC_OP_SET_MATERIAL, 0, 0xffffff, 0, 1);
 	tdp_cmd(t, RDC_OP_SET_LIGHT, 0, 4,
-		(const uint32_t[]){0xff0000, (uint32_t)fx(1), 0, 0});
+		(const uint32_t[]){ 0xff0000, (uint32_t)fx(1), 0, 0 });
 	tdp_cmd(t, RDC_OP_SET_LIGHT, 1, 4,
-		(const uint32_t[]){0x0000ff, (uint32_t)fx(-1), 0, 0});
+		(const uint32_t[]){ 0x0000ff, (uint32_t)fx(-1), 0, 0 });
 	put_mesh(t, p, nr, 6, idx, 2);
 	for (int k = 0; k < 2; k++) {
 		uint32_t c;
@@ -1055,10 +1062,14 @@ static void test_wire_edges_once(void **state)
 	struct tdp *t = *state;
 	/* parallel view, window 640 x 480 units: one unit a pixel */
 	struct ref_view v = std_view(false);
-	static const double p[4][3] = {
-		{-200, -100, 0}, {150, -120, 0}, {180, 90, 0}, {-170, 130, 0}};
-	static const uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
-	static const int e[5][2] = {{0, 1}, {1, 2}, {2, 0}, {2, 3}, {3, 0}};
+	static const double p[4][3] = { { -200, -100, 0 },
+					{ 150, -120, 0 },
+					{ 180, 90, 0 },
+					{ -170, 130, 0 } };
+	static const uint16_t idx[6] = { 0, 1, 2, 0, 2, 3 };
+	static const int e[5][2] = {
+		{ 0, 1 }, { 1, 2 }, { 2, 0 }, { 2, 3 }, { 3, 0 }
+	};
 	uint32_t crc1, crc2;
 
 	v.umin = -320, v.umax = 320, v.vmin = -240, v.vmax = 240;
@@ -1101,10 +1112,10 @@ static void test_zbuffer_ref(void **state)
 	struct tdp *t = *state;
 	struct ref_view v = std_view(true);
 	static const double p[6][3] = {
-		{-1.5, -1, -2}, {1.5, -1, 1},	{0, 1.2, -0.5},
-		{-1.5, 0.8, 1}, {1.2, 1, -2.5}, {0, -1.2, -0.5},
+		{ -1.5, -1, -2 }, { 1.5, -1, 1 },   { 0, 1.2, -0.5 },
+		{ -1.5, 0.8, 1 }, { 1.2, 1, -2.5 }, { 0, -1.2, -0.5 },
 	};
-	static const uint16_t idx[6] = {0, 1, 2, 3, 4, 5};
+	static const uint16_t idx[6] = { 0, 1, 2, 3, 4, 5 };
 	mat4 N;
 	double s[2][3][3];
 	long checked = 0;
@@ -1122,13 +1133,13 @@ static void test_zbuffer_ref(void **state)
 	clear_screen(t);
 	put_mesh(t, p, NULL, 6, idx, 2);
 	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST | RDC_Z_WRITE, 2,
-		(const uint32_t[]){ZBASE, SW * 2});
+		(const uint32_t[]){ ZBASE, SW * 2 });
 	TDP_CMD(t, RDC_OP_CLEAR_Z, 0xffff);
 	TDP_CMD(t, RDC_OP_SET_FG, 0xff0000);
-	tdp_cmd(t, RDC_OP_MESH, 0, 4, (const uint32_t[]){VBASE, 3, IBASE, 1});
+	tdp_cmd(t, RDC_OP_MESH, 0, 4, (const uint32_t[]){ VBASE, 3, IBASE, 1 });
 	TDP_CMD(t, RDC_OP_SET_FG, 0x0000ff);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){VBASE + 36, 3, IBASE, 1});
+		(const uint32_t[]){ VBASE + 36, 3, IBASE, 1 });
 	tdp_drain(t);
 	assert_int_equal(tdp_err(t), 0);
 	for (int y = 0; y < SH; y++) {
@@ -1180,9 +1191,9 @@ static void expect_err(struct tdp *t, uint32_t code)
 static void test_bad_input(void **state)
 {
 	struct tdp *t = *state;
-	static const double p[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-	static const uint16_t idx[3] = {0, 1, 2};
-	static const uint16_t bad[3] = {0, 1, 3};
+	static const double p[3][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+	static const uint16_t idx[3] = { 0, 1, 2 };
+	static const uint16_t bad[3] = { 0, 1, 3 };
 	struct ref_view v = std_view(true);
 	uint32_t h0, a[18], i;
 
@@ -1202,16 +1213,16 @@ static void test_bad_input(void **state)
 	mesh(t, 0, 3, RDC_MESH_MAX_TRIS + 1);
 	expect_err(t, RDC_ERR_RANGE);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){TDP_VRAM_SIZE - 24, 3, IBASE, 1});
+		(const uint32_t[]){ TDP_VRAM_SIZE - 24, 3, IBASE, 1 });
 	expect_err(t, RDC_ERR_RANGE);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){VBASE, 3, TDP_VRAM_SIZE - 4, 1});
+		(const uint32_t[]){ VBASE, 3, TDP_VRAM_SIZE - 4, 1 });
 	expect_err(t, RDC_ERR_RANGE);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){0xfffffff0u, 3, 0xfffffff0u, 0xffff});
+		(const uint32_t[]){ 0xfffffff0u, 3, 0xfffffff0u, 0xffff });
 	expect_err(t, RDC_ERR_RANGE);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){VBASE + 2, 3, IBASE, 1});
+		(const uint32_t[]){ VBASE + 2, 3, IBASE, 1 });
 	expect_err(t, RDC_ERR_RANGE);
 	/* lit Gouraud without normals; unknown flags */
 	mesh(t, RDC_MESH_LIT | RDC_MESH_GOURAUD, 3, 1);
@@ -1221,7 +1232,7 @@ static void test_bad_input(void **state)
 	/* a buffer exactly at the end of VRAM is fine */
 	memcpy(t->vram + TDP_VRAM_SIZE - 36, t->vram + VBASE, 36);
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
-		(const uint32_t[]){TDP_VRAM_SIZE - 36, 3, IBASE, 1});
+		(const uint32_t[]){ TDP_VRAM_SIZE - 36, 3, IBASE, 1 });
 	expect_err(t, 0);
 	/* the stack: 16 pushes fit, the 17th and an empty pop do not */
 	for (i = 0; i < RDC_MATRIX_STACK_DEPTH; i++)
@@ -1241,7 +1252,7 @@ static void test_bad_input(void **state)
 	expect_err(t, 0);
 	TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(10), 65536, 65536);
 	expect_err(t, RDC_ERR_RANGE);
-	tdp_cmd(t, RDC_OP_ROTATE, 3, 1, (const uint32_t[]){0});
+	tdp_cmd(t, RDC_OP_ROTATE, 3, 1, (const uint32_t[]){ 0 });
 	expect_err(t, RDC_ERR_ARG);
 	TDP_CMD(t, RDC_OP_MATRIX_LOAD, 1, 2, 3);
 	expect_err(t, RDC_ERR_LENGTH);
@@ -1278,7 +1289,9 @@ static void test_bad_input(void **state)
 	}
 	/* points at the eye and behind it: clipped, nothing behind drawn */
 	{
-		static const double q[3][3] = {{0, 0, 4}, {1, 0, 8}, {0, 1, 6}};
+		static const double q[3][3] = { { 0, 0, 4 },
+						{ 1, 0, 8 },
+						{ 0, 1, 6 } };
 
 		tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
 		clear_screen(t);
@@ -1291,8 +1304,9 @@ static void test_bad_input(void **state)
 	}
 	/* a far vertex: clip coordinates out of range */
 	{
-		static const double q[3][3] = {
-			{0, 0, 0}, {30000, 0, 0}, {0, 1, 0}};
+		static const double q[3][3] = { { 0, 0, 0 },
+						{ 30000, 0, 0 },
+						{ 0, 1, 0 } };
 
 		put_mesh(t, q, NULL, 3, idx, 1);
 		TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(1000), (uint32_t)fx(1000),
@@ -1302,7 +1316,7 @@ static void test_bad_input(void **state)
 	}
 	/* a patch with bad steps, lights, materials */
 	{
-		uint32_t pa[49] = {0};
+		uint32_t pa[49] = { 0 };
 
 		pa[0] = 33u << 8;
 		tdp_cmd(t, RDC_OP_PATCH, 0, 49, pa);
@@ -1340,10 +1354,10 @@ static void test_patch_flat(void **state)
 	struct ref_view v = std_view(true);
 	uint32_t a[49];
 	/* a planar quad: z = -1 + (y + 1) / 2.1 */
-	double q[4][3] = {{-1.5, -1, -1},
-			  {1.5, -1, -1},
-			  {1.2, 1.1, 0},
-			  {-1.3, 1, -1 + 2 / 2.1}};
+	double q[4][3] = { { -1.5, -1, -1 },
+			   { 1.5, -1, -1 },
+			   { 1.2, 1.1, 0 },
+			   { -1.3, 1, -1 + 2 / 2.1 } };
 	mat4 N;
 	double s[4][3];
 

@@ -137,15 +137,15 @@ static void fuzz_cmd(struct tdp *t, uint32_t *rng)
 			break;
 		}
 		a[0] = rnd_addr(rng);
-		a[1] = tdp_rand(rng) % 8
-			       ? tdp_rand(rng) % 64
-			       : tdp_rand(rng) % (RDC_MESH_MAX_VERTS + 2);
+		a[1] = tdp_rand(rng) % 8 ?
+			       tdp_rand(rng) % 64 :
+			       tdp_rand(rng) % (RDC_MESH_MAX_VERTS + 2);
 		a[2] = rnd_addr(rng);
-		a[3] = tdp_rand(rng) % 8
-			       ? tdp_rand(rng) % 64
-			       : tdp_rand(rng) % (RDC_MESH_MAX_TRIS + 2);
-		fl = tdp_rand(rng) % 8 ? tdp_rand(rng) & 0x7f
-				       : tdp_rand(rng) & 0xff;
+		a[3] = tdp_rand(rng) % 8 ?
+			       tdp_rand(rng) % 64 :
+			       tdp_rand(rng) % (RDC_MESH_MAX_TRIS + 2);
+		fl = tdp_rand(rng) % 8 ? tdp_rand(rng) & 0x7f :
+					 tdp_rand(rng) & 0xff;
 		break;
 	case RDC_OP_PATCH:
 		a[0] = (tdp_rand(rng) & 0x7f) | (tdp_rand(rng) % 12) << 8;
@@ -167,8 +167,8 @@ static void fuzz_cmd(struct tdp *t, uint32_t *rng)
 static void known_scene(struct tdp *t)
 {
 	static const int32_t v[6][3] = {
-		{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-		{0, -1, 0}, {0, 0, 1},	{0, 0, -1},
+		{ 1, 0, 0 },  { -1, 0, 0 }, { 0, 1, 0 },
+		{ 0, -1, 0 }, { 0, 0, 1 },  { 0, 0, -1 },
 	};
 	static const uint16_t ix[24] = {
 		0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
@@ -189,16 +189,16 @@ static void known_scene(struct tdp *t)
 	TDP_CMD(t, RDC_OP_SET_DST, 0, F_STRIDE, RDC_WH(F_W, F_H),
 		RDC_FMT_XRGB8888);
 	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST | RDC_Z_WRITE, 2,
-		(const uint32_t[]){F_ZBASE, F_W * 2});
+		(const uint32_t[]){ F_ZBASE, F_W * 2 });
 	TDP_CMD(t, RDC_OP_CLEAR_Z, 0xffff);
 	TDP_CMD(t, RDC_OP_SET_VIEWPORT3, RDC_XY(0, 0),
 		RDC_XY(F_W - 1, F_H - 1));
 	tdp_cmd(t, RDC_OP_SET_VIEW, RDC_VIEW_PERSPECTIVE, 18,
-		(const uint32_t[]){0, 0, 0, 1 << 16, 1 << 16, 2 << 16, 0,
-				   1 << 16, 0, 0, 0, 6 << 16,
-				   (uint32_t)(-2 * 65536), 2 << 16,
-				   (uint32_t)(-5 * 32768), 5 << 15, 3 << 16,
-				   (uint32_t)(-3 * 65536)});
+		(const uint32_t[]){ 0, 0, 0, 1 << 16, 1 << 16, 2 << 16, 0,
+				    1 << 16, 0, 0, 0, 6 << 16,
+				    (uint32_t)(-2 * 65536), 2 << 16,
+				    (uint32_t)(-5 * 32768), 5 << 15, 3 << 16,
+				    (uint32_t)(-3 * 65536) });
 	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
 	TDP_CMD(t, RDC_OP_SET_AMBIENT, 0x202020);
 	TDP_CMD(t, RDC_OP_SET_MATERIAL, 0xff8040, 0xff8040, 0xffffff, 20);
@@ -208,7 +208,7 @@ static void known_scene(struct tdp *t)
 	tdp_cmd(t, RDC_OP_MESH,
 		RDC_MESH_NORMALS | RDC_MESH_CULL | RDC_MESH_LIT |
 			RDC_MESH_GOURAUD,
-		4, (const uint32_t[]){base, 6, ibase, 8});
+		4, (const uint32_t[]){ base, 6, ibase, 8 });
 	tdp_drain(t);
 }
 
@@ -232,7 +232,7 @@ static void test_fuzz_3d(void **state)
 	TDP_CMD(t, RDC_OP_SET_DST, 0, F_STRIDE, RDC_WH(F_W, F_H),
 		RDC_FMT_XRGB8888);
 	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST | RDC_Z_WRITE, 2,
-		(const uint32_t[]){F_ZBASE, F_W * 2});
+		(const uint32_t[]){ F_ZBASE, F_W * 2 });
 	tdp_drain(t);
 	memcpy(shadow, t->vram, TDP_VRAM_SIZE);
 	for (uint32_t i = 0; i < F_CMDS; i++) {

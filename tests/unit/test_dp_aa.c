@@ -17,8 +17,10 @@
 /* Channel fields (shift, width) of the RGB formats, from rdc_regs.h. */
 static unsigned int aa_fields(uint32_t fmt, uint32_t f[4][2])
 {
-	static const uint32_t f565[3][2] = {{11, 5}, {5, 6}, {0, 5}};
-	static const uint32_t f888[4][2] = {{24, 8}, {16, 8}, {8, 8}, {0, 8}};
+	static const uint32_t f565[3][2] = { { 11, 5 }, { 5, 6 }, { 0, 5 } };
+	static const uint32_t f888[4][2] = {
+		{ 24, 8 }, { 16, 8 }, { 8, 8 }, { 0, 8 }
+	};
 
 	if (fmt == RDC_FMT_RGB565) {
 		memcpy(f, f565, sizeof(f565));
@@ -105,7 +107,7 @@ static void aa_model_plot(void *ctx, int32_t x, int32_t y, uint32_t cov)
 static uint32_t aa_capture(struct tdp *t, int32_t cx, int32_t cy, uint32_t rx,
 			   uint32_t ry, uint32_t w, uint32_t h, uint8_t *cov)
 {
-	struct rdc_surface s = {AA_CAP_BASE, 4 * w, w, h, RDC_FMT_XRGB8888};
+	struct rdc_surface s = { AA_CAP_BASE, 4 * w, w, h, RDC_FMT_XRGB8888 };
 	uint32_t worst = 0;
 	int32_t x, y;
 
@@ -143,22 +145,22 @@ static uint32_t aa_capture(struct tdp *t, int32_t cx, int32_t cy, uint32_t rx,
  */
 static void test_aa_ellipse_exact(void **state)
 {
-	static const uint32_t flat[] = {8, 9, 31, 32, 33, 72, 100, 128, 200,
-					288, 314, 400};
+	static const uint32_t flat[] = { 8,   9,   31,	32,  33,  72,
+					 100, 128, 200, 288, 314, 400 };
 	struct tdp *t = *state;
 	uint32_t rx, ry, i, worst = 0;
 
 	for (rx = 1; rx <= 40; rx++)
 		for (ry = 1; ry <= 40; ry++)
-			worst = RDC_MAX(worst, aa_capture(t, 42, 42, rx, ry,
-							  85, 85, NULL));
+			worst = RDC_MAX(worst, aa_capture(t, 42, 42, rx, ry, 85,
+							  85, NULL));
 	for (i = 0; i < RDC_ARRAY_SIZE(flat); i++)
 		for (ry = 1; ry <= 6; ry++) {
 			rx = flat[i];
 			worst = RDC_MAX(worst, aa_capture(t, 402, 8, rx, ry,
 							  805, 17, NULL));
-			worst = RDC_MAX(worst, aa_capture(t, 8, 402, ry, rx,
-							  17, 805, NULL));
+			worst = RDC_MAX(worst, aa_capture(t, 8, 402, ry, rx, 17,
+							  805, NULL));
 		}
 	print_message("AA ellipse coverage: largest difference from exact %u\n",
 		      worst);
@@ -171,7 +173,7 @@ enum { P_LINE, P_CIRCLE, P_ELLIPSE };
 
 static void aa_scene(struct tdp *t, uint32_t *seed, uint32_t *hash)
 {
-	struct aa_model m = {0};
+	struct aa_model m = { 0 };
 	uint32_t fmt = tdp_rand(seed) % RDC_FMT_COUNT, i, kind;
 	int32_t x0 = tdp_range(seed, -60, AA_W + 60);
 	int32_t y0 = tdp_range(seed, -60, AA_H + 60);
@@ -343,7 +345,7 @@ static void test_aa_line_intensity(void **state)
 static void test_aa_circle_intensity(void **state)
 {
 	struct tdp *t = *state;
-	static const uint32_t radii[] = {8, 30, 100, 200};
+	static const uint32_t radii[] = { 8, 30, 100, 200 };
 	uint32_t i;
 
 	TDP_CMD(t, RDC_OP_SET_FG, 0x00ffffffu);
@@ -376,7 +378,7 @@ static void test_aa_symmetry(void **state)
 		uint32_t rx = (uint32_t)tdp_range(&seed, 1, 150);
 		uint32_t ry = (uint32_t)tdp_range(&seed, 1, 150);
 		int32_t dx, dy;
-		struct rdc_surface s = {0, 2560, 640, 480, RDC_FMT_XRGB8888};
+		struct rdc_surface s = { 0, 2560, 640, 480, RDC_FMT_XRGB8888 };
 
 		/* a line is the same pixels both ways round */
 		aa_clear(t);
@@ -423,7 +425,7 @@ static void test_aa_symmetry(void **state)
 static void test_aa_ends(void **state)
 {
 	struct tdp *t = *state;
-	struct rdc_surface s = {0, 2560, 640, 480, RDC_FMT_XRGB8888};
+	struct rdc_surface s = { 0, 2560, 640, 480, RDC_FMT_XRGB8888 };
 
 	aa_clear(t);
 	TDP_CMD(t, RDC_OP_SET_FG, 0x00123456u);
@@ -520,8 +522,8 @@ static void test_aa_cycles(void **state)
 static void test_aa_cycles_indexed(void **state)
 {
 	struct tdp *t = *state;
-	struct rdc_surface s8 = {0, 640, 640, 480, RDC_FMT_I8};
-	struct rdc_surface s4 = {0, 320, 640, 480, RDC_FMT_I4};
+	struct rdc_surface s8 = { 0, 640, 640, 480, RDC_FMT_I8 };
+	struct rdc_surface s4 = { 0, 320, 640, 480, RDC_FMT_I4 };
 	uint32_t open;
 	uint64_t want;
 
@@ -557,8 +559,8 @@ static void aa_expect(struct tdp *t, uint32_t err, uint32_t h0)
 static void test_aa_bad_args(void **state)
 {
 	struct tdp *t = *state;
-	const uint32_t one[1] = {RDC_XY(5, 5)};
-	const uint32_t three[3] = {RDC_XY(5, 5), RDC_XY(9, 9), 0};
+	const uint32_t one[1] = { RDC_XY(5, 5) };
+	const uint32_t three[3] = { RDC_XY(5, 5), RDC_XY(9, 9), 0 };
 	uint32_t h0;
 
 	aa_clear(t);

@@ -8,9 +8,9 @@
 #include "test_dp_common.h"
 #include "dp_int.h"
 
-#define W 640
-#define H 480
-#define DEG(d) ((uint32_t)((d) * 65536u / 360u))
+#define W	  640
+#define H	  480
+#define DEG(d)	  ((uint32_t)((d)*65536u / 360u))
 #define ANG(s, e) ((uint32_t)(s) | (uint32_t)(e) << 16)
 
 static uint32_t px(struct tdp *t, int x, int y)
@@ -74,7 +74,8 @@ static void reference(struct tdp *t, uint32_t op, int cx, int cy, uint32_t rx,
 		for (x = 0; x < W; x++) {
 			int dx = x - cx, dy = y - cy;
 			bool k = keep == 0 ? dx >= 0 && dy <= 0 :
-				 keep == 1 ? dy <= 0 : true;
+				 keep == 1 ? dy <= 0 :
+					     true;
 
 			out[y * W + x] = px(t, x, y) && k;
 		}
@@ -98,7 +99,8 @@ static void test_axis_sectors(void **state)
 	uint32_t seed = 4242, k;
 
 	for (k = 0; k < 12; k++) {
-		int cx = tdp_range(&seed, 50, 590), cy = tdp_range(&seed, 50, 430);
+		int cx = tdp_range(&seed, 50, 590),
+		    cy = tdp_range(&seed, 50, 430);
 		uint32_t rx = (uint32_t)tdp_range(&seed, 1, 80);
 		uint32_t ry = (uint32_t)tdp_range(&seed, 1, 80);
 
@@ -142,7 +144,8 @@ static void test_wrap(void **state)
 	int x, y;
 
 	for (k = 0; k < 10; k++) {
-		int cx = tdp_range(&seed, 100, 500), cy = tdp_range(&seed, 100, 380);
+		int cx = tdp_range(&seed, 100, 500),
+		    cy = tdp_range(&seed, 100, 380);
 		uint32_t rx = (uint32_t)tdp_range(&seed, 2, 90);
 		uint32_t ry = (uint32_t)tdp_range(&seed, 2, 90);
 		uint32_t s = (uint32_t)tdp_range(&seed, 32768 + 1, 65535);
@@ -232,10 +235,8 @@ static void test_cycles(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_sine),
-		TDP_TEST(test_axis_sectors),
-		TDP_TEST(test_wrap),
-		TDP_TEST(test_bad_args),
+		cmocka_unit_test(test_sine), TDP_TEST(test_axis_sectors),
+		TDP_TEST(test_wrap),	     TDP_TEST(test_bad_args),
 		TDP_TEST(test_cycles),
 	};
 

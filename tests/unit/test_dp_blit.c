@@ -72,8 +72,8 @@ static void test_blit_random(void **state)
 		ds = ss;
 		if (mode == 1) {
 			/* same stride, shifted a few bytes/rows: overlap */
-			ds.base = ss.base + (uint32_t)tdp_range(&rng, 0,
-								3 * ss.stride);
+			ds.base = ss.base +
+				  (uint32_t)tdp_range(&rng, 0, 3 * ss.stride);
 			if (tdp_rand(&rng) % 2) {
 				uint32_t tmp = ds.base;
 
@@ -359,14 +359,16 @@ static void test_mono_text_random(void **state)
 					continue;
 				if (text) {
 					uint32_t ch = (data[i / 32] >>
-						       (8 * ((i / 8) % 4))) & 0xff;
+						       (8 * ((i / 8) % 4))) &
+						      0xff;
 
 					byte = rdc_font8x16[ch * 16 + j];
 				} else {
 					uint32_t b = (uint32_t)i / 8;
 
 					byte = (data[j * wpr + b / 4] >>
-						(8 * (b % 4))) & 0xff;
+						(8 * (b % 4))) &
+					       0xff;
 				}
 				bit = (byte >> (7 - i % 8)) & 1;
 				if (!bit && tr)
@@ -382,15 +384,15 @@ static void test_mono_text_random(void **state)
 		TDP_CMD(t, RDC_OP_SET_FG, fg);
 		TDP_CMD(t, RDC_OP_SET_BG, bg);
 		if (text) {
-			tdp_push(t, RDC_CMD(RDC_OP_TEXT,
-					    tr ? RDC_MONO_TRANSPARENT : 0,
-					    2 + n));
+			tdp_push(t,
+				 RDC_CMD(RDC_OP_TEXT,
+					 tr ? RDC_MONO_TRANSPARENT : 0, 2 + n));
 			tdp_push(t, RDC_XY(x, y));
 			tdp_push(t, cnt);
 		} else {
-			tdp_push(t, RDC_CMD(RDC_OP_MONO,
-					    tr ? RDC_MONO_TRANSPARENT : 0,
-					    2 + n));
+			tdp_push(t,
+				 RDC_CMD(RDC_OP_MONO,
+					 tr ? RDC_MONO_TRANSPARENT : 0, 2 + n));
 			tdp_push(t, RDC_XY(x, y));
 			tdp_push(t, RDC_WH(w, h));
 		}

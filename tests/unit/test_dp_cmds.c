@@ -7,9 +7,8 @@
  */
 #include "test_dp_common.h"
 
-static const struct rdc_surface scr = {
-	0, 640 * 4, 640, 480, RDC_FMT_XRGB8888
-};
+static const struct rdc_surface scr = { 0, 640 * 4, 640, 480,
+					RDC_FMT_XRGB8888 };
 
 /* Reset state: FG all ones, COPY, no clip, DST = the 640x480 screen. */
 static void test_reset_state(void **state)
@@ -84,15 +83,14 @@ static void test_bad_opcodes(void **state)
 	uint32_t fill = RDC_CMD(RDC_OP_FILL_RECT, 0, 2);
 
 	/* argument words that look like commands must be skipped */
-	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x77, 0, 3), fill,
-		     RDC_XY(0, 0), RDC_WH(100, 100));
+	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x77, 0, 3), fill, RDC_XY(0, 0),
+		     RDC_WH(100, 100));
 	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x09, 0, 0));
 	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0x39, 0, 2), fill, 0);
 	/* display-list control with nothing to call or return to */
 	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_CALL, 0, 1), 2);
 	EXPECT_ERROR(t, RDC_ERR_STACK, RDC_CMD(RDC_OP_RET, 0, 0));
-	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_JUMP, 0, 1),
-		     0xfffffffcu);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_JUMP, 0, 1), 0xfffffffcu);
 	EXPECT_ERROR(t, RDC_ERR_OPCODE, RDC_CMD(0xff, 0xff, 0));
 	TDP_CMD(t, RDC_OP_PIXEL, RDC_XY(1, 1));
 	tdp_drain(t);
@@ -110,8 +108,8 @@ static void test_bad_lengths(void **state)
 	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_PIXEL, 0, 0));
 	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_LINE, 0, 3), 0, 0, 0);
 	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_POLYLINE, 0, 1), 0);
-	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_SET_DST, 0, 3), 0,
-		     2560, RDC_WH(640, 480));
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_SET_DST, 0, 3), 0, 2560,
+		     RDC_WH(640, 480));
 	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_LOAD_CLUT, 0, 1), 0);
 	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_WAIT_VBLANK, 0, 1), 0);
 	/* HOST_BLIT 2x2 XRGB8888 needs 2 + 4 words */
@@ -198,8 +196,8 @@ static void test_bad_ranges(void **state)
 		     RDC_WH(3, 3));
 	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_SET_CLIP, 0, 2),
 		     RDC_XY(10, 10), RDC_XY(5, 20));
-	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_LOAD_CLUT, 0, 3), 255,
-		     1, 2);
+	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_LOAD_CLUT, 0, 3), 255, 1,
+		     2);
 	EXPECT_ERROR(t, RDC_ERR_RANGE, RDC_CMD(RDC_OP_LOAD_CLUT, 0, 2),
 		     0xffffffffu, 1);
 	EXPECT_ERROR(t, RDC_ERR_ARG, RDC_CMD(RDC_OP_SET_ROP, 0, 1),
@@ -603,8 +601,8 @@ static void test_fifo_before_ring(void **state)
 static void test_polyline_closed_xor(void **state)
 {
 	struct tdp *t = *state;
-	const uint32_t pts[] = { RDC_XY(10, 10), RDC_XY(60, 12),
-				 RDC_XY(30, 50), RDC_XY(10, 10) };
+	const uint32_t pts[] = { RDC_XY(10, 10), RDC_XY(60, 12), RDC_XY(30, 50),
+				 RDC_XY(10, 10) };
 
 	TDP_CMD(t, RDC_OP_SET_ROP, RDC_ROP_XOR);
 	TDP_CMD(t, RDC_OP_SET_FG, 0xff);

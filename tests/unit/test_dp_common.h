@@ -24,7 +24,7 @@
 #define TDP_VRAM_SIZE (4u << 20)
 #define TDP_FRAME_CAP (1024u * 768u)
 /* cycles of simulated time a test may run while waiting for the DP */
-#define TDP_RUN_STEP 100000u
+#define TDP_RUN_STEP  100000u
 #define TDP_RUN_LIMIT 4000u
 
 struct tdp {
@@ -77,7 +77,8 @@ static inline int tdp_teardown(void **state)
 	return 0;
 }
 
-#define TDP_TEST(fn) cmocka_unit_test_setup_teardown(fn, tdp_setup, tdp_teardown)
+#define TDP_TEST(fn) \
+	cmocka_unit_test_setup_teardown(fn, tdp_setup, tdp_teardown)
 
 static inline int tdp_idle(struct tdp *t)
 {

@@ -26,8 +26,8 @@ static const struct rdc_surface cs = {
 };
 
 /* long radii of the flat ellipses; each with ry = 1..6, and transposed */
-static const uint32_t flat_rx[] = {8,	9,   31,  32,  33,  71, 72,
-				   100, 128, 200, 288, 314, 400};
+static const uint32_t flat_rx[] = { 8,	 9,   31,  32,	33,  71, 72,
+				    100, 128, 200, 288, 314, 400 };
 
 enum shape { S_CIRCLE, S_FCIRCLE, S_ELLIPSE, S_FELLIPSE, S_ARC };
 
@@ -82,8 +82,8 @@ static void conic_draw(struct tdp *t, const struct conic *c)
 		break;
 	case S_ARC:
 		tdp_cmd(t, RDC_OP_ARC, c->mode, 3,
-			(uint32_t[]){xy, RDC_WH(c->rx, c->ry),
-				     c->start | c->end << 16});
+			(uint32_t[]){ xy, RDC_WH(c->rx, c->ry),
+				      c->start | c->end << 16 });
 		break;
 	}
 	tdp_drain(t);
@@ -124,8 +124,8 @@ static uint32_t conic_check(struct tdp *t, const struct conic *c,
 			bool in = x >= clip.x0 && x < clip.x1 && y >= clip.y0 &&
 				  y < clip.y1;
 			bool want = in &&
-				    (c->shape == S_ARC ? arc_map[y * CS_W + x]
-						       : conic_has(c, x - c->cx,
+				    (c->shape == S_ARC ? arc_map[y * CS_W + x] :
+							 conic_has(c, x - c->cx,
 								   y - c->cy));
 
 			if ((row[x] != 0) != want)
@@ -151,8 +151,8 @@ static uint32_t conic_check(struct tdp *t, const struct conic *c,
 	return n;
 }
 
-static const struct rdc_rect no_clip = {RDC_COORD_MIN, RDC_COORD_MIN,
-					RDC_COORD_MAX, RDC_COORD_MAX};
+static const struct rdc_rect no_clip = { RDC_COORD_MIN, RDC_COORD_MIN,
+					 RDC_COORD_MAX, RDC_COORD_MAX };
 
 static int conic_setup(void **state)
 {
@@ -166,14 +166,14 @@ static int conic_setup(void **state)
 	return 0;
 }
 
-#define CONIC_TEST(fn)                                                         \
+#define CONIC_TEST(fn) \
 	cmocka_unit_test_setup_teardown(fn, conic_setup, tdp_teardown)
 
 /* Every rx, ry in 0..40, outline and fill. */
 static void test_ellipse_sweep(void **state)
 {
 	struct tdp *t = *state;
-	struct conic c = {.cx = 100, .cy = 100};
+	struct conic c = { .cx = 100, .cy = 100 };
 
 	for (c.rx = 0; c.rx <= 40; c.rx++)
 		for (c.ry = 0; c.ry <= 40; c.ry++)
@@ -228,9 +228,9 @@ static void test_ellipse_flat(void **state)
 /* Circles: 0..40 and a few large ones; ELLIPSE (r, r) is CIRCLE (r). */
 static void test_circle_sweep(void **state)
 {
-	static const uint32_t big[] = {63, 100, 255, 400};
+	static const uint32_t big[] = { 63, 100, 255, 400 };
 	struct tdp *t = *state;
-	struct conic c = {.cx = 410, .cy = 410};
+	struct conic c = { .cx = 410, .cy = 410 };
 	uint32_t i, n;
 
 	for (c.rx = 0; c.rx <= 40 + RDC_ARRAY_SIZE(big); c.rx++) {
@@ -278,12 +278,12 @@ static void test_conic_clipped(void **state)
 		if (k % 7 == 0)
 			c.ry = (uint32_t)tdp_range(&seed, 1, 6);
 		/* near an edge or a corner of the surface */
-		c.cx = tdp_rand(&seed) % 2
-			       ? tdp_range(&seed, -40, 40)
-			       : tdp_range(&seed, CS_W - 40, CS_W + 40);
-		c.cy = tdp_rand(&seed) % 2
-			       ? tdp_range(&seed, -40, 40)
-			       : tdp_range(&seed, CS_H - 40, CS_H + 40);
+		c.cx = tdp_rand(&seed) % 2 ?
+			       tdp_range(&seed, -40, 40) :
+			       tdp_range(&seed, CS_W - 40, CS_W + 40);
+		c.cy = tdp_rand(&seed) % 2 ?
+			       tdp_range(&seed, -40, 40) :
+			       tdp_range(&seed, CS_H - 40, CS_H + 40);
 		if (k % 3 == 0) {
 			/* a clip rectangle across the shape instead */
 			c.cx = tdp_range(&seed, 100, CS_W - 100);
@@ -304,11 +304,11 @@ static void test_conic_clipped(void **state)
 static void test_arc_sweep(void **state)
 {
 	static const uint32_t fixed[][2] = {
-		{0, 16384},    {16384, 49152}, {49152, 8192},
-		{60000, 1000}, {1234, 1234},   {32768, 0},
+		{ 0, 16384 },	 { 16384, 49152 }, { 49152, 8192 },
+		{ 60000, 1000 }, { 1234, 1234 },   { 32768, 0 },
 	};
 	struct tdp *t = *state;
-	struct conic c = {.shape = S_ARC, .cx = 410, .cy = 410};
+	struct conic c = { .shape = S_ARC, .cx = 410, .cy = 410 };
 	uint32_t seed = 0xa2c5, k = 0, i, rounded = 0, checked = 0;
 
 	for (c.rx = 0; c.rx <= 40 + RDC_ARRAY_SIZE(flat_rx); c.rx++) {
@@ -347,11 +347,11 @@ static void test_arc_sweep(void **state)
  */
 static void test_arc_rounded(void **state)
 {
-	static const uint32_t near[] = {1,	2,	3,	5,	0x7ffd,
-					0x7ffe, 0x7fff, 0x8000, 0x8001, 0x8002,
-					0xfffd, 0xfffe, 0xffff};
+	static const uint32_t near[] = { 1,	 2,	 3,	 5,	 0x7ffd,
+					 0x7ffe, 0x7fff, 0x8000, 0x8001, 0x8002,
+					 0xfffd, 0xfffe, 0xffff };
 	struct tdp *t = *state;
-	struct conic c = {.shape = S_ARC, .cx = 410, .cy = 410};
+	struct conic c = { .shape = S_ARC, .cx = 410, .cy = 410 };
 	uint32_t s, i, rounded = 0, seed = 0x5eed;
 
 	for (s = 0; s < 0x10000; s += 0x100 + 7)

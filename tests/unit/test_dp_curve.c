@@ -74,9 +74,12 @@ static void test_one_step(void **state)
 	uint32_t seed = 5, k;
 
 	for (k = 0; k < 30; k++) {
-		int x0 = tdp_range(&seed, 0, W - 1), y0 = tdp_range(&seed, 0, H - 1);
-		int x1 = tdp_range(&seed, 0, W - 1), y1 = tdp_range(&seed, 0, H - 1);
-		int cx = tdp_range(&seed, 0, W - 1), cy = tdp_range(&seed, 0, H - 1);
+		int x0 = tdp_range(&seed, 0, W - 1),
+		    y0 = tdp_range(&seed, 0, H - 1);
+		int x1 = tdp_range(&seed, 0, W - 1),
+		    y1 = tdp_range(&seed, 0, H - 1);
+		int cx = tdp_range(&seed, 0, W - 1),
+		    cy = tdp_range(&seed, 0, H - 1);
 
 		clear(t);
 		clear(u);
@@ -113,8 +116,9 @@ static void test_straight(void **state)
 		TDP_CMD(t, RDC_OP_BSPLINE, RDC_XY(a, y0), RDC_XY(b, y0),
 			RDC_XY(c, y0), RDC_XY(d, y0), RDC_XY(e, y0));
 		/* on the diagonal x - y = 300 */
-		TDP_CMD(t, RDC_OP_BEZIER, RDC_XY(a + 300, a), RDC_XY(b + 300, b),
-			RDC_XY(c + 300, c), RDC_XY(d + 300, d));
+		TDP_CMD(t, RDC_OP_BEZIER, RDC_XY(a + 300, a),
+			RDC_XY(b + 300, b), RDC_XY(c + 300, c),
+			RDC_XY(d + 300, d));
 		tdp_drain(t);
 		for (y = 0; y < H; y++)
 			for (x = 0; x < W; x++)
@@ -178,8 +182,9 @@ static void test_bad_args(void **state)
 	assert_int_equal(count_set(t), 0);
 	/* the longest B-spline, at the step cap, with a wide pen */
 	for (i = 0; i < RDC_CMD_MAX_ARGS; i++)
-		many[i] = RDC_XY(tdp_range(&seed, RDC_COORD_MIN, RDC_COORD_MAX),
-				 tdp_range(&seed, RDC_COORD_MIN, RDC_COORD_MAX));
+		many[i] =
+			RDC_XY(tdp_range(&seed, RDC_COORD_MIN, RDC_COORD_MAX),
+			       tdp_range(&seed, RDC_COORD_MIN, RDC_COORD_MAX));
 	TDP_CMD(t, RDC_OP_SET_PEN, 3);
 	tdp_cmd(t, RDC_OP_BSPLINE, 0, RDC_CMD_MAX_ARGS, many);
 	tdp_drain(t);
@@ -212,12 +217,9 @@ static void test_cycles(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_end_points),
-		TDP_TEST(test_one_step),
-		TDP_TEST(test_straight),
-		TDP_TEST(test_bspline_parabola),
-		TDP_TEST(test_bad_args),
-		TDP_TEST(test_cycles),
+		TDP_TEST(test_end_points), TDP_TEST(test_one_step),
+		TDP_TEST(test_straight),   TDP_TEST(test_bspline_parabola),
+		TDP_TEST(test_bad_args),   TDP_TEST(test_cycles),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

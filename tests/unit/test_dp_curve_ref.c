@@ -58,8 +58,8 @@ static void test_curves_vs_exact(void **state)
 	uint32_t seed = 0xcc0e, k, exact = 0, near = 0;
 
 	for (k = 0; k < 600; k++) {
-		static const uint32_t ops[] = {RDC_OP_BEZIER, RDC_OP_HERMITE,
-					       RDC_OP_BSPLINE};
+		static const uint32_t ops[] = { RDC_OP_BEZIER, RDC_OP_HERMITE,
+						RDC_OP_BSPLINE };
 		uint32_t op = ops[k % 3], n = 4, steps = 0, words[CV_MAX_PTS];
 		int32_t xy[2 * CV_MAX_PTS];
 		uint32_t np, i;
@@ -93,9 +93,9 @@ static void test_curves_vs_exact(void **state)
 		if (np == 1)
 			cv_plot(NULL, pts[0].x, pts[0].y);
 		for (i = 0; i + 1 < np; i++) {
-			cv_kind = pts[i].near_half || pts[i + 1].near_half
-					  ? CV_NEAR
-					  : CV_EXACT;
+			cv_kind = pts[i].near_half || pts[i + 1].near_half ?
+					  CV_NEAR :
+					  CV_EXACT;
 			rdc_ref_line(pts[i].x, pts[i].y, pts[i + 1].x,
 				     pts[i + 1].y, cv_plot, NULL);
 		}
@@ -103,11 +103,12 @@ static void test_curves_vs_exact(void **state)
 			for (x = 0; x < W; x++) {
 				bool g = got_px(t, x, y);
 				uint8_t w = want[y * W + x];
-				bool ok = (w & CV_EXACT) ? g
-					  : (w & CV_NEAR)
-						  ? g || near_any(t, true, x, y)
-						  : !g || near_any(t, false, x,
-								   y);
+				bool ok =
+					(w & CV_EXACT) ?
+						g :
+					(w & CV_NEAR) ?
+						g || near_any(t, true, x, y) :
+						!g || near_any(t, false, x, y);
 
 				if (!ok)
 					fail_msg("op %#x steps %u curve %u: "

@@ -77,8 +77,12 @@ static uint32_t flood_check(struct tdp *t, const struct rdc_surface *s,
 			    uint32_t flags, uint32_t key, uint32_t fill)
 {
 	size_t bytes = (size_t)s->stride * s->height, npx;
-	struct bfs b = { .s = s, .c = *c, .boundary = flags & RDC_FLOOD_BOUNDARY,
-			 .eight = flags & RDC_FLOOD_8, .key = key, .fill = fill };
+	struct bfs b = { .s = s,
+			 .c = *c,
+			 .boundary = flags & RDC_FLOOD_BOUNDARY,
+			 .eight = flags & RDC_FLOOD_8,
+			 .key = key,
+			 .fill = fill };
 	uint8_t *img = malloc(bytes);
 	uint32_t a[2] = { RDC_XY(sx, sy), key }, size;
 	int32_t x, y;
@@ -104,12 +108,15 @@ static uint32_t flood_check(struct tdp *t, const struct rdc_surface *s,
 	for (y = 0; y < (int32_t)s->height; y++)
 		for (x = 0; x < (int32_t)s->width; x++) {
 			uint32_t want = b.mark[y * (int32_t)s->width + x] ?
-						fill : bfs_px(&b, x, y);
+						fill :
+						bfs_px(&b, x, y);
 
 			if (tdp_get(t->vram, s, x, y) != want)
-				fail_msg("flags %u seed (%d,%d): (%d,%d) is %x, "
-					 "want %x", flags, sx, sy, x, y,
-					 tdp_get(t->vram, s, x, y), want);
+				fail_msg(
+					"flags %u seed (%d,%d): (%d,%d) is %x, "
+					"want %x",
+					flags, sx, sy, x, y,
+					tdp_get(t->vram, s, x, y), want);
 		}
 	free(b.queue);
 	free(b.mark);
@@ -124,10 +131,14 @@ static void test_random_outlines(void **state)
 	uint32_t rng = 0xc0ffee, iter;
 
 	for (iter = 0; iter < 160; iter++) {
-		uint32_t fmt = iter % 2 ? RDC_FMT_I8 :
-			       (uint32_t)tdp_range(&rng, 0, RDC_FMT_COUNT - 1);
-		int32_t w = tdp_range(&rng, 20, 120), h = tdp_range(&rng, 20, 90);
-		struct rdc_surface s = tpp_surface(fmt, (uint32_t)w, (uint32_t)h);
+		uint32_t fmt =
+			iter % 2 ?
+				RDC_FMT_I8 :
+				(uint32_t)tdp_range(&rng, 0, RDC_FMT_COUNT - 1);
+		int32_t w = tdp_range(&rng, 20, 120),
+			h = tdp_range(&rng, 20, 90);
+		struct rdc_surface s =
+			tpp_surface(fmt, (uint32_t)w, (uint32_t)h);
 		uint32_t m = tdp_mask(fmt), wall = 1 & m, fill = 2 & m;
 		uint32_t flags = tdp_rand(&rng) % 4, k, n, a[12];
 		struct rdc_rect c = { RDC_COORD_MIN, RDC_COORD_MIN,
@@ -141,15 +152,17 @@ static void test_random_outlines(void **state)
 		for (y = 0; y < h; y++)
 			for (x = 0; x < w; x++)
 				if (tdp_rand(&rng) % 23 == 0)
-					tdp_put(t->vram, &s, x, y, tdp_rand(&rng));
+					tdp_put(t->vram, &s, x, y,
+						tdp_rand(&rng));
 		TDP_CMD(t, RDC_OP_SET_FG, wall);
 		for (k = 0; k < 3; k++) {
 			switch (tdp_rand(&rng) % 3) {
 			case 0:
 				n = (uint32_t)tdp_range(&rng, 3, 12);
 				for (uint32_t i = 0; i < n; i++)
-					a[i] = RDC_XY(tdp_range(&rng, -5, w + 5),
-						      tdp_range(&rng, -5, h + 5));
+					a[i] = RDC_XY(
+						tdp_range(&rng, -5, w + 5),
+						tdp_range(&rng, -5, h + 5));
 				tdp_cmd(t, RDC_OP_POLYGON, 0, n, a);
 				break;
 			case 1:
@@ -183,10 +196,10 @@ static void test_random_outlines(void **state)
 
 /* A perfect maze of 1-pixel corridors over the whole surface, with some
  * extra openings so that corridors meet diagonally and loop. */
-static void make_maze(struct tdp *t, const struct rdc_surface *s,
-		      uint32_t seed)
+static void make_maze(struct tdp *t, const struct rdc_surface *s, uint32_t seed)
 {
-	int32_t cw = (int32_t)(s->width - 1) / 2, ch = (int32_t)(s->height - 1) / 2;
+	int32_t cw = (int32_t)(s->width - 1) / 2,
+		ch = (int32_t)(s->height - 1) / 2;
 	int32_t *stack = malloc((size_t)cw * ch * sizeof(*stack));
 	uint8_t *seen = calloc((size_t)cw * ch, 1);
 	uint32_t rng = seed, sp = 0, k;
@@ -203,7 +216,8 @@ static void make_maze(struct tdp *t, const struct rdc_surface *s,
 	while (sp) {
 		int32_t c = stack[sp - 1], cx = c % cw, cy = c / cw;
 		int32_t nb[4], nn = 0, d;
-		static const int32_t dx[4] = { 1, -1, 0, 0 }, dy[4] = { 0, 0, 1, -1 };
+		static const int32_t dx[4] = { 1, -1, 0, 0 },
+				     dy[4] = { 0, 0, 1, -1 };
 
 		for (d = 0; d < 4; d++) {
 			int32_t nx = cx + dx[d], ny = cy + dy[d];
@@ -289,10 +303,12 @@ static void test_pattern_flood(void **state)
 	assert_int_equal(tdp_err(t), 0);
 	for (y = 0; y < 48; y++)
 		for (x = 0; x < 64; x++) {
-			uint32_t row = (pat[(y & 7) / 4] >> (8 * (y & 3))) & 0xff;
-			uint32_t want = b.mark[y * 64 + x] ?
-						((row >> (7 - (x & 7))) & 1 ? 5 : 6) :
-						bfs_px(&b, x, y);
+			uint32_t row = (pat[(y & 7) / 4] >> (8 * (y & 3))) &
+				       0xff;
+			uint32_t want =
+				b.mark[y * 64 + x] ?
+					((row >> (7 - (x & 7))) & 1 ? 5 : 6) :
+					bfs_px(&b, x, y);
 
 			assert_int_equal(tdp_get(t->vram, &s, x, y), want);
 		}
@@ -395,10 +411,8 @@ static void test_cycles(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_random_outlines),
-		TDP_TEST(test_maze),
-		TDP_TEST(test_pattern_flood),
-		TDP_TEST(test_bad_args),
+		TDP_TEST(test_random_outlines), TDP_TEST(test_maze),
+		TDP_TEST(test_pattern_flood),	TDP_TEST(test_bad_args),
 		TDP_TEST(test_cycles),
 	};
 

@@ -8,14 +8,16 @@
 #include "test_dp_common.h"
 
 static const uint8_t ops[] = {
-	RDC_OP_NOP, RDC_OP_FENCE, RDC_OP_WAIT_VBLANK, RDC_OP_WAIT_LINE,
-	RDC_OP_REG_WRITE, RDC_OP_LOAD_CLUT, RDC_OP_CALL, RDC_OP_RET,
-	RDC_OP_JUMP, RDC_OP_SET_FG, RDC_OP_SET_BG, RDC_OP_SET_ROP,
-	RDC_OP_SET_CLIP, RDC_OP_SET_DST, RDC_OP_SET_SRC, RDC_OP_PIXEL,
-	RDC_OP_LINE, RDC_OP_POLYLINE, RDC_OP_RECT, RDC_OP_FILL_RECT,
-	RDC_OP_CIRCLE, RDC_OP_FILL_CIRCLE, RDC_OP_ELLIPSE,
-	RDC_OP_FILL_ELLIPSE, RDC_OP_BLIT, RDC_OP_HOST_BLIT, RDC_OP_READBACK,
-	RDC_OP_MONO, RDC_OP_TEXT, 0x7f,
+	RDC_OP_NOP,	    RDC_OP_FENCE,     RDC_OP_WAIT_VBLANK,
+	RDC_OP_WAIT_LINE,   RDC_OP_REG_WRITE, RDC_OP_LOAD_CLUT,
+	RDC_OP_CALL,	    RDC_OP_RET,	      RDC_OP_JUMP,
+	RDC_OP_SET_FG,	    RDC_OP_SET_BG,    RDC_OP_SET_ROP,
+	RDC_OP_SET_CLIP,    RDC_OP_SET_DST,   RDC_OP_SET_SRC,
+	RDC_OP_PIXEL,	    RDC_OP_LINE,      RDC_OP_POLYLINE,
+	RDC_OP_RECT,	    RDC_OP_FILL_RECT, RDC_OP_CIRCLE,
+	RDC_OP_FILL_CIRCLE, RDC_OP_ELLIPSE,   RDC_OP_FILL_ELLIPSE,
+	RDC_OP_BLIT,	    RDC_OP_HOST_BLIT, RDC_OP_READBACK,
+	RDC_OP_MONO,	    RDC_OP_TEXT,      0x7f,
 };
 
 /* A coordinate that is usually in range and sometimes far outside. */
@@ -108,8 +110,7 @@ static void test_fuzz_stream(void **state)
 			break;
 		case RDC_OP_TEXT:
 			args[1] = (uint32_t)tdp_range(&rng, 0, 200);
-			len = 2 + (args[1] + 3) / 4 -
-			      (tdp_rand(&rng) % 8 == 0);
+			len = 2 + (args[1] + 3) / 4 - (tdp_rand(&rng) % 8 == 0);
 			break;
 		case RDC_OP_READBACK:
 			args[1] = RDC_WH(tdp_range(&rng, 0, 60),

@@ -51,8 +51,8 @@ static void gen_image(uint8_t *px, uint32_t w, uint32_t h, uint32_t ch,
 					v = rng_next(&s) & 0xff;
 					break;
 				default:
-					v = ((x / 3 + y / 3) & 1) ? 200 - c
-								  : 20 + c;
+					v = ((x / 3 + y / 3) & 1) ? 200 - c :
+								    20 + c;
 					break;
 				}
 				px[((size_t)y * w + x) * ch + c] = (uint8_t)v;
@@ -63,7 +63,7 @@ static void gen_image(uint8_t *px, uint32_t w, uint32_t h, uint32_t ch,
 
 static struct rdc_surface dst_surface(uint32_t fmt)
 {
-	struct rdc_surface s = {0, 0, DST_W, DST_H, fmt};
+	struct rdc_surface s = { 0, 0, DST_W, DST_H, fmt };
 
 	s.stride = (DST_W * tdp_bpp(fmt) + 7) / 8;
 	s.stride = (s.stride + 3) & ~3u;
@@ -128,16 +128,17 @@ static void check_exact(struct tdp *t, const struct rdc_surface *s,
 					 x, y, w, h, ch, s->format);
 }
 
-static const uint32_t sizes[][2] = {{1, 1},	{7, 5},	 {129, 3}, {4, 4},
-				    {300, 200}, {33, 1}, {1, 40}};
+static const uint32_t sizes[][2] = { { 1, 1 }, { 7, 5 },     { 129, 3 },
+				     { 4, 4 }, { 300, 200 }, { 33, 1 },
+				     { 1, 40 } };
 
 static void roundtrip(void **state, uint32_t codec)
 {
 	struct tdp *t = *state;
 	static const uint32_t fmts[][2] = {
-		{RDC_FMT_I8, 1},     {RDC_FMT_XRGB8888, 3},
-		{RDC_FMT_RGB888, 3}, {RDC_FMT_XRGB8888, 1},
-		{RDC_FMT_RGB565, 3},
+		{ RDC_FMT_I8, 1 },     { RDC_FMT_XRGB8888, 3 },
+		{ RDC_FMT_RGB888, 3 }, { RDC_FMT_XRGB8888, 1 },
+		{ RDC_FMT_RGB565, 3 },
 	};
 	uint32_t si, fi, w, h, ch, fmt;
 	int kind;
@@ -191,7 +192,8 @@ static void test_btc(void **state)
 {
 	struct tdp *t = *state;
 	static const uint32_t whs[][2] = {
-		{4, 4}, {5, 7}, {64, 48}, {1, 1}, {130, 9}};
+		{ 4, 4 }, { 5, 7 }, { 64, 48 }, { 1, 1 }, { 130, 9 }
+	};
 	uint32_t i, ch, x, y, c, kind;
 
 	for (i = 0; i < RDC_ARRAY_SIZE(whs); i++) {
@@ -200,8 +202,8 @@ static void test_btc(void **state)
 				uint32_t w = whs[i][0], h = whs[i][1];
 				uint32_t bw = (w + 3) / 4, bh = (h + 3) / 4;
 				struct rdc_surface s =
-					dst_surface(ch == 1 ? RDC_FMT_I8
-							    : RDC_FMT_XRGB8888);
+					dst_surface(ch == 1 ? RDC_FMT_I8 :
+							      RDC_FMT_XRGB8888);
 				uint8_t *img = malloc((size_t)w * h * ch);
 				uint8_t *dec = malloc((size_t)w * h * ch);
 				uint8_t *st;
@@ -268,10 +270,8 @@ static void test_btc(void **state)
 									hi = RDC_MAX(
 										hi,
 										img[k]);
-									so += img
-										[k];
-									sd += dec
-										[k];
+									so += img[k];
+									sd += dec[k];
 									n++;
 								}
 							assert_true(
@@ -344,7 +344,7 @@ static void expect_bad(struct tdp *t, const uint8_t *stream, size_t len,
 		       uint32_t err)
 {
 	struct rdc_surface s = dst_surface(RDC_FMT_I8);
-	const uint32_t args[] = {addr, size, RDC_XY(0, 0)};
+	const uint32_t args[] = { addr, size, RDC_XY(0, 0) };
 	size_t i;
 
 	prep_dst(t, &s);

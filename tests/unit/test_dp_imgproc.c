@@ -24,7 +24,7 @@ static uint32_t rng_next(uint32_t *s)
 
 static struct rdc_surface surf(uint32_t fmt, uint32_t base)
 {
-	struct rdc_surface s = {base, 0, SURF_W, SURF_H, fmt};
+	struct rdc_surface s = { base, 0, SURF_W, SURF_H, fmt };
 
 	s.stride = ((SURF_W * tdp_bpp(fmt) + 7) / 8 + 7) & ~7u;
 	return s;
@@ -98,8 +98,8 @@ static void read_hist(struct tdp *t, uint32_t *h)
 static void test_histogram(void **state)
 {
 	struct tdp *t = *state;
-	static const uint32_t fmts[] = {RDC_FMT_I4, RDC_FMT_I8, RDC_FMT_RGB565,
-					RDC_FMT_RGB888, RDC_FMT_XRGB8888};
+	static const uint32_t fmts[] = { RDC_FMT_I4, RDC_FMT_I8, RDC_FMT_RGB565,
+					 RDC_FMT_RGB888, RDC_FMT_XRGB8888 };
 	uint32_t fi, sel, want[256], got[256], x, y, i, accum;
 
 	for (fi = 0; fi < RDC_ARRAY_SIZE(fmts); fi++) {
@@ -117,8 +117,7 @@ static void test_histogram(void **state)
 					for (x = 50; x < SURF_W; x++)
 						want[ref_value(fmts[fi],
 							       tdp_get(t->vram,
-								       &s, x,
-								       y),
+								       &s, x, y),
 							       sel)]++;
 				if (accum) {
 					for (i = 0; i < 256; i++) {
@@ -132,8 +131,8 @@ static void test_histogram(void **state)
 				}
 				tdp_push(t,
 					 RDC_CMD(RDC_OP_HISTOGRAM,
-						 sel | (accum ? RDC_HIST_ACCUM
-							      : 0),
+						 sel | (accum ? RDC_HIST_ACCUM :
+								0),
 						 3));
 				tdp_push(t, RDC_XY(50, 40));
 				tdp_push(t, RDC_WH(100, 100));
@@ -205,15 +204,15 @@ static void test_map_build(void **state)
 
 		for (k = 0; k < 256; k++) {
 			/* sparse, peaked and flat histograms */
-			h[k] = trial % 3 == 0
-				       ? (rng_next(&seed) % 7 == 0
-						  ? rng_next(&seed) % 1000
-						  : 0)
-			       : trial % 3 == 1
-				       ? (k > 90 && k < 120
-						  ? rng_next(&seed) % 50000
-						  : 0)
-				       : rng_next(&seed) % 100;
+			h[k] = trial % 3 == 0 ?
+				       (rng_next(&seed) % 7 == 0 ?
+						rng_next(&seed) % 1000 :
+						0) :
+			       trial % 3 == 1 ?
+				       (k > 90 && k < 120 ?
+						rng_next(&seed) % 50000 :
+						0) :
+				       rng_next(&seed) % 100;
 			n += h[k];
 		}
 		put_hist(t, h);
@@ -355,9 +354,9 @@ static void test_point_ops(void **state)
 								want = (ref_value(
 										fmt,
 										b,
-										sel) >= lvl
-										? fg
-										: bg) &
+										sel) >= lvl ?
+										fg :
+										bg) &
 								       tdp_mask(
 									       fmt);
 						}
@@ -418,8 +417,8 @@ static uint32_t ref_conv(const uint32_t *src, uint32_t fmt, int32_t x,
 			 int32_t y, const int32_t *k, uint32_t mode,
 			 uint32_t absf, int32_t div, int32_t bias)
 {
-	static const int32_t gx[9] = {-1, 0, 1, -2, 0, 2, -1, 0, 1};
-	static const int32_t gy[9] = {-1, -2, -1, 0, 0, 0, 1, 2, 1};
+	static const int32_t gx[9] = { -1, 0, 1, -2, 0, 2, -1, 0, 1 };
+	static const int32_t gy[9] = { -1, -2, -1, 0, 0, 0, 1, 2, 1 };
 	uint32_t sh[3], b[3], n = chans(fmt, sh, b), c, out, centre;
 	int32_t dx, dy;
 
@@ -433,14 +432,14 @@ static uint32_t ref_conv(const uint32_t *src, uint32_t fmt, int32_t x,
 				int32_t px = x + dx, py = y + dy;
 				int64_t p;
 
-				px = px < 0 ? 0
-				     : px >= (int32_t)SURF_W
-					     ? (int32_t)SURF_W - 1
-					     : px;
-				py = py < 0 ? 0
-				     : py >= (int32_t)SURF_H
-					     ? (int32_t)SURF_H - 1
-					     : py;
+				px = px < 0 ? 0 :
+				     px >= (int32_t)SURF_W ?
+					      (int32_t)SURF_W - 1 :
+					      px;
+				py = py < 0 ? 0 :
+				     py >= (int32_t)SURF_H ?
+					      (int32_t)SURF_H - 1 :
+					      py;
 				p = (src[py * SURF_W + px] >> sh[c]) & max;
 				s += k[(dy + 1) * 3 + dx + 1] * p;
 				sx += gx[(dy + 1) * 3 + dx + 1] * p;
@@ -473,10 +472,10 @@ static void test_convolve(void **state)
 {
 	struct tdp *t = *state;
 	static const int32_t presets[][11] = {
-		{1, 1, 1, 1, 1, 1, 1, 1, 1, 9, 0},	     /* box */
-		{1, 2, 1, 2, 4, 2, 1, 2, 1, 16, 0},	     /* Gauss */
-		{0, -1, 0, -1, 5, -1, 0, -1, 0, 1, 0},	     /* sharpen */
-		{-1, -1, -1, -1, 8, -1, -1, -1, -1, 1, 128}, /* Laplace */
+		{ 1, 1, 1, 1, 1, 1, 1, 1, 1, 9, 0 },	       /* box */
+		{ 1, 2, 1, 2, 4, 2, 1, 2, 1, 16, 0 },	       /* Gauss */
+		{ 0, -1, 0, -1, 5, -1, 0, -1, 0, 1, 0 },       /* sharpen */
+		{ -1, -1, -1, -1, 8, -1, -1, -1, -1, 1, 128 }, /* Laplace */
 	};
 	uint32_t seed = 99, trial, fmt, x, y, w, h;
 	uint32_t *src = malloc(SURF_W * SURF_H * 4);
@@ -487,8 +486,8 @@ static void test_convolve(void **state)
 	for (trial = 0; trial < 120; trial++) {
 		struct rdc_surface s, d;
 		int32_t k[9], div, bias, sx, sy, dx, dy, cx0, cy0, cx1, cy1, i;
-		uint32_t mode =
-			trial % 5 == 4 ? RDC_CONV_SOBEL : RDC_CONV_KERNEL;
+		uint32_t mode = trial % 5 == 4 ? RDC_CONV_SOBEL :
+						 RDC_CONV_KERNEL;
 		uint32_t absf = mode == RDC_CONV_KERNEL && trial % 7 == 3;
 		int inplace = trial % 4 == 1;
 
@@ -601,8 +600,8 @@ static void test_convolve_errors(void **state)
 {
 	struct tdp *t = *state;
 	struct rdc_surface a = surf(RDC_FMT_I8, 0), b = surf(RDC_FMT_RGB565, 0);
-	const uint32_t ok[7] = {0,	  0, RDC_WH(4, 4), 0x010101, 0x010101,
-				0x010101, 9};
+	const uint32_t ok[7] = { 0,	   0, RDC_WH(4, 4), 0x010101, 0x010101,
+				 0x010101, 9 };
 	uint32_t bad[7];
 
 	tdp_set_surface(t, RDC_OP_SET_SRC, &a);

@@ -14,8 +14,10 @@
 
 static uint32_t km_fields(uint32_t fmt, uint32_t f[4][2])
 {
-	static const uint32_t f565[3][2] = {{11, 5}, {5, 6}, {0, 5}};
-	static const uint32_t f888[4][2] = {{24, 8}, {16, 8}, {8, 8}, {0, 8}};
+	static const uint32_t f565[3][2] = { { 11, 5 }, { 5, 6 }, { 0, 5 } };
+	static const uint32_t f888[4][2] = {
+		{ 24, 8 }, { 16, 8 }, { 8, 8 }, { 0, 8 }
+	};
 
 	if (fmt == RDC_FMT_RGB565) {
 		memcpy(f, f565, sizeof(f565));
@@ -76,8 +78,8 @@ static void kscene_random(struct kscene *k, uint32_t *seed)
 	k->key_on = tdp_rand(seed) % 4 != 0;
 	k->alpha = tdp_rand(seed) % 3 ? tdp_rand(seed) % 256 : 255;
 	k->rop = tdp_rand(seed) % 3 ? RDC_ROP_COPY : tdp_rand(seed) % 16;
-	k->src = (struct rdc_surface){SRC_BASE, 0, KS_W, KS_H, k->fmt};
-	k->dst = (struct rdc_surface){DST_BASE, 0, KS_W, KS_H, k->fmt};
+	k->src = (struct rdc_surface){ SRC_BASE, 0, KS_W, KS_H, k->fmt };
+	k->dst = (struct rdc_surface){ DST_BASE, 0, KS_W, KS_H, k->fmt };
 	k->src.stride = (KS_W * tdp_bpp(k->fmt) + 7) / 8;
 	k->dst.stride = k->src.stride + 8;
 	k->sx = tdp_range(seed, -10, KS_W - 5);
@@ -97,8 +99,8 @@ static void kscene_fill(struct tdp *t, struct kscene *k, uint32_t *seed)
 	k->key = tdp_rand(seed);
 	for (y = 0; y < KS_H; y++)
 		for (x = 0; x < KS_W; x++) {
-			uint32_t v =
-				tdp_rand(seed) % 3 ? tdp_rand(seed) : k->key;
+			uint32_t v = tdp_rand(seed) % 3 ? tdp_rand(seed) :
+							  k->key;
 
 			tdp_put(t->vram, &k->src, x, y, v & mask);
 			tdp_put(t->vram, &k->dst, x, y, tdp_rand(seed));
@@ -222,7 +224,7 @@ static void test_key_host_vs_model(void **state)
 static void test_key_extremes(void **state)
 {
 	struct tdp *t = *state;
-	struct rdc_surface s = {0, 2560, 640, 480, RDC_FMT_XRGB8888};
+	struct rdc_surface s = { 0, 2560, 640, 480, RDC_FMT_XRGB8888 };
 	const uint32_t key = 0x00ff00ffu;
 
 	tdp_put(t->vram, &s, 0, 0, 0x00102030u);
@@ -252,7 +254,7 @@ static void test_key_extremes(void **state)
 static void test_key_bad_args(void **state)
 {
 	struct tdp *t = *state;
-	const uint32_t two[2] = {0, 0};
+	const uint32_t two[2] = { 0, 0 };
 
 	TDP_CMD(t, RDC_OP_SET_ALPHA, 256);
 	tdp_drain(t);

@@ -11,7 +11,8 @@
 #define LIST_B 0x201000u
 #define LIST_C 0x202000u
 
-static const struct rdc_surface screen = {0, 2560, 640, 480, RDC_FMT_XRGB8888};
+static const struct rdc_surface screen = { 0, 2560, 640, 480,
+					   RDC_FMT_XRGB8888 };
 
 /* A list being assembled at a VRAM address. */
 struct lst {
@@ -40,10 +41,10 @@ static void lst_cmd(struct lst *l, uint32_t op, unsigned int n,
 		lst_word(l, a[i]);
 }
 
-#define LST(l, op, ...)                                                        \
-	do {                                                                   \
-		const uint32_t lst_a_[] = {__VA_ARGS__};                       \
-		lst_cmd((l), (op), RDC_ARRAY_SIZE(lst_a_), lst_a_);            \
+#define LST(l, op, ...) \
+	do { \
+		const uint32_t lst_a_[] = { __VA_ARGS__ }; \
+		lst_cmd((l), (op), RDC_ARRAY_SIZE(lst_a_), lst_a_); \
 	} while (0)
 #define LST0(l, op) lst_cmd((l), (op), 0, NULL)
 
@@ -56,7 +57,7 @@ static uint32_t px(struct tdp *t, int32_t x, int32_t y)
 static void test_list_equals_fifo(void **state)
 {
 	struct tdp *t = *state, *u = tdp_new();
-	struct lst l = {t, LIST_A, 0};
+	struct lst l = { t, LIST_A, 0 };
 
 	LST(&l, RDC_OP_SET_FG, 0x00ff8000u);
 	LST(&l, RDC_OP_FILL_RECT, RDC_XY(10, 10), RDC_WH(50, 20));
@@ -89,8 +90,8 @@ static void test_list_equals_fifo(void **state)
 static void test_list_nested(void **state)
 {
 	struct tdp *t = *state;
-	struct lst a = {t, LIST_A, 0}, b = {t, LIST_B, 0};
-	struct lst c = {t, LIST_C, 0};
+	struct lst a = { t, LIST_A, 0 }, b = { t, LIST_B, 0 };
+	struct lst c = { t, LIST_C, 0 };
 
 	LST(&a, RDC_OP_SET_FG, 1);
 	LST(&a, RDC_OP_PIXEL, RDC_XY(1, 0));
@@ -129,7 +130,7 @@ static void test_list_nested(void **state)
 static void test_list_depth(void **state)
 {
 	struct tdp *t = *state;
-	struct lst a = {t, LIST_A, 0};
+	struct lst a = { t, LIST_A, 0 };
 	uint32_t i;
 
 	LST(&a, RDC_OP_FILL_RECT, RDC_XY(0, 0), RDC_WH(1, 1));
@@ -172,9 +173,9 @@ static void test_list_ret_top(void **state)
 static void test_list_bad(void **state)
 {
 	struct tdp *t = *state;
-	struct lst a = {t, LIST_A, 0};
-	struct lst e = {t, TDP_VRAM_SIZE - 8, 0};
-	const uint32_t two[2] = {LIST_A, 0};
+	struct lst a = { t, LIST_A, 0 };
+	struct lst e = { t, TDP_VRAM_SIZE - 8, 0 };
+	const uint32_t two[2] = { LIST_A, 0 };
 
 	TDP_CMD(t, RDC_OP_SET_FG, 7);
 	TDP_CMD(t, RDC_OP_CALL, LIST_A + 2);
@@ -253,7 +254,7 @@ static void test_list_bad(void **state)
 static void test_list_halt(void **state)
 {
 	struct tdp *t = *state;
-	struct lst a = {t, LIST_A, 0};
+	struct lst a = { t, LIST_A, 0 };
 
 	LST(&a, RDC_OP_SET_FG, 9);
 	LST(&a, RDC_OP_SET_ROP, 99);
@@ -282,7 +283,7 @@ static void test_list_halt(void **state)
 static void test_list_jump_loop(void **state)
 {
 	struct tdp *t = *state;
-	struct lst a = {t, LIST_A, 0};
+	struct lst a = { t, LIST_A, 0 };
 	uint64_t t0;
 
 	LST(&a, RDC_OP_SET_FG, 5);
@@ -315,7 +316,7 @@ static void test_list_jump_loop(void **state)
 static void test_list_ring(void **state)
 {
 	struct tdp *t = *state;
-	struct lst a = {t, LIST_A, 0}, r = {t, 0x300000u, 0};
+	struct lst a = { t, LIST_A, 0 }, r = { t, 0x300000u, 0 };
 	uint32_t i;
 
 	LST(&a, RDC_OP_SET_FG, 3);
@@ -359,7 +360,7 @@ static void test_list_ring(void **state)
 static void test_list_cycles(void **state)
 {
 	struct tdp *t = *state;
-	struct lst a = {t, LIST_A + 64, 0};
+	struct lst a = { t, LIST_A + 64, 0 };
 	uint32_t open, i, pc = LIST_A + 64;
 	uint64_t want, busy;
 

@@ -185,8 +185,10 @@ static void test_thick_random(void **state)
 	int x, y;
 
 	for (k = 0; k < 60; k++) {
-		int ax = tdp_range(&seed, 20, 140), ay = tdp_range(&seed, 20, 140);
-		int bx = tdp_range(&seed, 20, 140), by = tdp_range(&seed, 20, 140);
+		int ax = tdp_range(&seed, 20, 140),
+		    ay = tdp_range(&seed, 20, 140);
+		int bx = tdp_range(&seed, 20, 140),
+		    by = tdp_range(&seed, 20, 140);
 		uint32_t w = (uint32_t)tdp_range(&seed, 2, 20);
 		uint32_t cap = k % 2 ? RDC_CAP_ROUND : RDC_CAP_BUTT;
 		double h = w / 2.0, eps = 1.0 / 32;
@@ -199,7 +201,8 @@ static void test_thick_random(void **state)
 		tdp_drain(t);
 		for (y = 0; y < 170; y++) {
 			for (x = 0; x < 170; x++) {
-				double tp, d = seg_dist(x, y, ax, ay, bx, by, &tp);
+				double tp,
+					d = seg_dist(x, y, ax, ay, bx, by, &tp);
 				double len = pen_hypot(bx - ax, by - ay);
 				double along = tp * len; /* from a */
 				bool in, out;
@@ -231,8 +234,10 @@ static void test_thick_symmetric(void **state)
 	int x, y;
 
 	for (k = 0; k < 40; k++) {
-		int ax = tdp_range(&seed, 10, 190), ay = tdp_range(&seed, 10, 190);
-		int bx = tdp_range(&seed, 10, 190), by = tdp_range(&seed, 10, 190);
+		int ax = tdp_range(&seed, 10, 190),
+		    ay = tdp_range(&seed, 10, 190);
+		int bx = tdp_range(&seed, 10, 190),
+		    by = tdp_range(&seed, 10, 190);
 		uint32_t w = (uint32_t)tdp_range(&seed, 2, 16);
 
 		TDP_CMD(t, RDC_OP_SET_PEN, pen_word(w, k % 3, 0));
@@ -247,7 +252,8 @@ static void test_thick_symmetric(void **state)
 		tdp_drain(t);
 		for (y = 0; y < 200; y++)
 			for (x = 0; x < 200; x++)
-				assert_int_equal(snap[y * 200 + x], px(t, x, y));
+				assert_int_equal(snap[y * 200 + x],
+						 px(t, x, y));
 	}
 }
 
@@ -261,7 +267,8 @@ static void test_dash_line(void **state)
 	int x, y;
 
 	for (k = 0; k < 30; k++) {
-		int x0 = tdp_range(&seed, 0, 300), x1 = tdp_range(&seed, 0, 300);
+		int x0 = tdp_range(&seed, 0, 300),
+		    x1 = tdp_range(&seed, 0, 300);
 		int y0 = tdp_range(&seed, 0, 100);
 		int y1 = y0 + tdp_range(&seed, 0, abs(x1 - x0));
 		uint32_t bits = tdp_rand(&seed), len = 1 + k % 32;
@@ -442,16 +449,11 @@ static void test_cycles(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_bad_args),
-		TDP_TEST(test_thick_axis),
-		TDP_TEST(test_thick_random),
-		TDP_TEST(test_thick_symmetric),
-		TDP_TEST(test_dash_line),
-		TDP_TEST(test_dash_polyline),
-		TDP_TEST(test_polygon_once),
-		TDP_TEST(test_rect_frame),
-		TDP_TEST(test_thick_once),
-		TDP_TEST(test_cycles),
+		TDP_TEST(test_bad_args),     TDP_TEST(test_thick_axis),
+		TDP_TEST(test_thick_random), TDP_TEST(test_thick_symmetric),
+		TDP_TEST(test_dash_line),    TDP_TEST(test_dash_polyline),
+		TDP_TEST(test_polygon_once), TDP_TEST(test_rect_frame),
+		TDP_TEST(test_thick_once),   TDP_TEST(test_cycles),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -63,12 +63,13 @@ static void test_random_vs_ref(void **state)
 		for (y = 0; y < H; y++)
 			for (x = 0; x < W; x++) {
 				bool in = in_rect(&c, x, y) &&
-					  rdc_ref_poly_inside(xy, n, fl != 0,
-							      x, y);
+					  rdc_ref_poly_inside(xy, n, fl != 0, x,
+							      y);
 
 				if (tdp_get(t->vram, &s, x, y) != (in ? fg : 0))
-					fail_msg("iter %u fmt %u (%d,%d) want %d",
-						 iter, fmt, x, y, in);
+					fail_msg(
+						"iter %u fmt %u (%d,%d) want %d",
+						iter, fmt, x, y, in);
 			}
 	}
 }
@@ -116,10 +117,12 @@ static void test_tiling(void **state)
 			}
 		for (j = 0; j < GY; j++)
 			for (i = 0; i < GX; i++) {
-				int32_t q[8] = { gx[j][i], gy[j][i],
-						 gx[j][i + 1], gy[j][i + 1],
-						 gx[j + 1][i + 1], gy[j + 1][i + 1],
-						 gx[j + 1][i], gy[j + 1][i] };
+				int32_t q[8] = {
+					gx[j][i],	  gy[j][i],
+					gx[j][i + 1],	  gy[j][i + 1],
+					gx[j + 1][i + 1], gy[j + 1][i + 1],
+					gx[j + 1][i],	  gy[j + 1][i]
+				};
 				int32_t tri[2][6];
 				uint32_t kind = tdp_rand(&rng) % 3, p;
 
@@ -129,7 +132,8 @@ static void test_tiling(void **state)
 
 				/* a quad, or two triangles either way round */
 				for (k = 0; k < 6; k++) {
-					tri[0][k] = q[kind == 1 ? (k + 2) % 8 : k];
+					tri[0][k] =
+						q[kind == 1 ? (k + 2) % 8 : k];
 					tri[1][k] = q[kind == 1 ? (k + 6) % 8 :
 								  (k + 4) % 8];
 				}
@@ -138,14 +142,18 @@ static void test_tiling(void **state)
 
 					tpp_clear(t, &s);
 					if (kind)
-						tpp_fill_poly(t, tri[p], 3,
-							      p ? RDC_FILL_NONZERO : 0);
+						tpp_fill_poly(
+							t, tri[p], 3,
+							p ? RDC_FILL_NONZERO :
+							    0);
 					else
 						tpp_fill_poly(t, q, 4, 0);
 					for (y = 0; y < H; y++)
 						for (x = 0; x < W; x++)
 							count[y * W + x] +=
-								tdp_get(t->vram, &s, x, y);
+								tdp_get(t->vram,
+									&s, x,
+									y);
 				}
 			}
 		for (k = 0; k < W * H; k++) {
@@ -180,12 +188,17 @@ static void check_clip_equiv(struct tdp *t, const struct rdc_surface *s,
 	assert_int_equal(tdp_err(t), 0);
 	for (y = 0; y < (int32_t)s->height; y++)
 		for (x = 0; x < (int32_t)s->width; x++) {
-			uint32_t want = in_rect(c, x, y) ?
-						full[(size_t)y * s->stride + x] : 0;
+			uint32_t want =
+				in_rect(c, x, y) ?
+					full[(size_t)y * s->stride + x] :
+					0;
 
-			if (t->vram[s->base + (size_t)y * s->stride + x] != want)
+			if (t->vram[s->base + (size_t)y * s->stride + x] !=
+			    want)
 				fail_msg("(%d,%d) clipped %u unclipped %u", x,
-					 y, t->vram[s->base + (size_t)y * s->stride + x],
+					 y,
+					 t->vram[s->base +
+						 (size_t)y * s->stride + x],
 					 want);
 		}
 	free(full);
@@ -221,14 +234,15 @@ static void test_clip_equiv(void **state)
 	for (i = 0; i < RDC_CMD_MAX_ARGS; i++) {
 		zig[2 * i] = (int32_t)(i % 2 ? W + 20 : -20) +
 			     (int32_t)(i % 4 == 1 ? 3 : 0);
-		zig[2 * i + 1] = -10 + (int32_t)(i * (H + 20) / RDC_CMD_MAX_ARGS);
+		zig[2 * i + 1] =
+			-10 + (int32_t)(i * (H + 20) / RDC_CMD_MAX_ARGS);
 	}
 	{
 		struct rdc_rect c = { 10, 6, W - 10, H - 6 };
 
 		check_clip_equiv(t, &s, zig, RDC_CMD_MAX_ARGS, 0, &c);
-		check_clip_equiv(t, &s, zig, RDC_CMD_MAX_ARGS,
-				 RDC_FILL_NONZERO, &c);
+		check_clip_equiv(t, &s, zig, RDC_CMD_MAX_ARGS, RDC_FILL_NONZERO,
+				 &c);
 	}
 	free(zig);
 }
@@ -243,7 +257,8 @@ static void test_transform_translate(void **state)
 	for (iter = 0; iter < 40; iter++) {
 		int32_t xy[16], moved[16];
 		uint32_t n = (uint32_t)tdp_range(&rng, 3, 8), i;
-		int32_t tx = tdp_range(&rng, -30, 30), ty = tdp_range(&rng, -30, 30);
+		int32_t tx = tdp_range(&rng, -30, 30),
+			ty = tdp_range(&rng, -30, 30);
 
 		random_poly(&rng, xy, n, 20);
 		for (i = 0; i < n; i++) {
@@ -255,8 +270,9 @@ static void test_transform_translate(void **state)
 		tpp_fill_poly(t, moved, n, 0);
 		h1 = tpp_hash(t, &s);
 		tpp_clear(t, &s);
-		TDP_CMD(t, RDC_OP_SET_TRANSFORM, 1u << 16, 0, (uint32_t)tx << 16,
-			0, 1u << 16, (uint32_t)ty << 16, 0, 0, 1u << 16);
+		TDP_CMD(t, RDC_OP_SET_TRANSFORM, 1u << 16, 0,
+			(uint32_t)tx << 16, 0, 1u << 16, (uint32_t)ty << 16, 0,
+			0, 1u << 16);
 		tpp_fill_poly(t, xy, n, 0);
 		TDP_CMD(t, RDC_OP_SET_TRANSFORM);
 		tdp_drain(t);
@@ -268,7 +284,8 @@ static void test_transform_translate(void **state)
 static uint32_t pat_mono_word(const uint8_t *rows, unsigned int k)
 {
 	return (uint32_t)rows[4 * k] | (uint32_t)rows[4 * k + 1] << 8 |
-	       (uint32_t)rows[4 * k + 2] << 16 | (uint32_t)rows[4 * k + 3] << 24;
+	       (uint32_t)rows[4 * k + 2] << 16 |
+	       (uint32_t)rows[4 * k + 3] << 24;
 }
 
 /* Patterns on FILL_RECT, FILL_POLYGON, FILL_CIRCLE, FILL_ELLIPSE: the
@@ -291,7 +308,8 @@ static void test_patterns(void **state)
 
 		assert_non_null(solid);
 		for (prim = 0; prim < 4; prim++) {
-			for (mode = RDC_PAT_MONO; mode <= RDC_PAT_COLOR; mode++) {
+			for (mode = RDC_PAT_MONO; mode <= RDC_PAT_COLOR;
+			     mode++) {
 				const int32_t tri[6] = { 5, 3, 90, 20, 30, 70 };
 				uint32_t fg = 0xfedcba98 & tdp_mask(fmt);
 				uint32_t bg = 0x13579bdf & tdp_mask(fmt);
@@ -305,7 +323,8 @@ static void test_patterns(void **state)
 					switch (prim) {
 					case 0:
 						TDP_CMD(t, RDC_OP_FILL_RECT,
-							RDC_XY(3, 5), RDC_WH(70, 50));
+							RDC_XY(3, 5),
+							RDC_WH(70, 50));
 						break;
 					case 1:
 						tpp_fill_poly(t, tri, 3, 0);
@@ -329,7 +348,8 @@ static void test_patterns(void **state)
 					memset(t->vram + s.base, 0, bytes);
 					for (y = 0; y < H; y++)
 						for (x = 0; x < W; x++)
-							tdp_put(t->vram, &s, x, y, pre);
+							tdp_put(t->vram, &s, x,
+								y, pre);
 					TDP_CMD(t, RDC_OP_SET_FG, fg);
 					TDP_CMD(t, RDC_OP_SET_BG, bg);
 					if (mode == RDC_PAT_COLOR) {
@@ -338,7 +358,8 @@ static void test_patterns(void **state)
 					} else {
 						uint32_t w2[2] = {
 							pat_mono_word(rows, 0),
-							pat_mono_word(rows, 1) };
+							pat_mono_word(rows, 1)
+						};
 
 						tdp_cmd(t, RDC_OP_SET_PATTERN,
 							mode, 2, w2);
@@ -352,18 +373,29 @@ static void test_patterns(void **state)
 
 						ss.base = 0;
 						if (tdp_get(solid, &ss, x, y)) {
-							bit = (rows[y & 7] >> (7 - (x & 7))) & 1;
-							if (mode == RDC_PAT_COLOR)
-								want = colors[(y & 7) * 8 + (x & 7)] &
-								       tdp_mask(fmt);
+							bit = (rows[y & 7] >>
+							       (7 - (x & 7))) &
+							      1;
+							if (mode ==
+							    RDC_PAT_COLOR)
+								want = colors[(y &
+									       7) * 8 +
+									      (x &
+									       7)] &
+								       tdp_mask(
+									       fmt);
 							else if (bit)
 								want = fg;
-							else if (mode == RDC_PAT_MONO)
+							else if (mode ==
+								 RDC_PAT_MONO)
 								want = bg;
 						}
-						if (tdp_get(t->vram, &s, x, y) != want)
-							fail_msg("fmt %u prim %u mode %u (%d,%d)",
-								 fmt, prim, mode, x, y);
+						if (tdp_get(t->vram, &s, x,
+							    y) != want)
+							fail_msg(
+								"fmt %u prim %u mode %u (%d,%d)",
+								fmt, prim, mode,
+								x, y);
 					}
 			}
 		}
@@ -515,9 +547,9 @@ static void test_cycles(void **state)
 			want = 3 * RDC_T_FIFO_WORD + RDC_T_DECODE;
 			for (y = 4; y < 4 + 9; y++)
 				want += tpp_row_cost(&open, &s, 3, y, 50,
-						     mode == RDC_PAT_MONO
-							     ? TDP_BUS_WRITE
-							     : TDP_BUS_RMW);
+						     mode == RDC_PAT_MONO ?
+							     TDP_BUS_WRITE :
+							     TDP_BUS_RMW);
 			TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(3, 4),
 				RDC_WH(50, 9));
 			tdp_drain(t);

@@ -9,10 +9,11 @@
 #include "test_dp_common.h"
 
 static const uint8_t ops[] = {
-	RDC_OP_FILL_POLYGON, RDC_OP_FLOOD_FILL, RDC_OP_SET_PATTERN,
-	RDC_OP_TRIANGLE, RDC_OP_SET_ZBUF, RDC_OP_CLEAR_Z, RDC_OP_SET_DST,
-	RDC_OP_SET_CLIP, RDC_OP_SET_ROP, RDC_OP_FILL_RECT, RDC_OP_FILL_CIRCLE,
-	RDC_OP_RECT, RDC_OP_SET_TRANSFORM,
+	RDC_OP_FILL_POLYGON,  RDC_OP_FLOOD_FILL,  RDC_OP_SET_PATTERN,
+	RDC_OP_TRIANGLE,      RDC_OP_SET_ZBUF,	  RDC_OP_CLEAR_Z,
+	RDC_OP_SET_DST,	      RDC_OP_SET_CLIP,	  RDC_OP_SET_ROP,
+	RDC_OP_FILL_RECT,     RDC_OP_FILL_CIRCLE, RDC_OP_RECT,
+	RDC_OP_SET_TRANSFORM,
 };
 
 static uint32_t rnd_xy(uint32_t *rng, int32_t lo, int32_t hi)
@@ -22,7 +23,8 @@ static uint32_t rnd_xy(uint32_t *rng, int32_t lo, int32_t hi)
 		return tdp_rand(rng);
 	case 1:
 		return RDC_XY(tdp_rand(rng) % 2 ? RDC_COORD_MIN : RDC_COORD_MAX,
-			      tdp_rand(rng) % 2 ? RDC_COORD_MIN : RDC_COORD_MAX);
+			      tdp_rand(rng) % 2 ? RDC_COORD_MIN :
+						  RDC_COORD_MAX);
 	default:
 		return RDC_XY(tdp_range(rng, lo, hi), tdp_range(rng, lo, hi));
 	}
@@ -122,8 +124,9 @@ static void test_fuzz_stream(void **state)
 		case RDC_OP_SET_TRANSFORM:
 			len = tdp_rand(&rng) % 3 ? 0 : 9;
 			for (i = 0; i < 9; i++)
-				args[i] = i % 4 == 0 ? 1u << 16 :
-					  tdp_rand(&rng) % 2 ? 0 : tdp_rand(&rng);
+				args[i] = i % 4 == 0	     ? 1u << 16 :
+					  tdp_rand(&rng) % 2 ? 0 :
+							       tdp_rand(&rng);
 			break;
 		default:
 			len = 2;

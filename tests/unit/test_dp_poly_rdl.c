@@ -52,9 +52,8 @@ static uint32_t px(rdc_dev *dev, int x, int y)
 {
 	uint32_t v = 0;
 
-	assert_int_equal(rdc_vram_read(dev, (uint32_t)(y * STRIDE + x * 4), &v,
-				       4),
-			 0);
+	assert_int_equal(
+		rdc_vram_read(dev, (uint32_t)(y * STRIDE + x * 4), &v, 4), 0);
 	return v & 0xffffff;
 }
 
@@ -62,14 +61,15 @@ static void test_fill_polygon(void **state)
 {
 	rdc_dev *dev = *state;
 
-	assert_int_equal(run(dev, "mode 320x200 xrgb8888\n"
-				  "fg #112233\n"
-				  "fill-polygon 0 0 4 0 4 2 0 2\n"
-				  /* a square wound twice: a hole unless nonzero */
-				  "fill-polygon 10 0 20 0 20 10 10 10 10 0 "
-				  "13 3 17 3 17 7 13 7 13 3\n"
-				  "fill-polygon nonzero 30 0 40 0 40 10 30 10 30 0 "
-				  "33 3 37 3 37 7 33 7 33 3\n"),
+	assert_int_equal(run(dev,
+			     "mode 320x200 xrgb8888\n"
+			     "fg #112233\n"
+			     "fill-polygon 0 0 4 0 4 2 0 2\n"
+			     /* a square wound twice: a hole unless nonzero */
+			     "fill-polygon 10 0 20 0 20 10 10 10 10 0 "
+			     "13 3 17 3 17 7 13 7 13 3\n"
+			     "fill-polygon nonzero 30 0 40 0 40 10 30 10 30 0 "
+			     "33 3 37 3 37 7 33 7 33 3\n"),
 			 0);
 	assert_int_equal(px(dev, 0, 0), 0x112233);
 	assert_int_equal(px(dev, 3, 1), 0x112233);
@@ -128,10 +128,11 @@ static void test_flood(void **state)
 {
 	rdc_dev *dev = *state;
 
-	assert_int_equal(run(dev, "mode 320x200 xrgb8888\n"
-				  "fg #ff0000\nrect 10 10 20 20\n"
-				  "fg #00ff00\nflood 15 15\n"
-				  "fg #0000ff\nflood 100 100 8 boundary #ff0000\n"),
+	assert_int_equal(run(dev,
+			     "mode 320x200 xrgb8888\n"
+			     "fg #ff0000\nrect 10 10 20 20\n"
+			     "fg #00ff00\nflood 15 15\n"
+			     "fg #0000ff\nflood 100 100 8 boundary #ff0000\n"),
 			 0);
 	assert_int_equal(px(dev, 11, 11), 0x00ff00);
 	assert_int_equal(px(dev, 28, 28), 0x00ff00);
@@ -153,20 +154,20 @@ static void test_triangle_zbuf(void **state)
 	rdc_dev *dev = *state;
 	uint16_t z[2];
 
-	assert_int_equal(run(dev, "mode 320x200 xrgb8888\n"
-				  "zbuf 0x200000 640 test write\n"
-				  "clear-z 500\n"
-				  "triangle 0 0 #00ff00 400 40 0 0 400 0 40 0 400\n"
-				  "triangle gouraud 0 0 #ff0000 600 40 0 #ff0000 600 "
-				  "0 40 #ff0000 600\n"
-				  "zbuf off\n"),
-			 0);
+	assert_int_equal(
+		run(dev, "mode 320x200 xrgb8888\n"
+			 "zbuf 0x200000 640 test write\n"
+			 "clear-z 500\n"
+			 "triangle 0 0 #00ff00 400 40 0 0 400 0 40 0 400\n"
+			 "triangle gouraud 0 0 #ff0000 600 40 0 #ff0000 600 "
+			 "0 40 #ff0000 600\n"
+			 "zbuf off\n"),
+		0);
 	assert_int_equal(px(dev, 1, 1), 0x00ff00);
 	assert_int_equal(rdc_vram_read(dev, 0x200000 + 640 * 1 + 2, z, 4), 0);
 	assert_int_equal(z[0], 400);
-	assert_int_equal(rdc_vram_read(dev, 0x200000 + 640 * 199 + 2 * 318, z,
-				       4),
-			 0);
+	assert_int_equal(
+		rdc_vram_read(dev, 0x200000 + 640 * 199 + 2 * 318, z, 4), 0);
 	assert_int_equal(z[0], 500);
 	assert_int_equal(run(dev, "triangle 1 2 3\n"), RDC_E_PARSE);
 	assert_int_equal(run(dev, "triangle 0 0 1 70000 1 1 1 0 2 2 1 0\n"),

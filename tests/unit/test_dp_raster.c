@@ -11,8 +11,18 @@
 /* checksum of test_random_vs_ref's scenes and results (see there) */
 #define TDP_RASTER_CRC 0x681c4c17u
 
-enum prim { P_PIXEL, P_LINE, P_POLY, P_RECT, P_FRECT, P_CIRCLE, P_FCIRCLE,
-	    P_ELLIPSE, P_FELLIPSE, P_COUNT };
+enum prim {
+	P_PIXEL,
+	P_LINE,
+	P_POLY,
+	P_RECT,
+	P_FRECT,
+	P_CIRCLE,
+	P_FCIRCLE,
+	P_ELLIPSE,
+	P_FELLIPSE,
+	P_COUNT
+};
 
 /* Counts of how many times each pixel of the surface gets drawn. */
 struct cmap {
@@ -244,8 +254,8 @@ static uint32_t run_scene(struct tdp *t, uint32_t *rng, int prim, uint32_t h)
 			uint32_t k, v = tdp_get(want, &sc.s, x, y);
 
 			for (k = 0; k < m.n[y * m.w + x]; k++)
-				v = tdp_rop(sc.rop, sc.fg & tdp_mask(sc.s.format),
-					    v);
+				v = tdp_rop(sc.rop,
+					    sc.fg & tdp_mask(sc.s.format), v);
 			tdp_put(want, &sc.s, x, y, v);
 		}
 	scene_draw(t, &sc);
@@ -253,8 +263,8 @@ static uint32_t run_scene(struct tdp *t, uint32_t *rng, int prim, uint32_t h)
 		for (i = 0; i < win && want[i] == t->vram[i]; i++)
 			;
 		fail_msg("prim %d fmt %u rop %u: byte %zu differs "
-			 "(want %02x got %02x)", sc.prim, sc.s.format, sc.rop,
-			 i, want[i], t->vram[i]);
+			 "(want %02x got %02x)",
+			 sc.prim, sc.s.format, sc.rop, i, want[i], t->vram[i]);
 	}
 	h = tdp_fnv(h, &sc, sizeof(sc));
 	h = tdp_fnv(h, t->vram, win);
@@ -284,7 +294,10 @@ static void test_random_vs_ref(void **state)
 /* ---- properties ---------------------------------------------------- */
 
 static const struct rdc_surface sq = {
-	.base = 0x10000, .stride = 512, .width = 512, .height = 512,
+	.base = 0x10000,
+	.stride = 512,
+	.width = 512,
+	.height = 512,
 	.format = RDC_FMT_I8,
 };
 
@@ -357,11 +370,12 @@ static void test_line_translation(void **state)
 
 				if (x + dx < 512 && y + dy < 512)
 					in2 = (tdp_get(t->vram, &sq, x + dx,
-						       y + dy) & 2) != 0;
+						       y + dy) &
+					       2) != 0;
 				if (in1 != in2)
 					fail_msg("line %d,%d-%d,%d moved by "
-						 "%d,%d: pixel %d,%d", x0, y0,
-						 x1, y1, dx, dy, x, y);
+						 "%d,%d: pixel %d,%d",
+						 x0, y0, x1, y1, dx, dy, x, y);
 			}
 	}
 }
@@ -373,8 +387,11 @@ static void test_line_translation(void **state)
 static void test_line_clip_invariance(void **state)
 {
 	struct tdp *t = *state;
-	struct scene sc = { .s = sq, .fg = 0x5a, .rop = RDC_ROP_COPY,
-			    .prim = P_LINE, .npts = 2 };
+	struct scene sc = { .s = sq,
+			    .fg = 0x5a,
+			    .rop = RDC_ROP_COPY,
+			    .prim = P_LINE,
+			    .npts = 2 };
 	uint32_t rng = 4242, k;
 	int32_t x, y;
 

@@ -7,8 +7,8 @@
 #include "tdp_poly.h"
 #include "ref_poly.h"
 
-#define W 96
-#define H 72
+#define W     96
+#define H     72
 #define ZBASE 0x100000u
 
 static void tri_cmd(struct tdp *t, const int32_t *xy, const uint32_t *col,
@@ -54,10 +54,12 @@ static void test_coverage(void **state)
 		assert_int_equal(tdp_err(t), 0);
 		for (y = 0; y < H; y++)
 			for (x = 0; x < W; x++) {
-				bool in = rdc_ref_poly_inside(xy, 3, false, x, y);
+				bool in =
+					rdc_ref_poly_inside(xy, 3, false, x, y);
 
 				assert_int_equal(tdp_get(t->vram, &s, x, y),
-						 in ? col[0] & tdp_mask(fmt) : 0);
+						 in ? col[0] & tdp_mask(fmt) :
+						      0);
 			}
 	}
 }
@@ -82,16 +84,20 @@ static void test_shared_edges(void **state)
 		for (k = 0; k < N; k++) {
 			/* 1000 cos, 1000 sin of k * 40 degrees */
 			static const int32_t cs[N][2] = {
-				{ 1000, 0 }, { 766, 643 }, { 174, 985 },
-				{ -500, 866 }, { -940, 342 }, { -940, -342 },
-				{ -500, -866 }, { 174, -985 }, { 766, -643 } };
+				{ 1000, 0 },	{ 766, 643 },  { 174, 985 },
+				{ -500, 866 },	{ -940, 342 }, { -940, -342 },
+				{ -500, -866 }, { 174, -985 }, { 766, -643 }
+			};
 			int32_t r = tdp_range(&rng, 15, 30);
 
 			ring[2 * k] = cx + r * cs[k][0] / 1000;
 			ring[2 * k + 1] = cy + r * cs[k][1] / 1000;
 		}
 		for (k = 0; k < N; k++) {
-			int32_t tri[6] = { cx, cy, ring[2 * k], ring[2 * k + 1],
+			int32_t tri[6] = { cx,
+					   cy,
+					   ring[2 * k],
+					   ring[2 * k + 1],
 					   ring[2 * ((k + 1) % N)],
 					   ring[2 * ((k + 1) % N) + 1] };
 
@@ -99,19 +105,19 @@ static void test_shared_edges(void **state)
 			tri_cmd(t, tri, col, z, iter % 2 ? RDC_TRI_GOURAUD : 0);
 			for (y = 0; y < H; y++)
 				for (x = 0; x < W; x++)
-					count[y * W + x] += tdp_get(t->vram, &s, x, y);
+					count[y * W + x] +=
+						tdp_get(t->vram, &s, x, y);
 		}
 		for (y = 0; y < H; y++)
 			for (x = 0; x < W; x++)
 				assert_int_equal(count[y * W + x],
-						 rdc_ref_poly_inside(ring, N, false,
-								     x, y));
+						 rdc_ref_poly_inside(
+							 ring, N, false, x, y));
 	}
 }
 
 /* The plane through three values, at pixel centre (px, py). */
-static double plane(const int32_t *xy, const double *a, int32_t px,
-		    int32_t py)
+static double plane(const int32_t *xy, const double *a, int32_t px, int32_t py)
 {
 	double x = px + 0.5, y = py + 0.5;
 	double x0 = xy[0], y0 = xy[1], x1 = xy[2], y1 = xy[3];
@@ -172,15 +178,17 @@ static void test_gouraud(void **state)
 				for (ch = 0; ch < nch; ch++) {
 					double a[3], want;
 					uint32_t m = (1u << wd[ch]) - 1;
-					int32_t g = (int32_t)((got >> sh[ch]) & m);
+					int32_t g =
+						(int32_t)((got >> sh[ch]) & m);
 
 					for (i = 0; i < 3; i++)
 						a[i] = (col[i] >> sh[ch]) & m;
 					want = plane(xy, a, x, y);
 					if (dabs(g - want) > 0.5 + 1e-6)
-						fail_msg("fmt %u (%d,%d) ch %u got %d "
-							 "want %.3f", fmt, x, y,
-							 ch, g, want);
+						fail_msg(
+							"fmt %u (%d,%d) ch %u got %d "
+							"want %.3f",
+							fmt, x, y, ch, g, want);
 				}
 			}
 	}
@@ -229,8 +237,10 @@ static void test_depth(void **state)
 		h[order] = tpp_hash(t, &s);
 		for (y = 0; y < H; y++)
 			for (x = 0; x < W; x++) {
-				bool ina = rdc_ref_poly_inside(a, 3, false, x, y);
-				bool inb = rdc_ref_poly_inside(b, 3, false, x, y);
+				bool ina =
+					rdc_ref_poly_inside(a, 3, false, x, y);
+				bool inb =
+					rdc_ref_poly_inside(b, 3, false, x, y);
 				double zz[3] = { 50, 200, 150 };
 				double bz = plane(b, zz, x, y);
 				uint32_t px = tdp_get(t->vram, &s, x, y);
@@ -244,7 +254,8 @@ static void test_depth(void **state)
 					assert_int_equal(zv, 100);
 				} else if (inb && (!ina || bz < 99.5)) {
 					assert_int_equal(px, 0x00ff00);
-					assert_true(dabs(zv - bz) <= 0.5 + 1e-6);
+					assert_true(dabs(zv - bz) <=
+						    0.5 + 1e-6);
 				}
 			}
 	}
@@ -258,7 +269,8 @@ static void test_depth(void **state)
 		tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST, 2,
 			(const uint32_t[]){ ZBASE, zs });
 		tri_cmd(t, a, cb, zn, 0);
-		assert_int_equal(tdp_fnv(1, t->vram + ZBASE, (size_t)zs * H), zh);
+		assert_int_equal(tdp_fnv(1, t->vram + ZBASE, (size_t)zs * H),
+				 zh);
 		assert_int_equal(tdp_get(t->vram, &s, 30, 20), 0x00ff00);
 		tdp_cmd(t, RDC_OP_SET_ZBUF, 0, 0, NULL);
 		tdp_drain(t);
@@ -269,7 +281,7 @@ static void test_bad_args(void **state)
 {
 	struct tdp *t = *state;
 	struct rdc_surface s = tpp_surface(RDC_FMT_XRGB8888, W, H);
-	const uint32_t ok[9] = { RDC_XY(1, 1), 5, 0, RDC_XY(50, 5), 5, 0,
+	const uint32_t ok[9] = { RDC_XY(1, 1),	 5, 0, RDC_XY(50, 5), 5, 0,
 				 RDC_XY(20, 40), 5, 0 };
 	uint32_t a[9], h0, big = TDP_VRAM_SIZE - 100;
 	const struct {
@@ -408,7 +420,8 @@ static void test_cycles(void **state)
 
 				if (!tdp_get(t->vram, &s, x, y))
 					continue;
-				while (x1 + 1 < W && tdp_get(t->vram, &s, x1 + 1, y))
+				while (x1 + 1 < W &&
+				       tdp_get(t->vram, &s, x1 + 1, y))
 					x1++;
 				n = (uint32_t)(x1 - x + 1);
 				if (zon)
@@ -440,10 +453,12 @@ static void test_cycles_state(void **state)
 	tdp_cmd(t, RDC_OP_SET_ZBUF, RDC_Z_TEST, 2,
 		(const uint32_t[]){ ZBASE + 6, zs });
 	tdp_drain(t);
-	assert_int_equal(tpp_last_cycles(t), 3 * RDC_T_FIFO_WORD + RDC_T_DECODE);
+	assert_int_equal(tpp_last_cycles(t),
+			 3 * RDC_T_FIFO_WORD + RDC_T_DECODE);
 	tdp_cmd(t, RDC_OP_SET_PATTERN, RDC_PAT_MONO, 2, pat);
 	tdp_drain(t);
-	assert_int_equal(tpp_last_cycles(t), 3 * RDC_T_FIFO_WORD + RDC_T_DECODE);
+	assert_int_equal(tpp_last_cycles(t),
+			 3 * RDC_T_FIFO_WORD + RDC_T_DECODE);
 	TDP_CMD(t, RDC_OP_SET_CLIP, RDC_XY(5, 7), RDC_XY(61, 20));
 	tdp_drain(t);
 	open = t->hw.bus.open_row;
@@ -456,18 +471,15 @@ static void test_cycles_state(void **state)
 	tdp_drain(t);
 	assert_int_equal(tdp_err(t), 0);
 	assert_int_equal(tpp_last_cycles(t), want);
-	assert_int_equal(zget(t, zs, 3, 7) , 0);
+	assert_int_equal(zget(t, zs, 3, 7), 0);
 }
 
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_coverage),
-		TDP_TEST(test_shared_edges),
-		TDP_TEST(test_gouraud),
-		TDP_TEST(test_depth),
-		TDP_TEST(test_bad_args),
-		TDP_TEST(test_cycles),
+		TDP_TEST(test_coverage),     TDP_TEST(test_shared_edges),
+		TDP_TEST(test_gouraud),	     TDP_TEST(test_depth),
+		TDP_TEST(test_bad_args),     TDP_TEST(test_cycles),
 		TDP_TEST(test_cycles_state),
 	};
 

@@ -7,8 +7,8 @@
  */
 #include "test_dp_common.h"
 
-#define W 640
-#define H 480
+#define W   640
+#define H   480
 #define ONE 65536 /* 1.0 in 15.16 */
 
 static uint32_t px(struct tdp *t, int x, int y)
@@ -177,10 +177,14 @@ static void scene(struct tdp *t, uint32_t seed, int dx, int dy)
 	unsigned int k;
 
 	for (k = 0; k < 40; k++) {
-		int x0 = tdp_range(&seed, 0, 300), y0 = tdp_range(&seed, 0, 200);
-		int x1 = tdp_range(&seed, 0, 300), y1 = tdp_range(&seed, 0, 200);
-		int x2 = tdp_range(&seed, 0, 300), y2 = tdp_range(&seed, 0, 200);
-		int x3 = tdp_range(&seed, 0, 300), y3 = tdp_range(&seed, 0, 200);
+		int x0 = tdp_range(&seed, 0, 300),
+		    y0 = tdp_range(&seed, 0, 200);
+		int x1 = tdp_range(&seed, 0, 300),
+		    y1 = tdp_range(&seed, 0, 200);
+		int x2 = tdp_range(&seed, 0, 300),
+		    y2 = tdp_range(&seed, 0, 200);
+		int x3 = tdp_range(&seed, 0, 300),
+		    y3 = tdp_range(&seed, 0, 200);
 		uint32_t r = (uint32_t)tdp_range(&seed, 0, 40);
 		uint32_t r2 = (uint32_t)tdp_range(&seed, 0, 40);
 		uint32_t ang = tdp_rand(&seed);
@@ -300,10 +304,8 @@ static void test_cycles(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_bad_args),
-		TDP_TEST(test_known_points),
-		TDP_TEST(test_viewport),
-		TDP_TEST(test_translation_property),
+		TDP_TEST(test_bad_args), TDP_TEST(test_known_points),
+		TDP_TEST(test_viewport), TDP_TEST(test_translation_property),
 		TDP_TEST(test_cycles),
 	};
 

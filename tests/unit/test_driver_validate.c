@@ -28,9 +28,9 @@ typedef uint64_t u64;
 
 #include "../../driver/rdcfb_validate.c"
 
-#define TV_VRAM (16u << 20)
-#define TV_SCENES "tests/golden/scenes"
-#define TV_FUZZ_RUNS 10000u
+#define TV_VRAM		  (16u << 20)
+#define TV_SCENES	  "tests/golden/scenes"
+#define TV_FUZZ_RUNS	  10000u
 #define TV_FUZZ_MAX_WORDS 64u
 
 /* ---- librdc's own command streams pass ------------------------------------ */
@@ -82,7 +82,8 @@ static void tv_golden_streams(void **state)
 		rdc_close(dev);
 		ret = rdcfb_validate(c.w, (u32)c.n, TV_VRAM, &bad);
 		if (ret)
-			fprintf(stderr, "%s: refused at word %u of %zu (%08x)\n",
+			fprintf(stderr,
+				"%s: refused at word %u of %zu (%08x)\n",
 				e->d_name, bad, c.n, c.w[bad]);
 		assert_int_equal(ret, 0);
 		assert_true(c.n > 0);
@@ -122,15 +123,20 @@ static void tv_malformed(void **state)
 	tv_expect(unknown_hi, 3, 2);
 	u32 past_end[] = { fg, 1, RDC_CMD(RDC_OP_NOP, 0, 5), 0, 0 };
 	tv_expect(past_end, 5, 2);
-	u32 too_long[] = { fg, 1, RDC_CMD(RDC_OP_NOP, 0, RDC_CMD_MAX_ARGS + 1) };
+	u32 too_long[] = { fg, 1,
+			   RDC_CMD(RDC_OP_NOP, 0, RDC_CMD_MAX_ARGS + 1) };
 	tv_expect(too_long, 3, 2);
 	u32 fixed[] = { fg, 1, RDC_CMD(RDC_OP_LINE, 0, 3), 0, 0, 0 };
 	tv_expect(fixed, 6, 2);
 	u32 cut[] = { fg };
 	tv_expect(cut, 1, 0);
 	/* SET_DST whose last row leaves VRAM: the first argument */
-	u32 dst[] = { fg, 1, RDC_CMD(RDC_OP_SET_DST, 0, 4),
-		      TV_VRAM - 2560 * 479, 2560, RDC_WH(640, 480),
+	u32 dst[] = { fg,
+		      1,
+		      RDC_CMD(RDC_OP_SET_DST, 0, 4),
+		      TV_VRAM - 2560 * 479,
+		      2560,
+		      RDC_WH(640, 480),
 		      RDC_FMT_XRGB8888 };
 	tv_expect(dst, 7, 3);
 	u32 dst_fmt[] = { RDC_CMD(RDC_OP_SET_SRC, 0, 4), 0, 2560,
@@ -161,9 +167,16 @@ static void tv_malformed(void **state)
 	u32 flood[] = { RDC_CMD(RDC_OP_FLOOD_FILL, RDC_FLOOD_BOUNDARY, 1), 0 };
 	tv_expect(flood, 2, 0);
 	/* HOST_BLIT after a SET_DST in RGB565: 3 pixels a row are 2 words */
-	u32 hb[] = { RDC_CMD(RDC_OP_SET_DST, 0, 4), 0, 1280, RDC_WH(640, 480),
-		     RDC_FMT_RGB565, RDC_CMD(RDC_OP_HOST_BLIT, 0, 3), 0,
-		     RDC_WH(3, 1), 0, 0 };
+	u32 hb[] = { RDC_CMD(RDC_OP_SET_DST, 0, 4),
+		     0,
+		     1280,
+		     RDC_WH(640, 480),
+		     RDC_FMT_RGB565,
+		     RDC_CMD(RDC_OP_HOST_BLIT, 0, 3),
+		     0,
+		     RDC_WH(3, 1),
+		     0,
+		     0 };
 	tv_expect(hb, 9, 7);
 
 	/* and their good twins pass */
@@ -201,7 +214,7 @@ static u32 tv_fill(uint64_t *s, u32 *w, u32 n)
 
 		fixed = rdc_cmd_args(op);
 		len = fixed >= 0 && tv_rand(s) % 4 ? (u32)fixed :
-						      tv_rand(s) % 12;
+						     tv_rand(s) % 12;
 		if (len > n - i - 1)
 			len = n - i - 1;
 		w[i++] = RDC_CMD(op, tv_rand(s) % 4, len);

@@ -23,7 +23,7 @@
  */
 static void test_delta_empty_rows(void **state)
 {
-	const uint32_t pix[3] = {1, 2, 3};
+	const uint32_t pix[3] = { 1, 2, 3 };
 	uint8_t out[64], out0[64];
 	uint32_t back[1];
 	size_t n0, n;
@@ -52,10 +52,10 @@ static void test_delta_empty_rows(void **state)
  */
 static void test_toobig_behind_pending(void **state)
 {
-	static const char *const args[] = {"-q", NULL}; /* paced */
-	struct rdc_proto_hdr big = {.len = RDC_PROTO_MAX_REQUEST + 1,
-				    .type = RDC_MSG_VRAM_WRITE,
-				    .seq = 2};
+	static const char *const args[] = { "-q", NULL }; /* paced */
+	struct rdc_proto_hdr big = { .len = RDC_PROTO_MAX_REQUEST + 1,
+				     .type = RDC_MSG_VRAM_WRITE,
+				     .seq = 2 };
 	uint8_t step[8], hb[RDC_PROTO_HDR_SIZE];
 	struct rdc_proto_hdr h;
 	struct netd d;
@@ -94,7 +94,7 @@ static void test_toobig_behind_pending(void **state)
  */
 static void test_bad_reset_behind_pending(void **state)
 {
-	static const char *const args[] = {"-q", NULL}; /* paced */
+	static const char *const args[] = { "-q", NULL }; /* paced */
 	uint8_t step[8], kind[4];
 	struct rdc_proto_hdr h;
 	struct netd d;

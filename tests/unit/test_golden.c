@@ -84,8 +84,8 @@ static int golden_run(const char *path, uint32_t *crc,
 		if (ret == RDC_E_RANGE) {
 			*pix = malloc((size_t)*w * *h * sizeof(**pix));
 			ret = *pix ? rdc_frame_grab(dev, *pix, (size_t)*w * *h,
-						    w, h)
-				   : RDC_E_NOMEM;
+						    w, h) :
+				     RDC_E_NOMEM;
 		}
 	}
 	*cycles = t;

@@ -77,7 +77,7 @@ static void set_mode(struct rdc_hw *hw, const struct rdc_timing *t,
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
 	if (!f)
 		return -1;
@@ -150,9 +150,9 @@ static void test_span_costs(void **state)
 	 * reads all its beats back after a turnaround */
 	assert_int_equal(span(hw, 2048, 256, RDC_BUS_RMW), 32 + 2 * TURN + 32);
 	/* aligned write flagged partial at the edges (sub-byte pixels) */
-	assert_int_equal(
-		span(hw, 2048, 64, RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL),
-		8 + TURN + 1);
+	assert_int_equal(span(hw, 2048, 64,
+			      RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL),
+			 8 + TURN + 1);
 	assert_int_equal(span(hw, 2048, 64,
 			      RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL |
 				      RDC_BUS_TAIL_PARTIAL),
@@ -298,9 +298,9 @@ static void test_out_of_range(void **state)
 	/* the last bytes are in range */
 	assert_ptr_equal(rdc_port_span(hw, VRAM_SIZE - 4, 4, RDC_BUS_WRITE),
 			 hw->vram + VRAM_SIZE - 4);
-	assert_ptr_equal(
-		rdc_port_column(hw, 0, ROW, VRAM_SIZE / ROW, ROW, RDC_BUS_READ),
-		hw->vram);
+	assert_ptr_equal(rdc_port_column(hw, 0, ROW, VRAM_SIZE / ROW, ROW,
+					 RDC_BUS_READ),
+			 hw->vram);
 }
 
 static void test_compute_and_idle(void **state)

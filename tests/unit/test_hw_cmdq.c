@@ -27,7 +27,7 @@ struct fx {
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
 	if (!f)
 		return -1;
@@ -280,9 +280,9 @@ static void test_rdata(void **state)
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_RDATA), 0x1000);
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_RDATA_COUNT), 2);
 	/* fill up: only what fits is taken */
-	assert_int_equal(
-		rdc_port_rdata_push(hw, words + 3, RDC_RDATA_DEPTH + 5),
-		RDC_RDATA_DEPTH - 2);
+	assert_int_equal(rdc_port_rdata_push(hw, words + 3,
+					     RDC_RDATA_DEPTH + 5),
+			 RDC_RDATA_DEPTH - 2);
 	assert_int_equal(rdc_port_rdata_space(hw), 0);
 	assert_int_equal(rdc_port_rdata_push(hw, words, 1), 0);
 	for (i = 1; i <= RDC_RDATA_DEPTH; i++)

@@ -104,7 +104,7 @@ static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
 	if (!f)
 		return -1;
@@ -128,16 +128,16 @@ static void test_preset_periods(void **state)
 		uint32_t preset, w, h, htotal, vtotal, khz;
 		uint32_t refresh_mhz; /* nominal, millihertz */
 	} p[] = {
-		{RDC_PRESET_320x200_70, 320, 200, 400, 225, 6300, 70000},
-		{RDC_PRESET_640x480_60, 640, 480, 800, 525, 25175, 59940},
-		{RDC_PRESET_800x600_60, 800, 600, 1056, 628, 40000, 60317},
-		{RDC_PRESET_1024x768_60, 1024, 768, 1344, 806, 65000, 60004},
-		{RDC_PRESET_1280x720_60, 1280, 720, 1650, 750, 74250, 60000},
-		{RDC_PRESET_1920x1080_60, 1920, 1080, 2200, 1125, 148500,
-		 60000},
+		{ RDC_PRESET_320x200_70, 320, 200, 400, 225, 6300, 70000 },
+		{ RDC_PRESET_640x480_60, 640, 480, 800, 525, 25175, 59940 },
+		{ RDC_PRESET_800x600_60, 800, 600, 1056, 628, 40000, 60317 },
+		{ RDC_PRESET_1024x768_60, 1024, 768, 1344, 806, 65000, 60004 },
+		{ RDC_PRESET_1280x720_60, 1280, 720, 1650, 750, 74250, 60000 },
+		{ RDC_PRESET_1920x1080_60, 1920, 1080, 2200, 1125, 148500,
+		  60000 },
 	};
 	const uint32_t cap = 1920 * 1080;
-	struct rdc_hw_config cfg = {.vram_size = 1u << 20};
+	struct rdc_hw_config cfg = { .vram_size = 1u << 20 };
 	struct rdc_hw *hw = calloc(1, sizeof(*hw));
 	uint8_t *vram = calloc(1, cfg.vram_size);
 	uint32_t *f0 = calloc(cap, 4), *f1 = calloc(cap, 4);
@@ -486,7 +486,7 @@ static void fake_reset(void *dp)
 	(void)dp;
 }
 
-static const struct rdc_dp_ops fake_ops = {fake_reset, fake_run};
+static const struct rdc_dp_ops fake_ops = { fake_reset, fake_run };
 
 static void test_run_loop(void **state)
 {
@@ -530,7 +530,7 @@ static uint64_t sleepy_run(void *dp, uint64_t until)
 	return f->runs < 3 ? f->hw.now + 700 : RDC_NEVER;
 }
 
-static const struct rdc_dp_ops sleepy_ops = {fake_reset, sleepy_run};
+static const struct rdc_dp_ops sleepy_ops = { fake_reset, sleepy_run };
 
 static void test_run_loop_wakes(void **state)
 {

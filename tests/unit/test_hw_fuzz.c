@@ -99,9 +99,9 @@ static void one_op(struct fx *f)
 			/* keep RESET rare so that time gets to pass */
 			rdc_hw_write(hw, reg,
 				     value(f) &
-					     ~(rnd(f) % 64
-						       ? RDC_CONTROL_SOFT_RESET
-						       : 0));
+					     ~(rnd(f) % 64 ?
+						       RDC_CONTROL_SOFT_RESET :
+						       0));
 		else
 			rdc_hw_write(hw, reg, value(f));
 		break;
@@ -152,8 +152,8 @@ static void one_op(struct fx *f)
 		rdc_port_reg_write(hw, reg, value(f));
 		break;
 	case 12:
-		rdc_hw_set_pins(hw, rnd(f) % 64 ? value(f) | RDC_PIN_RESET_N
-						: value(f));
+		rdc_hw_set_pins(hw, rnd(f) % 64 ? value(f) | RDC_PIN_RESET_N :
+						  value(f));
 		break;
 	case 13:
 		rdc_hw_vram_write(hw, value(f), buf, rnd(f) % 64);
@@ -176,7 +176,7 @@ static void one_op(struct fx *f)
 static void test_random_programming(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 	struct rdc_hw *hw;
 	uint32_t seed;
 
@@ -217,8 +217,8 @@ static void test_random_programming(void **state)
 static void test_no_memory(void **state)
 {
 	struct rdc_hw *hw = calloc(1, sizeof(*hw));
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
-	uint8_t b[4] = {0};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
+	uint8_t b[4] = { 0 };
 	uint32_t w[4];
 
 	(void)state;

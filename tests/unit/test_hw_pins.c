@@ -23,13 +23,13 @@
 #include "rdc.h"
 #include "rdc_priv.h"
 
-#define GOLDEN_LIST "tests/golden/golden.txt"
-#define SCENE_DIR "tests/golden/scenes"
-#define W 320
-#define H 200
+#define GOLDEN_LIST    "tests/golden/golden.txt"
+#define SCENE_DIR      "tests/golden/scenes"
+#define W	       320
+#define H	       200
 #define PICTURE_COLOUR 0x00ff8000u
-#define SPLIT_LINE 100u
-#define FILLS 20
+#define SPLIT_LINE     100u
+#define FILLS	       20
 
 static const uint32_t pins_on = RDC_PIN_RESET_N | RDC_PIN_BL_EN;
 
@@ -126,12 +126,14 @@ static void assert_same(const struct observed *a, const struct observed *b)
 static void setup_mode(rdc_dev *dev)
 {
 	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70,
-				      RDC_FMT_XRGB8888, 0), 0);
-	assert_int_equal(rdc_reg_write(dev, RDC_REG_IRQ_ENABLE,
-				       RDC_IRQ_VBLANK), 0);
+				      RDC_FMT_XRGB8888, 0),
+			 0);
+	assert_int_equal(rdc_reg_write(dev, RDC_REG_IRQ_ENABLE, RDC_IRQ_VBLANK),
+			 0);
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_CONTROL,
 				       RDC_CONTROL_RESET_VALUE |
-				       RDC_CONTROL_CURSOR_EN), 0);
+					       RDC_CONTROL_CURSOR_EN),
+			 0);
 }
 
 /*
@@ -204,8 +206,9 @@ static void test_bl_en_mid_frame(void **state)
 	draw(dev);
 	assert_int_equal(rdc_frame_wait(dev), 0);
 	/* to the start of line SPLIT_LINE of the next frame */
-	assert_int_equal(rdc_sim_run_until(dev, rdc_port_next_line(hw,
-						SPLIT_LINE) - 1), 0);
+	assert_int_equal(
+		rdc_sim_run_until(dev, rdc_port_next_line(hw, SPLIT_LINE) - 1),
+		0);
 	rdc_hw_set_pins(hw, RDC_PIN_RESET_N);
 	assert_int_equal(rdc_sim_beam(dev, &x, &y), 0);
 	assert_int_equal(y, SPLIT_LINE - 1);
@@ -250,7 +253,8 @@ static void assert_reset_values(rdc_dev *dev)
 	assert_int_equal(reg(dev, RDC_REG_IRQ_ENABLE), 0);
 	assert_int_equal(reg(dev, RDC_REG_IRQ_STATUS), 0);
 	assert_int_equal(reg(dev, RDC_REG_FB_BASE), 0);
-	assert_int_equal(reg(dev, RDC_REG_LINE_COMPARE), RDC_LINE_COMPARE_RESET);
+	assert_int_equal(reg(dev, RDC_REG_LINE_COMPARE),
+			 RDC_LINE_COMPARE_RESET);
 	assert_int_equal(reg(dev, RDC_REG_FIFO_FREE), RDC_FIFO_DEPTH);
 	assert_int_equal(reg(dev, RDC_REG_FIFO_LOWWATER),
 			 RDC_FIFO_LOWWATER_RESET);
@@ -258,7 +262,8 @@ static void assert_reset_values(rdc_dev *dev)
 	assert_int_equal(reg(dev, RDC_REG_FRAME_COUNT), 0);
 	/* the DP idle, its queue empty */
 	assert_int_equal(st & (RDC_STATUS_DP_BUSY | RDC_STATUS_DP_HALTED |
-			       RDC_STATUS_DP_WAIT), 0);
+			       RDC_STATUS_DP_WAIT),
+			 0);
 	assert_true(st & RDC_STATUS_FIFO_EMPTY);
 }
 
@@ -271,7 +276,9 @@ static void test_reset_n(void **state)
 	uint32_t crc = 0, want_crc = 0, vram = reg(dev, RDC_REG_VRAM_SIZE);
 	uint64_t t0, t1, want_cycles = 0, a;
 	const uint32_t fill[] = {
-		RDC_CMD(RDC_OP_FILL_RECT, 0, 2), RDC_XY(0, 0), RDC_WH(W, H),
+		RDC_CMD(RDC_OP_FILL_RECT, 0, 2),
+		RDC_XY(0, 0),
+		RDC_WH(W, H),
 	};
 
 	(void)state;
@@ -290,8 +297,8 @@ static void test_reset_n(void **state)
 			 RDC_PIN_BL_EN); /* TE, IRQ low; RESET_N low */
 	assert_reset_values(dev);
 	/* held: writes are ignored, the DP and scanout do not run */
-	assert_int_equal(rdc_reg_write(dev, RDC_REG_IRQ_ENABLE,
-				       RDC_IRQ_ALL), 0);
+	assert_int_equal(rdc_reg_write(dev, RDC_REG_IRQ_ENABLE, RDC_IRQ_ALL),
+			 0);
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_FB_BASE, 8192), 0);
 	assert_int_equal(rdc_hw_fifo_push(hw, fill, 3), 3);
 	assert_int_equal(rdc_sim_step(dev, 3000000), 0);
@@ -305,9 +312,10 @@ static void test_reset_n(void **state)
 	assert_int_equal(rdc_sim_time(dev, &t0), 0);
 	for (a = 0; a < vram; a += sizeof(zero))
 		assert_int_equal(rdc_vram_write(dev, (uint32_t)a, zero,
-						MIN(sizeof(zero), vram - a)), 0);
-	assert_int_equal(rdc_script_run_file(dev, SCENE_DIR "/circles.rdl",
-					     &res), 0);
+						MIN(sizeof(zero), vram - a)),
+				 0);
+	assert_int_equal(
+		rdc_script_run_file(dev, SCENE_DIR "/circles.rdl", &res), 0);
 	assert_int_equal(rdc_sim_time(dev, &t1), 0);
 	assert_int_equal(rdc_script_frame_wait(dev, &res), 0);
 	assert_int_equal(rdc_frame_crc(dev, &crc), 0);

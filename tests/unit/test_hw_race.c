@@ -58,7 +58,7 @@ static uint64_t fill_run(void *dp, uint64_t until)
 				  RDC_BUS_WRITE);
 		assert_non_null(p);
 		for (x = 0; x < W; x++)
-			memcpy(p + 4 * x, &(uint32_t){NEW}, 4);
+			memcpy(p + 4 * x, &(uint32_t){ NEW }, 4);
 		f->row++;
 	}
 	return f->active && f->row < H ? hw->now : RDC_NEVER;
@@ -69,7 +69,7 @@ static void fill_reset(void *dp)
 	(void)dp;
 }
 
-static const struct rdc_dp_ops fill_ops = {fill_reset, fill_run};
+static const struct rdc_dp_ops fill_ops = { fill_reset, fill_run };
 
 static void fill_vram(struct fx *f, uint32_t base, uint32_t v)
 {
@@ -83,7 +83,7 @@ static void fill_vram(struct fx *f, uint32_t base, uint32_t v)
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 	struct rdc_hw *hw;
 
 	if (!f)
@@ -351,10 +351,10 @@ static void test_host_write_races_beam(void **state)
 	rdc_hw_run_until(hw, fs + 7 * LINE_CYCLES + 999);
 	for (y = 0; y < H; y++)
 		for (x = 0; x < W; x++)
-			assert_int_equal(rdc_hw_vram_write(hw,
-							   y * STRIDE + 4 * x,
-							   &(uint32_t){NEW}, 4),
-					 0);
+			assert_int_equal(
+				rdc_hw_vram_write(hw, y * STRIDE + 4 * x,
+						  &(uint32_t){ NEW }, 4),
+				0);
 	p = finish_frame(hw);
 	for (y = 0; y < H; y++)
 		assert_int_equal(line_colour(p, y), y <= 7 ? OLD : NEW);
@@ -362,7 +362,7 @@ static void test_host_write_races_beam(void **state)
 	assert_int_equal(rdc_hw_vram_write(hw, VRAM_SIZE - 2, "abcd", 4), -1);
 	assert_int_equal(rdc_hw_vram_write(hw, 0xffffffffu, "ab", 2), -1);
 	{
-		uint8_t b[4] = {1, 2, 3, 4};
+		uint8_t b[4] = { 1, 2, 3, 4 };
 
 		assert_int_equal(rdc_hw_vram_read(hw, VRAM_SIZE - 3, b, 4), -1);
 		assert_int_equal(b[0], 1);

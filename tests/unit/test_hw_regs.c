@@ -36,12 +36,12 @@ static uint64_t fake_run(void *dp, uint64_t until)
 	return RDC_NEVER;
 }
 
-static const struct rdc_dp_ops fake_ops = {fake_reset, fake_run};
+static const struct rdc_dp_ops fake_ops = { fake_reset, fake_run };
 
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
 	if (!f)
 		return -1;
@@ -586,7 +586,7 @@ static void test_trace(void **state)
 {
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
-	struct trace_log log = {0};
+	struct trace_log log = { 0 };
 	uint64_t vb = rdc_port_next_vblank(hw);
 
 	rdc_hw_set_trace(hw, on_trace, &log);

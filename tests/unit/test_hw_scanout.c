@@ -27,7 +27,7 @@ struct fx {
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
 	if (!f)
 		return -1;
@@ -133,7 +133,7 @@ static uint32_t expect_pixel(const uint8_t *b, uint32_t x, uint32_t fmt)
 
 static void test_all_formats(void **state)
 {
-	static const uint32_t widths[] = {24, 13}; /* whole bytes, or not */
+	static const uint32_t widths[] = { 24, 13 }; /* whole bytes, or not */
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t h = 5, stride = 100, base = 0x1234;
@@ -171,22 +171,22 @@ static void test_known_pixels(void **state)
 		uint8_t bytes[8];
 		uint32_t px[2];
 	} k[] = {
-		{RDC_FMT_RGB565,
-		 {0x00, 0xf8, 0xe0, 0x07},
-		 {0xff0000, 0x00ff00}},
-		{RDC_FMT_RGB565,
-		 {0x1f, 0x00, 0x10, 0x84},
-		 {0x0000ff, 0x848284}},
-		{RDC_FMT_RGB888,
-		 {0x11, 0x22, 0x33, 0xff, 0x00, 0x80},
-		 {0x332211, 0x8000ff}},
-		{RDC_FMT_XRGB8888,
-		 {0x44, 0x33, 0x22, 0x11, 1, 2, 3, 0xff},
-		 {0x223344, 0x030201}},
-		{RDC_FMT_I1, {0x40}, {0x000000, 0x0000aa}},
-		{RDC_FMT_I2, {0x6c}, {0x0000aa, 0x00aa00}},
-		{RDC_FMT_I4, {0xf8}, {0xffffff, 0x555555}},
-		{RDC_FMT_I8, {9, 12}, {0x5555ff, 0xff5555}},
+		{ RDC_FMT_RGB565,
+		  { 0x00, 0xf8, 0xe0, 0x07 },
+		  { 0xff0000, 0x00ff00 } },
+		{ RDC_FMT_RGB565,
+		  { 0x1f, 0x00, 0x10, 0x84 },
+		  { 0x0000ff, 0x848284 } },
+		{ RDC_FMT_RGB888,
+		  { 0x11, 0x22, 0x33, 0xff, 0x00, 0x80 },
+		  { 0x332211, 0x8000ff } },
+		{ RDC_FMT_XRGB8888,
+		  { 0x44, 0x33, 0x22, 0x11, 1, 2, 3, 0xff },
+		  { 0x223344, 0x030201 } },
+		{ RDC_FMT_I1, { 0x40 }, { 0x000000, 0x0000aa } },
+		{ RDC_FMT_I2, { 0x6c }, { 0x0000aa, 0x00aa00 } },
+		{ RDC_FMT_I4, { 0xf8 }, { 0xffffff, 0x555555 } },
+		{ RDC_FMT_I8, { 9, 12 }, { 0x5555ff, 0xff5555 } },
 	};
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
@@ -310,9 +310,9 @@ static void check_cursor_frame(const uint32_t *p, int32_t px, int32_t py,
 static void test_cursor(void **state)
 {
 	static const int32_t pos[][2] = {
-		{3, 2},	    {-5, -3},	      {SCR_W - 10, SCR_H - 2},
-		{-31, 20},  {SCR_W - 1, -31}, {-40, 0},
-		{0, SCR_H},
+		{ 3, 2 },     { -5, -3 },	  { SCR_W - 10, SCR_H - 2 },
+		{ -31, 20 },  { SCR_W - 1, -31 }, { -40, 0 },
+		{ 0, SCR_H },
 	};
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->hw;

@@ -63,12 +63,12 @@ static void on_trace(void *ctx, uint64_t time, unsigned int event, uint32_t a,
 		f->ev = realloc(f->ev, f->cap * sizeof(*f->ev));
 		assert_non_null(f->ev);
 	}
-	f->ev[f->n++] = (struct ev){time, event, a, b, f->hw.fifo_count};
+	f->ev[f->n++] = (struct ev){ time, event, a, b, f->hw.fifo_count };
 }
 
 static int setup(void **state)
 {
-	struct rdc_hw_config cfg = {.vram_size = VRAM_SIZE};
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 	struct fx *f = calloc(1, sizeof(*f));
 
 	if (!f)

@@ -20,7 +20,7 @@ static void wait_program(struct tdp *t)
 static void wait_fence(struct rdc_hw_wait *w)
 {
 	*w = (struct rdc_hw_wait){
-		.term[0] = {RDC_WAIT_TEST_GE, RDC_REG_FENCE, ~0u, 7},
+		.term[0] = { RDC_WAIT_TEST_GE, RDC_REG_FENCE, ~0u, 7 },
 		.needs_dp = true,
 		.budget = 100000000,
 	};
@@ -29,16 +29,15 @@ static void wait_fence(struct rdc_hw_wait *w)
 static void wait_frames(struct rdc_hw *hw, struct rdc_hw_wait *w, uint32_t n)
 {
 	*w = (struct rdc_hw_wait){
-		.term[0] = {RDC_WAIT_TEST_WRAP_GE, RDC_REG_FRAME_COUNT, ~0u,
-			    rdc_hw_read(hw, RDC_REG_FRAME_COUNT) + n},
+		.term[0] = { RDC_WAIT_TEST_WRAP_GE, RDC_REG_FRAME_COUNT, ~0u,
+			     rdc_hw_read(hw, RDC_REG_FRAME_COUNT) + n },
 		.budget = 100000000,
 	};
 }
 
 /* Run a wait to its end in pieces of pseudo-random size. */
-static enum rdc_hw_wait_result wait_in_pieces(struct rdc_hw *hw,
-					      struct rdc_hw_wait *w,
-					      uint32_t *seed)
+static enum rdc_hw_wait_result
+wait_in_pieces(struct rdc_hw *hw, struct rdc_hw_wait *w, uint32_t *seed)
 {
 	enum rdc_hw_wait_result r;
 	unsigned int pieces = 0;
@@ -90,7 +89,7 @@ static void test_wait_pieces_same_cycle(void **state)
 static void test_wait_fence_exact(void **state)
 {
 	struct tdp *a = *state, *b = tdp_new();
-	struct tdp *c[2] = {a, b};
+	struct tdp *c[2] = { a, b };
 	struct rdc_hw_wait w;
 
 	/* one command before the fence: each run overshoots into a whole one */
@@ -115,7 +114,7 @@ static void test_wait_budget(void **state)
 {
 	struct tdp *t = *state;
 	struct rdc_hw_wait w = {
-		.term[0] = {RDC_WAIT_TEST_EQ, RDC_REG_FENCE, ~0u, 12345},
+		.term[0] = { RDC_WAIT_TEST_EQ, RDC_REG_FENCE, ~0u, 12345 },
 		.budget = 50000,
 	};
 
@@ -148,12 +147,12 @@ static void test_wait_halted(void **state)
 static void test_wait_terms(void **state)
 {
 	struct tdp *t = *state;
-	struct rdc_wait_cond none = {RDC_WAIT_TEST_NONE, RDC_REG_ID, 0, 0};
-	struct rdc_wait_cond bad = {99, RDC_REG_ID, 0, 0};
-	struct rdc_wait_cond eq = {RDC_WAIT_TEST_EQ, RDC_REG_ID, ~0u,
-				   RDC_ID_VALUE};
-	struct rdc_wait_cond wrap = {RDC_WAIT_TEST_WRAP_GE, RDC_REG_ID, 0,
-				     0x80000001u};
+	struct rdc_wait_cond none = { RDC_WAIT_TEST_NONE, RDC_REG_ID, 0, 0 };
+	struct rdc_wait_cond bad = { 99, RDC_REG_ID, 0, 0 };
+	struct rdc_wait_cond eq = { RDC_WAIT_TEST_EQ, RDC_REG_ID, ~0u,
+				    RDC_ID_VALUE };
+	struct rdc_wait_cond wrap = { RDC_WAIT_TEST_WRAP_GE, RDC_REG_ID, 0,
+				      0x80000001u };
 
 	assert_false(rdc_hw_cond_holds(&t->hw, &none));
 	assert_false(rdc_hw_cond_holds(&t->hw, &bad));

@@ -47,35 +47,37 @@ static void test_encoding_literals(void **state)
 	assert_int_equal(RDC_WH(640, 480), 0x01e00280u);
 
 	assert_int_equal(rdc_batch_fill_rect(b, 10, 20, 30, 40), 0);
-	expect_words((const uint32_t[]){0x24000002u, 0x0014000au, 0x0028001eu},
-		     3);
+	expect_words(
+		(const uint32_t[]){ 0x24000002u, 0x0014000au, 0x0028001eu }, 3);
 	assert_int_equal(rdc_batch_line(b, -5, -6, 7, 8), 0);
-	expect_words((const uint32_t[]){0x21000002u, 0xfffafffbu, 0x00080007u},
-		     3);
+	expect_words(
+		(const uint32_t[]){ 0x21000002u, 0xfffafffbu, 0x00080007u }, 3);
 }
 
 static void test_control_encoders(void **state)
 {
-	static const uint32_t clut[3] = {0xff0000, 0x00ff00, 0x0000ff};
+	static const uint32_t clut[3] = { 0xff0000, 0x00ff00, 0x0000ff };
 
 	(void)state;
 	assert_int_equal(rdc_batch_nop(b), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_NOP, 0, 0)}, 1);
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_NOP, 0, 0) }, 1);
 	assert_int_equal(rdc_batch_fence(b, 0xdeadbeef), 0);
-	expect_words(
-		(const uint32_t[]){RDC_CMD(RDC_OP_FENCE, 0, 1), 0xdeadbeef}, 2);
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_FENCE, 0, 1),
+					 0xdeadbeef },
+		     2);
 	assert_int_equal(rdc_batch_wait_vblank(b), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_WAIT_VBLANK, 0, 0)}, 1);
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_WAIT_VBLANK, 0, 0) },
+		     1);
 	assert_int_equal(rdc_batch_wait_line(b, 240), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_WAIT_LINE, 0, 1), 240},
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_WAIT_LINE, 0, 1), 240 },
 		     2);
 	assert_int_equal(rdc_batch_reg_write(b, RDC_REG_CLUT_INDEX, 7), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_REG_WRITE, 0, 2),
-					RDC_REG_CLUT_INDEX, 7},
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_REG_WRITE, 0, 2),
+					 RDC_REG_CLUT_INDEX, 7 },
 		     3);
 	assert_int_equal(rdc_batch_load_clut(b, 16, clut, 3), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_LOAD_CLUT, 0, 4), 16,
-					0xff0000, 0x00ff00, 0x0000ff},
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_LOAD_CLUT, 0, 4), 16,
+					 0xff0000, 0x00ff00, 0x0000ff },
 		     5);
 	assert_int_equal(rdc_batch_load_clut(b, 0, clut, RDC_CLUT_ENTRIES + 1),
 			 RDC_E_INVAL);
@@ -92,21 +94,21 @@ static void test_state_encoders(void **state)
 		rdc_batch_dst(b, 0x1000, 1280, 320, 200, RDC_FMT_XRGB8888), 0);
 	assert_int_equal(rdc_batch_src(b, 0x2000, 40, 320, 200, RDC_FMT_I1), 0);
 	expect_words(
-		(const uint32_t[]){RDC_CMD(RDC_OP_SET_FG, 0, 1), 0x123456,
-				   RDC_CMD(RDC_OP_SET_BG, 0, 1), 7,
-				   RDC_CMD(RDC_OP_SET_ROP, 0, 1), RDC_ROP_XOR,
-				   RDC_CMD(RDC_OP_SET_CLIP, 0, 2), RDC_XY(1, 2),
-				   RDC_XY(300, 200),
-				   RDC_CMD(RDC_OP_SET_DST, 0, 4), 0x1000, 1280,
-				   RDC_WH(320, 200), RDC_FMT_XRGB8888,
-				   RDC_CMD(RDC_OP_SET_SRC, 0, 4), 0x2000, 40,
-				   RDC_WH(320, 200), RDC_FMT_I1},
+		(const uint32_t[]){ RDC_CMD(RDC_OP_SET_FG, 0, 1), 0x123456,
+				    RDC_CMD(RDC_OP_SET_BG, 0, 1), 7,
+				    RDC_CMD(RDC_OP_SET_ROP, 0, 1), RDC_ROP_XOR,
+				    RDC_CMD(RDC_OP_SET_CLIP, 0, 2),
+				    RDC_XY(1, 2), RDC_XY(300, 200),
+				    RDC_CMD(RDC_OP_SET_DST, 0, 4), 0x1000, 1280,
+				    RDC_WH(320, 200), RDC_FMT_XRGB8888,
+				    RDC_CMD(RDC_OP_SET_SRC, 0, 4), 0x2000, 40,
+				    RDC_WH(320, 200), RDC_FMT_I1 },
 		19);
 }
 
 static void test_primitive_encoders(void **state)
 {
-	static const int pts[] = {0, 0, 10, -10, 20, 0};
+	static const int pts[] = { 0, 0, 10, -10, 20, 0 };
 
 	(void)state;
 	assert_int_equal(rdc_batch_pixel(b, 3, 4), 0);
@@ -117,52 +119,52 @@ static void test_primitive_encoders(void **state)
 	assert_int_equal(rdc_batch_ellipse(b, 5, 6, 70, 30), 0);
 	assert_int_equal(rdc_batch_fill_ellipse(b, 5, 6, 30, 70), 0);
 	assert_int_equal(rdc_batch_blit(b, 1, 2, 3, 4, 5, 6), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_PIXEL, 0, 1),
-					RDC_XY(3, 4),
-					RDC_CMD(RDC_OP_POLYLINE, 0, 3),
-					RDC_XY(0, 0),
-					RDC_XY(10, -10),
-					RDC_XY(20, 0),
-					RDC_CMD(RDC_OP_RECT, 0, 2),
-					RDC_XY(1, 2),
-					RDC_WH(3, 4),
-					RDC_CMD(RDC_OP_CIRCLE, 0, 2),
-					RDC_XY(50, 60),
-					7,
-					RDC_CMD(RDC_OP_FILL_CIRCLE, 0, 2),
-					RDC_XY(-50, 60),
-					8,
-					RDC_CMD(RDC_OP_ELLIPSE, 0, 2),
-					RDC_XY(5, 6),
-					RDC_WH(70, 30),
-					RDC_CMD(RDC_OP_FILL_ELLIPSE, 0, 2),
-					RDC_XY(5, 6),
-					RDC_WH(30, 70),
-					RDC_CMD(RDC_OP_BLIT, 0, 3),
-					RDC_XY(1, 2),
-					RDC_XY(3, 4),
-					RDC_WH(5, 6)},
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_PIXEL, 0, 1),
+					 RDC_XY(3, 4),
+					 RDC_CMD(RDC_OP_POLYLINE, 0, 3),
+					 RDC_XY(0, 0),
+					 RDC_XY(10, -10),
+					 RDC_XY(20, 0),
+					 RDC_CMD(RDC_OP_RECT, 0, 2),
+					 RDC_XY(1, 2),
+					 RDC_WH(3, 4),
+					 RDC_CMD(RDC_OP_CIRCLE, 0, 2),
+					 RDC_XY(50, 60),
+					 7,
+					 RDC_CMD(RDC_OP_FILL_CIRCLE, 0, 2),
+					 RDC_XY(-50, 60),
+					 8,
+					 RDC_CMD(RDC_OP_ELLIPSE, 0, 2),
+					 RDC_XY(5, 6),
+					 RDC_WH(70, 30),
+					 RDC_CMD(RDC_OP_FILL_ELLIPSE, 0, 2),
+					 RDC_XY(5, 6),
+					 RDC_WH(30, 70),
+					 RDC_CMD(RDC_OP_BLIT, 0, 3),
+					 RDC_XY(1, 2),
+					 RDC_XY(3, 4),
+					 RDC_WH(5, 6) },
 		     25);
 }
 
 static void test_mono_padding(void **state)
 {
 	/* 12 pixels: 2 bytes a row, padded to one word, byte 0 in bits 7:0 */
-	static const uint8_t bits[] = {0xab, 0xc0, 0x12, 0x30};
+	static const uint8_t bits[] = { 0xab, 0xc0, 0x12, 0x30 };
 	/* 40 pixels: 5 bytes a row, two words */
-	static const uint8_t wide[] = {1, 2, 3, 4, 5};
+	static const uint8_t wide[] = { 1, 2, 3, 4, 5 };
 
 	(void)state;
 	assert_int_equal(rdc_batch_mono(b, 7, 8, 12, 2, bits, 0), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_MONO, 0, 4),
-					RDC_XY(7, 8), RDC_WH(12, 2),
-					0x0000c0abu, 0x00003012u},
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_MONO, 0, 4),
+					 RDC_XY(7, 8), RDC_WH(12, 2),
+					 0x0000c0abu, 0x00003012u },
 		     5);
 	assert_int_equal(rdc_batch_mono(b, 0, 0, 40, 1, wide, 1), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_MONO,
-						RDC_MONO_TRANSPARENT, 4),
-					RDC_XY(0, 0), RDC_WH(40, 1),
-					0x04030201u, 0x00000005u},
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_MONO,
+						 RDC_MONO_TRANSPARENT, 4),
+					 RDC_XY(0, 0), RDC_WH(40, 1),
+					 0x04030201u, 0x00000005u },
 		     5);
 }
 
@@ -170,25 +172,25 @@ static void test_text_packing(void **state)
 {
 	(void)state;
 	assert_int_equal(rdc_batch_text(b, 1, 2, "Hello", 5, 0), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_TEXT, 0, 4),
-					RDC_XY(1, 2), 5, 0x6c6c6548u,
-					0x0000006fu},
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_TEXT, 0, 4),
+					 RDC_XY(1, 2), 5, 0x6c6c6548u,
+					 0x0000006fu },
 		     5);
 	assert_int_equal(rdc_batch_text(b, 0, 0, "", 0, 1), 0);
-	expect_words((const uint32_t[]){RDC_CMD(RDC_OP_TEXT,
-						RDC_MONO_TRANSPARENT, 2),
-					RDC_XY(0, 0), 0},
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_TEXT,
+						 RDC_MONO_TRANSPARENT, 2),
+					 RDC_XY(0, 0), 0 },
 		     3);
 }
 
 static void test_raw_and_limits(void **state)
 {
-	static const uint32_t args[2] = {1, 2};
+	static const uint32_t args[2] = { 1, 2 };
 	size_t n;
 
 	(void)state;
 	assert_int_equal(rdc_batch_cmd(b, 0x7f, 0x5a, args, 2), 0);
-	expect_words((const uint32_t[]){0x7f5a0002u, 1, 2}, 3);
+	expect_words((const uint32_t[]){ 0x7f5a0002u, 1, 2 }, 3);
 	assert_int_equal(rdc_batch_cmd(b, 1, 0, NULL, 1), RDC_E_INVAL);
 	assert_int_equal(rdc_batch_cmd(b, 1, 0, args, RDC_CMD_LENGTH + 1),
 			 RDC_E_INVAL);

@@ -46,16 +46,16 @@ static void test_encode_args(void **state)
 	assert_int_equal(rdc_image_bound(RDC_IMG_RLE, 0, 5, 3), 0);
 	assert_int_equal(rdc_image_bound(RDC_IMG_RLE, 4097, 5, 3), 0);
 	assert_int_equal(rdc_image_bound(RDC_IMG_RLE, 12, 5, 2), 0);
-	assert_int_equal(
-		rdc_image_encode(4, px, 12, 5, 3, 36, out, sizeof(out), &len),
-		RDC_E_INVAL);
+	assert_int_equal(rdc_image_encode(4, px, 12, 5, 3, 36, out, sizeof(out),
+					  &len),
+			 RDC_E_INVAL);
 	assert_int_equal(rdc_image_encode(RDC_IMG_RLE, px, 12, 5, 3, 35, out,
 					  sizeof(out), &len),
 			 RDC_E_INVAL);
 	/* too small: RDC_E_RANGE, and the size it needed */
-	assert_int_equal(
-		rdc_image_encode(RDC_IMG_DPCM, px, 12, 5, 3, 36, out, 20, &len),
-		RDC_E_RANGE);
+	assert_int_equal(rdc_image_encode(RDC_IMG_DPCM, px, 12, 5, 3, 36, out,
+					  20, &len),
+			 RDC_E_RANGE);
 	assert_true(len > 20);
 	assert_int_equal(rdc_image_encode(RDC_IMG_DPCM, px, 12, 5, 3, 36, out,
 					  len, &len),
@@ -124,7 +124,7 @@ static void test_rdl_encode_decode(void **state)
 {
 	struct rdc_script_result res;
 	rdc_dev *dev = open_sim();
-	static const char *const codecs[] = {"rle", "dpcm", "btc"};
+	static const char *const codecs[] = { "rle", "dpcm", "btc" };
 	char text[512];
 
 	(void)state;

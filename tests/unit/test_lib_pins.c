@@ -17,7 +17,7 @@
 #include "rdc_priv.h"
 #include "test_net_common.h"
 
-static const char *const args_stepped[] = {"--stepped", NULL};
+static const char *const args_stepped[] = { "--stepped", NULL };
 
 /* The CRTC's timing as its registers say, and the core clock. */
 struct pins_timing {
@@ -67,9 +67,9 @@ static void test_levels_and_args(void **state)
 	assert_int_equal(p, RDC_PIN_RESET_N | RDC_PIN_BL_EN);
 	assert_int_equal(rdc_pins_set(dev, RDC_PIN_TE, 0), RDC_E_INVAL);
 	assert_int_equal(rdc_pins_set(dev, 0x10, 0), RDC_E_INVAL);
-	assert_int_equal(
-		rdc_pins_wait_edge(dev, RDC_PIN_BL_EN, RDC_EDGE_RISING, 0, &ev),
-		RDC_E_INVAL);
+	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_BL_EN, RDC_EDGE_RISING,
+					    0, &ev),
+			 RDC_E_INVAL);
 	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE, 0, 0, &ev),
 			 RDC_E_INVAL);
 	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE, 4, 0, &ev),
@@ -118,9 +118,9 @@ static void test_te_times(void **state)
 	}
 
 	/* another mode: in force from the frame after the next vblank */
-	assert_int_equal(
-		rdc_mode_set(dev, RDC_PRESET_800x600_60, RDC_FMT_XRGB8888, 0),
-		0);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_800x600_60,
+				      RDC_FMT_XRGB8888, 0),
+			 0);
 	for (int i = 0; i < 2; i++)
 		assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE,
 						    RDC_EDGE_FALLING, 0, &ev),
@@ -162,9 +162,9 @@ static void test_irq_edge(void **state)
 			 0);
 	assert_int_equal(rdc_pins_get(dev, &p), 0);
 	assert_false(p & RDC_PIN_IRQ);
-	assert_int_equal(
-		rdc_pins_wait_edge(dev, RDC_PIN_IRQ, RDC_EDGE_RISING, 0, &ev),
-		0);
+	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_IRQ, RDC_EDGE_RISING,
+					    0, &ev),
+			 0);
 	assert_int_equal(ev.pins, RDC_PIN_IRQ);
 	assert_int_equal(ev.time, first.time + line_at(&t, t.v_total));
 	rdc_close(dev);
@@ -208,9 +208,9 @@ static void test_reset_n(void **state)
 	assert_int_equal(p, RDC_PIN_RESET_N | RDC_PIN_BL_EN);
 	assert_int_equal(rdc_reg_read(dev, RDC_REG_LINE_COMPARE, &v), 0);
 	assert_int_equal(v, RDC_LINE_COMPARE_RESET);
-	assert_int_equal(
-		rdc_pins_wait_edge(dev, RDC_PIN_TE, RDC_EDGE_RISING, 0, &ev),
-		0);
+	assert_int_equal(rdc_pins_wait_edge(dev, RDC_PIN_TE, RDC_EDGE_RISING, 0,
+					    &ev),
+			 0);
 	assert_int_equal(ev.time, released + line_at(&t, t.v_display));
 	rdc_close(dev);
 }
@@ -309,7 +309,7 @@ static void test_unix(void **state)
 	struct netd d;
 	rdc_dev *dev, *obs;
 	struct pins_timing t;
-	struct rdc_pin_edge ev, prev = {0};
+	struct rdc_pin_edge ev, prev = { 0 };
 	uint32_t p, v;
 	char uri[200];
 
@@ -374,7 +374,7 @@ static void test_unix(void **state)
 static void test_proto(void **state)
 {
 	struct netd d;
-	uint8_t b[16] = {0}, out[8], hb[RDC_PROTO_HDR_SIZE];
+	uint8_t b[16] = { 0 }, out[8], hb[RDC_PROTO_HDR_SIZE];
 	struct rdc_proto_hdr h;
 	int ctl, obs, big;
 
@@ -423,9 +423,9 @@ static void test_proto(void **state)
 	big = netd_connect(d.sock);
 	assert_true(big >= 0);
 	assert_int_equal(netd_hello(big, 0, NULL, NULL), RDC_ST_OK);
-	h = (struct rdc_proto_hdr){.len = RDC_PROTO_MAX_REQUEST + 1,
-				   .type = RDC_MSG_PINS_SET,
-				   .seq = 10};
+	h = (struct rdc_proto_hdr){ .len = RDC_PROTO_MAX_REQUEST + 1,
+				    .type = RDC_MSG_PINS_SET,
+				    .seq = 10 };
 	rdc_proto_hdr_encode(hb, &h);
 	assert_int_equal(netd_write(big, hb, sizeof(hb)), 0);
 	assert_int_equal(netd_reply(big, &h, NULL, 0), 0);
@@ -447,7 +447,7 @@ static void test_proto(void **state)
 static void test_record(void **state)
 {
 	char trace[128], dir[] = "/tmp/rdc-pins-XXXXXX";
-	const char *args[] = {"--stepped", "--record", trace, NULL};
+	const char *args[] = { "--stepped", "--record", trace, NULL };
 	struct rdc_replay_result res;
 	struct netd d;
 	rdc_dev *dev, *rep = NULL;

@@ -105,7 +105,7 @@ static void test_png_pitch(void **state)
 
 static void test_png_errors(void **state)
 {
-	uint32_t px[4] = {0};
+	uint32_t px[4] = { 0 };
 
 	(void)state;
 	assert_int_equal(rdc_png_write("/nonexistent/dir/x.png", px, 2, 2, 2),

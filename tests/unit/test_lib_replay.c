@@ -168,7 +168,7 @@ static void test_live_and_cut(void **state)
  */
 static void test_daemon_still_recording(void **state)
 {
-	const char *args[] = {"--stepped", "--record", trace, NULL};
+	const char *args[] = { "--stepped", "--record", trace, NULL };
 	struct rdc_replay_result res;
 	struct netd d;
 	rdc_dev *dev;

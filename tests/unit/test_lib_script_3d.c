@@ -122,14 +122,15 @@ static void test_statements_encode(void **state)
 			0,	FX(1), 0,	  FX(0.5),  0,	   FX(6),
 			FX(-2), FX(2), FX(-1.25), FX(1.25), FX(3), FX(-4),
 		};
-		const uint32_t vp[2] = {RDC_XY(0, 0), RDC_XY(319, 199)};
-		const uint32_t amb = 0x101010, l0[4] = {0xffffff, 0, 0, FX(1)};
-		const uint32_t l1[4] = {0xff0000, FX(1), 0, FX(0.5)};
-		const uint32_t mat[4] = {0x808080, 0xc0c0c0, 0xffffff, 12};
+		const uint32_t vp[2] = { RDC_XY(0, 0), RDC_XY(319, 199) };
+		const uint32_t amb = 0x101010,
+			       l0[4] = { 0xffffff, 0, 0, FX(1) };
+		const uint32_t l1[4] = { 0xff0000, FX(1), 0, FX(0.5) };
+		const uint32_t mat[4] = { 0x808080, 0xc0c0c0, 0xffffff, 12 };
 		const uint32_t rot = 5461; /* 30 degrees: 5461.33, rounded */
-		const uint32_t tr[3] = {FX(0.25), 0, 0};
-		const uint32_t sc[3] = {FX(1.5), FX(1.5), FX(1.5)};
-		const uint32_t mesh[4] = {0x180000, 3, 0x181000, 1};
+		const uint32_t tr[3] = { FX(0.25), 0, 0 };
+		const uint32_t sc[3] = { FX(1.5), FX(1.5), FX(1.5) };
+		const uint32_t mesh[4] = { 0x180000, 3, 0x181000, 1 };
 		const uint32_t fg = 0xffff00;
 
 		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SET_VIEW,
@@ -151,24 +152,24 @@ static void test_statements_encode(void **state)
 			rdc_batch_cmd(b, RDC_OP_MATRIX_LOAD, 0, NULL, 0), 0);
 		assert_int_equal(
 			rdc_batch_cmd(b, RDC_OP_PUSH_MATRIX, 0, NULL, 0), 0);
-		assert_int_equal(
-			rdc_batch_cmd(b, RDC_OP_ROTATE, RDC_AXIS_Y, &rot, 1),
-			0);
+		assert_int_equal(rdc_batch_cmd(b, RDC_OP_ROTATE, RDC_AXIS_Y,
+					       &rot, 1),
+				 0);
 		assert_int_equal(rdc_batch_cmd(b, RDC_OP_TRANSLATE, 0, tr, 3),
 				 0);
 		assert_int_equal(rdc_batch_cmd(b, RDC_OP_SCALE, 0, sc, 3), 0);
-		assert_int_equal(
-			rdc_batch_cmd(b, RDC_OP_MESH,
-				      RDC_MESH_LIT | RDC_MESH_TWO_SIDED, mesh,
-				      4),
-			0);
+		assert_int_equal(rdc_batch_cmd(b, RDC_OP_MESH,
+					       RDC_MESH_LIT |
+						       RDC_MESH_TWO_SIDED,
+					       mesh, 4),
+				 0);
 		assert_int_equal(
 			rdc_batch_cmd(b, RDC_OP_POP_MATRIX, 0, NULL, 0), 0);
 		assert_int_equal(rdc_batch_fg(b, fg), 0);
 		for (int i = 0; i < 12; i++)
-			w[i] = (uint32_t[]){FX(-1), FX(-1), 0,	    FX(-1),
-					    FX(1),  0,	    FX(1),  FX(1),
-					    0,	    FX(1),  FX(-1), 0}[i];
+			w[i] = (uint32_t[]){ FX(-1), FX(-1), 0,	     FX(-1),
+					     FX(1),  0,	     FX(1),  FX(1),
+					     0,	     FX(1),  FX(-1), 0 }[i];
 		assert_int_equal(rdc_batch_cmd(b, RDC_OP_BEZIER3, 12, w, 12),
 				 0);
 	}
@@ -207,7 +208,7 @@ static void test_vertices_indices(void **state)
 		0x00, 0x00, 0xfe, 0xff, /* -2 */
 		0x01, 0x00, 0x00, 0x00, /* 1/65536 */
 	};
-	static const uint8_t want_i[6] = {1, 0, 0xff, 0xff, 0x34, 0x12};
+	static const uint8_t want_i[6] = { 1, 0, 0xff, 0xff, 0x34, 0x12 };
 
 	assert_int_equal(run(dev, "vertices 0x200000 0.5 -2 0.0000153\n"
 				  "indices 0x200100 1 65535 0x1234\n"),

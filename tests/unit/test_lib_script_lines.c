@@ -40,9 +40,8 @@ static uint32_t sl_px(rdc_dev *dev, int x, int y)
 {
 	uint32_t v = 0;
 
-	assert_int_equal(rdc_vram_read(dev, (uint32_t)(y * 1280 + x * 4), &v,
-				       4),
-			 0);
+	assert_int_equal(
+		rdc_vram_read(dev, (uint32_t)(y * 1280 + x * 4), &v, 4), 0);
 	return v & 0xffffff;
 }
 
@@ -96,17 +95,18 @@ static void test_pen_dash_curves(void **state)
 {
 	rdc_dev *dev = *state;
 
-	assert_int_equal(sl_run(dev, "mode 320x200 xrgb8888\n"
-				     "pen 5 square bevel\n"
-				     "line 20 20 40 20\n"
-				     "pen 1\n"
-				     "dash 0x1 2 1\n"
-				     "line 20 40 30 40\n"
-				     "dash off\n"
-				     "polygon 60 60 80 60 70 80\n"
-				     "bezier 100 100 110 90 120 90 130 100 steps 8\n"
-				     "hermite 100 120 130 120 0 0 0 0\n"
-				     "bspline 150 10 150 10 150 10 150 10\n"),
+	assert_int_equal(sl_run(dev,
+				"mode 320x200 xrgb8888\n"
+				"pen 5 square bevel\n"
+				"line 20 20 40 20\n"
+				"pen 1\n"
+				"dash 0x1 2 1\n"
+				"line 20 40 30 40\n"
+				"dash off\n"
+				"polygon 60 60 80 60 70 80\n"
+				"bezier 100 100 110 90 120 90 130 100 steps 8\n"
+				"hermite 100 120 130 120 0 0 0 0\n"
+				"bspline 150 10 150 10 150 10 150 10\n"),
 			 0);
 	/* square caps: 2.5 px past the ends, rows 18..22 */
 	assert_true(sl_px(dev, 18, 18) && sl_px(dev, 42, 22));
@@ -115,7 +115,7 @@ static void test_pen_dash_curves(void **state)
 	assert_false(sl_px(dev, 20, 40));
 	assert_true(sl_px(dev, 21, 40));
 	assert_false(sl_px(dev, 70, 70)); /* inside: outline only */
-	assert_true(sl_px(dev, 65, 70)); /* the closing edge 70,80 - 60,60 */
+	assert_true(sl_px(dev, 65, 70));  /* the closing edge 70,80 - 60,60 */
 	assert_true(sl_px(dev, 100, 100) && sl_px(dev, 130, 100));
 	assert_true(sl_px(dev, 115, 120));
 	assert_true(sl_px(dev, 150, 10));
@@ -176,8 +176,7 @@ static void test_batch_words(void **state)
 	assert_int_equal(rdc_batch_bezier(b, xy, 9), 0);
 	assert_int_equal(rdc_batch_transform(b, m), 0);
 	assert_int_equal(rdc_batch_transform(b, NULL), 0);
-	assert_int_equal(rdc_batch_viewport(b, -65536, 0, 65536, 1, 0, 0, 9,
-					    9),
+	assert_int_equal(rdc_batch_viewport(b, -65536, 0, 65536, 1, 0, 0, 9, 9),
 			 0);
 	assert_int_equal(rdc_batch_bspline(b, NULL, 4, 0), RDC_E_INVAL);
 	w = rdc_batch_words(b, &n);

@@ -172,10 +172,10 @@ static void test_halted(void **state)
 	assert_true(reg(dev, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED);
 	assert_int_equal(rdc_dev_error(dev, &code, NULL), 0);
 	assert_int_equal(code, RDC_ERR_OPCODE);
-	assert_int_equal(
-		rdc_reg_write(dev, RDC_REG_CONTROL,
-			      RDC_CONTROL_RESET_VALUE | RDC_CONTROL_RESUME),
-		0);
+	assert_int_equal(rdc_reg_write(dev, RDC_REG_CONTROL,
+				       RDC_CONTROL_RESET_VALUE |
+					       RDC_CONTROL_RESUME),
+			 0);
 	assert_int_equal(rdc_finish(dev), 0);
 }
 

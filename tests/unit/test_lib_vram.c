@@ -41,7 +41,7 @@ static uint32_t reg(rdc_dev *dev, uint32_t r)
 static void test_vram_bounds(void **state)
 {
 	rdc_dev *dev = *state;
-	uint8_t buf[16] = {1, 2, 3, 4, 5, 6, 7, 8}, back[16];
+	uint8_t buf[16] = { 1, 2, 3, 4, 5, 6, 7, 8 }, back[16];
 
 	assert_int_equal(reg(dev, RDC_REG_VRAM_SIZE), VRAM_4M);
 	assert_int_equal(rdc_vram_write(dev, VRAM_4M - 8, buf, 8), 0);
@@ -78,16 +78,16 @@ static void test_mode_set(void **state)
 	assert_int_equal(rdc_finish(dev), 0);
 	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_COUNT, RDC_FMT_I8, 0),
 			 RDC_E_INVAL);
-	assert_int_equal(
-		rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_COUNT, 0),
-		RDC_E_INVAL);
-	assert_int_equal(
-		rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_I8, 2),
-		RDC_E_INVAL);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_COUNT,
+				      0),
+			 RDC_E_INVAL);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_I8,
+				      2),
+			 RDC_E_INVAL);
 	/* 1920 * 1080 * 4 bytes do not fit 4 MiB */
-	assert_int_equal(
-		rdc_mode_set(dev, RDC_PRESET_1920x1080_60, RDC_FMT_XRGB8888, 0),
-		RDC_E_RANGE);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_1920x1080_60,
+				      RDC_FMT_XRGB8888, 0),
+			 RDC_E_RANGE);
 	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60, RDC_FMT_I8,
 				      VRAM_4M - 1024),
 			 RDC_E_RANGE);
@@ -221,9 +221,9 @@ static void test_readback_small_buffer(void **state)
 	assert_int_equal(reg(dev, RDC_REG_RDATA_COUNT), 0);
 	assert_int_equal(rdc_readback(dev, 0, 0, 4, 4, buf, sizeof(buf)), 64);
 	/* a rectangle the device refuses */
-	assert_int_equal(
-		rdc_readback(dev, 0, 0, RDC_SIZE_MAX + 1, 1, buf, sizeof(buf)),
-		RDC_E_DEVICE);
+	assert_int_equal(rdc_readback(dev, 0, 0, RDC_SIZE_MAX + 1, 1, buf,
+				      sizeof(buf)),
+			 RDC_E_DEVICE);
 	assert_int_equal(rdc_dev_error(dev, NULL, NULL), 0);
 }
 
@@ -233,9 +233,9 @@ static void test_frame_grab(void **state)
 	rdc_batch *b = rdc_batch_new();
 	uint32_t w = 0, h = 0, *pix, crc1 = 0, crc2 = 0;
 
-	assert_int_equal(
-		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_XRGB8888, 0),
-		0);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70,
+				      RDC_FMT_XRGB8888, 0),
+			 0);
 	assert_int_equal(rdc_batch_fg(b, 0xff0000), 0);
 	assert_int_equal(rdc_batch_fill_rect(b, 0, 0, 320, 200), 0);
 	assert_int_equal(rdc_batch_fg(b, 0x0000ff), 0);

@@ -30,7 +30,7 @@
 #include "rdc_proto.h"
 
 #define NETD_START_MS 20000 /* ASan start-up on a loaded host */
-#define NETD_STOP_MS 20000
+#define NETD_STOP_MS  20000
 /* how long a reply may take: a stepped minute of waits under ASan on a
  * loaded host; only a failing test waits it out */
 #define NETD_IO_MS 60000
@@ -47,7 +47,7 @@ struct netd {
 
 static inline void netd_sleep_ms(int ms)
 {
-	struct timespec ts = {ms / 1000, (long)(ms % 1000) * 1000000L};
+	struct timespec ts = { ms / 1000, (long)(ms % 1000) * 1000000L };
 
 	nanosleep(&ts, NULL);
 }
@@ -218,7 +218,7 @@ clean:
 
 static inline int netd_connect(const char *path)
 {
-	struct sockaddr_un sa = {.sun_family = AF_UNIX};
+	struct sockaddr_un sa = { .sun_family = AF_UNIX };
 	int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
 
 	if (fd < 0 || strlen(path) >= sizeof(sa.sun_path)) {
@@ -252,10 +252,10 @@ static inline int netd_write(int fd, const void *p, size_t n)
 }
 
 static inline int netd_send(int fd, uint16_t type, uint32_t seq, const void *pl,
-		     uint32_t len)
+			    uint32_t len)
 {
 	uint8_t h[RDC_PROTO_HDR_SIZE];
-	struct rdc_proto_hdr hdr = {.len = len, .type = type, .seq = seq};
+	struct rdc_proto_hdr hdr = { .len = len, .type = type, .seq = seq };
 
 	rdc_proto_hdr_encode(h, &hdr);
 	if (netd_write(fd, h, sizeof(h)))
@@ -268,7 +268,7 @@ static inline int netd_read(int fd, void *p, size_t n)
 	uint8_t *b = p;
 
 	while (n) {
-		struct pollfd pfd = {.fd = fd, .events = POLLIN};
+		struct pollfd pfd = { .fd = fd, .events = POLLIN };
 		ssize_t k;
 
 		if (poll(&pfd, 1, NETD_IO_MS) <= 0)
@@ -288,7 +288,8 @@ static inline int netd_read(int fd, void *p, size_t n)
  * The next message that is not an event: header and up to `cap` payload
  * bytes (the rest is skipped).  0, or -1 on EOF/timeout.
  */
-static inline int netd_reply(int fd, struct rdc_proto_hdr *h, void *buf, size_t cap)
+static inline int netd_reply(int fd, struct rdc_proto_hdr *h, void *buf,
+			     size_t cap)
 {
 	for (;;) {
 		uint8_t hb[RDC_PROTO_HDR_SIZE], skip[4096];
@@ -319,7 +320,7 @@ static inline int netd_reply(int fd, struct rdc_proto_hdr *h, void *buf, size_t 
 
 /* HELLO; returns the reply status, or -1. */
 static inline int netd_hello(int fd, uint32_t flags, const char *token,
-		      struct rdc_proto_hello_reply *r)
+			     struct rdc_proto_hello_reply *r)
 {
 	uint8_t msg[RDC_PROTO_HELLO_FIXED + RDC_PROTO_MAX_TOKEN], rb[64];
 	struct rdc_proto_hello h = {
@@ -344,7 +345,7 @@ static inline int netd_hello(int fd, uint32_t flags, const char *token,
 
 /* One request, its reply status (or -1); payload to out. */
 static inline int netd_call(int fd, uint16_t type, uint32_t seq, const void *pl,
-		     uint32_t len, void *out, size_t cap)
+			    uint32_t len, void *out, size_t cap)
 {
 	struct rdc_proto_hdr h;
 
@@ -361,7 +362,7 @@ static inline int netd_closed(int fd)
 	uint8_t b[256];
 
 	for (;;) {
-		struct pollfd pfd = {.fd = fd, .events = POLLIN};
+		struct pollfd pfd = { .fd = fd, .events = POLLIN };
 		ssize_t k;
 
 		if (poll(&pfd, 1, NETD_IO_MS) <= 0)

@@ -24,7 +24,7 @@
 #include "rdc.h"
 #include "test_net_common.h"
 
-#define CONF_SCENE_DIR "tests/golden/scenes"
+#define CONF_SCENE_DIR	"tests/golden/scenes"
 #define CONF_MAX_SCENES 64
 
 /* Everything a run observes; runs on different backends must be equal. */
@@ -121,9 +121,10 @@ static int conf_scenario(rdc_dev *dev, struct conf_out *o)
 	if (!ret)
 		ret = rdc_frame_crc(dev, &o->frame_crc);
 	if (!ret)
-		ret = rdc_frame_grab(dev, NULL, 0, &o->w, &o->h) == RDC_E_RANGE
-			      ? 0
-			      : RDC_E_INVAL;
+		ret = rdc_frame_grab(dev, NULL, 0, &o->w, &o->h) ==
+				      RDC_E_RANGE ?
+			      0 :
+			      RDC_E_INVAL;
 	if (!ret)
 		ret = rdc_stats_get(dev, &o->stats);
 	if (!ret)
@@ -170,14 +171,14 @@ static void conf_expect_equal(const struct conf_out *a,
 	assert_memory_equal(a, b, sizeof(*a));
 }
 
-static const char *const conf_stepped[] = {"--stepped", "-q", NULL};
+static const char *const conf_stepped[] = { "--stepped", "-q", NULL };
 
 /* RDC_CONFORM_URI, or NULL: start rdcd for each run */
 static const char *conf_uri;
 
 /* Rows of VRAM zeroed per fill in conf_prepare (within RDC_COORD_MAX). */
 #define CONF_CLEAR_STRIDE 16384u
-#define CONF_CLEAR_ROWS 4096u
+#define CONF_CLEAR_ROWS	  4096u
 
 /*
  * Put the device at `uri` in a fresh sim:'s state, as far as a client
@@ -261,7 +262,8 @@ static void test_conform_api(void **state)
 	assert_int_equal(ref.w, 320);
 	assert_int_equal(ref.readback_len, 64 * 40 * 4);
 	assert_int_equal(ref.err_range, RDC_E_RANGE);
-	assert_true(ref.err_halt == RDC_E_HALTED || ref.err_halt == RDC_E_DEVICE);
+	assert_true(ref.err_halt == RDC_E_HALTED ||
+		    ref.err_halt == RDC_E_DEVICE);
 	/* the aperture bytes written are read back 16 bytes in */
 	assert_int_equal(ref.vram[16], 3);
 	assert_int_equal(ref.vram[17], 10);

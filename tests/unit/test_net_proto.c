@@ -24,11 +24,11 @@ static void test_header_layout(void **state)
 		0x78, 0x56, 0x34, 0x12, /* seq */
 		0x0b, 0x00, 0x00, 0x00, /* status TOOBIG */
 	};
-	struct rdc_proto_hdr h = {.len = 0x01020304,
-				  .type = RDC_MSG_SUBMIT,
-				  .flags = RDC_MSGF_REPLY,
-				  .seq = 0x12345678,
-				  .status = RDC_ST_TOOBIG},
+	struct rdc_proto_hdr h = { .len = 0x01020304,
+				   .type = RDC_MSG_SUBMIT,
+				   .flags = RDC_MSGF_REPLY,
+				   .seq = 0x12345678,
+				   .status = RDC_ST_TOOBIG },
 			     g;
 	uint8_t b[RDC_PROTO_HDR_SIZE];
 
@@ -45,7 +45,7 @@ static void test_header_layout(void **state)
 
 static void test_header_check(void **state)
 {
-	struct rdc_proto_hdr h = {.type = RDC_MSG_PING};
+	struct rdc_proto_hdr h = { .type = RDC_MSG_PING };
 
 	(void)state;
 	assert_int_equal(rdc_proto_hdr_check(&h, 100), 0);
@@ -69,34 +69,35 @@ static void test_request_sizes(void **state)
 		uint32_t len;
 		int want;
 	} cases[] = {
-		{RDC_MSG_REG_READ, 4, 0},
-		{RDC_MSG_REG_READ, 8, RDC_ST_MALFORMED},
-		{RDC_MSG_REG_WRITE, 8, 0},
-		{RDC_MSG_REG_WRITE, 4, RDC_ST_MALFORMED},
-		{RDC_MSG_VRAM_WRITE, 3, RDC_ST_MALFORMED},
-		{RDC_MSG_VRAM_WRITE, 4, 0},
-		{RDC_MSG_VRAM_WRITE, 4 + RDC_PROTO_VRAM_CHUNK, 0},
-		{RDC_MSG_VRAM_WRITE, 5 + RDC_PROTO_VRAM_CHUNK, RDC_ST_MALFORMED},
-		{RDC_MSG_SUBMIT, 0, 0},
-		{RDC_MSG_SUBMIT, 6, RDC_ST_MALFORMED},
-		{RDC_MSG_SUBMIT, 4 * RDC_PROTO_MAX_SUBMIT_WORDS, 0},
-		{RDC_MSG_SUBMIT, 4 * RDC_PROTO_MAX_SUBMIT_WORDS + 4,
-		 RDC_ST_MALFORMED},
-		{RDC_MSG_WAIT, RDC_PROTO_WAIT_SIZE, 0},
-		{RDC_MSG_WAIT, RDC_PROTO_WAIT_SIZE - 1, RDC_ST_MALFORMED},
-		{RDC_MSG_PING, 0, 0},
-		{RDC_MSG_PING, 1, RDC_ST_MALFORMED},
-		{RDC_MSG_PINS_SET, 8, 0},
-		{RDC_MSG_PINS_SET, 4, RDC_ST_MALFORMED},
-		{RDC_MSG_PINS_SET, 12, RDC_ST_MALFORMED},
-		{RDC_MSG_EV_FRAME, 24, RDC_ST_TYPE},
-		{RDC_MSG_SUBMIT, RDC_PROTO_MAX_REQUEST + 1, RDC_ST_TOOBIG},
+		{ RDC_MSG_REG_READ, 4, 0 },
+		{ RDC_MSG_REG_READ, 8, RDC_ST_MALFORMED },
+		{ RDC_MSG_REG_WRITE, 8, 0 },
+		{ RDC_MSG_REG_WRITE, 4, RDC_ST_MALFORMED },
+		{ RDC_MSG_VRAM_WRITE, 3, RDC_ST_MALFORMED },
+		{ RDC_MSG_VRAM_WRITE, 4, 0 },
+		{ RDC_MSG_VRAM_WRITE, 4 + RDC_PROTO_VRAM_CHUNK, 0 },
+		{ RDC_MSG_VRAM_WRITE, 5 + RDC_PROTO_VRAM_CHUNK,
+		  RDC_ST_MALFORMED },
+		{ RDC_MSG_SUBMIT, 0, 0 },
+		{ RDC_MSG_SUBMIT, 6, RDC_ST_MALFORMED },
+		{ RDC_MSG_SUBMIT, 4 * RDC_PROTO_MAX_SUBMIT_WORDS, 0 },
+		{ RDC_MSG_SUBMIT, 4 * RDC_PROTO_MAX_SUBMIT_WORDS + 4,
+		  RDC_ST_MALFORMED },
+		{ RDC_MSG_WAIT, RDC_PROTO_WAIT_SIZE, 0 },
+		{ RDC_MSG_WAIT, RDC_PROTO_WAIT_SIZE - 1, RDC_ST_MALFORMED },
+		{ RDC_MSG_PING, 0, 0 },
+		{ RDC_MSG_PING, 1, RDC_ST_MALFORMED },
+		{ RDC_MSG_PINS_SET, 8, 0 },
+		{ RDC_MSG_PINS_SET, 4, RDC_ST_MALFORMED },
+		{ RDC_MSG_PINS_SET, 12, RDC_ST_MALFORMED },
+		{ RDC_MSG_EV_FRAME, 24, RDC_ST_TYPE },
+		{ RDC_MSG_SUBMIT, RDC_PROTO_MAX_REQUEST + 1, RDC_ST_TOOBIG },
 	};
 
 	(void)state;
 	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
-		struct rdc_proto_hdr h = {.type = cases[i].type,
-					  .len = cases[i].len};
+		struct rdc_proto_hdr h = { .type = cases[i].type,
+					   .len = cases[i].len };
 
 		assert_int_equal(rdc_proto_request_check(&h), cases[i].want);
 	}
@@ -105,12 +106,12 @@ static void test_request_sizes(void **state)
 static void test_hello(void **state)
 {
 	uint8_t b[RDC_PROTO_HELLO_FIXED + RDC_PROTO_MAX_TOKEN + 1];
-	struct rdc_proto_hello h = {.magic = RDC_PROTO_MAGIC,
-				    .version = RDC_PROTO_VERSION,
-				    .caps = 3,
-				    .flags = RDC_HELLO_CONTROL,
-				    .token_len = 3,
-				    .token = (const uint8_t *)"abc"},
+	struct rdc_proto_hello h = { .magic = RDC_PROTO_MAGIC,
+				     .version = RDC_PROTO_VERSION,
+				     .caps = 3,
+				     .flags = RDC_HELLO_CONTROL,
+				     .token_len = 3,
+				     .token = (const uint8_t *)"abc" },
 			       g;
 	size_t n;
 
@@ -143,13 +144,17 @@ static void test_hello(void **state)
 
 static void test_wait_stats(void **state)
 {
-	struct rdc_proto_wait w = {.budget = 0x1122334455667788ull,
-				   .needs_dp = 1,
-				   .term = {{2, 0x14, 0xff, 7}, {3, 0x18, 1, 1}}},
+	struct rdc_proto_wait w = { .budget = 0x1122334455667788ull,
+				    .needs_dp = 1,
+				    .term = { { 2, 0x14, 0xff, 7 },
+					      { 3, 0x18, 1, 1 } } },
 			      g;
-	struct rdc_proto_stats s = {.time = 1, .busy = 2, .frames = 5,
-				    .cmds = 6, .clients = 9,
-				    .frames_dropped = 11},
+	struct rdc_proto_stats s = { .time = 1,
+				     .busy = 2,
+				     .frames = 5,
+				     .cmds = 6,
+				     .clients = 9,
+				     .frames_dropped = 11 },
 			       t;
 	uint8_t b[RDC_PROTO_STATS_SIZE];
 
@@ -174,7 +179,7 @@ static void test_wait_stats(void **state)
 
 static void test_rle_layout(void **state)
 {
-	const uint32_t pix[4] = {0xaabbcc, 0xaabbcc, 0xaabbcc, 0x010203};
+	const uint32_t pix[4] = { 0xaabbcc, 0xaabbcc, 0xaabbcc, 0x010203 };
 	static const uint8_t want[16] = {
 		3, 0, 0, 0, 0xcc, 0xbb, 0xaa, 0, /* 3 x 0x00aabbcc */
 		1, 0, 0, 0, 0x03, 0x02, 0x01, 0, /* 1 x 0x00010203 */
@@ -191,9 +196,8 @@ static void test_rle_layout(void **state)
 			 0);
 	assert_memory_equal(out, pix, sizeof(pix));
 	/* too little room: 0, the caller sends raw */
-	assert_int_equal(rdc_proto_frame_encode(b, 15, RDC_ENC_RLE, pix, NULL,
-						4, 1),
-			 0);
+	assert_int_equal(
+		rdc_proto_frame_encode(b, 15, RDC_ENC_RLE, pix, NULL, 4, 1), 0);
 	/* runs that overflow the frame, a zero run, trailing bytes */
 	b[0] = 4;
 	assert_int_equal(rdc_proto_frame_decode(out, 4, 1, RDC_ENC_RLE, b, 16),
@@ -211,13 +215,13 @@ static void test_rle_layout(void **state)
 static void test_delta_layout(void **state)
 {
 	/* 2x2: row 0 unchanged, row 1 changed */
-	const uint32_t prev[4] = {1, 2, 3, 4}, cur[4] = {1, 2, 5, 5};
+	const uint32_t prev[4] = { 1, 2, 3, 4 }, cur[4] = { 1, 2, 5, 5 };
 	static const uint8_t want[16] = {
 		0, 0, 0, 0,		/* row 0: as before */
 		1, 0, 0, 0,		/* row 1: one run */
 		2, 0, 0, 0, 5, 0, 0, 0, /* 2 x 5 */
 	};
-	uint32_t out[4] = {1, 2, 3, 4};
+	uint32_t out[4] = { 1, 2, 3, 4 };
 	uint8_t b[64];
 
 	(void)state;
@@ -225,15 +229,13 @@ static void test_delta_layout(void **state)
 						cur, prev, 2, 2),
 			 16);
 	assert_memory_equal(b, want, 16);
-	assert_int_equal(rdc_proto_frame_decode(out, 2, 2, RDC_ENC_DELTA, b,
-						16),
-			 0);
+	assert_int_equal(
+		rdc_proto_frame_decode(out, 2, 2, RDC_ENC_DELTA, b, 16), 0);
 	assert_memory_equal(out, cur, sizeof(cur));
 	/* more runs than pixels in a row */
 	b[4] = 3;
-	assert_int_equal(rdc_proto_frame_decode(out, 2, 2, RDC_ENC_DELTA, b,
-						16),
-			 -1);
+	assert_int_equal(
+		rdc_proto_frame_decode(out, 2, 2, RDC_ENC_DELTA, b, 16), -1);
 }
 
 static void test_frame_roundtrip(void **state)
@@ -264,16 +266,17 @@ static void test_frame_roundtrip(void **state)
 			assert_memory_equal(out, a, sizeof(a));
 		}
 	}
-	assert_int_equal(rdc_proto_frame_decode(out, W, H, RDC_ENC_COUNT_, b,
-						0),
-			 -1);
+	assert_int_equal(
+		rdc_proto_frame_decode(out, W, H, RDC_ENC_COUNT_, b, 0), -1);
 }
 
 static void test_frame_header(void **state)
 {
-	struct rdc_proto_frame f = {.width = 640, .height = 480,
-				    .encoding = RDC_ENC_DELTA, .dropped = 3,
-				    .number = 1ull << 40},
+	struct rdc_proto_frame f = { .width = 640,
+				     .height = 480,
+				     .encoding = RDC_ENC_DELTA,
+				     .dropped = 3,
+				     .number = 1ull << 40 },
 			       g;
 	uint8_t b[RDC_PROTO_FRAME_HDR];
 

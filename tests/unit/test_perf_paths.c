@@ -16,10 +16,10 @@
 #include "test_dp_common.h"
 #include "rdc.h"
 
-#define TP_CHIPS 2
-#define TP_W 320
-#define TP_H 200
-#define TP_BATCH 40
+#define TP_CHIPS  2
+#define TP_W	  320
+#define TP_H	  200
+#define TP_BATCH  40
 #define TP_ROUNDS 12
 
 struct tp_pair {
@@ -71,10 +71,10 @@ static void tp_cmd(struct tp_pair *p, uint32_t op, uint32_t flags,
 		tdp_cmd(p->c[i], op, flags, n, a);
 }
 
-#define TP_CMD(p, op, ...)                                                     \
-	do {                                                                   \
-		const uint32_t tp_a_[] = { __VA_ARGS__ };                      \
-		tp_cmd((p), (op), 0, RDC_ARRAY_SIZE(tp_a_), tp_a_);            \
+#define TP_CMD(p, op, ...) \
+	do { \
+		const uint32_t tp_a_[] = { __VA_ARGS__ }; \
+		tp_cmd((p), (op), 0, RDC_ARRAY_SIZE(tp_a_), tp_a_); \
 	} while (0)
 
 /* Drain both and compare everything observable. */
@@ -196,7 +196,8 @@ static void test_blits_match(void **state)
 	for (i = 0; i < 60; i++) {
 		TP_CMD(p, RDC_OP_SET_FG, tdp_rand(&seed));
 		TP_CMD(p, RDC_OP_FILL_RECT, tp_xy(&seed),
-		       RDC_WH(tdp_range(&seed, 1, 120), tdp_range(&seed, 1, 90)));
+		       RDC_WH(tdp_range(&seed, 1, 120),
+			      tdp_range(&seed, 1, 90)));
 	}
 	for (round = 0; round < TP_ROUNDS; round++) {
 		tp_random_dst(p, &seed, RDC_OP_SET_DST);
@@ -213,8 +214,9 @@ static void test_blits_match(void **state)
 			TP_CMD(p, RDC_OP_SET_COLORKEY, 0);
 		}
 		TP_CMD(p, RDC_OP_SET_ALPHA,
-		       tdp_rand(&seed) % 4 ? RDC_ALPHA_OPAQUE :
-					     (uint32_t)tdp_range(&seed, 0, 255));
+		       tdp_rand(&seed) % 4 ?
+			       RDC_ALPHA_OPAQUE :
+			       (uint32_t)tdp_range(&seed, 0, 255));
 		for (i = 0; i < TP_BATCH; i++) {
 			/* near each other, so they overlap either way */
 			int32_t sx = tdp_range(&seed, -20, TP_W),
@@ -241,8 +243,8 @@ static void test_glyphs_match(void **state)
 		tp_random_dst(p, &seed, RDC_OP_SET_DST);
 		tp_random_state(p, &seed);
 		for (i = 0; i < TP_BATCH; i++) {
-			uint32_t fl = tdp_rand(&seed) % 3 ? 0 :
-							    RDC_MONO_TRANSPARENT;
+			uint32_t fl =
+				tdp_rand(&seed) % 3 ? 0 : RDC_MONO_TRANSPARENT;
 			uint32_t w = (uint32_t)tdp_range(&seed, 1, 40);
 			uint32_t h = (uint32_t)tdp_range(&seed, 1, 32);
 			uint32_t words = (w + 31) / 32 * h;
@@ -257,7 +259,8 @@ static void test_glyphs_match(void **state)
 				tp_cmd(p, RDC_OP_TEXT, fl, 2 + (n + 3) / 4, a);
 				continue;
 			}
-			if (i % 4 == 2) { /* a console glyph: 8 wide, 1..16 rows */
+			if (i % 4 ==
+			    2) { /* a console glyph: 8 wide, 1..16 rows */
 				w = 8;
 				h = (uint32_t)tdp_range(&seed, 1, 16);
 				words = h;
@@ -404,7 +407,9 @@ static void test_port_runs_match(void **state)
 
 	for (round = 0; round < 2000; round++) {
 		static const unsigned int kinds[] = {
-			RDC_BUS_READ, RDC_BUS_WRITE, RDC_BUS_RMW,
+			RDC_BUS_READ,
+			RDC_BUS_WRITE,
+			RDC_BUS_RMW,
 			RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL,
 			RDC_BUS_WRITE | RDC_BUS_TAIL_PARTIAL,
 		};
@@ -484,8 +489,8 @@ static void test_port_window_match(void **state)
 		n = (uint32_t)tdp_range(&seed, 1, 40);
 		addr = tdp_rand(&seed) % (TDP_VRAM_SIZE + 64);
 		if (tdp_rand(&seed) % 4 == 0) /* rows running out of VRAM */
-			addr = TDP_VRAM_SIZE - (uint32_t)tdp_range(&seed, 0, 8) *
-						       stride;
+			addr = TDP_VRAM_SIZE -
+			       (uint32_t)tdp_range(&seed, 0, 8) * stride;
 		len = (uint32_t)tdp_range(&seed, 0, 300);
 		if (tdp_rand(&seed) % 2)
 			len = (uint32_t)tdp_range(&seed, 1, 8);
@@ -524,8 +529,8 @@ static void test_port_window_match(void **state)
 			if (r.count == 1)
 				rdc_port_span(a, r.addr, len, RDC_BUS_WRITE);
 			else
-				rdc_port_column(a, r.addr, stride, r.count,
-						len, RDC_BUS_WRITE);
+				rdc_port_column(a, r.addr, stride, r.count, len,
+						RDC_BUS_WRITE);
 			if (!rows) {
 				if (r.count == 1)
 					rdc_port_span(b, r.addr, len,
@@ -614,9 +619,9 @@ static void test_fifo_ring_match(void **state)
 		assert_int_equal(rdc_port_cmd_pop(a, RDC_SRC_FIFO, da, n + 5),
 				 n);
 		for (i = 0; i < n; i++)
-			assert_int_equal(
-				rdc_port_cmd_pop(b, RDC_SRC_FIFO, db + i, 1),
-				1);
+			assert_int_equal(rdc_port_cmd_pop(b, RDC_SRC_FIFO,
+							  db + i, 1),
+					 1);
 		assert_memory_equal(da, w, n * sizeof(*w));
 		assert_memory_equal(db, w, n * sizeof(*w));
 		assert_int_equal(a->fifo_head, b->fifo_head);
@@ -874,8 +879,8 @@ int main(void)
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_fifo_ring_match, tp_setup,
 						tp_teardown),
-		cmocka_unit_test_setup_teardown(test_wait_feed_match,
-						tp_setup, tp_teardown),
+		cmocka_unit_test_setup_teardown(test_wait_feed_match, tp_setup,
+						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_fill_model, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_scanout_xrgb_model,

@@ -40,7 +40,7 @@ static int hello_fd(const struct netd *d, uint32_t flags)
 /* A TCP connection to the daemon's loopback listener. */
 static int tcp_fd(const struct netd *d)
 {
-	struct sockaddr_in sa = {.sin_family = AF_INET};
+	struct sockaddr_in sa = { .sin_family = AF_INET };
 	const char *colon = strrchr(d->tcp_uri, ':');
 	int fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
 
@@ -58,7 +58,7 @@ static int tcp_fd(const struct netd *d)
 /* Nothing to read on fd right now (a reply has not come). */
 static int quiet(int fd)
 {
-	struct pollfd p = {.fd = fd, .events = POLLIN};
+	struct pollfd p = { .fd = fd, .events = POLLIN };
 
 	return poll(&p, 1, 0) == 0;
 }
@@ -147,7 +147,7 @@ static int run_rdcd(const char *const *args, char *log, size_t cap)
 static void test_silent_connections(void **state)
 {
 	char tokfile[64], uri[300];
-	const char *args[] = {"--fast", "-q", "--token", tokfile, NULL};
+	const char *args[] = { "--fast", "-q", "--token", tokfile, NULL };
 	int fds[127], fd;
 	rdc_dev *dev = NULL;
 	struct netd d;
@@ -168,8 +168,8 @@ static void test_silent_connections(void **state)
 	/* the right token gets in over TCP, and anyone over UNIX */
 	snprintf(uri, sizeof(uri), "%s?token=%s", d.tcp_uri, tokfile);
 	assert_int_equal(rdc_open(uri, &dev), 0);
-	assert_int_equal(rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &(uint32_t){0}),
-			 0);
+	assert_int_equal(
+		rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &(uint32_t){ 0 }), 0);
 	rdc_close(dev);
 	fd = hello_fd(&d, 0);
 	assert_true(fd >= 0);
@@ -189,9 +189,9 @@ static void test_silent_connections(void **state)
 /* Before HELLO nothing larger than a HELLO is taken. */
 static void test_prehello_size(void **state)
 {
-	static const char *const args[] = {"--stepped", "-q", NULL};
+	static const char *const args[] = { "--stepped", "-q", NULL };
 	uint8_t h[RDC_PROTO_HDR_SIZE];
-	struct rdc_proto_hdr hdr = {.len = 65536, .type = RDC_MSG_HELLO};
+	struct rdc_proto_hdr hdr = { .len = 65536, .type = RDC_MSG_HELLO };
 	struct netd d;
 	int fd;
 
@@ -218,9 +218,8 @@ static void test_prehello_size(void **state)
 
 static void comb_setup(rdc_batch *b)
 {
-	assert_int_equal(rdc_batch_dst(b, 0, COMB_W / 8, COMB_W, COMB_H,
-				       RDC_FMT_I1),
-			 0);
+	assert_int_equal(
+		rdc_batch_dst(b, 0, COMB_W / 8, COMB_W, COMB_H, RDC_FMT_I1), 0);
 	assert_int_equal(rdc_batch_fg(b, 0), 0);
 	assert_int_equal(rdc_batch_fill_rect(b, 0, 0, COMB_W, COMB_H), 0);
 	assert_int_equal(rdc_batch_fg(b, 1), 0);
@@ -230,8 +229,8 @@ static void comb_setup(rdc_batch *b)
 
 static void fence_wait_msg(uint8_t *b, uint32_t value)
 {
-	struct rdc_proto_wait pw = {.budget = 60ull * RDC_DEFAULT_CORE_HZ,
-				    .needs_dp = 1};
+	struct rdc_proto_wait pw = { .budget = 60ull * RDC_DEFAULT_CORE_HZ,
+				     .needs_dp = 1 };
 
 	pw.term[0].kind = RDC_WAIT_TEST_EQ;
 	pw.term[0].reg = RDC_REG_FENCE;
@@ -248,7 +247,7 @@ static void fence_wait_msg(uint8_t *b, uint32_t value)
  */
 static void slice_in_mode(const char *mode)
 {
-	const char *args[] = {mode, "-q", NULL};
+	const char *args[] = { mode, "-q", NULL };
 	struct rdc_proto_stats s0, s;
 	uint8_t wb[RDC_PROTO_WAIT_SIZE];
 	struct rdc_proto_hdr h;
@@ -294,9 +293,11 @@ static void slice_in_mode(const char *mode)
 		if (seen >= 3)
 			break;
 	}
-	fprintf(stderr, "# %s: %d answers to an observer inside one flood "
-		"fill (pixels %llu, commands %u)\n", mode, seen,
-		(unsigned long long)(s.pixels - s0.pixels), s.cmds - s0.cmds);
+	fprintf(stderr,
+		"# %s: %d answers to an observer inside one flood "
+		"fill (pixels %llu, commands %u)\n",
+		mode, seen, (unsigned long long)(s.pixels - s0.pixels),
+		s.cmds - s0.cmds);
 	assert_true(seen >= 3);
 	/* the wait is answered in the end */
 	assert_int_equal(netd_reply(ctl, &h, NULL, 0), 0);
@@ -340,15 +341,14 @@ static void send_vblanks(int fd, uint32_t seq)
 	assert_non_null(p);
 	for (size_t i = 0; i < VBLANK_WORDS; i++)
 		rdc_proto_put32(p + 4 * i, RDC_CMD(RDC_OP_WAIT_VBLANK, 0, 0));
-	assert_int_equal(netd_send(fd, RDC_MSG_SUBMIT, seq, p,
-				   VBLANK_WORDS * 4),
-			 0);
+	assert_int_equal(
+		netd_send(fd, RDC_MSG_SUBMIT, seq, p, VBLANK_WORDS * 4), 0);
 	free(p);
 }
 
 static void test_stepped_submit_bounded(void **state)
 {
-	static const char *const args[] = {"--stepped", "-q", NULL};
+	static const char *const args[] = { "--stepped", "-q", NULL };
 	struct rdc_proto_stats s0, s;
 	struct rdc_proto_hdr h;
 	uint8_t k[4];
@@ -401,7 +401,7 @@ static void test_stepped_submit_bounded(void **state)
  */
 static void stuck_submit_in_mode(const char *mode)
 {
-	const char *args[] = {mode, "-q", NULL};
+	const char *args[] = { mode, "-q", NULL };
 	const uint32_t list = 0x100000;
 	uint8_t p[4 + 64], nops[2048 * 4], k[4];
 	struct rdc_proto_hdr h;
@@ -468,7 +468,7 @@ static void test_stuck_submit_paced(void **state)
  */
 static void test_reset_ends_waits(void **state)
 {
-	static const char *const args[] = {"-q", NULL};
+	static const char *const args[] = { "-q", NULL };
 	uint8_t wb[RDC_PROTO_WAIT_SIZE], k[4];
 	struct rdc_proto_hdr h;
 	struct netd d;
@@ -539,13 +539,13 @@ static void small_quarantine(void)
  * disconnected, a well-behaved client is served, rdcd's peak RSS stays
  * far below what 120 full queues would take (about 4.5 GiB before).
  */
-#define HOG_CLIENTS 120
+#define HOG_CLIENTS	 120
 #define DOC_RSS_LIMIT_KB (560ul << 10)
 
 static void test_output_bounded(void **state)
 {
-	static const char *const args[] = {"--fast", "-q", "--mode", "640x480",
-					   NULL};
+	static const char *const args[] = { "--fast", "-q", "--mode", "640x480",
+					    NULL };
 	static int fds[HOG_CLIENTS];
 	uint8_t p[12], v[4];
 	unsigned long hwm;
@@ -576,13 +576,15 @@ static void test_output_bounded(void **state)
 	assert_true(good >= 0);
 	for (uint32_t k = 0; k < 200; k++) {
 		rdc_proto_put32(p, RDC_REG_FRAME_COUNT);
-		assert_int_equal(netd_call(good, RDC_MSG_REG_READ, k, p, 4, v, 4),
+		assert_int_equal(netd_call(good, RDC_MSG_REG_READ, k, p, 4, v,
+					   4),
 				 RDC_ST_OK);
 	}
 	hwm = vm_hwm_kb(d.pid);
-	fprintf(stderr, "# %d silent subscribers asking for 8 MiB each: rdcd "
-		"VmHWM %lu kB (documented limit %lu kB)\n", HOG_CLIENTS, hwm,
-		DOC_RSS_LIMIT_KB);
+	fprintf(stderr,
+		"# %d silent subscribers asking for 8 MiB each: rdcd "
+		"VmHWM %lu kB (documented limit %lu kB)\n",
+		HOG_CLIENTS, hwm, DOC_RSS_LIMIT_KB);
 	assert_true(hwm > 0 && hwm < DOC_RSS_LIMIT_KB);
 	assert_true(netd_log_has(&d, "disconnecting the slowest reader"));
 	for (int i = 0; i < HOG_CLIENTS; i++)
@@ -595,9 +597,9 @@ static void test_output_bounded(void **state)
 static void test_unix_path_kept(void **state)
 {
 	char dir[64], path[128], link[128], lis[160], lis2[160], log[8192];
-	const char *args[] = {"--stepped", "--listen", lis, NULL};
-	struct sockaddr_un sa = {.sun_family = AF_UNIX};
-	char buf[16] = {0};
+	const char *args[] = { "--stepped", "--listen", lis, NULL };
+	struct sockaddr_un sa = { .sun_family = AF_UNIX };
+	char buf[16] = { 0 };
 	struct netd d;
 	FILE *f;
 	int fd;
@@ -634,7 +636,7 @@ static void test_unix_path_kept(void **state)
 	close(fd);
 	snprintf(lis2, sizeof(lis2), "unix:%s", path);
 	{
-		const char *a2[] = {"--stepped", "--listen", lis2, NULL};
+		const char *a2[] = { "--stepped", "--listen", lis2, NULL };
 
 		assert_int_equal(netd_start(&d, a2), 0);
 		fd = netd_connect(path);
@@ -654,8 +656,8 @@ static void test_unix_path_kept(void **state)
 static void test_token_limits(void **state)
 {
 	char tok[64], bad[64], uri[300], log[8192];
-	const char *a1[] = {"--token", tok, NULL};
-	const char *a2[] = {"--stepped", "--token", tok, NULL};
+	const char *a1[] = { "--token", tok, NULL };
+	const char *a2[] = { "--stepped", "--token", tok, NULL };
 	rdc_dev *dev = NULL;
 	struct netd d;
 	int lines = 0;
@@ -711,7 +713,7 @@ static void test_token_limits(void **state)
 /* 9. A bracketed IPv6 address keeps its brackets in messages. */
 static void test_ipv6_text(void **state)
 {
-	const char *args[] = {"--listen", "tcp:[::]:0", NULL};
+	const char *args[] = { "--listen", "tcp:[::]:0", NULL };
 	char log[8192];
 
 	(void)state;

@@ -18,7 +18,7 @@
 #include "rdc_priv.h" /* the wait kinds the protocol carries */
 #include "test_net_common.h"
 
-static const char *const args_stepped[] = {"--stepped", "-v", NULL};
+static const char *const args_stepped[] = { "--stepped", "-v", NULL };
 
 /* A fresh connection that says HELLO; -1 on failure. */
 static int hello_fd(const struct netd *d, uint32_t flags)
@@ -49,7 +49,7 @@ static void test_bad_messages(void **state)
 {
 	struct rdc_proto_hello_reply hr;
 	struct netd d;
-	uint8_t b[64] = {0};
+	uint8_t b[64] = { 0 };
 	int fd;
 
 	(void)state;
@@ -131,9 +131,9 @@ static void test_bad_messages(void **state)
 	/* oversized: answered, then the connection is closed */
 	{
 		uint8_t h[RDC_PROTO_HDR_SIZE];
-		struct rdc_proto_hdr hdr = {.len = RDC_PROTO_MAX_REQUEST + 1,
-					    .type = RDC_MSG_SUBMIT,
-					    .seq = 17};
+		struct rdc_proto_hdr hdr = { .len = RDC_PROTO_MAX_REQUEST + 1,
+					     .type = RDC_MSG_SUBMIT,
+					     .seq = 17 };
 		struct rdc_proto_hdr r;
 
 		rdc_proto_hdr_encode(h, &hdr);
@@ -150,8 +150,8 @@ static void test_bad_messages(void **state)
 	fd = netd_connect(d.sock);
 	assert_true(fd >= 0);
 	memset(b, 0, sizeof(b));
-	assert_int_equal(netd_call(fd, RDC_MSG_HELLO, 1, b, RDC_PROTO_HELLO_FIXED,
-				   NULL, 0),
+	assert_int_equal(netd_call(fd, RDC_MSG_HELLO, 1, b,
+				   RDC_PROTO_HELLO_FIXED, NULL, 0),
 			 RDC_ST_VERSION);
 	assert_true(netd_closed(fd));
 	close(fd);
@@ -163,9 +163,10 @@ static void test_bad_messages(void **state)
 
 static void test_hangups(void **state)
 {
-	uint8_t h[RDC_PROTO_HDR_SIZE], b[64] = {0};
-	struct rdc_proto_hdr hdr = {.len = 4096, .type = RDC_MSG_SUBMIT,
-				    .seq = 2};
+	uint8_t h[RDC_PROTO_HDR_SIZE], b[64] = { 0 };
+	struct rdc_proto_hdr hdr = { .len = 4096,
+				     .type = RDC_MSG_SUBMIT,
+				     .seq = 2 };
 	struct netd d;
 	int fd;
 
@@ -276,7 +277,7 @@ static void test_control(void **state)
 static void test_token(void **state)
 {
 	char tokfile[200], badfile[200], uri[400], args_tok[220];
-	const char *args[] = {"--stepped", "--token", args_tok, NULL};
+	const char *args[] = { "--stepped", "--token", args_tok, NULL };
 	rdc_dev *dev = NULL;
 	struct netd d;
 	FILE *f;
@@ -330,7 +331,7 @@ static void test_token(void **state)
 /* A non-loopback TCP listener without a token: the daemon will not start. */
 static void test_token_required(void **state)
 {
-	const char *args[] = {"--listen", "tcp:0.0.0.0:0", NULL};
+	const char *args[] = { "--listen", "tcp:0.0.0.0:0", NULL };
 	struct netd d;
 
 	(void)state;
@@ -349,7 +350,7 @@ static void test_token_required(void **state)
  */
 static void test_many_clients(void **state)
 {
-	static const char *const args[] = {"--fast", "-q", NULL};
+	static const char *const args[] = { "--fast", "-q", NULL };
 	/* observers and the flooder; the controller is the 64th */
 	int fds[LOAD_CLIENTS - 1];
 	const int flood = LOAD_CLIENTS - 2;
@@ -382,7 +383,7 @@ static void test_many_clients(void **state)
 	assert_true(fds[flood] >= 0);
 	{
 		uint8_t ping[RDC_PROTO_HDR_SIZE];
-		struct rdc_proto_hdr ph = {.type = RDC_MSG_PING};
+		struct rdc_proto_hdr ph = { .type = RDC_MSG_PING };
 		int flags = fcntl(fds[flood], F_GETFL);
 		int sent = 0;
 
@@ -393,8 +394,8 @@ static void test_many_clients(void **state)
 			if (send(fds[flood], ping, sizeof(ping),
 				 MSG_NOSIGNAL) != (ssize_t)sizeof(ping)) {
 				netd_sleep_ms(1);
-				if (send(fds[flood], ping,
-					 sizeof(ping), MSG_NOSIGNAL) < 0)
+				if (send(fds[flood], ping, sizeof(ping),
+					 MSG_NOSIGNAL) < 0)
 					break;
 			}
 			sent++;
@@ -405,8 +406,10 @@ static void test_many_clients(void **state)
 	assert_non_null(b);
 	for (uint32_t round = 1; round <= 20; round++) {
 		for (int i = 0; i < 50; i++) {
-			assert_int_equal(rdc_batch_fg(b, round * 977u + (uint32_t)i), 0);
-			assert_int_equal(rdc_batch_fill_rect(b, i * 11, (int)round * 20,
+			assert_int_equal(
+				rdc_batch_fg(b, round * 977u + (uint32_t)i), 0);
+			assert_int_equal(rdc_batch_fill_rect(b, i * 11,
+							     (int)round * 20,
 							     30, 15),
 					 0);
 		}
@@ -429,10 +432,12 @@ static void test_many_clients(void **state)
 	{
 		uint32_t f0, f1;
 
-		assert_int_equal(rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &f0), 0);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &f0),
+				 0);
 		assert_int_equal(rdc_vblank_wait(dev), 0);
 		assert_int_equal(rdc_vblank_wait(dev), 0);
-		assert_int_equal(rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &f1), 0);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &f1),
+				 0);
 		assert_true(f1 - f0 >= 2);
 	}
 	/* a silent subscriber, drained now: it lost frames, for itself */
@@ -460,7 +465,7 @@ static void test_many_clients(void **state)
 /* Subscribed frames, in every encoding, decode to what frame_grab shows. */
 static void test_subscribe(void **state)
 {
-	static const char *const args[] = {"--stepped", "-q", NULL};
+	static const char *const args[] = { "--stepped", "-q", NULL };
 	static uint32_t grab[640 * 480], ev_pix[640 * 480];
 	uint32_t w, h, crc_grab = 0;
 	rdc_dev *dev = NULL, *obs[3], *irq = NULL;
@@ -475,8 +480,8 @@ static void test_subscribe(void **state)
 	snprintf(uri, sizeof(uri), "%s?observe", d.unix_uri);
 	for (uint32_t enc = 0; enc < 3; enc++) {
 		assert_int_equal(rdc_open(uri, &obs[enc]), 0);
-		assert_int_equal(rdc_subscribe(obs[enc], RDC_EVENT_FRAME, 1, enc),
-				 0);
+		assert_int_equal(
+			rdc_subscribe(obs[enc], RDC_EVENT_FRAME, 1, enc), 0);
 	}
 	assert_int_equal(rdc_subscribe(obs[0], RDC_EVENT_FRAME, 0, 0),
 			 RDC_E_INVAL);
@@ -494,8 +499,8 @@ static void test_subscribe(void **state)
 	assert_int_equal(rdc_batch_submit(dev, b), 0);
 	assert_int_equal(rdc_finish(dev), 0);
 	assert_int_equal(rdc_frame_wait(dev), 0);
-	assert_int_equal(rdc_frame_grab(dev, grab, RDC_ARRAY_SIZE(grab), &w, &h),
-			 0);
+	assert_int_equal(
+		rdc_frame_grab(dev, grab, RDC_ARRAY_SIZE(grab), &w, &h), 0);
 	assert_int_equal(w, 640);
 	/* the picture is not blank */
 	assert_int_equal(grab[20 * 640 + 20], 0x00336699);
@@ -548,7 +553,7 @@ static void test_subscribe(void **state)
  */
 static void test_irq_event_after_ack(void **state)
 {
-	const char *args[] = {"--stepped", "-q", NULL};
+	const char *args[] = { "--stepped", "-q", NULL };
 	rdc_dev *dev = NULL, *irq = NULL;
 	struct rdc_event ev;
 	struct netd d;
@@ -585,7 +590,7 @@ static void test_irq_event_after_ack(void **state)
 static void test_record_replay(void **state)
 {
 	char trace[200];
-	const char *args[] = {"--stepped", "-q", "--record", trace, NULL};
+	const char *args[] = { "--stepped", "-q", "--record", trace, NULL };
 	struct rdc_replay_result res;
 	uint32_t crc = 0;
 	uint64_t t = 0;
@@ -692,9 +697,9 @@ static void *live_frames_read(void *arg)
 		if (!(h.flags & RDC_MSGF_EVENT)) {
 			lf->err = h.type == RDC_MSG_STATS && !h.status &&
 						  !rdc_proto_stats_decode(
-							  pl, h.len, &lf->st)
-					  ? 0
-					  : -1;
+							  pl, h.len, &lf->st) ?
+					  0 :
+					  -1;
 			break;
 		}
 		if (h.type != RDC_MSG_EV_FRAME)
@@ -811,8 +816,8 @@ static void pins_scene(rdc_batch *b, int n)
 static void test_record_replay_pins(void **state)
 {
 	char trace[200], edited[220];
-	const char *args[] = {"--stepped", "-q", "--record", trace, NULL};
-	struct live_frames lf = {0};
+	const char *args[] = { "--stepped", "-q", "--record", trace, NULL };
+	struct live_frames lf = { 0 };
 	struct rdc_replay_result res;
 	uint32_t v, lit = 0, dark = 0, again = 0;
 	uint64_t t = 0;
@@ -838,9 +843,9 @@ static void test_record_replay_pins(void **state)
 	assert_int_equal(pthread_create(&th, NULL, live_frames_read, &lf), 0);
 
 	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
-	assert_int_equal(
-		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_RGB565, 4096),
-		0);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70,
+				      RDC_FMT_RGB565, 4096),
+			 0);
 	assert_int_equal(rdc_frame_wait(dev), 0);
 	b = rdc_batch_new();
 	assert_non_null(b);
@@ -860,9 +865,9 @@ static void test_record_replay_pins(void **state)
 	assert_int_equal(rdc_pins_set(dev, RDC_PIN_RESET_N, RDC_PIN_RESET_N),
 			 0);
 	/* released: the chip starts afresh, so the mode and scene again */
-	assert_int_equal(
-		rdc_mode_set(dev, RDC_PRESET_320x200_70, RDC_FMT_RGB565, 4096),
-		0);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_320x200_70,
+				      RDC_FMT_RGB565, 4096),
+			 0);
 	assert_int_equal(rdc_batch_submit(dev, b), 0);
 	assert_int_equal(rdc_finish(dev), 0);
 	assert_int_equal(rdc_frame_wait(dev), 0);
@@ -926,13 +931,13 @@ static void test_record_replay_pins(void **state)
 static void test_random_requests(void **state)
 {
 	static const uint32_t size_of[] = {
-		[RDC_MSG_REG_READ] = 4,	 [RDC_MSG_REG_WRITE] = 8,
-		[RDC_MSG_VRAM_READ] = 8, [RDC_MSG_VRAM_WRITE] = 12,
-		[RDC_MSG_SUBMIT] = 32,	 [RDC_MSG_WAIT] = RDC_PROTO_WAIT_SIZE,
-		[RDC_MSG_STEP] = 8,	 [RDC_MSG_FRAME_GRAB] = 8,
+		[RDC_MSG_REG_READ] = 4,	  [RDC_MSG_REG_WRITE] = 8,
+		[RDC_MSG_VRAM_READ] = 8,  [RDC_MSG_VRAM_WRITE] = 12,
+		[RDC_MSG_SUBMIT] = 32,	  [RDC_MSG_WAIT] = RDC_PROTO_WAIT_SIZE,
+		[RDC_MSG_STEP] = 8,	  [RDC_MSG_FRAME_GRAB] = 8,
 		[RDC_MSG_SUBSCRIBE] = 12, [RDC_MSG_STATS] = 0,
-		[RDC_MSG_RESET] = 4,	 [RDC_MSG_CLAIM] = 0,
-		[RDC_MSG_RELEASE] = 0,	 [RDC_MSG_PING] = 0,
+		[RDC_MSG_RESET] = 4,	  [RDC_MSG_CLAIM] = 0,
+		[RDC_MSG_RELEASE] = 0,	  [RDC_MSG_PING] = 0,
 	};
 	uint32_t seed = 20261122;
 	uint8_t pl[64];
@@ -967,9 +972,11 @@ static void test_random_requests(void **state)
 			for (int t = 0; t < 2; t++) {
 				uint8_t *term = pl + 12 + 16 * t;
 
-				rdc_proto_put32(term, rdc_proto_get32(term) % 5);
+				rdc_proto_put32(term,
+						rdc_proto_get32(term) % 5);
 				rdc_proto_put32(term + 4,
-						rdc_proto_get32(term + 4) & 0x3fc);
+						rdc_proto_get32(term + 4) &
+							0x3fc);
 			}
 		}
 		st = netd_call(fd, type, seq, pl, len, NULL, 0);
@@ -983,7 +990,7 @@ static void test_random_requests(void **state)
 /* Paced mode: time follows the wall clock; waits complete there too. */
 static void test_paced(void **state)
 {
-	static const char *const args[] = {"-q", NULL};
+	static const char *const args[] = { "-q", NULL };
 	rdc_dev *dev = NULL;
 	struct netd d;
 	uint64_t t0, t1;
@@ -1036,9 +1043,9 @@ static int png_stills(const char *dir, char *last, size_t cap)
 static void test_snapshot_signal(void **state)
 {
 	char dir[] = "/tmp/rdcd-snap-XXXXXX", spec[64], path[256] = "";
-	const char *args[] = {"--fast", "-q", "--mode", "320x200", "--png",
-			      spec, NULL};
-	png_image img = {.version = PNG_IMAGE_VERSION};
+	const char *args[] = { "--fast", "-q", "--mode", "320x200",
+			       "--png",	 spec, NULL };
+	png_image img = { .version = PNG_IMAGE_VERSION };
 	uint32_t *pix;
 	rdc_batch *b;
 	rdc_dev *dev = NULL;
@@ -1097,8 +1104,8 @@ static void test_snapshot_signal(void **state)
 static void test_stepped_wait_serves_others(void **state)
 {
 	char trace[200];
-	const char *args[] = {"--stepped", "-q", "--record", trace, NULL};
-	struct rdc_proto_wait pw = {.budget = 60ull * 100000000ull};
+	const char *args[] = { "--stepped", "-q", "--record", trace, NULL };
+	struct rdc_proto_wait pw = { .budget = 60ull * 100000000ull };
 	struct rdc_replay_result res;
 	uint8_t b[RDC_PROTO_WAIT_SIZE], v[4];
 	uint32_t f0 = 0, f1 = 0;
@@ -1132,7 +1139,7 @@ static void test_stepped_wait_serves_others(void **state)
 		f1 = rdc_proto_get32(v);
 	}
 	assert_true(f1 > f0); /* the wait is moving time, a piece at a time */
-	p = (struct pollfd){.fd = ctl, .events = POLLIN};
+	p = (struct pollfd){ .fd = ctl, .events = POLLIN };
 	assert_int_equal(poll(&p, 1, 0), 0); /* and has not answered yet */
 	close(ctl);
 	assert_serving(&d);

@@ -21,11 +21,11 @@
 #include "rdc_priv.h"
 #include "test_net_common.h"
 
-#define SOAK_MS 12000
+#define SOAK_MS		    12000
 #define ROUND_TRIP_BOUND_MS 2000
-#define DOC_RSS_LIMIT_KB (560ul << 10)
-#define STALLERS 60
-#define SILENT 24
+#define DOC_RSS_LIMIT_KB    (560ul << 10)
+#define STALLERS	    60
+#define SILENT		    24
 
 struct ctl_arg {
 	const struct netd *d;
@@ -108,11 +108,11 @@ static int cmp_u64(const void *a, const void *b)
 
 static void test_soak(void **state)
 {
-	static const char *const args[] = {"--fast", "-q", "--mode", "640x480",
-					   NULL};
+	static const char *const args[] = { "--fast", "-q", "--mode", "640x480",
+					    NULL };
 	static uint64_t rt[200000];
 	int stall[STALLERS], silent[SILENT];
-	struct ctl_arg ca = {0};
+	struct ctl_arg ca = { 0 };
 	uint64_t t0, worst;
 	size_t nrt = 0;
 	unsigned long hwm;
@@ -126,8 +126,8 @@ static void test_soak(void **state)
 
 	(void)state;
 	/* the sanitizer's quarantine of freed memory is not the daemon's */
-	snprintf(asan, sizeof(asan), "%s%squarantine_size_mb=8",
-		 old ? old : "", old && *old ? ":" : "");
+	snprintf(asan, sizeof(asan), "%s%squarantine_size_mb=8", old ? old : "",
+		 old && *old ? ":" : "");
 	setenv("ASAN_OPTIONS", asan, 1);
 	assert_int_equal(netd_start(&d, args), 0);
 	ca.d = &d;
@@ -165,8 +165,9 @@ static void test_soak(void **state)
 		fd = hello_fd(&d, 0);
 		if (fd >= 0) {
 			uint8_t h[RDC_PROTO_HDR_SIZE];
-			struct rdc_proto_hdr hdr = {.len = 100000,
-						    .type = RDC_MSG_VRAM_WRITE};
+			struct rdc_proto_hdr hdr = {
+				.len = 100000, .type = RDC_MSG_VRAM_WRITE
+			};
 
 			rdc_proto_hdr_encode(h, &hdr);
 			netd_write(fd, h, sizeof(h));

@@ -16,7 +16,7 @@
 #include "rdc_sink.h"
 
 #define CONV_SENTINEL 0xa5
-#define CONV_PAD 13 /* extra bytes per destination row, left untouched */
+#define CONV_PAD      13 /* extra bytes per destination row, left untouched */
 
 static uint32_t conv_rng(uint32_t *x)
 {
@@ -88,7 +88,8 @@ static void check_rgb_format(int fmt, unsigned bytes_pp)
 
 	for (size_t i = 0; i < sizeof(widths) / sizeof(widths[0]); i++) {
 		struct rdc_frame f;
-		uint32_t *px = conv_frame(&f, widths[i], 5, 0x1234u + (uint32_t)i);
+		uint32_t *px =
+			conv_frame(&f, widths[i], 5, 0x1234u + (uint32_t)i);
 		size_t bpl;
 		uint8_t *dst = conv_run(fmt, &f, &bpl);
 
@@ -177,15 +178,17 @@ static void test_convert_yuyv_model(void **state)
 
 		for (uint32_t x = 0; x < f.width; x += 2) {
 			uint32_t p0 = px[y * f.stride + x];
-			uint32_t p1 = x + 1 < f.width ? px[y * f.stride + x + 1]
-						      : p0;
+			uint32_t p1 =
+				x + 1 < f.width ? px[y * f.stride + x + 1] : p0;
 			double r = (comp(p0, 16) + comp(p1, 16)) / 2.0;
 			double g = (comp(p0, 8) + comp(p1, 8)) / 2.0;
 			double b = (comp(p0, 0) + comp(p1, 0)) / 2.0;
 			const uint8_t *m = row + x * 2;
 
-			near(m[0], ref_y(comp(p0, 16), comp(p0, 8), comp(p0, 0)));
-			near(m[2], ref_y(comp(p1, 16), comp(p1, 8), comp(p1, 0)));
+			near(m[0],
+			     ref_y(comp(p0, 16), comp(p0, 8), comp(p0, 0)));
+			near(m[2],
+			     ref_y(comp(p1, 16), comp(p1, 8), comp(p1, 0)));
 			near(m[1], ref_u(r, g, b));
 			near(m[3], ref_v(r, g, b));
 		}
@@ -217,8 +220,8 @@ static void test_convert_yuyv_exact_points(void **state)
 		};
 		uint8_t out[4];
 
-		assert_int_equal(rdc_sink_convert(RDC_SINK_FMT_YUYV, out, 4, &f),
-				 0);
+		assert_int_equal(
+			rdc_sink_convert(RDC_SINK_FMT_YUYV, out, 4, &f), 0);
 		/* Red's Y is 81.48 in BT.601: the 8-bit integer matrix
 		 * rounds it up; accept the model's one level. */
 		near(out[0], ref_y(comp(pts[i].rgb, 16), comp(pts[i].rgb, 8),
@@ -245,7 +248,7 @@ static void test_convert_yuyv_wide_equals_pairs(void **state)
 
 	(void)state;
 	px = conv_frame(&f, 333, 4, 0x5eed);
-	for (uint32_t k = 0; k < f.width; k += 3)	/* channel extremes */
+	for (uint32_t k = 0; k < f.width; k += 3) /* channel extremes */
 		px[f.stride + k] = (k & 8 ? 0x00ffffffu : 0) ^
 				   (0xffu << (8 * (k % 3)));
 	dst = conv_run(RDC_SINK_FMT_YUYV, &f, &bpl);
@@ -271,7 +274,9 @@ static void test_convert_args(void **state)
 {
 	uint32_t px[4] = { 0 };
 	uint8_t out[64];
-	struct rdc_frame f = { .xrgb = px, .width = 4, .height = 1, .stride = 4 };
+	struct rdc_frame f = {
+		.xrgb = px, .width = 4, .height = 1, .stride = 4
+	};
 
 	(void)state;
 	assert_int_equal(rdc_sink_convert(RDC_SINK_FMT_BGR32, out, 15, &f),

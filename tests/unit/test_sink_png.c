@@ -74,8 +74,9 @@ static void frame_fill(uint32_t *px, uint64_t seq)
 static void test_png_every_n(void **state)
 {
 	uint32_t px[PW * PH];
-	struct rdc_frame f = { .xrgb = px, .width = PW, .height = PH,
-			       .stride = PW };
+	struct rdc_frame f = {
+		.xrgb = px, .width = PW, .height = PH, .stride = PW
+	};
 	struct rdc_sink_stats st;
 	char spec[128], names[512];
 	rdc_sink *s;
@@ -101,8 +102,9 @@ static void test_png_every_n(void **state)
 static void test_png_on_demand_and_pixels(void **state)
 {
 	uint32_t px[PW * PH];
-	struct rdc_frame f = { .xrgb = px, .width = PW, .height = PH,
-			       .stride = PW };
+	struct rdc_frame f = {
+		.xrgb = px, .width = PW, .height = PH, .stride = PW
+	};
 	char spec[128], names[512], path[256];
 	png_image img;
 	uint8_t rgb[PW * PH * 3];
@@ -168,8 +170,10 @@ static void test_png_directories(void **state)
 {
 	char spec[160], path[160], file[200];
 	rdc_sink *s = NULL;
-	uint32_t px[4] = {0};
-	struct rdc_frame f = {.xrgb = px, .width = 2, .height = 2, .stride = 2};
+	uint32_t px[4] = { 0 };
+	struct rdc_frame f = {
+		.xrgb = px, .width = 2, .height = 2, .stride = 2
+	};
 	FILE *fp;
 
 	(void)state;

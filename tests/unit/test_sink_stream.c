@@ -116,7 +116,8 @@ static void test_stream_png_every(void **state)
 
 	(void)state;
 	snprintf(args, sizeof(args),
-		 "--fast --script " SCENE_A " --png %s --png-every 5 --frames 12",
+		 "--fast --script " SCENE_A
+		 " --png %s --png-every 5 --frames 12",
 		 strm_dir);
 	assert_int_equal(strm_run(args), 0);
 	assert_int_equal(w, 320);

@@ -20,7 +20,7 @@
 
 #include "../../userspace/sink/sink_priv.h"
 
-#define FAKE_FD 42
+#define FAKE_FD	  42
 #define FAKE_PAGE 4096u
 
 static struct fake_dev {
@@ -67,10 +67,11 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
 		if (fk.loopback)
 			strcpy((char *)c->driver, "v4l2 loopback");
 		c->capabilities = V4L2_CAP_DEVICE_CAPS | V4L2_CAP_READWRITE |
-				  V4L2_CAP_VIDEO_OUTPUT | V4L2_CAP_VIDEO_CAPTURE;
+				  V4L2_CAP_VIDEO_OUTPUT |
+				  V4L2_CAP_VIDEO_CAPTURE;
 		c->device_caps = V4L2_CAP_READWRITE |
-				 (fk.output ? V4L2_CAP_VIDEO_OUTPUT
-					    : V4L2_CAP_VIDEO_CAPTURE);
+				 (fk.output ? V4L2_CAP_VIDEO_OUTPUT :
+					      V4L2_CAP_VIDEO_CAPTURE);
 		return 0;
 	}
 	if (req == VIDIOC_S_FMT) {
@@ -93,9 +94,10 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
 			f->fmt.pix.bytesperline = f->fmt.pix.width * 2;
 		else
 			f->fmt.pix.bytesperline = f->fmt.pix.width * 4;
-		f->fmt.pix.sizeimage = (f->fmt.pix.bytesperline *
-						f->fmt.pix.height +
-					FAKE_PAGE - 1) & ~(FAKE_PAGE - 1);
+		f->fmt.pix.sizeimage =
+			(f->fmt.pix.bytesperline * f->fmt.pix.height +
+			 FAKE_PAGE - 1) &
+			~(FAKE_PAGE - 1);
 		return 0;
 	}
 	if (req == VIDIOC_STREAMON) {
@@ -257,8 +259,8 @@ static void test_v4l2_formats_and_size(void **state)
 		rdc_sink *s;
 
 		setup(NULL);
-		assert_int_equal(rdc_sink_v4l2_open_io(fm[i].spec, &fake_io, &s),
-				 0);
+		assert_int_equal(
+			rdc_sink_v4l2_open_io(fm[i].spec, &fake_io, &s), 0);
 		for (uint64_t n = 0; n < 3; n++) {
 			p.f.seq = n;
 			assert_int_equal(rdc_sink_frame(s, &p.f), 0);
@@ -432,7 +434,9 @@ static void test_v4l2_xrgb32_old_name(void **state)
 static void test_v4l2_bad_frames(void **state)
 {
 	uint32_t px[4] = { 0 };
-	struct rdc_frame f = { .xrgb = px, .width = 2, .height = 2, .stride = 1 };
+	struct rdc_frame f = {
+		.xrgb = px, .width = 2, .height = 2, .stride = 1
+	};
 	rdc_sink *s;
 
 	(void)state;
@@ -477,9 +481,8 @@ static void test_v4l2_interval_from_device(void **state)
 	assert_int_equal(den, 70);
 	rdc_close(dev);
 	/* CEA-861 1080p60: 2200 x 1125 at 148.5 MHz is exactly 1/60 s. */
-	assert_int_equal(rdc_sink_interval_timing(2200, 1125, 148500, &num,
-						  &den),
-			 0);
+	assert_int_equal(
+		rdc_sink_interval_timing(2200, 1125, 148500, &num, &den), 0);
 	assert_int_equal(num, 1);
 	assert_int_equal(den, 60);
 	assert_int_equal(rdc_sink_interval_timing(0, 1125, 148500, &num, &den),

@@ -27,13 +27,13 @@
 #define VH 30
 /* Each step lets the server run once and waits a little for its bytes:
  * a bound on the exchange, not a timing check. */
-#define PUMP_STEPS 2000
+#define PUMP_STEPS   2000
 #define PUMP_WAIT_MS 5
 
-#define RFB_SEC_NONE 1
-#define RFB_MSG_SET_ENCODINGS 2
+#define RFB_SEC_NONE	       1
+#define RFB_MSG_SET_ENCODINGS  2
 #define RFB_MSG_UPDATE_REQUEST 3
-#define RFB_ENC_RAW 0
+#define RFB_ENC_RAW	       0
 
 struct vc {
 	rdc_sink *s;
@@ -93,8 +93,16 @@ static uint16_t be16(const uint8_t *b)
 
 static void request(struct vc *c, int incremental)
 {
-	uint8_t m[10] = { RFB_MSG_UPDATE_REQUEST, (uint8_t)incremental,
-			  0, 0, 0, 0, 0, VW, 0, VH };
+	uint8_t m[10] = { RFB_MSG_UPDATE_REQUEST,
+			  (uint8_t)incremental,
+			  0,
+			  0,
+			  0,
+			  0,
+			  0,
+			  VW,
+			  0,
+			  VH };
 
 	tx(c, m, sizeof(m));
 }
@@ -146,12 +154,14 @@ static void read_update(struct vc *c, uint32_t *fb, const uint8_t *pf,
 static void test_vnc_updates(void **state)
 {
 	static uint32_t px[VW * VH], seen[VW * VH];
-	struct rdc_frame f = { .xrgb = px, .width = VW, .height = VH,
-			       .stride = VW, .seq = 0 };
+	struct rdc_frame f = {
+		.xrgb = px, .width = VW, .height = VH, .stride = VW, .seq = 0
+	};
 	struct sockaddr_in a = { .sin_family = AF_INET };
 	uint8_t ver[12], b[64], pf[16];
-	uint8_t enc[8] = { RFB_MSG_SET_ENCODINGS, 0, 0, 1, 0, 0, 0,
-			   RFB_ENC_RAW };
+	uint8_t enc[8] = {
+		RFB_MSG_SET_ENCODINGS, 0, 0, 1, 0, 0, 0, RFB_ENC_RAW
+	};
 	uint32_t ymin, ymax, n;
 	char spec[32];
 	struct vc c;

@@ -54,7 +54,7 @@ static void sink_blank(void *ctx, bool dark)
 
 static void decoder(struct rdc_udl *u, struct sink *s, uint32_t vram)
 {
-	struct rdc_udl_out out = {sink_words, sink_blank, s};
+	struct rdc_udl_out out = { sink_words, sink_blank, s };
 
 	memset(s, 0, sizeof(*s));
 	rdc_udl_init(u, vram, &out);
@@ -116,7 +116,8 @@ static uint16_t lfsr(unsigned int count)
 	unsigned int r = 0xffff;
 
 	while (count--) {
-		unsigned int fb = ((r >> 15) ^ (r >> 4) ^ (r >> 2) ^ (r >> 1)) & 1;
+		unsigned int fb = ((r >> 15) ^ (r >> 4) ^ (r >> 2) ^ (r >> 1)) &
+				  1;
 
 		r = ((r << 1) | fb) & 0xffff;
 	}
@@ -141,7 +142,7 @@ static void put_mode(struct buf *b, const struct rdc_timing *t, uint32_t khz,
 	unsigned int xds = t->h_total - t->h_sync_start;
 	unsigned int yds = t->v_total - t->v_sync_start;
 
-	put_reg(b, 0xff, 0x00);	/* lock */
+	put_reg(b, 0xff, 0x00); /* lock */
 	put_reg(b, 0x00, 0x00); /* 16 bpp */
 	put_reg(b, 0x20, 0);
 	put_reg(b, 0x21, 0);
@@ -243,8 +244,10 @@ static void ref_apply(uint8_t *m, uint32_t win, const uint8_t *s, size_t n)
 			continue;
 		}
 		if (op == 0x6a) {
-			uint32_t src = s[i + 2] << 16 | s[i + 3] << 8 | s[i + 4];
-			uint32_t dst = s[i + 6] << 16 | s[i + 7] << 8 | s[i + 8];
+			uint32_t src = s[i + 2] << 16 | s[i + 3] << 8 |
+				       s[i + 4];
+			uint32_t dst = s[i + 6] << 16 | s[i + 7] << 8 |
+				       s[i + 8];
 			uint32_t k = s[i + 5] ? s[i + 5] : 256;
 
 			i += 9;
@@ -270,17 +273,20 @@ static void ref_apply(uint8_t *m, uint32_t win, const uint8_t *s, size_t n)
 			for (uint32_t k = 0; k < total; k++)
 				if (!(a & 1))
 					ref_px(m, win, a + 2 * k,
-					       s[i + 2 * k] << 8 | s[i + 2 * k + 1]);
+					       s[i + 2 * k] << 8 |
+						       s[i + 2 * k + 1]);
 			i += 2 * total;
 			continue;
 		}
 		if (op == 0x69) {
 			while (decl < total) {
 				cnt = s[i] ? s[i] : 256;
-				for (uint32_t k = 0; k < cnt && drawn < total; k++)
+				for (uint32_t k = 0; k < cnt && drawn < total;
+				     k++)
 					if (!(a & 1))
 						ref_px(m, win, a + 2 * drawn++,
-						       s[i + 1] << 8 | s[i + 2]);
+						       s[i + 1] << 8 |
+							       s[i + 2]);
 				decl += cnt;
 				i += 3;
 			}
@@ -328,8 +334,8 @@ static uint32_t rnd(void)
 static uint16_t rnd_px(void)
 {
 	/* few colours, so runs happen */
-	static const uint16_t pal[] = {0x0000, 0xffff, 0xf800, 0x07e0,
-				       0x001f, 0x1234};
+	static const uint16_t pal[] = { 0x0000, 0xffff, 0xf800,
+					0x07e0, 0x001f, 0x1234 };
 
 	return rnd() % 3 ? pal[rnd() % 6] : (uint16_t)rnd();
 }
@@ -363,7 +369,8 @@ static void rnd_stream(struct buf *b, uint32_t win, unsigned int ncmd)
 			put_addr(b, a);
 			put8(b, n & 0xff);
 			while (left) {
-				uint32_t k = 1 + rnd() % (left < 40 ? left : 40);
+				uint32_t k =
+					1 + rnd() % (left < 40 ? left : 40);
 
 				put8(b, k);
 				put_px(b, rnd_px());
@@ -422,8 +429,7 @@ static void sim_run(rdc_dev *dev, const struct sink *s)
 }
 
 /* The decoder drawn by the DP equals the reference, byte for byte. */
-static void check_against_ref(const struct buf *b, uint32_t win,
-			      uint32_t vram)
+static void check_against_ref(const struct buf *b, uint32_t win, uint32_t vram)
 {
 	struct rdc_udl u;
 	struct sink s;
@@ -459,8 +465,8 @@ static void test_lfsr(void **state)
 	assert_int_equal(lfsr(3), 0xfff9);
 	for (unsigned int c = 0; c <= 4200; c++)
 		if (rdc_udl_lfsr16_count(lfsr(c)) != (int32_t)c)
-			fail_msg("count %u: lfsr %04x decodes to %d", c, lfsr(c),
-				 rdc_udl_lfsr16_count(lfsr(c)));
+			fail_msg("count %u: lfsr %04x decodes to %d", c,
+				 lfsr(c), rdc_udl_lfsr16_count(lfsr(c)));
 	/* the all-zero state is never reached from all ones */
 	assert_int_equal(rdc_udl_lfsr16_count(0), -1);
 }
@@ -472,7 +478,7 @@ static void test_mode_presets(void **state)
 		struct rdc_timing t, back;
 		struct rdc_udl u;
 		struct sink s;
-		struct buf b = {0};
+		struct buf b = { 0 };
 		rdc_dev *dev = sim_open(8u << 20);
 		uint32_t v;
 
@@ -491,7 +497,8 @@ static void test_mode_presets(void **state)
 		sim_run(dev, &s);
 		assert_int_equal(rdc_reg_read(dev, RDC_REG_H_TOTAL, &v), 0);
 		assert_int_equal(v, t.h_total);
-		assert_int_equal(rdc_reg_read(dev, RDC_REG_V_SYNC_START, &v), 0);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_V_SYNC_START, &v),
+				 0);
 		assert_int_equal(v, t.v_sync_start);
 		assert_int_equal(rdc_reg_read(dev, RDC_REG_PIXCLK_KHZ, &v), 0);
 		assert_int_equal(v, t.pixclk_khz);
@@ -519,7 +526,7 @@ static void test_mode_bad(void **state)
 	struct rdc_timing t;
 	struct rdc_udl u;
 	struct sink s;
-	struct buf b = {0};
+	struct buf b = { 0 };
 
 	(void)state;
 	assert_int_equal(rdc_preset_timing(RDC_PRESET_640x480_60, &t), 0);
@@ -547,7 +554,7 @@ static void test_mode_bad(void **state)
 
 static void test_hand_built(void **state)
 {
-	struct buf b = {0};
+	struct buf b = { 0 };
 	uint16_t px[300];
 
 	(void)state;
@@ -581,7 +588,7 @@ static void test_random_vs_ref(void **state)
 	(void)state;
 	rng_state = 20240101u;
 	for (int round = 0; round < 20; round++) {
-		struct buf b = {0};
+		struct buf b = { 0 };
 
 		rnd_stream(&b, SIM_VRAM / 2, 300);
 		/* window half the VRAM: the upper half must stay zero */
@@ -608,7 +615,7 @@ static void feed_collect(const struct buf *b, const size_t *cuts, size_t ncut,
 
 static void test_splits(void **state)
 {
-	struct buf b = {0};
+	struct buf b = { 0 };
 	struct sink whole, part;
 	struct rdc_udl_stats sw, sp;
 	struct rdc_timing t;
@@ -628,8 +635,9 @@ static void test_splits(void **state)
 		feed_collect(&b, &k, 1, &part, &sp);
 		if (part.n != whole.n ||
 		    memcmp(part.w, whole.w, whole.n * sizeof(*whole.w)))
-			fail_msg("a cut at byte %zu of %zu changes the commands",
-				 k, b.n);
+			fail_msg(
+				"a cut at byte %zu of %zu changes the commands",
+				k, b.n);
 		assert_memory_equal(&sp, &sw, sizeof(sw));
 		free(part.w);
 	}
@@ -642,7 +650,8 @@ static void test_splits(void **state)
 			cuts[k] = k;
 		feed_collect(&b, cuts, b.n, &part, &sp);
 		assert_int_equal(part.n, whole.n);
-		assert_memory_equal(part.w, whole.w, whole.n * sizeof(*whole.w));
+		assert_memory_equal(part.w, whole.w,
+				    whole.n * sizeof(*whole.w));
 		assert_memory_equal(&sp, &sw, sizeof(sw));
 		free(part.w);
 		free(cuts);
@@ -675,9 +684,9 @@ static void test_hostile(void **state)
 			/* lots of prefixes and opcodes, so commands form */
 			uint32_t r = rnd() % 8;
 
-			junk[i] = r == 0 ? 0xaf
-				: r == 1 ? (uint8_t)(0x60 + rnd() % 12)
-					 : (uint8_t)rnd();
+			junk[i] = r == 0 ? 0xaf :
+				  r == 1 ? (uint8_t)(0x60 + rnd() % 12) :
+					   (uint8_t)rnd();
 		}
 		decoder(&u, &s, win);
 		for (size_t at = 0; at < n;) {
@@ -703,9 +712,11 @@ static void test_hostile(void **state)
 				uint32_t w = RDC_W(s.w[i + 3]);
 
 				for (int e = 1; e <= 2; e++)
-					assert_true(RDC_Y(s.w[i + e]) * 4096 +
-							    2 * (RDC_X(s.w[i + e]) + w) <=
-						    win);
+					assert_true(
+						RDC_Y(s.w[i + e]) * 4096 +
+							2 * (RDC_X(s.w[i + e]) +
+							     w) <=
+						win);
 			}
 			i += 1 + RDC_CMD_LEN(h);
 		}
@@ -713,7 +724,8 @@ static void test_hostile(void **state)
 		assert_int_equal(rdc_vram_read(dev, 0, got, SIM_VRAM), 0);
 		for (uint32_t i = win; i < SIM_VRAM; i++)
 			if (got[i])
-				fail_msg("byte 0x%x outside the window written", i);
+				fail_msg("byte 0x%x outside the window written",
+					 i);
 		free(got);
 		free(junk);
 		free(s.w);
@@ -725,7 +737,7 @@ static void test_errors(void **state)
 {
 	struct rdc_udl u;
 	struct sink s;
-	struct buf b = {0};
+	struct buf b = { 0 };
 
 	(void)state;
 	decoder(&u, &s, SIM_VRAM);
@@ -782,7 +794,7 @@ static void test_frame(void **state)
 	struct rdc_timing t;
 	struct rdc_udl u;
 	struct sink s;
-	struct buf b = {0};
+	struct buf b = { 0 };
 	rdc_dev *dev = sim_open(4u << 20);
 	uint32_t w = 0, h = 0, *frame;
 	uint16_t *pat;
@@ -795,9 +807,10 @@ static void test_frame(void **state)
 	assert_non_null(frame);
 	for (uint32_t y = 0; y < 480; y++)
 		for (uint32_t x = 0; x < 640; x++)
-			pat[y * 640 + x] = (uint16_t)((x / 40 + y / 30) % 2
-							      ? 0x07e0
-							      : (x * 7) ^ (y * 131));
+			pat[y * 640 + x] =
+				(uint16_t)((x / 40 + y / 30) % 2 ?
+						   0x07e0 :
+						   (x * 7) ^ (y * 131));
 	for (uint32_t y = 0; y < 480; y++)
 		put_rlx_line(&b, y * 1280, pat + y * 640, 640);
 	put_mode(&b, &t, 25180, 0);
@@ -812,12 +825,13 @@ static void test_frame(void **state)
 	assert_int_equal(h, 480);
 	for (uint32_t i = 0; i < 640 * 480; i++) {
 		uint32_t p = frame[i];
-		uint16_t v = (uint16_t)((p >> 19 & 0x1f) << 11 |
-					(p >> 10 & 0x3f) << 5 | (p >> 3 & 0x1f));
+		uint16_t v =
+			(uint16_t)((p >> 19 & 0x1f) << 11 |
+				   (p >> 10 & 0x3f) << 5 | (p >> 3 & 0x1f));
 
 		if (v != pat[i])
-			fail_msg("pixel %u,%u: %04x, not %04x", i % 640, i / 640,
-				 v, pat[i]);
+			fail_msg("pixel %u,%u: %04x, not %04x", i % 640,
+				 i / 640, v, pat[i]);
 	}
 	free(pat);
 	free(frame);
@@ -838,9 +852,13 @@ static void dtd_parse(const uint8_t *d, struct rdc_timing *t)
 	uint32_t vsw = (d[10] & 0xf) | (d[11] & 3) << 4;
 
 	*t = (struct rdc_timing){
-		.h_total = ha + hb, .h_display = ha, .h_sync_start = ha + hso,
-		.h_sync_end = ha + hso + hsw, .v_total = va + vb,
-		.v_display = va, .v_sync_start = va + vso,
+		.h_total = ha + hb,
+		.h_display = ha,
+		.h_sync_start = ha + hso,
+		.h_sync_end = ha + hso + hsw,
+		.v_total = va + vb,
+		.v_display = va,
+		.v_sync_start = va + vso,
 		.v_sync_end = va + vso + vsw,
 		.pixclk_khz = (uint32_t)(d[0] | d[1] << 8) * 10,
 		.flags = (d[17] & 2 ? RDC_CRTC_HSYNC_POS : 0) |
@@ -868,10 +886,11 @@ static unsigned int edid_dtds(const uint8_t *e, struct rdc_timing *out)
 	return n;
 }
 
-static void check_edid(uint32_t preferred, uint32_t vram,
-		       uint32_t expect_first, uint32_t expect_n)
+static void check_edid(uint32_t preferred, uint32_t vram, uint32_t expect_first,
+		       uint32_t expect_n)
 {
-	static const uint8_t head[8] = {0, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0};
+	static const uint8_t head[8] = { 0,    0xff, 0xff, 0xff,
+					 0xff, 0xff, 0xff, 0 };
 	uint8_t e[RDC_UDL_EDID_SIZE];
 	struct rdc_timing got[16], t;
 	unsigned int n, seen = 0;

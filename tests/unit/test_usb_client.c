@@ -48,10 +48,10 @@ static uint32_t fake_rand(void)
 static void fake_reply(const struct rdc_proto_hdr *req, const void *pl,
 		       uint32_t len)
 {
-	struct rdc_proto_hdr h = {.len = len,
-				  .type = req->type,
-				  .flags = RDC_MSGF_REPLY,
-				  .seq = req->seq};
+	struct rdc_proto_hdr h = { .len = len,
+				   .type = req->type,
+				   .flags = RDC_MSGF_REPLY,
+				   .seq = req->seq };
 
 	assert_true(fake.npending + RDC_PROTO_HDR_SIZE + len <=
 		    sizeof(fake.pending));
@@ -111,8 +111,9 @@ static int fake_send(struct rdc_xport *x, const struct iovec *iov, int n)
 
 static void fake_irq(uint32_t bits, uint64_t time)
 {
-	struct rdc_proto_hdr h = {
-		.len = 12, .type = RDC_MSG_EV_IRQ, .flags = RDC_MSGF_EVENT};
+	struct rdc_proto_hdr h = { .len = 12,
+				   .type = RDC_MSG_EV_IRQ,
+				   .flags = RDC_MSGF_EVENT };
 	uint8_t ev[RDC_USB_EVENT_SIZE];
 
 	rdc_proto_hdr_encode(ev, &h);
@@ -134,9 +135,9 @@ static ssize_t fake_recv(struct rdc_xport *x, void *buf, size_t len,
 		if (n)
 			return n;
 		if (fake.gone || !fake.npending)
-			return fake.gone ? RDC_E_GONE
-					 : (timeout_ms >= 0 ? RDC_E_TIMEOUT
-							    : RDC_E_IO);
+			return fake.gone ? RDC_E_GONE :
+					   (timeout_ms >= 0 ? RDC_E_TIMEOUT :
+							      RDC_E_IO);
 		chunk = (size_t)fake_rand() % 9 + 1;
 		chunk = RDC_MIN(fake.npending, chunk);
 		if (fake.gone_mid_reply) {
@@ -243,8 +244,8 @@ static void test_client_replies_and_events(void **state)
 static void expect_all_gone(rdc_dev *dev)
 {
 	unsigned int calls = fake.calls;
-	uint32_t v, words[4] = {0};
-	uint8_t b[16] = {0};
+	uint32_t v, words[4] = { 0 };
+	uint8_t b[16] = { 0 };
 	struct rdc_event ev;
 	uint64_t t;
 

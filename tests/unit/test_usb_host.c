@@ -90,7 +90,7 @@ static void test_addr_bad(void **state)
 
 static void test_path_format(void **state)
 {
-	static const uint8_t ports[] = {1, 4, 2};
+	static const uint8_t ports[] = { 1, 4, 2 };
 	char buf[32];
 
 	(void)state;
@@ -106,7 +106,8 @@ static size_t put_msg(uint8_t *p, uint16_t type, uint16_t flags, uint32_t seq,
 		      const void *pl, uint32_t len)
 {
 	struct rdc_proto_hdr h = {
-		.len = len, .type = type, .flags = flags, .seq = seq};
+		.len = len, .type = type, .flags = flags, .seq = seq
+	};
 
 	rdc_proto_hdr_encode(p, &h);
 	if (len)
@@ -294,19 +295,19 @@ static void test_rx_bad_bulk(void **state)
 		uint32_t len;
 		uint16_t flags;
 	} bad[] = {
-		{RDC_PROTO_MAX_REPLY + 1, RDC_MSGF_REPLY},
-		{0xffffffffu, RDC_MSGF_EVENT},
-		{4, 0},
-		{4, RDC_MSGF_REPLY | RDC_MSGF_EVENT},
+		{ RDC_PROTO_MAX_REPLY + 1, RDC_MSGF_REPLY },
+		{ 0xffffffffu, RDC_MSGF_EVENT },
+		{ 4, 0 },
+		{ 4, RDC_MSGF_REPLY | RDC_MSGF_EVENT },
 	};
-	uint8_t msg[RDC_PROTO_HDR_SIZE + 4] = {0}, out[64];
+	uint8_t msg[RDC_PROTO_HDR_SIZE + 4] = { 0 }, out[64];
 	struct rdc_usb_rx rx;
 
 	(void)state;
 	for (size_t i = 0; i < RDC_ARRAY_SIZE(bad); i++) {
-		struct rdc_proto_hdr h = {.len = bad[i].len,
-					  .type = RDC_MSG_PING,
-					  .flags = bad[i].flags};
+		struct rdc_proto_hdr h = { .len = bad[i].len,
+					   .type = RDC_MSG_PING,
+					   .flags = bad[i].flags };
 		uint8_t ev[RDC_USB_EVENT_SIZE];
 
 		assert_int_equal(rdc_usb_rx_init(&rx, 256), 0);
@@ -326,9 +327,9 @@ static void test_rx_bad_bulk(void **state)
 	/* the exact cap passes */
 	assert_int_equal(rdc_usb_rx_init(&rx, 256), 0);
 	{
-		struct rdc_proto_hdr h = {.len = RDC_PROTO_MAX_REPLY,
-					  .type = RDC_MSG_FRAME_GRAB,
-					  .flags = RDC_MSGF_REPLY};
+		struct rdc_proto_hdr h = { .len = RDC_PROTO_MAX_REPLY,
+					   .type = RDC_MSG_FRAME_GRAB,
+					   .flags = RDC_MSGF_REPLY };
 
 		rdc_proto_hdr_encode(msg, &h);
 	}

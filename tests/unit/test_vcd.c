@@ -104,7 +104,7 @@ static void r_add(struct r_vcd *v, uint64_t t, int var, uint32_t val)
 		v->c = realloc(v->c, v->cap * sizeof(*v->c));
 		assert_non_null(v->c);
 	}
-	v->c[v->n++] = (struct r_chg){t, var, val};
+	v->c[v->n++] = (struct r_chg){ t, var, val };
 }
 
 /* Skip to the $end closing a section; returns the token after it. */
@@ -124,12 +124,12 @@ static uint64_t r_unit_fs(const char *num, const char *unit)
 	static const struct {
 		const char *name;
 		uint64_t fs;
-	} u[] = {{"s", 1000000000000000ull},
-		 {"ms", 1000000000000ull},
-		 {"us", 1000000000ull},
-		 {"ns", 1000000ull},
-		 {"ps", 1000ull},
-		 {"fs", 1ull}};
+	} u[] = { { "s", 1000000000000000ull },
+		  { "ms", 1000000000000ull },
+		  { "us", 1000000000ull },
+		  { "ns", 1000000ull },
+		  { "ps", 1000ull },
+		  { "fs", 1ull } };
 	uint64_t k = strtoull(num, NULL, 10);
 
 	assert_true(k == 1 || k == 10 || k == 100);
@@ -161,13 +161,13 @@ static void r_parse(struct r_vcd *v, const char *path)
 
 				assert_non_null(unit);
 				v->unit_fs = r_unit_fs(num, unit);
-				assert_string_equal(
-					strtok_r(NULL, " \t\r\n", &save),
-					"$end");
+				assert_string_equal(strtok_r(NULL, " \t\r\n",
+							     &save),
+						    "$end");
 			} else if (!strcmp(tok, "$scope")) {
-				assert_string_equal(
-					strtok_r(NULL, " \t\r\n", &save),
-					"module");
+				assert_string_equal(strtok_r(NULL, " \t\r\n",
+							     &save),
+						    "module");
 				snprintf(v->scope, sizeof(v->scope), "%s",
 					 strtok_r(NULL, " \t\r\n", &save));
 				r_skip_end(&save);
@@ -175,9 +175,9 @@ static void r_parse(struct r_vcd *v, const char *path)
 				struct r_var *x = &v->var[v->nvars++];
 
 				assert_true(v->nvars <= R_MAX_VARS);
-				assert_string_equal(
-					strtok_r(NULL, " \t\r\n", &save),
-					"wire");
+				assert_string_equal(strtok_r(NULL, " \t\r\n",
+							     &save),
+						    "wire");
 				x->width = (unsigned int)strtoul(
 					strtok_r(NULL, " \t\r\n", &save), NULL,
 					10);
@@ -303,10 +303,11 @@ static void set_timing(rdc_dev *dev, const struct rdc_timing *t)
 		RDC_REG_H_SYNC_END,   RDC_REG_V_TOTAL,	  RDC_REG_V_DISPLAY,
 		RDC_REG_V_SYNC_START, RDC_REG_V_SYNC_END, RDC_REG_PIXCLK_KHZ,
 	};
-	const uint32_t vals[] = {
-		t->h_total,	 t->h_display,	t->h_sync_start,
-		t->h_sync_end,	 t->v_total,	t->v_display,
-		t->v_sync_start, t->v_sync_end, t->pixclk_khz};
+	const uint32_t vals[] = { t->h_total,	   t->h_display,
+				  t->h_sync_start, t->h_sync_end,
+				  t->v_total,	   t->v_display,
+				  t->v_sync_start, t->v_sync_end,
+				  t->pixclk_khz };
 
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_CONTROL, RDC_CONTROL_DP_EN),
 			 0);
@@ -316,10 +317,10 @@ static void set_timing(rdc_dev *dev, const struct rdc_timing *t)
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_FB_STRIDE, t->h_display),
 			 0);
 	/* scanout on: the new mode and a frame start now */
-	assert_int_equal(
-		rdc_reg_write(dev, RDC_REG_CONTROL,
-			      RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN),
-		0);
+	assert_int_equal(rdc_reg_write(dev, RDC_REG_CONTROL,
+				       RDC_CONTROL_DP_EN |
+					       RDC_CONTROL_SCANOUT_EN),
+			 0);
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL),
 			 0);
 }
@@ -622,7 +623,7 @@ static void power_cycle_and_run(const struct netd *d, uint64_t cycles)
 static void test_rdcd_vcd(void **state)
 {
 	char path[128], script[128], cmd[8192], out[4096];
-	const char *args[] = {"--stepped", "-q", "--vcd", path, NULL};
+	const char *args[] = { "--stepped", "-q", "--vcd", path, NULL };
 	rdc_dev *dev;
 	struct netd d;
 	struct r_vcd v;

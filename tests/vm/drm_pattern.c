@@ -93,8 +93,8 @@ static int open_udl(void)
 
 static int fb_create(int fd, struct fb *f, uint32_t w, uint32_t h)
 {
-	struct drm_mode_create_dumb c = {.width = w, .height = h, .bpp = 32};
-	struct drm_mode_map_dumb m = {0};
+	struct drm_mode_create_dumb c = { .width = w, .height = h, .bpp = 32 };
+	struct drm_mode_map_dumb m = { 0 };
 
 	if (drmIoctl(fd, DRM_IOCTL_MODE_CREATE_DUMB, &c))
 		return -1;
@@ -128,8 +128,8 @@ static void fb_draw(struct fb *f, uint32_t x0, uint32_t y0, uint32_t w,
 static int dirty(int fd, struct fb *f, uint32_t x, uint32_t y, uint32_t w,
 		 uint32_t h)
 {
-	drmModeClip c = {(uint16_t)x, (uint16_t)y, (uint16_t)(x + w),
-			 (uint16_t)(y + h)};
+	drmModeClip c = { (uint16_t)x, (uint16_t)y, (uint16_t)(x + w),
+			  (uint16_t)(y + h) };
 
 	return drmModeDirtyFB(fd, f->id, &c, 1);
 }
@@ -233,8 +233,7 @@ int main(int argc, char **argv)
 			printf("%08x\n", crc);
 			rdc_close(dev);
 			return 0;
-		}
-		else {
+		} else {
 			fprintf(stderr,
 				"usage: drm_pattern --uri URI --mode WxH "
 				"[--rect X,Y,W,H] [--bench N] [--loop]\n");

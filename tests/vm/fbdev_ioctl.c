@@ -50,7 +50,7 @@ static int xioctl(unsigned long req, void *arg)
 
 static uint32_t reg(uint32_t r)
 {
-	struct rdcfb_reg rr = {.reg = r};
+	struct rdcfb_reg rr = { .reg = r };
 
 	if (xioctl(RDCFB_IOC_REG_READ, &rr)) {
 		printf("# REG_READ 0x%03x: %s\n", r, strerror(errno));
@@ -61,7 +61,7 @@ static uint32_t reg(uint32_t r)
 
 static int reg_write(uint32_t r, uint32_t v)
 {
-	struct rdcfb_reg rr = {.reg = r, .val = v};
+	struct rdcfb_reg rr = { .reg = r, .val = v };
 
 	return xioctl(RDCFB_IOC_REG_WRITE, &rr);
 }
@@ -89,9 +89,9 @@ static uint32_t crc_le(const uint32_t *pix, size_t n)
 	uLong crc = crc32(0L, Z_NULL, 0);
 
 	for (size_t i = 0; i < n; i++) {
-		uint8_t b[4] = {(uint8_t)pix[i], (uint8_t)(pix[i] >> 8),
-				(uint8_t)(pix[i] >> 16),
-				(uint8_t)(pix[i] >> 24)};
+		uint8_t b[4] = { (uint8_t)pix[i], (uint8_t)(pix[i] >> 8),
+				 (uint8_t)(pix[i] >> 16),
+				 (uint8_t)(pix[i] >> 24) };
 
 		crc = crc32(crc, b, sizeof(b));
 	}
@@ -140,27 +140,27 @@ struct fmt {
 
 /* What an fbdev client expects of each format the device offers. */
 static const struct fmt fmts[] = {
-	{RDC_FMT_I8,
-	 8,
-	 FB_VISUAL_PSEUDOCOLOR,
-	 {0, 8, 0},
-	 {0, 8, 0},
-	 {0, 8, 0},
-	 "8 bpp indexed"},
-	{RDC_FMT_RGB565,
-	 16,
-	 FB_VISUAL_TRUECOLOR,
-	 {11, 5, 0},
-	 {5, 6, 0},
-	 {0, 5, 0},
-	 "RGB565"},
-	{RDC_FMT_XRGB8888,
-	 32,
-	 FB_VISUAL_TRUECOLOR,
-	 {16, 8, 0},
-	 {8, 8, 0},
-	 {0, 8, 0},
-	 "XRGB8888"},
+	{ RDC_FMT_I8,
+	  8,
+	  FB_VISUAL_PSEUDOCOLOR,
+	  { 0, 8, 0 },
+	  { 0, 8, 0 },
+	  { 0, 8, 0 },
+	  "8 bpp indexed" },
+	{ RDC_FMT_RGB565,
+	  16,
+	  FB_VISUAL_TRUECOLOR,
+	  { 11, 5, 0 },
+	  { 5, 6, 0 },
+	  { 0, 5, 0 },
+	  "RGB565" },
+	{ RDC_FMT_XRGB8888,
+	  32,
+	  FB_VISUAL_TRUECOLOR,
+	  { 16, 8, 0 },
+	  { 8, 8, 0 },
+	  { 0, 8, 0 },
+	  "XRGB8888" },
 };
 
 static void var_from_preset(struct fb_var_screeninfo *v, uint32_t preset,
@@ -313,8 +313,8 @@ static void check_cmap(uint8_t *vram)
 	static uint16_t r[RDC_CLUT_ENTRIES], g[RDC_CLUT_ENTRIES],
 		b[RDC_CLUT_ENTRIES], r2[RDC_CLUT_ENTRIES], g2[RDC_CLUT_ENTRIES],
 		b2[RDC_CLUT_ENTRIES];
-	struct fb_cmap cm = {0, RDC_CLUT_ENTRIES, r, g, b, NULL};
-	struct fb_cmap back = {0, RDC_CLUT_ENTRIES, r2, g2, b2, NULL};
+	struct fb_cmap cm = { 0, RDC_CLUT_ENTRIES, r, g, b, NULL };
+	struct fb_cmap back = { 0, RDC_CLUT_ENTRIES, r2, g2, b2, NULL };
 	struct fb_fix_screeninfo fix;
 	uint32_t bad = 0, *pix = NULL, w, h, stride;
 	unsigned int i;
@@ -366,8 +366,8 @@ static void check_cmap(uint8_t *vram)
 	for (uint32_t y = 0; y < 480; y++)
 		for (uint32_t x = 0; x < 640; x++) {
 			uint8_t k = (uint8_t)(x + y);
-			uint32_t want =
-				k >= 10 && k < 15 ? 0xffffff : cm_rgb(k);
+			uint32_t want = k >= 10 && k < 15 ? 0xffffff :
+							    cm_rgb(k);
 
 			bad += pix[y * 640 + x] != want;
 		}
@@ -383,9 +383,9 @@ static void check_direct(uint8_t *vram)
 	struct fb_fix_screeninfo fix;
 	uint32_t bad = 0, *pix = NULL, w, h;
 	/* Full-intensity channels expand to 0xff whatever the rounding. */
-	static const uint16_t p565[] = {0xf800, 0x07e0, 0x001f, 0xffff, 0};
-	static const uint32_t x565[] = {0xff0000, 0x00ff00, 0x0000ff, 0xffffff,
-					0};
+	static const uint16_t p565[] = { 0xf800, 0x07e0, 0x001f, 0xffff, 0 };
+	static const uint32_t x565[] = { 0xff0000, 0x00ff00, 0x0000ff, 0xffffff,
+					 0 };
 
 	if (set_mode(PAN_PRESET, &fmts[2], 1) ||
 	    xioctl(FBIOGET_FSCREENINFO, &fix)) {
@@ -394,8 +394,8 @@ static void check_direct(uint8_t *vram)
 	}
 	for (uint32_t y = 0; y < 480; y++)
 		for (uint32_t x = 0; x < 640; x++) {
-			uint32_t v =
-				0xff000000u | (x * 0x010203u + y * 0x0301u);
+			uint32_t v = 0xff000000u |
+				     (x * 0x010203u + y * 0x0301u);
 
 			memcpy(vram + y * fix.line_length + x * 4, &v, 4);
 		}
@@ -605,8 +605,8 @@ static int run_checks(void)
 static int prepare(void)
 {
 	struct fb_fix_screeninfo fix;
-	struct rdcfb_reg lo = {.reg = RDC_REG_TIME_LO};
-	struct rdcfb_reg hi = {.reg = RDC_REG_TIME_HI};
+	struct rdcfb_reg lo = { .reg = RDC_REG_TIME_LO };
+	struct rdcfb_reg hi = { .reg = RDC_REG_TIME_HI };
 	uint8_t *vram;
 
 	if (xioctl(FBIOGET_FSCREENINFO, &fix))

@@ -43,19 +43,19 @@
 #include "rdcfb_ioctl.h"
 #include "tap.h"
 
-#define NS_PER_S 1000000000ull
+#define NS_PER_S	1000000000ull
 #define EDGE_TIMEOUT_NS (2 * NS_PER_S)
 #define WAIT_TIMEOUT_MS 2000u
-#define EVENT_BUF 64
+#define EVENT_BUF	64
 /* The present test's mode: 320x200 with a vertical blanking as long as
  * the picture (200 lines of 63.5 us), so a fill started on TE lands in
  * it even when the edge reaches user space milliseconds late.
  */
-#define PRESENT_W 320u
-#define PRESENT_H 200u
-#define PRESENT_V_TOTAL 400u
+#define PRESENT_W	      320u
+#define PRESENT_H	      200u
+#define PRESENT_V_TOTAL	      400u
 #define PRESENT_SETTLE_FRAMES 3u
-#define DIRTY_FILLS 16
+#define DIRTY_FILLS	      16
 
 static int fd = -1;
 
@@ -173,8 +173,10 @@ static int reset_values(void)
 	bad += expect("PERF_CMDS", rd(RDC_REG_PERF_CMDS), 0);
 	bad += expect("FB_BASE", rd(RDC_REG_FB_BASE), 0);
 	/* the DP idle, its queue empty */
-	bad += expect("STATUS & DP", st & (RDC_STATUS_DP_BUSY |
-		      RDC_STATUS_DP_HALTED | RDC_STATUS_DP_WAIT), 0);
+	bad += expect("STATUS & DP",
+		      st & (RDC_STATUS_DP_BUSY | RDC_STATUS_DP_HALTED |
+			    RDC_STATUS_DP_WAIT),
+		      0);
 	bad += expect("STATUS & FIFO_EMPTY", st & RDC_STATUS_FIFO_EMPTY,
 		      RDC_STATUS_FIFO_EMPTY);
 	return bad;
@@ -202,8 +204,8 @@ static int cmd_reset(const char *how)
 
 static int cmd_frames(const char *count)
 {
-	struct rdcfb_step st = { .cycles = frame_cycles() * strtoull(count,
-								    NULL, 0) };
+	struct rdcfb_step st = { .cycles = frame_cycles() *
+					   strtoull(count, NULL, 0) };
 	uint32_t f0 = rd(RDC_REG_FRAME_COUNT);
 
 	if (!st.cycles)
@@ -250,8 +252,8 @@ static int cmd_black(void)
 		die("FRAME");
 	for (i = 0; i < f.width * f.height; i++)
 		lit += px[i] != 0;
-	printf("frame %u %ux%u crc %08x: %u pixels not black\n", f.seq,
-	       f.width, f.height, f.crc32, lit);
+	printf("frame %u %ux%u crc %08x: %u pixels not black\n", f.seq, f.width,
+	       f.height, f.crc32, lit);
 	free(px);
 	return lit ? 1 : 0;
 }
@@ -312,8 +314,7 @@ static struct gpiod_line_request *request_te(const char *label)
 		die("line TE");
 	gpiod_line_settings_set_direction(ls, GPIOD_LINE_DIRECTION_INPUT);
 	gpiod_line_settings_set_edge_detection(ls, GPIOD_LINE_EDGE_RISING);
-	gpiod_line_settings_set_event_clock(ls,
-					    GPIOD_LINE_CLOCK_MONOTONIC);
+	gpiod_line_settings_set_event_clock(ls, GPIOD_LINE_CLOCK_MONOTONIC);
 	if (gpiod_line_config_add_line_settings(lc, (unsigned int *)&off, 1,
 						ls))
 		die("line config");
@@ -354,8 +355,8 @@ static void drain(struct gpiod_line_request *req,
 		  struct gpiod_edge_event_buffer *buf)
 {
 	while (gpiod_line_request_wait_edge_events(req, 0) > 0)
-		if (gpiod_line_request_read_edge_events(req, buf,
-							EVENT_BUF) <= 0)
+		if (gpiod_line_request_read_edge_events(req, buf, EVENT_BUF) <=
+		    0)
 			break;
 }
 
@@ -415,8 +416,9 @@ static int cmd_jitter(const char *label, const char *count)
 	stats("phase against the ideal grid", ph, n - 1);
 	printf("# lost edges: %lld by FRAME_COUNT (%u..%u), %zu by the line "
 	       "sequence numbers; %zu periods more than 10%% long, %zu over "
-	       "1.5 frames\n", (long long)(f1 - f0) - (long long)(n - 1), f0,
-	       f1, gaps, late, long_gaps);
+	       "1.5 frames\n",
+	       (long long)(f1 - f0) - (long long)(n - 1), f0, f1, gaps, late,
+	       long_gaps);
 	gpiod_line_request_release(req);
 	gpiod_edge_event_buffer_free(buf);
 	free(t);
@@ -442,11 +444,17 @@ static void program_present_mode(void)
 static int fill(uint32_t c)
 {
 	const uint32_t w[] = {
-		RDC_CMD(RDC_OP_SET_DST, 0, 4), 0, PRESENT_W * 4,
-		RDC_WH(PRESENT_W, PRESENT_H), RDC_FMT_XRGB8888,
-		RDC_CMD(RDC_OP_SET_ROP, 0, 1), RDC_ROP_COPY,
-		RDC_CMD(RDC_OP_SET_FG, 0, 1), c,
-		RDC_CMD(RDC_OP_FILL_RECT, 0, 2), RDC_XY(0, 0),
+		RDC_CMD(RDC_OP_SET_DST, 0, 4),
+		0,
+		PRESENT_W * 4,
+		RDC_WH(PRESENT_W, PRESENT_H),
+		RDC_FMT_XRGB8888,
+		RDC_CMD(RDC_OP_SET_ROP, 0, 1),
+		RDC_ROP_COPY,
+		RDC_CMD(RDC_OP_SET_FG, 0, 1),
+		c,
+		RDC_CMD(RDC_OP_FILL_RECT, 0, 2),
+		RDC_XY(0, 0),
 		RDC_WH(PRESENT_W, PRESENT_H),
 	};
 
@@ -506,9 +514,9 @@ static int cmd_present(const char *label, const char *count)
 		return 1;
 	program_present_mode();
 	period = frame_ns();
-	vblank_cycles = (uint32_t)(frame_cycles() *
-				   (PRESENT_V_TOTAL - PRESENT_H) /
-				   PRESENT_V_TOTAL);
+	vblank_cycles =
+		(uint32_t)(frame_cycles() * (PRESENT_V_TOTAL - PRESENT_H) /
+			   PRESENT_V_TOTAL);
 	/* the fill's cost, measured on the DP */
 	wait_frame(rd(RDC_REG_FRAME_COUNT) + 1);
 	if (fill(0))
@@ -516,8 +524,9 @@ static int cmd_present(const char *label, const char *count)
 	wait_frame(rd(RDC_REG_FRAME_COUNT) + 1);
 	cycles = rd(RDC_REG_PERF_LAST_CYCLES);
 	printf("# full-screen fill %ux%u: %llu DP cycles; vertical blanking "
-	       "%u cycles; frame %.1f us\n", PRESENT_W, PRESENT_H,
-	       (unsigned long long)cycles, vblank_cycles, period / 1e3);
+	       "%u cycles; frame %.1f us\n",
+	       PRESENT_W, PRESENT_H, (unsigned long long)cycles, vblank_cycles,
+	       period / 1e3);
 	tap(cycles && cycles < vblank_cycles,
 	    "the fill fits in vertical blanking in simulated time");
 
@@ -562,14 +571,14 @@ static int cmd_present(const char *label, const char *count)
 	}
 	printf("# on TE: %u frames checked, %u torn, %u of another colour, "
 	       "%u not judged (grabbed late); %u windows missed (TE seen after "
-	       "the blanking)\n", te.checked, te.torn, te.wrong, te.late,
-	       te.missed);
+	       "the blanking)\n",
+	       te.checked, te.torn, te.wrong, te.late, te.missed);
 	printf("# at random moments: %u frames checked, %u torn, %u of "
-	       "another colour, %u not judged\n", free_run.checked,
-	       free_run.torn, free_run.wrong, free_run.late);
+	       "another colour, %u not judged\n",
+	       free_run.checked, free_run.torn, free_run.wrong, free_run.late);
 	tap(te.checked && !te.torn && !te.wrong,
-	    "presented on TE: %u of %u frames checked, 0 torn (%u)",
-	    te.checked, n, te.torn);
+	    "presented on TE: %u of %u frames checked, 0 torn (%u)", te.checked,
+	    n, te.torn);
 	tap(free_run.torn > 0,
 	    "presented at random moments: frames tear (%u of %u)",
 	    free_run.torn, free_run.checked);
@@ -581,8 +590,9 @@ static int cmd_present(const char *label, const char *count)
 int main(int argc, char **argv)
 {
 	if (argc < 3) {
-		fprintf(stderr, "usage: gpio_te dirty|reset|frames|irq|period|black|crc|"
-				"jitter|present DEV [ARGS]\n");
+		fprintf(stderr,
+			"usage: gpio_te dirty|reset|frames|irq|period|black|crc|"
+			"jitter|present DEV [ARGS]\n");
 		return 2;
 	}
 	fd = open(argv[2], O_RDWR);

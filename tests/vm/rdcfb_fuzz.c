@@ -69,14 +69,14 @@ static int xioctl(unsigned long req, void *arg)
 
 static uint32_t reg(uint32_t r)
 {
-	struct rdcfb_reg rr = {.reg = r};
+	struct rdcfb_reg rr = { .reg = r };
 
 	return xioctl(RDCFB_IOC_REG_READ, &rr) ? 0xdeadbeef : rr.val;
 }
 
 static int reg_write(uint32_t r, uint32_t v)
 {
-	struct rdcfb_reg rr = {.reg = r, .val = v};
+	struct rdcfb_reg rr = { .reg = r, .val = v };
 
 	return xioctl(RDCFB_IOC_REG_WRITE, &rr);
 }
@@ -138,9 +138,9 @@ static uint32_t make_bad(enum fuzz_kind kind, uint32_t *w, uint32_t vram)
 		break;
 	case FZ_BAD_LENGTH: {
 		static const uint32_t ops[][2] = {
-			{RDC_OP_FILL_RECT, 2}, {RDC_OP_LINE, 2},
-			{RDC_OP_SET_DST, 4},   {RDC_OP_FENCE, 1},
-			{RDC_OP_BLIT, 3},      {RDC_OP_TRIANGLE, 9},
+			{ RDC_OP_FILL_RECT, 2 }, { RDC_OP_LINE, 2 },
+			{ RDC_OP_SET_DST, 4 },	 { RDC_OP_FENCE, 1 },
+			{ RDC_OP_BLIT, 3 },	 { RDC_OP_TRIANGLE, 9 },
 		};
 		uint32_t k = rnd_below(RDC_ARRAY_SIZE(ops));
 
@@ -182,8 +182,8 @@ static uint32_t make_bad(enum fuzz_kind kind, uint32_t *w, uint32_t vram)
 	case FZ_LIST:
 		w[n++] =
 			RDC_CMD(rnd_below(2) ? RDC_OP_CALL : RDC_OP_JUMP, 0, 1);
-		w[n++] = rnd_below(2) ? vram + 4 * rnd_below(1u << 20)
-				      : (4 * rnd_below(vram / 4)) | 1 |
+		w[n++] = rnd_below(2) ? vram + 4 * rnd_below(1u << 20) :
+					(4 * rnd_below(vram / 4)) | 1 |
 						rnd_below(2) << 1;
 		break;
 	case FZ_TOO_LONG:
@@ -255,12 +255,12 @@ static void fuzz_submit_one(enum fuzz_kind kind, uint32_t *w, uint32_t vram,
 		e = submit_raw(w, count, 0, 0, &bad);
 		break;
 	case FZ_BAD_POINTER: {
-		static const uintptr_t ptrs[] = {0, 1, 0xfffffffffffff000ull,
-						 0x00007ffffffff000ull};
+		static const uintptr_t ptrs[] = { 0, 1, 0xfffffffffffff000ull,
+						  0x00007ffffffff000ull };
 		uint32_t k = rnd_below(RDC_ARRAY_SIZE(ptrs) + 1);
 
-		ptr = k < RDC_ARRAY_SIZE(ptrs) ? (const void *)ptrs[k]
-					       : unmapped;
+		ptr = k < RDC_ARRAY_SIZE(ptrs) ? (const void *)ptrs[k] :
+						 unmapped;
 		want_efault = true;
 		e = submit_raw(ptr, 1 + rnd_below(64), 0, 0, &bad);
 		break;
@@ -354,9 +354,11 @@ static uint64_t sim_now(void)
 static unsigned long fuzz_past_cap(const struct rdcfb_wait *wt)
 {
 	uint64_t past = RDCFB_MAX_CYCLES + 1 +
-			(rnd_below(2) ? 0 : ((uint64_t)rnd() << 32 | rnd()) %
-						    (UINT64_MAX - RDCFB_MAX_CYCLES));
-	struct rdcfb_step st = {.cycles = past};
+			(rnd_below(2) ?
+				 0 :
+				 ((uint64_t)rnd() << 32 | rnd()) %
+					 (UINT64_MAX - RDCFB_MAX_CYCLES));
+	struct rdcfb_step st = { .cycles = past };
 	struct rdcfb_wait w = *wt;
 	uint64_t t0 = sim_now();
 	unsigned long bad = 0;
@@ -377,7 +379,7 @@ static void fuzz_other(unsigned long iterations)
 	static uint32_t small[16];
 
 	for (unsigned long i = 0; i < iterations; i++) {
-		struct rdcfb_reg r = {.reg = rnd()};
+		struct rdcfb_reg r = { .reg = rnd() };
 		struct rdcfb_wait wt;
 		struct rdcfb_frame fr;
 		struct rdcfb_step st;
@@ -391,8 +393,8 @@ static void fuzz_other(unsigned long iterations)
 		else
 			r.reg = 4 * rnd_below(RDC_REG_WINDOW / 4) + 1 +
 				rnd_below(3);
-		e = xioctl(rnd_below(2) ? RDCFB_IOC_REG_READ
-					: RDCFB_IOC_REG_WRITE,
+		e = xioctl(rnd_below(2) ? RDCFB_IOC_REG_READ :
+					  RDCFB_IOC_REG_WRITE,
 			   &r);
 		reg_bad += e != EINVAL;
 
@@ -427,8 +429,9 @@ static void fuzz_other(unsigned long iterations)
 			/* on the term in use: a NONE term's fields are unread
 			 */
 			wt.term[0].reg =
-				rnd_below(2) ? RDC_REG_WINDOW + rnd_below(4096)
-					     : RDC_REG_STATUS + 2;
+				rnd_below(2) ?
+					RDC_REG_WINDOW + rnd_below(4096) :
+					RDC_REG_STATUS + 2;
 			wait_reg_bad += xioctl(RDCFB_IOC_WAIT, &wt) != EINVAL;
 			break;
 		}

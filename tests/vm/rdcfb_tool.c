@@ -39,20 +39,20 @@
 #include "dp.h"
 #include "rdcfb_ioctl.h"
 
-#define GLYPH_W 8
-#define GLYPH_H 16
-#define FENCE_VALUE 0x5eed
-#define RECT_X 100
-#define RECT_Y 100
-#define RECT_W 50
-#define RECT_H 40
-#define RECT_COLOUR 0x00ff0000u
-#define STRIPE_X 300
-#define STRIPE_Y 200
-#define STRIPE_W 100
-#define STRIPE_H 10
+#define GLYPH_W	       8
+#define GLYPH_H	       16
+#define FENCE_VALUE    0x5eed
+#define RECT_X	       100
+#define RECT_Y	       100
+#define RECT_W	       50
+#define RECT_H	       40
+#define RECT_COLOUR    0x00ff0000u
+#define STRIPE_X       300
+#define STRIPE_Y       200
+#define STRIPE_W       100
+#define STRIPE_H       10
 #define FRAMES_TO_WAIT 2
-#define FRAME_TRIES 200
+#define FRAME_TRIES    200
 
 static int fail(const char *what)
 {
@@ -72,7 +72,8 @@ static int open_fb(const char *dev, struct fb_fix_screeninfo *fix,
 
 	if (fd < 0)
 		return -1;
-	if (ioctl(fd, FBIOGET_FSCREENINFO, fix) || ioctl(fd, FBIOGET_VSCREENINFO, var)) {
+	if (ioctl(fd, FBIOGET_FSCREENINFO, fix) ||
+	    ioctl(fd, FBIOGET_VSCREENINFO, var)) {
 		close(fd);
 		return -1;
 	}
@@ -148,14 +149,15 @@ static int cmd_use(const char *dev)
 			fix.id, var.bits_per_pixel, fix.smem_len);
 		return 1;
 	}
-	map = mmap(NULL, fix.smem_len, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+	map = mmap(NULL, fix.smem_len, PROT_READ | PROT_WRITE, MAP_SHARED, fd,
+		   0);
 	if (map == MAP_FAILED)
 		return fail("mmap");
 	/* the mapping: a stripe written by the CPU, as in VRAM at yoffset 0 */
 	for (uint32_t y = 0; y < STRIPE_H; y++)
 		for (uint32_t x = 0; x < STRIPE_W; x++)
-			map[(STRIPE_Y + y) * (fix.line_length / 4) + STRIPE_X + x] =
-				stripe_px(x, y);
+			map[(STRIPE_Y + y) * (fix.line_length / 4) + STRIPE_X +
+			    x] = stripe_px(x, y);
 
 	/* the DP: a filled rectangle and a fence */
 	cmds[n++] = RDC_CMD(RDC_OP_SET_DST, 0, 4);
@@ -177,7 +179,8 @@ static int cmd_use(const char *dev)
 	cmds[n++] = FENCE_VALUE;
 	struct rdcfb_submit s = { .words = (uintptr_t)cmds, .count = n };
 	struct rdcfb_wait w = {
-		.term[0] = { RDCFB_WAIT_WRAP_GE, RDC_REG_FENCE, ~0u, FENCE_VALUE },
+		.term[0] = { RDCFB_WAIT_WRAP_GE, RDC_REG_FENCE, ~0u,
+			     FENCE_VALUE },
 		.flags = RDCFB_WAIT_NEEDS_DP,
 	};
 	if (ioctl(fd, RDCFB_IOC_SUBMIT, &s))
@@ -220,7 +223,8 @@ static int cmd_use(const char *dev)
 	}
 	for (uint32_t y = 0; y < RECT_H; y++)
 		for (uint32_t x = 0; x < RECT_W; x++)
-			if (px[(RECT_Y + y) * f.width + RECT_X + x] != RECT_COLOUR)
+			if (px[(RECT_Y + y) * f.width + RECT_X + x] !=
+			    RECT_COLOUR)
 				bad |= 2;
 	for (uint32_t y = 0; y < STRIPE_H; y++)
 		for (uint32_t x = 0; x < STRIPE_W; x++)
@@ -241,15 +245,15 @@ static int cmd_use(const char *dev)
 }
 
 static const uint32_t preset_size[][2] = {
-	{ 320, 200 }, { 640, 480 }, { 800, 600 }, { 1024, 768 },
-	{ 1280, 720 }, { 1920, 1080 },
+	{ 320, 200 },  { 640, 480 },  { 800, 600 },
+	{ 1024, 768 }, { 1280, 720 }, { 1920, 1080 },
 };
 static const uint32_t depths[] = { 8, 16, 32 };
 
-#define CMAP_INDEX 5
-#define CMAP_R 0x1234
-#define CMAP_G 0xabcd
-#define CMAP_B 0x8000
+#define CMAP_INDEX  5
+#define CMAP_R	    0x1234
+#define CMAP_G	    0xabcd
+#define CMAP_B	    0x8000
 #define FLIP_COLOUR 0x0000ff00u
 
 /* Put var, read it back: the mode in force and the frames it gives. */
@@ -269,8 +273,8 @@ static int set_mode(int fd, struct fb_var_screeninfo *var,
 		return fail("FBIOGET_*SCREENINFO");
 	if (var->xres != w || var->yres != h || var->bits_per_pixel != bpp ||
 	    fix->line_length < w * bpp / 8 ||
-	    fix->visual != (bpp == 8 ? FB_VISUAL_PSEUDOCOLOR :
-				       FB_VISUAL_TRUECOLOR)) {
+	    fix->visual !=
+		    (bpp == 8 ? FB_VISUAL_PSEUDOCOLOR : FB_VISUAL_TRUECOLOR)) {
 		fprintf(stderr, "asked %ux%u-%u, got %ux%u-%u stride %u\n", w,
 			h, bpp, var->xres, var->yres, var->bits_per_pixel,
 			fix->line_length);
@@ -301,8 +305,10 @@ static int cmd_modes(const char *dev)
 	if (fd < 0)
 		return fail("open");
 	orig = var;
-	for (size_t m = 0; m < sizeof(preset_size) / sizeof(preset_size[0]); m++) {
-		for (size_t d = 0; d < sizeof(depths) / sizeof(depths[0]); d++) {
+	for (size_t m = 0; m < sizeof(preset_size) / sizeof(preset_size[0]);
+	     m++) {
+		for (size_t d = 0; d < sizeof(depths) / sizeof(depths[0]);
+		     d++) {
 			var = orig;
 			var.xres = var.xres_virtual = preset_size[m][0];
 			var.yres = var.yres_virtual = preset_size[m][1];
@@ -311,9 +317,9 @@ static int cmd_modes(const char *dev)
 			if (set_mode(fd, &var, &fix, preset_size[m][0],
 				     preset_size[m][1], depths[d]))
 				return 1;
-			printf("%ux%u-%u: pixclock %u ps, stride %u\n", var.xres,
-			       var.yres, var.bits_per_pixel, var.pixclock,
-			       fix.line_length);
+			printf("%ux%u-%u: pixclock %u ps, stride %u\n",
+			       var.xres, var.yres, var.bits_per_pixel,
+			       var.pixclock, fix.line_length);
 		}
 	}
 
@@ -346,8 +352,11 @@ static int cmd_modes(const char *dev)
 	if (set_mode(fd, &var, &fix, orig.xres, orig.yres, 8))
 		return 1;
 	uint16_t r = CMAP_R, g = CMAP_G, b = CMAP_B, rr, gg, bb;
-	struct fb_cmap cmap = { .start = CMAP_INDEX, .len = 1, .red = &r,
-				.green = &g, .blue = &b };
+	struct fb_cmap cmap = { .start = CMAP_INDEX,
+				.len = 1,
+				.red = &r,
+				.green = &g,
+				.blue = &b };
 	if (ioctl(fd, FBIOPUTCMAP, &cmap))
 		return fail("FBIOPUTCMAP");
 	cmap.red = &rr;
@@ -357,7 +366,8 @@ static int cmd_modes(const char *dev)
 		fprintf(stderr, "FBIOGETCMAP: %04x %04x %04x\n", rr, gg, bb);
 		return 1;
 	}
-	map = mmap(NULL, fix.smem_len, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+	map = mmap(NULL, fix.smem_len, PROT_READ | PROT_WRITE, MAP_SHARED, fd,
+		   0);
 	if (map == MAP_FAILED)
 		return fail("mmap");
 	memset(map, CMAP_INDEX, (size_t)fix.line_length * var.yres);
@@ -384,9 +394,12 @@ static int cmd_modes(const char *dev)
 		fprintf(stderr, "yres_virtual %u\n", var.yres_virtual);
 		return 1;
 	}
-	for (size_t i = 0; i < (size_t)fix.line_length / 4 * var.yres_virtual; i++)
-		((uint32_t *)map)[i] = i < (size_t)fix.line_length / 4 * var.yres ?
-					       0 : FLIP_COLOUR;
+	for (size_t i = 0; i < (size_t)fix.line_length / 4 * var.yres_virtual;
+	     i++)
+		((uint32_t *)map)[i] =
+			i < (size_t)fix.line_length / 4 * var.yres ?
+				0 :
+				FLIP_COLOUR;
 	var.yoffset = var.yres;
 	if (ioctl(fd, FBIOPAN_DISPLAY, &var))
 		return fail("FBIOPAN_DISPLAY");
@@ -460,7 +473,8 @@ static int cmd_unbind(const char *dev, const char *pdev)
 
 	if (fd < 0)
 		return fail("open");
-	map = mmap(NULL, fix.smem_len, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+	map = mmap(NULL, fix.smem_len, PROT_READ | PROT_WRITE, MAP_SHARED, fd,
+		   0);
 	if (map == MAP_FAILED)
 		return fail("mmap");
 	ufd = open("/sys/bus/platform/drivers/rdcfb/unbind", O_WRONLY);
@@ -553,10 +567,13 @@ static int cmd_text(const char *dev, int row, int col, const char *s)
 		return fail("frame");
 	for (size_t k = 0; s[k]; k++) {
 		for (int y = 0; y < GLYPH_H; y++) {
-			uint8_t bits = rdc_font8x16[(uint8_t)s[k] * GLYPH_H + y];
+			uint8_t bits =
+				rdc_font8x16[(uint8_t)s[k] * GLYPH_H + y];
 
 			for (int x = 0; x < GLYPH_W; x++) {
-				uint32_t X = (uint32_t)((col + (int)k) * GLYPH_W + x);
+				uint32_t X =
+					(uint32_t)((col + (int)k) * GLYPH_W +
+						   x);
 				uint32_t Y = (uint32_t)(row * GLYPH_H + y);
 				uint32_t p, on = bits >> (7 - x) & 1;
 

@@ -292,7 +292,7 @@ static int link_fill(struct link *l, unsigned int tmo_ms)
 	if (l->rlen + 16384 > RBUF)
 		return -1;
 	if (l->fd >= 0) {
-		struct pollfd p = {.fd = l->fd, .events = POLLIN};
+		struct pollfd p = { .fd = l->fd, .events = POLLIN };
 		ssize_t k;
 
 		if (poll(&p, 1, (int)tmo_ms) <= 0)
@@ -317,7 +317,7 @@ static uint32_t send_msg(struct link *l, uint16_t type, const void *pl,
 			 uint32_t len)
 {
 	uint8_t *b = malloc(RDC_PROTO_HDR_SIZE + len);
-	struct rdc_proto_hdr h = {.len = len, .type = type, .seq = ++l->seq};
+	struct rdc_proto_hdr h = { .len = len, .type = type, .seq = ++l->seq };
 	int r;
 
 	if (!b)
@@ -412,10 +412,11 @@ static int request(struct link *l, uint16_t type, const void *pl, uint32_t len,
 
 static int hello(struct link *l, bool control, struct rdc_proto_hello_reply *r)
 {
-	struct rdc_proto_hello hh = {.magic = RDC_PROTO_MAGIC,
-				     .version = RDC_PROTO_VERSION,
-				     .caps = RDC_CAP_ALL,
-				     .flags = control ? RDC_HELLO_CONTROL : 0};
+	struct rdc_proto_hello hh = { .magic = RDC_PROTO_MAGIC,
+				      .version = RDC_PROTO_VERSION,
+				      .caps = RDC_CAP_ALL,
+				      .flags = control ? RDC_HELLO_CONTROL :
+							 0 };
 	uint8_t pl[64], out[64];
 	size_t n = rdc_proto_hello_encode(pl, sizeof(pl), &hh);
 	uint32_t st, len;
@@ -497,8 +498,8 @@ static int cmd_descriptors(void)
 	tap(l.ep_in & 0x80, "bulk IN endpoint 0x%02x", l.ep_in);
 	tap(l.ep_irq & 0x80, "interrupt IN endpoint 0x%02x", l.ep_irq);
 	int speed = libusb_get_device_speed(libusb_get_device(l.h));
-	uint16_t bulk =
-		speed == LIBUSB_SPEED_HIGH ? RDC_USB_BULK_HS : RDC_USB_BULK_FS;
+	uint16_t bulk = speed == LIBUSB_SPEED_HIGH ? RDC_USB_BULK_HS :
+						     RDC_USB_BULK_FS;
 
 	tap(l.maxp_out == bulk && l.maxp_in == bulk,
 	    "bulk wMaxPacketSize %u/%u at %s speed (want %u)", l.maxp_out,
@@ -512,7 +513,7 @@ static int cmd_descriptors(void)
 static int cmd_basic(void)
 {
 	struct rdc_proto_hello_reply hr;
-	uint32_t info[4] = {0}, info2[4] = {0}, v = 0;
+	uint32_t info[4] = { 0 }, info2[4] = { 0 }, v = 0;
 	struct link l;
 	int r;
 
@@ -590,8 +591,8 @@ static int cmd_irq(void)
 static int cmd_reset(void)
 {
 	struct rdc_proto_hello_reply hr;
-	uint32_t a[4] = {0}, b[4] = {0};
-	uint8_t half[8] = {4, 0, 0, 0, RDC_MSG_REG_READ, 0, 0, 0};
+	uint32_t a[4] = { 0 }, b[4] = { 0 };
+	uint8_t half[8] = { 4, 0, 0, 0, RDC_MSG_REG_READ, 0, 0, 0 };
 	struct link l;
 	int r;
 
@@ -666,8 +667,9 @@ static int cmd_zlp(void)
 		rdc_proto_put32(pl, 0);
 		rdc_proto_put32(pl + 4, size);
 		/* one host transfer larger than the reply: must end short */
-		struct rdc_proto_hdr h = {
-			.len = 8, .type = RDC_MSG_VRAM_READ, .seq = ++l.seq};
+		struct rdc_proto_hdr h = { .len = 8,
+					   .type = RDC_MSG_VRAM_READ,
+					   .seq = ++l.seq };
 		uint8_t req[24];
 
 		rdc_proto_hdr_encode(req, &h);
@@ -733,8 +735,9 @@ static int hostile(const char *kind, unsigned int seconds)
 		return 1;
 	if (!strcmp(kind, "truncated")) {
 		/* REG_WRITE promising 8 bytes, sending 3, then nothing */
-		struct rdc_proto_hdr t = {
-			.len = 8, .type = RDC_MSG_REG_WRITE, .seq = 99};
+		struct rdc_proto_hdr t = { .len = 8,
+					   .type = RDC_MSG_REG_WRITE,
+					   .seq = 99 };
 
 		rdc_proto_hdr_encode(b, &t);
 		tap(!link_write(&l, b, RDC_PROTO_HDR_SIZE + 3),
@@ -743,9 +746,9 @@ static int hostile(const char *kind, unsigned int seconds)
 		tap(r == LIBUSB_ERROR_TIMEOUT, "no reply to it (%s)",
 		    libusb_strerror(r));
 	} else if (!strcmp(kind, "oversize")) {
-		struct rdc_proto_hdr t = {.len = 0xfffffff0u,
-					  .type = RDC_MSG_VRAM_WRITE,
-					  .seq = 77};
+		struct rdc_proto_hdr t = { .len = 0xfffffff0u,
+					   .type = RDC_MSG_VRAM_WRITE,
+					   .seq = 77 };
 
 		rdc_proto_hdr_encode(b, &t);
 		tap(!link_write(&l, b, RDC_PROTO_HDR_SIZE + 32),
@@ -771,8 +774,9 @@ static int hostile(const char *kind, unsigned int seconds)
 		    "SUBSCRIBE frames and interrupts");
 		rdc_proto_put64(step, hr.core_hz / 60u);
 		for (unsigned int i = 0; i < 30; i++) {
-			struct rdc_proto_hdr t = {
-				.len = 8, .type = RDC_MSG_STEP, .seq = ++l.seq};
+			struct rdc_proto_hdr t = { .len = 8,
+						   .type = RDC_MSG_STEP,
+						   .seq = ++l.seq };
 			uint8_t m[24];
 
 			rdc_proto_hdr_encode(m, &t);
@@ -783,8 +787,9 @@ static int hostile(const char *kind, unsigned int seconds)
 		tap(1, "30 STEPs sent (half a second of frames), nothing read");
 		sleep(seconds);
 	} else if (!strcmp(kind, "exit-mid-message")) {
-		struct rdc_proto_hdr t = {
-			.len = 4096, .type = RDC_MSG_SUBMIT, .seq = 5};
+		struct rdc_proto_hdr t = { .len = 4096,
+					   .type = RDC_MSG_SUBMIT,
+					   .seq = 5 };
 
 		rdc_proto_hdr_encode(b, &t);
 		tap(!link_write(&l, b, 40), "40 bytes of a 4 KiB SUBMIT sent");
@@ -798,9 +803,9 @@ static int hostile(const char *kind, unsigned int seconds)
 			return 1;
 		for (uint32_t i = 0; i + RDC_CMD_MAX_ARGS <= words;
 		     i += RDC_CMD_MAX_ARGS)
-			rdc_proto_put32(
-				w + 4 * i,
-				RDC_CMD(RDC_OP_NOP, 0, RDC_CMD_MAX_ARGS - 1));
+			rdc_proto_put32(w + 4 * i,
+					RDC_CMD(RDC_OP_NOP, 0,
+						RDC_CMD_MAX_ARGS - 1));
 		printf("# submitting %u words (until unplugged)\n", words);
 		fflush(stdout);
 		for (unsigned int i = 0; i < seconds * 10; i++)
@@ -912,7 +917,7 @@ static int cmd_ffs_zlp(const char *dir)
 		return 1;
 	}
 	while (!enabled) {
-		struct pollfd p = {.fd = ep0, .events = POLLIN};
+		struct pollfd p = { .fd = ep0, .events = POLLIN };
 		ssize_t n;
 
 		if (poll(&p, 1, 30000) <= 0) {
@@ -942,7 +947,7 @@ static int cmd_zlp_probe(void)
 	libusb_device_handle *h = NULL;
 	struct libusb_config_descriptor *cfg;
 	uint8_t buf[4096], ep = 0;
-	int got[2] = {0, 0}, r0, r1;
+	int got[2] = { 0, 0 }, r0, r1;
 
 	/*
 	 * Without udevd (as in the VM), libusb's device list is the one it
@@ -987,16 +992,16 @@ static int cmd_zlp_probe(void)
 	if (libusb_claim_interface(h, 0))
 		return 1;
 	r0 = libusb_bulk_transfer(h, ep, buf, sizeof(buf), &got[0], TMO_MS);
-	r1 = got[0] == 612 ? 0
-			   : libusb_bulk_transfer(h, ep, buf, sizeof(buf),
+	r1 = got[0] == 612 ? 0 :
+			     libusb_bulk_transfer(h, ep, buf, sizeof(buf),
 						  &got[1], TMO_MS);
 	tap(!r0 && !r1 && ((got[0] == 512 && got[1] == 100) || got[0] == 612),
 	    "the host read %d then %d bytes", got[0], got[1]);
 	printf("# finding: a 0-byte write() to a FunctionFS bulk IN endpoint "
 	       "file %s\n",
 	       got[0] == 512 ? "sends a zero-length packet (it ended a "
-			       "512-byte transfer)"
-			     : "sends nothing (512 and 100 bytes came as one "
+			       "512-byte transfer)" :
+			       "sends nothing (512 and 100 bytes came as one "
 			       "transfer)");
 	libusb_release_interface(h, 0);
 	libusb_close(h);
@@ -1007,10 +1012,10 @@ static int cmd_zlp_probe(void)
 /* A UNIX-socket client alongside: every answer right, until `stop` exists. */
 static int cmd_watch(const char *sock, const char *stop)
 {
-	struct sockaddr_un sa = {.sun_family = AF_UNIX};
+	struct sockaddr_un sa = { .sun_family = AF_UNIX };
 	struct rdc_proto_hello_reply hr;
 	unsigned long rounds = 0, bad = 0;
-	struct link l = {.fd = -1};
+	struct link l = { .fd = -1 };
 	struct stat st;
 
 	l.rbuf = malloc(RBUF);
@@ -1077,8 +1082,8 @@ int main(int argc, char **argv)
 		return cmd_bench((unsigned int)strtoul(argv[i + 1], NULL, 0));
 	if (!strcmp(argv[i], "hostile") && i + 1 < argc)
 		return hostile(argv[i + 1],
-			       i + 2 < argc ? (unsigned int)atoi(argv[i + 2])
-					    : 3);
+			       i + 2 < argc ? (unsigned int)atoi(argv[i + 2]) :
+					      3);
 	if (!strcmp(argv[i], "ffs-zlp") && i + 1 < argc)
 		return cmd_ffs_zlp(argv[i + 1]);
 	if (!strcmp(argv[i], "zlp-probe"))

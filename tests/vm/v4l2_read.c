@@ -35,12 +35,12 @@
 #include "rdc_sink.h"
 
 #define MAX_EXPECT 8
-#define NS_PER_S 1000000000ull
-#define NS_PER_MS 1000000ull
-#define RETRY_NS (50 * NS_PER_MS)
-#define POLL_NS (2 * NS_PER_MS)
-#define RATE_MIN 0.3
-#define RATE_SLOW 5.0
+#define NS_PER_S   1000000000ull
+#define NS_PER_MS  1000000ull
+#define RETRY_NS   (50 * NS_PER_MS)
+#define POLL_NS	   (2 * NS_PER_MS)
+#define RATE_MIN   0.3
+#define RATE_SLOW  5.0
 
 struct expect {
 	const char *script;
@@ -98,9 +98,9 @@ static int simulate(struct ropts *o)
 		if (ret == RDC_E_RANGE) {
 			e->px = malloc((size_t)e->w * e->h * 4);
 			ret = e->px ? rdc_frame_grab(dev, e->px,
-						     (size_t)e->w * e->h,
-						     &e->w, &e->h)
-				    : RDC_E_NOMEM;
+						     (size_t)e->w * e->h, &e->w,
+						     &e->h) :
+				      RDC_E_NOMEM;
 		}
 		if (!ret)
 			ret = rdc_sink_interval(dev, &e->num, &e->den);
@@ -118,8 +118,10 @@ static int expect_crcs(struct ropts *o, int fmt, uint32_t bpl)
 {
 	for (int i = 0; i < o->nex; i++) {
 		struct expect *e = &o->ex[i];
-		struct rdc_frame f = { .xrgb = e->px, .width = e->w,
-				       .height = e->h, .stride = e->w };
+		struct rdc_frame f = { .xrgb = e->px,
+				       .width = e->w,
+				       .height = e->h,
+				       .stride = e->w };
 		size_t want = rdc_sink_fmt_bytesperline(fmt, e->w);
 		uint8_t *b;
 
@@ -276,7 +278,8 @@ static int read_device(struct ropts *o)
 			if (got < 0)
 				break;
 			crc = (uint32_t)crc32(0, buf, (uInt)got);
-			e = (size_t)got == want ? match(o, s.w, s.h, crc) : NULL;
+			e = (size_t)got == want ? match(o, s.w, s.h, crc) :
+						  NULL;
 			if (!e && o->settle && !matched)
 				continue; /* the scene is still being drawn */
 			if (e) {
@@ -284,9 +287,10 @@ static int read_device(struct ropts *o)
 				matched++;
 			} else {
 				bad++;
-				fprintf(stderr, "v4l2_read: frame %llu: %zd "
-						"bytes (want %zu), crc %08x "
-						"matches nothing\n",
+				fprintf(stderr,
+					"v4l2_read: frame %llu: %zd "
+					"bytes (want %zu), crc %08x "
+					"matches nothing\n",
 					(unsigned long long)n, got, want, crc);
 			}
 			n++;
@@ -300,8 +304,9 @@ static int read_device(struct ropts *o)
 		if (e && (uint64_t)s.tpf.numerator * e->den !=
 				 (uint64_t)s.tpf.denominator * e->num) {
 			ival_bad++;
-			fprintf(stderr, "v4l2_read: interval %u/%u, mode's "
-					"%u/%u\n",
+			fprintf(stderr,
+				"v4l2_read: interval %u/%u, mode's "
+				"%u/%u\n",
 				s.tpf.numerator, s.tpf.denominator, e->num,
 				e->den);
 		}
@@ -329,7 +334,8 @@ static int read_device(struct ropts *o)
 			if (got_ms > RATE_SLOW * want_ms)
 				printf("# frames %.1fx the mode's interval "
 				       "apart: a stalled writer or a busy "
-				       "host\n", got_ms / want_ms);
+				       "host\n",
+				       got_ms / want_ms);
 		}
 	}
 	free(buf);
@@ -382,8 +388,7 @@ static int parse(int argc, char **argv, struct ropts *o)
 		else if (!strcmp(a, "--each")) {
 			o->need_all = 1;
 			o->each = strtoull(v, NULL, 10);
-		}
-		else if (!strcmp(a, "--stall-ms"))
+		} else if (!strcmp(a, "--stall-ms"))
 			o->stall_ns = strtoull(v, NULL, 10) * NS_PER_MS;
 		else
 			return -1;

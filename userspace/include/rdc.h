@@ -274,8 +274,7 @@ int rdc_batch_transform(rdc_batch *b, const int32_t *m);
 int rdc_batch_viewport(rdc_batch *b, int32_t wx0, int32_t wy0, int32_t wx1,
 		       int32_t wy1, int x0, int y0, int x1, int y1);
 /* Filled polygon through n >= 3 points; even-odd unless nonzero. */
-int rdc_batch_fill_polygon(rdc_batch *b, const int *xy, size_t n,
-			   int nonzero);
+int rdc_batch_fill_polygon(rdc_batch *b, const int *xy, size_t n, int nonzero);
 /* Flood fill from (x, y); flags RDC_FLOOD_8 | RDC_FLOOD_BOUNDARY, the
  * boundary pixel value used only with RDC_FLOOD_BOUNDARY. */
 int rdc_batch_flood(rdc_batch *b, int x, int y, uint32_t flags,
@@ -330,13 +329,13 @@ int rdc_batch_jump(rdc_batch *b, uint32_t addr);
  * lines "TE", "IRQ", "RESET_N", "BL_EN"); built without libgpiod, every
  * rdc_pins_* call on fbdev: returns RDC_E_NOSYS.
  */
-#define RDC_PINS_OUT (RDC_PIN_TE | RDC_PIN_IRQ)	      /* driven by the chip */
-#define RDC_PINS_IN (RDC_PIN_RESET_N | RDC_PIN_BL_EN) /* driven by the host */
+#define RDC_PINS_OUT (RDC_PIN_TE | RDC_PIN_IRQ)	       /* driven by the chip */
+#define RDC_PINS_IN  (RDC_PIN_RESET_N | RDC_PIN_BL_EN) /* driven by the host */
 #define RDC_PINS_ALL (RDC_PINS_OUT | RDC_PINS_IN)
 
-#define RDC_EDGE_RISING 0x1u
+#define RDC_EDGE_RISING	 0x1u
 #define RDC_EDGE_FALLING 0x2u
-#define RDC_EDGE_BOTH (RDC_EDGE_RISING | RDC_EDGE_FALLING)
+#define RDC_EDGE_BOTH	 (RDC_EDGE_RISING | RDC_EDGE_FALLING)
 
 /* rdc_pin_edge.time when the backend does not know the simulated time. */
 #define RDC_PIN_TIME_NONE UINT64_MAX
@@ -345,7 +344,7 @@ struct rdc_pin_edge {
 	/* pins (RDC_PINS_OUT bits) with a wanted edge at this moment: a pin
 	 * rose if its bit is set in `levels`, else it fell */
 	uint32_t pins;
-	uint32_t levels;  /* all four pins right after the edge */
+	uint32_t levels; /* all four pins right after the edge */
 	/*
 	 * Simulated core cycles of the edge.  sim:: the exact cycle the pin
 	 * changed.  unix:, tcp:, usb:: the time the daemon saw the new
@@ -483,20 +482,20 @@ int rdc_reg_by_name(const char *name, uint32_t *reg);
 
 /* ---- Events from a daemon (unix:, tcp:) ---------------------------------- */
 #define RDC_EVENT_FRAME 0x1u /* a frame (every Nth) */
-#define RDC_EVENT_IRQ 0x2u   /* interrupt status bits that became set */
+#define RDC_EVENT_IRQ	0x2u /* interrupt status bits that became set */
 
 /* Frame encodings on the wire (docs/protocol.md); pixels arrive decoded. */
-#define RDC_FRAME_RAW 0u
-#define RDC_FRAME_RLE 1u
+#define RDC_FRAME_RAW	0u
+#define RDC_FRAME_RLE	1u
 #define RDC_FRAME_DELTA 2u /* rows unchanged since the last frame skipped */
 
 struct rdc_event {
-	uint32_t type;	      /* RDC_EVENT_FRAME or RDC_EVENT_IRQ */
-	uint32_t irq;	      /* IRQ: the new RDC_IRQ_* bits */
-	uint64_t time;	      /* IRQ: simulated time of the check */
-	uint64_t number;      /* FRAME: frame number since reset */
+	uint32_t type;		/* RDC_EVENT_FRAME or RDC_EVENT_IRQ */
+	uint32_t irq;		/* IRQ: the new RDC_IRQ_* bits */
+	uint64_t time;		/* IRQ: simulated time of the check */
+	uint64_t number;	/* FRAME: frame number since reset */
 	uint32_t width, height; /* FRAME: pixels stored in buf */
-	uint32_t dropped;     /* FRAME: frames dropped for this client */
+	uint32_t dropped;	/* FRAME: frames dropped for this client */
 };
 
 /*
@@ -560,9 +559,9 @@ size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
  * BTC keeps each 4x4 block's mean within 1/2 and every sample within
  * its block's range (max - min).
  */
-int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w,
-		     uint32_t h, uint32_t channels, size_t pitch, uint8_t *out,
-		     size_t cap, size_t *len);
+int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
+		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,
+		     size_t *len);
 /*
  * XRGB8888 pixels (rows `pitch` words apart) to w * h * channels samples:
  * channels 3 gives R, G, B; 1 the luma (77 R + 150 G + 29 B + 128) >> 8.

@@ -26,21 +26,21 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define RDC_PROTO_MAGIC 0x31434452u /* "RDC1" little-endian, in HELLO */
-#define RDC_PROTO_VERSION 1u	    /* bumped on incompatible changes */
+#define RDC_PROTO_MAGIC	   0x31434452u /* "RDC1" little-endian, in HELLO */
+#define RDC_PROTO_VERSION  1u	       /* bumped on incompatible changes */
 #define RDC_PROTO_HDR_SIZE 16u
 
 /* ---- Limits (the daemon rejects anything beyond them) ------------------ */
 /* Largest request payload: a VRAM write chunk and its address. */
-#define RDC_PROTO_VRAM_CHUNK (1u << 20)
+#define RDC_PROTO_VRAM_CHUNK  (1u << 20)
 #define RDC_PROTO_MAX_REQUEST (RDC_PROTO_VRAM_CHUNK + 64u)
 /* Command words per SUBMIT (librdc splits longer submissions). */
 #define RDC_PROTO_MAX_SUBMIT_WORDS (RDC_PROTO_VRAM_CHUNK / 4u)
 /* Largest reply or event: a raw frame of the biggest display and its
  * header fields (RLE never exceeds raw: see rdc_proto_frame_encode). */
-#define RDC_PROTO_FRAME_HDR 24u
+#define RDC_PROTO_FRAME_HDR	   24u
 #define RDC_PROTO_MAX_FRAME_PIXELS (2048u * 2048u)
-#define RDC_PROTO_MAX_REPLY                                                  \
+#define RDC_PROTO_MAX_REPLY \
 	(RDC_PROTO_FRAME_HDR + 4u * RDC_PROTO_MAX_FRAME_PIXELS + 64u)
 #define RDC_PROTO_MAX_TOKEN 256u /* bytes of a HELLO token */
 
@@ -76,33 +76,33 @@ enum rdc_msg_type {
  */
 enum rdc_status {
 	RDC_ST_OK = 0,
-	RDC_ST_INVAL = 1,    /* bad argument */
-	RDC_ST_NOMEM = 2,    /* the daemon is out of memory */
-	RDC_ST_NOSYS = 3,    /* request not offered (in this mode) */
-	RDC_ST_TIMEOUT = 4,  /* wait budget exhausted */
-	RDC_ST_HALTED = 5,   /* the DP halted during a wait or submit */
-	RDC_ST_RANGE = 6,    /* address/size outside the device */
+	RDC_ST_INVAL = 1,     /* bad argument */
+	RDC_ST_NOMEM = 2,     /* the daemon is out of memory */
+	RDC_ST_NOSYS = 3,     /* request not offered (in this mode) */
+	RDC_ST_TIMEOUT = 4,   /* wait budget exhausted */
+	RDC_ST_HALTED = 5,    /* the DP halted during a wait or submit */
+	RDC_ST_RANGE = 6,     /* address/size outside the device */
 	RDC_ST_MALFORMED = 7, /* payload has the wrong size for its type */
-	RDC_ST_BUSY = 8,     /* another client controls the device */
-	RDC_ST_AUTH = 9,     /* missing or wrong token (connection closed) */
-	RDC_ST_VERSION = 10, /* bad magic or version (connection closed) */
-	RDC_ST_TOOBIG = 11,  /* len over the limit (connection closed) */
-	RDC_ST_NOFRAME = 12, /* no frame completed yet */
-	RDC_ST_TYPE = 13,    /* unknown message type */
-	RDC_ST_ORDER = 14,   /* HELLO missing or repeated */
-	RDC_ST_DEVICE = 15,  /* the device flagged an error */
-	RDC_ST_RESET = 16,   /* a RESET ended the pending request */
+	RDC_ST_BUSY = 8,      /* another client controls the device */
+	RDC_ST_AUTH = 9,      /* missing or wrong token (connection closed) */
+	RDC_ST_VERSION = 10,  /* bad magic or version (connection closed) */
+	RDC_ST_TOOBIG = 11,   /* len over the limit (connection closed) */
+	RDC_ST_NOFRAME = 12,  /* no frame completed yet */
+	RDC_ST_TYPE = 13,     /* unknown message type */
+	RDC_ST_ORDER = 14,    /* HELLO missing or repeated */
+	RDC_ST_DEVICE = 15,   /* the device flagged an error */
+	RDC_ST_RESET = 16,    /* a RESET ended the pending request */
 	RDC_ST_COUNT_ = 17
 };
 
 /* HELLO flags and capabilities */
-#define RDC_HELLO_CONTROL 0x1u /* request: want control; reply: granted */
-#define RDC_CAP_FRAMES 0x1u	/* frame grab and subscription */
-#define RDC_CAP_RLE 0x2u	/* RDC_ENC_RLE */
-#define RDC_CAP_DELTA 0x4u	/* RDC_ENC_DELTA */
+#define RDC_HELLO_CONTROL  0x1u /* request: want control; reply: granted */
+#define RDC_CAP_FRAMES	   0x1u /* frame grab and subscription */
+#define RDC_CAP_RLE	   0x2u /* RDC_ENC_RLE */
+#define RDC_CAP_DELTA	   0x4u /* RDC_ENC_DELTA */
 #define RDC_CAP_IRQ_EVENTS 0x8u
-#define RDC_CAP_STEP 0x10u /* the daemon runs stepped (time moves on waits) */
-#define RDC_CAP_ALL 0x1fu
+#define RDC_CAP_STEP	   0x10u /* the daemon runs stepped (time moves on waits) */
+#define RDC_CAP_ALL	   0x1fu
 
 /* The last request type: types up to here are requests. */
 #define RDC_MSG_REQUEST_LAST RDC_MSG_PINS_SET
@@ -116,7 +116,7 @@ enum rdc_run_mode {
 
 /* SUBSCRIBE events */
 #define RDC_SUB_FRAMES 0x1u
-#define RDC_SUB_IRQ 0x2u
+#define RDC_SUB_IRQ    0x2u
 
 /* Frame encodings */
 enum rdc_frame_enc {
@@ -127,7 +127,7 @@ enum rdc_frame_enc {
 };
 
 /* RESET kinds */
-#define RDC_RESET_SOFT 0u  /* CONTROL.SOFT_RESET: time keeps running */
+#define RDC_RESET_SOFT	0u /* CONTROL.SOFT_RESET: time keeps running */
 #define RDC_RESET_POWER 1u /* a new chip: VRAM zero, time 0 */
 
 struct rdc_proto_hdr {
@@ -224,8 +224,8 @@ size_t rdc_proto_frame_encode(uint8_t *out, size_t cap, uint32_t enc,
  * RDC_ENC_DELTA).  0, or -1 if the data is malformed (pix is then
  * partly written).
  */
-int rdc_proto_frame_decode(uint32_t *pix, uint32_t w, uint32_t h,
-			   uint32_t enc, const uint8_t *data, size_t len);
+int rdc_proto_frame_decode(uint32_t *pix, uint32_t w, uint32_t h, uint32_t enc,
+			   const uint8_t *data, size_t len);
 
 /* Little-endian helpers */
 static inline void rdc_proto_put32(uint8_t *p, uint32_t v)

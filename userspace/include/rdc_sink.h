@@ -47,8 +47,8 @@ extern "C" {
 struct rdc_frame {
 	const uint32_t *xrgb; /* height rows of width XRGB8888 words */
 	uint32_t width, height;
-	size_t stride;	       /* words from row to row, >= width */
-	uint64_t seq;	       /* frame number at the source */
+	size_t stride; /* words from row to row, >= width */
+	uint64_t seq;  /* frame number at the source */
 	/* Seconds per frame as a fraction (the simulated refresh period);
 	 * 0/0 when unknown. */
 	uint32_t interval_num, interval_den;
@@ -74,9 +74,9 @@ void rdc_sink_close(rdc_sink *s);
 const char *rdc_sink_kind(const rdc_sink *s);
 
 struct rdc_sink_stats {
-	uint64_t frames;  /* handed to rdc_sink_frame */
-	uint64_t written; /* delivered (written, encoded, sent) */
-	uint64_t dropped; /* not delivered: EAGAIN, device away, ... */
+	uint64_t frames;	 /* handed to rdc_sink_frame */
+	uint64_t written;	 /* delivered (written, encoded, sent) */
+	uint64_t dropped;	 /* not delivered: EAGAIN, device away, ... */
 	uint64_t renegotiations; /* format (re)negotiations (v4l2) */
 	uint64_t reopens;	 /* device reopened after going away */
 };

@@ -39,14 +39,14 @@
 #define RDC_USB_VID 0x1209u
 #define RDC_USB_PID 0x0001u
 
-#define RDC_USB_CLASS 0xffu    /* vendor specific */
+#define RDC_USB_CLASS	 0xffu /* vendor specific */
 #define RDC_USB_SUBCLASS 0x52u /* 'R' */
 #define RDC_USB_PROTOCOL 0x01u /* this framing, over rdc_proto.h v1 */
 
 /* Max packet sizes the device declares. */
-#define RDC_USB_BULK_FS 64u
-#define RDC_USB_BULK_HS 512u
-#define RDC_USB_INTR_MAXP 64u
+#define RDC_USB_BULK_FS		 64u
+#define RDC_USB_BULK_HS		 512u
+#define RDC_USB_INTR_MAXP	 64u
 #define RDC_USB_INTR_INTERVAL_FS 1u /* frames (1 ms) */
 #define RDC_USB_INTR_INTERVAL_HS 4u /* 2^(4-1) microframes = 1 ms */
 

@@ -99,7 +99,7 @@ int rdc_batch_cmd(rdc_batch *b, uint32_t op, uint32_t flags,
 static int batch_args(rdc_batch *b, uint32_t op, size_t n, uint32_t a0,
 		      uint32_t a1, uint32_t a2, uint32_t a3)
 {
-	const uint32_t a[4] = {a0, a1, a2, a3};
+	const uint32_t a[4] = { a0, a1, a2, a3 };
 
 	return rdc_batch_cmd(b, op, 0, a, n);
 }
@@ -274,7 +274,7 @@ int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 	}
 	for (size_t r = 0; r < h; r++) {
 		for (size_t k = 0; k < row_words; k++) {
-			uint8_t pad[4] = {0};
+			uint8_t pad[4] = { 0 };
 			size_t nb = RDC_MIN((size_t)4, row_bytes - 4 * k);
 
 			memcpy(pad, bits + r * row_bytes + 4 * k, nb);
@@ -300,7 +300,7 @@ int rdc_batch_text(rdc_batch *b, int x, int y, const char *s, size_t len,
 	p[0] = RDC_XY(x, y);
 	p[1] = (uint32_t)len;
 	for (size_t k = 0; k < words; k++) {
-		uint8_t pad[4] = {0};
+		uint8_t pad[4] = { 0 };
 
 		memcpy(pad, s + 4 * k, RDC_MIN((size_t)4, len - 4 * k));
 		p[2 + k] = rdc_ld32(pad);
@@ -361,7 +361,8 @@ int rdc_batch_arc(rdc_batch *b, int cx, int cy, uint32_t rx, uint32_t ry,
 		  uint32_t start, uint32_t end, uint32_t mode)
 {
 	const uint32_t a[3] = {
-		RDC_XY(cx, cy), RDC_WH(rx, ry),
+		RDC_XY(cx, cy),
+		RDC_WH(rx, ry),
 		FIELD_PREP(RDC_ARC_START, start & 0xffff) |
 			FIELD_PREP(RDC_ARC_END, end & 0xffff),
 	};
@@ -399,15 +400,14 @@ int rdc_batch_viewport(rdc_batch *b, int32_t wx0, int32_t wy0, int32_t wx1,
 		       int32_t wy1, int x0, int y0, int x1, int y1)
 {
 	const uint32_t a[6] = {
-		(uint32_t)wx0, (uint32_t)wy0, (uint32_t)wx1, (uint32_t)wy1,
-		RDC_XY(x0, y0), RDC_XY(x1, y1),
+		(uint32_t)wx0, (uint32_t)wy0,  (uint32_t)wx1,
+		(uint32_t)wy1, RDC_XY(x0, y0), RDC_XY(x1, y1),
 	};
 
 	return rdc_batch_cmd(b, RDC_OP_SET_VIEWPORT, 0, a, 6);
 }
 
-int rdc_batch_fill_polygon(rdc_batch *b, const int *xy, size_t n,
-			   int nonzero)
+int rdc_batch_fill_polygon(rdc_batch *b, const int *xy, size_t n, int nonzero)
 {
 	return batch_points(b, RDC_OP_FILL_POLYGON,
 			    nonzero ? RDC_FILL_NONZERO : 0, xy, n);
@@ -427,8 +427,7 @@ int rdc_batch_pattern_none(rdc_batch *b)
 	return rdc_batch_cmd(b, RDC_OP_SET_PATTERN, RDC_PAT_NONE, NULL, 0);
 }
 
-int rdc_batch_pattern_mono(rdc_batch *b, const uint8_t rows[8],
-			   int transparent)
+int rdc_batch_pattern_mono(rdc_batch *b, const uint8_t rows[8], int transparent)
 {
 	uint32_t a[2] = { 0, 0 };
 
@@ -436,10 +435,9 @@ int rdc_batch_pattern_mono(rdc_batch *b, const uint8_t rows[8],
 		return RDC_E_INVAL;
 	for (int i = 0; i < 8; i++)
 		a[i / 4] |= (uint32_t)rows[i] << (8 * (i % 4));
-	return rdc_batch_cmd(b, RDC_OP_SET_PATTERN,
-			     transparent ? RDC_PAT_MONO_TRANSPARENT :
-					   RDC_PAT_MONO,
-			     a, 2);
+	return rdc_batch_cmd(
+		b, RDC_OP_SET_PATTERN,
+		transparent ? RDC_PAT_MONO_TRANSPARENT : RDC_PAT_MONO, a, 2);
 }
 
 int rdc_batch_pattern_color(rdc_batch *b, const uint32_t px[64])
@@ -465,8 +463,7 @@ int rdc_batch_triangle(rdc_batch *b, const int *xy, const uint32_t *colour,
 			     a, 9);
 }
 
-int rdc_batch_zbuf(rdc_batch *b, uint32_t base, uint32_t stride,
-		   uint32_t flags)
+int rdc_batch_zbuf(rdc_batch *b, uint32_t base, uint32_t stride, uint32_t flags)
 {
 	const uint32_t a[2] = { base, stride };
 
@@ -494,8 +491,7 @@ int rdc_batch_aa_circle(rdc_batch *b, int cx, int cy, uint32_t r)
 	return batch_args(b, RDC_OP_AA_CIRCLE, 2, RDC_XY(cx, cy), r, 0, 0);
 }
 
-int rdc_batch_aa_ellipse(rdc_batch *b, int cx, int cy, uint32_t rx,
-			 uint32_t ry)
+int rdc_batch_aa_ellipse(rdc_batch *b, int cx, int cy, uint32_t rx, uint32_t ry)
 {
 	return batch_args(b, RDC_OP_AA_ELLIPSE, 2, RDC_XY(cx, cy),
 			  RDC_WH(rx, ry), 0, 0);

@@ -351,14 +351,14 @@ static const struct {
 	const char *name;
 	uint32_t preset;
 } rdc_preset_names[] = {
-	{"320x200@70", RDC_PRESET_320x200_70},
-	{"640x480@60", RDC_PRESET_640x480_60},
-	{"800x600@60", RDC_PRESET_800x600_60},
-	{"1024x768@60", RDC_PRESET_1024x768_60},
-	{"1280x720@60", RDC_PRESET_1280x720_60},
-	{"1920x1080@60", RDC_PRESET_1920x1080_60},
-	{"720p", RDC_PRESET_1280x720_60},
-	{"1080p", RDC_PRESET_1920x1080_60},
+	{ "320x200@70", RDC_PRESET_320x200_70 },
+	{ "640x480@60", RDC_PRESET_640x480_60 },
+	{ "800x600@60", RDC_PRESET_800x600_60 },
+	{ "1024x768@60", RDC_PRESET_1024x768_60 },
+	{ "1280x720@60", RDC_PRESET_1280x720_60 },
+	{ "1920x1080@60", RDC_PRESET_1920x1080_60 },
+	{ "720p", RDC_PRESET_1280x720_60 },
+	{ "1080p", RDC_PRESET_1920x1080_60 },
 };
 
 int rdc_preset_by_name(const char *name)
@@ -424,10 +424,10 @@ int rdc_wait_one(rdc_dev *dev, enum rdc_wait_test kind, uint32_t reg,
 		 uint32_t mask, uint32_t value, bool needs_dp)
 {
 	struct rdc_wait w = {
-		.term[0] = {.kind = kind,
-			    .reg = reg,
-			    .mask = mask,
-			    .value = value},
+		.term[0] = { .kind = kind,
+			     .reg = reg,
+			     .mask = mask,
+			     .value = value },
 		.needs_dp = needs_dp,
 	};
 
@@ -460,9 +460,9 @@ int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
 			return ret;
 		if (!free_words) {
 			/* Wait for half a FIFO, not one word: fewer checks. */
-			uint32_t want = n < RDC_FIFO_DEPTH / 2
-						? (uint32_t)n
-						: RDC_FIFO_DEPTH / 2;
+			uint32_t want = n < RDC_FIFO_DEPTH / 2 ?
+						(uint32_t)n :
+						RDC_FIFO_DEPTH / 2;
 
 			ret = rdc_wait_one(dev, RDC_WAIT_TEST_GE,
 					   RDC_REG_FIFO_FREE, ~0u, want, true);
@@ -470,7 +470,8 @@ int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
 				return ret;
 			continue;
 		}
-		ret = push(dev, words, (uint32_t)RDC_MIN(n, (size_t)free_words));
+		ret = push(dev, words,
+			   (uint32_t)RDC_MIN(n, (size_t)free_words));
 		if (ret < 0)
 			return ret;
 		words += ret;
@@ -628,13 +629,12 @@ int rdc_readback(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h, void *buf,
 	for (;;) {
 		uint32_t fence, count;
 		struct rdc_wait wt = {
-			.term =
-				{
-					{RDC_WAIT_TEST_GE, RDC_REG_RDATA_COUNT,
-					 ~0u, 1},
-					{RDC_WAIT_TEST_EQ, RDC_REG_FENCE, ~0u,
-					 seq},
-				},
+			.term = {
+				{RDC_WAIT_TEST_GE, RDC_REG_RDATA_COUNT,
+				 ~0u, 1},
+				{RDC_WAIT_TEST_EQ, RDC_REG_FENCE, ~0u,
+				 seq},
+			},
 			.needs_dp = true,
 		};
 
@@ -931,7 +931,8 @@ int rdc_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
 		  uint32_t encoding)
 {
 	if (!dev || (events & ~(RDC_EVENT_FRAME | RDC_EVENT_IRQ)) ||
-	    encoding > RDC_FRAME_DELTA || ((events & RDC_EVENT_FRAME) && !every))
+	    encoding > RDC_FRAME_DELTA ||
+	    ((events & RDC_EVENT_FRAME) && !every))
 		return RDC_E_INVAL;
 	if (!dev->be->subscribe)
 		return RDC_E_NOSYS;

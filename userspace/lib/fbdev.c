@@ -115,7 +115,7 @@ static int fbdev_ioctl(struct fbdev *f, unsigned long req, void *arg)
 
 static int fbdev_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 {
-	struct rdcfb_reg r = {.reg = reg};
+	struct rdcfb_reg r = { .reg = reg };
 	int ret = fbdev_ioctl(fbdev_of(dev), RDCFB_IOC_REG_READ, &r);
 
 	if (!ret)
@@ -125,7 +125,7 @@ static int fbdev_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 
 static int fbdev_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
 {
-	struct rdcfb_reg r = {.reg = reg, .val = val};
+	struct rdcfb_reg r = { .reg = reg, .val = val };
 
 	return fbdev_ioctl(fbdev_of(dev), RDCFB_IOC_REG_WRITE, &r);
 }
@@ -151,9 +151,9 @@ static int fbdev_probe(struct fbdev *f)
 {
 	struct fb_fix_screeninfo fix;
 	struct stat st;
-	struct rdcfb_reg id = {.reg = RDC_REG_ID};
-	struct rdcfb_reg size = {.reg = RDC_REG_VRAM_SIZE};
-	struct rdcfb_reg khz = {.reg = RDC_REG_CORE_KHZ};
+	struct rdcfb_reg id = { .reg = RDC_REG_ID };
+	struct rdcfb_reg size = { .reg = RDC_REG_VRAM_SIZE };
+	struct rdcfb_reg khz = { .reg = RDC_REG_CORE_KHZ };
 	size_t idlen = sizeof(RDCFB_ID);
 
 	if (fstat(f->fd, &st) || !S_ISCHR(st.st_mode))
@@ -324,7 +324,7 @@ static int fbdev_wait(rdc_dev *dev, const struct rdc_wait *w)
 
 static int fbdev_step(rdc_dev *dev, uint64_t cycles)
 {
-	struct rdcfb_step s = {.cycles = cycles};
+	struct rdcfb_step s = { .cycles = cycles };
 
 	return fbdev_ioctl(fbdev_of(dev), RDCFB_IOC_STEP, &s);
 }
@@ -386,7 +386,10 @@ static int fbdev_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 #ifdef RDC_HAVE_GPIOD
 
 static const char *const fbdev_pin_name[FBDEV_NPINS] = {
-	"TE", "IRQ", "RESET_N", "BL_EN",
+	"TE",
+	"IRQ",
+	"RESET_N",
+	"BL_EN",
 };
 
 /*
@@ -402,8 +405,8 @@ struct fbdev_gpio {
 	uint32_t driven; /* levels of the lines we drive */
 	struct gpiod_edge_event_buffer *buf;
 	int buf_n, buf_next; /* events read and not yet looked at */
-	uint32_t levels; /* TE and IRQ as the last event left them */
-	bool stepped; /* the module's clock=stepped: waits move time */
+	uint32_t levels;     /* TE and IRQ as the last event left them */
+	bool stepped;	     /* the module's clock=stepped: waits move time */
 };
 
 static void fbdev_gpio_free(struct fbdev_gpio *g)
@@ -479,9 +482,10 @@ static struct gpiod_chip *fbdev_gpio_find(const char *label)
 	return found;
 }
 
-static struct gpiod_line_request *
-fbdev_gpio_request(struct gpiod_chip *chip, const unsigned int *off,
-		   size_t n, bool output, bool high)
+static struct gpiod_line_request *fbdev_gpio_request(struct gpiod_chip *chip,
+						     const unsigned int *off,
+						     size_t n, bool output,
+						     bool high)
 {
 	struct gpiod_line_settings *ls = gpiod_line_settings_new();
 	struct gpiod_line_config *lc = gpiod_line_config_new();
@@ -494,14 +498,15 @@ fbdev_gpio_request(struct gpiod_chip *chip, const unsigned int *off,
 		gpiod_line_settings_set_direction(ls,
 						  GPIOD_LINE_DIRECTION_OUTPUT);
 		gpiod_line_settings_set_output_value(
-			ls, high ? GPIOD_LINE_VALUE_ACTIVE
-				 : GPIOD_LINE_VALUE_INACTIVE);
+			ls, high ? GPIOD_LINE_VALUE_ACTIVE :
+				   GPIOD_LINE_VALUE_INACTIVE);
 	} else {
 		gpiod_line_settings_set_direction(ls,
 						  GPIOD_LINE_DIRECTION_INPUT);
-		gpiod_line_settings_set_edge_detection(ls, GPIOD_LINE_EDGE_BOTH);
-		gpiod_line_settings_set_event_clock(
-			ls, GPIOD_LINE_CLOCK_MONOTONIC);
+		gpiod_line_settings_set_edge_detection(ls,
+						       GPIOD_LINE_EDGE_BOTH);
+		gpiod_line_settings_set_event_clock(ls,
+						    GPIOD_LINE_CLOCK_MONOTONIC);
 	}
 	if (gpiod_line_config_add_line_settings(lc, off, n, ls))
 		goto out;
@@ -567,7 +572,7 @@ static int fbdev_gpio_open(struct fbdev *f)
 	f->gpio = g;
 	/* a step of nothing: refused (EPERM) on the paced clock */
 	g->stepped = !fbdev_ioctl(f, RDCFB_IOC_STEP,
-				  &(struct rdcfb_step){.cycles = 0});
+				  &(struct rdcfb_step){ .cycles = 0 });
 	ret = fbdev_gpio_sample(f);
 	if (ret) {
 		f->gpio = NULL;
@@ -579,8 +584,8 @@ fail:
 	return ret;
 }
 
-_Static_assert(RDC_PIN_TE == 1u && RDC_PIN_IRQ == 2u &&
-		       RDC_PIN_RESET_N == 4u && RDC_PIN_BL_EN == 8u,
+_Static_assert(RDC_PIN_TE == 1u && RDC_PIN_IRQ == 2u && RDC_PIN_RESET_N == 4u &&
+		       RDC_PIN_BL_EN == 8u,
 	       "fbdev_pin_name is in RDC_PIN_* bit order");
 
 static uint32_t fbdev_bit(unsigned int i)
@@ -631,12 +636,12 @@ static int fbdev_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 			g->out[i] = fbdev_gpio_request(g->chip, &g->off[i], 1,
 						       true, high);
 			if (!g->out[i])
-				return errno == EBUSY ? RDC_E_BUSY
-						      : fbdev_error(errno);
+				return errno == EBUSY ? RDC_E_BUSY :
+							fbdev_error(errno);
 		} else if (gpiod_line_request_set_value(
 				   g->out[i], g->off[i],
-				   high ? GPIOD_LINE_VALUE_ACTIVE
-					: GPIOD_LINE_VALUE_INACTIVE)) {
+				   high ? GPIOD_LINE_VALUE_ACTIVE :
+					  GPIOD_LINE_VALUE_INACTIVE)) {
 			return fbdev_error(errno);
 		}
 		g->driven = (g->driven & ~bit) | (high ? bit : 0);
@@ -651,8 +656,8 @@ static int fbdev_gpio_next(struct fbdev_gpio *g, int64_t ns,
 	int r;
 
 	if (g->buf_next < g->buf_n) {
-		*out = gpiod_edge_event_buffer_get_event(g->buf,
-							 (unsigned long)g->buf_next++);
+		*out = gpiod_edge_event_buffer_get_event(
+			g->buf, (unsigned long)g->buf_next++);
 		return 1;
 	}
 	r = gpiod_line_request_wait_edge_events(g->in, ns);
@@ -682,8 +687,8 @@ static int fbdev_gpio_take(rdc_dev *dev, struct fbdev_gpio *g,
 	bool rising;
 	int ret;
 
-	bit = gpiod_edge_event_get_line_offset(e) == g->off[0] ? RDC_PIN_TE
-								: RDC_PIN_IRQ;
+	bit = gpiod_edge_event_get_line_offset(e) == g->off[0] ? RDC_PIN_TE :
+								 RDC_PIN_IRQ;
 	rising = gpiod_edge_event_get_event_type(e) ==
 		 GPIOD_EDGE_EVENT_RISING_EDGE;
 	g->levels = (g->levels & ~bit) | (rising ? bit : 0);
@@ -721,8 +726,8 @@ static int fbdev_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 		return ret;
 	g = f->gpio;
 	if (!timeout_us)
-		timeout_us = RDC_WAIT_BUDGET_DEFAULT / (RDC_DEFAULT_CORE_HZ /
-							 1000000u);
+		timeout_us = RDC_WAIT_BUDGET_DEFAULT /
+			     (RDC_DEFAULT_CORE_HZ / 1000000u);
 	deadline = rdc_pins_wall_ns() + timeout_us * 1000u;
 	for (;;) {
 		struct gpiod_edge_event *e = NULL;

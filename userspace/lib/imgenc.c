@@ -170,7 +170,7 @@ static uint32_t rice_bits(uint32_t m, uint32_t k)
 
 static size_t enc_dpcm(const struct img_src *s, uint8_t *o, uint16_t *res)
 {
-	struct bitw b = {.o = o};
+	struct bitw b = { .o = o };
 	uint32_t n = s->w * s->ch, x, y, i, k, best, bk;
 	uint64_t cost;
 
@@ -270,7 +270,7 @@ int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,
 		     size_t *len)
 {
-	struct img_src s = {px, w, h, channels, pitch};
+	struct img_src s = { px, w, h, channels, pitch };
 	size_t bound = rdc_image_bound(codec, w, h, channels), payload;
 	uint8_t *tmp;
 	uint16_t *res = NULL;

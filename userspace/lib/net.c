@@ -115,9 +115,9 @@ static int net_send_msg(struct net *n, uint16_t type, const void *a,
 		.seq = ++n->seq,
 	};
 	struct iovec iov[3] = {
-		{hdr, sizeof(hdr)},
-		{(void *)a, alen},
-		{(void *)b, blen},
+		{ hdr, sizeof(hdr) },
+		{ (void *)a, alen },
+		{ (void *)b, blen },
 	};
 
 	rdc_proto_hdr_encode(hdr, &h);
@@ -195,8 +195,8 @@ static int net_frame_event(struct net *n, const uint8_t *pl, size_t len)
 	if (rdc_proto_frame_hdr_decode(pl, len, &f))
 		return RDC_E_PROTO;
 	if (f.width != n->fw || f.height != n->fh || !n->frame) {
-		uint32_t *p = calloc((size_t)f.width * f.height + 1,
-				     sizeof(*p));
+		uint32_t *p =
+			calloc((size_t)f.width * f.height + 1, sizeof(*p));
 
 		if (!p)
 			return RDC_E_NOMEM;
@@ -344,8 +344,8 @@ static int net_read_token(const char *path, uint8_t *tok, uint32_t *len)
 		return RDC_E_FILE;
 	n = fread(tok, 1, RDC_PROTO_MAX_TOKEN, f);
 	fclose(f);
-	while (n && (tok[n - 1] == '\n' || tok[n - 1] == '\r' ||
-		     tok[n - 1] == ' '))
+	while (n &&
+	       (tok[n - 1] == '\n' || tok[n - 1] == '\r' || tok[n - 1] == ' '))
 		n--;
 	*len = (uint32_t)n;
 	return 0;
@@ -354,8 +354,8 @@ static int net_read_token(const char *path, uint8_t *tok, uint32_t *len)
 int rdc_client_open(rdc_dev *dev, struct rdc_xport *x,
 		    const struct rdc_client_opts *o)
 {
-	uint8_t token[RDC_PROTO_MAX_TOKEN], msg[RDC_PROTO_HELLO_FIXED +
-						 RDC_PROTO_MAX_TOKEN];
+	uint8_t token[RDC_PROTO_MAX_TOKEN],
+		msg[RDC_PROTO_HELLO_FIXED + RDC_PROTO_MAX_TOKEN];
 	struct rdc_proto_hello h = {
 		.magic = RDC_PROTO_MAGIC,
 		.version = RDC_PROTO_VERSION,
@@ -363,9 +363,10 @@ int rdc_client_open(rdc_dev *dev, struct rdc_xport *x,
 		.token = token,
 		.flags = o->observe ? 0 : RDC_HELLO_CONTROL,
 	};
-	uint32_t max = x->max_request && x->max_request < RDC_PROTO_MAX_REQUEST
-			       ? x->max_request
-			       : RDC_PROTO_MAX_REQUEST;
+	uint32_t max = x->max_request &&
+				       x->max_request < RDC_PROTO_MAX_REQUEST ?
+			       x->max_request :
+			       RDC_PROTO_MAX_REQUEST;
 	struct net *n;
 	uint8_t *pl = NULL;
 	uint32_t plen = 0;
@@ -460,8 +461,7 @@ int rdc_client_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
 
 		rdc_proto_put32(b, addr);
 		rdc_proto_put32(b + 4, k);
-		ret = net_call(net_of(dev), RDC_MSG_VRAM_READ, b, 8, &pl,
-			       &got);
+		ret = net_call(net_of(dev), RDC_MSG_VRAM_READ, b, 8, &pl, &got);
 		if (!ret && got != k)
 			ret = RDC_E_PROTO;
 		if (!ret)
@@ -530,8 +530,8 @@ int rdc_client_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 
 int rdc_client_wait(rdc_dev *dev, const struct rdc_wait *w)
 {
-	struct rdc_proto_wait pw = {.budget = w->budget,
-				    .needs_dp = w->needs_dp};
+	struct rdc_proto_wait pw = { .budget = w->budget,
+				     .needs_dp = w->needs_dp };
 	uint8_t b[RDC_PROTO_WAIT_SIZE];
 
 	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
@@ -570,7 +570,7 @@ int rdc_client_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 int rdc_client_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 			  uint32_t *width, uint32_t *height)
 {
-	struct rdc_proto_frame f = {0};
+	struct rdc_proto_frame f = { 0 };
 	uint8_t b[8], *pl = NULL;
 	uint32_t len = 0;
 	int ret;
@@ -669,7 +669,7 @@ static int sock_send(struct rdc_xport *x, const struct iovec *iov, int n)
 {
 	struct sock_xport *s = (struct sock_xport *)x;
 	struct iovec v[4];
-	struct msghdr mh = {.msg_iov = v, .msg_iovlen = (size_t)n};
+	struct msghdr mh = { .msg_iov = v, .msg_iovlen = (size_t)n };
 
 	if (n < 0 || (size_t)n > RDC_ARRAY_SIZE(v))
 		return RDC_E_INVAL;
@@ -689,7 +689,8 @@ static int sock_send(struct rdc_xport *x, const struct iovec *iov, int n)
 			mh.msg_iovlen--;
 		}
 		if (mh.msg_iovlen) {
-			mh.msg_iov->iov_base = (uint8_t *)mh.msg_iov->iov_base + k;
+			mh.msg_iov->iov_base =
+				(uint8_t *)mh.msg_iov->iov_base + k;
 			mh.msg_iov->iov_len -= (size_t)k;
 		}
 	}
@@ -705,7 +706,7 @@ static ssize_t sock_recv(struct rdc_xport *x, void *buf, size_t len,
 		ssize_t k;
 
 		if (timeout_ms >= 0) {
-			struct pollfd pfd = {.fd = s->fd, .events = POLLIN};
+			struct pollfd pfd = { .fd = s->fd, .events = POLLIN };
 			int r = poll(&pfd, 1, timeout_ms);
 
 			if (r < 0 && errno == EINTR)
@@ -752,14 +753,14 @@ static int net_connect_failed(const char *uri)
 	return rdc_err_detail(RDC_E_IO, "%s: connect: %s%s%s%s", uri,
 			      strerror(errno),
 			      absent ? " (is rdcd running? start it with "
-				       "rdcd --listen "
-				     : "",
+				       "rdcd --listen " :
+				       "",
 			      absent ? uri : "", absent ? ")" : "");
 }
 
 static int net_connect_unix(const char *path)
 {
-	struct sockaddr_un sa = {.sun_family = AF_UNIX};
+	struct sockaddr_un sa = { .sun_family = AF_UNIX };
 	char def[sizeof(sa.sun_path)];
 	int fd;
 
@@ -793,7 +794,7 @@ static int net_connect_tcp(const char *hostport)
 {
 	char host[256];
 	const char *colon = strrchr(hostport, ':'), *port;
-	struct addrinfo hints = {.ai_socktype = SOCK_STREAM}, *res, *ai;
+	struct addrinfo hints = { .ai_socktype = SOCK_STREAM }, *res, *ai;
 	const char *whole = hostport;
 	char uri[300]; /* "tcp:" and up to 255 bytes */
 	size_t hlen;
@@ -887,7 +888,7 @@ static int net_open_tcp(rdc_dev *dev, const char *opts)
  */
 static int net_list_unix(rdc_found_fn fn, void *arg)
 {
-	static const char *const mode[] = {"paced", "fast", "stepped"};
+	static const char *const mode[] = { "paced", "fast", "stepped" };
 	char dir[sizeof(((struct sockaddr_un *)0)->sun_path)], *slash;
 	struct dirent *e;
 	int found = 0;
@@ -921,8 +922,9 @@ static int net_list_unix(rdc_found_fn fn, void *arg)
 		*strrchr(f.uri, '?') = 0; /* the URI to control it */
 		snprintf(f.info, sizeof(f.info),
 			 "rdcd socket, %s, VRAM %u bytes",
-			 hr->run_mode < RDC_ARRAY_SIZE(mode) ? mode[hr->run_mode]
-							     : "unknown mode",
+			 hr->run_mode < RDC_ARRAY_SIZE(mode) ?
+				 mode[hr->run_mode] :
+				 "unknown mode",
 			 hr->vram_size);
 		rdc_close(dev);
 		fn(&f, arg);

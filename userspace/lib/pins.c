@@ -79,7 +79,7 @@ int rdc_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 int rdc_pins_wait_regs(rdc_dev *dev, uint32_t pins, uint32_t edges,
 		       uint64_t budget, struct rdc_pin_edge *ev)
 {
-	static const uint32_t order[] = {RDC_PIN_TE, RDC_PIN_IRQ};
+	static const uint32_t order[] = { RDC_PIN_TE, RDC_PIN_IRQ };
 	uint64_t start, now;
 	uint32_t cur, next;
 	int ret;
@@ -93,7 +93,7 @@ int rdc_pins_wait_regs(rdc_dev *dev, uint32_t pins, uint32_t edges,
 		return ret;
 	now = start;
 	for (;;) {
-		struct rdc_wait w = {.budget = budget - (now - start)};
+		struct rdc_wait w = { .budget = budget - (now - start) };
 		uint32_t changed, wanted = 0;
 		unsigned int k = 0;
 

@@ -60,13 +60,13 @@ int rdc_proto_request_check(const struct rdc_proto_hdr *h)
 	case RDC_MSG_PINS_SET:
 		return len == 8 ? 0 : RDC_ST_MALFORMED;
 	case RDC_MSG_VRAM_WRITE:
-		return len >= 4 && len - 4 <= RDC_PROTO_VRAM_CHUNK
-			       ? 0
-			       : RDC_ST_MALFORMED;
+		return len >= 4 && len - 4 <= RDC_PROTO_VRAM_CHUNK ?
+			       0 :
+			       RDC_ST_MALFORMED;
 	case RDC_MSG_SUBMIT:
-		return !(len & 3) && len / 4 <= RDC_PROTO_MAX_SUBMIT_WORDS
-			       ? 0
-			       : RDC_ST_MALFORMED;
+		return !(len & 3) && len / 4 <= RDC_PROTO_MAX_SUBMIT_WORDS ?
+			       0 :
+			       RDC_ST_MALFORMED;
 	case RDC_MSG_WAIT:
 		return len == RDC_PROTO_WAIT_SIZE ? 0 : RDC_ST_MALFORMED;
 	case RDC_MSG_SUBSCRIBE:
@@ -293,15 +293,15 @@ size_t rdc_proto_frame_encode(uint8_t *out, size_t cap, uint32_t enc,
 
 			if (cap - o < 4)
 				return 0;
-			if (prev && !memcmp(row, prev + (size_t)y * w,
-					    (size_t)w * 4)) {
+			if (prev &&
+			    !memcmp(row, prev + (size_t)y * w, (size_t)w * 4)) {
 				rdc_proto_put32(out + o, 0);
 				o += 4;
 				continue;
 			}
 			k = w ? rle_encode(out + o + 4, cap - o - 4, row, w,
-					   &runs)
-			      : 0;
+					   &runs) :
+				0;
 			if (w && !k)
 				return 0;
 			rdc_proto_put32(out + o, runs);
@@ -340,8 +340,8 @@ static int rle_decode(uint32_t *pix, size_t n, const uint8_t *d, size_t len,
 	return 0;
 }
 
-int rdc_proto_frame_decode(uint32_t *pix, uint32_t w, uint32_t h,
-			   uint32_t enc, const uint8_t *data, size_t len)
+int rdc_proto_frame_decode(uint32_t *pix, uint32_t w, uint32_t h, uint32_t enc,
+			   const uint8_t *data, size_t len)
 {
 	size_t n = (size_t)w * h, o = 0, used;
 
@@ -374,9 +374,9 @@ int rdc_proto_frame_decode(uint32_t *pix, uint32_t w, uint32_t h,
 			if (!runs)
 				continue;
 			/* a row has at most w runs */
-			if (runs > w || rle_decode(pix + (size_t)y * w, w,
-						   data + o, len - o, &used,
-						   runs))
+			if (runs > w ||
+			    rle_decode(pix + (size_t)y * w, w, data + o,
+				       len - o, &used, runs))
 				return -1;
 			o += used;
 		}

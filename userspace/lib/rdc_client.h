@@ -79,13 +79,13 @@ int rdc_client_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
 			  size_t cap, int timeout_ms);
 
 /* The operations every backend built on the client shares. */
-#define RDC_CLIENT_OPS                                                         \
-	.close = rdc_client_close, .reg_read = rdc_client_reg_read,            \
-	.reg_write = rdc_client_reg_write, .vram_read = rdc_client_vram_read,  \
-	.vram_write = rdc_client_vram_write, .submit = rdc_client_submit,      \
-	.wait = rdc_client_wait, .step = rdc_client_step,                      \
-	.frame_grab = rdc_client_frame_grab,                                   \
-	.subscribe = rdc_client_subscribe,                                     \
+#define RDC_CLIENT_OPS \
+	.close = rdc_client_close, .reg_read = rdc_client_reg_read, \
+	.reg_write = rdc_client_reg_write, .vram_read = rdc_client_vram_read, \
+	.vram_write = rdc_client_vram_write, .submit = rdc_client_submit, \
+	.wait = rdc_client_wait, .step = rdc_client_step, \
+	.frame_grab = rdc_client_frame_grab, \
+	.subscribe = rdc_client_subscribe, \
 	.event_next = rdc_client_event_next, .pins_set = rdc_client_pins_set
 
 #endif /* RDC_CLIENT_H */

@@ -49,9 +49,9 @@ static inline void rdc_wait_to_hw(const struct rdc_wait *w,
 
 		out->term[i] = (struct rdc_wait_cond){
 			/* an unknown test is an unused term */
-			.test = (unsigned int)t->kind <= RDC_WAIT_TEST_EQ
-					? (uint32_t)t->kind
-					: RDC_WAIT_TEST_NONE,
+			.test = (unsigned int)t->kind <= RDC_WAIT_TEST_EQ ?
+					(uint32_t)t->kind :
+					RDC_WAIT_TEST_NONE,
 			.reg = t->reg,
 			.mask = t->mask,
 			.value = t->value,
@@ -144,10 +144,10 @@ struct rdc_backend {
 
 /* Backends (one file each). */
 extern const struct rdc_backend rdc_backend_sim;
-extern const struct rdc_backend rdc_backend_unix; /* net.c */
-extern const struct rdc_backend rdc_backend_tcp;  /* net.c */
+extern const struct rdc_backend rdc_backend_unix;  /* net.c */
+extern const struct rdc_backend rdc_backend_tcp;   /* net.c */
 extern const struct rdc_backend rdc_backend_fbdev; /* fbdev.c, rdcfb.ko */
-extern const struct rdc_backend rdc_backend_usb;  /* usb.c, libusb */
+extern const struct rdc_backend rdc_backend_usb;   /* usb.c, libusb */
 
 /*
  * The chip behind a "sim:" handle, NULL for any other backend: rdcd owns

@@ -42,8 +42,8 @@
 #include "rdc_priv.h"
 #include "rdc_proto.h"
 
-#define REC_MAGIC "RDCTRACE"
-#define REC_MAGIC_LEN 8u
+#define REC_MAGIC	   "RDCTRACE"
+#define REC_MAGIC_LEN	   8u
 #define REC_VERSION	   2u
 #define REC_VERSION_MIN	   1u /* no PINS records */
 #define REC_MAX_VRAM_WRITE (256u << 20)
@@ -182,13 +182,13 @@ int rdc_rec_close(struct rdc_rec *r, rdc_dev *dev)
 }
 
 /* Run one operation of the wrapped backend. */
-#define REC_INNER(dev, r, call)                                              \
-	({                                                                   \
-		int ret_;                                                    \
-		(dev)->priv = (r)->inner_priv;                               \
-		ret_ = (r)->inner->call;                                     \
-		(dev)->priv = (r);                                           \
-		ret_;                                                        \
+#define REC_INNER(dev, r, call) \
+	({ \
+		int ret_; \
+		(dev)->priv = (r)->inner_priv; \
+		ret_ = (r)->inner->call; \
+		(dev)->priv = (r); \
+		ret_; \
 	})
 
 static void rec_be_close(rdc_dev *dev)
@@ -253,8 +253,8 @@ static int rec_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 static int rec_wait(rdc_dev *dev, const struct rdc_wait *w)
 {
 	struct rdc_rec *r = dev->priv;
-	struct rdc_proto_wait pw = {.budget = w->budget,
-				    .needs_dp = w->needs_dp};
+	struct rdc_proto_wait pw = { .budget = w->budget,
+				     .needs_dp = w->needs_dp };
 	uint8_t b[RDC_PROTO_WAIT_SIZE + 4];
 	int ret;
 
@@ -362,8 +362,8 @@ struct replay {
 	uint32_t version;
 	uint32_t vram;
 	uint8_t *buf;
-	uint64_t off;	/* bytes read */
-	bool cut;	/* the file ended inside a record */
+	uint64_t off; /* bytes read */
+	bool cut;     /* the file ended inside a record */
 };
 
 /* n bytes, or RDC_E_PARSE with p->cut set when the file ends first. */
@@ -381,8 +381,8 @@ static int rp_get(struct replay *p, void *b, size_t n)
 /* A trace that is not one, or is damaged: say where. */
 static int rp_bad(struct replay *p, const char *why, uint64_t at)
 {
-	return rdc_err_detail(RDC_E_PARSE, "%s: %s at byte %" PRIu64,
-			      p->path, why, at);
+	return rdc_err_detail(RDC_E_PARSE, "%s: %s at byte %" PRIu64, p->path,
+			      why, at);
 }
 
 static void rp_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
@@ -430,9 +430,9 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 		if (rp_get(p, b, 8))
 			return RDC_E_PARSE;
 		return be->reg_write(p->dev, rdc_proto_get32(b),
-				     rdc_proto_get32(b + 4)) < 0
-			       ? RDC_E_PARSE
-			       : 0;
+				     rdc_proto_get32(b + 4)) < 0 ?
+			       RDC_E_PARSE :
+			       0;
 	case REC_REG_READ:
 		if (rp_get(p, b, 8))
 			return RDC_E_PARSE;
@@ -451,12 +451,12 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 			return RDC_E_PARSE;
 		if (rp_get(p, p->buf, len))
 			return RDC_E_PARSE;
-		return be->vram_write(p->dev, addr, p->buf, len) ? RDC_E_PARSE
-								 : 0;
+		return be->vram_write(p->dev, addr, p->buf, len) ? RDC_E_PARSE :
+								   0;
 	}
 	case REC_WAIT: {
 		struct rdc_proto_wait pw;
-		struct rdc_wait w = {0};
+		struct rdc_wait w = { 0 };
 
 		if (rp_get(p, b, sizeof(b)) ||
 		    rdc_proto_wait_decode(b, RDC_PROTO_WAIT_SIZE, &pw))
@@ -505,7 +505,7 @@ int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 		    rdc_dev **dev_out)
 {
 	struct rdc_replay_result dummy;
-	struct replay p = {0};
+	struct replay p = { 0 };
 	uint8_t hdr[REC_MAGIC_LEN + 8], rec[9];
 	int ret;
 
@@ -533,9 +533,10 @@ int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 				     REC_VERSION);
 	if (!ret) {
 		p.vram = rdc_proto_get32(hdr + REC_MAGIC_LEN + 4);
-		p.buf = p.vram <= REC_MAX_VRAM_WRITE ? malloc(p.vram + 1) : NULL;
-		ret = p.buf ? rp_open(&p)
-			    : rp_bad(&p, "VRAM size out of range",
+		p.buf = p.vram <= REC_MAX_VRAM_WRITE ? malloc(p.vram + 1) :
+						       NULL;
+		ret = p.buf ? rp_open(&p) :
+			      rp_bad(&p, "VRAM size out of range",
 				     REC_MAGIC_LEN + 4);
 	}
 	while (!ret) {
@@ -545,16 +546,16 @@ int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 		/* Cut short (no END record): the recorder is still running,
 		 * or was killed.  What is complete has been replayed; an
 		 * unknown op in the last bytes is damage all the same. */
-		if (ret && p.cut && (p.off == at ||
-				     (rec[0] >= REC_REG_WRITE &&
-				      rec[0] <= REC_PINS))) {
+		if (ret && p.cut &&
+		    (p.off == at ||
+		     (rec[0] >= REC_REG_WRITE && rec[0] <= REC_PINS))) {
 			p.res->truncated = 1;
 			ret = 0;
 			break;
 		}
 		if (ret) {
-			ret = p.cut ? rp_bad(&p, "unknown record type", at)
-				    : rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+			ret = p.cut ? rp_bad(&p, "unknown record type", at) :
+				      rdc_err_detail(RDC_E_FILE, "%s: %s", path,
 						     strerror(errno));
 			break;
 		}
@@ -575,8 +576,7 @@ int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 			ret = 0;
 			break;
 		}
-		if (ret == RDC_E_PARSE &&
-		    !*rdc_last_error_detail(RDC_E_PARSE))
+		if (ret == RDC_E_PARSE && !*rdc_last_error_detail(RDC_E_PARSE))
 			rp_bad(&p, "bad record", at);
 		p.res->records++;
 	}

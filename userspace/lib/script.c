@@ -240,7 +240,7 @@ static int st_points(struct rdl *r, uint32_t op)
 static int st_shape(struct rdl *r, uint32_t op)
 {
 	int c[2];
-	uint32_t s[2] = {0, 0};
+	uint32_t s[2] = { 0, 0 };
 	size_t nsize = r->ntok - 3;
 	int ret = rdl_coords(r, 1, 2, c);
 
@@ -363,8 +363,8 @@ static int rdl_pattern(struct rdl *r, size_t i, uint32_t fmt, uint32_t w,
 		for (uint32_t y = 0; y < h; y++)
 			for (uint32_t x = 0; x < w; x++)
 				rdl_put_pixel(pix + y * pitch, fmt, x,
-					      ((x / cell + y / cell) & 1) ? c1
-									  : c0);
+					      ((x / cell + y / cell) & 1) ? c1 :
+									    c0);
 		return 0;
 	}
 	if (!strcmp(name, "gradient")) {
@@ -474,12 +474,11 @@ static int st_readback(struct rdl *r, uint32_t op)
 {
 	const uint32_t idle = RDC_STATUS_IDLE_MASK | RDC_STATUS_FIFO_EMPTY;
 	struct rdc_wait wt = {
-		.term =
-			{
-				{RDC_WAIT_TEST_GE, RDC_REG_RDATA_COUNT, ~0u, 1},
-				{RDC_WAIT_TEST_EQ, RDC_REG_STATUS, idle,
-				 RDC_STATUS_FIFO_EMPTY},
-			},
+		.term = {
+			{RDC_WAIT_TEST_GE, RDC_REG_RDATA_COUNT, ~0u, 1},
+			{RDC_WAIT_TEST_EQ, RDC_REG_STATUS, idle,
+			 RDC_STATUS_FIFO_EMPTY},
+		},
 		.needs_dp = true,
 	};
 	uint32_t crc = 0, words = 0, w, h, expect = 0, cmds0, cmds1;
@@ -499,8 +498,8 @@ static int st_readback(struct rdl *r, uint32_t op)
 		return ret;
 	crc = (uint32_t)crc32(0L, Z_NULL, 0);
 	ret = rdc_submit(r->dev,
-			 (const uint32_t[]){RDC_CMD(RDC_OP_READBACK, 0, 2),
-					    RDC_XY(c[0], c[1]), RDC_WH(w, h)},
+			 (const uint32_t[]){ RDC_CMD(RDC_OP_READBACK, 0, 2),
+					     RDC_XY(c[0], c[1]), RDC_WH(w, h) },
 			 3);
 	for (;;) {
 		uint32_t count = 0, status = 0;
@@ -857,8 +856,8 @@ static int st_screenshot(struct rdl *r, uint32_t op)
 /* pen WIDTH [butt|round|square] [miter|round|bevel] */
 static int st_pen(struct rdl *r, uint32_t op)
 {
-	static const char *const caps[] = {"butt", "round", "square"};
-	static const char *const joins[] = {"miter", "round", "bevel"};
+	static const char *const caps[] = { "butt", "round", "square" };
+	static const char *const joins[] = { "miter", "round", "bevel" };
 	uint32_t cap = RDC_CAP_BUTT, join = RDC_JOIN_MITER, k;
 	int64_t w;
 	int ret = rdl_int(r, 1, 0, UINT8_MAX, &w);
@@ -893,7 +892,8 @@ static int st_dash(struct rdl *r, uint32_t op)
 
 	if (rdl_word(r, 1, "off")) {
 		if (r->ntok != 2)
-			return rdl_err(r, RDC_E_PARSE, "dash off: no arguments");
+			return rdl_err(r, RDC_E_PARSE,
+				       "dash off: no arguments");
 		return rdl_encoded(r, op, rdc_batch_dash(r->b, 0, 0, 0));
 	}
 	if (r->ntok < 3)
@@ -903,11 +903,13 @@ static int st_dash(struct rdl *r, uint32_t op)
 		ret = rdl_int(r, 2, 0, RDC_DASH_MAX_LEN, &len);
 	if (!ret && r->ntok > 3)
 		ret = rdl_int(r, 3, 0,
-			      FIELD_GET(RDC_DASH_OFFSET, RDC_DASH_OFFSET), &off);
+			      FIELD_GET(RDC_DASH_OFFSET, RDC_DASH_OFFSET),
+			      &off);
 	if (ret)
 		return ret;
-	return rdl_encoded(r, op, rdc_batch_dash(r->b, bits, (uint32_t)len,
-						 (uint32_t)off));
+	return rdl_encoded(r, op,
+			   rdc_batch_dash(r->b, bits, (uint32_t)len,
+					  (uint32_t)off));
 }
 
 /* arc CX CY RX RY START END [pie|chord] */
@@ -937,8 +939,8 @@ static int st_arc(struct rdl *r, uint32_t op)
 				       "arc mode '%.40s': pie or chord",
 				       r->tok[7].s);
 	}
-	return rdl_encoded(r, op, rdc_batch_arc(r->b, c[0], c[1], rx, ry, a0,
-						a1, mode));
+	return rdl_encoded(
+		r, op, rdc_batch_arc(r->b, c[0], c[1], rx, ry, a0, a1, mode));
 }
 
 /* bezier|hermite X0 Y0 ... [steps N]; bspline takes 4 or more points */
@@ -992,8 +994,8 @@ static int st_transform(struct rdl *r, uint32_t op)
 		return rdl_err(r, RDC_E_PARSE,
 			       "transform: 9 numbers or 'identity'");
 	for (size_t i = 0; i < 9; i++) {
-		int ret = rdl_fixed(r, 1 + i, RDL_FIX_ONE, INT32_MIN,
-				    INT32_MAX, &v);
+		int ret = rdl_fixed(r, 1 + i, RDL_FIX_ONE, INT32_MIN, INT32_MAX,
+				    &v);
 
 		if (ret)
 			return ret;
@@ -1072,9 +1074,8 @@ static int st_flood(struct rdl *r, uint32_t op)
 	if (i != r->ntok)
 		return rdl_err(r, RDC_E_PARSE,
 			       "flood X Y [8] [boundary COLOUR]");
-	return rdl_encoded(r, op,
-			   rdc_batch_flood(r->b, xy[0], xy[1], flags,
-					   boundary));
+	return rdl_encoded(
+		r, op, rdc_batch_flood(r->b, xy[0], xy[1], flags, boundary));
 }
 
 /* pattern none | mono HEX16 [transparent] | color C0 ... C63 */
@@ -1111,8 +1112,8 @@ static int st_pattern(struct rdl *r, uint32_t op)
 	}
 	if (rdl_word(r, 1, "color") && r->ntok == 2 + 64) {
 		for (k = 0; k < 64; k++) {
-			int ret = rdl_colour(r, 2 + k, rdl_dst_format(r),
-					     &px[k]);
+			int ret =
+				rdl_colour(r, 2 + k, rdl_dst_format(r), &px[k]);
 
 			if (ret)
 				return ret;
@@ -1150,8 +1151,7 @@ static int st_triangle(struct rdl *r, uint32_t op)
 		z[v] = (uint32_t)zv;
 	}
 	return rdl_encoded(r, op,
-			   rdc_batch_triangle(r->b, xy, colour, z,
-					      first == 2));
+			   rdc_batch_triangle(r->b, xy, colour, z, first == 2));
 }
 
 /* zbuf BASE STRIDE [test] [write] | zbuf off */
@@ -1162,7 +1162,8 @@ static int st_zbuf(struct rdl *r, uint32_t op)
 
 	if (rdl_word(r, 1, "off")) {
 		if (r->ntok != 2)
-			return rdl_err(r, RDC_E_PARSE, "zbuf off: no arguments");
+			return rdl_err(r, RDC_E_PARSE,
+				       "zbuf off: no arguments");
 		return rdl_encoded(r, op, rdc_batch_zbuf_off(r->b));
 	}
 	if (r->ntok < 3)
@@ -1260,101 +1261,101 @@ static const struct rdl_stmt {
 	uint32_t min, max; /* argument count */
 } rdl_stmts[] = {
 	/* device commands */
-	{"nop", st_nop, RDC_OP_NOP, 0, 1},
-	{"fence", st_words, RDC_OP_FENCE, 1, 1},
-	{"wait-vblank", st_words, RDC_OP_WAIT_VBLANK, 0, 0},
-	{"wait-line", st_words, RDC_OP_WAIT_LINE, 1, 1},
-	{"cmd-reg", st_cmd_reg, RDC_OP_REG_WRITE, 2, 2},
-	{"load-clut", st_load_clut, RDC_OP_LOAD_CLUT, 2, RDL_ANY},
-	{"call", st_words, RDC_OP_CALL, 1, 1},
-	{"ret", st_words, RDC_OP_RET, 0, 0},
-	{"jump", st_words, RDC_OP_JUMP, 1, 1},
-	{"fg", st_colour, RDC_OP_SET_FG, 1, 1},
-	{"bg", st_colour, RDC_OP_SET_BG, 1, 1},
-	{"rop", st_rop, RDC_OP_SET_ROP, 1, 1},
-	{"clip", st_clip, RDC_OP_SET_CLIP, 1, 4},
-	{"dst", st_surface, RDC_OP_SET_DST, 1, 5},
-	{"src", st_surface, RDC_OP_SET_SRC, 1, 5},
-	{"pixel", st_points, RDC_OP_PIXEL, 2, 2},
-	{"line", st_points, RDC_OP_LINE, 4, 4},
-	{"polyline", st_points, RDC_OP_POLYLINE, 4, RDL_ANY},
-	{"rect", st_shape, RDC_OP_RECT, 4, 4},
-	{"fill-rect", st_shape, RDC_OP_FILL_RECT, 4, 4},
-	{"fill", st_shape, RDC_OP_FILL_RECT, 4, 4},
-	{"circle", st_shape, RDC_OP_CIRCLE, 3, 3},
-	{"fill-circle", st_shape, RDC_OP_FILL_CIRCLE, 3, 3},
-	{"ellipse", st_shape, RDC_OP_ELLIPSE, 4, 4},
-	{"fill-ellipse", st_shape, RDC_OP_FILL_ELLIPSE, 4, 4},
-	{"pen", st_pen, RDC_OP_SET_PEN, 1, 3},
-	{"dash", st_dash, RDC_OP_SET_DASH, 1, 3},
-	{"polygon", st_points, RDC_OP_POLYGON, 4, RDL_ANY},
-	{"arc", st_arc, RDC_OP_ARC, 6, 7},
-	{"bezier", st_curve, RDC_OP_BEZIER, 8, 10},
-	{"hermite", st_curve, RDC_OP_HERMITE, 8, 10},
-	{"bspline", st_curve, RDC_OP_BSPLINE, 8, RDL_ANY},
-	{"transform", st_transform, RDC_OP_SET_TRANSFORM, 1, 9},
-	{"viewport", st_viewport, RDC_OP_SET_VIEWPORT, 8, 8},
-	{"fill-polygon", st_fill_polygon, RDC_OP_FILL_POLYGON, 6, RDL_ANY},
-	{"flood", st_flood, RDC_OP_FLOOD_FILL, 2, 5},
-	{"pattern", st_pattern, RDC_OP_SET_PATTERN, 1, 65},
-	{"triangle", st_triangle, RDC_OP_TRIANGLE, 12, 13},
-	{"zbuf", st_zbuf, RDC_OP_SET_ZBUF, 1, 4},
-	{"clear-z", st_clear_z, RDC_OP_CLEAR_Z, 1, 1},
-	{"aa-line", st_points, RDC_OP_AA_LINE, 4, 4},
-	{"aa-circle", st_shape, RDC_OP_AA_CIRCLE, 3, 3},
-	{"aa-ellipse", st_shape, RDC_OP_AA_ELLIPSE, 4, 4},
-	{"aa-ramp", st_words, RDC_OP_SET_AA_RAMP, 1, 1},
-	{"alpha", st_words, RDC_OP_SET_ALPHA, 1, 1},
-	{"colorkey", st_colorkey, RDC_OP_SET_COLORKEY, 1, 1},
-	{"blit", st_blit, RDC_OP_BLIT, 6, 6},
-	{"host-blit", st_host_blit, RDC_OP_HOST_BLIT, 6, RDL_ANY},
-	{"readback", st_readback, RDC_OP_READBACK, 4, 5},
-	{"mono", st_mono, RDC_OP_MONO, 4, RDL_ANY},
-	{"text", st_text, RDC_OP_TEXT, 3, 4},
-	{"cmd", st_cmd, RDC_OP_NOP, 1, RDC_CMD_MAX_ARGS + 1},
-	{"raw", st_raw, RDC_OP_NOP, 1, RDL_ANY},
-	{"decode", rdl_st_decode, RDC_OP_DECODE, 3, 4},
-	{"histogram", rdl_st_histogram, RDC_OP_HISTOGRAM, 5, 7},
-	{"map-build", rdl_st_map_build, RDC_OP_MAP_BUILD, 3, 4},
-	{"map-apply", rdl_st_map_apply, RDC_OP_MAP_APPLY, 5, 5},
-	{"map-clut", st_words, RDC_OP_MAP_CLUT, 1, 1},
-	{"convolve", rdl_st_convolve, RDC_OP_CONVOLVE, 7, 19},
-	{"threshold", rdl_st_threshold, RDC_OP_THRESHOLD, 5, 6},
-	{"matrix", rdl_st_matrix, RDC_OP_MATRIX_LOAD, 1, 12},
-	{"matrix-mult", rdl_st_matrix, RDC_OP_MATRIX_MULT, 12, 12},
-	{"translate", rdl_st_vec3, RDC_OP_TRANSLATE, 3, 3},
-	{"scale", rdl_st_vec3, RDC_OP_SCALE, 1, 3},
-	{"rotate", rdl_st_rotate, RDC_OP_ROTATE, 2, 2},
-	{"push", st_words, RDC_OP_PUSH_MATRIX, 0, 0},
-	{"pop", st_words, RDC_OP_POP_MATRIX, 0, 0},
-	{"view", rdl_st_view, RDC_OP_SET_VIEW, 26, 26},
-	{"viewport3", rdl_st_viewport3, RDC_OP_SET_VIEWPORT3, 4, 4},
-	{"light", rdl_st_light, RDC_OP_SET_LIGHT, 2, 5},
-	{"ambient", rdl_st_ambient, RDC_OP_SET_AMBIENT, 1, 1},
-	{"material", rdl_st_material, RDC_OP_SET_MATERIAL, 4, 4},
-	{"mesh", rdl_st_mesh, RDC_OP_MESH, 4, 11},
-	{"patch", rdl_st_patch, RDC_OP_PATCH, 49, 55},
-	{"bezier3", rdl_st_bezier3, RDC_OP_BEZIER3, 12, 14},
+	{ "nop", st_nop, RDC_OP_NOP, 0, 1 },
+	{ "fence", st_words, RDC_OP_FENCE, 1, 1 },
+	{ "wait-vblank", st_words, RDC_OP_WAIT_VBLANK, 0, 0 },
+	{ "wait-line", st_words, RDC_OP_WAIT_LINE, 1, 1 },
+	{ "cmd-reg", st_cmd_reg, RDC_OP_REG_WRITE, 2, 2 },
+	{ "load-clut", st_load_clut, RDC_OP_LOAD_CLUT, 2, RDL_ANY },
+	{ "call", st_words, RDC_OP_CALL, 1, 1 },
+	{ "ret", st_words, RDC_OP_RET, 0, 0 },
+	{ "jump", st_words, RDC_OP_JUMP, 1, 1 },
+	{ "fg", st_colour, RDC_OP_SET_FG, 1, 1 },
+	{ "bg", st_colour, RDC_OP_SET_BG, 1, 1 },
+	{ "rop", st_rop, RDC_OP_SET_ROP, 1, 1 },
+	{ "clip", st_clip, RDC_OP_SET_CLIP, 1, 4 },
+	{ "dst", st_surface, RDC_OP_SET_DST, 1, 5 },
+	{ "src", st_surface, RDC_OP_SET_SRC, 1, 5 },
+	{ "pixel", st_points, RDC_OP_PIXEL, 2, 2 },
+	{ "line", st_points, RDC_OP_LINE, 4, 4 },
+	{ "polyline", st_points, RDC_OP_POLYLINE, 4, RDL_ANY },
+	{ "rect", st_shape, RDC_OP_RECT, 4, 4 },
+	{ "fill-rect", st_shape, RDC_OP_FILL_RECT, 4, 4 },
+	{ "fill", st_shape, RDC_OP_FILL_RECT, 4, 4 },
+	{ "circle", st_shape, RDC_OP_CIRCLE, 3, 3 },
+	{ "fill-circle", st_shape, RDC_OP_FILL_CIRCLE, 3, 3 },
+	{ "ellipse", st_shape, RDC_OP_ELLIPSE, 4, 4 },
+	{ "fill-ellipse", st_shape, RDC_OP_FILL_ELLIPSE, 4, 4 },
+	{ "pen", st_pen, RDC_OP_SET_PEN, 1, 3 },
+	{ "dash", st_dash, RDC_OP_SET_DASH, 1, 3 },
+	{ "polygon", st_points, RDC_OP_POLYGON, 4, RDL_ANY },
+	{ "arc", st_arc, RDC_OP_ARC, 6, 7 },
+	{ "bezier", st_curve, RDC_OP_BEZIER, 8, 10 },
+	{ "hermite", st_curve, RDC_OP_HERMITE, 8, 10 },
+	{ "bspline", st_curve, RDC_OP_BSPLINE, 8, RDL_ANY },
+	{ "transform", st_transform, RDC_OP_SET_TRANSFORM, 1, 9 },
+	{ "viewport", st_viewport, RDC_OP_SET_VIEWPORT, 8, 8 },
+	{ "fill-polygon", st_fill_polygon, RDC_OP_FILL_POLYGON, 6, RDL_ANY },
+	{ "flood", st_flood, RDC_OP_FLOOD_FILL, 2, 5 },
+	{ "pattern", st_pattern, RDC_OP_SET_PATTERN, 1, 65 },
+	{ "triangle", st_triangle, RDC_OP_TRIANGLE, 12, 13 },
+	{ "zbuf", st_zbuf, RDC_OP_SET_ZBUF, 1, 4 },
+	{ "clear-z", st_clear_z, RDC_OP_CLEAR_Z, 1, 1 },
+	{ "aa-line", st_points, RDC_OP_AA_LINE, 4, 4 },
+	{ "aa-circle", st_shape, RDC_OP_AA_CIRCLE, 3, 3 },
+	{ "aa-ellipse", st_shape, RDC_OP_AA_ELLIPSE, 4, 4 },
+	{ "aa-ramp", st_words, RDC_OP_SET_AA_RAMP, 1, 1 },
+	{ "alpha", st_words, RDC_OP_SET_ALPHA, 1, 1 },
+	{ "colorkey", st_colorkey, RDC_OP_SET_COLORKEY, 1, 1 },
+	{ "blit", st_blit, RDC_OP_BLIT, 6, 6 },
+	{ "host-blit", st_host_blit, RDC_OP_HOST_BLIT, 6, RDL_ANY },
+	{ "readback", st_readback, RDC_OP_READBACK, 4, 5 },
+	{ "mono", st_mono, RDC_OP_MONO, 4, RDL_ANY },
+	{ "text", st_text, RDC_OP_TEXT, 3, 4 },
+	{ "cmd", st_cmd, RDC_OP_NOP, 1, RDC_CMD_MAX_ARGS + 1 },
+	{ "raw", st_raw, RDC_OP_NOP, 1, RDL_ANY },
+	{ "decode", rdl_st_decode, RDC_OP_DECODE, 3, 4 },
+	{ "histogram", rdl_st_histogram, RDC_OP_HISTOGRAM, 5, 7 },
+	{ "map-build", rdl_st_map_build, RDC_OP_MAP_BUILD, 3, 4 },
+	{ "map-apply", rdl_st_map_apply, RDC_OP_MAP_APPLY, 5, 5 },
+	{ "map-clut", st_words, RDC_OP_MAP_CLUT, 1, 1 },
+	{ "convolve", rdl_st_convolve, RDC_OP_CONVOLVE, 7, 19 },
+	{ "threshold", rdl_st_threshold, RDC_OP_THRESHOLD, 5, 6 },
+	{ "matrix", rdl_st_matrix, RDC_OP_MATRIX_LOAD, 1, 12 },
+	{ "matrix-mult", rdl_st_matrix, RDC_OP_MATRIX_MULT, 12, 12 },
+	{ "translate", rdl_st_vec3, RDC_OP_TRANSLATE, 3, 3 },
+	{ "scale", rdl_st_vec3, RDC_OP_SCALE, 1, 3 },
+	{ "rotate", rdl_st_rotate, RDC_OP_ROTATE, 2, 2 },
+	{ "push", st_words, RDC_OP_PUSH_MATRIX, 0, 0 },
+	{ "pop", st_words, RDC_OP_POP_MATRIX, 0, 0 },
+	{ "view", rdl_st_view, RDC_OP_SET_VIEW, 26, 26 },
+	{ "viewport3", rdl_st_viewport3, RDC_OP_SET_VIEWPORT3, 4, 4 },
+	{ "light", rdl_st_light, RDC_OP_SET_LIGHT, 2, 5 },
+	{ "ambient", rdl_st_ambient, RDC_OP_SET_AMBIENT, 1, 1 },
+	{ "material", rdl_st_material, RDC_OP_SET_MATERIAL, 4, 4 },
+	{ "mesh", rdl_st_mesh, RDC_OP_MESH, 4, 11 },
+	{ "patch", rdl_st_patch, RDC_OP_PATCH, 49, 55 },
+	{ "bezier3", rdl_st_bezier3, RDC_OP_BEZIER3, 12, 14 },
 	/* host side (refused inside `list`, as are readback and raw) */
-	{"list", st_list, 0, 1, 1},
-	{"end", st_end, 0, 0, 0},
-	{"mode", st_mode, RDC_OP_SET_DST, 1, 3},
-	{"reg", st_reg, 0, 2, 2},
-	{"expect", st_expect, 0, 2, 2},
-	{"palette", st_palette, 0, 2, RDC_CLUT_ENTRIES + 1},
-	{"step", st_step, 0, 1, 1},
-	{"run-until", st_run_until, 0, 1, 1},
-	{"wait-frame", st_wait_frame, 0, 0, 0},
-	{"vsync", st_vsync, 0, 0, 0},
-	{"finish", st_finish, 0, 0, 0},
-	{"reset", st_reset, 0, 0, 0},
-	{"screenshot", st_screenshot, 0, 1, 1},
-	{"vram-load", rdl_st_vram_load, 0, 2, 2},
-	{"encode", rdl_st_encode, 0, 6, 7},
-	{"histogram-plot", rdl_st_histogram_plot, RDC_OP_FILL_RECT, 5, 5},
-	{"vertices", rdl_st_vertices, 0, 1, RDL_ANY},
-	{"indices", rdl_st_indices, 0, 1, RDL_ANY},
-	{"spin", rdl_st_spin, 0, 1, 1},
+	{ "list", st_list, 0, 1, 1 },
+	{ "end", st_end, 0, 0, 0 },
+	{ "mode", st_mode, RDC_OP_SET_DST, 1, 3 },
+	{ "reg", st_reg, 0, 2, 2 },
+	{ "expect", st_expect, 0, 2, 2 },
+	{ "palette", st_palette, 0, 2, RDC_CLUT_ENTRIES + 1 },
+	{ "step", st_step, 0, 1, 1 },
+	{ "run-until", st_run_until, 0, 1, 1 },
+	{ "wait-frame", st_wait_frame, 0, 0, 0 },
+	{ "vsync", st_vsync, 0, 0, 0 },
+	{ "finish", st_finish, 0, 0, 0 },
+	{ "reset", st_reset, 0, 0, 0 },
+	{ "screenshot", st_screenshot, 0, 1, 1 },
+	{ "vram-load", rdl_st_vram_load, 0, 2, 2 },
+	{ "encode", rdl_st_encode, 0, 6, 7 },
+	{ "histogram-plot", rdl_st_histogram_plot, RDC_OP_FILL_RECT, 5, 5 },
+	{ "vertices", rdl_st_vertices, 0, 1, RDL_ANY },
+	{ "indices", rdl_st_indices, 0, 1, RDL_ANY },
+	{ "spin", rdl_st_spin, 0, 1, 1 },
 };
 
 static int rdl_arg_count(struct rdl *r, const struct rdl_stmt *st,
@@ -1464,7 +1465,7 @@ int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
 		   struct rdc_script_result *res)
 {
 	struct rdc_script_result local;
-	struct rdl r = {.dev = dev};
+	struct rdl r = { .dev = dev };
 	const char *pos = text, *end;
 	uint32_t phys = 0;
 	int ret = 0;

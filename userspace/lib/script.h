@@ -32,7 +32,7 @@ struct rdl {
 	rdc_dev *dev;
 	struct rdc_script_result *res;
 	rdc_batch *b;
-	uint32_t line; /* first physical line of the statement */
+	uint32_t line;		   /* first physical line of the statement */
 	const char *src, *src_end; /* the statement's text, for columns */
 	struct rdl_tok *tok;
 	size_t ntok, tok_cap;

@@ -43,8 +43,8 @@ int rdl_st_matrix(struct rdl *r, uint32_t op)
 			       "%s: 12 numbers (rows 0..2 of "
 			       "the 4x4)%s",
 			       r->tok[0].s,
-			       op == RDC_OP_MATRIX_LOAD ? " or 'identity'"
-							: "");
+			       op == RDC_OP_MATRIX_LOAD ? " or 'identity'" :
+							  "");
 	ret = rdl_fix_words(r, 1, 12, m);
 	if (ret)
 		return ret;
@@ -75,7 +75,7 @@ int rdl_st_vec3(struct rdl *r, uint32_t op)
 /* rotate x|y|z DEGREES */
 int rdl_st_rotate(struct rdl *r, uint32_t op)
 {
-	static const char *const axes[] = {"x", "y", "z"};
+	static const char *const axes[] = { "x", "y", "z" };
 	uint32_t a, axis;
 	int ret;
 
@@ -99,8 +99,9 @@ int rdl_st_view(struct rdl *r, uint32_t op)
 	static const struct {
 		const char *name;
 		size_t n;
-	} part[] = {{"vrp", 3},	   {"vpn", 3},	 {"vup", 3}, {"prp", 3},
-		    {"window", 4}, {"front", 1}, {"back", 1}};
+	} part[] = { { "vrp", 3 }, { "vpn", 3 },    { "vup", 3 },
+		     { "prp", 3 }, { "window", 4 }, { "front", 1 },
+		     { "back", 1 } };
 	uint32_t a[18], fl;
 	size_t t = 2, w = 0;
 	int ret;
@@ -201,13 +202,13 @@ static int rdl_mesh_flags(struct rdl *r, size_t i, bool normals, uint32_t *fl,
 	static const struct {
 		const char *name;
 		uint32_t bit;
-	} f[] = {{"normals", RDC_MESH_NORMALS},
-		 {"wire", RDC_MESH_WIRE},
-		 {"cull", RDC_MESH_CULL},
-		 {"lit", RDC_MESH_LIT},
-		 {"gouraud", RDC_MESH_GOURAUD},
-		 {"two-sided", RDC_MESH_TWO_SIDED},
-		 {"sort", RDC_MESH_SORT}};
+	} f[] = { { "normals", RDC_MESH_NORMALS },
+		  { "wire", RDC_MESH_WIRE },
+		  { "cull", RDC_MESH_CULL },
+		  { "lit", RDC_MESH_LIT },
+		  { "gouraud", RDC_MESH_GOURAUD },
+		  { "two-sided", RDC_MESH_TWO_SIDED },
+		  { "sort", RDC_MESH_SORT } };
 
 	*fl = 0;
 	for (; i < r->ntok; i++) {

@@ -15,7 +15,7 @@
 
 static int rdl_chan(struct rdl *r, size_t i, uint32_t *sel)
 {
-	static const char *const names[] = {"luma", "red", "green", "blue"};
+	static const char *const names[] = { "luma", "red", "green", "blue" };
 
 	for (uint32_t k = 0; k < RDC_ARRAY_SIZE(names); k++) {
 		if (rdl_word(r, i, names[k])) {
@@ -99,7 +99,7 @@ int rdl_st_histogram(struct rdl *r, uint32_t op)
  */
 int rdl_st_map_build(struct rdl *r, uint32_t op)
 {
-	uint32_t a[3] = {0, 0, 0}, mode, lo, hi;
+	uint32_t a[3] = { 0, 0, 0 }, mode, lo, hi;
 	int ret;
 
 	if (rdl_word(r, 1, "stretch")) {
@@ -118,14 +118,14 @@ int rdl_st_map_build(struct rdl *r, uint32_t op)
 		a[2] = lo | hi << 8;
 	} else if (rdl_word(r, 1, "stretch-auto") ||
 		   rdl_word(r, 1, "equalize")) {
-		mode = rdl_word(r, 1, "equalize") ? RDC_MAP_EQUALIZE
-						  : RDC_MAP_STRETCH_AUTO;
+		mode = rdl_word(r, 1, "equalize") ? RDC_MAP_EQUALIZE :
+						    RDC_MAP_STRETCH_AUTO;
 		if (r->ntok < 4 ||
 		    r->ntok > (mode == RDC_MAP_EQUALIZE ? 4u : 5u))
 			return rdl_err(r, RDC_E_PARSE,
 				       "map-build %s HIST MAP%s", r->tok[1].s,
-				       mode == RDC_MAP_EQUALIZE ? ""
-								: " [MIN]");
+				       mode == RDC_MAP_EQUALIZE ? "" :
+								  " [MIN]");
 		ret = rdl_u32(r, 2, &a[0]);
 		if (!ret)
 			ret = rdl_u32(r, 3, &a[1]);
@@ -177,12 +177,12 @@ static const struct {
 	int16_t bias;
 	uint8_t flags;
 } rdl_kernels[] = {
-	{"box", {1, 1, 1, 1, 1, 1, 1, 1, 1}, 9, 0, 0},
-	{"gauss", {1, 2, 1, 2, 4, 2, 1, 2, 1}, 16, 0, 0},
-	{"sharpen", {0, -1, 0, -1, 5, -1, 0, -1, 0}, 1, 0, 0},
-	{"laplace", {0, 1, 0, 1, -4, 1, 0, 1, 0}, 1, 0, RDC_CONV_ABS},
-	{"emboss", {-2, -1, 0, -1, 1, 1, 0, 1, 2}, 1, 0, 0},
-	{"sobel", {0}, 1, 0, RDC_CONV_SOBEL},
+	{ "box", { 1, 1, 1, 1, 1, 1, 1, 1, 1 }, 9, 0, 0 },
+	{ "gauss", { 1, 2, 1, 2, 4, 2, 1, 2, 1 }, 16, 0, 0 },
+	{ "sharpen", { 0, -1, 0, -1, 5, -1, 0, -1, 0 }, 1, 0, 0 },
+	{ "laplace", { 0, 1, 0, 1, -4, 1, 0, 1, 0 }, 1, 0, RDC_CONV_ABS },
+	{ "emboss", { -2, -1, 0, -1, 1, 1, 0, 1, 2 }, 1, 0, 0 },
+	{ "sobel", { 0 }, 1, 0, RDC_CONV_SOBEL },
 };
 
 static uint32_t krow(const int32_t *k)
@@ -313,7 +313,7 @@ int rdl_st_vram_load(struct rdl *r, uint32_t op)
  */
 int rdl_st_encode(struct rdl *r, uint32_t op)
 {
-	static const char *const codecs[] = {"rle", "dpcm", "btc"};
+	static const char *const codecs[] = { "rle", "dpcm", "btc" };
 	uint32_t codec = 0, addr, xy, wh, fw, fh, w, h, ch = 3, *pix = NULL;
 	uint8_t *smp = NULL, *out = NULL;
 	size_t cap, len;

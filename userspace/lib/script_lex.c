@@ -42,7 +42,7 @@ static int rdl_push_tok(struct rdl *r, const char *s, size_t len, bool quoted)
 		r->tok = t;
 		r->tok_cap = cap;
 	}
-	r->tok[r->ntok++] = (struct rdl_tok){s, len, quoted};
+	r->tok[r->ntok++] = (struct rdl_tok){ s, len, quoted };
 	return 0;
 }
 
@@ -87,18 +87,20 @@ int rdl_tokenize(struct rdl *r)
 			p++;
 		/* '#' starts a comment at the start of a statement or before
 		 * a blank; after a keyword, '#' and a word is a colour. */
-		if (!*p || (*p == '#' && (!r->ntok || !p[1] ||
-					  rdl_is_space(p[1]))))
+		if (!*p ||
+		    (*p == '#' && (!r->ntok || !p[1] || rdl_is_space(p[1]))))
 			return 0;
 		if (*p == '#' && !rdl_is_colour(p)) {
 			size_t n = 1;
 
 			while (p[n] && !rdl_is_space(p[n]))
 				n++;
-			return rdl_err_at(r, p, RDC_E_PARSE,
-					  "bad colour '%.*s': #rrggbb takes six "
-					  "hex digits (a comment needs a blank "
-					  "after '#')", (int)RDC_MIN(n, 40), p);
+			return rdl_err_at(
+				r, p, RDC_E_PARSE,
+				"bad colour '%.*s': #rrggbb takes six "
+				"hex digits (a comment needs a blank "
+				"after '#')",
+				(int)RDC_MIN(n, 40), p);
 		}
 		if (*p == '"') {
 			char *out = ++p, *start = out;
@@ -148,8 +150,7 @@ int rdl_tokenize(struct rdl *r)
 }
 
 /* Integer in [lo, hi]: decimal or 0x hex, optional sign. */
-int rdl_int(struct rdl *r, size_t i, int64_t lo, int64_t hi,
-	    int64_t *out)
+int rdl_int(struct rdl *r, size_t i, int64_t lo, int64_t hi, int64_t *out)
 {
 	const char *s, *what = "number";
 	bool neg = false;

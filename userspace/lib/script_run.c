@@ -33,8 +33,7 @@ int rdl_err(struct rdl *r, int code, const char *fmt, ...)
  * An error at `at` in r->buf: its physical line and 1-based column, found
  * by walking the statement's source lines as rdl_next_line joined them.
  */
-int rdl_err_at(struct rdl *r, const char *at, int code,
-	       const char *fmt, ...)
+int rdl_err_at(struct rdl *r, const char *at, int code, const char *fmt, ...)
 {
 	size_t off = (size_t)(at - r->buf);
 	const char *p = r->src;
@@ -98,8 +97,8 @@ int rdl_counters(struct rdl *r, uint64_t *busy, uint32_t *cmds)
 	return 0;
 }
 
-void rdl_account(struct rdl *r, uint32_t op, uint64_t busy0,
-		 uint32_t cmds0, uint64_t busy1, uint32_t cmds1)
+void rdl_account(struct rdl *r, uint32_t op, uint64_t busy0, uint32_t cmds0,
+		 uint64_t busy1, uint32_t cmds1)
 {
 	op &= 0xff;
 	r->res->op_cycles[op] += busy1 - busy0;

@@ -109,7 +109,7 @@ static void sim_free(struct sim *s)
 
 static int sim_open(rdc_dev *dev, const char *opts)
 {
-	struct rdc_hw_config cfg = {0};
+	struct rdc_hw_config cfg = { 0 };
 	struct sim *s;
 	int ret;
 
@@ -167,8 +167,8 @@ static int sim_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 
 	if (len > hw->vram_size || addr > hw->vram_size - len)
 		return RDC_E_RANGE;
-	return rdc_hw_vram_write(hw, addr, buf, (uint32_t)len) ? RDC_E_RANGE
-							       : 0;
+	return rdc_hw_vram_write(hw, addr, buf, (uint32_t)len) ? RDC_E_RANGE :
+								 0;
 }
 
 /* FIFO_DATA in bulk: the chip takes the words as rdc_hw_write would. */
@@ -269,7 +269,7 @@ static int sim_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 	struct sim_pins_watch w = {
 		.fn = hw->trace_fn,
 		.ctx = hw->trace_ctx,
-		.changed = {RDC_NEVER, RDC_NEVER},
+		.changed = { RDC_NEVER, RDC_NEVER },
 	};
 	uint64_t t = RDC_NEVER;
 	int ret;

@@ -17,24 +17,24 @@
 #include "rdc_regs.h"
 #include "udl_decode.h"
 
-#define UDL_PREFIX 0xafu
-#define UDL_OP_REG 0x20u
-#define UDL_OP_RAW8 0x60u
-#define UDL_OP_RL8 0x61u
-#define UDL_OP_COPY8 0x62u
-#define UDL_OP_RLX8 0x63u
-#define UDL_OP_RAW16 0x68u
-#define UDL_OP_RL16 0x69u
-#define UDL_OP_COPY16 0x6au
-#define UDL_OP_RLX16 0x6bu
-#define UDL_HDR 6u	/* AF op addr[3] count */
-#define UDL_COPY_LEN 9u /* AF op src[3] count dst[3] */
-#define UDL_REG_LEN 4u
-#define UDL_LFSR_SEED 0xffffu
+#define UDL_PREFIX	    0xafu
+#define UDL_OP_REG	    0x20u
+#define UDL_OP_RAW8	    0x60u
+#define UDL_OP_RL8	    0x61u
+#define UDL_OP_COPY8	    0x62u
+#define UDL_OP_RLX8	    0x63u
+#define UDL_OP_RAW16	    0x68u
+#define UDL_OP_RL16	    0x69u
+#define UDL_OP_COPY16	    0x6au
+#define UDL_OP_RLX16	    0x6bu
+#define UDL_HDR		    6u /* AF op addr[3] count */
+#define UDL_COPY_LEN	    9u /* AF op src[3] count dst[3] */
+#define UDL_REG_LEN	    4u
+#define UDL_LFSR_SEED	    0xffffu
 #define UDL_LFSR_PERIOD_MAX 65535u
-#define UDL_CLOCK_STEP_KHZ 5u
-#define UDL_MAX_DISPLAY 2048u /* udl's mode_config limits */
-#define UDL_BLANK_ON 0x00u
+#define UDL_CLOCK_STEP_KHZ  5u
+#define UDL_MAX_DISPLAY	    2048u /* udl's mode_config limits */
+#define UDL_BLANK_ON	    0x00u
 
 static uint32_t udl_count(uint8_t c)
 {
@@ -109,7 +109,8 @@ static void udl_draw_raw(struct rdc_udl *u, uint32_t a, const uint16_t *px,
 			uint32_t lo = px[2 * i];
 			uint32_t hi = 2 * i + 1 < k ? px[2 * i + 1] : 0;
 
-			w[3 + i] = lo | hi << 16; /* VRAM order: first pixel low */
+			w[3 + i] = lo |
+				   hi << 16; /* VRAM order: first pixel low */
 		}
 		udl_emit(u, w, 3u + nw);
 		px += k;
@@ -118,15 +119,14 @@ static void udl_draw_raw(struct rdc_udl *u, uint32_t a, const uint16_t *px,
 	}
 }
 
-static void udl_draw_fill(struct rdc_udl *u, uint32_t a, uint16_t v,
-			  uint32_t n)
+static void udl_draw_fill(struct rdc_udl *u, uint32_t a, uint16_t v, uint32_t n)
 {
 	n = udl_clip(u, a, n);
 	if (!n)
 		return;
 	u->st.px_run += n;
 	if (!u->fg_valid || u->fg != v) {
-		uint32_t w[2] = {RDC_CMD(RDC_OP_SET_FG, 0, 1), v};
+		uint32_t w[2] = { RDC_CMD(RDC_OP_SET_FG, 0, 1), v };
 
 		udl_emit(u, w, 2);
 		u->fg = v;
@@ -164,8 +164,7 @@ static void udl_blit(struct rdc_udl *u, uint32_t s, uint32_t d, uint32_t k)
  * BLIT is overlap-safe, and the pieces go back to front when the
  * destination lies after the source, so the whole behaves as memmove.
  */
-static void udl_draw_copy(struct rdc_udl *u, uint32_t s, uint32_t d,
-			  uint32_t n)
+static void udl_draw_copy(struct rdc_udl *u, uint32_t s, uint32_t d, uint32_t n)
 {
 	uint32_t m = udl_clip(u, s, n), md = udl_clip(u, d, n);
 
@@ -338,8 +337,9 @@ static void udl_snap_preset(struct rdc_timing *t)
 
 		if (rdc_preset_timing(p, &pt) || !udl_same_geometry(t, &pt))
 			continue;
-		d = t->pixclk_khz > pt.pixclk_khz ? t->pixclk_khz - pt.pixclk_khz
-						  : pt.pixclk_khz - t->pixclk_khz;
+		d = t->pixclk_khz > pt.pixclk_khz ?
+			    t->pixclk_khz - pt.pixclk_khz :
+			    pt.pixclk_khz - t->pixclk_khz;
 		if (d < 10u) {
 			*t = pt;
 			return;
@@ -359,7 +359,7 @@ static bool udl_timing_ok(const struct rdc_timing *t)
 
 static void udl_reg_write(struct rdc_udl *u, uint32_t reg, uint32_t val)
 {
-	uint32_t w[3] = {RDC_CMD(RDC_OP_REG_WRITE, 0, 2), reg, val};
+	uint32_t w[3] = { RDC_CMD(RDC_OP_REG_WRITE, 0, 2), reg, val };
 
 	udl_emit(u, w, 3);
 }
@@ -518,7 +518,8 @@ static size_t udl_walk(struct rdc_udl *u, const uint8_t *p, size_t n,
 		if (pos > n)
 			return 0;
 		for (uint32_t i = 0; u && i < total; i++)
-			udl_span_push(u, a + 2u * i, udl_be16(p + UDL_HDR + 2 * i));
+			udl_span_push(u, a + 2u * i,
+				      udl_be16(p + UDL_HDR + 2 * i));
 		drawn = decl = total;
 	} else if (op == UDL_OP_RL8 || op == UDL_OP_RL16) {
 		while (decl < total) {
@@ -529,10 +530,12 @@ static size_t udl_walk(struct rdc_udl *u, const uint8_t *p, size_t n,
 			c = udl_count(p[pos]);
 			decl += c;
 			if (u) {
-				uint32_t k = c < total - drawn ? c : total - drawn;
+				uint32_t k = c < total - drawn ? c :
+								 total - drawn;
 
 				over |= k < c;
-				udl_run(u, a + 2u * drawn, udl_be16(p + pos + 1), k);
+				udl_run(u, a + 2u * drawn,
+					udl_be16(p + pos + 1), k);
 				drawn += k;
 			}
 			pos += 1 + bpp;
@@ -563,8 +566,9 @@ static size_t udl_walk(struct rdc_udl *u, const uint8_t *p, size_t n,
 				return 0;
 			rep = p[pos++];
 			if (u && rep) {
-				uint32_t k = rep < total - drawn ? rep
-								 : total - drawn;
+				uint32_t k = rep < total - drawn ?
+						     rep :
+						     total - drawn;
 
 				over |= k < rep;
 				udl_run(u, a + 2u * drawn,
@@ -659,9 +663,9 @@ void rdc_udl_feed(struct rdc_udl *u, const uint8_t *p, size_t n)
 void rdc_udl_init(struct rdc_udl *u, uint32_t vram_size,
 		  const struct rdc_udl_out *out)
 {
-	uint32_t win = vram_size < RDC_UDL_ADDR_SPACE ? vram_size
-						      : RDC_UDL_ADDR_SPACE;
-	uint32_t surf[] = {0, RDC_UDL_ROW_BYTES, 0, RDC_FMT_RGB565};
+	uint32_t win = vram_size < RDC_UDL_ADDR_SPACE ? vram_size :
+							RDC_UDL_ADDR_SPACE;
+	uint32_t surf[] = { 0, RDC_UDL_ROW_BYTES, 0, RDC_FMT_RGB565 };
 
 	memset(u, 0, sizeof(*u));
 	u->out = *out;
@@ -672,13 +676,25 @@ void rdc_udl_init(struct rdc_udl *u, uint32_t vram_size,
 	surf[2] = RDC_WH(RDC_UDL_ROW_PIXELS, u->rows);
 	{
 		uint32_t w[] = {
-			RDC_CMD(RDC_OP_SET_DST, 0, 4), surf[0], surf[1], surf[2],
-			surf[3], RDC_CMD(RDC_OP_SET_SRC, 0, 4), surf[0], surf[1],
-			surf[2], surf[3], RDC_CMD(RDC_OP_SET_CLIP, 0, 2),
-			RDC_XY(0, 0), RDC_XY(RDC_UDL_ROW_PIXELS, u->rows),
-			RDC_CMD(RDC_OP_SET_ROP, 0, 1), RDC_ROP_COPY,
-			RDC_CMD(RDC_OP_SET_ALPHA, 0, 1), RDC_ALPHA_OPAQUE,
-			RDC_CMD(RDC_OP_SET_COLORKEY, 0, 1), 0,
+			RDC_CMD(RDC_OP_SET_DST, 0, 4),
+			surf[0],
+			surf[1],
+			surf[2],
+			surf[3],
+			RDC_CMD(RDC_OP_SET_SRC, 0, 4),
+			surf[0],
+			surf[1],
+			surf[2],
+			surf[3],
+			RDC_CMD(RDC_OP_SET_CLIP, 0, 2),
+			RDC_XY(0, 0),
+			RDC_XY(RDC_UDL_ROW_PIXELS, u->rows),
+			RDC_CMD(RDC_OP_SET_ROP, 0, 1),
+			RDC_ROP_COPY,
+			RDC_CMD(RDC_OP_SET_ALPHA, 0, 1),
+			RDC_ALPHA_OPAQUE,
+			RDC_CMD(RDC_OP_SET_COLORKEY, 0, 1),
+			0,
 			RDC_CMD(RDC_OP_SET_PATTERN, RDC_PAT_NONE, 0),
 			RDC_CMD(RDC_OP_SET_TRANSFORM, 0, 0),
 			RDC_CMD(RDC_OP_SET_ZBUF, 0, 0),
@@ -690,15 +706,15 @@ void rdc_udl_init(struct rdc_udl *u, uint32_t vram_size,
 
 /* ---- EDID ---------------------------------------------------------------- */
 
-#define EDID_BLOCK 128u
-#define EDID_DTD 18u
-#define EDID_DTD_BASE 54u
-#define EDID_BASE_DTDS 3u /* the fourth descriptor is the name */
-#define EDID_CTA_DTD_OFF 4u
-#define EDID_CTA_DTDS 6u /* (127 - 4) / 18 */
+#define EDID_BLOCK		   128u
+#define EDID_DTD		   18u
+#define EDID_DTD_BASE		   54u
+#define EDID_BASE_DTDS		   3u /* the fourth descriptor is the name */
+#define EDID_CTA_DTD_OFF	   4u
+#define EDID_CTA_DTDS		   6u /* (127 - 4) / 18 */
 #define EDID_SYNC_DIGITAL_SEPARATE 0x18u
-#define EDID_SYNC_VPOS 0x04u
-#define EDID_SYNC_HPOS 0x02u
+#define EDID_SYNC_VPOS		   0x04u
+#define EDID_SYNC_HPOS		   0x02u
 
 static void edid_dtd(uint8_t *d, const struct rdc_timing *t)
 {
@@ -739,8 +755,8 @@ static void edid_checksum(uint8_t *b)
 
 static bool edid_fits(uint32_t p, uint32_t vram_size, struct rdc_timing *t)
 {
-	uint32_t win = vram_size < RDC_UDL_ADDR_SPACE ? vram_size
-						      : RDC_UDL_ADDR_SPACE;
+	uint32_t win = vram_size < RDC_UDL_ADDR_SPACE ? vram_size :
+							RDC_UDL_ADDR_SPACE;
 
 	return !rdc_preset_timing(p, t) && t->h_display <= UDL_MAX_DISPLAY &&
 	       t->v_display <= UDL_MAX_DISPLAY &&
@@ -750,11 +766,11 @@ static bool edid_fits(uint32_t p, uint32_t vram_size, struct rdc_timing *t)
 size_t rdc_udl_edid(uint8_t out[RDC_UDL_EDID_SIZE], uint32_t preferred,
 		    uint32_t vram_size)
 {
-	static const uint8_t head[] = {0x00, 0xff, 0xff, 0xff,
-				       0xff, 0xff, 0xff, 0x00};
+	static const uint8_t head[] = { 0x00, 0xff, 0xff, 0xff,
+					0xff, 0xff, 0xff, 0x00 };
 	/* sRGB primaries and white point, as monitors commonly give them */
-	static const uint8_t chroma[] = {0xee, 0x91, 0xa3, 0x54, 0x4c,
-					 0x99, 0x26, 0x0f, 0x50, 0x54};
+	static const uint8_t chroma[] = { 0xee, 0x91, 0xa3, 0x54, 0x4c,
+					  0x99, 0x26, 0x0f, 0x50, 0x54 };
 	static const char name[13] = "RDC-1\n      ";
 	uint32_t order[RDC_PRESET_COUNT], n = 0, best = RDC_PRESET_COUNT;
 	uint64_t best_area = 0;
@@ -793,10 +809,10 @@ size_t rdc_udl_edid(uint8_t out[RDC_UDL_EDID_SIZE], uint32_t preferred,
 	for (unsigned int i = 38; i < 54; i++)
 		b[i] = 0x01; /* standard timings unused */
 	for (uint32_t i = 0; i < n; i++) {
-		uint8_t *d = i < EDID_BASE_DTDS
-				     ? b + EDID_DTD_BASE + EDID_DTD * i
-				     : x + EDID_CTA_DTD_OFF +
-					       EDID_DTD * (i - EDID_BASE_DTDS);
+		uint8_t *d = i < EDID_BASE_DTDS ?
+				     b + EDID_DTD_BASE + EDID_DTD * i :
+				     x + EDID_CTA_DTD_OFF +
+					     EDID_DTD * (i - EDID_BASE_DTDS);
 
 		if (i >= EDID_BASE_DTDS + EDID_CTA_DTDS)
 			break;
@@ -822,9 +838,9 @@ void rdc_udl_stats_encode(uint8_t out[RDC_UDL_STATS_SIZE],
 			  const struct rdc_udl_stats *s)
 {
 	const uint64_t v[] = {
-		s->bytes,    s->cmds,	 s->noops,  s->reg_writes,
-		s->px_raw,   s->px_run,	 s->px_copy, s->dp_words,
-		s->modes,    s->errors, s->last_error, s->error_at,
+		s->bytes,  s->cmds,   s->noops,	     s->reg_writes,
+		s->px_raw, s->px_run, s->px_copy,    s->dp_words,
+		s->modes,  s->errors, s->last_error, s->error_at,
 	};
 
 	_Static_assert(sizeof(v) == RDC_UDL_STATS_SIZE, "stats layout");

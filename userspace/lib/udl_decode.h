@@ -51,7 +51,7 @@
  * rows of RDC_UDL_ROW_BYTES, so a linear address a is pixel
  * (a % ROW_BYTES / 2, a / ROW_BYTES) and spans split at row ends.
  */
-#define RDC_UDL_ROW_BYTES 4096u
+#define RDC_UDL_ROW_BYTES  4096u
 #define RDC_UDL_ROW_PIXELS (RDC_UDL_ROW_BYTES / 2u)
 /* Runs shorter than this are drawn with the raw pixels around them. */
 #define RDC_UDL_RUN_FILL_MIN 8u
@@ -59,27 +59,27 @@
 #define RDC_UDL_EDID_SIZE 256u
 
 /* DisplayLink registers udl writes (AF 20 reg val). */
-#define RDC_UDL_REG_DEPTH 0x00 /* 0: 16 bpp; 1: 24 bpp (not offered) */
-#define RDC_UDL_REG_XDS 0x01   /* the timing counters, LFSR16, big-endian */
-#define RDC_UDL_REG_XDE 0x03
-#define RDC_UDL_REG_YDS 0x05
-#define RDC_UDL_REG_YDE 0x07
-#define RDC_UDL_REG_XEC 0x09
-#define RDC_UDL_REG_HSS 0x0b
-#define RDC_UDL_REG_HSE 0x0d
-#define RDC_UDL_REG_HPIX 0x0f /* plain, big-endian */
-#define RDC_UDL_REG_YEC 0x11
-#define RDC_UDL_REG_VSS 0x13
-#define RDC_UDL_REG_VSE 0x15
-#define RDC_UDL_REG_VPIX 0x17 /* plain, big-endian */
-#define RDC_UDL_REG_CLOCK 0x1b /* pixel clock / 5 kHz, little-endian */
-#define RDC_UDL_REG_BLANK 0x1f /* 0 on; 1, 3, 5, 7 blanked */
+#define RDC_UDL_REG_DEPTH  0x00 /* 0: 16 bpp; 1: 24 bpp (not offered) */
+#define RDC_UDL_REG_XDS	   0x01 /* the timing counters, LFSR16, big-endian */
+#define RDC_UDL_REG_XDE	   0x03
+#define RDC_UDL_REG_YDS	   0x05
+#define RDC_UDL_REG_YDE	   0x07
+#define RDC_UDL_REG_XEC	   0x09
+#define RDC_UDL_REG_HSS	   0x0b
+#define RDC_UDL_REG_HSE	   0x0d
+#define RDC_UDL_REG_HPIX   0x0f /* plain, big-endian */
+#define RDC_UDL_REG_YEC	   0x11
+#define RDC_UDL_REG_VSS	   0x13
+#define RDC_UDL_REG_VSE	   0x15
+#define RDC_UDL_REG_VPIX   0x17 /* plain, big-endian */
+#define RDC_UDL_REG_CLOCK  0x1b /* pixel clock / 5 kHz, little-endian */
+#define RDC_UDL_REG_BLANK  0x1f /* 0 on; 1, 3, 5, 7 blanked */
 #define RDC_UDL_REG_BASE16 0x20 /* 24-bit big-endian: 0x20..0x22 */
-#define RDC_UDL_REG_BASE8 0x26	/* 0x26..0x28 */
-#define RDC_UDL_REG_LOCK 0xff	/* 0x00 lock, 0xff unlock: apply */
+#define RDC_UDL_REG_BASE8  0x26 /* 0x26..0x28 */
+#define RDC_UDL_REG_LOCK   0xff /* 0x00 lock, 0xff unlock: apply */
 
 /* The vendor control requests udl makes (bmRequestType 0x40 / 0xc0). */
-#define RDC_UDL_REQ_EDID 0x02	 /* IN 2 bytes: status 0, EDID byte */
+#define RDC_UDL_REQ_EDID    0x02 /* IN 2 bytes: status 0, EDID byte */
 #define RDC_UDL_REQ_CHANNEL 0x12 /* OUT 16 bytes: select a channel */
 /* Ours, not DisplayLink's: IN, RDC_UDL_STATS_SIZE bytes (docs/usb.md). */
 #define RDC_UDL_REQ_STATS 0x52
@@ -96,15 +96,15 @@ enum rdc_udl_err {
 };
 
 struct rdc_udl_stats {
-	uint64_t bytes;	     /* stream bytes fed */
-	uint64_t cmds;	     /* commands decoded (no-ops excluded) */
-	uint64_t noops;	     /* 0xAF padding bytes */
+	uint64_t bytes; /* stream bytes fed */
+	uint64_t cmds;	/* commands decoded (no-ops excluded) */
+	uint64_t noops; /* 0xAF padding bytes */
 	uint64_t reg_writes;
-	uint64_t px_raw;     /* pixels written as raw pixels */
-	uint64_t px_run;     /* ... as runs (fills) */
-	uint64_t px_copy;    /* ... by copies (blits) */
-	uint64_t dp_words;   /* display-processor words produced */
-	uint64_t modes;	     /* timings programmed */
+	uint64_t px_raw;   /* pixels written as raw pixels */
+	uint64_t px_run;   /* ... as runs (fills) */
+	uint64_t px_copy;  /* ... by copies (blits) */
+	uint64_t dp_words; /* display-processor words produced */
+	uint64_t modes;	   /* timings programmed */
 	uint64_t errors;
 	uint32_t last_error; /* enum rdc_udl_err */
 	uint64_t error_at;   /* stream offset of the command at fault */

@@ -229,7 +229,7 @@ static void usb_refill(struct usb_xport *u)
 /* Handle libusb's events for at most ms. */
 static void usb_pump(struct usb_xport *u, int ms)
 {
-	struct timeval tv = {ms / 1000, (ms % 1000) * 1000};
+	struct timeval tv = { ms / 1000, (ms % 1000) * 1000 };
 	int r;
 
 	usb_refill(u);
@@ -268,8 +268,8 @@ static ssize_t usb_recv(struct rdc_xport *x, void *buf, size_t len,
 			int timeout_ms)
 {
 	struct usb_xport *u = (struct usb_xport *)x;
-	uint64_t end =
-		timeout_ms >= 0 ? usb_now_ms() + (uint64_t)timeout_ms : 0;
+	uint64_t end = timeout_ms >= 0 ? usb_now_ms() + (uint64_t)timeout_ms :
+					 0;
 
 	for (;;) {
 		ssize_t n = rdc_usb_rx_read(&u->rx, buf, len);
@@ -322,8 +322,7 @@ static int usb_send(struct rdc_xport *x, const struct iovec *iov, int n)
 							iov[vi].iov_len - voff);
 
 					memcpy(t->buffer + k,
-					       (const uint8_t *)iov[vi]
-							       .iov_base +
+					       (const uint8_t *)iov[vi].iov_base +
 						       voff,
 					       c);
 					k += c;
@@ -398,7 +397,7 @@ static void usb_xport_free(struct usb_xport *u)
 			busy |= u->out_busy[i];
 		}
 		if (busy) {
-			struct timeval tv = {0, 50000};
+			struct timeval tv = { 0, 50000 };
 
 			u->err = u->err ? u->err : RDC_E_IO; /* no refill */
 			libusb_handle_events_timeout_completed(u->ctx, &tv,
@@ -591,8 +590,8 @@ static int usb_session(struct usb_xport *u)
 			got = 0;
 			r = ep ? libusb_interrupt_transfer(u->h, u->ep_intr,
 							   junk, sizeof(junk),
-							   &got, USB_DRAIN_MS)
-			       : libusb_bulk_transfer(u->h, u->ep_in, junk,
+							   &got, USB_DRAIN_MS) :
+				 libusb_bulk_transfer(u->h, u->ep_in, junk,
 						      sizeof(junk), &got,
 						      USB_DRAIN_MS);
 			drained += (size_t)got;
@@ -801,6 +800,6 @@ const struct rdc_backend rdc_backend_usb = {
 #else /* !RDC_HAVE_USB */
 
 /* Known but not built: rdc_open answers RDC_E_NOSYS. */
-const struct rdc_backend rdc_backend_usb = {.scheme = "usb"};
+const struct rdc_backend rdc_backend_usb = { .scheme = "usb" };
 
 #endif

@@ -54,15 +54,15 @@ static const struct {
 	const char *name;
 	unsigned int bits;
 } vcd_sigs[SIG_COUNT] = {
-	[SIG_TE] = {"te", 1},
-	[SIG_IRQ] = {"irq", 1},
-	[SIG_RESET_N] = {"reset_n", 1},
-	[SIG_BL_EN] = {"bl_en", 1},
-	[SIG_DP] = {"dp_busy", 1},
-	[SIG_FIFO] = {"fifo_level", FIFO_BITS},
-	[SIG_LINE] = {"line", LINE_BITS},
-	[SIG_VBLANK] = {"vblank", 1},
-	[SIG_HBLANK] = {"hblank", 1},
+	[SIG_TE] = { "te", 1 },
+	[SIG_IRQ] = { "irq", 1 },
+	[SIG_RESET_N] = { "reset_n", 1 },
+	[SIG_BL_EN] = { "bl_en", 1 },
+	[SIG_DP] = { "dp_busy", 1 },
+	[SIG_FIFO] = { "fifo_level", FIFO_BITS },
+	[SIG_LINE] = { "line", LINE_BITS },
+	[SIG_VBLANK] = { "vblank", 1 },
+	[SIG_HBLANK] = { "hblank", 1 },
 };
 
 _Static_assert(RDC_FIFO_DEPTH < (1u << FIFO_BITS), "FIFO level width");
@@ -336,8 +336,8 @@ void rdc_vcd_trace(void *ctx, uint64_t time, unsigned int event, uint32_t a,
 /* ---- opening and closing ------------------------------------------------- */
 
 /* 10^k for k = 9 ... 15 and the $timescale that makes it the unit */
-static const char *const vcd_scales[] = {"1 ns",   "100 ps", "10 ps", "1 ps",
-					 "100 fs", "10 fs",  "1 fs"};
+static const char *const vcd_scales[] = { "1 ns",   "100 ps", "10 ps", "1 ps",
+					  "100 fs", "10 fs",  "1 fs" };
 
 static const char *vcd_pick_unit(rdc_vcd *v)
 {

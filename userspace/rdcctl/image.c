@@ -19,7 +19,7 @@ const char rdcctl_image_usage[] =
 	"                             with --grey); print the sizes and\n"
 	"                             the ratio to the raw samples\n";
 
-static const char *const image_codecs[] = {"rle", "dpcm", "btc"};
+static const char *const image_codecs[] = { "rle", "dpcm", "btc" };
 
 static int image_encode(int argc, char **argv)
 {

@@ -32,10 +32,10 @@ static const struct {
 	const char *name;
 	uint32_t bit;
 } pins_names[] = {
-	{"TE", RDC_PIN_TE},
-	{"IRQ", RDC_PIN_IRQ},
-	{"RESET_N", RDC_PIN_RESET_N},
-	{"BL_EN", RDC_PIN_BL_EN},
+	{ "TE", RDC_PIN_TE },
+	{ "IRQ", RDC_PIN_IRQ },
+	{ "RESET_N", RDC_PIN_RESET_N },
+	{ "BL_EN", RDC_PIN_BL_EN },
 };
 
 #define PINS_N (sizeof(pins_names) / sizeof(pins_names[0]))
@@ -90,8 +90,8 @@ static int pins_parse(int argc, char **argv, struct pins_opts *o)
 		i++;
 		if (!strcmp(a, "--set")) {
 			const char *eq = strchr(v, '=');
-			uint32_t bit =
-				eq ? pins_by_name(v, (size_t)(eq - v)) : 0;
+			uint32_t bit = eq ? pins_by_name(v, (size_t)(eq - v)) :
+					    0;
 
 			if (!(bit & RDC_PINS_IN) ||
 			    (strcmp(eq + 1, "0") && strcmp(eq + 1, "1"))) {
@@ -198,7 +198,7 @@ static int pins_watch(rdc_dev *dev, const struct pins_opts *o)
 
 int rdcctl_pins_main(int argc, char **argv)
 {
-	struct pins_opts o = {.uri = "sim:"};
+	struct pins_opts o = { .uri = "sim:" };
 	struct sigaction sa;
 	uint32_t levels;
 	rdc_dev *dev;

@@ -17,38 +17,39 @@
 
 static void usage(FILE *f)
 {
-	fprintf(f, "usage: rdcctl [--connect URI] COMMAND [ARGS]\n"
-	      "\n"
-	      "commands:\n"
-	      "  run FILE.rdl [-o OUT.png]  run a script, wait for the next\n"
-	      "                             complete frame, print cycles per\n"
-	      "                             command class, the simulated time\n"
-	      "                             and the frame's CRC-32; -o saves "
-	      "it\n"
-	      "      [--vcd OUT.vcd]        and the chip's signals as a Value\n"
-	      "                             Change Dump (sim: only)\n"
-	      "  regs [FILE.rdl]            print every register (after the\n"
-	      "                             script, if one is given)\n"
-	      "  stats [FILE.rdl]           print the performance counters\n"
-	      "  replay TRACE [-o OUT.png]  play an rdcd --record trace on a\n"
-	      "                             fresh sim: and print its time, frame\n"
-	      "                             count and last frame's CRC-32\n"
-	      "  list                       every RDC-1 this machine reaches\n"
-	      "                             (USB, rdcd's default socket\n"
-	      "                             directory, rdcfb.ko): one line\n"
-	      "                             each, the URI for --connect first\n"
-	      "%s%s%s"
-	      "\n"
-	      "options:\n"
-	      "  --connect URI  device to use (default " RDCCTL_DEFAULT_URI
-	      ", e.g. sim:vram=4M,\n"
-	      "                 unix:/run/user/1000/rdc/rdc.sock, "
-	      "tcp:127.0.0.1:7000);\n"
-	      "                 --uri is the same\n"
-	      "  -h, --help  this text\n"
-	      "\n"
-	      "The script format is described in docs/rdl.md.\n",
-	      rdcctl_stream_usage, rdcctl_pins_usage, rdcctl_image_usage);
+	fprintf(f,
+		"usage: rdcctl [--connect URI] COMMAND [ARGS]\n"
+		"\n"
+		"commands:\n"
+		"  run FILE.rdl [-o OUT.png]  run a script, wait for the next\n"
+		"                             complete frame, print cycles per\n"
+		"                             command class, the simulated time\n"
+		"                             and the frame's CRC-32; -o saves "
+		"it\n"
+		"      [--vcd OUT.vcd]        and the chip's signals as a Value\n"
+		"                             Change Dump (sim: only)\n"
+		"  regs [FILE.rdl]            print every register (after the\n"
+		"                             script, if one is given)\n"
+		"  stats [FILE.rdl]           print the performance counters\n"
+		"  replay TRACE [-o OUT.png]  play an rdcd --record trace on a\n"
+		"                             fresh sim: and print its time, frame\n"
+		"                             count and last frame's CRC-32\n"
+		"  list                       every RDC-1 this machine reaches\n"
+		"                             (USB, rdcd's default socket\n"
+		"                             directory, rdcfb.ko): one line\n"
+		"                             each, the URI for --connect first\n"
+		"%s%s%s"
+		"\n"
+		"options:\n"
+		"  --connect URI  device to use (default " RDCCTL_DEFAULT_URI
+		", e.g. sim:vram=4M,\n"
+		"                 unix:/run/user/1000/rdc/rdc.sock, "
+		"tcp:127.0.0.1:7000);\n"
+		"                 --uri is the same\n"
+		"  -h, --help  this text\n"
+		"\n"
+		"The script format is described in docs/rdl.md.\n",
+		rdcctl_stream_usage, rdcctl_pins_usage, rdcctl_image_usage);
 }
 
 struct opts {
@@ -183,8 +184,8 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 		ret = rdc_frame_grab(dev, NULL, 0, &w, &h);
 	if (ret == RDC_E_RANGE) {
 		pix = malloc(((size_t)w * h + 1) * sizeof(*pix));
-		ret = pix ? rdc_frame_grab(dev, pix, (size_t)w * h, &w, &h)
-			  : RDC_E_NOMEM;
+		ret = pix ? rdc_frame_grab(dev, pix, (size_t)w * h, &w, &h) :
+			    RDC_E_NOMEM;
 	}
 	if (ret) {
 		rdcctl_error("frame", ret);
@@ -310,8 +311,8 @@ static int cmd_replay(const struct opts *o)
 		if (ret == RDC_E_RANGE) {
 			pix = malloc(((size_t)w * h + 1) * sizeof(*pix));
 			ret = pix ? rdc_frame_grab(dev, pix, (size_t)w * h, &w,
-						   &h)
-				  : RDC_E_NOMEM;
+						   &h) :
+				    RDC_E_NOMEM;
 		}
 		if (!ret)
 			ret = rdc_png_write(o->png, pix, w, h, w);
@@ -344,7 +345,7 @@ static int cmd_list(void)
 
 int main(int argc, char **argv)
 {
-	struct opts o = {.uri = RDCCTL_DEFAULT_URI};
+	struct opts o = { .uri = RDCCTL_DEFAULT_URI };
 	rdc_dev *dev;
 	int ret;
 
@@ -388,8 +389,8 @@ int main(int argc, char **argv)
 			ret = run_script(dev, o.script, res);
 		free(res);
 		if (!ret)
-			ret = !strcmp(o.cmd, "regs") ? cmd_regs(dev)
-						     : cmd_stats(dev);
+			ret = !strcmp(o.cmd, "regs") ? cmd_regs(dev) :
+						       cmd_stats(dev);
 	}
 	rdc_close(dev);
 	return ret ? 1 : 0;

@@ -15,11 +15,11 @@
 #include "report.h"
 #include "stream.h"
 
-#define STREAM_MAX_SINKS 8
+#define STREAM_MAX_SINKS	 8
 #define STREAM_PNG_EVERY_DEFAULT 60 /* rdcd's --png too */
-#define STREAM_MAX_SCRIPTS 16
-#define STREAM_SPEC_MAX 4200
-#define NS_PER_S 1000000000ull
+#define STREAM_MAX_SCRIPTS	 16
+#define STREAM_SPEC_MAX		 4200
+#define NS_PER_S		 1000000000ull
 /* Fallen this far behind the wall clock, start pacing afresh rather than
  * send a burst. */
 #define STREAM_MAX_LAG_NS NS_PER_S
@@ -89,7 +89,8 @@ static int stream_parse(int argc, char **argv, struct stream_opts *o)
 			continue;
 		}
 		if (!v) {
-			fprintf(stderr, "rdcctl: stream: %s needs a value\n", a);
+			fprintf(stderr, "rdcctl: stream: %s needs a value\n",
+				a);
 			return -1;
 		}
 		i++;
@@ -173,8 +174,8 @@ static int stream_open_sinks(const struct stream_opts *o, rdc_sink **sinks,
 	}
 	if (!ret && o->png) {
 		snprintf(spec, sizeof(spec), "png:%s,every=%u", o->png,
-			 o->png_every_set ? o->png_every
-					  : STREAM_PNG_EVERY_DEFAULT);
+			 o->png_every_set ? o->png_every :
+					    STREAM_PNG_EVERY_DEFAULT);
 		ret = stream_add(sinks, n, spec);
 	}
 	if (!ret && o->vnc) {
@@ -205,8 +206,8 @@ static int stream_scripts(rdc_dev *dev, const struct stream_opts *o,
 		memset(res, 0, sizeof(*res));
 		ret = rdc_script_run_file(dev, o->scripts[i].path, res);
 		if (ret) {
-			const char *msg = res->error_msg[0] ? res->error_msg
-							    : rdc_strerror(ret);
+			const char *msg = res->error_msg[0] ? res->error_msg :
+							      rdc_strerror(ret);
 
 			if (res->error_col)
 				fprintf(stderr, "%s:%u:%u: %s\n",

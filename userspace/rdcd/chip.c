@@ -44,7 +44,7 @@
  * touched only as used.
  */
 #define CHIP_STACK (4u << 20)
-#define NS_PER_US 1000u
+#define NS_PER_US  1000u
 
 struct rdcd_chip {
 	struct rdcd *d;

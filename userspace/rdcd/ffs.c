@@ -222,8 +222,8 @@ static void ffs_halt(struct rdcd_ffs *f, enum ffs_ep ep, uint32_t gen)
 	for (;;) {
 		bool gone;
 
-		r = ep == FFS_EP_OUT ? write(f->ep[ep], &b, 0)
-				     : read(f->ep[ep], &b, 0);
+		r = ep == FFS_EP_OUT ? write(f->ep[ep], &b, 0) :
+				       read(f->ep[ep], &b, 0);
 		if (r >= 0 || errno != EAGAIN)
 			break;
 		pthread_mutex_lock(&f->v.lock);
@@ -426,7 +426,7 @@ static bool ffs_parse(struct rdcd_ffs *f, struct ffs_parse *ps,
 static void *ffs_in_thread(void *arg)
 {
 	struct rdcd_ffs *f = arg;
-	struct ffs_parse ps = {0};
+	struct ffs_parse ps = { 0 };
 	uint32_t mine = 0, halted = 0, ended = 0;
 	bool halt_valid = false, end_valid = false;
 
@@ -606,8 +606,8 @@ static void ffs_event(struct ffs_dev *v, const struct usb_functionfs_event *e)
 	case FUNCTIONFS_DISABLE:
 		pthread_mutex_lock(&f->v.lock);
 		f->v.enabled = false;
-		ffs_session_end(f, e->type == FUNCTIONFS_UNBIND ? "unbound"
-								: "disabled");
+		ffs_session_end(f, e->type == FUNCTIONFS_UNBIND ? "unbound" :
+								  "disabled");
 		pthread_mutex_unlock(&f->v.lock);
 		if (e->type == FUNCTIONFS_UNBIND)
 			rdcd_log(f->v.d, RDCD_LOG_INFO, "ffs:%s: unbound",

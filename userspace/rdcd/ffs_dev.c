@@ -27,7 +27,7 @@ static void ffs_dev_on_kick(int sig)
 void ffs_dev_init(struct ffs_dev *v, const struct rdcd *d, const char *kind,
 		  int kick, unsigned int ndata, ffs_dev_event_fn *event)
 {
-	struct sigaction sa = {.sa_handler = ffs_dev_on_kick};
+	struct sigaction sa = { .sa_handler = ffs_dev_on_kick };
 	pthread_condattr_t ca;
 
 	v->d = d;
@@ -143,8 +143,8 @@ void *ffs_dev_ep0_thread(void *arg)
 
 	ffs_dev_thread_signals(v);
 	for (;;) {
-		struct pollfd p[2] = {{.fd = v->ep0, .events = POLLIN},
-				      {.fd = v->stopfd, .events = POLLIN}};
+		struct pollfd p[2] = { { .fd = v->ep0, .events = POLLIN },
+				       { .fd = v->stopfd, .events = POLLIN } };
 		struct usb_functionfs_event ev[4];
 		ssize_t n;
 

@@ -71,8 +71,8 @@ static void rdcd_snapshot(struct rdcd *d)
 
 void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
 {
-	static const char *const name[] = {"error", "warning", "info",
-					   "debug"};
+	static const char *const name[] = { "error", "warning", "info",
+					    "debug" };
 	va_list ap;
 
 	if (level > d->log_level)
@@ -166,14 +166,15 @@ static int rdcd_mkdir_parent(const char *path)
 static int rdcd_listen_unix(struct rdcd *d, struct rdcd_listener *l,
 			    const char *path, bool group)
 {
-	struct sockaddr_un sa = {.sun_family = AF_UNIX};
+	struct sockaddr_un sa = { .sun_family = AF_UNIX };
 	struct stat st;
 	mode_t old;
 	int fd;
 
 	if (!*path) {
 		if (rdc_proto_default_path(l->path, sizeof(l->path))) {
-			rdcd_log(d, RDCD_LOG_ERR, "default socket path too long");
+			rdcd_log(d, RDCD_LOG_ERR,
+				 "default socket path too long");
 			return -1;
 		}
 		if (rdcd_mkdir_parent(l->path)) {
@@ -195,9 +196,10 @@ static int rdcd_listen_unix(struct rdcd *d, struct rdcd_listener *l,
 	 */
 	if (!lstat(l->path, &st)) {
 		if (!S_ISSOCK(st.st_mode)) {
-			rdcd_log(d, RDCD_LOG_ERR,
-				 "%s exists and is not a socket: not replacing it",
-				 l->path);
+			rdcd_log(
+				d, RDCD_LOG_ERR,
+				"%s exists and is not a socket: not replacing it",
+				l->path);
 			l->path[0] = 0;
 			return -1;
 		}
@@ -279,8 +281,8 @@ static bool rdcd_is_loopback(const struct sockaddr_storage *ss)
 static int rdcd_listen_tcp(struct rdcd *d, struct rdcd_listener *l,
 			   const char *hostport)
 {
-	struct addrinfo hints = {.ai_socktype = SOCK_STREAM,
-				 .ai_flags = AI_PASSIVE | AI_NUMERICSERV};
+	struct addrinfo hints = { .ai_socktype = SOCK_STREAM,
+				  .ai_flags = AI_PASSIVE | AI_NUMERICSERV };
 	const char *colon = strrchr(hostport, ':');
 	const char *spec = hostport; /* as given, for messages */
 	struct sockaddr_storage ss;
@@ -321,8 +323,7 @@ static int rdcd_listen_tcp(struct rdcd *d, struct rdcd_listener *l,
 	}
 	setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
 	if (bind(fd, res->ai_addr, res->ai_addrlen) || listen(fd, 64)) {
-		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: %s", spec,
-			 strerror(errno));
+		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: %s", spec, strerror(errno));
 		freeaddrinfo(res);
 		close(fd);
 		return -1;
@@ -380,9 +381,10 @@ static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
 		snprintf(l->uri, sizeof(l->uri), "%s", uri);
 		ret = l->fd < 0 ? -1 : 0;
 	} else {
-		rdcd_log(d, RDCD_LOG_ERR,
-			 "%s: want unix:PATH, tcp:HOST:PORT, ffs:DIR or udl:DIR",
-			 uri);
+		rdcd_log(
+			d, RDCD_LOG_ERR,
+			"%s: want unix:PATH, tcp:HOST:PORT, ffs:DIR or udl:DIR",
+			uri);
 		return -1;
 	}
 	if (ret)
@@ -433,13 +435,15 @@ static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 			setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one,
 				   sizeof(one));
 			if (ss.ss_family == AF_INET)
-				inet_ntop(AF_INET,
-					  &((struct sockaddr_in *)&ss)->sin_addr,
-					  addr, sizeof(addr));
+				inet_ntop(
+					AF_INET,
+					&((struct sockaddr_in *)&ss)->sin_addr,
+					addr, sizeof(addr));
 			else if (ss.ss_family == AF_INET6)
-				inet_ntop(AF_INET6,
-					  &((struct sockaddr_in6 *)&ss)->sin6_addr,
-					  addr, sizeof(addr));
+				inet_ntop(
+					AF_INET6,
+					&((struct sockaddr_in6 *)&ss)->sin6_addr,
+					addr, sizeof(addr));
 			snprintf(peer, sizeof(peer), "tcp %s", addr);
 		}
 		if (!rdcd_client_new(d, fd, l->tcp && d->have_token, peer)) {
@@ -469,8 +473,8 @@ static int rdcd_read_token(struct rdcd *d, const char *path)
 	n = fread(buf, 1, sizeof(buf), f);
 	more = n == sizeof(buf) && fgetc(f) != EOF;
 	fclose(f);
-	while (n && (buf[n - 1] == '\n' || buf[n - 1] == '\r' ||
-		     buf[n - 1] == ' '))
+	while (n &&
+	       (buf[n - 1] == '\n' || buf[n - 1] == '\r' || buf[n - 1] == ' '))
 		n--;
 	if (!n) {
 		rdcd_log(d, RDCD_LOG_ERR, "--token %s: empty", path);
@@ -479,7 +483,8 @@ static int rdcd_read_token(struct rdcd *d, const char *path)
 	if (more || n > RDC_PROTO_MAX_TOKEN) {
 		rdcd_log(d, RDCD_LOG_ERR,
 			 "--token %s: longer than %u bytes (a client could "
-			 "not send it whole)", path, RDC_PROTO_MAX_TOKEN);
+			 "not send it whole)",
+			 path, RDC_PROTO_MAX_TOKEN);
 		return -1;
 	}
 	memcpy(d->token, buf, n);
@@ -583,12 +588,12 @@ struct rdcd_opts {
 /* A PNG a second at 60 Hz unless the spec says otherwise. */
 #define RDCD_PNG_EVERY 60
 
-static int rdcd_sink_opt(struct rdcd_opts *o, const char *opt,
-			 const char *val)
+static int rdcd_sink_opt(struct rdcd_opts *o, const char *opt, const char *val)
 {
-	const char *kind = !strcmp(opt, "--v4l2") ? "v4l2:"
-			   : !strcmp(opt, "--png") ? "png:"
-			   : !strcmp(opt, "--vnc") ? "vnc:" : "";
+	const char *kind = !strcmp(opt, "--v4l2") ? "v4l2:" :
+			   !strcmp(opt, "--png")  ? "png:" :
+			   !strcmp(opt, "--vnc")  ? "vnc:" :
+						    "";
 	bool png_every = kind[0] == 'p' && !strstr(val, "every=");
 	char *spec;
 
@@ -597,8 +602,8 @@ static int rdcd_sink_opt(struct rdcd_opts *o, const char *opt,
 		return -1;
 	}
 	if ((png_every ? asprintf(&spec, "%s%s,every=%d", kind, val,
-				  RDCD_PNG_EVERY)
-		       : asprintf(&spec, "%s%s", kind, val)) < 0)
+				  RDCD_PNG_EVERY) :
+			 asprintf(&spec, "%s%s", kind, val)) < 0)
 		return -1;
 	o->sinks[o->nsinks++] = spec;
 	return 0;
@@ -658,8 +663,8 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 				return -1;
 		} else if (!strcmp(a, "--listen") || !strcmp(a, "--mode") ||
 			   !strcmp(a, "--vram") || !strcmp(a, "--record") ||
-			   !strcmp(a, "--token") || !strcmp(a, "--ready-file") ||
-			   !strcmp(a, "--vcd")) {
+			   !strcmp(a, "--token") ||
+			   !strcmp(a, "--ready-file") || !strcmp(a, "--vcd")) {
 			if (!val) {
 				fprintf(stderr, "rdcd: %s needs a value\n", a);
 				return -1;
@@ -667,7 +672,8 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 			i++;
 			if (!strcmp(a, "--listen")) {
 				if (o->nlisten == RDCD_MAX_LISTEN) {
-					fprintf(stderr, "rdcd: too many --listen\n");
+					fprintf(stderr,
+						"rdcd: too many --listen\n");
 					return -1;
 				}
 				o->listen[o->nlisten++] = val;
@@ -710,13 +716,13 @@ static void rdcd_loop(struct rdcd *d)
 	sigemptyset(&none);
 	while (!rdcd_stop) {
 		unsigned int n = 0, nc = 0;
-		struct timespec ts = {0}, *tmo = NULL;
+		struct timespec ts = { 0 }, *tmo = NULL;
 		uint64_t hello_ns = rdcd_hello_deadlines(d);
 		int r;
 
 		for (unsigned int i = 0; i < d->nlis; i++)
-			pfd[n++] = (struct pollfd){.fd = d->lis[i].fd,
-						   .events = POLLIN};
+			pfd[n++] = (struct pollfd){ .fd = d->lis[i].fd,
+						    .events = POLLIN };
 		for (struct rdcd_client *c = d->clients; c; c = c->next) {
 			short ev = 0;
 
@@ -727,7 +733,7 @@ static void rdcd_loop(struct rdcd *d)
 			if (c->out_head)
 				ev |= POLLOUT;
 			cl[nc++] = c;
-			pfd[n++] = (struct pollfd){.fd = c->fd, .events = ev};
+			pfd[n++] = (struct pollfd){ .fd = c->fd, .events = ev };
 		}
 		if (rdcd_chip_busy(d)) {
 			tmo = &ts; /* zero: the chip goes on at once */
@@ -742,8 +748,9 @@ static void rdcd_loop(struct rdcd *d)
 			tmo = &ts;
 		}
 		if (hello_ns != UINT64_MAX &&
-		    (!tmo || (uint64_t)ts.tv_sec * NS_PER_S +
-				     (uint64_t)ts.tv_nsec > hello_ns)) {
+		    (!tmo ||
+		     (uint64_t)ts.tv_sec * NS_PER_S + (uint64_t)ts.tv_nsec >
+			     hello_ns)) {
 			/* wake for the next HELLO deadline (and a ms more) */
 			hello_ns += 1000000u;
 			ts.tv_sec = (time_t)(hello_ns / NS_PER_S);
@@ -767,7 +774,8 @@ static void rdcd_loop(struct rdcd *d)
 
 				if (pfd[k].revents & POLLOUT)
 					rdcd_client_flush(d, c);
-				if (pfd[k].revents & (POLLIN | POLLHUP | POLLERR))
+				if (pfd[k].revents &
+				    (POLLIN | POLLHUP | POLLERR))
 					rdcd_client_read(d, c);
 				if ((pfd[k].revents & (POLLHUP | POLLERR)) &&
 				    !(pfd[k].revents & POLLIN))
@@ -792,7 +800,8 @@ static void rdcd_loop(struct rdcd *d)
 		for (struct rdcd_client *c = d->clients, *next; c; c = next) {
 			next = c->next;
 			/* the chip's run still holds its client: later */
-			if (c->dead && !(rdcd_chip_busy(d) && d->chip_client == c))
+			if (c->dead &&
+			    !(rdcd_chip_busy(d) && d->chip_client == c))
 				rdcd_client_free(d, c);
 		}
 	}
@@ -800,13 +809,13 @@ static void rdcd_loop(struct rdcd *d)
 
 int main(int argc, char **argv)
 {
-	struct rdcd d = {.log_level = RDCD_LOG_INFO,
-			 .vram_size = 16u << 20,
-			 .mode = RDC_RUN_PACED,
-			 .accept_lis = -1};
-	struct rdcd_opts o = {0};
-	struct sigaction sa = {.sa_handler = rdcd_on_signal};
-	struct sigaction snap = {.sa_handler = rdcd_on_snapshot};
+	struct rdcd d = { .log_level = RDCD_LOG_INFO,
+			  .vram_size = 16u << 20,
+			  .mode = RDC_RUN_PACED,
+			  .accept_lis = -1 };
+	struct rdcd_opts o = { 0 };
+	struct sigaction sa = { .sa_handler = rdcd_on_signal };
+	struct sigaction snap = { .sa_handler = rdcd_on_snapshot };
 	rdc_vcd *vcd = NULL;
 	sigset_t block;
 	int ret = 1;
@@ -864,16 +873,17 @@ int main(int argc, char **argv)
 		int err = rdc_sink_open(o.sinks[i], &d.sinks[d.nsinks]);
 
 		if (err) {
-			rdcd_log(&d, RDCD_LOG_ERR, "sink %s: %s: %s", o.sinks[i],
-				 rdc_strerror(err), rdc_last_error_detail(err));
+			rdcd_log(&d, RDCD_LOG_ERR, "sink %s: %s: %s",
+				 o.sinks[i], rdc_strerror(err),
+				 rdc_last_error_detail(err));
 			goto out;
 		}
 		d.nsinks++;
 	}
 	if (o.mode) {
 		int p = rdc_preset_by_name(o.mode);
-		int err = p < 0 ? RDC_E_INVAL
-				: rdc_mode_set(d.dev, (uint32_t)p,
+		int err = p < 0 ? RDC_E_INVAL :
+				  rdc_mode_set(d.dev, (uint32_t)p,
 					       RDC_FMT_XRGB8888, 0);
 
 		if (err) {
@@ -895,9 +905,9 @@ int main(int argc, char **argv)
 		goto out;
 	}
 	rdcd_log(&d, RDCD_LOG_INFO, "%s, vram %u bytes",
-		 d.mode == RDC_RUN_STEPPED ? "stepped"
-		 : d.mode == RDC_RUN_FAST  ? "fast"
-					   : "paced",
+		 d.mode == RDC_RUN_STEPPED ? "stepped" :
+		 d.mode == RDC_RUN_FAST	   ? "fast" :
+					     "paced",
 		 d.vram_size);
 	rdcd_loop(&d);
 	if (rdcd_stop)

@@ -26,13 +26,13 @@
  * Each must say HELLO within RDCD_HELLO_MS and may send nothing larger.
  */
 #define RDCD_MAX_PENDING 8
-#define RDCD_HELLO_MS 5000
+#define RDCD_HELLO_MS	 5000
 /* Failed tokens: after RDCD_AUTH_FREE_FAILS from one address, that address
  * is refused for a second, doubling at each further failure up to a minute;
  * failed-token log lines are kept to one a second. */
-#define RDCD_AUTH_FREE_FAILS 3
+#define RDCD_AUTH_FREE_FAILS	3
 #define RDCD_AUTH_BACKOFF_MAX_S 64
-#define RDCD_AUTH_TABLE 32
+#define RDCD_AUTH_TABLE		32
 /* Requests handled per client per loop turn, so one cannot starve others. */
 #define RDCD_REQ_PER_TURN 64
 /* Replies queued for a client before the daemon stops reading from it. */
@@ -65,8 +65,12 @@
  * all; then TIMEOUT (the words not yet taken are dropped). */
 #define RDCD_SUBMIT_BUDGET_S RDCD_MAX_BUDGET_S
 
-enum rdcd_log_level { RDCD_LOG_ERR, RDCD_LOG_WARN, RDCD_LOG_INFO,
-		      RDCD_LOG_DEBUG };
+enum rdcd_log_level {
+	RDCD_LOG_ERR,
+	RDCD_LOG_WARN,
+	RDCD_LOG_INFO,
+	RDCD_LOG_DEBUG
+};
 
 struct rdcd_obuf {
 	struct rdcd_obuf *next;
@@ -75,8 +79,12 @@ struct rdcd_obuf {
 	uint8_t data[];
 };
 
-enum rdcd_pending { RDCD_PEND_NONE, RDCD_PEND_SUBMIT, RDCD_PEND_WAIT,
-		    RDCD_PEND_STEP };
+enum rdcd_pending {
+	RDCD_PEND_NONE,
+	RDCD_PEND_SUBMIT,
+	RDCD_PEND_WAIT,
+	RDCD_PEND_STEP
+};
 
 struct rdcd_client {
 	struct rdcd_client *next;
@@ -86,7 +94,7 @@ struct rdcd_client {
 	/* a complete request waits in hdr/body until the chip is between
 	 * commands (it changes the device) */
 	bool held;
-	int lis; /* index of the listener it came from, -1: none */
+	int lis;	  /* index of the listener it came from, -1: none */
 	uint64_t conn_ns; /* when it connected (HELLO deadline) */
 	uint64_t out_since_ns; /* last progress sending, or when queued */
 	char peer[64];
@@ -146,8 +154,8 @@ struct rdcd {
 	unsigned int nlis;
 	struct rdcd_client *clients;
 	unsigned int nclients; /* that said HELLO */
-	int accept_lis; /* listener whose connection is being made, or -1 */
-	size_t out_total; /* bytes queued for every client */
+	int accept_lis;	   /* listener whose connection is being made, or -1 */
+	size_t out_total;  /* bytes queued for every client */
 	size_t prev_total; /* bytes of every client's DELTA base */
 	/* what runs on the chip's stack: the paced/fast loop's advance to
 	 * adv_target, or (stepped) chip_client's pending request */
@@ -222,7 +230,8 @@ uint64_t rdcd_hello_deadlines(struct rdcd *d);
 int rdcd_stepped_start(struct rdcd *d);
 /* A log line through a rate limit: at most one a second per limiter. */
 void rdcd_log_limited(struct rdcd *d, struct rdcd_ratelog *rl, int level,
-		      const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+		      const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
 /* Disconnect the slowest readers while d->out_total is over its bound. */
 void rdcd_out_bound(struct rdcd *d);
 /* Requests held while the chip was inside a command: handle them now. */
@@ -266,8 +275,7 @@ bool rdcd_chip_between(const struct rdcd *d);
  * device), or -1.  rdcd_ffs_accept: a client for the new USB session.
  * rdcd_ffs_close: stops the threads (the gadget leaves its UDC).
  */
-int rdcd_ffs_open(const struct rdcd *d, const char *dir,
-		  struct rdcd_ffs **out);
+int rdcd_ffs_open(const struct rdcd *d, const char *dir, struct rdcd_ffs **out);
 void rdcd_ffs_accept(struct rdcd *d, struct rdcd_ffs *f);
 void rdcd_ffs_close(struct rdcd_ffs *f);
 

@@ -56,12 +56,23 @@ static uint32_t rdcd_status_from_error(int err)
 static const char *rdcd_status_name(uint32_t st)
 {
 	static const char *const names[RDC_ST_COUNT_] = {
-		"ok",	    "invalid argument", "out of memory",
-		"not supported", "timeout",	"halted",
-		"out of range", "malformed payload", "busy (not in control)",
-		"bad token", "bad magic or version", "message too big",
-		"no frame yet", "unknown type", "out of order",
-		"device error", "ended by a reset",
+		"ok",
+		"invalid argument",
+		"out of memory",
+		"not supported",
+		"timeout",
+		"halted",
+		"out of range",
+		"malformed payload",
+		"busy (not in control)",
+		"bad token",
+		"bad magic or version",
+		"message too big",
+		"no frame yet",
+		"unknown type",
+		"out of order",
+		"device error",
+		"ended by a reset",
 	};
 
 	return st < RDC_ST_COUNT_ ? names[st] : "?";
@@ -130,9 +141,9 @@ static struct rdcd_obuf *rdcd_frame_msg(const uint32_t *pix,
 	if (!b)
 		return NULL;
 	data = b->data + RDC_PROTO_HDR_SIZE + RDC_PROTO_FRAME_HDR;
-	n = enc == RDC_ENC_RAW ? 0
-			       : rdc_proto_frame_encode(data, raw, enc, pix,
-							prev, w, h);
+	n = enc == RDC_ENC_RAW ?
+		    0 :
+		    rdc_proto_frame_encode(data, raw, enc, pix, prev, w, h);
 	if (!n) {
 		enc = RDC_ENC_RAW;
 		n = rdc_proto_frame_encode(data, raw, enc, pix, NULL, w, h);
@@ -164,7 +175,7 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 				 const uint32_t *xrgb, uint32_t w, uint32_t h,
 				 uint64_t number)
 {
-	struct rdc_proto_frame f = {.number = number};
+	struct rdc_proto_frame f = { .number = number };
 	const uint32_t *prev = NULL;
 	struct rdcd_obuf *b;
 	size_t px = (size_t)w * h;
@@ -228,8 +239,11 @@ static void rdcd_frame_to_sinks(struct rdcd *d, const uint32_t *xrgb,
 				uint32_t w, uint32_t h, uint64_t number)
 {
 	const struct rdc_timing *t = &d->hw->crtc.cur;
-	struct rdc_frame f = {.xrgb = xrgb, .width = w, .height = h,
-			      .stride = w, .seq = number};
+	struct rdc_frame f = { .xrgb = xrgb,
+			       .width = w,
+			       .height = h,
+			       .stride = w,
+			       .seq = number };
 
 	if (rdc_sink_interval_timing(t->h_total, t->v_total, t->pixclk_khz,
 				     &f.interval_num, &f.interval_den))
@@ -302,7 +316,8 @@ static int rdcd_power_cycle(struct rdcd *d)
 	d->dev = NULL;
 	ret = rdcd_device_open(d);
 	if (!ret)
-		rdcd_gpiosim_new_chip(d); /* before time moves on the new chip */
+		rdcd_gpiosim_new_chip(
+			d); /* before time moves on the new chip */
 	return ret;
 }
 
@@ -359,10 +374,11 @@ struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
 	    RDCD_MAX_PENDING) {
 		struct rdcd_client *o = (struct rdcd_client *)oldest;
 
-		rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
-				 "%u connections without HELLO on one listener: "
-				 "closing the oldest, client %u (%s)",
-				 RDCD_MAX_PENDING, o->id, o->peer);
+		rdcd_log_limited(
+			d, &d->connlog, RDCD_LOG_WARN,
+			"%u connections without HELLO on one listener: "
+			"closing the oldest, client %u (%s)",
+			RDCD_MAX_PENDING, o->id, o->peer);
 		o->dead = true;
 	}
 	c = calloc(1, sizeof(*c));
@@ -389,10 +405,11 @@ uint64_t rdcd_hello_deadlines(struct rdcd *d)
 		if (c->hello || c->dead || c->closing)
 			continue;
 		if (now - c->conn_ns >= limit) {
-			rdcd_log_limited(d, &d->connlog, RDCD_LOG_INFO,
-					 "client %u (%s): no HELLO within %u ms: "
-					 "closing", c->id, c->peer,
-					 RDCD_HELLO_MS);
+			rdcd_log_limited(
+				d, &d->connlog, RDCD_LOG_INFO,
+				"client %u (%s): no HELLO within %u ms: "
+				"closing",
+				c->id, c->peer, RDCD_HELLO_MS);
 			c->dead = true;
 		} else if (limit - (now - c->conn_ns) < next) {
 			next = limit - (now - c->conn_ns);
@@ -561,8 +578,8 @@ static void rdcd_fatal(struct rdcd *d, struct rdcd_client *c,
 				 "client %u (%s): %s; closing", c->id, c->peer,
 				 rdcd_status_name(status));
 	else
-		rdcd_log(d, RDCD_LOG_WARN, "client %u (%s): %s; closing",
-			 c->id, c->peer, rdcd_status_name(status));
+		rdcd_log(d, RDCD_LOG_WARN, "client %u (%s): %s; closing", c->id,
+			 c->peer, rdcd_status_name(status));
 	rdcd_reply(d, c, req, status, NULL, 0);
 	c->closing = true;
 }
@@ -681,9 +698,9 @@ static void rdcd_hello(struct rdcd *d, struct rdcd_client *c,
 	}
 	c->hello = true;
 	d->nclients++;
-	rdcd_log(d, RDCD_LOG_INFO, "client %u said HELLO (%s)", c->id,
-		 c->peer);
-	r.caps = RDC_CAP_ALL & ~(d->mode == RDC_RUN_STEPPED ? 0u : RDC_CAP_STEP);
+	rdcd_log(d, RDCD_LOG_INFO, "client %u said HELLO (%s)", c->id, c->peer);
+	r.caps = RDC_CAP_ALL &
+		 ~(d->mode == RDC_RUN_STEPPED ? 0u : RDC_CAP_STEP);
 	r.caps &= hello.caps | RDC_CAP_STEP;
 	if ((hello.flags & RDC_HELLO_CONTROL) && !d->ctl) {
 		d->ctl = c;
@@ -766,8 +783,8 @@ static int rdcd_stepped_wait_run(struct rdcd *d, struct rdcd_client *c,
  */
 static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 {
-	const uint64_t total = (uint64_t)RDCD_SUBMIT_BUDGET_S *
-			       RDC_DEFAULT_CORE_HZ;
+	const uint64_t total =
+		(uint64_t)RDCD_SUBMIT_BUDGET_S * RDC_DEFAULT_CORE_HZ;
 	uint64_t start = d->hw->now;
 
 	while (c->pend_done < c->pend_n) {
@@ -782,19 +799,22 @@ static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 			return ret;
 		if (!room) {
 			struct rdc_wait rw = {
-				.term[0] = {.kind = RDC_WAIT_TEST_GE,
-					    .reg = RDC_REG_FIFO_FREE,
-					    .mask = ~0u,
-					    .value = left < RDC_FIFO_DEPTH / 2
-							     ? (uint32_t)left
-							     : RDC_FIFO_DEPTH / 2},
+				.term[0] = { .kind = RDC_WAIT_TEST_GE,
+					     .reg = RDC_REG_FIFO_FREE,
+					     .mask = ~0u,
+					     .value =
+						     left < RDC_FIFO_DEPTH / 2 ?
+							     (uint32_t)left :
+							     RDC_FIFO_DEPTH /
+								     2 },
 				.needs_dp = true,
 			};
 			uint64_t used = d->hw->now - start;
 
 			if (used >= total)
 				return RDC_E_TIMEOUT;
-			rw.budget = RDC_MIN(RDC_WAIT_BUDGET_DEFAULT, total - used);
+			rw.budget =
+				RDC_MIN(RDC_WAIT_BUDGET_DEFAULT, total - used);
 			rdc_wait_to_hw(&rw, &c->pend_hw);
 			rdc_hw_wait_begin(d->hw, &c->pend_hw);
 			ret = rdcd_stepped_wait_run(d, c, &c->pend_hw);
@@ -802,7 +822,8 @@ static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 				return ret;
 			continue;
 		}
-		k = RDC_MIN(RDC_MIN((size_t)room, (size_t)RDC_FIFO_DEPTH), left);
+		k = RDC_MIN(RDC_MIN((size_t)room, (size_t)RDC_FIFO_DEPTH),
+			    left);
 		for (size_t i = 0; i < k; i++)
 			w[i] = rdc_proto_get32(c->pend_words +
 					       4 * (c->pend_done + i));
@@ -899,8 +920,8 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 		if (!ret && c->pend_done < c->pend_n) {
 			uint64_t sim = (uint64_t)RDCD_SUBMIT_BUDGET_S *
 				       RDC_DEFAULT_CORE_HZ;
-			uint64_t wall = (uint64_t)RDCD_SUBMIT_BUDGET_S *
-					1000000000ull;
+			uint64_t wall =
+				(uint64_t)RDCD_SUBMIT_BUDGET_S * 1000000000ull;
 
 			if (rdcd_halted(d))
 				ret = RDC_E_HALTED;
@@ -1004,7 +1025,7 @@ void rdcd_after_advance(struct rdcd *d)
 static void rdcd_stats(struct rdcd *d, struct rdcd_client *c,
 		       const struct rdc_proto_hdr *h)
 {
-	struct rdc_proto_stats ps = {0};
+	struct rdc_proto_stats ps = { 0 };
 	struct rdc_stats st;
 	uint8_t out[RDC_PROTO_STATS_SIZE];
 	int ret = rdc_stats_get(d->dev, &st);
@@ -1036,7 +1057,8 @@ static void rdcd_frame_grab(struct rdcd *d, struct rdcd_client *c,
 	const uint32_t *pix = rdc_hw_frame(d->hw, &w, &ht);
 	/* FRAME_COUNT counts the frame that just completed */
 	struct rdc_proto_frame f = {
-		.number = rdc_hw_read(d->hw, RDC_REG_FRAME_COUNT) - 1u};
+		.number = rdc_hw_read(d->hw, RDC_REG_FRAME_COUNT) - 1u
+	};
 	struct rdcd_obuf *b;
 	uint8_t fh[RDC_PROTO_FRAME_HDR];
 
@@ -1066,8 +1088,7 @@ static void rdcd_frame_grab(struct rdcd *d, struct rdcd_client *c,
 
 /* Does this request need control of the device? */
 static bool rdcd_needs_control(const struct rdcd *d,
-			       const struct rdc_proto_hdr *h,
-			       const uint8_t *pl)
+			       const struct rdc_proto_hdr *h, const uint8_t *pl)
 {
 	switch (h->type) {
 	case RDC_MSG_REG_WRITE:
@@ -1198,7 +1219,8 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		rdcd_irq_events(d);
 		break;
 	case RDC_MSG_VRAM_READ: {
-		uint32_t addr = rdc_proto_get32(pl), len = rdc_proto_get32(pl + 4);
+		uint32_t addr = rdc_proto_get32(pl),
+			 len = rdc_proto_get32(pl + 4);
 		uint8_t *p;
 
 		if (len > RDC_PROTO_VRAM_CHUNK) {
@@ -1263,11 +1285,13 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		rdcd_frame_grab(d, c, h, pl);
 		break;
 	case RDC_MSG_SUBSCRIBE: {
-		uint32_t ev = rdc_proto_get32(pl), every = rdc_proto_get32(pl + 4);
+		uint32_t ev = rdc_proto_get32(pl),
+			 every = rdc_proto_get32(pl + 4);
 		uint32_t enc = rdc_proto_get32(pl + 8);
 
 		if ((ev & ~(RDC_SUB_FRAMES | RDC_SUB_IRQ)) ||
-		    enc >= RDC_ENC_COUNT_ || ((ev & RDC_SUB_FRAMES) && !every)) {
+		    enc >= RDC_ENC_COUNT_ ||
+		    ((ev & RDC_SUB_FRAMES) && !every)) {
 			rdcd_reply(d, c, h, RDC_ST_INVAL, NULL, 0);
 			break;
 		}
@@ -1313,14 +1337,14 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 			rdcd_log(d, RDCD_LOG_INFO, "client %u has control",
 				 c->id);
 		}
-		rdcd_reply(d, c, h, d->ctl == c ? RDC_ST_OK : RDC_ST_BUSY,
-			   NULL, 0);
+		rdcd_reply(d, c, h, d->ctl == c ? RDC_ST_OK : RDC_ST_BUSY, NULL,
+			   0);
 		break;
 	case RDC_MSG_RELEASE:
 		if (d->ctl == c) {
 			d->ctl = NULL;
-			rdcd_log(d, RDCD_LOG_INFO,
-				 "client %u released control", c->id);
+			rdcd_log(d, RDCD_LOG_INFO, "client %u released control",
+				 c->id);
 		}
 		rdcd_reply(d, c, h, RDC_ST_OK, NULL, 0);
 		break;
@@ -1368,8 +1392,7 @@ static bool rdcd_touches_chip(const struct rdcd *d,
  * (chip.c), if it would touch the chip, except a RESET, which stops the
  * run.  Such a request is held, and its client not read further.
  */
-static bool rdcd_may_dispatch(const struct rdcd *d,
-			      const struct rdcd_client *c)
+static bool rdcd_may_dispatch(const struct rdcd *d, const struct rdcd_client *c)
 {
 	const struct rdc_proto_hdr *h = &c->hdr;
 	/* only a RESET that will act may overtake: one of an unknown kind
@@ -1419,8 +1442,7 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 			return;
 		if (c->hdr_got < RDC_PROTO_HDR_SIZE) {
 			k = recv(c->fd, c->hdrbuf + c->hdr_got,
-				 RDC_PROTO_HDR_SIZE - c->hdr_got,
-				 MSG_DONTWAIT);
+				 RDC_PROTO_HDR_SIZE - c->hdr_got, MSG_DONTWAIT);
 		} else {
 			if (c->body_got == c->body_cap) {
 				size_t cap = RDC_MAX(c->body_cap * 2,
@@ -1446,8 +1468,9 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 			if (errno == EINTR)
 				continue;
 			if (errno != EAGAIN && errno != EWOULDBLOCK) {
-				rdcd_log(d, RDCD_LOG_INFO, "client %u: recv: %s",
-					 c->id, strerror(errno));
+				rdcd_log(d, RDCD_LOG_INFO,
+					 "client %u: recv: %s", c->id,
+					 strerror(errno));
 				c->dead = true;
 			}
 			return;
@@ -1471,7 +1494,8 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 				if (c->pend != RDCD_PEND_NONE)
 					c->held = true;
 				else
-					rdcd_fatal(d, c, &c->hdr, RDC_ST_TOOBIG);
+					rdcd_fatal(d, c, &c->hdr,
+						   RDC_ST_TOOBIG);
 				return;
 			}
 			c->body_got = 0;

@@ -45,18 +45,18 @@
  * them.  Shorter transfers end on a short packet. */
 #define UDL_READ (65536u - 512u)
 /* Words per SUBMIT before it is sent (the protocol allows 256 K). */
-#define UDL_SUBMIT_WORDS (64u << 10)
-#define UDL_STAGE (UDL_SUBMIT_WORDS * 4u + 4096u)
-#define UDL_PAD_DEFAULT 3u /* dummy_hcd: ep2out, ep7out, ep12out, ep1out */
-#define UDL_PAD_MAX 8u
-#define UDL_INTF_STR "RDC-1 (DisplayLink command set)"
-#define UDL_KICK (SIGRTMIN + 5)
+#define UDL_SUBMIT_WORDS   (64u << 10)
+#define UDL_STAGE	   (UDL_SUBMIT_WORDS * 4u + 4096u)
+#define UDL_PAD_DEFAULT	   3u /* dummy_hcd: ep2out, ep7out, ep12out, ep1out */
+#define UDL_PAD_MAX	   8u
+#define UDL_INTF_STR	   "RDC-1 (DisplayLink command set)"
+#define UDL_KICK	   (SIGRTMIN + 5)
 #define UDL_CLAIM_EVERY_NS 1000000000ull
-#define UDL_EDID_INDEX 0xa1u /* udl's wIndex for EDID reads */
+#define UDL_EDID_INDEX	   0xa1u /* udl's wIndex for EDID reads */
 
-static const uint8_t udl_channel_std[16] = {0x57, 0xcd, 0xdc, 0xa7, 0x1c, 0x88,
-					    0x5e, 0x15, 0x60, 0xfe, 0xc6, 0x97,
-					    0x16, 0x3d, 0x47, 0xf2};
+static const uint8_t udl_channel_std[16] = { 0x57, 0xcd, 0xdc, 0xa7, 0x1c, 0x88,
+					     0x5e, 0x15, 0x60, 0xfe, 0xc6, 0x97,
+					     0x16, 0x3d, 0x47, 0xf2 };
 
 enum { T_OUT, T_REPLY, T_EP0, T_N };
 
@@ -214,7 +214,7 @@ static bool udl_write_all(int fd, const uint8_t *p, size_t n)
 static void udl_msg_hdr(struct rdcd_udl *u, uint8_t *p, uint16_t type,
 			uint32_t len)
 {
-	struct rdc_proto_hdr h = {.len = len, .type = type, .seq = ++u->seq};
+	struct rdc_proto_hdr h = { .len = len, .type = type, .seq = ++u->seq };
 
 	rdc_proto_hdr_encode(p, &h);
 }
@@ -232,8 +232,8 @@ static void udl_sub_close(struct rdcd_udl *u)
 static void udl_flush(struct rdcd_udl *u)
 {
 	udl_sub_close(u);
-	if (u->stage_len && !u->broken && !udl_write_all(u->ofd, u->stage,
-							   u->stage_len))
+	if (u->stage_len && !u->broken &&
+	    !udl_write_all(u->ofd, u->stage, u->stage_len))
 		u->broken = true;
 	u->stage_len = 0;
 }
@@ -245,8 +245,8 @@ static void udl_room(struct rdcd_udl *u, size_t n)
 		udl_flush(u);
 }
 
-static void udl_simple_msg(struct rdcd_udl *u, uint16_t type,
-			   const uint8_t *pl, uint32_t len)
+static void udl_simple_msg(struct rdcd_udl *u, uint16_t type, const uint8_t *pl,
+			   uint32_t len)
 {
 	udl_sub_close(u);
 	udl_room(u, RDC_PROTO_HDR_SIZE + len);
@@ -310,7 +310,7 @@ static void udl_out_begin(struct rdcd_udl *u, int fd)
 		.version = RDC_PROTO_VERSION,
 		.flags = RDC_HELLO_CONTROL,
 	};
-	struct rdc_udl_out out = {udl_out_words, udl_out_blank, u};
+	struct rdc_udl_out out = { udl_out_words, udl_out_blank, u };
 	uint8_t pl[RDC_PROTO_HELLO_FIXED];
 	size_t n = rdc_proto_hello_encode(pl, sizeof(pl), &h);
 
@@ -424,11 +424,12 @@ static bool udl_reply(struct rdcd_udl *u, int fd)
 				u->controlling = ctl;
 				pthread_mutex_unlock(&u->v.lock);
 				if (!ctl)
-					rdcd_log(u->v.d, RDCD_LOG_WARN,
-						 "udl:%s: another client controls "
-						 "the RDC-1: the host's drawing "
-						 "waits for control",
-						 u->v.dir);
+					rdcd_log(
+						u->v.d, RDCD_LOG_WARN,
+						"udl:%s: another client controls "
+						"the RDC-1: the host's drawing "
+						"waits for control",
+						u->v.dir);
 			}
 		}
 		left -= k;
@@ -516,8 +517,8 @@ static void udl_stall(struct rdcd_udl *u, const struct usb_ctrlrequest *s)
 		 "(wLength %u) not served: stall",
 		 u->v.dir, s->bRequestType, s->bRequest, le16toh(s->wValue),
 		 le16toh(s->wIndex), le16toh(s->wLength));
-	r = s->bRequestType & USB_DIR_IN ? read(u->v.ep0, &b, 0)
-					 : write(u->v.ep0, &b, 0);
+	r = s->bRequestType & USB_DIR_IN ? read(u->v.ep0, &b, 0) :
+					   write(u->v.ep0, &b, 0);
 	(void)r;
 }
 
@@ -544,7 +545,7 @@ static void udl_setup(struct rdcd_udl *u, const struct usb_ctrlrequest *s)
 				 u->v.dir, r);
 	} else if (vendor && in && s->bRequest == RDC_UDL_REQ_EDID &&
 		   le16toh(s->wIndex) == UDL_EDID_INDEX && wlen >= 1) {
-		uint8_t ans[2] = {0, u->edid[wval >> 8]}; /* status, byte */
+		uint8_t ans[2] = { 0, u->edid[wval >> 8] }; /* status, byte */
 
 		r = write(u->v.ep0, ans, wlen < 2 ? wlen : 2);
 	} else if (vendor && in && s->bRequest == RDC_UDL_REQ_STATS &&
@@ -574,9 +575,9 @@ static void udl_event(struct ffs_dev *v, const struct usb_functionfs_event *e)
 	case FUNCTIONFS_DISABLE:
 		pthread_mutex_lock(&u->v.lock);
 		u->v.enabled = false;
-		udl_session_end(u, e->type == FUNCTIONFS_BIND	  ? "bound again"
-				   : e->type == FUNCTIONFS_UNBIND ? "unbound"
-								  : "disabled");
+		udl_session_end(u, e->type == FUNCTIONFS_BIND ? "bound again" :
+				   e->type == FUNCTIONFS_UNBIND ? "unbound" :
+								  "disabled");
 		pthread_mutex_unlock(&u->v.lock);
 		break;
 	case FUNCTIONFS_ENABLE:
@@ -635,16 +636,16 @@ static int udl_parse(struct rdcd_udl *u, const char *spec)
 	return 0;
 }
 
-int rdcd_udl_open(const struct rdcd *d, const char *spec,
-		  struct rdcd_udl **out)
+int rdcd_udl_open(const struct rdcd *d, const char *spec, struct rdcd_udl **out)
 {
 	static void *(*const fn[T_N])(void *) = {
 		[T_OUT] = udl_out_thread,
 		[T_REPLY] = udl_reply_thread,
 		[T_EP0] = ffs_dev_ep0_thread,
 	};
-	uint8_t descs[12 + 8 + 2 * (USB_DT_INTERFACE_SIZE +
-				    (UDL_PAD_MAX + 1) * USB_DT_ENDPOINT_SIZE)];
+	uint8_t descs[12 + 8 +
+		      2 * (USB_DT_INTERFACE_SIZE +
+			   (UDL_PAD_MAX + 1) * USB_DT_ENDPOINT_SIZE)];
 	uint32_t preset = RDC_PRESET_COUNT;
 	struct rdcd_udl *u;
 	char name[16];

@@ -17,7 +17,7 @@
 
 #define XRGB_R(p) (((p) >> 16) & 0xffu)
 #define XRGB_G(p) (((p) >> 8) & 0xffu)
-#define XRGB_B(p) ((p) & 0xffu)
+#define XRGB_B(p) ((p)&0xffu)
 
 /*
  * BT.601 limited range in 8-bit fixed point (ITU-R BT.601 coefficients
@@ -35,7 +35,8 @@
 
 static inline uint8_t yuv_y(int r, int g, int b)
 {
-	return (uint8_t)(((66 * r + 129 * g + 25 * b + YUV_ROUND) >> YUV_SHIFT) +
+	return (uint8_t)(((66 * r + 129 * g + 25 * b + YUV_ROUND) >>
+			  YUV_SHIFT) +
 			 YUV_Y_OFF);
 }
 
@@ -75,8 +76,8 @@ int rdc_sink_fmt_by_name(const char *name)
 
 const char *rdc_sink_fmt_name(int fmt)
 {
-	return fmt >= 0 && fmt < RDC_SINK_FMT_COUNT ? sink_fmts[fmt].name
-						    : NULL;
+	return fmt >= 0 && fmt < RDC_SINK_FMT_COUNT ? sink_fmts[fmt].name :
+						      NULL;
 }
 
 uint32_t rdc_sink_fmt_fourcc(int fmt)
@@ -141,8 +142,9 @@ static void row_xrgb32(uint8_t *d, const uint32_t *s, uint32_t w)
 		__m128i v = _mm_loadu_si128((const __m128i *)(s + x));
 		__m128i o = _mm_or_si128(
 			_mm_slli_epi32(v, 24),
-			_mm_or_si128(_mm_and_si128(_mm_slli_epi32(v, 8), g_mask),
-				     _mm_and_si128(_mm_srli_epi32(v, 8), r_mask)));
+			_mm_or_si128(
+				_mm_and_si128(_mm_slli_epi32(v, 8), g_mask),
+				_mm_and_si128(_mm_srli_epi32(v, 8), r_mask)));
 
 		_mm_storeu_si128((__m128i *)(d + 4 * (size_t)x), o);
 	}
@@ -179,8 +181,9 @@ static void row_rgb24(uint8_t *d, const uint32_t *s, uint32_t w)
 			_mm_or_si128(_mm_and_si128(_mm_srli_epi32(v, 16), ff),
 				     _mm_and_si128(v, ff00)),
 			_mm_slli_epi32(_mm_and_si128(v, ff), 16));
-		__m128i q = _mm_or_si128(_mm_and_si128(p, lo),
-					 _mm_and_si128(_mm_srli_epi64(p, 8), hi));
+		__m128i q =
+			_mm_or_si128(_mm_and_si128(p, lo),
+				     _mm_and_si128(_mm_srli_epi64(p, 8), hi));
 
 		_mm_storel_epi64((__m128i *)(d + 3 * (size_t)x), q);
 		_mm_storel_epi64((__m128i *)(d + 3 * (size_t)x + 6),
@@ -234,8 +237,8 @@ static inline __m128i yuyv_mul(__m128i c, int k)
  */
 static uint32_t yuyv_sse2(uint8_t *d, const uint32_t *s, uint32_t pairs)
 {
-	const __m128i c_off = _mm_set1_epi32(2 * YUV_ROUND +
-					     (YUV_C_OFF << (YUV_SHIFT + 1)));
+	const __m128i c_off =
+		_mm_set1_epi32(2 * YUV_ROUND + (YUV_C_OFF << (YUV_SHIFT + 1)));
 	uint32_t i = 0;
 
 	for (; i + 4 <= pairs; i += 4) {
@@ -260,10 +263,10 @@ static uint32_t yuyv_sse2(uint8_t *d, const uint32_t *s, uint32_t pairs)
 						   yuyv_mul(b2, 18)));
 		u = _mm_srli_epi32(u, YUV_SHIFT + 1);
 		v = _mm_srli_epi32(v, YUV_SHIFT + 1);
-		_mm_storeu_si128((__m128i *)(d + 4 * (size_t)i),
-				 _mm_or_si128(y, _mm_or_si128(
-							 _mm_slli_epi32(u, 8),
-							 _mm_slli_epi32(v, 24))));
+		_mm_storeu_si128(
+			(__m128i *)(d + 4 * (size_t)i),
+			_mm_or_si128(y, _mm_or_si128(_mm_slli_epi32(u, 8),
+						     _mm_slli_epi32(v, 24))));
 	}
 	return i;
 }
@@ -305,7 +308,7 @@ static void row_yuyv(uint8_t *d, const uint32_t *s, uint32_t w)
 int rdc_sink_convert(int fmt, void *dst, size_t dst_bpl,
 		     const struct rdc_frame *f)
 {
-	void (*row)(uint8_t *d, const uint32_t *s, uint32_t w);
+	void (*row)(uint8_t * d, const uint32_t *s, uint32_t w);
 	size_t bpl = rdc_sink_fmt_bytesperline(fmt, f ? f->width : 0);
 
 	if (!dst || !f || !f->xrgb || !bpl || dst_bpl < bpl ||

@@ -11,7 +11,7 @@
 #include "sink_priv.h"
 
 #define PNG_PREFIX_MAX 64
-#define PNG_PATH_MAX 4096
+#define PNG_PATH_MAX   4096
 
 struct png_sink {
 	char *dir;

@@ -37,8 +37,7 @@ int rdc_sink_opt_next(char **cursor, char **key, char **val)
 	return 1;
 }
 
-int rdc_sink_opt_u32(const char *val, uint32_t min, uint32_t max,
-		     uint32_t *out)
+int rdc_sink_opt_u32(const char *val, uint32_t min, uint32_t max, uint32_t *out)
 {
 	unsigned long long v;
 	char *end;
@@ -106,8 +105,8 @@ int rdc_sink_open(const char *spec, rdc_sink **out)
 int rdc_sink_frame(rdc_sink *s, const struct rdc_frame *f)
 {
 	if (!s || !f || !f->xrgb || !f->width || !f->height ||
-	    f->width > RDC_CRTC_MAX_DISPLAY || f->height > RDC_CRTC_MAX_DISPLAY ||
-	    f->stride < f->width)
+	    f->width > RDC_CRTC_MAX_DISPLAY ||
+	    f->height > RDC_CRTC_MAX_DISPLAY || f->stride < f->width)
 		return RDC_E_INVAL;
 	s->st.frames++;
 	return s->ops->frame(s, f);

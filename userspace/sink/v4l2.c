@@ -105,8 +105,8 @@ static int v4l2_connect(struct v4l2_sink *v)
 		return rdc_err_detail(RDC_E_NOSYS, "%s: not a V4L2 device",
 				      v->path);
 	}
-	caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps
-							  : cap.capabilities;
+	caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps :
+							   cap.capabilities;
 	/* v4l2loopback's caps tell its state, not what it can do: with
 	 * exclusive_caps=1 it stops announcing OUTPUT once a write() writer
 	 * has been, and a new writer must still get in. */
@@ -175,7 +175,8 @@ static int v4l2_negotiate(rdc_sink *s, const struct rdc_frame *f)
 {
 	struct v4l2_sink *v = s->priv;
 	size_t bpl = rdc_sink_fmt_bytesperline(v->fmt, f->width);
-	uint32_t w = f->width + (v->fmt == RDC_SINK_FMT_YUYV ? f->width & 1 : 0);
+	uint32_t w =
+		f->width + (v->fmt == RDC_SINK_FMT_YUYV ? f->width & 1 : 0);
 	uint32_t alt = rdc_sink_fmt_fourcc_alt(v->fmt);
 	int out_type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
 	struct v4l2_format vf;

@@ -20,15 +20,15 @@
 #include <netinet/in.h>
 #include <rfb/rfb.h>
 
-#define VNC_BITS_PER_SAMPLE 8
+#define VNC_BITS_PER_SAMPLE   8
 #define VNC_SAMPLES_PER_PIXEL 3
-#define VNC_BYTES_PER_PIXEL 4
-#define VNC_RED_SHIFT 16
-#define VNC_GREEN_SHIFT 8
-#define VNC_BLUE_SHIFT 0
-#define VNC_PORT_MIN 1
-#define VNC_PORT_MAX 65535
-#define VNC_ADDR_MAX 64
+#define VNC_BYTES_PER_PIXEL   4
+#define VNC_RED_SHIFT	      16
+#define VNC_GREEN_SHIFT	      8
+#define VNC_BLUE_SHIFT	      0
+#define VNC_PORT_MIN	      1
+#define VNC_PORT_MAX	      65535
+#define VNC_ADDR_MAX	      64
 
 struct vnc_sink {
 	rfbScreenInfoPtr screen;
@@ -201,7 +201,8 @@ static int vnc_open(rdc_sink *s, const char *args)
 		v->listen = a.s_addr;
 		/* An explicit IPv4 address: IPv6 follows it to "any" only
 		 * when IPv4 is "any". */
-		strcpy(v->listen6, a.s_addr == htonl(INADDR_ANY) ? "::" : "::1");
+		strcpy(v->listen6,
+		       a.s_addr == htonl(INADDR_ANY) ? "::" : "::1");
 		ret = 0;
 	}
 	free(dup);
