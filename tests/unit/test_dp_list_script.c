@@ -84,6 +84,65 @@ static void test_list_stores(void **state)
 	assert_int_equal(res.op_count[RDC_OP_CALL], 4);
 }
 
+/*
+ * host-blit in a list is kept, not drawn: the list holds exactly the
+ * HOST_BLIT commands rdc_host_blit would send (split in pieces when
+ * large), and calling it draws what the statement draws outside a list.
+ */
+static void test_list_host_blit(void **state)
+{
+	rdc_dev *dev = *state, *ref;
+	static uint32_t got[300 * 20], want[300 * 20];
+	const uint32_t head[5] = {
+		RDC_CMD(RDC_OP_HOST_BLIT, 0, 2 + 2 * 2),
+		RDC_XY(5, 6),
+		RDC_WH(2, 2),
+		0x00ff0000u,
+		0x0000ff00u,
+	};
+	uint32_t w[5], cmds0, cmds1;
+
+	assert_int_equal(run(dev, "mode 320x200 xrgb8888\n"), 0);
+	assert_int_equal(rdc_reg_read(dev, RDC_REG_PERF_CMDS, &cmds0), 0);
+	assert_int_equal(run(dev, "list 0x80000\n"
+				  "host-blit 5 6 2 2 data #ff0000 #00ff00 "
+				  "#0000ff #ffffff\n"
+				  "host-blit 10 40 300 20 pattern noise 7\n"
+				  "ret\n"
+				  "end\n"),
+			 0);
+	assert_int_equal(rdc_reg_read(dev, RDC_REG_PERF_CMDS, &cmds1), 0);
+	assert_int_equal(cmds1, cmds0);
+	assert_int_equal(res.op_count[RDC_OP_HOST_BLIT], 0);
+	assert_int_equal(px(dev, 5, 6), 0);
+	assert_int_equal(px(dev, 10, 40), 0);
+	assert_int_equal(rdc_vram_read(dev, LADDR, w, sizeof(w)), 0);
+	assert_memory_equal(w, head, sizeof(head));
+
+	assert_int_equal(run(dev, "call 0x80000\n"), 0);
+	/* the call, two pieces of the large blit, the small one, RET */
+	assert_int_equal(res.op_count[RDC_OP_CALL], 5);
+	assert_int_equal(px(dev, 5, 6), 0x00ff0000u);
+	assert_int_equal(px(dev, 6, 7), 0x00ffffffu);
+
+	/* the same statement outside a list, on a second device */
+	assert_int_equal(rdc_open("sim:vram=4M", &ref), 0);
+	assert_int_equal(run(ref, "mode 320x200 xrgb8888\n"
+				  "host-blit 10 40 300 20 pattern noise 7\n"),
+			 0);
+	for (uint32_t y = 0; y < 20; y++) {
+		assert_int_equal(rdc_vram_read(dev, ((40 + y) * 320 + 10) * 4,
+					       got + y * 300, 300 * 4),
+				 0);
+		assert_int_equal(rdc_vram_read(ref, ((40 + y) * 320 + 10) * 4,
+					       want + y * 300, 300 * 4),
+				 0);
+	}
+	assert_memory_equal(got, want, sizeof(want));
+	assert_int_not_equal(want[0] | want[300 * 20 - 1], 0);
+	rdc_close(ref);
+}
+
 static void test_list_errors(void **state)
 {
 	rdc_dev *dev = *state;
@@ -186,6 +245,8 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test_setup_teardown(test_list_stores, dev_setup,
+						dev_teardown),
+		cmocka_unit_test_setup_teardown(test_list_host_blit, dev_setup,
 						dev_teardown),
 		cmocka_unit_test_setup_teardown(test_list_errors, dev_setup,
 						dev_teardown),

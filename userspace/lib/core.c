@@ -692,17 +692,17 @@ static uint32_t rdc_blit_piece_width(uint32_t fmt)
 	return px & ~31u;
 }
 
-int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
-		  const void *pixels, size_t pitch)
+int rdc_host_blit_encode(uint32_t fmt, int x, int y, uint32_t w, uint32_t h,
+			 const void *pixels, size_t pitch,
+			 int (*emit)(void *ctx, const uint32_t *cmd, size_t n),
+			 void *ctx)
 {
 	const uint8_t *src = pixels;
-	uint32_t fmt, piece_w, *cmd;
+	uint32_t piece_w, *cmd;
 	int ret = 0;
 
-	if (!dev || !pixels || w > RDC_SIZE_MAX || h > RDC_SIZE_MAX)
-		return RDC_E_INVAL;
-	fmt = dev->dst_format;
-	if (fmt >= RDC_FMT_COUNT)
+	if (!pixels || !emit || w > RDC_SIZE_MAX || h > RDC_SIZE_MAX ||
+	    fmt >= RDC_FMT_COUNT)
 		return RDC_E_INVAL;
 	if (!w || !h)
 		return 0;
@@ -742,11 +742,25 @@ int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
 					cmd[n++] = rdc_ld32(pad);
 				}
 			}
-			ret = rdc_submit(dev, cmd, n);
+			ret = emit(ctx, cmd, n);
 		}
 	}
 	free(cmd);
 	return ret;
+}
+
+static int rdc_host_blit_submit(void *ctx, const uint32_t *cmd, size_t n)
+{
+	return rdc_submit(ctx, cmd, n);
+}
+
+int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
+		  const void *pixels, size_t pitch)
+{
+	if (!dev)
+		return RDC_E_INVAL;
+	return rdc_host_blit_encode(dev->dst_format, x, y, w, h, pixels, pitch,
+				    rdc_host_blit_submit, dev);
 }
 
 /* ---- Frames -------------------------------------------------------------- */

@@ -231,6 +231,16 @@ void rdc_err_detail_clear(void);
 /* RDC_E_DEVICE if the device has a pending error, else 0 (core.c). */
 int rdc_check_error(rdc_dev *dev);
 
+/*
+ * The HOST_BLIT commands of rdc_host_blit for a w x h rectangle of `fmt`
+ * pixels (core.c): `emit` gets each command, its header included, and
+ * its error ends the encoding.  The .rdl `list` keeps them for VRAM.
+ */
+int rdc_host_blit_encode(uint32_t fmt, int x, int y, uint32_t w, uint32_t h,
+			 const void *pixels, size_t pitch,
+			 int (*emit)(void *ctx, const uint32_t *cmd, size_t n),
+			 void *ctx);
+
 /* The last complete frame in a malloc'd buffer (core.c). */
 int rdc_frame_alloc(rdc_dev *dev, uint32_t **pix, uint32_t *width,
 		    uint32_t *height);

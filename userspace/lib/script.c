@@ -398,6 +398,11 @@ static int rdl_pattern(struct rdl *r, size_t i, uint32_t fmt, uint32_t w,
 		       name);
 }
 
+static int rdl_host_blit_keep(void *b, const uint32_t *cmd, size_t n)
+{
+	return rdc_batch_cmd(b, RDC_CMD_OP(cmd[0]), 0, cmd + 1, n - 1);
+}
+
 static int st_host_blit(struct rdl *r, uint32_t op)
 {
 	uint32_t fmt = rdl_dst_format(r), w, h;
@@ -443,7 +448,12 @@ static int st_host_blit(struct rdl *r, uint32_t op)
 			      "host-blit X Y W H then 'pattern NAME ...' or "
 			      "'data PIXELS...'");
 	}
-	if (!ret) {
+	if (!ret && r->list_on) {
+		/* the same commands as rdc_host_blit, kept in the list */
+		ret = rdc_host_blit_encode(fmt, c[0], c[1], w, h, pix, pitch,
+					   rdl_host_blit_keep, r->b);
+		ret = rdl_encoded(r, op, ret);
+	} else if (!ret) {
 		uint64_t busy0, busy1;
 		uint32_t cmds0, cmds1;
 
