@@ -1119,7 +1119,7 @@ int rdcfb_fb_setup(struct fb_info *info, const char *mode)
 	info->screen_buffer = par->chip->vram;
 	info->screen_size = par->chip->hw.vram_size;
 	info->pseudo_palette = par->pseudo_palette;
-	info->flags = FBINFO_DEFAULT | FBINFO_VIRTFB | FBINFO_READS_FAST |
+	info->flags = FBINFO_VIRTFB | FBINFO_READS_FAST |
 		      FBINFO_HWACCEL_FILLRECT | FBINFO_HWACCEL_COPYAREA |
 		      FBINFO_HWACCEL_IMAGEBLIT | FBINFO_HWACCEL_YPAN;
 	strscpy(info->fix.id, RDCFB_ID, sizeof(info->fix.id));

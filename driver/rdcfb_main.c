@@ -13,6 +13,7 @@
 #include <linux/string.h>
 
 #include "rdcfb.h"
+#include "rdcfb_compat.h"
 
 #define RDCFB_VRAM_MIN (1u << 20) /* holds 640x480 at 8 bpp, and more */
 #define RDCFB_VRAM_MAX (256u << 20)
@@ -224,7 +225,7 @@ err_chip:
  * references).  Their ioctls meanwhile answer -ENODEV.  The module itself
  * cannot go while a client holds the device: fb_open pins it.
  */
-static int rdcfb_remove(struct platform_device *pdev)
+static void rdcfb_remove(struct platform_device *pdev)
 {
 	struct fb_info *info = platform_get_drvdata(pdev);
 	struct rdcfb_par *par = info->par;
@@ -233,12 +234,12 @@ static int rdcfb_remove(struct platform_device *pdev)
 	rdcfb_chip_stop(par->chip);
 	rdcfb_gpio_unregister(par->chip);
 	unregister_framebuffer(info);
-	return 0;
 }
+RDCFB_PLATFORM_REMOVE(rdcfb_platform_remove, rdcfb_remove)
 
 static struct platform_driver rdcfb_driver = {
 	.probe = rdcfb_probe,
-	.remove = rdcfb_remove,
+	.remove = rdcfb_platform_remove,
 	.driver = {
 		.name = RDCFB_NAME,
 		.dev_groups = rdcfb_groups,
