@@ -259,3 +259,59 @@ usb_replug() {
 usb_rdcd_alive() {
 	[ -n "$USB_RDCD_PID" ] && usb_running $USB_RDCD_PID
 }
+
+# ---- The DisplayLink personality (docs/usb.md): udl-*.sh ----------------------
+# udl_vars: the gadget's IDs and FunctionFS directory, rdcd's socket as an
+# observer (OBS) and the DRM client (DRMP); call after usb_require.
+udl_vars() {
+	USB_VID=17e9
+	USB_PID=5244
+	USB_FFS=/dev/ffs-udl
+	OBS="unix:$USB_SOCK?observe"
+	DRMP=$B/drm_pattern
+}
+
+# udl_up: the gadget with DisplayLink's IDs, rdcd --listen udl: (paced,
+# 1024x768 its preferred mode) and --listen unix:$USB_SOCK, bound to the
+# UDC; returns once the host has it configured.
+udl_up() {
+	"$GADGET" up --personality udl --dir "$USB_FFS" \
+		--serial "$USB_SERIAL" >"$T/gadget.log" 2>&1 ||
+		{ cat "$T/gadget.log"; return 1; }
+	rm -f "$USB_SOCK" "$T/rdcd.ready"
+	"$USB_RDCD" --listen "udl:$USB_FFS" --listen "unix:$USB_SOCK" \
+		--ready-file "$T/rdcd.ready" --mode 1024x768 -v \
+		>"$USB_RDCD_LOG" 2>&1 &
+	USB_RDCD_PID=$!
+	i=0
+	while ! [ -s "$T/rdcd.ready" ]; do
+		[ $i -lt 300 ] && kill -0 $USB_RDCD_PID 2>/dev/null ||
+			{ cat "$USB_RDCD_LOG"; return 1; }
+		sleep 0.1
+		i=$((i + 1))
+	done
+	"$GADGET" bind >>"$T/gadget.log" 2>&1 || { cat "$T/gadget.log"; return 1; }
+	usb_wait present 30
+}
+
+# udl_card: the sysfs directory of the udl card, once its connector is
+# connected (the EDID read), at most $1 s
+udl_card() {
+	i=0
+	while [ $i -lt $(($1 * 10)) ]; do
+		for c in /sys/class/drm/card[0-9]*; do
+			case $c in *-*) continue ;; esac
+			[ "$(basename "$(readlink -f "$c/device/driver")")" = udl ] ||
+				continue
+			for k in "$c"/"$(basename "$c")"-*; do
+				[ "$(cat "$k/status" 2>/dev/null)" = connected ] &&
+					{ CARD=$c; CONN=$k; return 0; }
+			done
+		done
+		sleep 0.1
+		i=$((i + 1))
+	done
+	echo "no udl card with a connected connector after $1 s"
+	ls -l /sys/class/drm/ 2>&1
+	return 1
+}

@@ -17,61 +17,15 @@
 . "$RDC_TREE/tests/vm/lib.sh"
 echo "# guest uptime at the start: $(cut -d' ' -f1 /proc/uptime) s"
 
-DRMP=$B/drm_pattern
 usb_require
+udl_vars
 [ -x "$DRMP" ] || { echo "drm_pattern is not built (no libdrm-dev?)"; exit 77; }
 command -v modetest >/dev/null || { echo "modetest missing (libdrm-tests)"; exit 77; }
-USB_VID=17e9
-USB_PID=5244
-USB_FFS=/dev/ffs-udl
-OBS="unix:$USB_SOCK?observe"
 PRESETS="320x200 640x480 800x600 1024x768 1280x720 1920x1080"
 
 # udlfb claims the same IDs: it must not be the one that binds
 check "udlfb is not loaded (udl, not udlfb, drives the device)" \
 	sh -c '! grep -q "^udlfb " /proc/modules'
-
-udl_up() {
-	"$GADGET" up --personality udl --dir "$USB_FFS" \
-		--serial "$USB_SERIAL" >"$T/gadget.log" 2>&1 ||
-		{ cat "$T/gadget.log"; return 1; }
-	rm -f "$USB_SOCK" "$T/rdcd.ready"
-	"$USB_RDCD" --listen "udl:$USB_FFS" --listen "unix:$USB_SOCK" \
-		--ready-file "$T/rdcd.ready" --mode 1024x768 -v \
-		>"$USB_RDCD_LOG" 2>&1 &
-	USB_RDCD_PID=$!
-	i=0
-	while ! [ -s "$T/rdcd.ready" ]; do
-		[ $i -lt 300 ] && kill -0 $USB_RDCD_PID 2>/dev/null ||
-			{ cat "$USB_RDCD_LOG"; return 1; }
-		sleep 0.1
-		i=$((i + 1))
-	done
-	"$GADGET" bind >>"$T/gadget.log" 2>&1 || { cat "$T/gadget.log"; return 1; }
-	usb_wait present 30
-}
-
-# udl_card: the sysfs directory of the udl card, once its connector is
-# connected (the EDID read), at most $1 s
-udl_card() {
-	i=0
-	while [ $i -lt $(($1 * 10)) ]; do
-		for c in /sys/class/drm/card[0-9]*; do
-			case $c in *-*) continue ;; esac
-			[ "$(basename "$(readlink -f "$c/device/driver")")" = udl ] ||
-				continue
-			for k in "$c"/"$(basename "$c")"-*; do
-				[ "$(cat "$k/status" 2>/dev/null)" = connected ] &&
-					{ CARD=$c; CONN=$k; return 0; }
-			done
-		done
-		sleep 0.1
-		i=$((i + 1))
-	done
-	echo "no udl card with a connected connector after $1 s"
-	ls -l /sys/class/drm/ 2>&1
-	return 1
-}
 
 dmesg -c >/dev/null 2>&1
 check "the gadget (DisplayLink IDs) enumerates" udl_up

@@ -1,0 +1,140 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only
+# The DisplayLink personality's whole loop and life cycle (docs/usb.md),
+# beside udl-drm (which checks binding, modes and exact frames):
+# - fbcon on udl's fbdev emulation: text written to the console shows in
+#   the RDC-1's frame, inside the text's character cells and nowhere else;
+# - kernel DRM -> USB -> RDC-1 -> `rdcctl stream` (rdcd's observer) ->
+#   v4l2loopback -> ffmpeg: the frames ffmpeg reads are drm_pattern's
+#   pattern through RGB565 and rgb24, exactly, at each 640x480 mode DRM
+#   offers (the preset, and the CTA-861 twin DRM adds at 25.2 MHz, which
+#   the CRTC scans at that clock);
+# - unplug (unbind the UDC) while a client draws full frames: udl lets go
+#   (the client gets ENODEV), no oops or warning in dmesg, rdcd stays up;
+#   binding again brings a connected card back and a pattern draws exactly.
+# vm-module: dummy_hcd
+# vm-module: libcomposite
+# vm-module: usb_f_fs
+# vm-module: udl
+# vm-module: v4l2loopback devices=1 exclusive_caps=1 video_nr=0 card_label=rdc
+. "$RDC_TREE/tests/vm/lib.sh"
+echo "# guest uptime at the start: $(cut -d' ' -f1 /proc/uptime) s"
+
+usb_require
+udl_vars
+[ -x "$DRMP" ] || { echo "drm_pattern is not built (no libdrm-dev?)"; exit 77; }
+command -v modetest >/dev/null || { echo "modetest missing (libdrm-tests)"; exit 77; }
+command -v stty >/dev/null || { echo "stty missing"; exit 77; }
+
+udl_ready() {
+	udl_up && udl_card 60
+}
+dmesg -c >/dev/null 2>&1
+check "the gadget enumerates and udl's connector is connected" udl_ready
+
+# ---- fbcon ---------------------------------------------------------------------
+fbdev_udl() {
+	for f in /sys/class/graphics/fb[0-9]*; do
+		grep -q udl "$f/name" 2>/dev/null &&
+			{ echo "$(basename "$f"): $(cat "$f/name")"; return 0; }
+	done
+	return 1
+}
+check "the fbdev emulation gives /dev/fbN (udl's)" fbdev_udl
+fbcon_bound() {
+	v=$(fbcon_vt) && cat "$v/name" && [ "$(cat "$v/bind")" = 1 ]
+}
+check "fbcon is bound" fbcon_bound
+TTY=/dev/tty1
+# no blinking cursor: the frame changes only with the text
+echo 0 >/sys/class/graphics/fbcon/cursor_blink 2>/dev/null
+printf '\033[?25l\033[2J\033[H' >$TTY
+check "the cleared console: the RDC-1's frame is black" \
+	"$DRMP" --ink "$OBS" 0,0,0,0
+crc0=$("$DRMP" --crc "$OBS")
+# the character cell: the frame's size over the console's rows and columns
+set -- $(stty -F $TTY size) 0 0
+rows=$1
+cols=$2
+text="RDC-1 udl fbcon"
+printf '\033[5;10H%s' "$text" >$TTY
+fw=$((1024 / (cols ? cols : 1)))
+fh=$((768 / (rows ? rows : 1)))
+echo "# console $cols x $rows, cells ${fw}x$fh"
+check "console text: lit pixels in its cells (row 5, column 10) only" \
+	"$DRMP" --ink "$OBS" $((9 * fw)),$((4 * fh)),$((${#text} * fw)),$fh
+crc1=$("$DRMP" --crc "$OBS")
+check "the frame's CRC changed with the text" sh -c \
+	'echo "CRC $1 -> $2"; [ -n "$1" ] && [ -n "$2" ] && [ "$1" != "$2" ]' \
+	sh "$crc0" "$crc1"
+
+# ---- DRM -> USB -> RDC-1 -> v4l2loopback -> ffmpeg ------------------------------
+# drm_pattern holds the mode while this runs, then compares what ffmpeg
+# wrote with its pattern
+cat >"$T/v4l2-loop.sh" <<'EOF'
+. "$RDC_TREE/tests/vm/lib.sh"
+writer_start --from "$1" --format rgb24
+wait_device 60 || { echo "no format on $DEV"; writer_stop; exit 1; }
+rm -f "$T/ff.raw"
+ffmpeg -nostdin -hide_banner -loglevel error -f v4l2 -i "$DEV" \
+	-frames:v 3 -c:v rawvideo -f rawvideo -y "$T/ff.raw"
+rc=$?
+writer_stop
+exit $rc
+EOF
+modetest -M udl -c >"$T/modetest.txt" 2>&1
+# "#1 640x480 59.94 640 656 752 800 480 490 492 525 25175 flags: ..."
+awk '$1 ~ /^#[0-9]+$/ && $2 == "640x480"' "$T/modetest.txt" | sed 's/^ */# /'
+clocks=$(awk '$1 ~ /^#[0-9]+$/ && $2 == "640x480" && $12 ~ /^[0-9]+$/ {
+	print $12 }' "$T/modetest.txt")
+check "DRM offers 640x480 twice (the preset and its CTA-861 twin)" \
+	test "$(echo $clocks | wc -w)" = 2
+# the whole loop at the first (ffmpeg starts slowly under TCG), the
+# frame and the CRTC's clock at the other
+loop_done=""
+for c in $clocks; do
+	if [ -z "$loop_done" ]; then
+		check "640x480 at $c kHz: ffmpeg reads the pattern via v4l2loopback" \
+			"$DRMP" --uri "$OBS" --mode 640x480 --clock "$c" \
+			--exec "sh $T/v4l2-loop.sh '$OBS'" --raw "$T/ff.raw" rgb24
+		loop_done=1
+	else
+		check "640x480 at $c kHz: the frame, at that pixel clock" \
+			"$DRMP" --uri "$OBS" --mode 640x480 --clock "$c"
+	fi
+done
+
+# ---- unplug while drawing, and back ---------------------------------------------
+"$DRMP" --mode 1024x768 --loop >"$T/loop.log" 2>&1 &
+loop=$!
+sleep 1
+dmesg -c >/dev/null 2>&1
+check "unplug (unbind the UDC) while a client draws" usb_unplug
+check "the drawing client sees the card go and exits" sh -c '
+	i=0
+	while kill -0 $1 2>/dev/null && [ $i -lt 300 ]; do
+		sleep 0.1
+		i=$((i + 1))
+	done
+	! kill -0 $1 2>/dev/null' sh $loop
+kill $loop 2>/dev/null
+wait $loop
+echo "# the drawing client's exit status $?: $(tr '\n' ' ' <"$T/loop.log")"
+dmesg >"$T/dmesg.txt" 2>&1
+# udl logs a URB it could not submit once the device has gone (-ENODEV,
+# docs/usb.md): that, and no oops, BUG, warning or other error
+check "dmesg after the unplug: no oops, BUG, warning or other error" sh -c '
+	grep -Ei "udl|drm|usb" "$1" | sed "s/^/    /"
+	! grep -Ei "oops|bug:|warn|call trace|error|fail" "$1" |
+	  grep -v "udl_submit_urb.*usb_submit_urb error ffffffed"' \
+	sh "$T/dmesg.txt"
+check "rdcd still runs" usb_rdcd_alive
+replug() {
+	usb_replug && udl_card 60
+}
+check "binding again brings a connected card back" replug
+check "and a pattern draws exactly again (800x600)" \
+	"$DRMP" --uri "$OBS" --mode 800x600
+check "the gadget goes down cleanly" usb_gadget_down
+echo "# guest uptime at the end: $(cut -d' ' -f1 /proc/uptime) s"
+finish
