@@ -156,6 +156,24 @@ static void test_bad_messages(void **state)
 	assert_true(netd_closed(fd));
 	close(fd);
 	assert_serving(&d);
+
+	/* a malformed HELLO (short, or a token_len that disagrees with the
+	 * payload) is refused as any HELLO is: answered and closed */
+	for (int k = 0; k < 2; k++) {
+		fd = netd_connect(d.sock);
+		assert_true(fd >= 0);
+		memset(b, 0, sizeof(b));
+		rdc_proto_put32(b, RDC_PROTO_MAGIC);
+		rdc_proto_put32(b + 4, RDC_PROTO_VERSION);
+		rdc_proto_put32(b + 16, 5); /* token_len, no token */
+		assert_int_equal(netd_call(fd, RDC_MSG_HELLO, 1, b,
+					   k ? RDC_PROTO_HELLO_FIXED : 12, NULL,
+					   0),
+				 RDC_ST_MALFORMED);
+		assert_true(netd_closed(fd));
+		close(fd);
+	}
+	assert_serving(&d);
 	assert_true(netd_log_has(&d, "message too big"));
 	assert_true(netd_log_has(&d, "bad magic or version"));
 	assert_int_equal(netd_stop(&d), 0);

@@ -23,6 +23,7 @@
 #ifndef RDC_PROTO_H
 #define RDC_PROTO_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -184,6 +185,15 @@ void rdc_proto_hdr_decode(const uint8_t *p, struct rdc_proto_hdr *h);
  * outside enum rdc_msg_type).
  */
 int rdc_proto_hdr_check(const struct rdc_proto_hdr *h, uint32_t max_len);
+
+/*
+ * Whether the daemon closes the connection after answering a request of
+ * `type` with `status` (the one place that says so): after TOOBIG (the
+ * stream cannot be resynchronised) and after a refused HELLO, whatever
+ * the reason (MALFORMED, VERSION, AUTH, BUSY).  ORDER, the answer to a
+ * second HELLO, and every other error leave the connection open.
+ */
+bool rdc_proto_reply_closes(uint32_t type, uint32_t status);
 
 /*
  * Check a request's payload size against its type (HELLO excepted: see

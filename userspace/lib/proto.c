@@ -41,6 +41,14 @@ int rdc_proto_hdr_check(const struct rdc_proto_hdr *h, uint32_t max_len)
 	return 0;
 }
 
+bool rdc_proto_reply_closes(uint32_t type, uint32_t status)
+{
+	if (status == RDC_ST_TOOBIG)
+		return true;
+	return type == RDC_MSG_HELLO && status != RDC_ST_OK &&
+	       status != RDC_ST_ORDER;
+}
+
 int rdc_proto_request_check(const struct rdc_proto_hdr *h)
 {
 	uint32_t len = h->len;

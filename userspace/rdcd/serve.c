@@ -23,7 +23,6 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include "hw.h"
 #include "rdcd.h"
 
 /* librdc errors as wire status codes: the one place that maps them. */
@@ -238,13 +237,14 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 static void rdcd_frame_to_sinks(struct rdcd *d, const uint32_t *xrgb,
 				uint32_t w, uint32_t h, uint64_t number)
 {
-	const struct rdc_timing *t = &d->hw->crtc.cur;
+	struct rdc_timing tm, *t = &tm;
 	struct rdc_frame f = { .xrgb = xrgb,
 			       .width = w,
 			       .height = h,
 			       .stride = w,
 			       .seq = number };
 
+	rdc_hw_timing(d->hw, t);
 	if (rdc_sink_interval_timing(t->h_total, t->v_total, t->pixclk_khz,
 				     &f.interval_num, &f.interval_den))
 		f.interval_num = f.interval_den = 0;
@@ -549,6 +549,8 @@ static uint8_t *rdcd_reply(struct rdcd *d, struct rdcd_client *c,
 		return NULL;
 	}
 	rdcd_obuf_hdr(b, req->type, RDC_MSGF_REPLY, req->seq, status);
+	if (rdc_proto_reply_closes(req->type, status))
+		c->closing = true; /* once this reply is out */
 	if (n && p)
 		memcpy(b->data + RDC_PROTO_HDR_SIZE, p, n);
 	else if (n)
@@ -569,7 +571,10 @@ static void rdcd_reply_err(struct rdcd *d, struct rdcd_client *c,
 	rdcd_reply(d, c, req, rdcd_status_from_error(err), NULL, 0);
 }
 
-/* An error after which the stream cannot go on: reply, then hang up. */
+/*
+ * An error after which the stream cannot go on: reply, then hang up
+ * (rdcd_reply does, as rdc_proto_reply_closes says).
+ */
 static void rdcd_fatal(struct rdcd *d, struct rdcd_client *c,
 		       const struct rdc_proto_hdr *req, uint32_t status)
 {
@@ -581,7 +586,6 @@ static void rdcd_fatal(struct rdcd *d, struct rdcd_client *c,
 		rdcd_log(d, RDCD_LOG_WARN, "client %u (%s): %s; closing", c->id,
 			 c->peer, rdcd_status_name(status));
 	rdcd_reply(d, c, req, status, NULL, 0);
-	c->closing = true;
 }
 
 /*
@@ -712,8 +716,14 @@ static void rdcd_hello(struct rdcd *d, struct rdcd_client *c,
 	rdcd_reply(d, c, h, RDC_ST_OK, out, sizeof(out));
 }
 
+/* A wait's budget as every backend of librdc defaults it: 0 = ten seconds. */
+static uint64_t rdcd_wait_budget(uint64_t budget)
+{
+	return budget ? budget : RDC_WAIT_BUDGET_DEFAULT;
+}
+
 static int rdcd_wait_from_proto(const uint8_t *pl, size_t len,
-				struct rdc_wait *w)
+				struct rdc_hw_wait *w)
 {
 	struct rdc_proto_wait pw;
 	int st = rdc_proto_wait_decode(pl, len, &pw);
@@ -723,7 +733,7 @@ static int rdcd_wait_from_proto(const uint8_t *pl, size_t len,
 	memset(w, 0, sizeof(*w));
 	if (pw.budget > (uint64_t)RDCD_MAX_BUDGET_S * RDC_DEFAULT_CORE_HZ)
 		return RDC_ST_RANGE;
-	w->budget = pw.budget;
+	w->budget = rdcd_wait_budget(pw.budget);
 	w->needs_dp = pw.needs_dp;
 	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
 		if (pw.term[i].kind > RDC_WAIT_TEST_EQ)
@@ -732,7 +742,7 @@ static int rdcd_wait_from_proto(const uint8_t *pl, size_t len,
 		    (!rdcd_reg_ok(pw.term[i].reg) ||
 		     rdcd_reg_read_changes(pw.term[i].reg)))
 			return RDC_ST_INVAL;
-		w->term[i].kind = (enum rdc_wait_test)pw.term[i].kind;
+		w->term[i].test = pw.term[i].kind;
 		w->term[i].reg = pw.term[i].reg;
 		w->term[i].mask = pw.term[i].mask;
 		w->term[i].value = pw.term[i].value;
@@ -757,7 +767,7 @@ static int rdcd_stepped_wait_run(struct rdcd *d, struct rdcd_client *c,
 				 struct rdc_hw_wait *w)
 {
 	for (;;) {
-		rdc_rec_time_moved(d->rec, d->hw->now);
+		rdc_rec_time_moved(d->rec, rdc_hw_now(d->hw));
 		switch (rdc_hw_wait_run(d->hw, w, RDCD_WAIT_PIECE)) {
 		case RDC_HW_WAIT_MORE:
 			break;
@@ -785,7 +795,7 @@ static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 {
 	const uint64_t total =
 		(uint64_t)RDCD_SUBMIT_BUDGET_S * RDC_DEFAULT_CORE_HZ;
-	uint64_t start = d->hw->now;
+	uint64_t start = rdc_hw_now(d->hw);
 
 	while (c->pend_done < c->pend_n) {
 		size_t left = c->pend_n - c->pend_done, k;
@@ -798,24 +808,25 @@ static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 		if (ret)
 			return ret;
 		if (!room) {
-			struct rdc_wait rw = {
-				.term[0] = { .kind = RDC_WAIT_TEST_GE,
-					     .reg = RDC_REG_FIFO_FREE,
-					     .mask = ~0u,
-					     .value =
-						     left < RDC_FIFO_DEPTH / 2 ?
-							     (uint32_t)left :
-							     RDC_FIFO_DEPTH /
-								     2 },
-				.needs_dp = true,
+			struct rdc_hw_wait *rw = &c->pend_hw;
+			const struct rdc_wait_cond room_cond = {
+				.test = RDC_WAIT_TEST_GE,
+				.reg = RDC_REG_FIFO_FREE,
+				.mask = ~0u,
+				.value = left < RDC_FIFO_DEPTH / 2 ?
+						 (uint32_t)left :
+						 RDC_FIFO_DEPTH / 2,
 			};
-			uint64_t used = d->hw->now - start;
+			uint64_t used = rdc_hw_now(d->hw) - start;
 
 			if (used >= total)
 				return RDC_E_TIMEOUT;
-			rw.budget =
-				RDC_MIN(RDC_WAIT_BUDGET_DEFAULT, total - used);
-			rdc_wait_to_hw(&rw, &c->pend_hw);
+			*rw = (struct rdc_hw_wait){
+				.term[0] = room_cond,
+				.needs_dp = true,
+				.budget = rdcd_wait_budget(RDC_MIN(
+					RDC_WAIT_BUDGET_DEFAULT, total - used)),
+			};
 			rdc_hw_wait_begin(d->hw, &c->pend_hw);
 			ret = rdcd_stepped_wait_run(d, c, &c->pend_hw);
 			if (ret)
@@ -859,11 +870,11 @@ static void rdcd_stepped_job(struct rdcd *d, void *arg)
 		ret = rdcd_stepped_submit(d, c);
 		break;
 	case RDCD_PEND_STEP:
-		while (d->hw->now < c->pend_target && !c->dead) {
-			rdc_rec_time_moved(d->rec, d->hw->now);
-			rdc_hw_run_until(d->hw,
-					 RDC_MIN(d->hw->now + RDCD_WAIT_PIECE,
-						 c->pend_target));
+		while (rdc_hw_now(d->hw) < c->pend_target && !c->dead) {
+			rdc_rec_time_moved(d->rec, rdc_hw_now(d->hw));
+			rdc_hw_run_until(d->hw, RDC_MIN(rdc_hw_now(d->hw) +
+								RDCD_WAIT_PIECE,
+							c->pend_target));
 			rdcd_chip_yield_point(d);
 		}
 		break;
@@ -925,7 +936,7 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 
 			if (rdcd_halted(d))
 				ret = RDC_E_HALTED;
-			else if (d->hw->now - c->pend_start >= sim ||
+			else if (rdc_hw_now(d->hw) - c->pend_start >= sim ||
 				 rdcd_wall_ns() - c->pend_wall_ns >= wall)
 				ret = RDC_E_TIMEOUT;
 			else
@@ -933,10 +944,9 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 		}
 		break;
 	case RDCD_PEND_WAIT: {
-		struct rdc_hw_wait w;
+		struct rdc_hw_wait w = c->pend_wait;
 
 		/* time moves with the daemon's clock: only the checks here */
-		rdc_wait_to_hw(&c->pend_wait, &w);
 		w.start = c->pend_start;
 		switch (rdc_hw_wait_check(d->hw, &w)) {
 		case RDC_HW_WAIT_DONE:
@@ -953,7 +963,7 @@ static bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 		break;
 	}
 	case RDCD_PEND_STEP:
-		if (d->hw->now < c->pend_target)
+		if (rdc_hw_now(d->hw) < c->pend_target)
 			return false;
 		break;
 	default:
@@ -994,7 +1004,7 @@ static void rdcd_irq_events(struct rdcd *d)
 	if (!rising)
 		return;
 	rdc_proto_put32(ev, rising);
-	rdc_proto_put64(ev + 4, d->hw->now);
+	rdc_proto_put64(ev + 4, rdc_hw_now(d->hw));
 	for (struct rdcd_client *c = d->clients; c; c = c->next) {
 		struct rdcd_obuf *b;
 
@@ -1119,7 +1129,7 @@ static void rdcd_submit(struct rdcd *d, struct rdcd_client *c,
 	*pl = NULL;
 	c->pend_n = n;
 	c->pend_done = 0;
-	c->pend_start = d->hw->now;
+	c->pend_start = rdc_hw_now(d->hw);
 	c->pend_wall_ns = rdcd_wall_ns();
 	/* stepped: the loop's next turn runs it on the chip */
 	if (d->mode != RDC_RUN_STEPPED)
@@ -1245,7 +1255,7 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		rdcd_submit(d, c, h, body);
 		break;
 	case RDC_MSG_WAIT: {
-		struct rdc_wait w;
+		struct rdc_hw_wait w;
 
 		st = rdcd_wait_from_proto(pl, h->len, &w);
 		if (st) {
@@ -1255,10 +1265,10 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		c->pend = RDCD_PEND_WAIT;
 		c->pend_hdr = *h;
 		c->pend_wait = w;
-		c->pend_start = d->hw->now;
+		c->pend_start = rdc_hw_now(d->hw);
 		c->pend_wall_ns = rdcd_wall_ns();
 		if (d->mode == RDC_RUN_STEPPED) {
-			rdc_wait_to_hw(&w, &c->pend_hw);
+			c->pend_hw = w;
 			rdc_hw_wait_begin(d->hw, &c->pend_hw);
 		} else if (rdcd_pending_step(d, c)) {
 			rdcd_irq_events(d);
@@ -1274,8 +1284,8 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		}
 		c->pend = RDCD_PEND_STEP;
 		c->pend_hdr = *h;
-		c->pend_target = d->hw->now + cyc;
-		c->pend_start = d->hw->now;
+		c->pend_target = rdc_hw_now(d->hw) + cyc;
+		c->pend_start = rdc_hw_now(d->hw);
 		c->pend_wall_ns = rdcd_wall_ns();
 		if (d->mode != RDC_RUN_STEPPED)
 			rdcd_pending_step(d, c);
