@@ -83,7 +83,7 @@ TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
 	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
 	bench-peers module \
-	module-clean checkpatch format format-check
+	module-clean checkpatch format format-check firmware-mcu mcu-test
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a
 
 help:
@@ -92,6 +92,8 @@ help:
 	@echo "make check        install missing packages, build with ASan+UBSan, run every test"
 	@echo "make golden       regenerate tests/golden/golden.txt and write PNGs to $(O)/golden"
 	@echo "make freestanding compile hw-sim/ and firmware-model/ with no libc headers"
+	@echo "make firmware-mcu the core for a Cortex-M3 (QEMU mps2-an385), replaying the golden scenes"
+	@echo "make mcu-test     run it under QEMU: CRCs and cycles equal the host's"
 	@echo "make speed        time a full-screen fill through the command path against memset"
 	@echo "make bench        the workloads (bench/README.md) against plain-C limits, then rdcd, sinks"
 	@echo "make bench-peers  the same, also against pixman, cairo and SDL2_gfx"
@@ -151,6 +153,7 @@ demo: deps
 check test: deps
 	$(MAKE) format-check
 	$(MAKE) $(TEST_BINS) $(O)/san/rdcctl $(O)/san/rdcd freestanding $(VM_BINS)
+	$(MAKE) mcu-test
 	$(MAKE) fuzz
 	@vm=0; tests/vm/run.sh --auto $(O) || vm=1; \
 	tests/run.sh $(O)/san && exit $$vm
@@ -435,6 +438,107 @@ freestanding:
 		$(CC) $(FREESTANDING_FLAGS) -c $$f -o $(O)/freestanding/$$(basename $$f .c).o; \
 	done
 	@echo "freestanding: $(words $(CORE_SRCS)) core files compiled without libc headers"
+
+# The firmware on a microcontroller (docs/mcu.md): hw-sim/ and
+# firmware-model/ built for a Cortex-M3 with arm-none-eabi-gcc and no C
+# library, into an image for QEMU's mps2-an385 board that replays every
+# golden scene (mcu/gen_scenes turns each into operation words at build
+# time) and prints each frame's CRC-32 and cycle counts.  firmware-mcu
+# fails if the core calls anything but memcpy/memmove/memset and libgcc's
+# integer helpers, if floating point or an allocator is in the image, or
+# if the stack has no bound; `make mcu-test` (in `make check`) runs the
+# image under QEMU against the host (mcu/check.sh).
+MCU_CC ?= arm-none-eabi-gcc
+MCU_LD ?= arm-none-eabi-ld
+MCU_NM ?= arm-none-eabi-nm
+MCU_SIZE ?= arm-none-eabi-size
+MCU_QEMU ?= qemu-system-arm
+MCU_DIR := $(O)/mcu
+MCU_SCENES := $(sort $(wildcard tests/golden/scenes/*.rdl))
+MCU_ARCH := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
+# -mno-unaligned-access: the compiler makes no unaligned access, so the
+# trap the firmware sets (CCR.UNALIGN_TRP) catches the core's own; every
+# frame of static size and at most 2 KiB, as the kernel wants.
+MCU_CFLAGS = -std=gnu11 $(WARN) -Werror $(MCU_ARCH) -mno-unaligned-access \
+	-O2 -g -ffreestanding -nostdinc \
+	-isystem $(shell $(MCU_CC) -print-file-name=include) \
+	-ffunction-sections -fdata-sections -fno-common -fstack-usage \
+	-fcallgraph-info=su -Wstack-usage=2048 -Ihw-sim -Ifirmware-model -Imcu
+MCU_CORE_OBJS := $(patsubst %.c,$(MCU_DIR)/%.o,$(CORE_SRCS))
+MCU_OBJS := $(MCU_CORE_OBJS) $(MCU_DIR)/mcu_scenes.o \
+	$(patsubst %,$(MCU_DIR)/mcu/%.o,replay main startup string)
+# What the core may leave to the MCU's runtime: the string functions
+# rdc_port.h maps to, libgcc's integer division, shifts and bit counts.
+MCU_CORE_EXTERNS := memcpy|memmove|memset|__aeabi_(u?ldivmod|u?idiv|u?idivmod|llsl|llsr|lasr|lmul|u?lcmp)|__(clz|ctz|popcount|ffs|parity|bswap)[sd]i2
+MCU_NO_FLOAT := ^__aeabi_([fd]|u?[il]2[fd])|^__(fix|float|extend|trunc)|^__[a-z]+[sdtx]f[0-9]$$|^(malloc|calloc|realloc|free)$$
+
+$(MCU_DIR)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(MCU_CC) $(MCU_CFLAGS) -MMD -MP -c $< -o $@
+# its loops must not become calls to itself
+$(MCU_DIR)/mcu/string.o: MCU_CFLAGS += -fno-tree-loop-distribute-patterns
+
+$(O)/rel/gen_scenes: $(O)/rel/mcu/gen_scenes.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+# the scenes as C (and "name vram" lines for mcu/check.sh)
+$(MCU_DIR)/mcu_scenes.c: $(O)/rel/gen_scenes $(MCU_SCENES)
+	@mkdir -p $(dir $@)
+	$(O)/rel/gen_scenes $@.tmp $(MCU_SCENES) >$(MCU_DIR)/scenes.txt.tmp
+	mv $(MCU_DIR)/scenes.txt.tmp $(MCU_DIR)/scenes.txt
+	mv $@.tmp $@
+$(MCU_DIR)/mcu_scenes.o: $(MCU_DIR)/mcu_scenes.c
+	$(MCU_CC) $(MCU_CFLAGS) -g0 -c $< -o $@
+$(O)/rel/mcu_scenes.o: $(MCU_DIR)/mcu_scenes.c
+	$(CC) $(REL_CFLAGS) -Imcu -g0 -c $< -o $@
+# the same replay on the host, built as the rest of rdc is
+$(O)/rel/mcu-host: $(O)/rel/mcu/host_main.o $(O)/rel/mcu/replay.o \
+		$(O)/rel/mcu_scenes.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+$(MCU_DIR)/rdc-mcu.elf: $(MCU_OBJS) mcu/mps2.ld
+	$(MCU_CC) $(MCU_ARCH) -nostdlib -T mcu/mps2.ld -Wl,--gc-sections \
+		-Wl,-Map=$(MCU_DIR)/rdc-mcu.map $(MCU_OBJS) -lgcc -o $@
+
+firmware-mcu: $(MCU_DIR)/rdc-mcu.elf
+	@set -e; cd $(MCU_DIR); \
+	$(MCU_LD) -r -o core.o $(patsubst $(MCU_DIR)/%,%,$(MCU_CORE_OBJS)); \
+	bad=$$($(MCU_NM) -u core.o | awk '{ print $$2 }' | \
+		grep -Ev '^($(MCU_CORE_EXTERNS))$$' || true); \
+	[ -z "$$bad" ] || { echo "firmware-mcu: the core calls" $$bad \
+		"(no C library, floating point or allocation on the MCU)"; \
+		exit 1; }; \
+	bad=$$($(MCU_NM) rdc-mcu.elf | awk '{ print $$NF }' | \
+		grep -E '$(MCU_NO_FLOAT)' || true); \
+	[ -z "$$bad" ] || { echo "firmware-mcu: the image has" $$bad \
+		"(floating point or an allocator)"; exit 1; }; \
+	bad=$$($(MCU_NM) rdc-mcu.elf | awk '{ print $$NF }' | grep -E \
+		'^rdc_hw_set_(trace|poll|frame_fn)$$' || true); \
+	[ -z "$$bad" ] || { echo "firmware-mcu: $$bad is in the image" \
+		"(mcu/stack_bound.awk counts no hook)"; exit 1; }; \
+	ci=$$(find . -name '*.ci'); \
+	awk -v root=rdc_mcu_reset -f $(CURDIR)/mcu/stack_bound.awk $$ci \
+		>stack.txt || { cat stack.txt; exit 1; }; \
+	awk -v root=rdc_mcu_fault -f $(CURDIR)/mcu/stack_bound.awk $$ci \
+		>>stack.txt || { cat stack.txt; exit 1; }; \
+	{ $(MCU_SIZE) rdc-mcu.elf; \
+	  echo "of which the scenes (mcu_scenes.o):"; \
+	  $(MCU_SIZE) mcu_scenes.o | tail -n 1; \
+	  echo "the core (hw-sim/, firmware-model/ objects before" \
+		"--gc-sections):"; \
+	  $(MCU_SIZE) -t $(patsubst $(MCU_DIR)/%,%,$(MCU_CORE_OBJS)) | \
+		tail -n 1; cat stack.txt; } >figures.txt; \
+	cat figures.txt
+	@echo "firmware-mcu: $(MCU_DIR)/rdc-mcu.elf (qemu-system-arm -M mps2-an385)"
+
+mcu-test:
+	@command -v $(MCU_CC) >/dev/null && command -v $(MCU_QEMU) >/dev/null || \
+		{ echo "mcu-test: skipped: $(MCU_CC) or $(MCU_QEMU) not found" \
+		"(Debian: gcc-arm-none-eabi qemu-system-arm; make deps)"; \
+		exit 0; }; \
+	$(MAKE) firmware-mcu $(O)/rel/mcu-host $(O)/rel/rdcctl && \
+	MCU_QEMU=$(MCU_QEMU) mcu/check.sh $(MCU_DIR)/rdc-mcu.elf \
+		$(O)/rel/mcu-host $(O)/rel/rdcctl $(MCU_DIR)/scenes.txt \
+		tests/golden/scenes $(MCU_DIR)/check
 
 # rdcfb.ko (driver/, docs/driver.md) against the installed
 # linux-headers-amd64's kernel, or KDIR=<kernel build dir>.  Kbuild runs in

@@ -6,6 +6,11 @@
 set -e
 
 PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev libusb-1.0-0-dev sigrok-cli libdrm-dev clang-format"
+# libusb-1.0's static link flags name -ludev: make install-check links
+# examples/hello.c with `pkg-config --static --libs rdc`
+PKGS="$PKGS libudev-dev"
+# the firmware image and its test (make firmware-mcu, make mcu-test)
+PKGS="$PKGS gcc-arm-none-eabi qemu-system-arm"
 # libgpiod's v2 API (GPIO lines): Debian 13 has it in main; Debian 12 only
 # in bookworm-backports, which is enabled for these two packages alone
 # (apt-get -t for them, the rest stays on bookworm).
