@@ -121,6 +121,12 @@ static void test_presets(void **state)
 	assert_int_equal(rdc_preset_by_name("320x200"), RDC_PRESET_320x200_70);
 	assert_int_equal(rdc_preset_by_name("1080p"), RDC_PRESET_1920x1080_60);
 	assert_int_equal(rdc_preset_by_name("720p"), RDC_PRESET_1280x720_60);
+	/* names are case-insensitive (docs/rdl.md) */
+	assert_int_equal(rdc_preset_by_name("720P"), RDC_PRESET_1280x720_60);
+	assert_int_equal(rdc_preset_by_name("1280X720"),
+			 RDC_PRESET_1280x720_60);
+	assert_int_equal(rdc_preset_by_name("1920X1080@60"),
+			 RDC_PRESET_1920x1080_60);
 	assert_int_equal(rdc_preset_by_name("640x480@75"), -1);
 	assert_int_equal(rdc_preset_by_name("640x48"), -1);
 	assert_int_equal(rdc_preset_by_name(""), -1);

@@ -134,7 +134,10 @@ int rdc_vram_write(rdc_dev *dev, uint32_t addr, const void *buf, size_t len);
 int rdc_mode_set(rdc_dev *dev, uint32_t preset, uint32_t format, uint32_t base);
 /* Mode size of a preset (no device needed); 0 or RDC_E_INVAL. */
 int rdc_preset_size(uint32_t preset, uint32_t *width, uint32_t *height);
-/* Preset by name ("640x480", "640x480@60", "1080p"); -1 if unknown. */
+/*
+ * Preset by name ("640x480", "640x480@60", "1080p", in any case); -1 if
+ * unknown.
+ */
 int rdc_preset_by_name(const char *name);
 
 /* ---- Command submission -------------------------------------------------- */

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <zlib.h>
 
 #include "hw.h"
@@ -369,9 +370,9 @@ int rdc_preset_by_name(const char *name)
 		const char *n = rdc_preset_names[i].name;
 		const char *at = strchr(n, '@');
 
-		if (!strcmp(name, n) ||
+		if (!strcasecmp(name, n) ||
 		    (at && strlen(name) == (size_t)(at - n) &&
-		     !strncmp(name, n, (size_t)(at - n))))
+		     !strncasecmp(name, n, (size_t)(at - n))))
 			return (int)rdc_preset_names[i].preset;
 	}
 	return -1;
