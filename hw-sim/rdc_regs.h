@@ -111,8 +111,8 @@
 #define   RDC_BEAM_Y GENMASK(31, 16)
 #define RDC_REG_FRAME_COUNT 0x13c /* R   vblanks since reset */
 /*
- * W   load enum rdc_preset into the timing shadows (and FB_STRIDE for the
- * current FB_FORMAT); reads the last one
+ * RW  write: load enum rdc_preset into the timing shadows (and FB_STRIDE
+ * for the current FB_FORMAT); read: the last preset loaded
  */
 #define RDC_REG_MODE_PRESET 0x140
 
@@ -239,12 +239,15 @@ enum rdc_err {
 	RDC_ERR_FIFO_OVERFLOW = 6, /* host wrote FIFO_DATA while full */
 	/*
 	 * bad register in a REG_WRITE command, or a host access outside the
-	 * register window / to a R reg
+	 * register window / to a R reg / to RING_HEAD while RING_EN is set
 	 */
 	RDC_ERR_REG = 7,
 	RDC_ERR_ARG = 8, /* bad enumerated argument (ROP, format, ...) */
 	RDC_ERR_MODE = 9, /* CRTC timing refused at latch */
-	/* display-list nesting too deep, or RET outside a list */
+	/*
+	 * display-list nesting too deep, or RET outside a list; PUSH_MATRIX
+	 * on a full matrix stack, POP_MATRIX on an empty one
+	 */
 	RDC_ERR_STACK = 10,
 	/*
 	 * DECODE: the image stream is corrupt (bad header, truncated, a run
