@@ -81,13 +81,17 @@ TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
+	shared install uninstall install-check \
 	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
 	bench-peers module \
 	module-clean checkpatch format format-check firmware-mcu mcu-test
-all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a
+all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a shared
 
 help:
-	@echo "make              build librdc and rdcctl (optimised) in $(O)/rel"
+	@echo "make              build librdc (.a, .so), rdcctl and rdcd (optimised) in $(O)/rel"
+	@echo "make install      install them, the headers, rdc.pc (PREFIX=, DESTDIR=, LIBDIR=...)"
+	@echo "make uninstall    remove what make install put there (the same variables)"
+	@echo "make install-check install into a scratch DESTDIR, build examples/hello.c against it"
 	@echo "make demo         install missing packages, build, run examples/demo.rdl"
 	@echo "make check        install missing packages, build with ASan+UBSan, run every test"
 	@echo "make golden       regenerate tests/golden/golden.txt and write PNGs to $(O)/golden"
@@ -146,6 +150,160 @@ $(O)/san/tests/%: $(O)/san/tests/unit/%.o $(TEST_HELPER_OBJS) $(O)/san/librdc.a
 	@mkdir -p $(dir $@)
 	$(CC) $(SAN_CFLAGS) $^ $(CMOCKA_LIBS) $(LIBS) -lm -o $@
 
+# The DisplayLink decoder is rdcd's (userspace/rdcd/udl_decode.c).
+$(O)/san/tests/unit/test_udl_decode.o: SAN_CFLAGS += -Iuserspace/rdcd
+$(O)/san/tests/test_udl_decode: $(O)/san/tests/unit/test_udl_decode.o \
+		$(O)/san/userspace/rdcd/udl_decode.o $(TEST_HELPER_OBJS) \
+		$(O)/san/librdc.a
+	@mkdir -p $(dir $@)
+	$(CC) $(SAN_CFLAGS) $^ $(CMOCKA_LIBS) $(LIBS) -lm -o $@
+
+# ---- librdc as a shared library, and make install --------------------------
+# The version is rdc.h's RDC_VERSION_MAJOR/MINOR/PATCH; the SONAME follows
+# the major number.  librdc.so exports what its installed headers declare
+# and nothing else: scripts/librdc-map.sh writes the version script from
+# them (the public API under RDC_<major>; rdc_server.h and rdc_chip.h,
+# what rdcd uses, under RDC_PRIVATE_<version>).  Its objects are built
+# position-independent in $(O)/pic; librdc.a keeps the $(O)/rel ones.
+# $(O)/include/rdc is the header tree `make install` copies, with the
+# register map under RDC_ names only (scripts/public-regs.sh).  The
+# rdcctl and rdcd that get installed are linked against librdc.so
+# ($(O)/rel/dyn); the ones in $(O)/rel carry librdc.a, so they run from
+# the build directory as they are.
+RDC_VERSION := $(shell awk '/^\#define[ \t]+RDC_VERSION_(MAJOR|MINOR|PATCH)[ \t]/ \
+	{ v = v (v == "" ? "" : ".") $$3 } END { print v }' \
+	userspace/include/rdc.h)
+RDC_SO_NAME := librdc.so.$(firstword $(subst ., ,$(RDC_VERSION)))
+RDC_SO_FILE := librdc.so.$(RDC_VERSION)
+PIC_OBJS := $(patsubst %.c,$(O)/pic/%.o,$(CORE_SRCS) $(LIB_SRCS))
+HDR_DIR := $(O)/include/rdc
+HDR_SRCS := $(sort $(wildcard userspace/include/rdc*.h)) hw-sim/rdc_chip.h \
+	hw-sim/rdc_image.h
+SO_LINKS := $(O)/rel/$(RDC_SO_NAME) $(O)/rel/librdc.so
+
+$(O)/pic/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(REL_CFLAGS) -fPIC -MMD -MP -c $< -o $@
+
+$(HDR_DIR)/.stamp: $(HDR_SRCS) hw-sim/rdc_regs.h scripts/public-regs.sh
+	@rm -rf $(HDR_DIR) && mkdir -p $(HDR_DIR)
+	cp $(HDR_SRCS) $(HDR_DIR)/
+	scripts/public-regs.sh hw-sim/rdc_regs.h >$(HDR_DIR)/rdc_regs.h
+	@touch $@
+
+$(O)/rel/librdc.map: $(HDR_DIR)/.stamp scripts/librdc-map.sh
+	scripts/librdc-map.sh "$(CC)" $(HDR_DIR) $(RDC_VERSION) >$@.tmp
+	@mv $@.tmp $@
+
+$(O)/rel/$(RDC_SO_FILE): $(PIC_OBJS) $(O)/rel/librdc.map
+	$(CC) -shared -Wl,-soname,$(RDC_SO_NAME) -Wl,--no-undefined \
+		-Wl,--version-script=$(O)/rel/librdc.map $(LDFLAGS) \
+		$(PIC_OBJS) $(LIBS) -o $@
+$(SO_LINKS): $(O)/rel/$(RDC_SO_FILE)
+	ln -sf $(RDC_SO_FILE) $@
+
+# -Wl,--as-needed: a library the program itself does not call (libpng for
+# rdcd) is librdc.so's to load, not its.
+$(O)/rel/dyn/rdcctl: $(patsubst %.c,$(O)/rel/%.o,$(CTL_SRCS)) $(SO_LINKS)
+	@mkdir -p $(dir $@)
+	$(CC) $(REL_CFLAGS) $(LDFLAGS) -Wl,--as-needed \
+		$(filter %.o,$^) $(O)/rel/librdc.so $(LIBS) -o $@
+$(O)/rel/dyn/rdcd: $(patsubst %.c,$(O)/rel/%.o,$(RDCD_SRCS)) $(SO_LINKS)
+	@mkdir -p $(dir $@)
+	$(CC) $(REL_CFLAGS) $(LDFLAGS) -Wl,--as-needed \
+		$(filter %.o,$^) $(O)/rel/librdc.so $(LIBS) -o $@
+
+# rdc.pc (written by make install): the optional libraries this build
+# links are its Requires.private.
+RDC_PC_REQUIRES := libpng zlib $(if $(HAVE_VNC),libvncserver) \
+	$(if $(HAVE_USB),libusb-1.0) $(if $(HAVE_GPIOD),libgpiod)
+
+shared: $(SO_LINKS) $(O)/rel/dyn/rdcctl $(O)/rel/dyn/rdcd
+
+# Directories, as GNU's coding standards name them; DESTDIR stages.
+PREFIX ?= /usr/local
+EXEC_PREFIX ?= $(PREFIX)
+BINDIR ?= $(EXEC_PREFIX)/bin
+LIBDIR ?= $(EXEC_PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+DATAROOTDIR ?= $(PREFIX)/share
+MANDIR ?= $(DATAROOTDIR)/man
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+BASHCOMPDIR ?= $(DATAROOTDIR)/bash-completion/completions
+SYSTEMDUSERUNITDIR ?= $(PREFIX)/lib/systemd/user
+UDEVRULESDIR ?= $(PREFIX)/lib/udev/rules.d
+INSTALL ?= install
+INSTALL_PROGRAM ?= $(INSTALL) -m 755
+INSTALL_DATA ?= $(INSTALL) -m 644
+
+# What the rest of the tree brings, picked up as it lands: manual pages
+# (man/*.[1-8], or generated into $(O)/man), bash completion
+# (dist/bash-completion/), systemd user units (dist/systemd/*.service,
+# *.socket) and udev rules (dist/udev/*.rules).
+INSTALL_MAN = $(wildcard man/*.[1-8] $(O)/man/*.[1-8])
+INSTALL_BASHCOMP = $(wildcard dist/bash-completion/*)
+INSTALL_UNITS = $(wildcard dist/systemd/*.service dist/systemd/*.socket)
+INSTALL_UDEV = $(wildcard dist/udev/*.rules)
+
+define RDC_PC
+prefix=$(PREFIX)
+exec_prefix=$(EXEC_PREFIX)
+libdir=$(LIBDIR)
+includedir=$(INCLUDEDIR)
+
+Name: rdc
+Description: librdc, the host library of the RDC-1 simulated raster display controller
+Version: $(RDC_VERSION)
+Requires.private: $(strip $(RDC_PC_REQUIRES))
+Libs: -L$${libdir} -lrdc
+Libs.private: -lpthread
+Cflags: -I$${includedir}/rdc
+endef
+export RDC_PC
+
+install: all shared
+	$(INSTALL) -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) \
+		$(DESTDIR)$(INCLUDEDIR)/rdc $(DESTDIR)$(PKGCONFIGDIR)
+	$(INSTALL_PROGRAM) $(O)/rel/dyn/rdcctl $(O)/rel/dyn/rdcd \
+		$(DESTDIR)$(BINDIR)/
+	$(INSTALL_DATA) $(O)/rel/$(RDC_SO_FILE) $(O)/rel/librdc.a \
+		$(DESTDIR)$(LIBDIR)/
+	ln -sf $(RDC_SO_FILE) $(DESTDIR)$(LIBDIR)/$(RDC_SO_NAME)
+	ln -sf $(RDC_SO_NAME) $(DESTDIR)$(LIBDIR)/librdc.so
+	$(INSTALL_DATA) $(HDR_DIR)/*.h $(DESTDIR)$(INCLUDEDIR)/rdc/
+	printf '%s\n' "$$RDC_PC" >$(DESTDIR)$(PKGCONFIGDIR)/rdc.pc
+	@set -e; for f in $(INSTALL_MAN); do \
+		d=$(DESTDIR)$(MANDIR)/man$${f##*.}; $(INSTALL) -d $$d; \
+		echo "$(INSTALL_DATA) $$f $$d/"; $(INSTALL_DATA) $$f $$d/; done
+	@set -e; for p in "$(INSTALL_BASHCOMP):$(BASHCOMPDIR)" \
+		"$(INSTALL_UNITS):$(SYSTEMDUSERUNITDIR)" \
+		"$(INSTALL_UDEV):$(UDEVRULESDIR)"; do \
+		files=$${p%%:*}; dir=$(DESTDIR)$${p##*:}; \
+		[ -n "$$files" ] || continue; $(INSTALL) -d $$dir; \
+		echo "$(INSTALL_DATA) $$files $$dir/"; \
+		$(INSTALL_DATA) $$files $$dir/; done
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/rdcctl $(DESTDIR)$(BINDIR)/rdcd \
+		$(DESTDIR)$(LIBDIR)/$(RDC_SO_FILE) \
+		$(DESTDIR)$(LIBDIR)/$(RDC_SO_NAME) \
+		$(DESTDIR)$(LIBDIR)/librdc.so $(DESTDIR)$(LIBDIR)/librdc.a \
+		$(DESTDIR)$(PKGCONFIGDIR)/rdc.pc
+	rm -rf $(DESTDIR)$(INCLUDEDIR)/rdc
+	@set -e; for f in $(notdir $(INSTALL_MAN)); do \
+		rm -f $(DESTDIR)$(MANDIR)/man$${f##*.}/$$f; done; \
+	for f in $(notdir $(INSTALL_BASHCOMP)); do \
+		rm -f $(DESTDIR)$(BASHCOMPDIR)/$$f; done; \
+	for f in $(notdir $(INSTALL_UNITS)); do \
+		rm -f $(DESTDIR)$(SYSTEMDUSERUNITDIR)/$$f; done; \
+	for f in $(notdir $(INSTALL_UDEV)); do \
+		rm -f $(DESTDIR)$(UDEVRULESDIR)/$$f; done
+
+# Install into a scratch directory and build examples/hello.c against it
+# with pkg-config alone (tests/install/run.sh says what it checks).
+install-check: all shared
+	@tests/install/run.sh $(O)
+
 demo: deps
 	$(MAKE) all
 	$(O)/rel/rdcctl run examples/demo.rdl -o demo.png
@@ -155,7 +313,9 @@ check test: deps
 	$(MAKE) $(TEST_BINS) $(O)/san/rdcctl $(O)/san/rdcd freestanding $(VM_BINS)
 	$(MAKE) mcu-test
 	$(MAKE) fuzz
+	$(MAKE) shared
 	@vm=0; tests/vm/run.sh --auto $(O) || vm=1; \
+	tests/install/run.sh $(O) || vm=1; \
 	tests/run.sh $(O)/san && exit $$vm
 
 $(O)/rel/rdc-bench: $(O)/rel/bench/rdc_bench.o $(O)/rel/librdc.a
@@ -414,7 +574,8 @@ ifeq ($(HAVE_DRM),1)
 VM_BINS += $(O)/rel/drm_pattern
 endif
 $(O)/rel/drm_pattern: tests/vm/drm_pattern.c $(O)/rel/librdc.a
-	$(CC) $(REL_CFLAGS) $(shell $(PKG_CONFIG) --cflags libdrm) $^ \
+	$(CC) $(REL_CFLAGS) -Iuserspace/rdcd \
+		$(shell $(PKG_CONFIG) --cflags libdrm) $^ \
 		$(shell $(PKG_CONFIG) --libs libdrm) $(LIBS) -o $@
 
 vm-test: $(VM_BINS)

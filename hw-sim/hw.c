@@ -160,6 +160,16 @@ const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
 	return hw->frame[hw->frame_back ^ 1];
 }
 
+uint64_t rdc_hw_now(const struct rdc_hw *hw)
+{
+	return hw->now;
+}
+
+void rdc_hw_timing(const struct rdc_hw *hw, struct rdc_timing *t)
+{
+	*t = hw->crtc.cur;
+}
+
 /* ---- host VRAM aperture ------------------------------------------------- */
 
 int rdc_hw_vram_read(struct rdc_hw *hw, uint32_t addr, void *buf, uint32_t len)

@@ -57,6 +57,29 @@
 extern "C" {
 #endif
 
+/*
+ * ---- Version --------------------------------------------------------------
+ * librdc's release (not the chip's, which RDC_REG_VERSION reads): the
+ * header's in these macros, the library's at run time from rdc_version().
+ * The major number is the SONAME's (librdc.so.1).
+ */
+#define RDC_VERSION_MAJOR 1
+#define RDC_VERSION_MINOR 0
+#define RDC_VERSION_PATCH 0
+/* A release as one number, in order: 1.2.3 is 0x010203. */
+#define RDC_VERSION_ENCODE(major, minor, patch) \
+	(((uint32_t)(major) << 16) | ((uint32_t)(minor) << 8) | \
+	 (uint32_t)(patch))
+#define RDC_VERSION_NUMBER \
+	RDC_VERSION_ENCODE(RDC_VERSION_MAJOR, RDC_VERSION_MINOR, \
+			   RDC_VERSION_PATCH)
+#define RDC_VERSION_GET_MAJOR(v) (((uint32_t)(v) >> 16) & 0xffu)
+#define RDC_VERSION_GET_MINOR(v) (((uint32_t)(v) >> 8) & 0xffu)
+#define RDC_VERSION_GET_PATCH(v) ((uint32_t)(v)&0xffu)
+
+/* The release of the librdc the program runs with (RDC_VERSION_ENCODE). */
+uint32_t rdc_version(void);
+
 enum rdc_error {
 	RDC_OK = 0,
 	RDC_E_INVAL = -1,   /* bad argument */

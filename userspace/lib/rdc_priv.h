@@ -15,6 +15,7 @@
 
 #include "hw.h"
 #include "rdc.h"
+#include "rdc_server.h"
 
 /*
  * A wait condition, evaluated by the backend on its side of the transport
@@ -36,9 +37,6 @@ struct rdc_wait {
 	/* Simulated-time budget in core cycles; 0 = the default. */
 	uint64_t budget;
 };
-
-/* Ten simulated seconds of the default 100 MHz core clock. */
-#define RDC_WAIT_BUDGET_DEFAULT (10ull * RDC_DEFAULT_CORE_HZ)
 
 /* The chip's form of a wait (hw-sim/wait.c), budget defaulted. */
 static inline void rdc_wait_to_hw(const struct rdc_wait *w,
@@ -149,40 +147,7 @@ extern const struct rdc_backend rdc_backend_tcp;   /* net.c */
 extern const struct rdc_backend rdc_backend_fbdev; /* fbdev.c, rdcfb.ko */
 extern const struct rdc_backend rdc_backend_usb;   /* usb.c, libusb */
 
-/*
- * The chip behind a "sim:" handle, NULL for any other backend: rdcd owns
- * its device through a sim: handle and hooks frames and time here.
- */
-struct rdc_hw *rdc_sim_hw(rdc_dev *dev);
-
-/*
- * Trace recording (record.c): wrap a sim: handle so that every operation
- * that can change the device is appended to a file with its simulated
- * time; rdc_replay_file (rdc.h) plays such a file back.
- */
-struct rdc_rec;
-struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size);
-/* Wrap `dev` (a sim: handle); the wrapper stays until rdc_close(dev). */
-void rdc_rec_attach(struct rdc_rec *rec, rdc_dev *dev);
-/* Note a power cycle: the handle is closed and a fresh one attached. */
-void rdc_rec_power(struct rdc_rec *rec);
-/* Write the end record (`dev` attached, or NULL), flush and free. */
-int rdc_rec_close(struct rdc_rec *rec, rdc_dev *dev);
-/*
- * Time moved on the chip directly, not through the wrapped handle, from
- * simulated time `from` on (rdcd runs long waits in pieces): the trace
- * writes it as a step, in its place, before its next record.  NULL rec:
- * nothing.
- */
-void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from);
-/*
- * A client is about to get an answer that depends on time moved outside
- * the handle (a wait rdcd ran on the chip): write that time as its step
- * now and flush, so a replay of the file so far reaches the same point.
- * The recorder does this itself after REG_READ and WAIT records.  NULL
- * rec: nothing.
- */
-void rdc_rec_sync(struct rdc_rec *rec);
+/* rdc_sim_hw, the trace recorder (rdc_rec_*), rdc_vcd_new: rdc_server.h. */
 
 struct rdc_dev {
 	const struct rdc_backend *be;

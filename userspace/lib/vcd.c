@@ -27,7 +27,6 @@
 #include <unistd.h>
 
 #include "rdc_priv.h"
-#include "vcd.h"
 
 #define VCD_BUF_BYTES (64u * 1024u)
 /* room for the longest change: "#" + 20 digits + "\n" + "b" + 32 bits ... */

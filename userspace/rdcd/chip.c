@@ -23,7 +23,6 @@
 #include <ucontext.h>
 #include <unistd.h>
 
-#include "hw.h"
 #include "rdcd.h"
 
 #if defined(__SANITIZE_ADDRESS__)

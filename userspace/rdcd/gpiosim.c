@@ -43,7 +43,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "hw.h"
 #include "rdcd.h"
 
 #define GPIOSIM_CONFIGFS "/sys/kernel/config/gpio-sim"

@@ -35,7 +35,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "hw.h"
+#include "rdc_chip.h"
 
 /* DisplayLink device addresses are 24 bits wide. */
 #define RDC_UDL_ADDR_SPACE (1u << 24)

@@ -1,0 +1,86 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * librdc's interface for a program that serves the simulated RDC-1 itself,
+ * as rdcd does: the chip behind a sim: handle (rdc_chip.h: time, register
+ * reads, the run loop, host waits, pins, the last frame and the frame,
+ * trace and poll hooks), trace recording (rdcd --record), and VCD dumps
+ * of a chip the program hooks itself (rdcd --vcd).
+ *
+ * Internal: these functions are exported under the symbol version
+ * RDC_PRIVATE_<version> of the exact release (scripts/librdc-map.sh), so
+ * a program built on them runs only with the librdc it was built with;
+ * they and the structures of rdc_chip.h may change in any release.  A
+ * program that draws, reads registers and grabs frames needs <rdc.h>
+ * alone.
+ */
+#ifndef RDC_SERVER_H
+#define RDC_SERVER_H
+
+#include <stdint.h>
+
+#include "rdc.h"
+#include "rdc_chip.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/*
+ * The chip behind a "sim:" handle, NULL for any other backend: rdcd owns
+ * its device through a sim: handle and hooks frames and time here.
+ */
+struct rdc_hw *rdc_sim_hw(rdc_dev *dev);
+
+/*
+ * Trace recording (record.c): wrap a sim: handle so that every operation
+ * that can change the device is appended to a file with its simulated
+ * time; rdc_replay_file (rdc.h) plays such a file back.
+ */
+struct rdc_rec;
+struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size);
+/* Wrap `dev` (a sim: handle); the wrapper stays until rdc_close(dev). */
+void rdc_rec_attach(struct rdc_rec *rec, rdc_dev *dev);
+/* Note a power cycle: the handle is closed and a fresh one attached. */
+void rdc_rec_power(struct rdc_rec *rec);
+/* Write the end record (`dev` attached, or NULL), flush and free. */
+int rdc_rec_close(struct rdc_rec *rec, rdc_dev *dev);
+/*
+ * Time moved on the chip directly, not through the wrapped handle, from
+ * simulated time `from` on (rdcd runs long waits in pieces): the trace
+ * writes it as a step, in its place, before its next record.  NULL rec:
+ * nothing.
+ */
+void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from);
+/*
+ * A client is about to get an answer that depends on time moved outside
+ * the handle (a wait rdcd ran on the chip): write that time as its step
+ * now and flush, so a replay of the file so far reaches the same point.
+ * The recorder does this itself after REG_READ and WAIT records.  NULL
+ * rec: nothing.
+ */
+void rdc_rec_sync(struct rdc_rec *rec);
+
+/*
+ * The VCD writer (docs/vcd.md) for a program that owns the chip's trace
+ * hook itself: it puts rdc_vcd_trace on the hook, or fans events out to
+ * it, instead of letting rdc_vcd_open take the hook of a sim: handle.
+ *
+ * rdc_vcd_new starts a dump at `path` (created or truncated) of the chip
+ * *hw points to.  *hw is read again at every event: a program that
+ * replaces its chip (a power cycle) keeps one file, whose time goes on
+ * from where the old chip stopped, and the new chip's levels are written
+ * at that time.  Returns 0 and *out, RDC_E_INVAL, RDC_E_NOMEM or
+ * RDC_E_FILE.  Nothing is hooked: the caller routes the chip's trace
+ * events to rdc_vcd_trace(*out, ...) and closes with rdc_vcd_close after
+ * unhooking it.
+ */
+int rdc_vcd_new(const char *path, struct rdc_hw *const *hw, rdc_vcd **out);
+/* An rdc_trace_fn: the signal events become value changes. */
+void rdc_vcd_trace(void *vcd, uint64_t time, unsigned int event, uint32_t a,
+		   uint32_t b);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RDC_SERVER_H */
