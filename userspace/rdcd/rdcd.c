@@ -23,7 +23,9 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "hw.h"
 #include "rdcd.h"
+#include "vcd.h"
 
 #define NS_PER_S 1000000000ull
 /* Paced mode: wake this often to move time (1 ms). */
@@ -99,6 +101,9 @@ static void usage(FILE *f)
 	      "                   functionfs mounted at DIR (docs/usb.md)\n"
 	      "                   udl:DIR[?pad=N]: the same with DisplayLink's\n"
 	      "                   command set, for Linux's udl DRM driver\n"
+	      "                   systemd[:NAME]: the listening sockets\n"
+	      "                   systemd passed (LISTEN_FDS; those named\n"
+	      "                   NAME), the default when there are any\n"
 	      "  --fast           run unpaced, as fast as the host allows\n"
 	      "  --stepped        time moves only when the controlling client\n"
 	      "                   waits or steps, as on sim: (reproducible)\n"
@@ -259,7 +264,7 @@ static int rdcd_listen_unix(struct rdcd *d, struct rdcd_listener *l,
 	return 0;
 }
 
-static bool rdcd_is_loopback(const struct sockaddr_storage *ss)
+bool rdcd_is_loopback(const struct sockaddr_storage *ss)
 {
 	if (ss->ss_family == AF_INET) {
 		const struct sockaddr_in *in = (const void *)ss;
@@ -366,6 +371,8 @@ static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
 	l = &d->lis[d->nlis];
 	memset(l, 0, sizeof(*l));
 	l->fd = -1;
+	if (!strcmp(uri, "systemd") || !strncmp(uri, "systemd:", 8))
+		return rdcd_systemd_add(d, uri[7] ? uri + 8 : "");
 	if (!strncmp(uri, "unix:", 5)) {
 		ret = rdcd_listen_unix(d, l, uri + 5, group);
 	} else if (!strncmp(uri, "tcp:", 4)) {
@@ -379,10 +386,10 @@ static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
 		snprintf(l->uri, sizeof(l->uri), "%s", uri);
 		ret = l->fd < 0 ? -1 : 0;
 	} else {
-		rdcd_log(
-			d, RDCD_LOG_ERR,
-			"%s: want unix:PATH, tcp:HOST:PORT, ffs:DIR or udl:DIR",
-			uri);
+		rdcd_log(d, RDCD_LOG_ERR,
+			 "%s: want unix:PATH, tcp:HOST:PORT, ffs:DIR, udl:DIR "
+			 "or systemd[:NAME]",
+			 uri);
 		return -1;
 	}
 	if (ret)
@@ -515,8 +522,8 @@ static void rdcd_advance_job(struct rdcd *d, void *arg)
 	bool feeding = rdcd_feed_pending(d);
 
 	(void)arg;
-	while (d->adv_target > rdc_hw_now(d->hw)) {
-		uint64_t n = d->adv_target - rdc_hw_now(d->hw);
+	while (d->adv_target > d->hw->now) {
+		uint64_t n = d->adv_target - d->hw->now;
 
 		if (feeding && n > RDCD_FEED_PIECE)
 			n = RDCD_FEED_PIECE;
@@ -534,7 +541,7 @@ static void rdcd_advance_job(struct rdcd *d, void *arg)
  */
 static bool rdcd_advance(struct rdcd *d)
 {
-	uint64_t now = rdc_hw_now(d->hw), target;
+	uint64_t now = d->hw->now, target;
 
 	if (rdcd_chip_busy(d))
 		return !rdcd_chip_resume(d);
@@ -893,10 +900,12 @@ int main(int argc, char **argv)
 	if (o.gpio_sim && rdcd_gpiosim_open(&d, o.gpio_sim))
 		goto out;
 	if (!o.nlisten)
-		o.listen[o.nlisten++] = "unix:";
+		o.listen[o.nlisten++] = rdcd_systemd_passed() ? "systemd" :
+								"unix:";
 	for (unsigned int i = 0; i < o.nlisten; i++)
 		if (rdcd_add_listener(&d, o.listen[i], o.group))
 			goto out;
+	rdcd_systemd_done(&d);
 	if (o.ready && rdcd_write_ready(&d, o.ready)) {
 		rdcd_log(&d, RDCD_LOG_ERR, "--ready-file %s: %s", o.ready,
 			 strerror(errno));
@@ -907,10 +916,12 @@ int main(int argc, char **argv)
 		 d.mode == RDC_RUN_FAST	   ? "fast" :
 					     "paced",
 		 d.vram_size);
+	rdcd_systemd_notify(&d, "READY=1");
 	rdcd_loop(&d);
 	if (rdcd_stop)
 		rdcd_log(&d, RDCD_LOG_INFO, "signal %d: shutting down",
 			 (int)rdcd_stop);
+	rdcd_systemd_notify(&d, "STOPPING=1");
 	ret = 0;
 out:
 	rdcd_chip_close(&d); /* a run in progress stops where it is */

@@ -8,9 +8,10 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+#include <sys/socket.h>
 #include <sys/un.h>
 
-#include "rdc_server.h"
+#include "rdc_priv.h"
 #include "rdc_proto.h"
 #include "rdc_sink.h"
 
@@ -115,7 +116,7 @@ struct rdcd_client {
 	struct rdc_proto_hdr pend_hdr;
 	uint8_t *pend_words; /* SUBMIT payload, little-endian words */
 	size_t pend_n, pend_done;
-	struct rdc_hw_wait pend_wait;
+	struct rdc_wait pend_wait;
 	struct rdc_hw_wait pend_hw; /* stepped mode: the wait moves time */
 	uint64_t pend_start, pend_target;
 	uint64_t pend_wall_ns; /* host time it began */
@@ -206,6 +207,23 @@ struct rdcd {
 void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 uint64_t rdcd_wall_ns(void);
+/* A loopback address (127/8, ::1, ::ffff:127/104)? */
+bool rdcd_is_loopback(const struct sockaddr_storage *ss);
+
+/*
+ * systemd.c: socket activation and readiness (docs/protocol.md, "Under
+ * systemd").  rdcd_systemd_passed: did systemd pass this process
+ * listening sockets (LISTEN_PID, LISTEN_FDS; read once, then taken out
+ * of the environment)?  rdcd_systemd_add: --listen systemd[:NAME], the
+ * passed sockets (those named NAME) as listeners; -1, logged, when there
+ * are none or one is not a listening stream socket.  rdcd_systemd_done:
+ * close the passed sockets no listener took.  rdcd_systemd_notify: a
+ * state ("READY=1") to $NOTIFY_SOCKET, if set.
+ */
+bool rdcd_systemd_passed(void);
+int rdcd_systemd_add(struct rdcd *d, const char *name);
+void rdcd_systemd_done(struct rdcd *d);
+void rdcd_systemd_notify(const struct rdcd *d, const char *state);
 
 /* serve.c */
 int rdcd_device_open(struct rdcd *d);
