@@ -23,9 +23,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "hw.h"
 #include "rdcd.h"
-#include "vcd.h"
 
 #define NS_PER_S 1000000000ull
 /* Paced mode: wake this often to move time (1 ms). */
@@ -522,8 +520,8 @@ static void rdcd_advance_job(struct rdcd *d, void *arg)
 	bool feeding = rdcd_feed_pending(d);
 
 	(void)arg;
-	while (d->adv_target > d->hw->now) {
-		uint64_t n = d->adv_target - d->hw->now;
+	while (d->adv_target > rdc_hw_now(d->hw)) {
+		uint64_t n = d->adv_target - rdc_hw_now(d->hw);
 
 		if (feeding && n > RDCD_FEED_PIECE)
 			n = RDCD_FEED_PIECE;
@@ -541,7 +539,7 @@ static void rdcd_advance_job(struct rdcd *d, void *arg)
  */
 static bool rdcd_advance(struct rdcd *d)
 {
-	uint64_t now = d->hw->now, target;
+	uint64_t now = rdc_hw_now(d->hw), target;
 
 	if (rdcd_chip_busy(d))
 		return !rdcd_chip_resume(d);

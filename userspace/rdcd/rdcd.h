@@ -11,7 +11,7 @@
 #include <sys/socket.h>
 #include <sys/un.h>
 
-#include "rdc_priv.h"
+#include "rdc_server.h"
 #include "rdc_proto.h"
 #include "rdc_sink.h"
 
@@ -116,7 +116,7 @@ struct rdcd_client {
 	struct rdc_proto_hdr pend_hdr;
 	uint8_t *pend_words; /* SUBMIT payload, little-endian words */
 	size_t pend_n, pend_done;
-	struct rdc_wait pend_wait;
+	struct rdc_hw_wait pend_wait;
 	struct rdc_hw_wait pend_hw; /* stepped mode: the wait moves time */
 	uint64_t pend_start, pend_target;
 	uint64_t pend_wall_ns; /* host time it began */
