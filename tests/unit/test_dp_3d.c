@@ -1406,6 +1406,172 @@ static void test_patch_flat(void **state)
 	}
 }
 
+/* ---- the cost model ------------------------------------------------------ */
+
+/* The cycles of the last command, and *open the DRAM row it left open. */
+static uint64_t last_cycles(struct tdp *t)
+{
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), 0);
+	return rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES);
+}
+
+/* fetch (header and args through the FIFO) and decode */
+static uint64_t fetch_cost(uint32_t args)
+{
+	return (1 + args) * RDC_T_FIFO_WORD + RDC_T_DECODE;
+}
+
+/*
+ * docs/hardware.md's 3D formulas on work whose pixels cost nothing (all
+ * rejected, culled or clipped away), so every cycle is the geometry
+ * engine's steps and the buffer reads: the state commands cost their
+ * fetch alone; MESH reads its indices, then its vertices, and charges
+ * T_VERTEX3 a vertex, the lighting of each vertex (Gouraud), T_SORT3 per
+ * triangle and halving with SORT, T_TRI3 a triangle set up and T_CLIP3 a
+ * vertex clipping makes; PATCH and BEZIER3 T_TESS3 + T_VERTEX3 a point.
+ */
+static void test_cycles(void **state)
+{
+	struct tdp *t = *state;
+	struct ref_view v = std_view(true);
+	/* a square in z = 0 drawn clockwise (back faces), and a far one */
+	static const double sq[4][3] = {
+		{ -1, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { -1, 1, 0 }
+	};
+	static const double far[3][3] = { { -100, 0, 0 },
+					  { -90, 1, 0 },
+					  { -95, 2, 0 } };
+	/* a back face reaching past the left plane: two vertices made */
+	static const double cut[3][3] = { { -5, 0, 0 },
+					  { 0, 1, 0 },
+					  { 1, 0, 0 } };
+	static const double up[4][3] = {
+		{ 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 1 }
+	};
+	static const uint16_t back[15] = { 2, 1, 0, 3, 1, 0, 3, 2,
+					   0, 3, 2, 1, 1, 0, 2 };
+	static const uint16_t one[3] = { 0, 1, 2 };
+	uint32_t open, h0, a[49], n, lights;
+	uint64_t want;
+
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	clear_screen(t);
+	h0 = tdp_fnv(2166136261u, t->vram, STRIDE * SH);
+
+	/* state commands: fetch and decode only */
+	send_view(t, &v);
+	tdp_drain(t);
+	TDP_CMD(t, RDC_OP_SET_VIEWPORT3, RDC_XY(0, 0), RDC_XY(SW - 1, SH - 1));
+	assert_int_equal(last_cycles(t), fetch_cost(2));
+	TDP_CMD(t, RDC_OP_TRANSLATE, 0, 0, 0);
+	assert_int_equal(last_cycles(t), fetch_cost(3));
+	tdp_cmd(t, RDC_OP_ROTATE, RDC_AXIS_Z, 1, (const uint32_t[]){ 0 });
+	assert_int_equal(last_cycles(t), fetch_cost(1));
+	tdp_cmd(t, RDC_OP_PUSH_MATRIX, 0, 0, NULL);
+	assert_int_equal(last_cycles(t), fetch_cost(0));
+	tdp_cmd(t, RDC_OP_POP_MATRIX, 0, 0, NULL);
+	assert_int_equal(last_cycles(t), fetch_cost(0));
+	TDP_CMD(t, RDC_OP_SET_LIGHT, 0xffffff, 0, 0, 65536);
+	assert_int_equal(last_cycles(t), fetch_cost(4));
+	tdp_cmd(t, RDC_OP_SET_LIGHT, 1, 4,
+		(const uint32_t[]){ 0x808080, 65536, 0, 65536 });
+	assert_int_equal(last_cycles(t), fetch_cost(4));
+	lights = 2;
+	TDP_CMD(t, RDC_OP_SET_AMBIENT, 0x101010);
+	assert_int_equal(last_cycles(t), fetch_cost(1));
+	TDP_CMD(t, RDC_OP_SET_MATERIAL, 0x404040, 0x808080, 0xffffff, 8);
+	assert_int_equal(last_cycles(t), fetch_cost(4));
+	{
+		uint32_t view[18];
+
+		for (int i = 0; i < 18; i++)
+			view[i] = 0;
+		/* the reset view again */
+		view[5] = 65536;
+		view[7] = 65536;
+		view[11] = 65536;
+		view[12] = (uint32_t)-65536;
+		view[13] = 65536;
+		view[14] = (uint32_t)-65536;
+		view[15] = 65536;
+		view[16] = 65536;
+		view[17] = (uint32_t)-65536;
+		tdp_cmd(t, RDC_OP_SET_VIEW, 0, 18, view);
+		assert_int_equal(last_cycles(t), fetch_cost(18));
+	}
+	send_view(t, &v);
+	tdp_drain(t);
+
+	/* MESH with its extent outside the volume: reads and vertices */
+	put_mesh(t, far, NULL, 3, one, 1);
+	open = t->hw.bus.open_row;
+	want = fetch_cost(4) + tdp_bus_span(&open, IBASE, 6, TDP_BUS_READ) +
+	       tdp_bus_span(&open, VBASE, 3 * 12, TDP_BUS_READ) +
+	       3 * RDC_T_VERTEX3;
+	mesh(t, 0, 3, 1);
+	assert_int_equal(last_cycles(t), want);
+
+	/* five back faces, lit per vertex by two lights, sorted, culled */
+	put_mesh(t, sq, up, 4, back, 5);
+	open = t->hw.bus.open_row;
+	want = fetch_cost(4) + tdp_bus_span(&open, IBASE, 5 * 6, TDP_BUS_READ) +
+	       tdp_bus_span(&open, VBASE, 4 * 24, TDP_BUS_READ) +
+	       4 * (RDC_T_VERTEX3 + RDC_T_LIGHT3 + lights * RDC_T_LIGHT3_EACH) +
+	       5 * 3 * RDC_T_SORT3 /* ceil(log2 5) = 3 */ + 5 * RDC_T_TRI3;
+	mesh(t,
+	     RDC_MESH_NORMALS | RDC_MESH_LIT | RDC_MESH_GOURAUD |
+		     RDC_MESH_CULL | RDC_MESH_SORT,
+	     4, 5);
+	assert_int_equal(last_cycles(t), want);
+
+	/* a back face crossing the left plane: clipped (two new vertices),
+	 * then culled */
+	put_mesh(t, cut, NULL, 3, one, 1);
+	open = t->hw.bus.open_row;
+	want = fetch_cost(4) + tdp_bus_span(&open, IBASE, 6, TDP_BUS_READ) +
+	       tdp_bus_span(&open, VBASE, 3 * 12, TDP_BUS_READ) +
+	       3 * RDC_T_VERTEX3 + RDC_T_TRI3 + 2 * RDC_T_CLIP3;
+	mesh(t, RDC_MESH_CULL, 3, 1);
+	assert_int_equal(last_cycles(t), want);
+
+	/* a flat patch facing away, lit per vertex, culled: n = 4 */
+	n = 4;
+	a[0] = n << 8 | RDC_MESH_LIT | RDC_MESH_GOURAUD | RDC_MESH_CULL;
+	for (int i = 0; i < 4; i++)
+		for (int j = 0; j < 4; j++) {
+			/* u (j) to the left, v (i) up: the normal away */
+			a[1 + 3 * (4 * i + j)] = (uint32_t)fx(1 - j * 2 / 3.0);
+			a[2 + 3 * (4 * i + j)] = (uint32_t)fx(i * 2 / 3.0 - 1);
+			a[3 + 3 * (4 * i + j)] = 0;
+		}
+	want = fetch_cost(49) +
+	       (n + 1) * (n + 1) *
+		       (RDC_T_TESS3 + RDC_T_VERTEX3 + RDC_T_LIGHT3 +
+			lights * RDC_T_LIGHT3_EACH) +
+	       2 * n * n * RDC_T_TRI3;
+	tdp_cmd(t, RDC_OP_PATCH, 0, 49, a);
+	assert_int_equal(last_cycles(t), want);
+
+	/* a Bezier curve outside the volume, 8 steps */
+	for (int i = 0; i < 4; i++) {
+		a[3 * i] = (uint32_t)fx(-100 - i);
+		a[3 * i + 1] = (uint32_t)fx(i);
+		a[3 * i + 2] = 0;
+	}
+	tdp_cmd(t, RDC_OP_BEZIER3, 8, 12, a);
+	assert_int_equal(last_cycles(t),
+			 fetch_cost(12) + 9 * (RDC_T_TESS3 + RDC_T_VERTEX3));
+	tdp_cmd(t, RDC_OP_BEZIER3, 0, 12, a);
+	assert_int_equal(last_cycles(t),
+			 fetch_cost(12) + (RDC_BEZIER3_STEPS +
+					   1) * (RDC_T_TESS3 + RDC_T_VERTEX3));
+
+	/* none of it drew a pixel */
+	assert_int_equal(tdp_fnv(2166136261u, t->vram, STRIDE * SH), h0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -1415,6 +1581,7 @@ int main(void)
 		TDP_TEST(test_painter_sort),	 TDP_TEST(test_wire_edges_once),
 		TDP_TEST(test_zbuffer_ref),	 TDP_TEST(test_bad_input),
 		TDP_TEST(test_patch_flat),	 TDP_TEST(test_lit_formats),
+		TDP_TEST(test_cycles),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
