@@ -82,6 +82,15 @@ static void test_errors_and_exit_codes(void **state)
 	assert_int_equal(ctl(""), 2);
 	assert_int_equal(ctl("frobnicate"), 2);
 	assert_int_equal(ctl("run --bogus x"), 2);
+	/* a command without the argument it needs, or with one too many, is
+	 * bad usage, told before a device is opened (the device is not
+	 * there) */
+	assert_int_equal(ctl("run"), 2);
+	assert_non_null(strstr(out, "run needs a script"));
+	assert_int_equal(ctl("--connect unix:/nonexistent-dir/x run"), 2);
+	assert_int_equal(ctl("replay"), 2);
+	assert_int_equal(ctl("list extra"), 2);
+	assert_int_equal(ctl("regs a.rdl b.rdl"), 2);
 	assert_int_equal(ctl("run /nonexistent.rdl"), 1);
 	/* no such device on USB, or no libusb in this build */
 	assert_int_equal(ctl("--uri usb:fffe:fffd stats"), 1);

@@ -154,11 +154,6 @@ static int cmd_run(rdc_dev *dev, const struct opts *o)
 
 	if (!res)
 		return RDC_E_NOMEM;
-	if (!o->script) {
-		fprintf(stderr, "rdcctl: run needs a script\n");
-		free(res);
-		return RDC_E_INVAL;
-	}
 	if (o->vcd) {
 		ret = rdc_vcd_open(dev, o->vcd, &vcd);
 		if (ret == RDC_E_NOSYS)
@@ -362,8 +357,13 @@ int main(int argc, char **argv)
 		return 2;
 	if (!strcmp(o.cmd, "replay"))
 		return cmd_replay(&o);
-	if (!strcmp(o.cmd, "list"))
+	if (!strcmp(o.cmd, "list")) {
+		if (o.script) {
+			fprintf(stderr, "rdcctl: list takes no argument\n");
+			return 2;
+		}
 		return cmd_list();
+	}
 	if (strcmp(o.cmd, "run") && strcmp(o.cmd, "regs") &&
 	    strcmp(o.cmd, "stats")) {
 		fprintf(stderr, "rdcctl: unknown command '%s' (try --help)\n",
@@ -372,6 +372,11 @@ int main(int argc, char **argv)
 	}
 	if (o.vcd && strcmp(o.cmd, "run")) {
 		fprintf(stderr, "rdcctl: --vcd goes with run\n");
+		return 2;
+	}
+	/* bad usage (2) is told before a device is opened */
+	if (!strcmp(o.cmd, "run") && !o.script) {
+		fprintf(stderr, "rdcctl: run needs a script\n");
 		return 2;
 	}
 	ret = rdc_open(o.uri, &dev);
