@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: GPL-2.0-only
 # The Debian packages, built and tried as a user of them would:
 #  - `dpkg-buildpackage -us -uc -b` in a copy of the tree (every file git
-#    tracks or would track, as it is now) in BUILD_DIR/pkg, so the source
-#    tree gets none of debhelper's files: librdc1, librdc-dev, rdc-tools
-#    and rdcfb-dkms, nothing else;
+#    tracks or would track, as it is now) in BUILD_DIR-debs, so the source
+#    tree gets none of debhelper's files (and BUILD_DIR none of its
+#    directories, which the Makefile would read as dependency files):
+#    librdc1, librdc-dev, rdc-tools and rdcfb-dkms, nothing else;
 #  - lintian over them: no error (its warnings are printed);
 #  - each package unpacked (dpkg -x) into one scratch root, which must
 #    then hold what each is for (the library and its SONAME link; headers,
@@ -46,7 +47,10 @@ for t in dpkg-buildpackage dh dh_dkms lintian; do
 	}
 done
 top=$PWD
-work=$top/$O/pkg
+case $O in
+/*) work=${O%/}-debs ;;
+*) work=$top/${O%/}-debs ;;
+esac
 rm -rf "$work"
 mkdir -p "$work/src" "$work/root"
 
@@ -54,9 +58,10 @@ mkdir -p "$work/src" "$work/root"
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
 	git ls-files --cached --others --exclude-standard |
 		while read -r f; do [ -e "$f" ] && printf '%s\n' "$f"; done |
-		grep -v "^$O/" | tar -cf - -T - | tar -xf - -C "$work/src"
+		tar -cf - -T - | tar -xf - -C "$work/src"
 else
-	tar --exclude="./$O" --exclude='./build*' -cf - . | tar -xf - -C "$work/src"
+	tar --exclude="./${O%/}*" --exclude='./build*' -cf - . |
+		tar -xf - -C "$work/src"
 fi
 [ -f "$work/src/debian/control" ] || { bad "no debian/ in the copy"; finish; }
 
