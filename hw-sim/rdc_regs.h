@@ -85,9 +85,11 @@
 /* ---- CRTC: timing (latched), framebuffer (latched), beam ---------------- */
 /*
  * Horizontal values count pixels, vertical values count lines, both from 0
- * at the first active pixel/line:  0 <= DISPLAY <= SYNC_START <= SYNC_END
- * <= TOTAL, TOTAL <= RDC_CRTC_MAX_TOTAL.  Invalid timing is refused at
- * latch time with RDC_ERR_MODE and the CRTC keeps its previous mode.
+ * at the first active pixel/line:  1 <= DISPLAY <= SYNC_START <= SYNC_END
+ * <= TOTAL <= RDC_CRTC_MAX_TOTAL, DISPLAY <= RDC_CRTC_MAX_DISPLAY,
+ * V_DISPLAY < V_TOTAL, pixel clock RDC_PIXCLK_MIN_KHZ..RDC_PIXCLK_MAX_KHZ.
+ * Invalid timing is refused at latch time with RDC_ERR_MODE and the CRTC
+ * keeps its previous mode.
  */
 #define RDC_REG_H_TOTAL 0x100 /* RW latched */
 #define RDC_REG_H_DISPLAY 0x104 /* RW latched */

@@ -53,8 +53,8 @@ enum rdc_msg_type {
 	RDC_MSG_VRAM_WRITE = 5, /* u32 addr, bytes */
 	RDC_MSG_SUBMIT = 6,	/* u32 words[] (back-pressure: see docs) */
 	RDC_MSG_WAIT = 7,	/* struct rdc_proto_wait */
-	RDC_MSG_STEP = 8,	/* u64 cycles (stepped mode only) */
-	RDC_MSG_FRAME_GRAB = 9, /* u32 encoding -> frame (as an event) */
+	RDC_MSG_STEP = 8,	/* u64 cycles (in every run mode) */
+	RDC_MSG_FRAME_GRAB = 9, /* u32 encoding, u32 max pixels -> frame */
 	RDC_MSG_SUBSCRIBE = 10, /* u32 events, u32 every, u32 encoding */
 	RDC_MSG_STATS = 11,	/* -> struct rdc_proto_stats */
 	RDC_MSG_RESET = 12,	/* u32 RDC_RESET_* */
@@ -72,8 +72,10 @@ enum rdc_msg_type {
 
 /*
  * Status codes.  The daemon turns its errors into these in one place
- * (rdc_proto_status_from_error); librdc turns them back in one place
- * (net.c).  Codes past the last known one read as RDC_ST_PROTO.
+ * (rdcd_status_from_error in userspace/rdcd/serve.c); librdc turns them
+ * back in one place (net_status_to_error in userspace/lib/net.c), where
+ * codes past the last known one read as RDC_E_PROTO.  Which of them close
+ * the connection: rdc_proto_reply_closes.
  */
 enum rdc_status {
 	RDC_ST_OK = 0,
@@ -122,7 +124,7 @@ enum rdc_run_mode {
 /* Frame encodings */
 enum rdc_frame_enc {
 	RDC_ENC_RAW = 0,   /* width * height u32 XRGB8888 */
-	RDC_ENC_RLE = 1,   /* runs: u32 (count - 1) << 0 ... see proto.c */
+	RDC_ENC_RLE = 1,   /* runs of u32 count (>= 1), u32 pixel */
 	RDC_ENC_DELTA = 2, /* rows RLE'd or "same as the previous frame" */
 	RDC_ENC_COUNT_ = 3
 };
