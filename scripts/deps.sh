@@ -11,6 +11,10 @@ PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncse
 PKGS="$PKGS libudev-dev"
 # the firmware image and its test (make firmware-mcu, make mcu-test)
 PKGS="$PKGS gcc-arm-none-eabi qemu-system-arm"
+# test_dist: the manual pages through groff and man --warnings, the bash
+# completion with bash-completion's helpers, the units through
+# systemd-analyze verify
+PKGS="$PKGS groff-base man-db bash-completion systemd"
 # libgpiod's v2 API (GPIO lines): Debian 13 has it in main; Debian 12 only
 # in bookworm-backports, which is enabled for these two packages alone
 # (apt-get -t for them, the rest stays on bookworm).
@@ -18,6 +22,10 @@ GPIOD_PKGS="libgpiod-dev gpiod"
 # `--peers`: also the libraries `make bench-peers` measures rdc against.
 PEER_PKGS="libpixman-1-dev libcairo2-dev libsdl2-gfx-dev"
 [ "$1" = "--peers" ] && PKGS="$PKGS $PEER_PKGS"
+# `--debs`: what `make debs` needs to build the Debian packages (debian/)
+# and check them.
+DEB_PKGS="dpkg-dev debhelper dh-dkms lintian"
+[ "$1" = "--debs" ] && PKGS="$PKGS $DEB_PKGS"
 
 missing=""
 for p in $PKGS; do
