@@ -81,7 +81,7 @@ TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
-	shared install uninstall install-check \
+	shared install uninstall install-check debs \
 	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
 	bench-peers module \
 	module-clean checkpatch format format-check firmware-mcu mcu-test
@@ -92,6 +92,7 @@ help:
 	@echo "make install      install them, the headers, rdc.pc (PREFIX=, DESTDIR=, LIBDIR=...)"
 	@echo "make uninstall    remove what make install put there (the same variables)"
 	@echo "make install-check install into a scratch DESTDIR, build examples/hello.c against it"
+	@echo "make debs         the Debian packages (debian/) in $(O)-debs, lintian, and the packaged tools run"
 	@echo "make demo         install missing packages, build, run examples/demo.rdl"
 	@echo "make check        install missing packages, build with ASan+UBSan, run every test"
 	@echo "make golden       regenerate tests/golden/golden.txt and write PNGs to $(O)/golden"
@@ -303,6 +304,14 @@ uninstall:
 # with pkg-config alone (tests/install/run.sh says what it checks).
 install-check: all shared
 	@tests/install/run.sh $(O)
+
+# The Debian packages (debian/): dpkg-buildpackage -us -uc -b in a copy
+# of the tree in $(O)-debs, lintian, and the packaged rdcctl, rdcd and
+# rdc.pc tried from the unpacked packages (tests/pkg/debs.sh).  It takes
+# more than two minutes (a whole build), so make check leaves it out.
+debs:
+	@scripts/deps.sh --debs
+	@tests/pkg/debs.sh $(O)
 
 demo: deps
 	$(MAKE) all
