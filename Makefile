@@ -688,7 +688,7 @@ firmware-mcu: $(MCU_DIR)/rdc-mcu.elf
 	ci=$$(find . -name '*.ci'); \
 	awk -v root=rdc_mcu_reset -f $(CURDIR)/mcu/stack_bound.awk $$ci \
 		>stack.txt || { cat stack.txt; exit 1; }; \
-	awk -v root=rdc_mcu_fault -f $(CURDIR)/mcu/stack_bound.awk $$ci \
+	awk -v root=rdc_mcu_fault_report -f $(CURDIR)/mcu/stack_bound.awk $$ci \
 		>>stack.txt || { cat stack.txt; exit 1; }; \
 	{ $(MCU_SIZE) rdc-mcu.elf; \
 	  echo "of which the scenes (mcu_scenes.o):"; \

@@ -19,6 +19,7 @@ extern uint32_t __stack_limit[], __stack_top[];
 int main(void);
 void rdc_mcu_reset(void);
 void rdc_mcu_fault(void);
+void rdc_mcu_fault_report(const uint32_t *frame);
 
 /* System control block: configuration and fault status (ARMv7-M ARM B3.2) */
 #define SCB_CCR		     ((volatile uint32_t *)0xe000ed14u)
@@ -115,19 +116,24 @@ static void put_hex(char *d, uint32_t v)
 }
 
 /* Any fault: say which and where, and stop with a failure status. */
-void __attribute__((noreturn, used)) rdc_mcu_fault(void)
+void __attribute__((noreturn, used)) rdc_mcu_fault_report(const uint32_t *frame)
 {
 	char msg[] = "fault: ipsr xxxxxxxx cfsr xxxxxxxx pc xxxxxxxx\n";
-	uint32_t ipsr, *frame;
+	uint32_t ipsr;
 
 	__asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
-	__asm__ volatile("mrs %0, msp" : "=r"(frame));
 	put_hex(msg + 12, ipsr);
 	put_hex(msg + 26, *SCB_CFSR);
 	/* the exception frame: r0-r3, r12, lr, pc, xpsr */
 	put_hex(msg + 38, frame[6]);
 	mcu_puts(msg);
 	mcu_exit(1);
+}
+
+/* The handler proper: the frame the exception pushed, before any push. */
+void __attribute__((naked, noreturn)) rdc_mcu_fault(void)
+{
+	__asm__ volatile("mrs r0, msp\n\tb rdc_mcu_fault_report");
 }
 
 /* ARMv7-M vector table: the initial stack pointer, then the handlers. */
