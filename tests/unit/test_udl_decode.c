@@ -521,6 +521,45 @@ static void test_mode_presets(void **state)
 	}
 }
 
+/*
+ * DRM adds the other refresh of a CTA-861 mode (clocks 1000/1001 apart,
+ * docs/usb.md): a preset's geometry at such a clock scans at the clock
+ * udl sends (5 kHz steps), with the preset's sync polarities.
+ */
+static void test_mode_twins(void **state)
+{
+	(void)state;
+	for (uint32_t p = 0; p < RDC_PRESET_COUNT; p++) {
+		struct rdc_timing t;
+		struct rdc_udl u;
+		struct sink s;
+		struct buf b = { 0 };
+		rdc_dev *dev = sim_open(8u << 20);
+		uint32_t khz, v;
+
+		assert_int_equal(rdc_preset_timing(p, &t), 0);
+		khz = p % 2 ? (t.pixclk_khz * 1001u + 500u) / 1000u :
+			      (t.pixclk_khz * 1000u + 500u) / 1001u;
+		put_mode(&b, &t, khz, 0);
+		decoder(&u, &s, 8u << 20);
+		rdc_udl_feed(&u, b.p, b.n);
+		assert_int_equal(u.st.errors, 0);
+		assert_int_equal(u.st.modes, 1);
+		assert_int_equal(u.mode.pixclk_khz, khz / 5 * 5);
+		assert_int_equal(u.mode.flags, t.flags);
+		assert_int_equal(u.mode.h_sync_start, t.h_sync_start);
+		assert_int_equal(u.mode.v_total, t.v_total);
+		sim_run(dev, &s);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_PIXCLK_KHZ, &v), 0);
+		assert_int_equal(v, khz / 5 * 5);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_CRTC_FLAGS, &v), 0);
+		assert_int_equal(v, t.flags);
+		free(b.p);
+		free(s.w);
+		rdc_close(dev);
+	}
+}
+
 static void test_mode_bad(void **state)
 {
 	struct rdc_timing t;
@@ -952,6 +991,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_lfsr),
 		cmocka_unit_test(test_mode_presets),
+		cmocka_unit_test(test_mode_twins),
 		cmocka_unit_test(test_mode_bad),
 		cmocka_unit_test(test_hand_built),
 		cmocka_unit_test(test_random_vs_ref),

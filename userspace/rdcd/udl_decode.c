@@ -325,9 +325,10 @@ static bool udl_same_geometry(const struct rdc_timing *a,
 }
 
 /*
- * A timing equal to a preset's whose clock is that preset's as the EDID
- * rounded it (10 kHz steps) is the preset: its exact clock and sync
- * polarities (udl sends no polarities).
+ * A timing with a preset's geometry takes the preset's sync polarities
+ * (udl sends none); with the preset's clock as the EDID rounded it (10
+ * kHz steps) it is the preset, exact clock included.  Any other clock
+ * stays: DRM's CTA-861 twins of a preset (1000/1001 apart) scan at theirs.
  */
 static void udl_snap_preset(struct rdc_timing *t)
 {
@@ -340,10 +341,11 @@ static void udl_snap_preset(struct rdc_timing *t)
 		d = t->pixclk_khz > pt.pixclk_khz ?
 			    t->pixclk_khz - pt.pixclk_khz :
 			    pt.pixclk_khz - t->pixclk_khz;
-		if (d < 10u) {
+		if (d < 10u)
 			*t = pt;
-			return;
-		}
+		else
+			t->flags = pt.flags;
+		return;
 	}
 }
 
