@@ -1368,6 +1368,15 @@ static const struct rdl_stmt {
 	{ "spin", rdl_st_spin, 0, 1, 1 },
 };
 
+const char *rdl_stmt_info(size_t i, uint32_t *min, uint32_t *max)
+{
+	if (i >= RDC_ARRAY_SIZE(rdl_stmts))
+		return NULL;
+	*min = rdl_stmts[i].min;
+	*max = rdl_stmts[i].max == RDL_ANY ? UINT32_MAX : rdl_stmts[i].max;
+	return rdl_stmts[i].name;
+}
+
 static int rdl_arg_count(struct rdl *r, const struct rdl_stmt *st,
 			 uint32_t nargs)
 {

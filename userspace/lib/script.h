@@ -75,6 +75,12 @@ int rdl_format(struct rdl *r, size_t i, uint32_t *out);
 int rdl_reg(struct rdl *r, size_t i, uint32_t *out);
 bool rdl_word(struct rdl *r, size_t i, const char *w);
 
+/*
+ * script.c: statement i's keyword and argument counts (max UINT32_MAX:
+ * any number), NULL past the last; docs/rdl.md is checked against it.
+ */
+const char *rdl_stmt_info(size_t i, uint32_t *min, uint32_t *max);
+
 /* script_names.c */
 extern const char *const rdl_fmt_names[RDC_FMT_COUNT];
 int rdl_rop_by_name(const char *s);

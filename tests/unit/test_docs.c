@@ -1,0 +1,785 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * The reference docs against the code, mechanically: every register row of
+ * docs/hardware.md against rdc_regs.h (offset, name, access) and librdc's
+ * register names; every opcode of rdc_regs.h in docs/commands.md with the
+ * same number; the device error codes, formats and presets of
+ * docs/hardware.md; the status codes, message types and the statuses that
+ * close a connection of docs/protocol.md against rdc_proto.h; every .rdl
+ * statement of docs/rdl.md's tables known to the interpreter and every
+ * statement it knows documented, with argument counts that fit; the names
+ * rdl.md calls case-insensitive; the options of `rdcd --help` and
+ * `rdcctl --help` in the synopses of docs/protocol.md and docs/rdl.md;
+ * and the README's C example compiling as the README says.
+ *
+ * Run from the source root (tests/run.sh does); rdcd and rdcctl are found
+ * next to this test's directory ($(O)/san).
+ */
+#include <ctype.h>
+#include <libgen.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "hw.h"
+#include "rdc.h"
+#include "rdc_proto.h"
+#include "script.h"
+
+static char bindir[400];
+
+/* A whole file, NUL-terminated. */
+static char *slurp(const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	char *s = NULL;
+	long n;
+
+	if (!f)
+		fail_msg("cannot open %s (run from the source root)", path);
+	assert_int_equal(fseek(f, 0, SEEK_END), 0);
+	n = ftell(f);
+	assert_true(n > 0);
+	rewind(f);
+	s = malloc((size_t)n + 1);
+	assert_non_null(s);
+	assert_int_equal(fread(s, 1, (size_t)n, f), (size_t)n);
+	s[n] = 0;
+	fclose(f);
+	return s;
+}
+
+/* The text from `from` up to (not including) `to`, or to the end. */
+static char *section(const char *text, const char *from, const char *to)
+{
+	const char *a = strstr(text, from), *b;
+	char *s;
+
+	if (!a)
+		fail_msg("no '%s' in the document", from);
+	b = to ? strstr(a + strlen(from), to) : NULL;
+	if (!b)
+		b = a + strlen(a);
+	s = strndup(a, (size_t)(b - a));
+	assert_non_null(s);
+	return s;
+}
+
+/* The next line of *p (without its newline) into buf; false at the end. */
+static bool next_line(const char **p, char *buf, size_t cap)
+{
+	const char *s = *p, *nl;
+	size_t n;
+
+	if (!*s)
+		return false;
+	nl = strchr(s, '\n');
+	n = nl ? (size_t)(nl - s) : strlen(s);
+	if (n >= cap)
+		n = cap - 1;
+	memcpy(buf, s, n);
+	buf[n] = 0;
+	*p = nl ? nl + 1 : s + strlen(s);
+	return true;
+}
+
+/* Table cell k (0 = the first after the leading '|'), trimmed; a '|'
+ * escaped as "\|" stays in the cell. */
+static bool cell(const char *row, int k, char *out, size_t cap)
+{
+	const char *p = row;
+	size_t n = 0;
+
+	if (*p != '|')
+		return false;
+	p++;
+	for (int i = 0; i < k; i++) {
+		while (*p && !(*p == '|' && p[-1] != '\\'))
+			p++;
+		if (!*p)
+			return false;
+		p++;
+	}
+	while (*p == ' ')
+		p++;
+	while (*p && !(*p == '|' && p[-1] != '\\') && n + 1 < cap)
+		out[n++] = *p++;
+	if (!*p)
+		return false;
+	while (n && out[n - 1] == ' ')
+		n--;
+	out[n] = 0;
+	return true;
+}
+
+static bool is_name(int c)
+{
+	return isupper(c) || isdigit(c) || c == '_';
+}
+
+/* ---- Registers ----------------------------------------------------------- */
+
+#define MAX_REGS 128
+
+struct reg {
+	char name[32];
+	uint32_t off;
+	char access[8];
+};
+
+/* "#define RDC_REG_NAME 0xOFF" with its access from the comment on the
+ * line or from the first word of the block comment above it. */
+static size_t header_regs(struct reg *r)
+{
+	char *h = slurp("hw-sim/rdc_regs.h");
+	const char *p = h, *block = NULL;
+	char line[256], prev[256] = "";
+	size_t n = 0;
+
+	for (; next_line(&p, line, sizeof(line)); strcpy(prev, line)) {
+		const char *s = line + strlen("#define RDC_REG_");
+		char *end;
+		size_t k = 0;
+
+		if (!strncmp(line, "/*", 2) && !strstr(line, "*/"))
+			block = p; /* the block's first text line follows */
+		if (strncmp(line, "#define RDC_REG_", 16))
+			continue;
+		while (is_name(s[k]))
+			k++;
+		if (strncmp(s + k, " 0x", 3))
+			continue;
+		assert_true(n < MAX_REGS);
+		assert_true(k < sizeof(r[n].name));
+		memcpy(r[n].name, s, k);
+		r[n].name[k] = 0;
+		r[n].off = (uint32_t)strtoul(s + k + 1, &end, 16);
+		if (*end && *end != ' ' && *end != '\t')
+			continue; /* RDC_REG_WINDOW 0x400u: not a register */
+		while (*end == ' ' || *end == '\t')
+			end++;
+		if (!strncmp(end, "/*", 2)) {
+			sscanf(end + 2, "%7s", r[n].access);
+		} else if (!strncmp(prev, "/*", 2)) { /* one line above */
+			sscanf(prev + 2, "%7s", r[n].access);
+		} else {
+			char first[256];
+
+			assert_non_null(block);
+			assert_true(next_line(&block, first, sizeof(first)));
+			assert_int_equal(sscanf(first, " * %7s", r[n].access),
+					 1);
+		}
+		n++;
+	}
+	free(h);
+	return n;
+}
+
+/* hardware.md's register table; a row "0xA-0xB | N1, N2, ..." is
+ * consecutive registers. */
+static size_t doc_regs(struct reg *r)
+{
+	char *doc = slurp("docs/hardware.md");
+	char *tab = section(doc, "## Registers", "\n## ");
+	const char *p = tab;
+	char line[1024], c0[64], c1[512], c2[64];
+	size_t n = 0;
+
+	while (next_line(&p, line, sizeof(line))) {
+		char *name, *save = NULL;
+		uint32_t off;
+
+		if (strncmp(line, "| 0x", 4) ||
+		    !cell(line, 0, c0, sizeof(c0)) ||
+		    !cell(line, 1, c1, sizeof(c1)) ||
+		    !cell(line, 2, c2, sizeof(c2)))
+			continue;
+		off = (uint32_t)strtoul(c0, NULL, 16);
+		for (name = strtok_r(c1, ", ", &save); name;
+		     name = strtok_r(NULL, ", ", &save)) {
+			assert_true(n < MAX_REGS);
+			snprintf(r[n].name, sizeof(r[n].name), "%s", name);
+			r[n].off = off;
+			sscanf(c2, "%7s", r[n].access);
+			off += 4;
+			n++;
+		}
+		if (strchr(c0, '-'))
+			assert_int_equal(off - 4, strtoul(strchr(c0, '-') + 1,
+							  NULL, 16));
+	}
+	free(tab);
+	free(doc);
+	return n;
+}
+
+static const struct reg *find_reg(const struct reg *r, size_t n,
+				  const char *name)
+{
+	for (size_t i = 0; i < n; i++)
+		if (!strcmp(r[i].name, name))
+			return &r[i];
+	return NULL;
+}
+
+static void test_registers(void **state)
+{
+	static struct reg hr[MAX_REGS], dr[MAX_REGS];
+	size_t nh = header_regs(hr), nd = doc_regs(dr);
+
+	(void)state;
+	assert_true(nh > 50);
+	for (size_t i = 0; i < nh; i++) {
+		const struct reg *d = find_reg(dr, nd, hr[i].name);
+		uint32_t off = 0;
+
+		if (!d)
+			fail_msg("register %s is not in docs/hardware.md",
+				 hr[i].name);
+		if (d->off != hr[i].off || strcmp(d->access, hr[i].access))
+			fail_msg("%s: rdc_regs.h 0x%03x %s, hardware.md "
+				 "0x%03x %s",
+				 hr[i].name, hr[i].off, hr[i].access, d->off,
+				 d->access);
+		/* librdc's names (rdcctl regs, .rdl) are the same */
+		assert_int_equal(rdc_reg_by_name(hr[i].name, &off), 0);
+		assert_int_equal(off, hr[i].off);
+	}
+	for (size_t i = 0; i < nd; i++)
+		if (!find_reg(hr, nh, dr[i].name))
+			fail_msg("hardware.md names %s, rdc_regs.h does not",
+				 dr[i].name);
+	for (size_t i = 0; i < rdc_reg_count(); i++)
+		if (!find_reg(hr, nh, rdc_reg_info(i, NULL)))
+			fail_msg("librdc names %s, rdc_regs.h does not",
+				 rdc_reg_info(i, NULL));
+	assert_int_equal(rdc_reg_count(), nh);
+}
+
+/* ---- Opcodes ------------------------------------------------------------- */
+
+static void test_opcodes(void **state)
+{
+	char *h = slurp("hw-sim/rdc_regs.h");
+	char *doc = slurp("docs/commands.md");
+	static uint8_t in_header[256];
+	const char *p;
+	int n = 0;
+
+	(void)state;
+	/* "RDC_OP_NAME = 0xNN": named in commands.md with that number, as
+	 * `RDC_OP_NAME` 0xNN or (the 3D tables) `NAME` 0xNN */
+	for (p = strstr(h, "RDC_OP_"); p; p = strstr(p + 1, "RDC_OP_")) {
+		char name[40], want[64], want3[64];
+		unsigned int v;
+		size_t k = 0;
+
+		while (is_name(p[7 + k]) && k + 1 < sizeof(name)) {
+			name[k] = p[7 + k];
+			k++;
+		}
+		name[k] = 0;
+		if (sscanf(p + 7 + k, " = 0x%x", &v) != 1 ||
+		    !strcmp(name, "COUNT"))
+			continue;
+		assert_true(v < 256);
+		in_header[v] = 1;
+		n++;
+		snprintf(want, sizeof(want), "`RDC_OP_%s` 0x%02x", name, v);
+		snprintf(want3, sizeof(want3), "`%s` 0x%02x", name, v);
+		if (!strstr(doc, want) && !strstr(doc, want3))
+			fail_msg(
+				"commands.md does not give RDC_OP_%s as 0x%02x",
+				name, v);
+		if (!rdc_op_name(v))
+			fail_msg("RDC_OP_%s 0x%02x has no .rdl name", name, v);
+	}
+	assert_true(n > 60);
+	/* no opcode the header does not have */
+	for (unsigned int v = 0; v < 256; v++)
+		if (!in_header[v] && rdc_op_name(v))
+			fail_msg("rdc_op_name(0x%02x) = %s, not in rdc_regs.h",
+				 v, rdc_op_name(v));
+	/* every "`RDC_OP_X` 0xNN" in commands.md agrees with the header */
+	for (p = strstr(doc, "`RDC_OP_"); p; p = strstr(p + 1, "`RDC_OP_")) {
+		char name[40], def[64];
+		unsigned int v;
+		const char *q;
+		size_t k = 0;
+
+		while (is_name(p[8 + k]) && k + 1 < sizeof(name)) {
+			name[k] = p[8 + k];
+			k++;
+		}
+		name[k] = 0;
+		if (sscanf(p + 8 + k, "` 0x%x", &v) != 1)
+			continue;
+		snprintf(def, sizeof(def), "RDC_OP_%s = 0x%02x,", name, v);
+		q = strstr(h, def);
+		if (!q)
+			fail_msg("commands.md: RDC_OP_%s 0x%02x is not in "
+				 "rdc_regs.h",
+				 name, v);
+	}
+	free(doc);
+	free(h);
+}
+
+/* ---- Device errors, formats, presets --------------------------------- */
+
+static void test_device_errors(void **state)
+{
+	char *h = slurp("hw-sim/rdc_regs.h");
+	char *doc = slurp("docs/hardware.md");
+	char *tab = section(doc, "## Errors", "\n## ");
+	const char *p = tab;
+	char line[512], c0[16], c1[64];
+	int rows = 0;
+
+	(void)state;
+	while (next_line(&p, line, sizeof(line))) {
+		char def[80];
+		unsigned int v;
+
+		if (!cell(line, 0, c0, sizeof(c0)) ||
+		    sscanf(c0, "%u", &v) != 1 || !cell(line, 1, c1, sizeof(c1)))
+			continue;
+		snprintf(def, sizeof(def), "RDC_ERR_%s = %u,", c1, v);
+		if (!strstr(h, def))
+			fail_msg("hardware.md: error %u %s is not rdc_regs.h's",
+				 v, c1);
+		assert_string_equal(rdc_dev_strerror(v), c1);
+		rows++;
+	}
+	/* and the table has every code from 1 to the last */
+	assert_int_equal(rows, RDC_ERR_COUNT - 1);
+	assert_string_equal(rdc_dev_strerror(RDC_ERR_COUNT), "UNKNOWN");
+	free(tab);
+	free(doc);
+	free(h);
+}
+
+static void test_formats_and_presets(void **state)
+{
+	char *doc = slurp("docs/hardware.md");
+	char *fmt = section(doc, "### Formats", "\n### ");
+	char *pre = section(doc, "| preset | mode |", "\n\n");
+	const char *p = fmt;
+	char line[512], c[5][128];
+	int rows = 0;
+
+	(void)state;
+	while (next_line(&p, line, sizeof(line))) {
+		unsigned int v, bits;
+		char lower[16];
+
+		if (!cell(line, 0, c[0], sizeof(c[0])) ||
+		    sscanf(c[0], "%u", &v) != 1 ||
+		    !cell(line, 1, c[1], sizeof(c[1])) ||
+		    !cell(line, 2, c[2], sizeof(c[2])))
+			continue;
+		assert_true(v < RDC_FMT_COUNT);
+		assert_int_equal(sscanf(c[2], "%u", &bits), 1);
+		assert_int_equal(bits, rdc_format_bpp(v));
+		for (size_t k = 0; k < sizeof(lower); k++) {
+			lower[k] = (char)tolower((unsigned char)c[1][k]);
+			if (!lower[k])
+				break;
+		}
+		lower[sizeof(lower) - 1] = 0;
+		assert_string_equal(lower, rdl_fmt_names[v]);
+		rows++;
+	}
+	assert_int_equal(rows, RDC_FMT_COUNT);
+
+	rows = 0;
+	p = pre;
+	while (next_line(&p, line, sizeof(line))) {
+		struct rdc_timing t;
+		unsigned int v, mhz, frac = 0, hv[4], vv[4], w, h;
+		char sfrac[8] = "";
+
+		if (!cell(line, 0, c[0], sizeof(c[0])) ||
+		    sscanf(c[0], "%u", &v) != 1)
+			continue;
+		for (int k = 1; k < 5; k++)
+			assert_true(cell(line, k, c[k], sizeof(c[k])));
+		assert_int_equal(rdc_preset_timing(v, &t), 0);
+		assert_int_equal(sscanf(c[1], "%ux%u", &w, &h), 2);
+		assert_int_equal(w, t.h_display);
+		assert_int_equal(h, t.v_display);
+		/* "25.175 MHz" */
+		assert_true(sscanf(c[2], "%u.%7[0-9]", &mhz, sfrac) >= 1);
+		for (size_t k = 0; k < 3; k++)
+			frac = frac * 10 +
+			       (k < strlen(sfrac) ?
+					(unsigned int)(sfrac[k] - '0') :
+					0);
+		assert_int_equal(mhz * 1000 + frac, t.pixclk_khz);
+		assert_int_equal(sscanf(c[3], "%u/%u/%u/%u", &hv[0], &hv[1],
+					&hv[2], &hv[3]),
+				 4);
+		assert_int_equal(sscanf(c[4], "%u/%u/%u/%u", &vv[0], &vv[1],
+					&vv[2], &vv[3]),
+				 4);
+		assert_int_equal(hv[0], t.h_display);
+		assert_int_equal(hv[1], t.h_sync_start);
+		assert_int_equal(hv[2], t.h_sync_end);
+		assert_int_equal(hv[3], t.h_total);
+		assert_int_equal(vv[0], t.v_display);
+		assert_int_equal(vv[1], t.v_sync_start);
+		assert_int_equal(vv[2], t.v_sync_end);
+		assert_int_equal(vv[3], t.v_total);
+		rows++;
+	}
+	assert_int_equal(rows, RDC_PRESET_COUNT);
+	free(pre);
+	free(fmt);
+	free(doc);
+}
+
+/* ---- The wire protocol --------------------------------------------------- */
+
+/* "RDC_<pfx>NAME = N," of rdc_proto.h; -1 if there is none. */
+static int proto_value(const char *h, const char *pfx, const char *name)
+{
+	char def[64];
+	const char *p;
+	int v;
+
+	snprintf(def, sizeof(def), "RDC_%s%s = ", pfx, name);
+	p = strstr(h, def);
+	if (!p || sscanf(p + strlen(def), "%d", &v) != 1)
+		return -1;
+	return v;
+}
+
+static void test_protocol(void **state)
+{
+	char *h = slurp("userspace/include/rdc_proto.h");
+	char *doc = slurp("docs/protocol.md");
+	char *st = section(doc, "### Status codes", "librdc turns");
+	char *cl = section(doc, "closes the connection after", "\n\n");
+	char line[512], c0[64], name[32];
+	const char *p;
+	int n = 0, v, off;
+	uint32_t named = 0;
+
+	(void)state;
+	/* "0 OK, 1 INVAL, ...": every code, in the header's numbers */
+	for (p = st; *p; p++) {
+		if (!isdigit((unsigned char)*p) ||
+		    sscanf(p, "%d %31[A-Z]%n", &v, name, &off) != 2)
+			continue;
+		if (proto_value(h, "ST_", name) != v)
+			fail_msg("protocol.md: status %d %s, rdc_proto.h %d", v,
+				 name, proto_value(h, "ST_", name));
+		assert_int_equal(v, n);
+		n++;
+		p += off - 1;
+	}
+	assert_int_equal(n, RDC_ST_COUNT_);
+
+	/* the message table: "| N NAME | ..." */
+	n = 0;
+	p = doc;
+	while (next_line(&p, line, sizeof(line))) {
+		if (!cell(line, 0, c0, sizeof(c0)) ||
+		    sscanf(c0, "%d %31[A-Z_]", &v, name) != 2)
+			continue;
+		if (proto_value(h, "MSG_", name) != v)
+			fail_msg("protocol.md: message %d %s, rdc_proto.h %d",
+				 v, name, proto_value(h, "MSG_", name));
+		n++;
+	}
+	assert_int_equal(n, RDC_MSG_REQUEST_LAST + 2); /* and two events */
+
+	/*
+	 * The statuses after which the daemon hangs up, by the rule the
+	 * daemon closes by (rdc_proto_reply_closes): the paragraph names
+	 * them before ORDER, which it names as leaving the connection open;
+	 * TOOBIG closes after any request, nothing else but a refused HELLO
+	 * does, and a HELLO answered anything but OK or ORDER is refused.
+	 */
+	*strstr(cl, "ORDER") = 0;
+	for (p = cl; *p; p++) {
+		if (!isupper((unsigned char)*p) ||
+		    sscanf(p, "%31[A-Z]%n", name, &off) != 1)
+			continue;
+		v = proto_value(h, "ST_", name);
+		if (v > RDC_ST_OK) /* "any status but OK" */
+			named |= 1u << v;
+		p += off - 1;
+	}
+	for (uint32_t s = 0; s < RDC_ST_COUNT_; s++) {
+		if ((named >> s & 1) &&
+		    !rdc_proto_reply_closes(RDC_MSG_HELLO, s))
+			fail_msg("status %u: protocol.md closes, the code not",
+				 s);
+		assert_int_equal(rdc_proto_reply_closes(RDC_MSG_HELLO, s),
+				 s != RDC_ST_OK && s != RDC_ST_ORDER);
+		for (uint32_t t = RDC_MSG_REG_READ; t <= RDC_MSG_REQUEST_LAST;
+		     t++)
+			assert_int_equal(rdc_proto_reply_closes(t, s),
+					 s == RDC_ST_TOOBIG);
+	}
+	assert_true(named & 1u << RDC_ST_TOOBIG);
+	assert_true(named & 1u << RDC_ST_MALFORMED);
+	free(cl);
+	free(st);
+	free(doc);
+	free(h);
+}
+
+/* ---- .rdl statements ----------------------------------------------------- */
+
+#define MAX_FORMS 256
+
+static size_t rdl_doc_forms(char (*forms)[160])
+{
+	char *doc = slurp("docs/rdl.md");
+	const char *p = doc;
+	char line[2048], c0[1024];
+	size_t n = 0;
+
+	while (next_line(&p, line, sizeof(line))) {
+		const char *q;
+
+		if (strncmp(line, "| `", 3) || !cell(line, 0, c0, sizeof(c0)))
+			continue;
+		for (q = strchr(c0, '`'); q; q = strchr(q + 1, '`')) {
+			const char *e = strchr(q + 1, '`');
+
+			assert_non_null(e);
+			assert_true(n < MAX_FORMS);
+			snprintf(forms[n], sizeof(forms[n]), "%.*s",
+				 (int)(e - q - 1), q + 1);
+			n++;
+			q = e;
+		}
+	}
+	free(doc);
+	return n;
+}
+
+static void test_rdl_statements(void **state)
+{
+	static char forms[MAX_FORMS][160];
+	size_t nf = rdl_doc_forms(forms), i;
+	uint32_t min, max;
+	const char *name;
+	rdc_dev *dev;
+
+	(void)state;
+	assert_true(nf > 80);
+	/* every statement the interpreter knows is in a table */
+	for (i = 0; (name = rdl_stmt_info(i, &min, &max)); i++) {
+		size_t k, len = strlen(name);
+
+		for (k = 0; k < nf; k++)
+			if (!strncmp(forms[k], name, len) &&
+			    (!forms[k][len] || forms[k][len] == ' '))
+				break;
+		if (k == nf)
+			fail_msg("statement '%s' is not in docs/rdl.md", name);
+	}
+	assert_true(i > 80);
+	/* every documented keyword is known, and a form without optional
+	 * or repeated parts has an argument count the statement takes */
+	assert_int_equal(rdc_open("sim:", &dev), 0);
+	for (size_t k = 0; k < nf; k++) {
+		static struct rdc_script_result res;
+		char kw[40];
+		size_t words = 0;
+		bool simple = !strpbrk(forms[k], "[|.");
+
+		for (const char *q = forms[k]; *q;) {
+			while (*q == ' ')
+				q++;
+			if (!*q)
+				break;
+			words++;
+			while (*q && *q != ' ')
+				q++;
+		}
+		assert_int_equal(sscanf(forms[k], "%39s", kw), 1);
+		for (i = 0; (name = rdl_stmt_info(i, &min, &max)); i++)
+			if (!strcmp(name, kw))
+				break;
+		if (!name)
+			fail_msg("docs/rdl.md: '%s': no such statement",
+				 forms[k]);
+		if (simple && (words - 1 < min || words - 1 > max))
+			fail_msg("docs/rdl.md: '%s': %zu arguments, the "
+				 "statement takes %u to %u",
+				 forms[k], words - 1, min, max);
+		/* and the interpreter reads it as that statement */
+		rdc_script_run(dev, kw, strlen(kw), &res);
+		assert_null(strstr(res.error_msg, "unknown statement"));
+	}
+	rdc_close(dev);
+}
+
+/* docs/rdl.md: "Keywords are lower case. Register, format, preset and ROP
+ * names are case-insensitive." */
+static void test_rdl_names_case(void **state)
+{
+	static const char ok[] = "mode 720P XRGB8888\n"
+				 "mode 1280X720 Rgb565\n"
+				 "mode 640X480@60 i8\n"
+				 "rop GXCOPY\n"
+				 "rop And-Reverse\n"
+				 "reg line_compare 5\n"
+				 "expect LINE_COMPARE 5\n"
+				 "cmd-reg Rdc_Reg_Line_Compare 6\n"
+				 "expect line_compare 6\n";
+	static struct rdc_script_result res;
+	rdc_dev *dev;
+
+	(void)state;
+	assert_int_equal(rdc_open("sim:", &dev), 0);
+	if (rdc_script_run(dev, ok, strlen(ok), &res))
+		fail_msg("line %u: %s", res.error_line, res.error_msg);
+	assert_int_equal(rdc_script_run(dev, "FILL 0 0 1 1", 12, &res),
+			 RDC_E_PARSE);
+	assert_non_null(strstr(res.error_msg, "unknown statement"));
+	rdc_close(dev);
+}
+
+/* ---- Command-line options ------------------------------------------------ */
+
+/* `prog --help`'s output into out. */
+static void help_text(const char *prog, char *out, size_t cap)
+{
+	char cmd[600];
+	FILE *f;
+	size_t n;
+
+	snprintf(cmd, sizeof(cmd), "%s/%s --help 2>&1", bindir, prog);
+	f = popen(cmd, "r");
+	assert_non_null(f);
+	n = fread(out, 1, cap - 1, f);
+	out[n] = 0;
+	assert_int_equal(pclose(f), 0);
+	assert_non_null(strstr(out, "usage"));
+}
+
+/* Every --option in `a` is in `b` (options of another program, after
+ * "rdcd ", are not `a`'s own). */
+static void options_in(const char *a, const char *b, const char *what)
+{
+	int n = 0;
+
+	for (const char *p = strstr(a, "--"); p; p = strstr(p + 2, "--")) {
+		char opt[40];
+		const char *q;
+		size_t k = 2;
+
+		if (!islower((unsigned char)p[2]) || (p > a && p[-1] == '-'))
+			continue;
+		if (p - a >= 5 && !strncmp(p - 5, "rdcd ", 5))
+			continue;
+		while ((islower((unsigned char)p[k]) ||
+			isdigit((unsigned char)p[k]) || p[k] == '-') &&
+		       k + 1 < sizeof(opt))
+			k++;
+		snprintf(opt, sizeof(opt), "%.*s", (int)k, p);
+		for (q = strstr(b, opt); q; q = strstr(q + 1, opt))
+			if (!islower((unsigned char)q[k]) && q[k] != '-')
+				break;
+		if (!q)
+			fail_msg("%s: %s is missing", what, opt);
+		n++;
+	}
+	assert_true(n > 3);
+}
+
+static void test_options(void **state)
+{
+	static char help[16384];
+	char *proto = slurp("docs/protocol.md");
+	char *rdl = slurp("docs/rdl.md");
+	char *s_rdcd = section(proto, "```\nrdcd ", "```\n\n");
+	char *s_ctl = section(rdl, "\n## rdcctl", "\n## ");
+
+	(void)state;
+	help_text("rdcd", help, sizeof(help));
+	options_in(help, s_rdcd, "rdcd --help against protocol.md's synopsis");
+	options_in(s_rdcd, help, "protocol.md's synopsis against rdcd --help");
+	help_text("rdcctl", help, sizeof(help));
+	options_in(help, s_ctl, "rdcctl --help against rdl.md's rdcctl");
+	options_in(s_ctl, help, "rdl.md's rdcctl against rdcctl --help");
+	free(s_ctl);
+	free(s_rdcd);
+	free(rdl);
+	free(proto);
+}
+
+/* ---- The README's example ------------------------------------------------ */
+
+static void test_readme_example(void **state)
+{
+	char *readme = slurp("README.md");
+	char *code = section(readme, "```c\n", "```\n");
+	char *how = section(readme, "compile with `", "`,");
+	char path[] = "/tmp/rdc_readme_XXXXXX.c", cmd[600];
+	FILE *f;
+	int fd, st;
+
+	(void)state;
+	if (system("command -v cc > /dev/null 2>&1")) {
+		free(how);
+		free(code);
+		free(readme);
+		skip(); /* no compiler on this machine */
+	}
+	fd = mkstemps(path, 2);
+	assert_true(fd >= 0);
+	f = fdopen(fd, "w");
+	assert_non_null(f);
+	fprintf(f, "#include \"rdc.h\"\nint main(void)\n{\n%s\treturn 0;\n}\n",
+		code + strlen("```c\n"));
+	assert_int_equal(fclose(f), 0);
+	/* the flags exactly as the README gives them */
+	snprintf(cmd, sizeof(cmd),
+		 "cc -std=gnu11 -Wall -Werror -fsyntax-only %s %s",
+		 how + strlen("compile with `"), path);
+	st = system(cmd);
+	unlink(path);
+	if (!WIFEXITED(st) || WEXITSTATUS(st))
+		fail_msg("README's example does not compile: %s", cmd);
+	free(how);
+	free(code);
+	free(readme);
+}
+
+int main(int argc, char **argv)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_registers),
+		cmocka_unit_test(test_opcodes),
+		cmocka_unit_test(test_device_errors),
+		cmocka_unit_test(test_formats_and_presets),
+		cmocka_unit_test(test_protocol),
+		cmocka_unit_test(test_rdl_statements),
+		cmocka_unit_test(test_rdl_names_case),
+		cmocka_unit_test(test_options),
+		cmocka_unit_test(test_readme_example),
+	};
+	char self[400];
+
+	(void)argc;
+	snprintf(self, sizeof(self), "%s", argv[0]);
+	/* $(O)/san/tests/test_docs -> $(O)/san */
+	snprintf(bindir, sizeof(bindir), "%s/..", dirname(self));
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
