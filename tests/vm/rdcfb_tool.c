@@ -20,12 +20,16 @@
  *                                 OUT; print "W H CRC" and check the CRC
  *   rdcfb_tool rawcrc FILE        CRC-32 of a 4-byte-per-pixel file with
  *                                 the 4th byte of each pixel zeroed
- *   rdcfb_tool text DEV ROW COL S the frame shows S at text cell (ROW, COL)
- *                                 in the 8x16 font, in one FG on one BG
+ *   rdcfb_tool text DEV TTY ROW COL S
+ *                                 the frame shows S at text cell (ROW, COL)
+ *                                 in the 8x16 font the console on TTY draws
+ *                                 with (read back through KDFONTOP), in one
+ *                                 FG on one BG
  */
 #include <errno.h>
 #include <fcntl.h>
 #include <linux/fb.h>
+#include <linux/kd.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -552,23 +556,57 @@ static int cmd_rawcrc(const char *file)
 }
 
 /*
+ * The console's own font, as fbcon draws it: glyphs of 8x16 pixels, 32
+ * bytes apart (KDFONTOP's layout for widths up to 8).
+ */
+static int console_font(const char *tty, uint8_t *font, unsigned int count)
+{
+	struct console_font_op op = {
+		.op = KD_FONT_OP_GET,
+		.width = GLYPH_W,
+		.height = 32,
+		.charcount = count,
+		.data = font,
+	};
+	int fd = open(tty, O_RDONLY), ret;
+
+	if (fd < 0)
+		return -1;
+	ret = ioctl(fd, KDFONTOP, &op);
+	close(fd);
+	if (ret)
+		return -1;
+	if (op.width != GLYPH_W || op.height != GLYPH_H) {
+		fprintf(stderr, "console font is %ux%u, not 8x16\n", op.width,
+			op.height);
+		errno = EINVAL;
+		return -1;
+	}
+	return 0;
+}
+
+/*
  * The cells hold s's glyphs: every pixel a glyph sets is one colour (FG),
  * every other pixel of the cells another (BG).
  */
-static int cmd_text(const char *dev, int row, int col, const char *s)
+static int cmd_text(const char *dev, const char *tty, int row, int col,
+		    const char *s)
 {
+	static uint8_t font[512 * 32];
+
 	struct fb_fix_screeninfo fix;
 	struct fb_var_screeninfo var;
 	struct rdcfb_frame f;
 	uint32_t *px, fg = 0, bg = 0;
 	int fd = open_fb(dev, &fix, &var), have = 0, bad = 0;
 
+	if (console_font(tty, font, 512))
+		return fail("KDFONTOP");
 	if (fd < 0 || get_frame(fd, &f, &px))
 		return fail("frame");
 	for (size_t k = 0; s[k]; k++) {
 		for (int y = 0; y < GLYPH_H; y++) {
-			uint8_t bits =
-				rdc_font8x16[(uint8_t)s[k] * GLYPH_H + y];
+			uint8_t bits = font[(uint8_t)s[k] * 32 + y];
 
 			for (int x = 0; x < GLYPH_W; x++) {
 				uint32_t X =
@@ -613,8 +651,9 @@ int main(int argc, char **argv)
 		return cmd_frame(argv[2], argv[3]);
 	if (argc == 3 && !strcmp(argv[1], "rawcrc"))
 		return cmd_rawcrc(argv[2]);
-	if (argc == 6 && !strcmp(argv[1], "text"))
-		return cmd_text(argv[2], atoi(argv[3]), atoi(argv[4]), argv[5]);
+	if (argc == 7 && !strcmp(argv[1], "text"))
+		return cmd_text(argv[2], argv[3], atoi(argv[4]), atoi(argv[5]),
+				argv[6]);
 	fprintf(stderr, "usage: see the top of tests/vm/rdcfb_tool.c\n");
 	return 2;
 }

@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
 # fbcon binds to rdcfb's /dev/fb0 and text written to the console is drawn
-# by the display processor (its command counter rises) as the 8x16 font's
+# by the display processor (its command counter rises) as the console font's
 # glyphs in the scanned-out frame, pixel for pixel; `ffmpeg -f fbdev`
 # reads a frame equal to the device's own (FRAME ioctl CRC).  Then the
 # self-benchmark: the console's imageblit and scroll through the DP
@@ -12,10 +12,9 @@
 TOOL=$B/rdcfb_tool
 SYS=/sys/bus/platform/devices/rdcfb.0
 TTY=/dev/tty1
-# Letters whose glyphs are the same in the kernel's VGA 8x16 font and the
-# project's (firmware-model/font8x16.c): the two differ in a few (T f m v
-# w x among them), and the expected picture comes from the project's.
-TEXT="Sir Pub seeks daily print up"
+# The expected picture comes from the font the console itself draws with
+# (read back through KDFONTOP), not from the RDC-1's own.
+TEXT="The quick brown fox jumps over 13 lazy dogs!"
 
 fbcon_bound() {
 	v=$(fbcon_vt) && [ "$(cat "$v/bind")" = 1 ] && grep -q "^0 rdcfb" /proc/fb
@@ -25,7 +24,7 @@ fbcon_bound() {
 text_shown() {
 	i=0
 	while [ $i -lt 40 ]; do
-		"$TOOL" text /dev/fb0 0 0 "$TEXT" >"$T/text.out" 2>&1 &&
+		"$TOOL" text /dev/fb0 "$TTY" 0 0 "$TEXT" >"$T/text.out" 2>&1 &&
 			{ cat "$T/text.out"; return 0; }
 		sleep 0.25
 		i=$((i + 1))
