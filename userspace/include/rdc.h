@@ -80,6 +80,24 @@ extern "C" {
 /* The release of the librdc the program runs with (RDC_VERSION_ENCODE). */
 uint32_t rdc_version(void);
 
+/*
+ * ---- Structures that grow ------------------------------------------------
+ * The handles (rdc_dev, rdc_batch, rdc_vcd; rdc_sink in rdc_sink.h) are
+ * opaque.  A structure a call fills in the caller's memory (rdc_stats,
+ * rdc_pin_edge, rdc_event, rdc_script_result, rdc_replay_result;
+ * rdc_sink_stats) begins with `size`: the call, an inline function here,
+ * sets it to the structure's size as the program was compiled and passes
+ * it to the library's rdc_..._sized function, which fills that many bytes
+ * and no more (zeroing what it does not know of).  Later releases add
+ * members at the end only, so a program built against an older header
+ * keeps working with a newer librdc.so.1, and the other way round.  A
+ * structure the caller fills for the library (rdc_frame) has `size`
+ * too, where 0 (a zeroed or designated initialiser) means the layout of
+ * librdc 1.0.  A structure the library hands to a callback (rdc_found) is
+ * the library's memory and only grows at its end.  rdc_proto.h's
+ * structures are the wire format's and change with RDC_PROTO_VERSION.
+ */
+
 enum rdc_error {
 	RDC_OK = 0,
 	RDC_E_INVAL = -1,   /* bad argument */
@@ -123,7 +141,7 @@ typedef struct rdc_batch rdc_batch;
 /* ---- Device -------------------------------------------------------------- */
 int rdc_open(const char *uri, rdc_dev **out);
 
-/* One device rdc_list found. */
+/* One device rdc_list found (the library's memory; grows at its end). */
 struct rdc_found {
 	char uri[160];	/* what rdc_open takes (rdcctl --connect) */
 	char info[160]; /* what it is, for people */
@@ -367,6 +385,8 @@ int rdc_batch_jump(rdc_batch *b, uint32_t addr);
 #define RDC_PIN_TIME_NONE UINT64_MAX
 
 struct rdc_pin_edge {
+	/* sizeof(struct), set by the call (see "Structures that grow") */
+	uint32_t size;
 	/* pins (RDC_PINS_OUT bits) with a wanted edge at this moment: a pin
 	 * rose if its bit is set in `levels`, else it fell */
 	uint32_t pins;
@@ -404,19 +424,36 @@ int rdc_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels);
  * go unseen; TE's (a whole vertical blanking) and IRQ's (until the
  * status is cleared) cannot.
  */
-int rdc_pins_wait_edge(rdc_dev *dev, uint32_t pins, uint32_t edges,
-		       uint64_t timeout_us, struct rdc_pin_edge *ev);
+int rdc_pins_wait_edge_sized(rdc_dev *dev, uint32_t pins, uint32_t edges,
+			     uint64_t timeout_us, struct rdc_pin_edge *ev);
+static inline int rdc_pins_wait_edge(rdc_dev *dev, uint32_t pins,
+				     uint32_t edges, uint64_t timeout_us,
+				     struct rdc_pin_edge *ev)
+{
+	if (ev)
+		ev->size = sizeof(*ev);
+	return rdc_pins_wait_edge_sized(dev, pins, edges, timeout_us, ev);
+}
 /*
  * Present on TE: wait for TE's rising edge (the start of vertical
  * blanking) as rdc_pins_wait_edge does, then submit the batch (and empty
  * it), so that drawing starts in blanking and a short update never
  * tears.  ev (may be NULL) receives the edge.
  */
-int rdc_pins_present(rdc_dev *dev, rdc_batch *b, uint64_t timeout_us,
-		     struct rdc_pin_edge *ev);
+int rdc_pins_present_sized(rdc_dev *dev, rdc_batch *b, uint64_t timeout_us,
+			   struct rdc_pin_edge *ev);
+static inline int rdc_pins_present(rdc_dev *dev, rdc_batch *b,
+				   uint64_t timeout_us, struct rdc_pin_edge *ev)
+{
+	if (ev)
+		ev->size = sizeof(*ev);
+	return rdc_pins_present_sized(dev, b, timeout_us, ev);
+}
 
 /* ---- Introspection for hardware-model tests (sim: only) ------------------ */
 struct rdc_stats {
+	/* sizeof(struct), set by the call (see "Structures that grow") */
+	uint32_t size;
 	uint64_t time; /* simulated core cycles */
 	uint64_t busy, stall, pixels;
 	uint32_t cmds, last_cycles, last_opcode;
@@ -429,7 +466,13 @@ int rdc_sim_step(rdc_dev *dev, uint64_t cycles);
 /* Advance simulated time to at least `t`. */
 int rdc_sim_run_until(rdc_dev *dev, uint64_t t);
 int rdc_sim_beam(rdc_dev *dev, uint32_t *x, uint32_t *y);
-int rdc_stats_get(rdc_dev *dev, struct rdc_stats *st);
+int rdc_stats_get_sized(rdc_dev *dev, struct rdc_stats *st);
+static inline int rdc_stats_get(rdc_dev *dev, struct rdc_stats *st)
+{
+	if (st)
+		st->size = sizeof(*st);
+	return rdc_stats_get_sized(dev, st);
+}
 /* Core clock in Hz (for converting cycles to time). */
 int rdc_sim_core_hz(rdc_dev *dev, uint32_t *hz);
 
@@ -459,6 +502,8 @@ int rdc_vcd_close(rdc_vcd *vcd);
 
 /* ---- .rdl scripts (docs/rdl.md) ------------------------------------------ */
 struct rdc_script_result {
+	/* sizeof(struct), set by the call (see "Structures that grow") */
+	uint32_t size;
 	/* cycles spent per command class ("fill", "line", ...), index by
 	 * the opcode; counts likewise */
 	uint64_t op_cycles[256];
@@ -491,10 +536,24 @@ int rdc_script_frame_wait(rdc_dev *dev, const struct rdc_script_result *res);
  * res->error_msg set.  `screenshot` paths are relative to the current
  * directory.  res may be NULL.
  */
-int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
-		   struct rdc_script_result *res);
-int rdc_script_run_file(rdc_dev *dev, const char *path,
-			struct rdc_script_result *res);
+int rdc_script_run_sized(rdc_dev *dev, const char *text, size_t len,
+			 struct rdc_script_result *res);
+int rdc_script_run_file_sized(rdc_dev *dev, const char *path,
+			      struct rdc_script_result *res);
+static inline int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
+				 struct rdc_script_result *res)
+{
+	if (res)
+		res->size = sizeof(*res);
+	return rdc_script_run_sized(dev, text, len, res);
+}
+static inline int rdc_script_run_file(rdc_dev *dev, const char *path,
+				      struct rdc_script_result *res)
+{
+	if (res)
+		res->size = sizeof(*res);
+	return rdc_script_run_file_sized(dev, path, res);
+}
 /* Name of an opcode ("fill-rect"), or NULL. */
 const char *rdc_op_name(uint32_t op);
 
@@ -516,6 +575,8 @@ int rdc_reg_by_name(const char *name, uint32_t *reg);
 #define RDC_FRAME_DELTA 2u /* rows unchanged since the last frame skipped */
 
 struct rdc_event {
+	/* sizeof(struct), set by the call (see "Structures that grow") */
+	uint32_t size;
 	uint32_t type;		/* RDC_EVENT_FRAME or RDC_EVENT_IRQ */
 	uint32_t irq;		/* IRQ: the new RDC_IRQ_* bits */
 	uint64_t time;		/* IRQ: simulated time of the check */
@@ -537,11 +598,20 @@ int rdc_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
  * RDC_E_RANGE if too small: the event is consumed).  Waits up to
  * timeout_ms of wall time (< 0: forever), else RDC_E_TIMEOUT.
  */
-int rdc_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
-		   size_t cap, int timeout_ms);
+int rdc_event_next_sized(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
+			 size_t cap, int timeout_ms);
+static inline int rdc_event_next(rdc_dev *dev, struct rdc_event *ev,
+				 uint32_t *buf, size_t cap, int timeout_ms)
+{
+	if (ev)
+		ev->size = sizeof(*ev);
+	return rdc_event_next_sized(dev, ev, buf, cap, timeout_ms);
+}
 
 /* ---- Traces (rdcd --record) ---------------------------------------------- */
 struct rdc_replay_result {
+	/* sizeof(struct), set by the call (see "Structures that grow") */
+	uint32_t size;
 	uint64_t records;    /* operations replayed */
 	uint64_t mismatches; /* times or register values that differ */
 	uint64_t time;	     /* simulated time at the end */
@@ -564,8 +634,16 @@ struct rdc_replay_result {
  * (rdc_last_error_detail says where); a trace cut short is not damaged:
  * 0 with res->truncated set.
  */
-int rdc_replay_file(const char *path, struct rdc_replay_result *res,
-		    rdc_dev **dev_out);
+int rdc_replay_file_sized(const char *path, struct rdc_replay_result *res,
+			  rdc_dev **dev_out);
+static inline int rdc_replay_file(const char *path,
+				  struct rdc_replay_result *res,
+				  rdc_dev **dev_out)
+{
+	if (res)
+		res->size = sizeof(*res);
+	return rdc_replay_file_sized(path, res, dev_out);
+}
 
 /* ---- Compressed images (the DECODE command) ------------------------------ */
 /*

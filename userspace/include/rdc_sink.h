@@ -28,6 +28,14 @@
  *       A VNC server (libvncserver) on TCP PORT, loopback only unless
  *       listen= says otherwise; only rows that changed since the previous
  *       frame are sent.  RDC_E_NOSYS when built without libvncserver.
+ *   web:[ADDR:]PORT[,token=FILE]
+ *       A web page with the live display (docs/web.md): http://ADDR:PORT/
+ *       (rdc_sink_url), the picture over a WebSocket, only what changed,
+ *       and beside it what rdc_sink_status_set last said.  ADDR defaults
+ *       to 127.0.0.1 ("[::1]" for IPv6); PORT 0 lets the kernel pick.
+ *       With token=FILE every viewer must present the file's contents
+ *       (open the page as http://ADDR:PORT/#token=...); an ADDR other
+ *       than loopback needs one (RDC_E_AUTH otherwise).
  *
  * Sinks take XRGB8888 frames: 32-bit words 0x00RRGGBB in host order, the
  * format of rdc_frame_grab().  Errors are librdc's (enum rdc_error).
@@ -45,6 +53,10 @@ extern "C" {
 #endif
 
 struct rdc_frame {
+	/* 0 (a zeroed or designated initialiser): the layout of librdc 1.0;
+	 * a later release's members past it are read only if size covers
+	 * them (rdc.h, "Structures that grow") */
+	uint32_t size;
 	const uint32_t *xrgb; /* height rows of width XRGB8888 words */
 	uint32_t width, height;
 	size_t stride; /* words from row to row, >= width */
@@ -70,20 +82,59 @@ int rdc_sink_snapshot(rdc_sink *s);
 /* Let the sink do idle work (serve VNC clients) between frames. */
 int rdc_sink_poll(rdc_sink *s);
 void rdc_sink_close(rdc_sink *s);
-/* The kind ("v4l2", "png", "vnc"). */
+/* The kind ("v4l2", "png", "vnc", "web"). */
 const char *rdc_sink_kind(const rdc_sink *s);
 
 struct rdc_sink_stats {
+	/* sizeof(struct), set by rdc_sink_stats_get (rdc.h, "Structures that
+	 * grow") */
+	uint32_t size;
 	uint64_t frames;	 /* handed to rdc_sink_frame */
 	uint64_t written;	 /* delivered (written, encoded, sent) */
 	uint64_t dropped;	 /* not delivered: EAGAIN, device away, ... */
 	uint64_t renegotiations; /* format (re)negotiations (v4l2) */
 	uint64_t reopens;	 /* device reopened after going away */
 };
-int rdc_sink_stats_get(const rdc_sink *s, struct rdc_sink_stats *st);
+int rdc_sink_stats_get_sized(const rdc_sink *s, struct rdc_sink_stats *st);
+static inline int rdc_sink_stats_get(const rdc_sink *s,
+				     struct rdc_sink_stats *st)
+{
+	if (st)
+		st->size = sizeof(*st);
+	return rdc_sink_stats_get_sized(s, st);
+}
 
 /* 1 if this build has the vnc sink (libvncserver), else 0. */
 int rdc_sink_have_vnc(void);
+/* 1 if this build has the web sink, else 0. */
+int rdc_sink_have_web(void);
+
+/*
+ * What a source knows of the device beside the picture, for sinks that
+ * show it (web); `have` says which fields are filled.
+ */
+#define RDC_SINK_HAVE_TIME   0x1u /* time, core_hz */
+#define RDC_SINK_HAVE_PINS   0x2u /* pins */
+#define RDC_SINK_HAVE_IRQ    0x4u /* irq_status, irq_enable */
+#define RDC_SINK_HAVE_FORMAT 0x8u /* format */
+struct rdc_sink_status {
+	/* sizeof(struct), or 0 (a zeroed or designated initialiser): this
+	 * layout; members a later release adds past it are read only if size
+	 * covers them (rdc.h, "Structures that grow") */
+	uint32_t size;
+	uint32_t have;
+	uint64_t time;	 /* simulated core cycles */
+	uint32_t core_hz;
+	uint32_t pins;	 /* RDC_PIN_* levels */
+	uint32_t irq_status, irq_enable; /* the registers */
+	uint32_t format; /* enum rdc_format of the scanout */
+};
+/* Tell the sink the device's state (kept until the next call); sinks that
+ * do not show it ignore it. */
+int rdc_sink_status_set(rdc_sink *s, const struct rdc_sink_status *st);
+/* The address a viewer opens ("http://127.0.0.1:8080/" for web);
+ * RDC_E_NOSYS for kinds without one, RDC_E_RANGE if len is too small. */
+int rdc_sink_url(const rdc_sink *s, char *buf, size_t len);
 
 /*
  * The refresh period of the device's current CRTC timing as the fraction

@@ -910,12 +910,13 @@ int rdc_sim_core_hz(rdc_dev *dev, uint32_t *hz)
 	return ret;
 }
 
-int rdc_stats_get(rdc_dev *dev, struct rdc_stats *st)
+int rdc_stats_get_sized(rdc_dev *dev, struct rdc_stats *out)
 {
+	struct rdc_stats full, *st = &full;
 	uint32_t frames;
 	int ret;
 
-	if (!dev || !st)
+	if (!dev || !out)
 		return RDC_E_INVAL;
 	memset(st, 0, sizeof(*st));
 	ret = rdc_reg_read64(dev, RDC_REG_TIME_LO, &st->time);
@@ -937,6 +938,7 @@ int rdc_stats_get(rdc_dev *dev, struct rdc_stats *st)
 		ret = rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &frames);
 	if (!ret)
 		st->frames = frames;
+	rdc_struct_out(out, st, sizeof(*st));
 	return ret;
 }
 
@@ -954,12 +956,17 @@ int rdc_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
 	return dev->be->subscribe(dev, events, every, encoding);
 }
 
-int rdc_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
-		   size_t cap, int timeout_ms)
+int rdc_event_next_sized(rdc_dev *dev, struct rdc_event *out, uint32_t *buf,
+			 size_t cap, int timeout_ms)
 {
-	if (!dev || !ev || (!buf && cap))
+	struct rdc_event ev = { 0 };
+	int ret;
+
+	if (!dev || !out || (!buf && cap))
 		return RDC_E_INVAL;
 	if (!dev->be->event_next)
 		return RDC_E_NOSYS;
-	return dev->be->event_next(dev, ev, buf, cap, timeout_ms);
+	ret = dev->be->event_next(dev, &ev, buf, cap, timeout_ms);
+	rdc_struct_out(out, &ev, sizeof(ev));
+	return ret;
 }

@@ -154,26 +154,30 @@ static int rdc_pins_budget(rdc_dev *dev, uint64_t timeout_us, uint64_t *budget)
 	return 0;
 }
 
-int rdc_pins_wait_edge(rdc_dev *dev, uint32_t pins, uint32_t edges,
-		       uint64_t timeout_us, struct rdc_pin_edge *ev)
+int rdc_pins_wait_edge_sized(rdc_dev *dev, uint32_t pins, uint32_t edges,
+			     uint64_t timeout_us, struct rdc_pin_edge *out)
 {
+	struct rdc_pin_edge ev = { 0 };
 	uint64_t budget = 0;
 	int ret;
 
-	if (!dev || !ev || !pins || (pins & ~RDC_PINS_OUT) || !edges ||
+	if (!dev || !out || !pins || (pins & ~RDC_PINS_OUT) || !edges ||
 	    (edges & ~RDC_EDGE_BOTH))
 		return RDC_E_INVAL;
 	ret = rdc_pins_budget(dev, timeout_us, &budget);
 	if (ret)
 		return ret;
 	if (dev->be->pins_wait)
-		return dev->be->pins_wait(dev, pins, edges, budget, timeout_us,
-					  ev);
-	return rdc_pins_wait_regs(dev, pins, edges, budget, ev);
+		ret = dev->be->pins_wait(dev, pins, edges, budget, timeout_us,
+					 &ev);
+	else
+		ret = rdc_pins_wait_regs(dev, pins, edges, budget, &ev);
+	rdc_struct_out(out, &ev, sizeof(ev));
+	return ret;
 }
 
-int rdc_pins_present(rdc_dev *dev, rdc_batch *b, uint64_t timeout_us,
-		     struct rdc_pin_edge *ev)
+int rdc_pins_present_sized(rdc_dev *dev, rdc_batch *b, uint64_t timeout_us,
+			   struct rdc_pin_edge *ev)
 {
 	struct rdc_pin_edge e;
 	int ret;
@@ -185,6 +189,6 @@ int rdc_pins_present(rdc_dev *dev, rdc_batch *b, uint64_t timeout_us,
 	if (ret)
 		return ret;
 	if (ev)
-		*ev = e;
+		rdc_struct_out(ev, &e, sizeof(e));
 	return rdc_batch_submit(dev, b);
 }

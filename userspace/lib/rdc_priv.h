@@ -209,6 +209,14 @@ int rdc_host_blit_encode(uint32_t fmt, int x, int y, uint32_t w, uint32_t h,
 /* The last complete frame in a malloc'd buffer (core.c). */
 int rdc_frame_alloc(rdc_dev *dev, uint32_t **pix, uint32_t *width,
 		    uint32_t *height);
+/*
+ * Hand a structure the library filled (`full`, n bytes, the library's
+ * sizeof) to the caller's `out`, whose first member `size` says how large
+ * the caller's is (rdc.h, "Structures that grow"): the bytes both know
+ * are copied, the caller's `size` kept, members only the caller knows
+ * zeroed (version.c).
+ */
+void rdc_struct_out(void *out, const void *full, size_t n);
 /* zlib CRC-32 of XRGB8888 pixels as little-endian bytes (core.c). */
 uint32_t rdc_crc32_xrgb(const uint32_t *pix, size_t n);
 

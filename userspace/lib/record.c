@@ -501,8 +501,8 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 	}
 }
 
-int rdc_replay_file(const char *path, struct rdc_replay_result *res,
-		    rdc_dev **dev_out)
+static int replay_file(const char *path, struct rdc_replay_result *res,
+		       rdc_dev **dev_out)
 {
 	struct rdc_replay_result dummy;
 	struct replay p = { 0 };
@@ -590,5 +590,17 @@ int rdc_replay_file(const char *path, struct rdc_replay_result *res,
 		*dev_out = p.dev;
 	else
 		rdc_close(p.dev);
+	return ret;
+}
+
+/* The caller's result may be of another release (rdc.h). */
+int rdc_replay_file_sized(const char *path, struct rdc_replay_result *res,
+			  rdc_dev **dev_out)
+{
+	struct rdc_replay_result full;
+	int ret = replay_file(path, &full, dev_out);
+
+	if (res)
+		rdc_struct_out(res, &full, sizeof(full));
 	return ret;
 }

@@ -1480,8 +1480,8 @@ static int rdl_next_line(struct rdl *r, const char **pos, const char *end,
 	return 0;
 }
 
-int rdc_script_run(rdc_dev *dev, const char *text, size_t len,
-		   struct rdc_script_result *res)
+static int script_run(rdc_dev *dev, const char *text, size_t len,
+		      struct rdc_script_result *res)
 {
 	struct rdc_script_result local;
 	struct rdl r = { .dev = dev };
@@ -1526,8 +1526,8 @@ int rdc_script_frame_wait(rdc_dev *dev, const struct rdc_script_result *res)
 	return res->frame_ready ? 0 : rdc_frame_wait(dev);
 }
 
-int rdc_script_run_file(rdc_dev *dev, const char *path,
-			struct rdc_script_result *res)
+static int script_run_file(rdc_dev *dev, const char *path,
+			   struct rdc_script_result *res)
 {
 	struct rdc_script_result local;
 	char *text = NULL;
@@ -1578,9 +1578,33 @@ int rdc_script_run_file(rdc_dev *dev, const char *path,
 			 "cannot read '%.100s'", path);
 		goto out;
 	}
-	ret = rdc_script_run(dev, text, len, res);
+	ret = script_run(dev, text, len, res);
 out:
 	fclose(f);
 	free(text);
+	return ret;
+}
+
+/* The caller's result may be of another release (rdc.h): filled in full
+ * here, then handed over. */
+int rdc_script_run_sized(rdc_dev *dev, const char *text, size_t len,
+			 struct rdc_script_result *res)
+{
+	struct rdc_script_result full;
+	int ret = script_run(dev, text, len, &full);
+
+	if (res)
+		rdc_struct_out(res, &full, sizeof(full));
+	return ret;
+}
+
+int rdc_script_run_file_sized(rdc_dev *dev, const char *path,
+			      struct rdc_script_result *res)
+{
+	struct rdc_script_result full;
+	int ret = script_run_file(dev, path, &full);
+
+	if (res)
+		rdc_struct_out(res, &full, sizeof(full));
 	return ret;
 }

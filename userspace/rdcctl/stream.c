@@ -36,6 +36,8 @@ const char rdcctl_stream_usage[] =
 	"    --png-every N            every Nth frame (default 60, as rdcd's\n"
 	"                             --png; 0: none)\n"
 	"    --vnc PORT               VNC server on 127.0.0.1:PORT\n"
+	"    --web [ADDR:]PORT        the display in a browser at\n"
+	"                             http://ADDR:PORT/ (docs/web.md)\n"
 	"    --sink SPEC              any sink spec (see rdc_sink.h)\n"
 	"    --frames N               stop after N frames (default: never)\n"
 	"    --fast                   do not pace to the refresh rate\n";
@@ -47,7 +49,7 @@ struct stream_script {
 
 struct stream_opts {
 	const char *uri;
-	const char *v4l2, *format, *png, *vnc;
+	const char *v4l2, *format, *png, *vnc, *web;
 	uint32_t png_every;
 	bool png_every_set;
 	const char *specs[STREAM_MAX_SINKS];
@@ -105,6 +107,8 @@ static int stream_parse(int argc, char **argv, struct stream_opts *o)
 			o->png = v;
 		} else if (!strcmp(a, "--vnc")) {
 			o->vnc = v;
+		} else if (!strcmp(a, "--web")) {
+			o->web = v;
 		} else if (!strcmp(a, "--png-every")) {
 			if (parse_u64(v, &n) || n > UINT32_MAX)
 				goto bad;
@@ -182,11 +186,21 @@ static int stream_open_sinks(const struct stream_opts *o, rdc_sink **sinks,
 		snprintf(spec, sizeof(spec), "vnc:%s", o->vnc);
 		ret = stream_add(sinks, n, spec);
 	}
+	if (!ret && o->web) {
+		snprintf(spec, sizeof(spec), "web:%s", o->web);
+		ret = stream_add(sinks, n, spec);
+	}
 	for (int i = 0; !ret && i < o->nspecs; i++)
 		ret = stream_add(sinks, n, o->specs[i]);
+	for (int i = 0; !ret && i < *n; i++) {
+		char url[128];
+
+		if (!rdc_sink_url(sinks[i], url, sizeof(url)))
+			fprintf(stderr, "rdcctl: stream: web page at %s\n", url);
+	}
 	if (!ret && !*n) {
 		fprintf(stderr, "rdcctl: stream: no sink (--v4l2, --png, "
-				"--vnc or --sink)\n");
+				"--vnc, --web or --sink)\n");
 		ret = RDC_E_INVAL;
 	}
 	return ret;
@@ -229,6 +243,32 @@ static int stream_scripts(rdc_dev *dev, const struct stream_opts *o,
 		ran = 1;
 	}
 	return ran;
+}
+
+/* What the web page shows beside the picture: what the device answers. */
+static void stream_status(rdc_dev *dev, rdc_sink **sinks, int nsinks)
+{
+	struct rdc_sink_status st = { .size = sizeof(st) };
+	uint32_t fmt;
+	int web = 0;
+
+	for (int i = 0; i < nsinks; i++)
+		web |= !strcmp(rdc_sink_kind(sinks[i]), "web");
+	if (!web)
+		return;
+	if (!rdc_sim_time(dev, &st.time) && !rdc_sim_core_hz(dev, &st.core_hz))
+		st.have |= RDC_SINK_HAVE_TIME;
+	if (!rdc_pins_get(dev, &st.pins))
+		st.have |= RDC_SINK_HAVE_PINS;
+	if (!rdc_reg_read(dev, RDC_REG_IRQ_STATUS, &st.irq_status) &&
+	    !rdc_reg_read(dev, RDC_REG_IRQ_ENABLE, &st.irq_enable))
+		st.have |= RDC_SINK_HAVE_IRQ;
+	if (!rdc_reg_read(dev, RDC_REG_FB_FORMAT, &fmt)) {
+		st.format = fmt;
+		st.have |= RDC_SINK_HAVE_FORMAT;
+	}
+	for (int i = 0; i < nsinks; i++)
+		rdc_sink_status_set(sinks[i], &st);
 }
 
 static uint64_t now_ns(void)
@@ -295,6 +335,7 @@ static int stream_run(rdc_dev *dev, const struct stream_opts *o,
 		}
 		if (rdc_sink_interval(dev, &n2, &d2))
 			n2 = d2 = 0;
+		stream_status(dev, sinks, nsinks);
 		memset(&f, 0, sizeof(f));
 		f.xrgb = px;
 		f.width = w;

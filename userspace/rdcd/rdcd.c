@@ -120,6 +120,11 @@ static void usage(FILE *f)
 	      "                   on SIGUSR1, which asks every sink for the\n"
 	      "                   next frame as a still)\n"
 	      "  --vnc PORT       a VNC server on 127.0.0.1:PORT\n"
+	      "  --web [ADDR:]PORT  the live display in a browser at\n"
+	      "                   http://ADDR:PORT/ (docs/web.md); ADDR\n"
+	      "                   127.0.0.1 unless given, any other than\n"
+	      "                   loopback needs --token (the page then\n"
+	      "                   wants #token=... after its address)\n"
 	      "  --sink SPEC      any frame sink (userspace/include/rdc_sink.h)\n"
 	      "  --gpio-sim NAME  the pins TE, IRQ, RESET_N, BL_EN as the lines\n"
 	      "                   of the gpio-sim chip NAME, made in configfs\n"
@@ -596,6 +601,7 @@ static int rdcd_sink_opt(struct rdcd_opts *o, const char *opt, const char *val)
 	const char *kind = !strcmp(opt, "--v4l2") ? "v4l2:" :
 			   !strcmp(opt, "--png")  ? "png:" :
 			   !strcmp(opt, "--vnc")  ? "vnc:" :
+			   !strcmp(opt, "--web")  ? "web:" :
 						    "";
 	bool png_every = kind[0] == 'p' && !strstr(val, "every=");
 	char *spec;
@@ -656,7 +662,8 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 			}
 			o->gpio_sim = argv[++i];
 		} else if (!strcmp(a, "--v4l2") || !strcmp(a, "--png") ||
-			   !strcmp(a, "--vnc") || !strcmp(a, "--sink")) {
+			   !strcmp(a, "--vnc") || !strcmp(a, "--web") ||
+			   !strcmp(a, "--sink")) {
 			if (!val) {
 				fprintf(stderr, "rdcd: %s needs a value\n", a);
 				return -1;
@@ -793,6 +800,8 @@ static void rdcd_loop(struct rdcd *d)
 			rdcd_after_advance(d);
 		/* what waited for a run or a pending request to end */
 		rdcd_release_held(d);
+		if (!rdcd_chip_busy(d))
+			rdcd_web_status(d); /* what the web page shows */
 		for (unsigned int i = 0; i < d->nsinks; i++)
 			rdc_sink_poll(d->sinks[i]); /* VNC clients */
 		/* Replies go out at once: most clients wait for them. */
@@ -873,7 +882,7 @@ int main(int argc, char **argv)
 		}
 	}
 	for (unsigned int i = 0; i < o.nsinks; i++) {
-		int err = rdc_sink_open(o.sinks[i], &d.sinks[d.nsinks]);
+		int err = rdcd_web_token(&o.sinks[i], o.token);
 
 		if (err) {
 			rdcd_log(&d, RDCD_LOG_ERR, "sink %s: %s: %s",
@@ -883,6 +892,7 @@ int main(int argc, char **argv)
 		}
 		d.nsinks++;
 	}
+		rdcd_web_log(&d, d.sinks[d.nsinks]);
 	if (o.mode) {
 		int p = rdc_preset_by_name(o.mode);
 		int err = p < 0 ? RDC_E_INVAL :

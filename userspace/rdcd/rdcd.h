@@ -328,4 +328,14 @@ void rdcd_gpiosim_poll(struct rdcd *d);
 void rdcd_gpiosim_new_chip(struct rdcd *d);
 void rdcd_gpiosim_close(struct rdcd *d);
 
+/* web.c: the web sink's part in rdcd */
+/* A --web spec gets rdcd's --token (the same rule as tcp:); 0 or an
+ * enum rdc_error. */
+int rdcd_web_token(char **spec, const char *token_path);
+/* Log a sink's address (a web page's) once it is open. */
+void rdcd_web_log(const struct rdcd *d, const rdc_sink *s);
+/* The device's time, pins and IRQ status to the sinks that show them;
+ * between runs of the chip. */
+void rdcd_web_status(struct rdcd *d);
+
 #endif /* RDCD_H */

@@ -11,6 +11,7 @@ static const struct rdc_sink_ops *const sink_kinds[] = {
 	&rdc_sink_v4l2_ops,
 	&rdc_sink_png_ops,
 	&rdc_sink_vnc_ops,
+	&rdc_sink_web_ops,
 };
 
 #define SINK_SPEC_MAX 4096
@@ -69,7 +70,7 @@ int rdc_sink_open(const char *spec, rdc_sink **out)
 	if (!colon)
 		return rdc_err_detail(RDC_E_URI,
 				      "'%.60s': KIND:ARGS expected (v4l2:, "
-				      "png:, vnc:)",
+				      "png:, vnc:, web:)",
 				      spec);
 	klen = (size_t)(colon - spec);
 	for (size_t i = 0; i < sizeof(sink_kinds) / sizeof(sink_kinds[0]);
@@ -98,7 +99,7 @@ int rdc_sink_open(const char *spec, rdc_sink **out)
 		return 0;
 	}
 	return rdc_err_detail(RDC_E_URI,
-			      "'%.*s': not a sink kind (v4l2, png, vnc)",
+			      "'%.*s': not a sink kind (v4l2, png, vnc, web)",
 			      (int)RDC_MIN(klen, (size_t)40), spec);
 }
 
@@ -126,6 +127,27 @@ int rdc_sink_poll(rdc_sink *s)
 	return s->ops->poll ? s->ops->poll(s) : 0;
 }
 
+int rdc_sink_status_set(rdc_sink *s, const struct rdc_sink_status *st)
+{
+	struct rdc_sink_status full = { 0 };
+
+	if (!s || !st)
+		return RDC_E_INVAL;
+	/* what an older or newer caller's layout holds of ours */
+	memcpy(&full, st,
+	       st->size ? RDC_MIN((size_t)st->size, sizeof(full)) :
+			  sizeof(full));
+	full.size = sizeof(full);
+	return s->ops->status ? s->ops->status(s, &full) : 0;
+}
+
+int rdc_sink_url(const rdc_sink *s, char *buf, size_t len)
+{
+	if (!s || !buf || !len)
+		return RDC_E_INVAL;
+	return s->ops->url ? s->ops->url(s, buf, len) : RDC_E_NOSYS;
+}
+
 void rdc_sink_close(rdc_sink *s)
 {
 	if (!s)
@@ -139,11 +161,11 @@ const char *rdc_sink_kind(const rdc_sink *s)
 	return s ? s->ops->kind : NULL;
 }
 
-int rdc_sink_stats_get(const rdc_sink *s, struct rdc_sink_stats *st)
+int rdc_sink_stats_get_sized(const rdc_sink *s, struct rdc_sink_stats *st)
 {
 	if (!s || !st)
 		return RDC_E_INVAL;
-	*st = s->st;
+	rdc_struct_out(st, &s->st, sizeof(s->st));
 	return 0;
 }
 

@@ -20,6 +20,8 @@ struct rdc_sink_ops {
 	/* Optional (NULL: RDC_E_NOSYS / nothing to do). */
 	int (*snapshot)(rdc_sink *s);
 	int (*poll)(rdc_sink *s);
+	int (*status)(rdc_sink *s, const struct rdc_sink_status *st);
+	int (*url)(const rdc_sink *s, char *buf, size_t len);
 	void (*close)(rdc_sink *s);
 };
 
@@ -32,6 +34,7 @@ struct rdc_sink {
 extern const struct rdc_sink_ops rdc_sink_v4l2_ops;
 extern const struct rdc_sink_ops rdc_sink_png_ops;
 extern const struct rdc_sink_ops rdc_sink_vnc_ops;
+extern const struct rdc_sink_ops rdc_sink_web_ops;
 
 /*
  * Split "first,key=value,..." in place: *first gets the part before the
