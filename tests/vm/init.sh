@@ -6,12 +6,13 @@
 # root, unload them, and report on the console:
 #   RDC-VM-BEGIN NAME
 #   (what the test printed)
-#   RDC-VM-RESULT NAME STATUS
+#   RDC-VM-RESULT NAME STATUS SECONDS
 /bin/busybox --install -s /bin
 export PATH=/bin
 mount -t proc proc /proc
 mount -t sysfs sys /sys
 mount -t devtmpfs dev /dev
+ln -s /proc/self/fd /dev/fd # as udev makes it: <(...) in bash, dkms
 mount -t tmpfs tmp /tmp
 
 if grep -q rdc.probe=1 /proc/cmdline; then
@@ -41,6 +42,7 @@ for t in $RDC_TESTS; do
 	f=/host$RDC_TREE/tests/vm/tests/$t.sh
 	loaded=""
 	rc=0
+	t0=$(date +%s)
 	echo "RDC-VM-BEGIN $t"
 	sed -n 's/^# vm-module: *//p' "$f" >/tmp/mods
 	while read -r name args; do
@@ -55,14 +57,15 @@ for t in $RDC_TESTS; do
 		chroot /host /usr/bin/env -i \
 			PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
 			HOME=$scratch TMPDIR=$scratch RDC_TREE="$RDC_TREE" \
-			RDC_BUILD="$RDC_BUILD" /bin/sh "$RDC_TREE/tests/vm/tests/$t.sh" \
+			RDC_BUILD="$RDC_BUILD" RDC_VM_DIR="$RDC_VM_DIR" \
+			/bin/sh "$RDC_TREE/tests/vm/tests/$t.sh" \
 			</dev/null 2>&1
 		rc=$?
 	fi
 	for m in $loaded; do
 		modprobe -r "$m" || echo "cannot unload $m"
 	done
-	echo "RDC-VM-RESULT $t $rc"
+	echo "RDC-VM-RESULT $t $rc $(($(date +%s) - t0))"
 done
 echo RDC-VM-DONE
 poweroff -f

@@ -1,7 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
-# Build gpio-sim out of tree from Debian's linux-source-6.1 against the
-# headers of kernel $1, in $2; print the .ko's path.
+# Build gpio-sim out of tree from Debian's linux-source-SERIES (6.1 for
+# 6.1.0-57-amd64, 6.12 for 6.12.95+deb12-amd64) against the headers of
+# kernel $1, in $2; print the .ko's path.
 #
 # Debian's kernel leaves CONFIG_GPIO_SIM (and the IRQ_SIM it selects)
 # out.  The module is gpio-sim.c and irq_sim.c linked as one, plus
@@ -15,13 +16,14 @@ unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES O
 kver=$1
 out=$2
 ko=$out/src/gpio-sim.ko
-tarball=/usr/src/linux-source-6.1.tar.xz
+series=$(echo "$kver" | sed -n "s/^\([0-9]*\.[0-9]*\).*/\1/p")
+tarball=/usr/src/linux-source-$series.tar.xz
 if [ -f "$ko" ] && [ "$ko" -nt "/lib/modules/$kver/build/Module.symvers" ] &&
 	[ "$ko" -nt "$0" ]; then
 	echo "$ko"
 	exit 0
 fi
-[ -r "$tarball" ] || { echo "$tarball missing (apt-get install linux-source-6.1)" >&2; exit 1; }
+[ -r "$tarball" ] || { echo "$tarball missing (apt-get install linux-source-$series)" >&2; exit 1; }
 rm -rf "$out"
 mkdir -p "$out/src"
 cd "$out"

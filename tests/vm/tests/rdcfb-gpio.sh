@@ -17,7 +17,7 @@
 
 GT=$B/gpio_te
 IOCTL=$B/fbdev_ioctl
-KO=$RDC_BUILD/vm/build-rdcfb/rdcfb.ko
+KO=$RDC_VM_DIR/build-rdcfb/rdcfb.ko
 FB=/dev/fb0
 LABEL=rdcfb.0-pins
 SYS=/sys/bus/platform/devices/rdcfb.0

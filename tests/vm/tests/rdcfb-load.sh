@@ -14,7 +14,7 @@
 . "$RDC_TREE/tests/vm/lib.sh"
 
 TOOL=$B/rdcfb_tool
-KO=$RDC_BUILD/vm/build-rdcfb/rdcfb.ko
+KO=$RDC_VM_DIR/build-rdcfb/rdcfb.ko
 LOOPS=${RDCFB_LOOPS:-100}
 
 

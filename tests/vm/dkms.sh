@@ -1,0 +1,63 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only
+# For a VM test's "# vm-dkms: NAME" line (run.sh): `dkms add`, `dkms
+# build` and `dkms install` NAME (rdcfb: the layout scripts/dkms-source.sh
+# makes) for kernel $2, here, as a user would, with everything dkms
+# writes kept in $3:
+#
+#   tests/vm/dkms.sh NAME KVER OUTDIR
+#
+# dkms runs in a mount namespace of its own where /usr/src, /var/lib/dkms
+# and /lib/modules/KVER are overlays with their upper layers in
+# OUTDIR/upper/{src,dkms,modules}, so this machine's own trees are never
+# written.  The guest lays the same upper layers over its view of those
+# trees (tests/vm/tests/rdcfb-dkms.sh), so its modprobe finds the module
+# where `dkms install` put it and `dkms status` reads dkms's own state.
+# The build is the slow part, done here at full speed rather than in the
+# emulated guest.  OUTDIR/dkms.log keeps dkms's output.
+set -e
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES O
+name=$1
+kver=$2
+out=$3
+root=$(cd "$(dirname "$0")/../.." && pwd)
+[ "$name" = rdcfb ] || { echo "dkms.sh: no dkms source for $name" >&2; exit 1; }
+[ "$(id -u)" = 0 ] || { echo "dkms.sh: dkms needs root" >&2; exit 1; }
+command -v dkms >/dev/null || { echo "dkms.sh: dkms is not installed" >&2; exit 1; }
+
+# Done before, and nothing it was made from has changed since?
+stamp=$out/installed
+if [ -f "$stamp" ] && [ "$stamp" -nt "/lib/modules/$kver/build/Module.symvers" ] &&
+	[ -z "$(find "$root/Kbuild" "$root/driver" "$root/hw-sim" \
+		"$root/firmware-model" "$root/scripts/dkms-source.sh" "$0" \
+		-newer "$stamp" -print 2>/dev/null | head -n 1)" ]; then
+	exit 0
+fi
+rm -rf "$out"
+mkdir -p "$out"
+src=$(sh "$root/scripts/dkms-source.sh" "$out/source")
+ver=${src##*/rdcfb-}
+printf '%s\n' "$ver" >"$out/version"
+
+unshare -m sh -e -c '
+	out=$1
+	kver=$2
+	src=$3
+	ver=$4
+	mount --make-rprivate /
+	for m in src:/usr/src dkms:/var/lib/dkms modules:/lib/modules/$kver; do
+		n=${m%%:*}
+		d=${m#*:}
+		mkdir -p "$d" "$out/upper/$n" "$out/work/$n"
+		mount -t overlay overlay \
+			-o "lowerdir=$d,upperdir=$out/upper/$n,workdir=$out/work/$n" "$d"
+	done
+	dkms add "$src"
+	dkms build -m rdcfb -v "$ver" -k "$kver" -j 2
+	dkms install -m rdcfb -v "$ver" -k "$kver"
+	dkms status -m rdcfb -v "$ver" -k "$kver"
+' dkms "$out" "$kver" "$src" "$ver" >"$out/dkms.log" 2>&1 ||
+	{ tail -n 30 "$out/dkms.log" >&2; exit 1; }
+# the work directories are overlayfs's own, not to be shared
+rm -rf "$out/work"
+touch "$stamp"
