@@ -83,7 +83,7 @@ TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
 	shared install uninstall install-check debs \
 	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
-	bench-peers module \
+	bench-peers module dkms-source \
 	module-clean checkpatch format format-check firmware-mcu mcu-test
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a shared
 
@@ -108,8 +108,9 @@ help:
 	@echo "make fuzz         short libFuzzer runs: protocol codec, USB framing, rdcd, .rdl"
 	@echo "make fuzz-long    the same targets, ten minutes in all (FUZZ_LONG_TIME s each)"
 	@echo "make fuzz-cov     line coverage per file of the fuzz corpora (llvm-14)"
-	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/*"
+	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/* (RDC_VM_KERNEL=)"
 	@echo "make module       build rdcfb.ko in $(O)/kmod (KDIR= for another kernel)"
+	@echo "make dkms-source  rdcfb.ko's source for dkms in $(O)/dkms/rdcfb-VERSION"
 	@echo "make checkpatch   the kernel's checkpatch.pl over driver/ and the core"
 	@echo "make format-check clang-format 14 over every C file: fails on any difference"
 	@echo "make format       apply it"
@@ -330,7 +331,7 @@ check test: deps
 	$(MAKE) mcu-test
 	$(MAKE) fuzz
 	$(MAKE) shared
-	@vm=0; tests/vm/run.sh --auto $(O) || vm=1; \
+	@vm=0; tests/vm/run.sh --auto --all-kernels $(O) || vm=1; \
 	tests/install/run.sh $(O) || vm=1; \
 	tests/run.sh $(O)/san && exit $$vm
 
@@ -607,6 +608,11 @@ $(O)/rel/drm_pattern: tests/vm/drm_pattern.c $(O)/rel/librdc.a
 
 vm-test: $(VM_BINS)
 	@tests/vm/run.sh $(O)
+
+# rdcfb.ko's source as dkms wants it, in $(O)/dkms/rdcfb-VERSION
+# (docs/driver.md: dkms add it, then dkms install).
+dkms-source:
+	@scripts/dkms-source.sh $(O)/dkms $(RDC_VERSION)
 
 $(O)/rel/fill_speed: $(O)/rel/tests/perf/fill_speed.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
