@@ -10,6 +10,7 @@
  *   v4l2_read --expect A.rdl [--expect B.rdl ...] (--device /dev/videoN |
  *             --raw FILE --format F) [--frames N] [--need-all]
  *             [--check-rate] [--settle] [--timeout S] [--stall-ms MS]
+ *             [--sequence N --format F] [--in-order]
  *
  * Scripts run one after the other on one device; after each, its picture
  * is one expected frame (with the CRTC's frame interval).  Every frame
@@ -19,6 +20,14 @@
  * before its scene is drawn).  A device that stops delivering for
  * --stall-ms is closed and opened again, so a writer that renegotiates
  * (mode change) or restarts is followed.  Exit 0 when all is well.
+ *
+ * --sequence N: after the scripts' pictures, the N frames that follow at
+ * each vertical blanking (what `rdcctl stream --script A --at 1 B` sends
+ * after A's and B's pictures while the display processor animates on its
+ * own) are expected too, as CRC-32s in --format.  --in-order: each frame
+ * matched must come later in that order than the one matched before it
+ * (no frame twice, none out of order).  "expected: ..." is printed once
+ * the references are made, so a test can start its writer then.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -41,6 +50,7 @@
 #define POLL_NS	   (2 * NS_PER_MS)
 #define RATE_MIN   0.3
 #define RATE_SLOW  5.0
+#define SEQ_MAX	   100000u /* --sequence: frames simulated at most */
 
 struct expect {
 	const char *script;
@@ -58,6 +68,12 @@ struct ropts {
 	int need_all, check_rate, settle;
 	uint64_t each; /* --need-all: times each expected frame is seen */
 	uint64_t timeout_ns, stall_ns;
+	uint32_t nseq;	   /* --sequence: frames after the scripts' */
+	uint32_t *seq_crc; /* their CRC-32s in --format */
+	uint32_t seq_w, seq_h;
+	int seq_fmt, in_order;
+	uint64_t seq_seen, order_bad;
+	int64_t last; /* --in-order: the place of the frame matched last */
 };
 
 static uint64_t now_ns(void)
@@ -74,6 +90,52 @@ static void nap(uint64_t ns)
 			       .tv_nsec = (long)(ns % NS_PER_S) };
 
 	nanosleep(&ts, NULL);
+}
+
+/*
+ * --sequence: the frames after the scripts' pictures, one at each
+ * vertical blanking as rdcctl stream grabs them, in the last script's
+ * mode, converted to --format and kept as CRC-32s only.
+ */
+static int simulate_seq(struct ropts *o, rdc_dev *dev)
+{
+	const struct expect *last = &o->ex[o->nex - 1];
+	size_t npx = (size_t)last->w * last->h, bpl;
+	uint32_t *px = malloc(npx * 4), w, h;
+	uint8_t *b;
+	int ret = 0;
+
+	o->seq_fmt = rdc_sink_fmt_by_name(o->format);
+	o->seq_w = last->w;
+	o->seq_h = last->h;
+	bpl = rdc_sink_fmt_bytesperline(o->seq_fmt, last->w);
+	b = malloc(bpl * last->h);
+	o->seq_crc = calloc(o->nseq, sizeof(*o->seq_crc));
+	if (o->seq_fmt < 0 || !px || !b || !o->seq_crc)
+		ret = RDC_E_NOMEM;
+	for (uint32_t k = 0; k < o->nseq && !ret; k++) {
+		struct rdc_frame f = { .xrgb = px };
+
+		ret = rdc_vblank_wait(dev);
+		if (!ret)
+			ret = rdc_frame_grab(dev, px, npx, &w, &h);
+		if (!ret && (w != last->w || h != last->h))
+			ret = RDC_E_RANGE; /* a mode change: not followed */
+		f.width = w;
+		f.height = h;
+		f.stride = w;
+		if (!ret)
+			ret = rdc_sink_convert(o->seq_fmt, b, bpl, &f);
+		if (!ret)
+			o->seq_crc[k] =
+				(uint32_t)crc32(0, b, (uInt)(bpl * last->h));
+	}
+	if (ret)
+		fprintf(stderr, "v4l2_read: --sequence: %s\n",
+			rdc_strerror(ret));
+	free(b);
+	free(px);
+	return ret;
 }
 
 static int simulate(struct ropts *o)
@@ -108,6 +170,8 @@ static int simulate(struct ropts *o)
 			fprintf(stderr, "v4l2_read: %s: %s %s\n", e->script,
 				rdc_strerror(ret), res->error_msg);
 	}
+	if (!ret && o->nseq)
+		ret = simulate_seq(o, dev);
 	rdc_close(dev);
 	free(res);
 	return ret ? -1 : 0;
@@ -148,6 +212,44 @@ static struct expect *match(struct ropts *o, uint32_t w, uint32_t h,
 	return NULL;
 }
 
+/*
+ * A frame's place in the order simulated: a script's index, or nex + k
+ * for the k-th --sequence frame (whose interval is the last script's, in
+ * *e); -1 when it matches nothing.  Counts it as seen and, with
+ * --in-order, whether it came after the frame matched before it.
+ */
+static int64_t place(struct ropts *o, int fmt, uint32_t w, uint32_t h,
+		     uint32_t crc, struct expect **e)
+{
+	int64_t at = -1;
+
+	*e = match(o, w, h, crc);
+	if (*e) {
+		(*e)->seen++;
+		at = *e - o->ex;
+	} else if (o->nseq && fmt == o->seq_fmt && w == o->seq_w &&
+		   h == o->seq_h) {
+		for (uint32_t k = 0; k < o->nseq && at < 0; k++)
+			if (o->seq_crc[k] == crc)
+				at = o->nex + (int64_t)k;
+		if (at >= 0) {
+			o->seq_seen++;
+			*e = &o->ex[o->nex - 1];
+		}
+	}
+	if (at >= 0 && o->in_order) {
+		if (at <= o->last) {
+			o->order_bad++;
+			fprintf(stderr,
+				"v4l2_read: frame %lld after frame "
+				"%lld: out of order\n",
+				(long long)at, (long long)o->last);
+		}
+		o->last = at;
+	}
+	return at;
+}
+
 static int all_seen(const struct ropts *o)
 {
 	for (int i = 0; i < o->nex; i++)
@@ -176,11 +278,9 @@ static int check_raw(struct ropts *o)
 	buf = malloc(size);
 	while (buf && fread(buf, 1, size, f) == size) {
 		uint32_t crc = (uint32_t)crc32(0, buf, (uInt)size);
-		struct expect *e = match(o, o->ex[0].w, o->ex[0].h, crc);
+		struct expect *e;
 
-		if (e)
-			e->seen++;
-		else
+		if (place(o, fmt, o->ex[0].w, o->ex[0].h, crc, &e) < 0)
 			bad++;
 		n++;
 	}
@@ -188,7 +288,13 @@ static int check_raw(struct ropts *o)
 	free(buf);
 	printf("raw: %llu frames of %zu bytes, %llu not matching\n",
 	       (unsigned long long)n, size, (unsigned long long)bad);
-	return !buf || bad || n != o->frames || (o->need_all && !all_seen(o));
+	if (o->nseq)
+		printf("sequence: %llu of its %u frames seen, %llu out of "
+		       "order\n",
+		       (unsigned long long)o->seq_seen, o->nseq,
+		       (unsigned long long)o->order_bad);
+	return !buf || bad || o->order_bad || n != o->frames ||
+	       (o->need_all && !all_seen(o));
 }
 
 struct session {
@@ -278,13 +384,12 @@ static int read_device(struct ropts *o)
 			if (got < 0)
 				break;
 			crc = (uint32_t)crc32(0, buf, (uInt)got);
-			e = (size_t)got == want ? match(o, s.w, s.h, crc) :
-						  NULL;
-			if (!e && o->settle && !matched)
-				continue; /* the scene is still being drawn */
-			if (e) {
-				e->seen++;
+			e = NULL;
+			if ((size_t)got == want &&
+			    place(o, s.fmt, s.w, s.h, crc, &e) >= 0) {
 				matched++;
+			} else if (o->settle && !matched) {
+				continue; /* the scene is still being drawn */
 			} else {
 				bad++;
 				fprintf(stderr,
@@ -347,8 +452,13 @@ static int read_device(struct ropts *o)
 	for (int i = 0; i < o->nex; i++)
 		printf(", %s seen %llu", o->ex[i].script,
 		       (unsigned long long)o->ex[i].seen);
+	if (o->nseq)
+		printf(", sequence: %llu of its %u frames seen, %llu out of "
+		       "order",
+		       (unsigned long long)o->seq_seen, o->nseq,
+		       (unsigned long long)o->order_bad);
 	printf("\n");
-	return bad || ival_bad || rate_bad || n < o->frames ||
+	return bad || ival_bad || rate_bad || o->order_bad || n < o->frames ||
 	       (o->need_all && !all_seen(o));
 }
 
@@ -368,6 +478,10 @@ static int parse(int argc, char **argv, struct ropts *o)
 		}
 		if (!strcmp(a, "--settle")) {
 			o->settle = 1;
+			continue;
+		}
+		if (!strcmp(a, "--in-order")) {
+			o->in_order = 1;
 			continue;
 		}
 		if (!v)
@@ -390,10 +504,13 @@ static int parse(int argc, char **argv, struct ropts *o)
 			o->each = strtoull(v, NULL, 10);
 		} else if (!strcmp(a, "--stall-ms"))
 			o->stall_ns = strtoull(v, NULL, 10) * NS_PER_MS;
+		else if (!strcmp(a, "--sequence"))
+			o->nseq = (uint32_t)strtoul(v, NULL, 10);
 		else
 			return -1;
 	}
-	if (!o->nex || (!o->device == !o->raw) || (o->raw && !o->format))
+	if (!o->nex || (!o->device == !o->raw) ||
+	    ((o->raw || o->nseq) && !o->format) || o->nseq > SEQ_MAX)
 		return -1;
 	return 0;
 }
@@ -405,19 +522,23 @@ int main(int argc, char **argv)
 			   .stall_ns = 1000 * NS_PER_MS };
 	int ret;
 
+	o.last = -1;
 	setvbuf(stdout, NULL, _IOLBF, 0);
 	if (parse(argc, argv, &o)) {
 		fprintf(stderr, "usage: v4l2_read --expect A.rdl [--expect "
 				"B.rdl...] (--device DEV | --raw FILE --format "
 				"F) [--frames N] [--need-all] [--each N] "
 				"[--check-rate] "
-				"[--settle] [--timeout S] [--stall-ms MS]\n");
+				"[--settle] [--timeout S] [--stall-ms MS] "
+				"[--sequence N --format F] [--in-order]\n");
 		return 2;
 	}
 	if (simulate(&o))
 		return 1;
+	printf("expected: %d pictures, then %u frames\n", o.nex, o.nseq);
 	ret = o.raw ? check_raw(&o) : read_device(&o);
 	for (int i = 0; i < o.nex; i++)
 		free(o.ex[i].px);
+	free(o.seq_crc);
 	return ret ? 1 : 0;
 }
