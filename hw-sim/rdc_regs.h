@@ -179,6 +179,18 @@
 #define RDC_REG_PERF_CTRL 0x32c /* W   write 1 to bit 0: zero the counters */
 #define   RDC_PERF_CTRL_CLEAR BIT(0)
 
+/*
+ * Registers a host read of which is not a plain read: RDATA pops a word,
+ * CLUT_DATA advances CLUT_INDEX, and FIFO_DATA and PERF_CTRL are write
+ * only (0, meaning nothing).  A register dump skips them; rdcd lets only
+ * the controlling client read them and takes none as a wait's term.
+ */
+static inline int rdc_reg_read_has_effect(uint32_t reg)
+{
+	return reg == RDC_REG_RDATA || reg == RDC_REG_CLUT_DATA ||
+	       reg == RDC_REG_FIFO_DATA || reg == RDC_REG_PERF_CTRL;
+}
+
 /* ---- Pixel formats ------------------------------------------------------ */
 /*
  * Sub-byte formats pack the leftmost pixel in the most significant bits.

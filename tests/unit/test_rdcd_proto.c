@@ -258,6 +258,13 @@ static void test_control(void **state)
 	assert_int_equal(rdc_finish(obs), RDC_E_BUSY);
 	assert_int_equal(rdc_vblank_wait(obs), RDC_E_BUSY);
 	assert_int_equal(rdc_reg_read(obs, RDC_REG_RDATA, &v), RDC_E_BUSY);
+	/* reading CLUT_DATA advances CLUT_INDEX: the controller's alone */
+	assert_int_equal(rdc_reg_read(obs, RDC_REG_CLUT_DATA, &v), RDC_E_BUSY);
+	assert_int_equal(rdc_reg_read(obs, RDC_REG_CLUT_INDEX, &v), 0);
+	assert_int_equal(v, 5);
+	assert_int_equal(rdc_reg_read(a, RDC_REG_CLUT_DATA, &v), 0);
+	assert_int_equal(rdc_reg_read(obs, RDC_REG_CLUT_INDEX, &v), 0);
+	assert_int_equal(v, 6);
 	/* control passes when its holder leaves */
 	fd = hello_fd(&d, 0);
 	assert_true(fd >= 0);

@@ -229,8 +229,7 @@ static int cmd_regs(rdc_dev *dev)
 		int ret;
 
 		/* Reading these pops or changes state; show them as such. */
-		if (reg == RDC_REG_RDATA || reg == RDC_REG_FIFO_DATA ||
-		    reg == RDC_REG_PERF_CTRL) {
+		if (rdc_reg_read_has_effect(reg)) {
 			printf("0x%03x %-18s (not read)\n", reg, name);
 			continue;
 		}

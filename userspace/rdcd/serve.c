@@ -636,11 +636,10 @@ static void rdcd_auth_failed(struct rdcd *d, const char *peer)
 
 /* ---- Requests ------------------------------------------------------------ */
 
-/* Registers whose read changes the device. */
+/* Registers whose read changes the device (or means nothing). */
 static bool rdcd_reg_read_changes(uint32_t reg)
 {
-	return reg == RDC_REG_RDATA || reg == RDC_REG_FIFO_DATA ||
-	       reg == RDC_REG_PERF_CTRL;
+	return rdc_reg_read_has_effect(reg);
 }
 
 static bool rdcd_reg_ok(uint32_t reg)
