@@ -160,7 +160,6 @@ $(O)/san/tests/test_udl_decode: $(O)/san/tests/unit/test_udl_decode.o \
 	@mkdir -p $(dir $@)
 	$(CC) $(SAN_CFLAGS) $^ $(CMOCKA_LIBS) $(LIBS) -lm -o $@
 
-# ---- librdc as a shared library, and make install --------------------------
 # The web sink's page is built into web_page.o (.incbin of web/); its
 # unit test reads the sink's protocol header.
 WEB_PAGE := web/index.html web/rdc.js web/rdc.css
@@ -168,6 +167,7 @@ $(O)/rel/userspace/sink/web_page.o $(O)/san/userspace/sink/web_page.o \
 	$(O)/pic/userspace/sink/web_page.o: $(WEB_PAGE)
 $(O)/san/tests/unit/test_web.o: SAN_CFLAGS += -Iuserspace/sink
 
+# ---- librdc as a shared library, and make install --------------------------
 # The version is rdc.h's RDC_VERSION_MAJOR/MINOR/PATCH; the SONAME follows
 # the major number.  librdc.so exports what its installed headers declare
 # and nothing else: scripts/librdc-map.sh writes the version script from
@@ -400,8 +400,8 @@ bench-usb: $(O)/rel/net_bench $(O)/rel/rdcd
 #   fuzz_usb     the host side of the USB framing (usb_host.c)
 #   fuzz_rdcd    rdcd's request handling, several clients (rdcd/serve.c)
 #   fuzz_script  the .rdl interpreter on a sim: device (lib/script*.c)
-# `make fuzz` is the short run `make check` does (fuzz_proto and fuzz_usb
 #   fuzz_web     the web sink's HTTP and WebSocket parsers (sink/web_proto.c)
+# `make fuzz` is the short run `make check` does (fuzz_proto and fuzz_usb
 # a million inputs each, the other two FUZZ_TIME seconds each from their
 # seeds in tests/fuzz/seeds/); `make fuzz-long` gives each target
 # FUZZ_LONG_TIME seconds (150: ten minutes in all) and keeps its corpus in
@@ -424,7 +424,6 @@ $(FUZZ_DIR)/fuzz_proto: tests/fuzz/fuzz_proto.c userspace/lib/proto.c \
 
 # The host side of the USB framing: bulk chunks and interrupt transfers
 # from a device into whole messages (userspace/lib/usb_host.c).
-$(FUZZ_DIR)/fuzz_usb: tests/fuzz/fuzz_usb.c userspace/lib/usb_host.c \
 # fuzz_web: the web sink's HTTP request and WebSocket frame parsers.
 $(FUZZ_DIR)/fuzz_web: tests/fuzz/fuzz_web.c userspace/sink/web_proto.c \
 		userspace/sink/web_proto.h
@@ -433,6 +432,7 @@ $(FUZZ_DIR)/fuzz_web: tests/fuzz/fuzz_web.c userspace/sink/web_proto.c \
 		userspace/sink/web_proto.c -o $@
 $(FUZZ_DIR)/obj/userspace/sink/web_page.o: $(WEB_PAGE)
 
+$(FUZZ_DIR)/fuzz_usb: tests/fuzz/fuzz_usb.c userspace/lib/usb_host.c \
 		userspace/lib/usb_host.h userspace/lib/proto.c \
 		userspace/include/rdc_proto.h userspace/include/rdc_usb.h
 	@mkdir -p $(dir $@)
@@ -490,9 +490,9 @@ FUZZ_SEEDS = case $$t in \
 fuzz: $(FUZZ_BINS)
 	$(FUZZ_DIR)/fuzz_proto -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
 	$(FUZZ_DIR)/fuzz_usb -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
-	@for t in rdcd script; do \
 	$(FUZZ_DIR)/fuzz_web -runs=$(FUZZ_RUNS) -max_len=16384 -seed=1 \
 		-dict=tests/fuzz/web.dict
+	@for t in rdcd script; do \
 		rm -rf $(FUZZ_DIR)/short-$$t && mkdir -p $(FUZZ_DIR)/short-$$t; \
 		dict=; [ -f tests/fuzz/$$t.dict ] && dict=-dict=tests/fuzz/$$t.dict; \
 		cmd="$(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_TIME) -seed=1"; \

@@ -884,15 +884,17 @@ int main(int argc, char **argv)
 	for (unsigned int i = 0; i < o.nsinks; i++) {
 		int err = rdcd_web_token(&o.sinks[i], o.token);
 
+		if (!err)
+			err = rdc_sink_open(o.sinks[i], &d.sinks[d.nsinks]);
 		if (err) {
 			rdcd_log(&d, RDCD_LOG_ERR, "sink %s: %s: %s",
 				 o.sinks[i], rdc_strerror(err),
 				 rdc_last_error_detail(err));
 			goto out;
 		}
+		rdcd_web_log(&d, d.sinks[d.nsinks]);
 		d.nsinks++;
 	}
-		rdcd_web_log(&d, d.sinks[d.nsinks]);
 	if (o.mode) {
 		int p = rdc_preset_by_name(o.mode);
 		int err = p < 0 ? RDC_E_INVAL :
