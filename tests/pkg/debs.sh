@@ -94,6 +94,34 @@ else
 	bad "lintian: $errors errors"
 fi
 
+# Each package's dependencies are its own: dkms for the module's alone.
+depbad=0
+for d in $debs; do
+	dep=$(dpkg-deb -f "$work/$d" Depends)
+	case "${d%%_*}:$dep" in
+	rdcfb-dkms:*dkms*) ;;
+	rdcfb-dkms:*)
+		bad "rdcfb-dkms does not depend on dkms: $dep"
+		depbad=1
+		;;
+	*:*dkms*)
+		bad "${d%%_*} depends on dkms: $dep"
+		depbad=1
+		;;
+	esac
+done
+# The user units are left for users to enable: the postinst enables a
+# unit again (an upgrade) only where it was installed and enabled before
+# (dh_installsystemduser --no-enable's debian-installed guard).
+pi=$work/tools-control/postinst
+if ! dpkg-deb -e "$work"/rdc-tools_*.deb "$work/tools-control" ||
+	{ grep -qs -- '--user enable' "$pi" &&
+		! grep -qs -- '--user debian-installed' "$pi"; }; then
+	bad "rdc-tools enables rdcd's user units at installation"
+elif [ $depbad -eq 0 ]; then
+	ok "dependencies as each package needs; the user units are not enabled at installation"
+fi
+
 root=$work/root
 for d in $debs; do
 	dpkg -x "$work/$d" "$root" || bad "dpkg -x $d"
