@@ -123,10 +123,11 @@ struct rdc_sink_status {
 	 * covers them (rdc.h, "Structures that grow") */
 	uint32_t size;
 	uint32_t have;
-	uint64_t time;	 /* simulated core cycles */
+	uint64_t time; /* simulated core cycles */
 	uint32_t core_hz;
-	uint32_t pins;	 /* RDC_PIN_* levels */
-	uint32_t irq_status, irq_enable; /* the registers */
+	uint32_t pins; /* RDC_PIN_* levels */
+	/* the registers IRQ_STATUS and IRQ_ENABLE */
+	uint32_t irq_status, irq_enable;
 	uint32_t format; /* enum rdc_format of the scanout */
 };
 /* Tell the sink the device's state (kept until the next call); sinks that

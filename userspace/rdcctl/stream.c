@@ -196,7 +196,8 @@ static int stream_open_sinks(const struct stream_opts *o, rdc_sink **sinks,
 		char url[128];
 
 		if (!rdc_sink_url(sinks[i], url, sizeof(url)))
-			fprintf(stderr, "rdcctl: stream: web page at %s\n", url);
+			fprintf(stderr, "rdcctl: stream: web page at %s\n",
+				url);
 	}
 	if (!ret && !*n) {
 		fprintf(stderr, "rdcctl: stream: no sink (--v4l2, --png, "
