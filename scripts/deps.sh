@@ -15,6 +15,9 @@ PKGS="$PKGS gcc-arm-none-eabi qemu-system-arm"
 # completion with bash-completion's helpers, the units through
 # systemd-analyze verify
 PKGS="$PKGS groff-base man-db bash-completion systemd"
+# test_web_browser: the web sink's page in headless Chromium, driven
+# through chromedriver by tests/web/browser.py
+PKGS="$PKGS python3 chromium chromium-driver"
 # libgpiod's v2 API (GPIO lines): Debian 13 has it in main; Debian 12 only
 # in bookworm-backports, which is enabled for these two packages alone
 # (apt-get -t for them, the rest stays on bookworm).
