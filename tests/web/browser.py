@@ -207,6 +207,9 @@ def main():
     if not chromium or not driver:
         skip("no chromium or chromedriver (Debian: chromium "
              "chromium-driver; scripts/deps.sh installs them)")
+    for prog in ("rdcd", "rdcctl"):
+        if not os.access(os.path.join(bindir, prog), os.X_OK):
+            fail("no %s in %s (build it first)" % (prog, bindir))
     tmp = tempfile.mkdtemp(prefix="rdc-web-")
     procs = []
     wd = None
