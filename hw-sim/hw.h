@@ -24,7 +24,7 @@
 #include "rdc_regs.h"
 
 #define RDC_NEVER		UINT64_MAX /* "no such time" */
-#define RDC_FIFO_LOWWATER_RESET 64u /* FIFO_LOWWATER after reset */
+#define RDC_FIFO_LOWWATER_RESET 64u	   /* FIFO_LOWWATER after reset */
 /* LINE_COMPARE after reset: beyond any V_TOTAL, so RDC_IRQ_LINE never fires */
 #define RDC_LINE_COMPARE_RESET RDC_CRTC_MAX_TOTAL
 #define RDC_CURSOR_FG_RESET    0x00ffffffu
