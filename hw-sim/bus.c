@@ -116,6 +116,9 @@ uint8_t *rdc_port_span(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 	if (!len || (uint64_t)addr + len > hw->vram_size)
 		return NULL;
 	rdc_bus_charge(hw, addr, len, kind);
+	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+		hw->vram_hook(hw->vram_hook_ctx, hw->now, addr, len, 1, 0,
+			      RDC_VRAM_BY_DP);
 	return hw->vram + addr;
 }
 
@@ -159,6 +162,9 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 		bus_burst(hw, &t, a, len, kind);
 	}
 	hw->now = t;
+	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, count, stride,
+			      RDC_VRAM_BY_DP);
 	return hw->vram + addr;
 }
 
@@ -232,6 +238,19 @@ static rdc_always_inline uint32_t runs_charge(const struct rdc_hw *hw,
 	return i;
 }
 
+/* The runs charged, to the VRAM write watcher (off the hot path). */
+static rdc_noinline void runs_watched(const struct rdc_hw *hw,
+				      const struct rdc_port_run *r, uint32_t n,
+				      uint32_t stride, uint64_t t)
+{
+	uint32_t i;
+
+	for (i = 0; i < n; i++)
+		hw->vram_hook(hw->vram_hook_ctx, t, r[i].addr, r[i].len,
+			      r[i].count, r[i].count > 1 ? stride : 0,
+			      RDC_VRAM_BY_DP);
+}
+
 uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 		       uint32_t n, uint32_t stride, unsigned int kind,
 		       uint32_t *done)
@@ -256,6 +275,8 @@ uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 		*done = runs_charge(hw, r, n, stride, kind, &row, &t, lim);
 	hw->bus.open_row = row;
 	hw->now = t;
+	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+		runs_watched(hw, r, *done, stride, t);
 	return hw->vram;
 }
 
@@ -291,6 +312,8 @@ bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
 		return false;
 	w->t = t;
 	w->row = row;
+	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+		runs_watched(hw, r, 1, stride, t);
 	return true;
 }
 
@@ -328,6 +351,9 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 		w->t = t + c0 + (n - 1) * c1;
 		w->row = (uint32_t)((a + (n - 1) * stride + len - 1) /
 				    RDC_DRAM_ROW_BYTES);
+		if (hw->vram_hook)
+			hw->vram_hook(hw->vram_hook_ctx, w->t, addr, len,
+				      (uint32_t)n, stride, RDC_VRAM_BY_DP);
 		return (uint32_t)n;
 	}
 	/* runs_charge's span case, the runs made on the way */
@@ -346,6 +372,9 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 	}
 	w->t = t;
 	w->row = row;
+	if (hw->vram_hook && i)
+		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, i, stride,
+			      RDC_VRAM_BY_DP);
 	return i;
 }
 

@@ -127,6 +127,16 @@ static inline uint64_t rdc_bus_column_cost(uint32_t *row, uint64_t a,
 	return count * one + misses * RDC_T_ROW_MISS;
 }
 
+/* A DP write charged in a window, to the VRAM write watcher if any. */
+static inline void rdc_vram_watch(const struct rdc_hw *hw, uint64_t t,
+				  uint32_t addr, uint32_t len, uint32_t count,
+				  uint32_t stride)
+{
+	if (hw->vram_hook)
+		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, count, stride,
+			      RDC_VRAM_BY_DP);
+}
+
 /*
  * rdc_port_window_charge for a column of one-beat elements a whole
  * number of beats apart (the closed form above) written as RDC_BUS_WRITE,
@@ -152,6 +162,7 @@ static inline bool rdc_port_window_column(const struct rdc_hw *hw,
 		return false;
 	w->t = t;
 	w->row = row;
+	rdc_vram_watch(hw, t, r->addr, r->len, r->count, stride);
 	return true;
 }
 
@@ -178,6 +189,7 @@ static inline bool rdc_port_window_pair(const struct rdc_hw *hw,
 		return false;
 	w->t = t;
 	w->row = row;
+	rdc_vram_watch(hw, t, waddr, len, 1, 0);
 	return true;
 }
 
@@ -200,6 +212,7 @@ static inline bool rdc_port_window_span(const struct rdc_hw *hw,
 		return false;
 	w->t = t;
 	w->row = row;
+	rdc_vram_watch(hw, t, addr, len, 1, 0);
 	return true;
 }
 

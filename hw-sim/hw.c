@@ -136,6 +136,12 @@ void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx)
 	hw->trace_ctx = ctx;
 }
 
+void rdc_hw_set_vram_hook(struct rdc_hw *hw, rdc_vram_hook_fn fn, void *ctx)
+{
+	hw->vram_hook = fn;
+	hw->vram_hook_ctx = ctx;
+}
+
 void rdc_hw_set_poll(struct rdc_hw *hw, void (*fn)(void *ctx), void *ctx)
 {
 	hw->poll_fn = fn;
@@ -191,6 +197,9 @@ int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 		return 0;
 	/* lines the beam has passed keep the old bytes */
 	rdc_crtc_catch_up(hw, hw->now);
+	if (hw->vram_hook)
+		hw->vram_hook(hw->vram_hook_ctx, hw->now, addr, len, 1, 0,
+			      RDC_VRAM_BY_HOST);
 	rdc_memcpy(hw->vram + addr, buf, len);
 	rdc_trace(hw, RDC_TRACE_VRAM_WRITE, addr, len);
 	return 0;

@@ -33,6 +33,20 @@
 struct rdc_hw;
 
 /*
+ * A VRAM write is about to land (rdc_hw_set_vram_hook): `count` runs of
+ * `len` bytes, `stride` bytes apart from `addr`, by the DP (who = 0) or the
+ * host aperture (who = 1), whose bus access ended at `time`.  Called
+ * before the bytes change: the DP writes them after the port call that
+ * charged them returns and before its next port call; the host's are
+ * copied right after the call.  Nothing may be written from the hook.
+ */
+#define RDC_VRAM_BY_DP	 0u
+#define RDC_VRAM_BY_HOST 1u
+typedef void (*rdc_vram_hook_fn)(void *ctx, uint64_t time, uint32_t addr,
+				 uint32_t len, uint32_t count, uint32_t stride,
+				 unsigned int who);
+
+/*
  * The display processor as the chip sees it (firmware-model/ fills this
  * in with rdc_dp_attach).  The chip calls run() from its run loop.
  */
@@ -156,6 +170,10 @@ struct rdc_hw {
 	rdc_trace_fn trace_fn; /* optional */
 	void *trace_ctx;
 
+	/* the VRAM write watcher (rdc_hw_set_vram_hook), optional */
+	rdc_vram_hook_fn vram_hook;
+	void *vram_hook_ctx;
+
 	/* the host's poll hook (rdc_hw_set_poll), optional */
 	void (*poll_fn)(void *ctx);
 	void *poll_ctx;
@@ -269,6 +287,13 @@ uint32_t rdc_hw_pins(struct rdc_hw *hw);
 void rdc_hw_set_dp(struct rdc_hw *hw, const struct rdc_dp_ops *ops, void *dp);
 void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx);
 void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx);
+/*
+ * Watch VRAM writes (pixel history): fn sees every write the DP or the host
+ * makes, once per span, column or run, never per pixel.  It changes no
+ * cycle and no byte.  NULL (the default) turns it off; the write paths
+ * then test one pointer.
+ */
+void rdc_hw_set_vram_hook(struct rdc_hw *hw, rdc_vram_hook_fn fn, void *ctx);
 /*
  * A host that must not wait for a long command (a daemon serving others,
  * a kernel that must reschedule) gets fn(ctx) called every RDC_POLL_EVERY

@@ -680,6 +680,100 @@ int rdc_image_samples(const uint32_t *xrgb, uint32_t w, uint32_t h,
 int rdc_image_png_read(const char *path, uint32_t **xrgb, uint32_t *w,
 		       uint32_t *h);
 
+/* ---- Pixel history (docs/history.md) ------------------------------------- */
+/*
+ * Every VRAM write that touches a watched rectangle of the screen (the
+ * framebuffer scanout has latched), one entry per pixel per write, in the
+ * order the writes land.  sim: only (RDC_E_NOSYS elsewhere); off until
+ * rdc_history_open, and then about sizeof(struct rdc_history_entry) + 16
+ * bytes an entry (RDC_HISTORY_LIMIT_DEFAULT entries, then they are
+ * counted in rdc_history_dropped).
+ */
+typedef struct rdc_history rdc_history;
+
+#define RDC_HISTORY_SCREEN	  UINT32_MAX /* w or h: to the screen's edge */
+#define RDC_HISTORY_WRITES	  1u /* also log every write access (diff) */
+#define RDC_HISTORY_LIMIT_DEFAULT (1u << 20)
+#define RDC_HISTORY_OP_HOST	  0x100u /* opcode of a host aperture write */
+
+enum rdc_history_source {
+	RDC_HISTORY_SRC_FIFO, /* a command from FIFO_DATA */
+	RDC_HISTORY_SRC_RING, /* from the ring */
+	RDC_HISTORY_SRC_LIST, /* from a display list (calls[] the chain) */
+	RDC_HISTORY_SRC_HOST, /* the host wrote VRAM through the aperture */
+};
+
+struct rdc_history_entry {
+	/* sizeof(struct), set by the call (see "Structures that grow") */
+	uint32_t size;
+	uint32_t x, y;	 /* the pixel, screen coordinates */
+	uint32_t format; /* the screen's RDC_FMT_* (before/after's) */
+	uint32_t before; /* pixel value before the write, raw */
+	uint32_t after;	 /* and after it (equal: written, unchanged) */
+	uint64_t cycle;	 /* end of the bus access that wrote it */
+	uint64_t frame;	 /* frames scanned out before this one */
+	/*
+	 * 1: scanout had already fetched line y of frame `frame`, which
+	 * shows `before`; frame + 1 shows `after`.  0: not yet: frame
+	 * `frame` shows `after`.  -1: scanout was stopped.
+	 */
+	int32_t fetched;
+	uint32_t opcode;    /* RDC_OP_*, or RDC_HISTORY_OP_HOST */
+	uint32_t cmd_index; /* commands the DP had finished (PERF_CMDS) */
+	uint32_t source;    /* enum rdc_history_source */
+	uint32_t line;	    /* .rdl line of the statement running, 0: none */
+	uint32_t cmd_addr;  /* SRC_LIST: VRAM address of the command */
+	/* SRC_LIST: lists entered, and the return address in each caller,
+	 * outermost first (calls[0 .. depth - 2]) */
+	uint32_t depth;
+	uint32_t calls[8];
+	/* the DP's drawing state the command ran with */
+	uint32_t rop, alpha, colorkey, colorkey_on, pattern, fg, bg;
+};
+
+/* One write access (RDC_HISTORY_WRITES): `count` runs of `len` bytes,
+ * `stride` apart; entry holds its command (x, y, before, after unused). */
+struct rdc_history_write {
+	uint32_t size;
+	uint32_t addr, len, count, stride;
+	uint64_t hash; /* FNV-1a of the bytes once written */
+	struct rdc_history_entry entry;
+};
+
+/*
+ * Watch the rectangle x, y, w, h of the screen (RDC_HISTORY_SCREEN for
+ * w and h: all of it) from now on.  One history a device.  RDC_E_BUSY if
+ * one is open already.
+ */
+int rdc_history_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
+		     uint32_t h, uint32_t flags, rdc_history **out);
+/* Keep at most max_entries entries (default RDC_HISTORY_LIMIT_DEFAULT). */
+int rdc_history_set_limit(rdc_history *h, size_t max_entries);
+size_t rdc_history_count(rdc_history *h);
+/* Entries not kept (over the limit, out of memory). */
+uint64_t rdc_history_dropped(rdc_history *h);
+int rdc_history_get_sized(rdc_history *h, size_t i,
+			  struct rdc_history_entry *e);
+static inline int rdc_history_get(rdc_history *h, size_t i,
+				  struct rdc_history_entry *e)
+{
+	if (e)
+		e->size = sizeof(*e);
+	return rdc_history_get_sized(h, i, e);
+}
+size_t rdc_history_write_count(rdc_history *h);
+int rdc_history_write_get_sized(rdc_history *h, size_t i,
+				struct rdc_history_write *w);
+static inline int rdc_history_write_get(rdc_history *h, size_t i,
+					struct rdc_history_write *w)
+{
+	if (w)
+		w->size = sizeof(*w);
+	return rdc_history_write_get_sized(h, i, w);
+}
+/* Stop watching and free it (also after rdc_close of its device). */
+void rdc_history_close(rdc_history *h);
+
 /* ---- PNG ----------------------------------------------------------------- */
 /* Write w x h XRGB8888 pixels (row `pitch` words) as an RGB PNG. */
 int rdc_png_write(const char *path, const uint32_t *xrgb, uint32_t w,

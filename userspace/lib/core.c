@@ -179,6 +179,7 @@ void rdc_close(rdc_dev *dev)
 {
 	if (!dev)
 		return;
+	rdc_history_detach(dev);
 	dev->be->close(dev);
 	free(dev);
 }

@@ -157,7 +157,15 @@ struct rdc_dev {
 	/* command-stream watcher (core.c, rdc_track_words) */
 	uint32_t scan_op, scan_left, scan_n, scan_args[4];
 	uint32_t dst_format, src_format;
+
+	/* pixel history (history.c): the open one, and the .rdl line whose
+	 * statement runs */
+	struct rdc_history *hist;
+	uint32_t src_line;
 };
+
+/* The device closes under its history (history.c). */
+void rdc_history_detach(rdc_dev *dev);
 
 /* Run a wait with one term (core.c). */
 int rdc_wait_one(rdc_dev *dev, enum rdc_wait_test kind, uint32_t reg,

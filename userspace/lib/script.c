@@ -1429,6 +1429,7 @@ static int rdl_statement(struct rdl *r)
 				       st->name, r->list_line);
 		rdc_batch_reset(r->b);
 		r->res->frame_ready = 0;
+		r->dev->src_line = r->line;
 		return st->fn(r, st->op);
 	}
 	return rdl_err(r, RDC_E_PARSE, "unknown statement '%.40s'", kw->s);

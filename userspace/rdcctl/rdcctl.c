@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "history.h"
 #include "pins.h"
 #include "image.h"
 #include "rdc.h"
@@ -38,7 +39,7 @@ static void usage(FILE *f)
 		"                             (USB, rdcd's default socket\n"
 		"                             directory, rdcfb.ko): one line\n"
 		"                             each, the URI for --connect first\n"
-		"%s%s%s"
+		"%s%s%s%s"
 		"\n"
 		"options:\n"
 		"  --connect URI  device to use (default " RDCCTL_DEFAULT_URI
@@ -49,7 +50,8 @@ static void usage(FILE *f)
 		"  -h, --help  this text\n"
 		"\n"
 		"The script format is described in docs/rdl.md.\n",
-		rdcctl_stream_usage, rdcctl_pins_usage, rdcctl_image_usage);
+		rdcctl_stream_usage, rdcctl_pins_usage, rdcctl_image_usage,
+		rdcctl_history_usage);
 }
 
 struct opts {
@@ -350,6 +352,9 @@ int main(int argc, char **argv)
 	if (ret >= 0)
 		return ret;
 	ret = rdcctl_image_main(argc, argv);
+	if (ret >= 0)
+		return ret;
+	ret = rdcctl_history_main(argc, argv);
 	if (ret >= 0)
 		return ret;
 	if (parse_args(argc, argv, &o))

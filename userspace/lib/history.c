@@ -1,0 +1,423 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Pixel history (docs/history.md): every VRAM write that touches a watched
+ * rectangle of the screen, with the command that made it, its cycle, the
+ * drawing state, the value before and after, and where the beam was.
+ *
+ * The chip calls rdc_hw_set_vram_hook's function once per span, column or
+ * run the DP charges (and per host aperture write), before the bytes
+ * change: the DP writes them after the port call returns and before its
+ * next one.  So each call first completes the entries the previous call
+ * left open (their "after" is in VRAM now), then opens entries for the
+ * watched pixels the new access covers, with their "before".  Nothing of
+ * this runs while no history is open: the chip tests one pointer.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "dp.h"
+#include "hw.h"
+#include "rdc_priv.h"
+
+#define HIST_MAX_DEFAULT (1u << 20) /* entries kept; later ones are counted */
+#define WRITES_MAX	 (1u << 22) /* write accesses logged (RDC_HISTORY_WRITES) */
+
+struct hist_rec {
+	struct rdc_history_entry e;
+	uint32_t addr; /* the byte holding the pixel (the first, if several) */
+	uint8_t shift; /* sub-byte pixels: bit position in that byte */
+	uint8_t bpp;   /* bits per pixel */
+	uint8_t partial; /* sub-byte pixel in a run's first or last byte */
+};
+
+struct rdc_history {
+	rdc_dev *dev;
+	struct rdc_hw *hw;
+	uint32_t x0, y0, x1, y1; /* watched: [x0, x1) x [y0, y1), screen */
+	uint32_t flags;
+	struct hist_rec *rec;
+	size_t n, cap, max, open; /* rec[open, n) wait for their "after" */
+	uint64_t dropped;
+	struct rdc_history_write *wr;
+	size_t nw, wcap, wopen;
+	uint64_t wdropped;
+};
+
+static uint32_t px_get(const uint8_t *vram, const struct hist_rec *r)
+{
+	const uint8_t *p = vram + r->addr;
+
+	switch (r->bpp) {
+	case 1:
+	case 2:
+	case 4:
+		return (uint32_t)(*p >> r->shift) & ((1u << r->bpp) - 1);
+	case 8:
+		return p[0];
+	case 16:
+		return (uint32_t)p[0] | (uint32_t)p[1] << 8;
+	case 24:
+		return (uint32_t)p[0] | (uint32_t)p[1] << 8 |
+		       (uint32_t)p[2] << 16;
+	default:
+		return (uint32_t)p[0] | (uint32_t)p[1] << 8 |
+		       (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+	}
+}
+
+/* FNV-1a over the bytes of a write access, as they are now. */
+static uint64_t bytes_hash(const uint8_t *vram,
+			   const struct rdc_history_write *w)
+{
+	uint64_t h = 0xcbf29ce484222325ull;
+
+	for (uint32_t i = 0; i < w->count; i++) {
+		const uint8_t *p = vram + w->addr + (uint64_t)i * w->stride;
+
+		for (uint32_t j = 0; j < w->len; j++) {
+			h ^= p[j];
+			h *= 0x100000001b3ull;
+		}
+	}
+	return h;
+}
+
+/* The writes of the last access have landed: complete what they opened. */
+static void hist_settle(struct rdc_history *h)
+{
+	const uint8_t *vram = h->hw->vram;
+	size_t i, k = h->open;
+
+	for (i = h->open; i < h->n; i++) {
+		struct hist_rec *r = &h->rec[i];
+
+		r->e.after = px_get(vram, r);
+		/*
+		 * A sub-byte pixel that shares a run's edge byte may not have
+		 * been written at all (the DP changed its neighbours' bits):
+		 * only a change says it was.
+		 */
+		if (r->partial && r->e.after == r->e.before)
+			continue;
+		if (k != i)
+			h->rec[k] = *r;
+		k++;
+	}
+	h->n = k;
+	h->open = k;
+	for (i = h->wopen; i < h->nw; i++)
+		h->wr[i].hash = bytes_hash(vram, &h->wr[i]);
+	h->wopen = h->nw;
+}
+
+/* What the DP is doing now: the command, its source and state. */
+static void hist_context(const struct rdc_history *h,
+			 struct rdc_history_entry *e, uint64_t time,
+			 unsigned int who)
+{
+	const struct rdc_hw *hw = h->hw;
+	const struct rdc_dp *dp = hw->dp;
+
+	e->size = sizeof(*e);
+	e->cycle = time;
+	e->cmd_index = hw->perf.cmds;
+	e->line = h->dev->src_line;
+	e->frame = hw->crtc.frame_count;
+	if (who == RDC_VRAM_BY_HOST || !dp) {
+		e->opcode = RDC_HISTORY_OP_HOST;
+		e->source = RDC_HISTORY_SRC_HOST;
+		return;
+	}
+	e->opcode = RDC_CMD_OP(dp->cmd[0]);
+	e->rop = dp->st.rop;
+	e->alpha = dp->st.alpha;
+	e->colorkey = dp->st.colorkey;
+	e->colorkey_on = dp->st.colorkey_on;
+	e->pattern = dp->st.pat_mode;
+	e->fg = dp->st.fg;
+	e->bg = dp->st.bg;
+	e->depth = RDC_MIN(dp->list_depth, (uint32_t)RDC_CALL_DEPTH);
+	if (e->depth) {
+		e->source = RDC_HISTORY_SRC_LIST;
+		e->cmd_addr = dp->list_pc - dp->cmd_len * 4u;
+		for (uint32_t d = 0; d + 1 < e->depth; d++)
+			e->calls[d] = dp->list_ret[d];
+	} else {
+		e->source = dp->src == RDC_SRC_RING ? RDC_HISTORY_SRC_RING :
+						      RDC_HISTORY_SRC_FIFO;
+	}
+}
+
+static struct hist_rec *hist_add(struct rdc_history *h)
+{
+	if (h->n >= h->max) {
+		h->dropped++;
+		return NULL;
+	}
+	if (h->n == h->cap) {
+		size_t cap = h->cap ? h->cap * 2 : 256;
+		struct hist_rec *r;
+
+		if (cap > h->max)
+			cap = h->max;
+		r = realloc(h->rec, cap * sizeof(*r));
+		if (!r) {
+			h->dropped++;
+			return NULL;
+		}
+		h->rec = r;
+		h->cap = cap;
+	}
+	return &h->rec[h->n++];
+}
+
+/* One run [a, a + len) against the watched rectangle of the screen. */
+static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
+		     uint64_t a, uint64_t len)
+{
+	const struct rdc_crtc *c = &h->hw->crtc;
+	uint64_t base = c->cur_base, st = c->cur_stride, end = a + len;
+	uint32_t bpp = rdc_format_bpp(c->cur_format);
+	uint32_t x1 = RDC_MIN(h->x1, c->cur.h_display);
+	uint32_t y1 = RDC_MIN(h->y1, c->cur.v_display);
+	uint64_t y, ylo, yhi;
+
+	if (!bpp || !st || end <= base || h->x0 >= x1 || h->y0 >= y1)
+		return;
+	ylo = a > base ? (a - base) / st : 0;
+	yhi = (end - 1 - base) / st;
+	if (ylo < h->y0)
+		ylo = h->y0;
+	if (yhi >= y1)
+		yhi = y1 - 1;
+	for (y = ylo; y <= yhi; y++) {
+		uint64_t row = base + y * st;
+		uint64_t lo = a > row ? a - row : 0;
+		uint64_t hi = RDC_MIN(end - row, st);
+		uint64_t xa = lo * 8 / bpp, xb = (hi * 8 + bpp - 1) / bpp;
+		uint64_t x;
+
+		if (hi <= lo)
+			continue;
+		if (xa < h->x0)
+			xa = h->x0;
+		if (xb > x1)
+			xb = x1;
+		for (x = xa; x < xb; x++) {
+			uint64_t bit = x * bpp;
+			uint64_t at = row + bit / 8;
+			struct hist_rec *r;
+
+			if (at + (bpp + 7) / 8 > h->hw->vram_size)
+				break;
+			r = hist_add(h);
+			if (!r)
+				return;
+			r->e = *ctx;
+			r->e.x = (uint32_t)x;
+			r->e.y = (uint32_t)y;
+			r->e.format = c->cur_format;
+			r->addr = (uint32_t)at;
+			r->bpp = (uint8_t)bpp;
+			r->shift = bpp < 8 ? (uint8_t)(8 - bpp - bit % 8) : 0;
+			r->partial = bpp < 8 && (at == a || at == end - 1);
+			r->e.fetched = !c->running	? -1 :
+				       c->next_line > y ? 1 :
+							  0;
+			r->e.before = px_get(h->hw->vram, r);
+			r->e.after = r->e.before;
+		}
+	}
+}
+
+static void hist_hook(void *ctx, uint64_t time, uint32_t addr, uint32_t len,
+		      uint32_t count, uint32_t stride, unsigned int who)
+{
+	struct rdc_history *h = ctx;
+	const struct rdc_crtc *c = &h->hw->crtc;
+	struct rdc_history_entry e = { 0 };
+	uint64_t last, lo, hi;
+	uint32_t bpp = rdc_format_bpp(c->cur_format);
+
+	hist_settle(h);
+	if (!count || !len)
+		return;
+	if (h->flags & RDC_HISTORY_WRITES) {
+		if (h->nw == h->wcap && h->nw < WRITES_MAX) {
+			size_t cap = h->wcap ? h->wcap * 2 : 256;
+			void *p = realloc(h->wr, cap * sizeof(*h->wr));
+
+			if (p) {
+				h->wr = p;
+				h->wcap = cap;
+			}
+		}
+		if (h->nw < h->wcap) {
+			struct rdc_history_write *w = &h->wr[h->nw++];
+
+			memset(w, 0, sizeof(*w));
+			hist_context(h, &e, time, who);
+			w->size = sizeof(*w);
+			w->entry = e;
+			w->addr = addr;
+			w->len = len;
+			w->count = count;
+			w->stride = stride;
+		} else {
+			h->wdropped++;
+		}
+	}
+	if (h->x0 >= h->x1 || h->y0 >= h->y1 || !bpp)
+		return;
+	/* the access's extent against the watched bytes' */
+	last = (uint64_t)addr + (uint64_t)(count - 1) * stride + len;
+	lo = c->cur_base + (uint64_t)h->y0 * c->cur_stride +
+	     (uint64_t)h->x0 * bpp / 8;
+	hi = c->cur_base +
+	     (uint64_t)(RDC_MIN(h->y1, c->cur.v_display) - 1) * c->cur_stride +
+	     ((uint64_t)RDC_MIN(h->x1, c->cur.h_display) * bpp + 7) / 8;
+	if (last <= lo || addr >= hi)
+		return;
+	if (!e.size)
+		hist_context(h, &e, time, who);
+	for (uint32_t i = 0; i < count; i++) {
+		uint64_t a = addr + (uint64_t)i * stride;
+
+		if (a + len > lo && a < hi)
+			hist_run(h, &e, a, len);
+	}
+}
+
+int rdc_history_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
+		     uint32_t h, uint32_t flags, rdc_history **out)
+{
+	struct rdc_history *hi;
+	struct rdc_hw *hw;
+
+	if (!out)
+		return RDC_E_INVAL;
+	*out = NULL;
+	if (!dev || (flags & ~RDC_HISTORY_WRITES))
+		return RDC_E_INVAL;
+	hw = rdc_sim_hw(dev);
+	if (!hw)
+		return rdc_err_detail(RDC_E_NOSYS,
+				      "pixel history needs a sim: device (the "
+				      "writes are watched inside the "
+				      "simulator)");
+	if (dev->hist || hw->vram_hook)
+		return rdc_err_detail(RDC_E_BUSY,
+				      "a history is already open on this "
+				      "device");
+	hi = calloc(1, sizeof(*hi));
+	if (!hi)
+		return RDC_E_NOMEM;
+	hi->dev = dev;
+	hi->hw = hw;
+	hi->x0 = x;
+	hi->y0 = y;
+	hi->x1 = w > UINT32_MAX - x ? UINT32_MAX : x + w;
+	hi->y1 = h > UINT32_MAX - y ? UINT32_MAX : y + h;
+	hi->flags = flags;
+	hi->max = HIST_MAX_DEFAULT;
+	dev->hist = hi;
+	rdc_hw_set_vram_hook(hw, hist_hook, hi);
+	*out = hi;
+	return 0;
+}
+
+int rdc_history_set_limit(rdc_history *h, size_t max_entries)
+{
+	if (!h || !max_entries)
+		return RDC_E_INVAL;
+	h->max = max_entries;
+	return 0;
+}
+
+/* Everything written so far has landed once the chip is between calls. */
+static void hist_sync(rdc_history *h)
+{
+	if (h->hw)
+		hist_settle(h);
+}
+
+size_t rdc_history_count(rdc_history *h)
+{
+	if (!h)
+		return 0;
+	hist_sync(h);
+	return h->n;
+}
+
+uint64_t rdc_history_dropped(rdc_history *h)
+{
+	return h ? h->dropped + h->wdropped : 0;
+}
+
+int rdc_history_get_sized(rdc_history *h, size_t i, struct rdc_history_entry *e)
+{
+	size_t sz;
+
+	if (!h || !e || e->size < sizeof(uint32_t))
+		return RDC_E_INVAL;
+	hist_sync(h);
+	if (i >= h->n)
+		return RDC_E_RANGE;
+	sz = RDC_MIN((size_t)e->size, sizeof(*e));
+	memcpy((char *)e + sizeof(uint32_t),
+	       (char *)&h->rec[i].e + sizeof(uint32_t), sz - sizeof(uint32_t));
+	if (e->size > sizeof(*e))
+		memset((char *)e + sizeof(*e), 0, e->size - sizeof(*e));
+	return 0;
+}
+
+size_t rdc_history_write_count(rdc_history *h)
+{
+	if (!h)
+		return 0;
+	hist_sync(h);
+	return h->nw;
+}
+
+int rdc_history_write_get_sized(rdc_history *h, size_t i,
+				struct rdc_history_write *w)
+{
+	size_t sz;
+
+	if (!h || !w || w->size < sizeof(uint32_t))
+		return RDC_E_INVAL;
+	hist_sync(h);
+	if (i >= h->nw)
+		return RDC_E_RANGE;
+	sz = RDC_MIN((size_t)w->size, sizeof(*w));
+	memcpy((char *)w + sizeof(uint32_t),
+	       (char *)&h->wr[i] + sizeof(uint32_t), sz - sizeof(uint32_t));
+	if (w->size > sizeof(*w))
+		memset((char *)w + sizeof(*w), 0, w->size - sizeof(*w));
+	return 0;
+}
+
+/* The device goes away first (rdc_close): keep what was recorded. */
+void rdc_history_detach(rdc_dev *dev)
+{
+	struct rdc_history *h = dev ? dev->hist : NULL;
+
+	if (!h)
+		return;
+	hist_settle(h);
+	rdc_hw_set_vram_hook(h->hw, NULL, NULL);
+	h->hw = NULL;
+	h->dev = NULL;
+	dev->hist = NULL;
+}
+
+void rdc_history_close(rdc_history *h)
+{
+	if (!h)
+		return;
+	if (h->dev)
+		rdc_history_detach(h->dev);
+	free(h->rec);
+	free(h->wr);
+	free(h);
+}

@@ -1,0 +1,591 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Why is this pixel that colour: `rdcctl run FILE --history SPEC`,
+ * `rdcctl why X Y FILE` and where two runs part, `rdcctl diff A B`
+ * (docs/history.md).
+ */
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "history.h"
+#include "rdc.h"
+#include "report.h"
+
+#define DEFAULT_URI "sim:"
+
+const char rdcctl_history_usage[] =
+	"  run FILE.rdl --history SPEC   every VRAM write to the pixels of\n"
+	"      [--json] [--limit N]      SPEC (X,Y or X,Y,W,H or screen):\n"
+	"                                command, line, cycle, state, value\n"
+	"                                before and after (sim: only)\n"
+	"  why X Y FILE.rdl [--json]     the same for the pixel X,Y\n"
+	"  diff A.rdl B.rdl [-o D.png]   run both and report the first\n"
+	"                                command and cycle where VRAM\n"
+	"                                differs, the region of the frames\n"
+	"                                that differs, and a PNG of it\n";
+
+static const char *const rop_names[16] = {
+	"clear",	 "and",		"and-reverse", "copy",
+	"and-inverted",	 "noop",	"xor",	       "or",
+	"nor",		 "equiv",	"invert",      "or-reverse",
+	"copy-inverted", "or-inverted", "nand",	       "set",
+};
+
+static const char *const pat_names[4] = { "solid", "mono", "mono-transparent",
+					  "color" };
+
+static const char *const src_names[4] = { "fifo", "ring", "list", "host" };
+
+static const char *op_str(uint32_t op, char *buf, size_t cap)
+{
+	const char *n = op == RDC_HISTORY_OP_HOST ? "host-write" :
+						    rdc_op_name(op);
+
+	if (n)
+		return n;
+	snprintf(buf, cap, "op-0x%02x", op);
+	return buf;
+}
+
+struct hopts {
+	const char *uri;
+	const char *script;
+	const char *script_b;
+	const char *png;
+	uint32_t x, y, w, h;
+	size_t limit;
+	int json;
+};
+
+/* "X,Y", "X,Y,W,H" or "screen". */
+static int parse_spec(const char *s, struct hopts *o)
+{
+	unsigned long v[4];
+	int n;
+	char tail;
+
+	if (!strcmp(s, "screen")) {
+		o->x = o->y = 0;
+		o->w = o->h = RDC_HISTORY_SCREEN;
+		return 0;
+	}
+	n = sscanf(s, "%lu,%lu,%lu,%lu%c", &v[0], &v[1], &v[2], &v[3], &tail);
+	if (n == 2) {
+		v[2] = v[3] = 1;
+	} else if (n != 4) {
+		return -1;
+	}
+	for (int i = 0; i < 4; i++)
+		if (v[i] > 65535)
+			return -1;
+	if (!v[2] || !v[3])
+		return -1;
+	o->x = (uint32_t)v[0];
+	o->y = (uint32_t)v[1];
+	o->w = (uint32_t)v[2];
+	o->h = (uint32_t)v[3];
+	return 0;
+}
+
+static void print_entry(const struct hopts *o, size_t i,
+			const struct rdc_history_entry *e)
+{
+	char ob[16];
+
+	printf("(%u,%u) #%zu cycle %" PRIu64 " frame %" PRIu64 ": ", e->x, e->y,
+	       i + 1, e->cycle, e->frame);
+	if (e->line)
+		printf("%s:%u ", o->script, e->line);
+	printf("%s", op_str(e->opcode, ob, sizeof(ob)));
+	if (e->source == RDC_HISTORY_SRC_HOST) {
+		printf(" (host aperture)\n");
+	} else {
+		printf(" (command %u, %s", e->cmd_index,
+		       src_names[e->source & 3]);
+		if (e->source == RDC_HISTORY_SRC_LIST) {
+			printf(" at 0x%08x, depth %u", e->cmd_addr, e->depth);
+			for (uint32_t d = e->depth - 1; d-- > 0;)
+				printf(", called from 0x%08x", e->calls[d]);
+		}
+		printf(")\n    rop %s alpha %u colorkey %s",
+		       rop_names[e->rop & 15], e->alpha,
+		       e->colorkey_on ? "on" : "off");
+		if (e->colorkey_on)
+			printf(" 0x%08x", e->colorkey);
+		printf(" pattern %s fg 0x%08x bg 0x%08x\n",
+		       pat_names[e->pattern & 3], e->fg, e->bg);
+	}
+	printf("    0x%08x -> 0x%08x%s; ", e->before, e->after,
+	       e->before == e->after ? " (unchanged)" : "");
+	if (e->fetched > 0)
+		printf("line %u already scanned: frame %" PRIu64
+		       " shows the old value, frame %" PRIu64 " the new\n",
+		       e->y, e->frame, e->frame + 1);
+	else if (!e->fetched)
+		printf("line %u not yet scanned: frame %" PRIu64
+		       " shows the new value\n",
+		       e->y, e->frame);
+	else
+		printf("scanout stopped\n");
+}
+
+static void json_entry(const struct hopts *o, const struct rdc_history_entry *e,
+		       int last)
+{
+	char ob[16];
+
+	printf("  {\"x\": %u, \"y\": %u, \"cycle\": %" PRIu64
+	       ", \"frame\": %" PRIu64 ", \"fetched\": %d, "
+	       "\"opcode\": %u, \"op\": \"%s\", \"command\": %u, "
+	       "\"source\": \"%s\", ",
+	       e->x, e->y, e->cycle, e->frame, e->fetched, e->opcode,
+	       op_str(e->opcode, ob, sizeof(ob)), e->cmd_index,
+	       src_names[e->source & 3]);
+	if (e->line) {
+		printf("\"file\": \"");
+		for (const char *p = o->script; *p; p++) {
+			if (*p == '"' || *p == '\\')
+				putchar('\\');
+			if ((unsigned char)*p < 0x20)
+				printf("\\u%04x", *p);
+			else
+				putchar(*p);
+		}
+		printf("\", \"line\": %u, ", e->line);
+	}
+	if (e->source == RDC_HISTORY_SRC_LIST) {
+		printf("\"cmd_addr\": %u, \"calls\": [", e->cmd_addr);
+		for (uint32_t d = 0; d + 1 < e->depth; d++)
+			printf("%s%u", d ? ", " : "", e->calls[d]);
+		printf("], ");
+	}
+	printf("\"rop\": %u, \"alpha\": %u, \"colorkey_on\": %u, "
+	       "\"colorkey\": %u, \"pattern\": %u, \"fg\": %u, \"bg\": %u, "
+	       "\"format\": %u, \"before\": %u, \"after\": %u}%s\n",
+	       e->rop, e->alpha, e->colorkey_on, e->colorkey, e->pattern, e->fg,
+	       e->bg, e->format, e->before, e->after, last ? "" : ",");
+}
+
+static int run_file(rdc_dev *dev, const char *path)
+{
+	struct rdc_script_result *res = calloc(1, sizeof(*res));
+	int ret;
+
+	if (!res)
+		return RDC_E_NOMEM;
+	ret = rdc_script_run_file(dev, path, res);
+	if (ret && res->error_line)
+		fprintf(stderr, "%s:%u: error: %s\n", path, res->error_line,
+			res->error_msg);
+	else if (ret)
+		rdcctl_error(path, ret);
+	if (!ret)
+		ret = rdc_script_frame_wait(dev, res);
+	free(res);
+	return ret;
+}
+
+static void save_frame(rdc_dev *dev, const char *path)
+{
+	uint32_t *pix = NULL, w = 0, h = 0;
+	int ret = rdc_frame_grab(dev, NULL, 0, &w, &h);
+
+	if (ret == RDC_E_RANGE) {
+		pix = malloc(((size_t)w * h + 1) * sizeof(*pix));
+		ret = pix ? rdc_frame_grab(dev, pix, (size_t)w * h, &w, &h) :
+			    RDC_E_NOMEM;
+	}
+	if (!ret)
+		ret = rdc_png_write(path, pix, w, h, w);
+	if (ret)
+		rdcctl_error(path, ret);
+	free(pix);
+}
+
+static int cmd_history(const struct hopts *o)
+{
+	rdc_history *h = NULL;
+	rdc_dev *dev;
+	size_t n;
+	int ret;
+
+	ret = rdc_open(o->uri, &dev);
+	if (ret) {
+		rdcctl_open_error(o->uri, ret);
+		return 1;
+	}
+	ret = rdc_history_open(dev, o->x, o->y, o->w, o->h, 0, &h);
+	if (ret) {
+		rdcctl_error("history", ret);
+		rdc_close(dev);
+		return 1;
+	}
+	if (o->limit)
+		rdc_history_set_limit(h, o->limit);
+	ret = run_file(dev, o->script);
+	if (ret && ret != RDC_E_DEVICE && ret != RDC_E_HALTED) {
+		rdc_history_close(h);
+		rdc_close(dev);
+		return 1;
+	}
+	if (o->png)
+		save_frame(dev, o->png);
+	n = rdc_history_count(h);
+	if (o->json)
+		printf("{\"entries\": [\n");
+	for (size_t i = 0; i < n; i++) {
+		struct rdc_history_entry e;
+
+		if (rdc_history_get(h, i, &e))
+			break;
+		if (o->json)
+			json_entry(o, &e, i + 1 == n);
+		else
+			print_entry(o, i, &e);
+	}
+	if (o->json)
+		printf("], \"dropped\": %" PRIu64 "}\n",
+		       rdc_history_dropped(h));
+	else if (!n)
+		printf("no write touched %u,%u (%ux%u)\n", o->x, o->y,
+		       o->w == RDC_HISTORY_SCREEN ? 0 : o->w,
+		       o->h == RDC_HISTORY_SCREEN ? 0 : o->h);
+	if (!o->json && rdc_history_dropped(h))
+		printf("%" PRIu64 " more entries not kept (--limit)\n",
+		       rdc_history_dropped(h));
+	rdc_history_close(h);
+	rdc_close(dev);
+	return ret ? 1 : 0;
+}
+
+/* ---- diff ---------------------------------------------------------------- */
+
+struct side {
+	const char *path;
+	struct rdc_history_write *w;
+	size_t n;
+	uint32_t *pix, width, height;
+	uint64_t time;
+	int ret;
+};
+
+static int side_run(const char *uri, struct side *s)
+{
+	rdc_history *h = NULL;
+	rdc_dev *dev;
+	int ret;
+
+	ret = rdc_open(uri, &dev);
+	if (ret) {
+		rdcctl_open_error(uri, ret);
+		return ret;
+	}
+	ret = rdc_history_open(dev, 0, 0, 0, 0, RDC_HISTORY_WRITES, &h);
+	if (ret) {
+		rdcctl_error("diff", ret);
+		rdc_close(dev);
+		return ret;
+	}
+	s->ret = run_file(dev, s->path);
+	if (s->ret && s->ret != RDC_E_DEVICE && s->ret != RDC_E_HALTED) {
+		ret = s->ret;
+		goto out;
+	}
+	s->n = rdc_history_write_count(h);
+	s->w = calloc(s->n + 1, sizeof(*s->w));
+	if (!s->w) {
+		ret = RDC_E_NOMEM;
+		goto out;
+	}
+	for (size_t i = 0; i < s->n; i++)
+		rdc_history_write_get(h, i, &s->w[i]);
+	rdc_sim_time(dev, &s->time);
+	ret = rdc_frame_grab(dev, NULL, 0, &s->width, &s->height);
+	if (ret == RDC_E_RANGE) {
+		s->pix = malloc(((size_t)s->width * s->height + 1) *
+				sizeof(*s->pix));
+		ret = s->pix ? rdc_frame_grab(dev, s->pix,
+					      (size_t)s->width * s->height,
+					      &s->width, &s->height) :
+			       RDC_E_NOMEM;
+	} else if (ret == 1) {
+		ret = 0; /* no frame */
+	}
+	if (ret)
+		rdcctl_error("frame", ret);
+out:
+	rdc_history_close(h);
+	rdc_close(dev);
+	return ret;
+}
+
+static void diff_write(const char *tag, const struct side *s, size_t i)
+{
+	const struct rdc_history_write *w = &s->w[i];
+	const struct rdc_history_entry *e = &w->entry;
+	char ob[16];
+
+	printf("  %s: ", tag);
+	if (i >= s->n) {
+		printf("no such write (%zu writes in all)\n", s->n);
+		return;
+	}
+	printf("cycle %" PRIu64 " ", e->cycle);
+	if (e->line)
+		printf("%s:%u ", s->path, e->line);
+	printf("%s", op_str(e->opcode, ob, sizeof(ob)));
+	if (e->source != RDC_HISTORY_SRC_HOST)
+		printf(" (command %u, %s", e->cmd_index,
+		       src_names[e->source & 3]);
+	if (e->source == RDC_HISTORY_SRC_LIST) {
+		printf(" at 0x%08x", e->cmd_addr);
+		for (uint32_t d = e->depth - 1; d-- > 0;)
+			printf(", called from 0x%08x", e->calls[d]);
+	}
+	if (e->source != RDC_HISTORY_SRC_HOST)
+		printf(")");
+	printf(" VRAM 0x%08x", w->addr);
+	if (w->count > 1)
+		printf(" %u x %u bytes, stride %u\n", w->count, w->len,
+		       w->stride);
+	else
+		printf(" %u bytes\n", w->len);
+}
+
+static int same_write(const struct rdc_history_write *a,
+		      const struct rdc_history_write *b)
+{
+	return a->addr == b->addr && a->len == b->len && a->count == b->count &&
+	       a->stride == b->stride && a->hash == b->hash;
+}
+
+static int cmd_diff(const struct hopts *o)
+{
+	struct side a = { .path = o->script }, b = { .path = o->script_b };
+	size_t i, n, timing = SIZE_MAX;
+	uint32_t w, h, x0 = UINT32_MAX, y0 = UINT32_MAX, x1 = 0, y1 = 0;
+	uint64_t ndiff = 0;
+	uint32_t *out = NULL;
+	int ret, differs = 0;
+
+	ret = side_run(o->uri, &a);
+	if (!ret)
+		ret = side_run(o->uri, &b);
+	if (ret)
+		goto out;
+	n = a.n < b.n ? a.n : b.n;
+	for (i = 0; i < n; i++) {
+		if (!same_write(&a.w[i], &b.w[i]))
+			break;
+		if (timing == SIZE_MAX &&
+		    a.w[i].entry.cycle != b.w[i].entry.cycle)
+			timing = i;
+	}
+	if (i < n || a.n != b.n) {
+		differs = 1;
+		printf("first divergence: VRAM write %zu\n", i + 1);
+		diff_write("A", &a, i);
+		diff_write("B", &b, i);
+	} else {
+		printf("VRAM writes: the same %zu writes\n", a.n);
+	}
+	if (timing != SIZE_MAX && timing < i)
+		printf("timing parts first at write %zu: cycle %" PRIu64
+		       " in A, %" PRIu64 " in B\n",
+		       timing + 1, a.w[timing].entry.cycle,
+		       b.w[timing].entry.cycle);
+	printf("total cycles: A %" PRIu64 ", B %" PRIu64 "\n", a.time, b.time);
+	w = a.width > b.width ? a.width : b.width;
+	h = a.height > b.height ? a.height : b.height;
+	if (a.width != b.width || a.height != b.height) {
+		differs = 1;
+		printf("frame: %ux%u in A, %ux%u in B\n", a.width, a.height,
+		       b.width, b.height);
+	}
+	if (w && h) {
+		out = calloc((size_t)w * h, sizeof(*out));
+		if (!out) {
+			ret = RDC_E_NOMEM;
+			goto out;
+		}
+	}
+	for (uint32_t y = 0; out && y < h; y++)
+		for (uint32_t x = 0; x < w; x++) {
+			int ina = a.pix && x < a.width && y < a.height;
+			int inb = b.pix && x < b.width && y < b.height;
+			uint32_t pa = ina ? a.pix[(size_t)y * a.width + x] : 0;
+			uint32_t pb = inb ? b.pix[(size_t)y * b.width + x] : 0;
+
+			if (ina == inb && (pa & 0xffffff) == (pb & 0xffffff)) {
+				/* the same: A's pixel, a quarter as bright */
+				out[(size_t)y * w + x] = (pa >> 2) & 0x3f3f3f;
+				continue;
+			}
+			out[(size_t)y * w + x] = 0xff00ff;
+			ndiff++;
+			x0 = x < x0 ? x : x0;
+			y0 = y < y0 ? y : y0;
+			x1 = x > x1 ? x : x1;
+			y1 = y > y1 ? y : y1;
+		}
+	if (ndiff) {
+		differs = 1;
+		printf("frame: %" PRIu64 " pixels differ in %u,%u .. %u,%u "
+		       "(%ux%u)\n",
+		       ndiff, x0, y0, x1, y1, x1 - x0 + 1, y1 - y0 + 1);
+	} else if (w && h) {
+		printf("frame: the same\n");
+	}
+	if (o->png && out) {
+		ret = rdc_png_write(o->png, out, w, h, w);
+		if (ret)
+			rdcctl_error(o->png, ret);
+		else
+			printf("difference written to %s (magenta: differs)\n",
+			       o->png);
+	}
+out:
+	free(out);
+	free(a.w);
+	free(b.w);
+	free(a.pix);
+	free(b.pix);
+	if (ret)
+		return 2;
+	return differs;
+}
+
+static int need(int argc, char **argv, int i)
+{
+	if (i + 1 < argc)
+		return 0;
+	fprintf(stderr, "rdcctl: %s needs a value\n", argv[i]);
+	return -1;
+}
+
+int rdcctl_history_main(int argc, char **argv)
+{
+	struct hopts o = { .uri = DEFAULT_URI };
+	const char *pos[4];
+	int npos = 0, history = 0, at = -1;
+	const char *cmd = NULL;
+
+	/* the command is the first word that is not an option or its value */
+	for (int i = 1; i < argc; i++) {
+		if (!strcmp(argv[i], "--uri") ||
+		    !strcmp(argv[i], "--connect") || !strcmp(argv[i], "-o") ||
+		    !strcmp(argv[i], "--vcd") ||
+		    !strcmp(argv[i], "--history") ||
+		    !strcmp(argv[i], "--limit")) {
+			i++;
+		} else if (argv[i][0] != '-' || !argv[i][1]) {
+			cmd = argv[i];
+			at = i;
+			break;
+		}
+	}
+	if (!cmd)
+		return -1;
+	for (int i = 1; i < argc; i++)
+		if (!strcmp(argv[i], "--history") ||
+		    !strncmp(argv[i], "--history=", 10))
+			history = 1;
+	if (strcmp(cmd, "why") && strcmp(cmd, "diff") &&
+	    !(history && !strcmp(cmd, "run")))
+		return -1;
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i];
+
+		if (i == at)
+			continue;
+		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+			printf("usage: rdcctl [--connect URI] COMMAND ...\n%s",
+			       rdcctl_history_usage);
+			return 0;
+		} else if (!strcmp(a, "--uri") || !strcmp(a, "--connect")) {
+			if (need(argc, argv, i))
+				return 2;
+			o.uri = argv[++i];
+		} else if (!strncmp(a, "--uri=", 6) ||
+			   !strncmp(a, "--connect=", 10)) {
+			o.uri = strchr(a, '=') + 1;
+		} else if (!strcmp(a, "-o")) {
+			if (need(argc, argv, i))
+				return 2;
+			o.png = argv[++i];
+		} else if (!strcmp(a, "--json")) {
+			o.json = 1;
+		} else if (!strcmp(a, "--limit")) {
+			char *end;
+
+			if (need(argc, argv, i))
+				return 2;
+			o.limit = strtoul(argv[++i], &end, 10);
+			if (*end || !o.limit) {
+				fprintf(stderr, "rdcctl: bad --limit '%s'\n",
+					argv[i]);
+				return 2;
+			}
+		} else if (!strcmp(a, "--history") ||
+			   !strncmp(a, "--history=", 10)) {
+			const char *spec = a[9] == '=' ? a + 10 : NULL;
+
+			if (!spec) {
+				if (need(argc, argv, i))
+					return 2;
+				spec = argv[++i];
+			}
+			if (parse_spec(spec, &o)) {
+				fprintf(stderr,
+					"rdcctl: --history wants X,Y, X,Y,W,H "
+					"or screen, not '%s'\n",
+					spec);
+				return 2;
+			}
+		} else if (a[0] == '-' && a[1]) {
+			fprintf(stderr, "rdcctl: %s: unknown option '%s'\n",
+				cmd, a);
+			return 2;
+		} else if (npos < 4) {
+			pos[npos++] = a;
+		} else {
+			fprintf(stderr, "rdcctl: unexpected argument '%s'\n",
+				a);
+			return 2;
+		}
+	}
+	if (!strcmp(cmd, "run")) {
+		if (npos != 1) {
+			fprintf(stderr, "rdcctl: run --history needs one "
+					"script\n");
+			return 2;
+		}
+		o.script = pos[0];
+		return cmd_history(&o);
+	}
+	if (!strcmp(cmd, "why")) {
+		char spec[64];
+
+		if (npos != 3) {
+			fprintf(stderr, "rdcctl: usage: why X Y FILE.rdl\n");
+			return 2;
+		}
+		snprintf(spec, sizeof(spec), "%s,%s", pos[0], pos[1]);
+		if (parse_spec(spec, &o)) {
+			fprintf(stderr, "rdcctl: why: bad pixel %s %s\n",
+				pos[0], pos[1]);
+			return 2;
+		}
+		o.script = pos[2];
+		return cmd_history(&o);
+	}
+	if (npos != 2) {
+		fprintf(stderr, "rdcctl: usage: diff A.rdl B.rdl [-o D.png]\n");
+		return 2;
+	}
+	o.script = pos[0];
+	o.script_b = pos[1];
+	return cmd_diff(&o);
+}
