@@ -625,12 +625,206 @@ static void test_convolve_errors(void **state)
 	expect_conv(t, 0, 7, ok, RDC_ERR_ARG);
 }
 
+/* The cycles of the command just pushed (it must succeed). */
+static uint64_t cmd_cycles(struct tdp *t)
+{
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	return rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES);
+}
+
+/* fetch (header and args through the FIFO) and decode */
+static uint64_t fetch_cost(uint32_t args)
+{
+	return (1 + args) * RDC_T_FIFO_WORD + RDC_T_DECODE;
+}
+
+/* rows [y0, y0 + h) of s, columns [x0, x0 + w), as spans of `kind` */
+static uint64_t rows_cost(uint32_t *open, const struct rdc_surface *s,
+			  uint32_t x0, uint32_t y0, uint32_t w, uint32_t h,
+			  int read_too)
+{
+	uint64_t c = 0;
+	uint32_t bpp = tdp_bpp(s->format);
+
+	for (uint32_t y = y0; y < y0 + h; y++) {
+		uint64_t a = s->base + (uint64_t)y * s->stride + x0 * bpp / 8;
+
+		if (read_too)
+			c += tdp_bus_span(open, a, w * bpp / 8, TDP_BUS_READ);
+		c += tdp_bus_span(open, a, w * bpp / 8, TDP_BUS_WRITE);
+	}
+	return c;
+}
+
+/*
+ * docs/hardware.md's image formulas, span by span with the bus model of
+ * test_dp_common.h (no scanout here): rectangles of whole bytes inside
+ * the surface, the ROP a plain copy, so no write is read-modify-written
+ * but at unaligned edges (and HISTOGRAM's accumulating table).
+ */
+static void test_cycles(void **state)
+{
+	struct tdp *t = *state;
+	struct rdc_surface s = surf(RDC_FMT_XRGB8888, 0);
+	struct rdc_surface d = surf(RDC_FMT_XRGB8888, 0x100000);
+	const uint32_t x0 = 3, y0 = 5, w = 41, h = 17;
+	uint32_t open, y, accum;
+	uint64_t want;
+
+	fill_random(t, &s, 3, 1);
+	tdp_set_surface(t, RDC_OP_SET_SRC, &s);
+	tdp_set_surface(t, RDC_OP_SET_DST, &s);
+	tdp_drain(t);
+
+	/* HISTOGRAM: the SRC rows, then the table written (RMW to add) */
+	for (accum = 0; accum < 2; accum++) {
+		open = t->hw.bus.open_row;
+		want = fetch_cost(3);
+		for (y = y0; y < y0 + h; y++)
+			want += tdp_bus_span(&open,
+					     (uint64_t)y * s.stride + x0 * 4,
+					     w * 4, TDP_BUS_READ);
+		want += tdp_bus_span(&open, TABLE, 1024,
+				     accum ? TDP_BUS_RMW : TDP_BUS_WRITE);
+		tdp_push(t, RDC_CMD(RDC_OP_HISTOGRAM,
+				    accum ? RDC_HIST_ACCUM : 0, 3));
+		tdp_push(t, RDC_XY(x0, y0));
+		tdp_push(t, RDC_WH(w, h));
+		tdp_push(t, TABLE);
+		assert_int_equal(cmd_cycles(t), want);
+	}
+
+	/* MAP_BUILD: the histogram read (not for STRETCH), the map written */
+	open = t->hw.bus.open_row;
+	want = fetch_cost(3) + tdp_bus_span(&open, TABLE, 1024, TDP_BUS_READ) +
+	       tdp_bus_span(&open, MAP, 256, TDP_BUS_WRITE);
+	build(t, RDC_MAP_EQUALIZE, 0);
+	assert_int_equal(cmd_cycles(t), want);
+	open = t->hw.bus.open_row;
+	want = fetch_cost(3) + tdp_bus_span(&open, MAP, 256, TDP_BUS_WRITE);
+	build(t, RDC_MAP_STRETCH, 20 | 200 << 8);
+	assert_int_equal(cmd_cycles(t), want);
+
+	/* MAP_APPLY: the map, then each row read and written */
+	open = t->hw.bus.open_row;
+	want = fetch_cost(3) + tdp_bus_span(&open, MAP, 256, TDP_BUS_READ);
+	want += rows_cost(&open, &s, x0, y0, w, h, 1);
+	TDP_CMD(t, RDC_OP_MAP_APPLY, RDC_XY(x0, y0), RDC_WH(w, h), MAP);
+	assert_int_equal(cmd_cycles(t), want);
+
+	/* MAP_CLUT: the map */
+	open = t->hw.bus.open_row;
+	want = fetch_cost(1) + tdp_bus_span(&open, MAP, 256, TDP_BUS_READ);
+	TDP_CMD(t, RDC_OP_MAP_CLUT, MAP);
+	assert_int_equal(cmd_cycles(t), want);
+
+	/* THRESHOLD: each row read and written */
+	open = t->hw.bus.open_row;
+	want = fetch_cost(3) + rows_cost(&open, &s, x0, y0, w, h, 1);
+	TDP_CMD(t, RDC_OP_THRESHOLD, RDC_XY(x0, y0), RDC_WH(w, h), 128);
+	assert_int_equal(cmd_cycles(t), want);
+
+	/*
+	 * CONVOLVE into another surface, top down: the SRC rows each read
+	 * once when first needed (columns x0 - 1 .. x0 + w, the one above
+	 * the first row and below the last included), each DST row written
+	 * after the three it needs; then a rectangle at SRC's top-left
+	 * corner, whose missing row and column above and left are clamped.
+	 */
+	tdp_set_surface(t, RDC_OP_SET_DST, &d);
+	tdp_drain(t);
+	for (int corner = 0; corner < 2; corner++) {
+		uint32_t sx = corner ? 0 : x0, sy = corner ? 0 : y0;
+		uint32_t ca = sx ? sx - 1 : 0, cw = sx + w + 1 - ca;
+		int32_t next = sy ? (int32_t)sy - 1 : 0;
+
+		open = t->hw.bus.open_row;
+		want = fetch_cost(7);
+		for (y = 0; y < h; y++) {
+			/* SRC rows up to the one below this row */
+			for (; next <= (int32_t)(sy + y + 1); next++)
+				want += tdp_bus_span(&open,
+						     (uint64_t)next * s.stride +
+							     ca * 4,
+						     cw * 4, TDP_BUS_READ);
+			want += tdp_bus_span(
+				&open,
+				d.base + (uint64_t)(y0 + y) * d.stride + x0 * 4,
+				w * 4, TDP_BUS_WRITE);
+		}
+		tdp_push(t, RDC_CMD(RDC_OP_CONVOLVE, RDC_CONV_KERNEL, 7));
+		tdp_push(t, RDC_XY(sx, sy));
+		tdp_push(t, RDC_XY(x0, y0));
+		tdp_push(t, RDC_WH(w, h));
+		tdp_push(t, 0x010201);
+		tdp_push(t, 0x020402);
+		tdp_push(t, 0x010201);
+		tdp_push(t, 16);
+		assert_int_equal(cmd_cycles(t), want);
+	}
+}
+
+/*
+ * MAP_APPLY's and THRESHOLD's bad input: flags, a map misaligned or past
+ * VRAM, a level above 255, a channel of an indexed DST; nothing written,
+ * and the next good command works.
+ */
+static void test_point_errors(void **state)
+{
+	struct tdp *t = *state;
+	struct rdc_surface s = surf(RDC_FMT_I8, 0);
+	uint32_t h0;
+
+	fill_random(t, &s, 11, 0);
+	tdp_set_surface(t, RDC_OP_SET_DST, &s);
+	tdp_drain(t);
+	h0 = tdp_fnv(2166136261u, t->vram, SURF_W * SURF_H);
+	{
+		static const struct {
+			uint32_t op, fl, a2, err;
+		} bad[] = {
+			{ RDC_OP_MAP_APPLY, 1, MAP, RDC_ERR_ARG },
+			{ RDC_OP_MAP_APPLY, 0, MAP + 1, RDC_ERR_RANGE },
+			{ RDC_OP_MAP_APPLY, 0, TDP_VRAM_SIZE - 128,
+			  RDC_ERR_RANGE },
+			{ RDC_OP_MAP_APPLY, 0, 0xfffffff0u, RDC_ERR_RANGE },
+			{ RDC_OP_THRESHOLD, 0, 256, RDC_ERR_RANGE },
+			{ RDC_OP_THRESHOLD, 0, 0xffffffffu, RDC_ERR_RANGE },
+			{ RDC_OP_THRESHOLD, RDC_CHAN_RED, 100, RDC_ERR_ARG },
+			{ RDC_OP_THRESHOLD, 0x10, 100, RDC_ERR_ARG },
+		};
+
+		for (uint32_t i = 0; i < RDC_ARRAY_SIZE(bad); i++) {
+			tdp_clear_err(t);
+			tdp_push(t, RDC_CMD(bad[i].op, bad[i].fl, 3));
+			tdp_push(t, RDC_XY(0, 0));
+			tdp_push(t, RDC_WH(SURF_W, SURF_H));
+			tdp_push(t, bad[i].a2);
+			tdp_drain(t);
+			if (tdp_err(t) != bad[i].err)
+				fail_msg("case %u: error %u, want %u", i,
+					 tdp_err(t), bad[i].err);
+			assert_int_equal(tdp_fnv(2166136261u, t->vram,
+						 SURF_W * SURF_H),
+					 h0);
+		}
+	}
+	tdp_clear_err(t);
+	TDP_CMD(t, RDC_OP_THRESHOLD, RDC_XY(0, 0), RDC_WH(SURF_W, SURF_H), 128);
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	assert_int_not_equal(tdp_fnv(2166136261u, t->vram, SURF_W * SURF_H),
+			     h0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		TDP_TEST(test_histogram), TDP_TEST(test_map_build),
 		TDP_TEST(test_point_ops), TDP_TEST(test_map_clut),
 		TDP_TEST(test_convolve),  TDP_TEST(test_convolve_errors),
+		TDP_TEST(test_cycles),	  TDP_TEST(test_point_errors),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
