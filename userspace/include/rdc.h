@@ -771,6 +771,13 @@ static inline int rdc_history_write_get(rdc_history *h, size_t i,
 		w->size = sizeof(*w);
 	return rdc_history_write_get_sized(h, i, w);
 }
+/*
+ * Where two runs part (both opened with RDC_HISTORY_WRITES): *index gets
+ * the first write access that differs in place or in the bytes written
+ * (or the first one only one of them made).  1 if they differ, 0 if
+ * they made the same writes.
+ */
+int rdc_history_first_diff(rdc_history *a, rdc_history *b, size_t *index);
 /* Stop watching and free it (also after rdc_close of its device). */
 void rdc_history_close(rdc_history *h);
 

@@ -397,6 +397,30 @@ int rdc_history_write_get_sized(rdc_history *h, size_t i,
 	return 0;
 }
 
+static bool write_same(const struct rdc_history_write *a,
+		       const struct rdc_history_write *b)
+{
+	return a->addr == b->addr && a->len == b->len && a->count == b->count &&
+	       a->stride == b->stride && a->hash == b->hash;
+}
+
+int rdc_history_first_diff(rdc_history *a, rdc_history *b, size_t *index)
+{
+	size_t i, n;
+
+	if (!a || !b || !index || !(a->flags & RDC_HISTORY_WRITES) ||
+	    !(b->flags & RDC_HISTORY_WRITES))
+		return RDC_E_INVAL;
+	hist_sync(a);
+	hist_sync(b);
+	n = RDC_MIN(a->nw, b->nw);
+	for (i = 0; i < n; i++)
+		if (!write_same(&a->wr[i], &b->wr[i]))
+			break;
+	*index = i;
+	return i < n || a->nw != b->nw ? 1 : 0;
+}
+
 /* The device goes away first (rdc_close): keep what was recorded. */
 void rdc_history_detach(rdc_dev *dev)
 {

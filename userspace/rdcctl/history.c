@@ -264,6 +264,7 @@ static int cmd_history(const struct hopts *o)
 
 struct side {
 	const char *path;
+	rdc_history *h; /* kept after its device closes */
 	struct rdc_history_write *w;
 	size_t n;
 	uint32_t *pix, width, height;
@@ -316,7 +317,7 @@ static int side_run(const char *uri, struct side *s)
 	if (ret)
 		rdcctl_error("frame", ret);
 out:
-	rdc_history_close(h);
+	s->h = h;
 	rdc_close(dev);
 	return ret;
 }
@@ -354,13 +355,6 @@ static void diff_write(const char *tag, const struct side *s, size_t i)
 		printf(" %u bytes\n", w->len);
 }
 
-static int same_write(const struct rdc_history_write *a,
-		      const struct rdc_history_write *b)
-{
-	return a->addr == b->addr && a->len == b->len && a->count == b->count &&
-	       a->stride == b->stride && a->hash == b->hash;
-}
-
 static int cmd_diff(const struct hopts *o)
 {
 	struct side a = { .path = o->script }, b = { .path = o->script_b };
@@ -375,15 +369,14 @@ static int cmd_diff(const struct hopts *o)
 		ret = side_run(o->uri, &b);
 	if (ret)
 		goto out;
+	differs = rdc_history_first_diff(a.h, b.h, &i) == 1;
 	n = a.n < b.n ? a.n : b.n;
-	for (i = 0; i < n; i++) {
-		if (!same_write(&a.w[i], &b.w[i]))
+	for (size_t k = 0; k < n && k < i; k++)
+		if (a.w[k].entry.cycle != b.w[k].entry.cycle) {
+			timing = k;
 			break;
-		if (timing == SIZE_MAX &&
-		    a.w[i].entry.cycle != b.w[i].entry.cycle)
-			timing = i;
-	}
-	if (i < n || a.n != b.n) {
+		}
+	if (differs) {
 		differs = 1;
 		printf("first divergence: VRAM write %zu\n", i + 1);
 		diff_write("A", &a, i);
@@ -452,6 +445,8 @@ out:
 	free(b.w);
 	free(a.pix);
 	free(b.pix);
+	rdc_history_close(a.h);
+	rdc_history_close(b.h);
 	if (ret)
 		return 2;
 	return differs;

@@ -1,0 +1,431 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * Pixel history (userspace/lib/history.c): small scenes whose histories
+ * are worked out by hand, the beam's side of a torn pixel checked against
+ * the frames scanout made, display-list chains, sub-byte pixels, host
+ * writes, first divergence of two long scripts, and the golden scenes
+ * with a history open giving their golden frames and cycle counts.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "dp.h"
+#include "rdc.h"
+
+#define GOLDEN_LIST "tests/golden/golden.txt"
+#define SCENE_DIR   "tests/golden/scenes"
+
+static struct rdc_script_result res;
+
+static rdc_dev *open_sim(void)
+{
+	rdc_dev *dev = NULL;
+
+	assert_int_equal(rdc_open("sim:", &dev), 0);
+	return dev;
+}
+
+static void run_text(rdc_dev *dev, const char *text)
+{
+	int ret = rdc_script_run(dev, text, strlen(text), &res);
+
+	if (ret)
+		print_error("line %u: %s\n", res.error_line, res.error_msg);
+	assert_int_equal(ret, 0);
+}
+
+static void get(rdc_history *h, size_t i, struct rdc_history_entry *e)
+{
+	assert_int_equal(rdc_history_get(h, i, e), 0);
+}
+
+/*
+ * A pixel drawn by a fill, XORed by an overlapping blit, then covered by
+ * text: three entries, in order, with their before and after values.
+ */
+static void test_history_fill_xor_text(void **state)
+{
+	static const char scene[] = "mode 640x480 xrgb8888\n" /* 1 */
+				    "fg #ff0000\n"
+				    "fill 8 8 32 32\n" /* 3 */
+				    "rop xor\n"
+				    "fg #00ffff\n"
+				    "blit 8 8 12 10 16 16\n" /* 6 */
+				    "rop copy\n"
+				    "fg #ffffff\n"
+				    "text 12 10 \"A\"\n"; /* 9 */
+	struct rdc_history_entry e[3];
+	rdc_history *h = NULL;
+	rdc_dev *dev = open_sim();
+	/* (14,12) is the glyph's column 2 of row 2; opaque text: fg or bg */
+	uint32_t glyph = rdc_font8x16['A' * 16 + 2] & (0x80 >> 2) ? 0xffffff :
+								    0;
+
+	(void)state;
+	assert_int_equal(rdc_history_open(dev, 14, 12, 1, 1, 0, &h), 0);
+	run_text(dev, scene);
+	assert_int_equal(rdc_history_count(h), 3);
+	for (size_t i = 0; i < 3; i++)
+		get(h, i, &e[i]);
+	/* the fill: black to red */
+	assert_int_equal(e[0].opcode, RDC_OP_FILL_RECT);
+	assert_int_equal(e[0].line, 3);
+	assert_int_equal(e[0].before, 0);
+	assert_int_equal(e[0].after, 0xff0000);
+	assert_int_equal(e[0].rop, RDC_ROP_COPY);
+	/* the blit reads (10,10), red, and XORs it onto red: black */
+	assert_int_equal(e[1].opcode, RDC_OP_BLIT);
+	assert_int_equal(e[1].line, 6);
+	assert_int_equal(e[1].rop, RDC_ROP_XOR);
+	assert_int_equal(e[1].before, 0xff0000);
+	assert_int_equal(e[1].after, 0);
+	/* the text */
+	assert_int_equal(e[2].opcode, RDC_OP_TEXT);
+	assert_int_equal(e[2].line, 9);
+	assert_int_equal(e[2].before, 0);
+	assert_int_equal(e[2].after, glyph);
+	assert_int_equal(e[2].fg, 0xffffff);
+	for (size_t i = 0; i < 3; i++) {
+		assert_int_equal(e[i].x, 14);
+		assert_int_equal(e[i].y, 12);
+		assert_int_equal(e[i].source, RDC_HISTORY_SRC_FIFO);
+		assert_int_equal(e[i].format, RDC_FMT_XRGB8888);
+		/* all drawn while the beam is still above line 12 */
+		assert_int_equal(e[i].fetched, 0);
+		assert_int_equal(e[i].frame, 0);
+		if (i) {
+			assert_true(e[i].cycle > e[i - 1].cycle);
+			assert_true(e[i].cmd_index > e[i - 1].cmd_index);
+		}
+	}
+	/* the last entry's value is what VRAM holds */
+	{
+		uint32_t px = 1;
+
+		assert_int_equal(rdc_vram_read(dev, 12 * 2560 + 14 * 4, &px, 4),
+				 0);
+		assert_int_equal(px & 0xffffff, e[2].after);
+	}
+	rdc_close(dev);
+	/* the history outlives its device */
+	assert_int_equal(rdc_history_count(h), 3);
+	rdc_history_close(h);
+}
+
+/* Nothing outside the watched pixels is recorded. */
+static void test_history_untouched(void **state)
+{
+	rdc_history *h = NULL;
+	rdc_dev *dev = open_sim();
+
+	(void)state;
+	assert_int_equal(rdc_history_open(dev, 100, 100, 2, 2, 0, &h), 0);
+	run_text(dev, "fg #ff0000\nfill 8 8 32 32\nfill 102 99 1 1\n"
+		      "line 90 90 99 99\nfill 98 102 2 2\n");
+	/* the line ends at (99,99), the fills miss by one pixel */
+	assert_int_equal(rdc_history_count(h), 0);
+	run_text(dev, "fill 101 101 1 1\n");
+	assert_int_equal(rdc_history_count(h), 1);
+	rdc_history_close(h);
+	rdc_close(dev);
+}
+
+/*
+ * A pixel written after the beam fetched its line: the frame in progress
+ * shows the old value, the next the new one, as the entry says.
+ */
+static void test_history_torn(void **state)
+{
+	struct rdc_history_entry e;
+	rdc_history *h = NULL;
+	rdc_dev *dev = open_sim();
+	uint32_t *pix = NULL, w = 0, hh = 0;
+	size_t cap = 640 * 480;
+
+	(void)state;
+	pix = calloc(cap, sizeof(*pix));
+	assert_non_null(pix);
+	run_text(dev, "mode 640x480 xrgb8888\nwait-frame\n");
+	assert_int_equal(rdc_history_open(dev, 5, 5, 1, 1, 0, &h), 0);
+	run_text(dev, "wait-line 100\nfg #00ff00\npixel 5 5\nvsync\n");
+	assert_int_equal(rdc_history_count(h), 1);
+	get(h, 0, &e);
+	assert_int_equal(e.opcode, RDC_OP_PIXEL);
+	assert_int_equal(e.fetched, 1);
+	assert_int_equal(e.before, 0);
+	assert_int_equal(e.after, 0x00ff00);
+	/* frame e.frame is complete now: it has the old value */
+	assert_int_equal(rdc_frame_grab(dev, pix, cap, &w, &hh), 0);
+	assert_int_equal(pix[5 * 640 + 5] & 0xffffff, e.before);
+	run_text(dev, "vsync\n");
+	assert_int_equal(rdc_frame_grab(dev, pix, cap, &w, &hh), 0);
+	assert_int_equal(pix[5 * 640 + 5] & 0xffffff, e.after);
+	/* and a pixel written before the beam reaches its line */
+	rdc_history_close(h);
+	assert_int_equal(rdc_history_open(dev, 5, 400, 1, 1, 0, &h), 0);
+	run_text(dev, "wait-line 100\nfg #0000ff\npixel 5 400\nvsync\n");
+	get(h, 0, &e);
+	assert_int_equal(e.fetched, 0);
+	assert_int_equal(rdc_frame_grab(dev, pix, cap, &w, &hh), 0);
+	assert_int_equal(pix[400 * 640 + 5] & 0xffffff, e.after);
+	free(pix);
+	rdc_history_close(h);
+	rdc_close(dev);
+}
+
+/* A fill inside a list called from a list: the CALL chain. */
+static void test_history_list_chain(void **state)
+{
+	static const char scene[] = "mode 640x480 xrgb8888\n"
+				    "list 0x200000\n"
+				    "fill 20 20 4 4\n"
+				    "ret\n"
+				    "end\n"
+				    "list 0x201000\n"
+				    "call 0x200000\n"
+				    "ret\n"
+				    "end\n"
+				    "fg #0000ff\n"
+				    "call 0x201000\n"; /* 11 */
+	struct rdc_history_entry e;
+	rdc_history *h = NULL;
+	rdc_dev *dev = open_sim();
+
+	(void)state;
+	assert_int_equal(rdc_history_open(dev, 21, 21, 1, 1, 0, &h), 0);
+	run_text(dev, scene);
+	assert_int_equal(rdc_history_count(h), 1);
+	get(h, 0, &e);
+	assert_int_equal(e.opcode, RDC_OP_FILL_RECT);
+	assert_int_equal(e.source, RDC_HISTORY_SRC_LIST);
+	assert_int_equal(e.line, 11);
+	assert_int_equal(e.cmd_addr, 0x200000);
+	assert_int_equal(e.depth, 2);
+	/* the outer list resumes after its CALL (header and address) */
+	assert_int_equal(e.calls[0], 0x201000 + 8);
+	assert_int_equal(e.after, 0x0000ff);
+	rdc_history_close(h);
+	rdc_close(dev);
+}
+
+/*
+ * 4-bit pixels: a fill of one pixel rewrites its byte; the neighbour that
+ * shares it, unchanged, has no entry.
+ */
+static void test_history_subbyte(void **state)
+{
+	struct rdc_history_entry e;
+	rdc_history *h = NULL;
+	rdc_dev *dev = open_sim();
+
+	(void)state;
+	run_text(dev, "mode 640x480 i4\nwait-frame\n");
+	assert_int_equal(rdc_history_open(dev, 0, 0, 4, 1, 0, &h), 0);
+	run_text(dev, "fg 5\nfill 0 0 1 1\nfill 3 0 1 1\n");
+	assert_int_equal(rdc_history_count(h), 2);
+	get(h, 0, &e);
+	assert_int_equal(e.x, 0);
+	assert_int_equal(e.format, RDC_FMT_I4);
+	assert_int_equal(e.before, 0);
+	assert_int_equal(e.after, 5);
+	assert_int_equal(e.line, 2);
+	get(h, 1, &e);
+	assert_int_equal(e.x, 3);
+	assert_int_equal(e.after, 5);
+	assert_int_equal(e.line, 3);
+	rdc_history_close(h);
+	rdc_close(dev);
+}
+
+/* A host aperture write is an entry too. */
+static void test_history_host_write(void **state)
+{
+	static const uint8_t px[4] = { 0x56, 0x34, 0x12, 0 };
+	struct rdc_history_entry e;
+	rdc_history *h = NULL;
+	rdc_dev *dev = open_sim();
+
+	(void)state;
+	assert_int_equal(rdc_history_open(dev, 1, 1, 1, 1, 0, &h), 0);
+	assert_int_equal(rdc_vram_write(dev, 2560 + 4, px, 4), 0);
+	assert_int_equal(rdc_history_count(h), 1);
+	get(h, 0, &e);
+	assert_int_equal(e.opcode, RDC_HISTORY_OP_HOST);
+	assert_int_equal(e.source, RDC_HISTORY_SRC_HOST);
+	assert_int_equal(e.before, 0);
+	assert_int_equal(e.after, 0x123456);
+	rdc_history_close(h);
+	rdc_close(dev);
+}
+
+static void test_history_api(void **state)
+{
+	rdc_history *h = NULL, *h2 = (rdc_history *)1;
+	struct rdc_history_entry e;
+	rdc_dev *dev = open_sim();
+	size_t i;
+
+	(void)state;
+	assert_int_equal(rdc_history_open(NULL, 0, 0, 1, 1, 0, &h),
+			 RDC_E_INVAL);
+	assert_int_equal(rdc_history_open(dev, 0, 0, 1, 1, 0x80, &h),
+			 RDC_E_INVAL);
+	assert_int_equal(rdc_history_open(dev, 0, 0, 1, 1, 0, &h), 0);
+	assert_int_equal(rdc_history_open(dev, 0, 0, 1, 1, 0, &h2), RDC_E_BUSY);
+	assert_null(h2);
+	assert_int_equal(rdc_history_get(h, 0, &e), RDC_E_RANGE);
+	assert_int_equal(rdc_history_first_diff(h, h, &i), RDC_E_INVAL);
+	/* a limit keeps the first entries and counts the rest */
+	assert_int_equal(rdc_history_set_limit(h, 2), 0);
+	run_text(dev, "fg #ffffff\nfill 0 0 1 1\nfill 0 0 1 1\nfill 0 0 1 1\n");
+	assert_int_equal(rdc_history_count(h), 2);
+	assert_int_equal(rdc_history_dropped(h), 1);
+	rdc_history_close(h);
+	/* closed: another may open */
+	assert_int_equal(rdc_history_open(dev, 0, 0, 1, 1, 0, &h), 0);
+	rdc_history_close(h);
+	rdc_close(dev);
+}
+
+/* A long script of fills; `change` >= 0 gives statement `change` another
+ * colour.  Returns its history of writes. */
+static rdc_history *long_run(int change, uint32_t *line_of_change)
+{
+	size_t cap = 64 * 1024, n = 0;
+	char *text = malloc(cap);
+	rdc_history *h = NULL;
+	rdc_dev *dev = open_sim();
+	uint32_t line = 1;
+
+	assert_non_null(text);
+	n += (size_t)snprintf(text + n, cap - n, "mode 640x480 xrgb8888\n");
+	for (int i = 0; i < 400; i++) {
+		uint32_t c = (uint32_t)i * 0x010305u & 0xffffff;
+
+		if (i == change) {
+			c ^= 0x000100;
+			*line_of_change = line + 2; /* its fill */
+		}
+		n += (size_t)snprintf(text + n, cap - n,
+				      "fg #%06x\nfill %d %d %d %d\n", c,
+				      (i * 37) % 600, (i * 53) % 440,
+				      5 + i % 30, 3 + i % 20);
+		line += 2;
+	}
+	assert_true(n < cap);
+	assert_int_equal(
+		rdc_history_open(dev, 0, 0, 0, 0, RDC_HISTORY_WRITES, &h), 0);
+	run_text(dev, text);
+	rdc_close(dev);
+	free(text);
+	return h;
+}
+
+static void test_history_first_diff(void **state)
+{
+	struct rdc_history_write wa, wb;
+	uint32_t line = 0, unused = 0;
+	rdc_history *a = long_run(-1, &unused);
+	rdc_history *b = long_run(-1, &unused);
+	rdc_history *c = long_run(271, &line);
+	size_t i = 0;
+
+	(void)state;
+	assert_true(rdc_history_write_count(a) >= 400);
+	assert_int_equal(rdc_history_first_diff(a, b, &i), 0);
+	assert_int_equal(i, rdc_history_write_count(a));
+	assert_int_equal(rdc_history_first_diff(a, c, &i), 1);
+	assert_int_equal(rdc_history_write_get(a, i, &wa), 0);
+	assert_int_equal(rdc_history_write_get(c, i, &wb), 0);
+	/* the fill after the changed colour, at the same command and cycle */
+	assert_int_equal(wb.entry.line, line);
+	assert_int_equal(wa.entry.line, line);
+	assert_int_equal(wb.entry.opcode, RDC_OP_FILL_RECT);
+	assert_int_equal(wa.entry.cmd_index, wb.entry.cmd_index);
+	assert_int_equal(wa.entry.cycle, wb.entry.cycle);
+	rdc_history_close(a);
+	rdc_history_close(b);
+	rdc_history_close(c);
+}
+
+/*
+ * Every golden scene with a history of the whole screen and the write log
+ * open: the golden frame and cycle count, and something recorded.
+ */
+static void test_history_golden_unchanged(void **state)
+{
+	FILE *f = fopen(GOLDEN_LIST, "r");
+	char line[256];
+	size_t scenes = 0, failed = 0;
+
+	(void)state;
+	assert_non_null(f);
+	while (fgets(line, sizeof(line), f)) {
+		char name[64], path[160];
+		unsigned int crc_want, crc = 0;
+		unsigned long long cyc_want;
+		rdc_history *h = NULL;
+		rdc_dev *dev;
+		uint64_t t = 0;
+		uint32_t c = 0;
+		int ret;
+
+		if (line[0] == '#' || sscanf(line, "%63s %x %llu", name,
+					     &crc_want, &cyc_want) != 3)
+			continue;
+		snprintf(path, sizeof(path), SCENE_DIR "/%s.rdl", name);
+		dev = open_sim();
+		assert_int_equal(rdc_history_open(dev, 0, 0, RDC_HISTORY_SCREEN,
+						  RDC_HISTORY_SCREEN,
+						  RDC_HISTORY_WRITES, &h),
+				 0);
+		assert_int_equal(rdc_history_set_limit(h, 4096), 0);
+		ret = rdc_script_run_file(dev, path, &res);
+		if (!ret)
+			ret = rdc_sim_time(dev, &t);
+		if (!ret)
+			ret = rdc_script_frame_wait(dev, &res);
+		if (!ret)
+			ret = rdc_frame_crc(dev, &c);
+		crc = c;
+		if (ret || crc != crc_want || t != cyc_want ||
+		    !rdc_history_write_count(h)) {
+			print_error("%s with history: %s crc32 %08x cycles "
+				    "%llu writes %zu, golden %08x %llu\n",
+				    name, rdc_strerror(ret), crc,
+				    (unsigned long long)t,
+				    rdc_history_write_count(h), crc_want,
+				    cyc_want);
+			failed++;
+		}
+		rdc_history_close(h);
+		rdc_close(dev);
+		scenes++;
+	}
+	fclose(f);
+	assert_true(scenes > 0);
+	assert_int_equal(failed, 0);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_history_fill_xor_text),
+		cmocka_unit_test(test_history_untouched),
+		cmocka_unit_test(test_history_torn),
+		cmocka_unit_test(test_history_list_chain),
+		cmocka_unit_test(test_history_subbyte),
+		cmocka_unit_test(test_history_host_write),
+		cmocka_unit_test(test_history_api),
+		cmocka_unit_test(test_history_first_diff),
+		cmocka_unit_test(test_history_golden_unchanged),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
