@@ -957,6 +957,9 @@ static void check_edid(uint32_t preferred, uint32_t vram, uint32_t expect_first,
 	for (unsigned int i = 0; i < n; i++) {
 		bool found = false;
 
+		/* udl's framebuffers are at least 640x480 */
+		assert_true(got[i].h_display >= 640 && got[i].v_display >= 480);
+
 		for (uint32_t p = 0; p < RDC_PRESET_COUNT; p++) {
 			assert_int_equal(rdc_preset_timing(p, &t), 0);
 			t.pixclk_khz = (t.pixclk_khz + 5) / 10 * 10;
@@ -975,15 +978,19 @@ static void check_edid(uint32_t preferred, uint32_t vram, uint32_t expect_first,
 static void test_edid(void **state)
 {
 	(void)state;
-	/* every preset fits 16 MiB: six timings, the preferred first */
+	/* every preset fits 16 MiB; 320x200 is below udl's smallest
+	 * framebuffer: five timings, the preferred first */
 	check_edid(RDC_PRESET_1024x768_60, 16u << 20, RDC_PRESET_1024x768_60,
-		   RDC_PRESET_COUNT);
+		   RDC_PRESET_COUNT - 1);
 	check_edid(RDC_PRESET_640x480_60, 16u << 20, RDC_PRESET_640x480_60,
-		   RDC_PRESET_COUNT);
-	/* no preferred: the largest */
-	check_edid(~0u, 16u << 20, RDC_PRESET_1920x1080_60, RDC_PRESET_COUNT);
-	/* 1 MiB holds 320x200, 640x480 and 800x600 at 16 bpp only */
-	check_edid(RDC_PRESET_1024x768_60, 1u << 20, RDC_PRESET_800x600_60, 3);
+		   RDC_PRESET_COUNT - 1);
+	/* no preferred, or one udl cannot use: the largest */
+	check_edid(~0u, 16u << 20, RDC_PRESET_1920x1080_60,
+		   RDC_PRESET_COUNT - 1);
+	check_edid(RDC_PRESET_320x200_70, 16u << 20, RDC_PRESET_1920x1080_60,
+		   RDC_PRESET_COUNT - 1);
+	/* 1 MiB holds 640x480 and 800x600 at 16 bpp only */
+	check_edid(RDC_PRESET_1024x768_60, 1u << 20, RDC_PRESET_800x600_60, 2);
 }
 
 int main(void)

@@ -36,6 +36,11 @@
 #define UDL_MAX_DISPLAY	    2048u /* udl's mode_config limits */
 #define UDL_BLANK_ON	    0x00u
 
+/* udl's smallest framebuffer: it sends rows at the framebuffer's width,
+ * so a smaller mode could only show a larger buffer at the wrong stride */
+#define UDL_MIN_WIDTH  640u
+#define UDL_MIN_HEIGHT 480u
+
 static uint32_t udl_count(uint8_t c)
 {
 	return c ? c : 256u; /* 0 means 256 */
@@ -762,6 +767,8 @@ static bool edid_fits(uint32_t p, uint32_t vram_size, struct rdc_timing *t)
 
 	return !rdc_preset_timing(p, t) && t->h_display <= UDL_MAX_DISPLAY &&
 	       t->v_display <= UDL_MAX_DISPLAY &&
+	       t->h_display >= UDL_MIN_WIDTH &&
+	       t->v_display >= UDL_MIN_HEIGHT &&
 	       2ull * t->h_display * t->v_display <= win;
 }
 

@@ -21,7 +21,8 @@ usb_require
 udl_vars
 [ -x "$DRMP" ] || { echo "drm_pattern is not built (no libdrm-dev?)"; exit 77; }
 command -v modetest >/dev/null || { echo "modetest missing (libdrm-tests)"; exit 77; }
-PRESETS="320x200 640x480 800x600 1024x768 1280x720 1920x1080"
+# the presets udl can use (docs/usb.md: not 320x200)
+PRESETS="640x480 800x600 1024x768 1280x720 1920x1080"
 
 # udlfb claims the same IDs: it must not be the one that binds
 check "udlfb is not loaded (udl, not udlfb, drives the device)" \
@@ -56,7 +57,8 @@ check "dmesg: nothing but the documented vendor-descriptor lines" sh -c '
 	  grep -Ev "Unrecognized vendor firmware descriptor|vendor descriptor length"' \
 	sh "$T/dmesg1.txt"
 
-# 640x480 also gives the figures: full-screen and 64x64 update rates
+# 640x480 (the first of the two DRM offers, docs/usb.md; udl-loop takes the
+# other) also gives the figures: full-screen and 64x64 update rates
 check "drm_pattern 640x480: the RDC-1's frame is the pattern in RGB565" \
 	"$DRMP" --uri "$OBS" --mode 640x480 --bench 2
 grep '^# bench' "$T/check.out"

@@ -6,9 +6,10 @@
 #   the RDC-1's frame, inside the text's character cells and nowhere else;
 # - kernel DRM -> USB -> RDC-1 -> `rdcctl stream` (rdcd's observer) ->
 #   v4l2loopback -> ffmpeg: the frames ffmpeg reads are drm_pattern's
-#   pattern through RGB565 and rgb24, exactly, at each 640x480 mode DRM
-#   offers (the preset, and the CTA-861 twin DRM adds at 25.2 MHz, which
-#   the CRTC scans at that clock);
+#   pattern through RGB565 and rgb24, exactly; DRM offers 640x480 twice
+#   (the preset, and the CTA-861 twin it adds at 25.2 MHz): udl-drm's
+#   640x480 check takes the first, this one the other, and each frame
+#   check reads the CRTC's pixel clock back (the mode's);
 # - unplug (unbind the UDC) while a client draws full frames: udl lets go
 #   (the client gets ENODEV), no oops or warning in dmesg, rdcd stays up;
 #   binding again brings a connected card back and a pattern draws exactly.
@@ -18,7 +19,11 @@
 # vm-module: udl
 # vm-module: v4l2loopback devices=1 exclusive_caps=1 video_nr=0 card_label=rdc
 . "$RDC_TREE/tests/vm/lib.sh"
-echo "# guest uptime at the start: $(cut -d' ' -f1 /proc/uptime) s"
+# where the guest's time goes (a figure, not a condition)
+up() {
+	echo "# guest uptime $(cut -d' ' -f1 /proc/uptime) s: $*"
+}
+up start
 
 usb_require
 udl_vars
@@ -32,6 +37,7 @@ udl_ready() {
 dmesg -c >/dev/null 2>&1
 check "the gadget enumerates and udl's connector is connected" udl_ready
 
+up fbcon
 # ---- fbcon ---------------------------------------------------------------------
 fbdev_udl() {
 	for f in /sys/class/graphics/fb[0-9]*; do
@@ -68,6 +74,7 @@ check "the frame's CRC changed with the text" sh -c \
 	'echo "CRC $1 -> $2"; [ -n "$1" ] && [ -n "$2" ] && [ "$1" != "$2" ]' \
 	sh "$crc0" "$crc1"
 
+up the loop to ffmpeg
 # ---- DRM -> USB -> RDC-1 -> v4l2loopback -> ffmpeg ------------------------------
 # drm_pattern holds the mode while this runs, then compares what ffmpeg
 # wrote with its pattern
@@ -89,21 +96,14 @@ clocks=$(awk '$1 ~ /^#[0-9]+$/ && $2 == "640x480" && $12 ~ /^[0-9]+$/ {
 	print $12 }' "$T/modetest.txt")
 check "DRM offers 640x480 twice (the preset and its CTA-861 twin)" \
 	test "$(echo $clocks | wc -w)" = 2
-# the whole loop at the first (ffmpeg starts slowly under TCG), the
-# frame and the CRTC's clock at the other
-loop_done=""
-for c in $clocks; do
-	if [ -z "$loop_done" ]; then
-		check "640x480 at $c kHz: ffmpeg reads the pattern via v4l2loopback" \
-			"$DRMP" --uri "$OBS" --mode 640x480 --clock "$c" \
-			--exec "sh $T/v4l2-loop.sh '$OBS'" --raw "$T/ff.raw" rgb24
-		loop_done=1
-	else
-		check "640x480 at $c kHz: the frame, at that pixel clock" \
-			"$DRMP" --uri "$OBS" --mode 640x480 --clock "$c"
-	fi
-done
+# the loop at the last: udl-drm's 640x480 check takes the first
+set -- $clocks
+eval c=\${$#}
+check "640x480 at $c kHz: ffmpeg reads the pattern via v4l2loopback" \
+	"$DRMP" --uri "$OBS" --mode 640x480 --clock "$c" \
+	--exec "sh $T/v4l2-loop.sh '$OBS'" --raw "$T/ff.raw" rgb24
 
+up unplug
 # ---- unplug while drawing, and back ---------------------------------------------
 "$DRMP" --mode 1024x768 --loop >"$T/loop.log" 2>&1 &
 loop=$!
@@ -132,9 +132,12 @@ check "rdcd still runs" usb_rdcd_alive
 replug() {
 	usb_replug && udl_card 60
 }
+up bind again
 check "binding again brings a connected card back" replug
+up the card is back
 check "and a pattern draws exactly again (800x600)" \
 	"$DRMP" --uri "$OBS" --mode 800x600
+up down
 check "the gadget goes down cleanly" usb_gadget_down
-echo "# guest uptime at the end: $(cut -d' ' -f1 /proc/uptime) s"
+up end
 finish
