@@ -43,7 +43,9 @@
 #include "web_proto.h"
 
 /* Connections at once (page loads and viewers); a new one beyond this
- * evicts the oldest that is not a viewer yet, or is refused. */
+ * evicts the oldest that is not a viewer yet, else the viewer whose
+ * socket has taken nothing for longest (WEB_DEADLINE_NS at least), or
+ * is refused. */
 #define WEB_MAX_CONNS 16
 /* A request head, or a viewer's first message, must come in this time. */
 #define WEB_DEADLINE_NS (5ull * 1000000000ull)
@@ -86,6 +88,7 @@ struct web_conn {
 	/* output */
 	uint8_t *out;
 	size_t out_len, out_off, out_cap;
+	uint64_t sent_ns; /* the queue last moved (or was empty) */
 	/* damage since the last update sent, per row: columns [x0, x1),
 	 * x1 == 0 for a clean row (guarded by the sink's mutex) */
 	uint32_t *dx0, *dx1;
@@ -212,8 +215,10 @@ static void conn_flush(struct web_conn *c)
 			return;
 		}
 		c->out_off += (size_t)n;
+		c->sent_ns = web_now_ns();
 	}
 	c->out_off = c->out_len = 0;
+	c->sent_ns = web_now_ns();
 	if (c->closing)
 		c->dead = true;
 }
@@ -724,9 +729,16 @@ static void web_accept(struct web_sink *w)
 		if (fd < 0)
 			return;
 		if (w->nconns >= WEB_MAX_CONNS) {
-			/* the oldest that is not watching yet makes room */
+			/* the oldest that is not watching yet makes room;
+			 * else the viewer stuck longest on a full socket */
 			for (c = w->conns; c; c = c->next)
 				if (!c->authed)
+					victim = c;
+			for (c = victim ? NULL : w->conns; c; c = c->next)
+				if (c->out_off < c->out_len &&
+				    web_now_ns() >
+					    c->sent_ns + WEB_DEADLINE_NS &&
+				    (!victim || c->sent_ns < victim->sent_ns))
 					victim = c;
 			if (!victim) {
 				close(fd);
@@ -741,7 +753,8 @@ static void web_accept(struct web_sink *w)
 		}
 		setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof(one));
 		c->fd = fd;
-		c->deadline_ns = web_now_ns() + WEB_DEADLINE_NS;
+		c->sent_ns = web_now_ns();
+		c->deadline_ns = c->sent_ns + WEB_DEADLINE_NS;
 		if (ss.ss_family == AF_INET)
 			inet_ntop(AF_INET,
 				  &((struct sockaddr_in *)&ss)->sin_addr,
