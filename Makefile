@@ -401,8 +401,9 @@ bench-usb: $(O)/rel/net_bench $(O)/rel/rdcd
 #   fuzz_rdcd    rdcd's request handling, several clients (rdcd/serve.c)
 #   fuzz_script  the .rdl interpreter on a sim: device (lib/script*.c)
 #   fuzz_web     the web sink's HTTP and WebSocket parsers (sink/web_proto.c)
-# `make fuzz` is the short run `make check` does (fuzz_proto and fuzz_usb
-# a million inputs each, the other two FUZZ_TIME seconds each from their
+# `make fuzz` is the short run `make check` does (fuzz_proto, fuzz_usb and
+# fuzz_web a million inputs each, fuzz_rdcd and fuzz_script FUZZ_TIME
+# seconds each from their
 # seeds in tests/fuzz/seeds/); `make fuzz-long` gives each target
 # FUZZ_LONG_TIME seconds (150: ten minutes in all) and keeps its corpus in
 # $(FUZZ_DIR)/corpus-NAME; `make fuzz-cov` runs the seeds and those corpora
