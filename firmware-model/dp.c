@@ -337,6 +337,7 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 	case RDC_OP_MESH:
 	case RDC_OP_PATCH:
 	case RDC_OP_BEZIER3:
+	case RDC_OP_BSPLINE3:
 		return dp_cmd_3d(dp, op, fl, len, a);
 	case RDC_OP_READBACK:
 		if (!xy_ok(a[0]) || !wh_ok(a[1]))

@@ -712,6 +712,8 @@ uint32_t dp_cmd_3d(struct rdc_dp *dp, uint32_t op, uint32_t fl, uint32_t len,
 		return g3_cmd_patch(dp, a);
 	case RDC_OP_BEZIER3:
 		return g3_cmd_bezier3(dp, fl, a);
+	case RDC_OP_BSPLINE3:
+		return g3_cmd_bspline3(dp, fl, len, a);
 	default:
 		return RDC_ERR_OPCODE;
 	}

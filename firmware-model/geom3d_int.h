@@ -2,7 +2,7 @@
 /*
  * Shared by the 3D files: geom3d.c (matrices, the view, the vertex
  * pipeline, clipping), mesh.c (MESH and the triangle/edge drawing),
- * light.c (illumination) and patch.c (PATCH, BEZIER3).
+ * light.c (illumination) and patch.c (PATCH, BEZIER3, BSPLINE3).
  */
 #ifndef RDC_GEOM3D_INT_H
 #define RDC_GEOM3D_INT_H
@@ -89,5 +89,7 @@ void g3_draw_segment(struct rdc_dp *dp, const struct rdc_dp_v3 *a,
 uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a);
 uint32_t g3_cmd_patch(struct rdc_dp *dp, const uint32_t *a);
 uint32_t g3_cmd_bezier3(struct rdc_dp *dp, uint32_t fl, const uint32_t *a);
+uint32_t g3_cmd_bspline3(struct rdc_dp *dp, uint32_t fl, uint32_t len,
+			 const uint32_t *a);
 
 #endif /* RDC_GEOM3D_INT_H */

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * Bicubic Bezier patches and 3D Bezier curves by forward differencing
- * (Foley & van Dam 11.2-11.3).
+ * Bicubic Bezier patches and 3D Bezier and uniform B-spline curves by
+ * forward differencing (Foley & van Dam 11.2-11.3).
  *
  * A patch P(u, v) = sum_i sum_j B_i(v) B_j(u) P_ij (P_ij control point 4 i
  * + j) with n steps each way: the four column curves C_j(v) and their
@@ -232,6 +232,81 @@ uint32_t g3_cmd_bezier3(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 	}
 	rdc_port_compute(dp->hw, (n + 1) * (RDC_T_TESS3 + RDC_T_VERTEX3));
 	for (i = 0; i < n; i++)
+		g3_draw_segment(dp, &dp->v3[i], &dp->v3[i + 1], i > 0);
+	return RDC_ERR_NONE;
+}
+
+/*
+ * A uniform cubic B-spline segment of control values q0..q3: the cubic
+ * (-q0 + 3 q1 - 3 q2 + q3) t^3 + (3 q0 - 6 q1 + 3 q2) t^2 + (-3 q0 +
+ * 3 q2) t + (q0 + 4 q1 + q2), all over 6, forward differenced.
+ */
+static void fd_bspline(struct fd *s, const int64_t *q, int64_t n)
+{
+	fd_init(s, g3_div_round(-q[0] + 3 * q[1] - 3 * q[2] + q[3], 6),
+		g3_div_round(3 * q[0] - 6 * q[1] + 3 * q[2], 6),
+		g3_div_round(-3 * q[0] + 3 * q[2], 6),
+		g3_div_round(q[0] + 4 * q[1] + q[2], 6), n);
+}
+
+/*
+ * (q0 + 4 q1 + q2) / 6 of coordinate k of the points from w: where the
+ * segment of the window at w starts, and the one before it ends
+ */
+static int32_t bspline_joint(const uint32_t *w, uint32_t k)
+{
+	return (int32_t)g3_div_round((int64_t)(int32_t)w[k] +
+					     4 * (int64_t)(int32_t)w[3 + k] +
+					     (int32_t)w[6 + k],
+				     6);
+}
+
+/*
+ * Every point of the curve goes into the vertex cache (so the whole
+ * command is checked before anything is drawn), each segment's first
+ * point being the end of the one before it, then the polyline is drawn.
+ */
+uint32_t g3_cmd_bspline3(struct rdc_dp *dp, uint32_t fl, uint32_t len,
+			 const uint32_t *a)
+{
+	uint32_t n = fl ? fl : RDC_BEZIER3_STEPS, np = len / 3, nv, s, i, k;
+	struct g3_nmat nm;
+	struct fd c[3];
+	int64_t q[4];
+
+	if (len % 3 || np < 4 || np > RDC_BSPLINE3_MAX_POINTS)
+		return RDC_ERR_LENGTH;
+	nv = (np - 3) * n + 1;
+	if (nv > RDC_MESH_MAX_VERTS)
+		return RDC_ERR_RANGE;
+	g3_normal_matrix(dp, &nm);
+	for (s = 0; s + 3 < np; s++) {
+		const uint32_t *w = a + 3 * s;
+
+		for (k = 0; k < 3; k++) {
+			for (i = 0; i < 4; i++)
+				q[i] = (int64_t)(int32_t)w[3 * i + k] * FD_ONE;
+			fd_bspline(&c[k], q, n);
+		}
+		for (i = 0; i <= n; i++) {
+			int32_t pos[3];
+
+			/* the ends exactly, the same in every window */
+			for (k = 0; k < 3; k++) {
+				pos[k] = i == 0 ? bspline_joint(w, k) :
+					 i == n ? bspline_joint(w + 3, k) :
+						  fd_raw(c[k].f);
+				fd_step(&c[k]);
+			}
+			if (s && !i)
+				continue; /* the previous segment's end */
+			if (!g3_vertex(dp, pos, NULL, &nm, false, false,
+				       &dp->v3[s * n + i]))
+				return RDC_ERR_RANGE;
+		}
+	}
+	rdc_port_compute(dp->hw, nv * (RDC_T_TESS3 + RDC_T_VERTEX3));
+	for (i = 0; i + 1 < nv; i++)
 		g3_draw_segment(dp, &dp->v3[i], &dp->v3[i + 1], i > 0);
 	return RDC_ERR_NONE;
 }

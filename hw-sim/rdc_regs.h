@@ -501,6 +501,11 @@ enum rdc_opcode {
 	RDC_OP_PATCH = 0x51,
 	/* 4 control points xyz (12 words, 15.16); flags: steps (0 = 16) */
 	RDC_OP_BEZIER3 = 0x52,
+	/*
+	 * 4..RDC_BSPLINE3_MAX_POINTS control points xyz (15.16): a uniform
+	 * cubic B-spline; flags: steps per segment (0 = 16)
+	 */
+	RDC_OP_BSPLINE3 = 0x53,
 
 	/*
 	 * Image decompression and processing (docs/commands.md, "Images";
@@ -623,6 +628,7 @@ static inline int rdc_cmd_args(uint32_t op)
 	case RDC_OP_MONO:
 	case RDC_OP_TEXT:
 	case RDC_OP_CONVOLVE:
+	case RDC_OP_BSPLINE3:
 		return RDC_ARGS_VARIABLE;
 	default:
 		return RDC_ARGS_UNKNOWN;
@@ -663,7 +669,9 @@ static inline int rdc_cmd_args(uint32_t op)
 #define RDC_MESH_MAX_VERTS 2048u
 #define RDC_MESH_MAX_TRIS 4096u
 #define RDC_PATCH_MAX_STEPS 32u
-#define RDC_BEZIER3_STEPS 16u /* BEZIER3 with steps 0 */
+#define RDC_BEZIER3_STEPS 16u /* BEZIER3 and BSPLINE3 with steps 0 */
+/* BSPLINE3: 3 words a point, at most RDC_CMD_MAX_ARGS words */
+#define RDC_BSPLINE3_MAX_POINTS (RDC_CMD_MAX_ARGS / 3)
 enum rdc_axis { RDC_AXIS_X = 0, RDC_AXIS_Y = 1, RDC_AXIS_Z = 2 };
 #define RDC_VIEW_PERSPECTIVE BIT(0)
 #define RDC_MESH_NORMALS BIT(0) /* vertices carry a normal: 6 words */

@@ -1406,6 +1406,183 @@ static void test_patch_flat(void **state)
 	}
 }
 
+/* ---- 3D B-spline curves -------------------------------------------------- */
+
+static void bspline3(struct tdp *t, uint32_t steps, const int32_t *q,
+		     uint32_t np)
+{
+	tdp_cmd(t, RDC_OP_BSPLINE3, steps, 3 * np, (const uint32_t *)q);
+}
+
+static uint32_t screen_hash(struct tdp *t)
+{
+	return tdp_fnv(2166136261u, t->vram, STRIDE * SH);
+}
+
+/*
+ * BSPLINE3, the uniform cubic B-spline: evenly spaced collinear control
+ * points trace their line from q1 to q(n-2) (the ends (q0 + 4 q1 + q2) / 6
+ * and so on), every pixel within a pixel of the reference projection of
+ * that segment; a segment is the Bezier curve of the basis change (b0 =
+ * (q0 + 4 q1 + q2) / 6, b1 = (2 q1 + q2) / 3, b2 = (q1 + 2 q2) / 3, b3 =
+ * (q1 + 4 q2 + q3) / 6, exact for control points in multiples of 6
+ * units), pixel for pixel BEZIER3's; one command of n points draws what
+ * the n - 3 commands of its four-point windows draw.
+ */
+static void test_bspline3(void **state)
+{
+	struct tdp *t = *state;
+	struct ref_view v = std_view(true);
+	static const double P[3] = { 0.2, 0.3, -1 }, D[3] = { 0.5, 0.2, -0.3 };
+	uint32_t seed = 0x5b1e, h0, trial;
+	int32_t q[3 * 8], b[12];
+	mat4 N;
+
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	ref_view_matrix(&v, N);
+	clear_screen(t);
+	h0 = screen_hash(t);
+
+	/* collinear, evenly spaced: a straight line from q1 to q(np - 2) */
+	for (uint32_t np = 4; np <= 8; np += 2) {
+		double s[2][3], ends[2][3];
+		unsigned long drawn = 0;
+
+		for (uint32_t i = 0; i < np; i++)
+			for (int c = 0; c < 3; c++)
+				q[3 * i + c] = fx(P[c] + (i - 1.5) * D[c]);
+		for (int c = 0; c < 3; c++) {
+			ends[0][c] = P[c] - 0.5 * D[c];
+			ends[1][c] = P[c] + (np - 3.5) * D[c];
+		}
+		for (int e = 0; e < 2; e++) {
+			double h[4];
+
+			m_apply(N, ends[e], h);
+			ref_screen(&v, h, s[e]);
+		}
+		clear_screen(t);
+		bspline3(t, 7, q, np);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		for (int y = 0; y < SH; y++)
+			for (int x = 0; x < SW; x++) {
+				double ex = s[1][0] - s[0][0],
+				       ey = s[1][1] - s[0][1];
+				double l2 = ex * ex + ey * ey, u, dx, dy;
+
+				if (!px(t, x, y))
+					continue;
+				drawn++;
+				u = ((x - s[0][0]) * ex + (y - s[0][1]) * ey) /
+				    l2;
+				u = u < 0 ? 0 : u > 1 ? 1 : u;
+				dx = x - (s[0][0] + u * ex);
+				dy = y - (s[0][1] + u * ey);
+				if (dx * dx + dy * dy > 1.0)
+					fail_msg("%u points: %d,%d off the "
+						 "line",
+						 np, x, y);
+			}
+		if (drawn + 1 <
+		    fmax(fabs(s[1][0] - s[0][0]), fabs(s[1][1] - s[0][1])))
+			fail_msg("%u points: %lu pixels", np, drawn);
+	}
+
+	for (trial = 0; trial < 24; trial++) {
+		uint32_t steps = 1 + tdp_rand(&seed) % 40, np, h1;
+
+		/* a segment against BEZIER3 of the same cubic */
+		for (int i = 0; i < 12; i++)
+			q[i] = 6 * (int32_t)tdp_range(&seed, -16384, 16384);
+		for (int c = 0; c < 3; c++) {
+			b[c] = (q[c] + 4 * q[3 + c] + q[6 + c]) / 6;
+			b[3 + c] = (2 * q[3 + c] + q[6 + c]) / 3;
+			b[6 + c] = (q[3 + c] + 2 * q[6 + c]) / 3;
+			b[9 + c] = (q[3 + c] + 4 * q[6 + c] + q[9 + c]) / 6;
+		}
+		clear_screen(t);
+		bspline3(t, steps, q, 4);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		h1 = screen_hash(t);
+		assert_int_not_equal(h1, h0);
+		clear_screen(t);
+		tdp_cmd(t, RDC_OP_BEZIER3, steps, 12, (const uint32_t *)b);
+		tdp_drain(t);
+		assert_int_equal(screen_hash(t), h1);
+
+		/* a longer curve against its windows, one by one */
+		np = 4 + tdp_rand(&seed) % 5;
+		for (uint32_t i = 0; i < 3 * np; i++)
+			q[i] = (int32_t)tdp_range(&seed, -2 * 65536, 2 * 65536);
+		clear_screen(t);
+		bspline3(t, steps, q, np);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		h1 = screen_hash(t);
+		clear_screen(t);
+		for (uint32_t w = 0; w + 3 < np; w++)
+			bspline3(t, steps, q + 3 * w, 4);
+		tdp_drain(t);
+		assert_int_equal(tdp_err(t), 0);
+		if (screen_hash(t) != h1)
+			fail_msg("trial %u: %u points, %u steps: the windows "
+				 "differ",
+				 trial, np, steps);
+	}
+}
+
+/*
+ * BSPLINE3's bad input: a length not 3 words a point or under 4 points
+ * (LENGTH), more curve points than the vertex cache holds or a point out
+ * of range (RANGE); nothing drawn, and the DP draws on.
+ */
+static void test_bspline3_errors(void **state)
+{
+	struct tdp *t = *state;
+	struct ref_view v = std_view(true);
+	int32_t q[3 * 12];
+	uint32_t h0;
+
+	send_view(t, &v);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	for (int i = 0; i < 3 * 12; i++)
+		q[i] = (int32_t)((i % 3 == 2 ? 0 : i % 7) * 8192);
+	clear_screen(t);
+	tdp_drain(t);
+	h0 = screen_hash(t);
+	tdp_cmd(t, RDC_OP_BSPLINE3, 0, 11, (const uint32_t *)q);
+	expect_err(t, RDC_ERR_LENGTH);
+	tdp_cmd(t, RDC_OP_BSPLINE3, 0, 9, (const uint32_t *)q);
+	expect_err(t, RDC_ERR_LENGTH);
+	tdp_cmd(t, RDC_OP_BSPLINE3, 0, 13, (const uint32_t *)q);
+	expect_err(t, RDC_ERR_LENGTH);
+	tdp_cmd(t, RDC_OP_BSPLINE3, 0, 0, NULL);
+	expect_err(t, RDC_ERR_LENGTH);
+	/* 9 segments of 255 steps: 2296 points, the cache holds 2048 */
+	bspline3(t, 255, q, 12);
+	expect_err(t, RDC_ERR_RANGE);
+	/* 8 segments of 255: 2041 points fit */
+	bspline3(t, 255, q, 11);
+	expect_err(t, 0);
+	assert_int_not_equal(screen_hash(t), h0);
+	clear_screen(t);
+	/* the last segment leaving 15.16 once scaled; the good ones before
+	 * it are not drawn either */
+	q[3 * 8] = q[3 * 9] = q[3 * 10] = 100 * 65536;
+	TDP_CMD(t, RDC_OP_SCALE, (uint32_t)fx(400), (uint32_t)fx(400),
+		(uint32_t)fx(400));
+	bspline3(t, 16, q, 11);
+	expect_err(t, RDC_ERR_RANGE);
+	assert_int_equal(screen_hash(t), h0);
+	tdp_cmd(t, RDC_OP_MATRIX_LOAD, 0, 0, NULL);
+	bspline3(t, 16, q, 6);
+	expect_err(t, 0);
+	assert_int_not_equal(screen_hash(t), h0);
+}
+
 /* ---- the cost model ------------------------------------------------------ */
 
 /* The cycles of the last command, and *open the DRAM row it left open. */
@@ -1568,6 +1745,17 @@ static void test_cycles(void **state)
 			 fetch_cost(12) + (RDC_BEZIER3_STEPS +
 					   1) * (RDC_T_TESS3 + RDC_T_VERTEX3));
 
+	/* a B-spline outside the volume: 5 points, 2 segments of 6 steps */
+	for (int i = 0; i < 5; i++) {
+		a[3 * i] = (uint32_t)fx(-100 - i);
+		a[3 * i + 1] = (uint32_t)fx(i);
+		a[3 * i + 2] = 0;
+	}
+	tdp_cmd(t, RDC_OP_BSPLINE3, 6, 15, a);
+	assert_int_equal(last_cycles(t),
+			 fetch_cost(15) +
+				 (2 * 6 + 1) * (RDC_T_TESS3 + RDC_T_VERTEX3));
+
 	/* none of it drew a pixel */
 	assert_int_equal(tdp_fnv(2166136261u, t->vram, STRIDE * SH), h0);
 }
@@ -1581,7 +1769,8 @@ int main(void)
 		TDP_TEST(test_painter_sort),	 TDP_TEST(test_wire_edges_once),
 		TDP_TEST(test_zbuffer_ref),	 TDP_TEST(test_bad_input),
 		TDP_TEST(test_patch_flat),	 TDP_TEST(test_lit_formats),
-		TDP_TEST(test_cycles),
+		TDP_TEST(test_cycles),		 TDP_TEST(test_bspline3),
+		TDP_TEST(test_bspline3_errors),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

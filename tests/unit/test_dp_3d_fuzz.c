@@ -40,9 +40,10 @@ static const uint8_t ops[] = {
 	RDC_OP_MESH,
 	RDC_OP_PATCH,
 	RDC_OP_BEZIER3,
+	RDC_OP_BSPLINE3,
 	0x47,
 	0x4d,
-	0x53,
+	0x54,
 };
 
 /* Mostly modest 15.16 numbers, sometimes 0 or an extreme. */
@@ -154,6 +155,10 @@ static void fuzz_cmd(struct tdp *t, uint32_t *rng)
 		break;
 	case RDC_OP_BEZIER3:
 		fl = tdp_rand(rng) % 40;
+		break;
+	case RDC_OP_BSPLINE3:
+		fl = tdp_rand(rng) % 40;
+		n = 3 * (4 + tdp_rand(rng) % 18); /* 4..21 points */
 		break;
 	default:
 		break;

@@ -108,7 +108,9 @@ static void test_statements_encode(void **state)
 			     "mesh 0x180000 3 0x181000 1 lit two-sided\n"
 			     "pop\n"
 			     "fg #ffff00\n"
-			     "bezier3 -1 -1 0 -1 1 0 1 1 0 1 -1 0 steps 12\n"),
+			     "bezier3 -1 -1 0 -1 1 0 1 1 0 1 -1 0 steps 12\n"
+			     "bspline3 -1 0 0 -0.5 0.5 1 0.5 -0.5 -1 1 0 0 "
+			     "1.5 1 0.5\n"),
 			 0);
 	assert_int_equal(reg(dev, RDC_REG_ERR_CODE), 0);
 	h1 = screen_hash(dev);
@@ -171,6 +173,13 @@ static void test_statements_encode(void **state)
 					     FX(1),  0,	     FX(1),  FX(1),
 					     0,	     FX(1),  FX(-1), 0 }[i];
 		assert_int_equal(rdc_batch_cmd(b, RDC_OP_BEZIER3, 12, w, 12),
+				 0);
+		for (int i = 0; i < 15; i++)
+			w[i] = (uint32_t[]){ FX(-1),  0,     0,	      FX(-0.5),
+					     FX(0.5), FX(1), FX(0.5), FX(-0.5),
+					     FX(-1),  FX(1), 0,	      0,
+					     FX(1.5), FX(1), FX(0.5) }[i];
+		assert_int_equal(rdc_batch_cmd(b, RDC_OP_BSPLINE3, 0, w, 15),
 				 0);
 	}
 	/* the vertex and index bytes as documented: little-endian */
@@ -237,6 +246,9 @@ static void test_statement_errors(void **state)
 		"patch 33 lit 0 0 0\n",
 		"patch 4 lit 0 0 0\n",
 		"bezier3 0 0 0 1 1 1 2 2 2 3 3 3 steps 0\n",
+		"bspline3 0 0 0 1 1 1 2 2 2\n",
+		"bspline3 0 0 0 1 1 1 2 2 2 3 3 3 4\n",
+		"bspline3 0 0 0 1 1 1 2 2 2 3 3 3 steps 256\n",
 		"translate 1 2\n",
 		"indices 0 65536\n",
 		"vertices 0 40000\n",

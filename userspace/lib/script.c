@@ -1346,6 +1346,7 @@ static const struct rdl_stmt {
 	{ "mesh", rdl_st_mesh, RDC_OP_MESH, 4, 11 },
 	{ "patch", rdl_st_patch, RDC_OP_PATCH, 49, 55 },
 	{ "bezier3", rdl_st_bezier3, RDC_OP_BEZIER3, 12, 14 },
+	{ "bspline3", rdl_st_bspline3, RDC_OP_BSPLINE3, 12, RDL_ANY },
 	/* host side (refused inside `list`, as are readback and raw) */
 	{ "list", st_list, 0, 1, 1 },
 	{ "end", st_end, 0, 0, 0 },

@@ -296,6 +296,38 @@ int rdl_st_bezier3(struct rdl *r, uint32_t op)
 	return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, (uint32_t)n, a, 12));
 }
 
+/* bspline3 X0 Y0 Z0 X1 Y1 Z1 .. (4 or more points) [steps N] */
+int rdl_st_bspline3(struct rdl *r, uint32_t op)
+{
+	size_t n = r->ntok - 1;
+	uint32_t *a;
+	int64_t steps = 0;
+	int ret;
+
+	if (n >= 2 && rdl_word(r, r->ntok - 2, "steps")) {
+		ret = rdl_int(r, r->ntok - 1, 1, RDC_CURVE_MAX_STEPS, &steps);
+		if (ret)
+			return ret;
+		n -= 2;
+	}
+	if (n % 3 || n < 12)
+		return rdl_err(r, RDC_E_PARSE,
+			       "bspline3: 4 or more points X Y Z [steps N]");
+	if (n / 3 > RDC_BSPLINE3_MAX_POINTS)
+		return rdl_err(r, RDC_E_PARSE, "bspline3: more than %d points",
+			       (int)RDC_BSPLINE3_MAX_POINTS);
+	a = malloc(n * sizeof(*a));
+	if (!a)
+		return rdl_err(r, RDC_E_NOMEM, "out of memory");
+	ret = rdl_fix_words(r, 1, n, a);
+	if (!ret)
+		ret = rdl_encoded(r, op,
+				  rdc_batch_cmd(r->b, op, (uint32_t)steps, a,
+						(uint32_t)n));
+	free(a);
+	return ret;
+}
+
 /* vertices ADDR X Y Z ...: 15.16 words into VRAM at ADDR */
 int rdl_st_vertices(struct rdl *r, uint32_t op)
 {

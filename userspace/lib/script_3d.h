@@ -18,6 +18,7 @@ int rdl_st_material(struct rdl *r, uint32_t op);
 int rdl_st_mesh(struct rdl *r, uint32_t op);
 int rdl_st_patch(struct rdl *r, uint32_t op);
 int rdl_st_bezier3(struct rdl *r, uint32_t op);
+int rdl_st_bspline3(struct rdl *r, uint32_t op);
 /* host statements: vertex and index data into VRAM */
 int rdl_st_vertices(struct rdl *r, uint32_t op);
 int rdl_st_indices(struct rdl *r, uint32_t op);

@@ -66,6 +66,7 @@ static const char *const rdl_op_names[RDC_OP_COUNT] = {
 	[RDC_OP_MESH] = "mesh",
 	[RDC_OP_PATCH] = "patch",
 	[RDC_OP_BEZIER3] = "bezier3",
+	[RDC_OP_BSPLINE3] = "bspline3",
 	[RDC_OP_DECODE] = "decode",
 	[RDC_OP_HISTOGRAM] = "histogram",
 	[RDC_OP_MAP_BUILD] = "map-build",
