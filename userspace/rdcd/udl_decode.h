@@ -170,8 +170,9 @@ int rdc_udl_decode_timing(const uint8_t reg[256], struct rdc_timing *t);
 /*
  * The EDID of the device: a base block and a CTA-861 extension whose
  * detailed timings are the RDC-1's mode presets that fit `vram_size`
- * (at 16 bpp) and udl's limits (640x480 to 2048x2048), `preferred` first (any other
- * value: the largest that fits first), then the others in preset order.
+ * (at 16 bpp) and udl's limits (640x480 to 2048x2048), `preferred`
+ * first (any other value: the largest that fits first), then the others
+ * in preset order.
  * No established or standard timings, no range limits and no continuous
  * frequency flag, so a host offers these modes and no other.  Returns
  * RDC_UDL_EDID_SIZE.

@@ -110,6 +110,7 @@ loop=$!
 sleep 1
 dmesg -c >/dev/null 2>&1
 check "unplug (unbind the UDC) while a client draws" usb_unplug
+up unplugged
 check "the drawing client sees the card go and exits" sh -c '
 	i=0
 	while kill -0 $1 2>/dev/null && [ $i -lt 300 ]; do
@@ -117,6 +118,7 @@ check "the drawing client sees the card go and exits" sh -c '
 		i=$((i + 1))
 	done
 	! kill -0 $1 2>/dev/null' sh $loop
+up the client has exited
 kill $loop 2>/dev/null
 wait $loop
 echo "# the drawing client's exit status $?: $(tr '\n' ' ' <"$T/loop.log")"
