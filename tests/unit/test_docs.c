@@ -10,12 +10,14 @@
  * statement it knows documented, with argument counts that fit; the names
  * rdl.md calls case-insensitive; the options of `rdcd --help` and
  * `rdcctl --help` in the synopses of docs/protocol.md and docs/rdl.md;
- * and the README's C example compiling as the README says.
+ * every named constant the docs give a number for (`RDC_X` (N)) against
+ * its #define; and the README's C example compiling as the README says.
  *
  * Run from the source root (tests/run.sh does); rdcd and rdcctl are found
  * next to this test's directory ($(O)/san).
  */
 #include <ctype.h>
+#include <dirent.h>
 #include <libgen.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -724,6 +726,179 @@ static void test_options(void **state)
 	free(proto);
 }
 
+/* ---- Named constants ---------------------------------------------------- */
+
+#define MAX_DEFS 4096
+
+struct def {
+	char name[48];
+	long long v;
+};
+
+/* "#define RDC_NAME 123" (or (-123), 0x1fu ...) in one source file. */
+static size_t file_defs(const char *path, struct def *d, size_t n)
+{
+	char *text = slurp(path);
+	const char *p = text;
+	char line[512];
+
+	while (next_line(&p, line, sizeof(line))) {
+		char name[48], *end;
+		const char *q;
+		long long v;
+		int k;
+
+		if (sscanf(line, "#define %47s%n", name, &k) != 1 ||
+		    strncmp(name, "RDC", 3) || strchr(name, '('))
+			continue;
+		q = line + k;
+		while (*q == ' ' || *q == '\t' || *q == '(')
+			q++;
+		if (!isdigit((unsigned char)*q) && *q != '-')
+			continue;
+		v = strtoll(q, &end, 0);
+		if (end == q)
+			continue;
+		while (*end == 'u' || *end == 'U' || *end == ')')
+			end++;
+		while (*end == ' ' || *end == '\t')
+			end++;
+		if (*end && strncmp(end, "/*", 2))
+			continue; /* an expression, not a plain number */
+		if (n < MAX_DEFS) {
+			snprintf(d[n].name, sizeof(d[n].name), "%s", name);
+			d[n++].v = v;
+		}
+	}
+	free(text);
+	return n;
+}
+
+static size_t all_defs(struct def *d)
+{
+	static const char *const dirs[] = {
+		"hw-sim",	  "firmware-model", "userspace/include",
+		"userspace/lib",  "userspace/rdcd", "userspace/rdcctl",
+		"userspace/sink", "driver",
+	};
+	size_t n = 0;
+
+	for (size_t i = 0; i < sizeof(dirs) / sizeof(dirs[0]); i++) {
+		DIR *dir = opendir(dirs[i]);
+		struct dirent *e;
+
+		if (!dir)
+			continue;
+		while ((e = readdir(dir))) {
+			size_t len = strlen(e->d_name);
+			char path[600];
+
+			if (len < 3 || (strcmp(e->d_name + len - 2, ".h") &&
+					strcmp(e->d_name + len - 2, ".c")))
+				continue;
+			snprintf(path, sizeof(path), "%s/%s", dirs[i],
+				 e->d_name);
+			n = file_defs(path, d, n);
+		}
+		closedir(dir);
+	}
+	return n;
+}
+
+/*
+ * Every "`RDC_NAME` (N" or "`RDC_NAME` = N" in the docs, where RDC_NAME
+ * is defined as a plain number, gives that number.
+ */
+static void test_constants(void **state)
+{
+	static struct def d[MAX_DEFS];
+	static const char *const docs[] = {
+		"docs/commands.md", "docs/hardware.md", "docs/protocol.md",
+		"docs/rdl.md",	    "docs/usb.md",	"docs/driver.md",
+		"docs/pins.md",	    "docs/vcd.md",	"README.md",
+	};
+	size_t nd = all_defs(d);
+	int checked = 0;
+	char *cmd;
+
+	(void)state;
+	assert_true(nd > 100);
+	for (size_t i = 0; i < sizeof(docs) / sizeof(docs[0]); i++) {
+		char *text;
+
+		if (access(docs[i], R_OK))
+			continue;
+		text = slurp(docs[i]);
+		for (const char *p = strstr(text, "`RDC"); p;
+		     p = strstr(p + 1, "`RDC")) {
+			const char *q = strchr(p + 1, '`');
+			char name[48], num[32];
+			size_t k = 0, j;
+			long long v;
+
+			if (!q || q - p - 1 >= (long)sizeof(name))
+				continue;
+			snprintf(name, sizeof(name), "%.*s", (int)(q - p - 1),
+				 p + 1);
+			q++;
+			while (*q == ' ')
+				q++;
+			if (*q != '(' && *q != '=')
+				continue;
+			q++;
+			while (*q == ' ')
+				q++;
+			/* "1,539" is 1539 */
+			while ((isxdigit((unsigned char)*q) || *q == ',' ||
+				*q == 'x' || *q == '-') &&
+			       k + 1 < sizeof(num)) {
+				if (*q != ',')
+					num[k++] = *q;
+				q++;
+			}
+			num[k] = 0;
+			if (!k ||
+			    (!isdigit((unsigned char)num[0]) && num[0] != '-'))
+				continue;
+			v = strtoll(num, NULL, 0);
+			for (j = 0; j < nd; j++)
+				if (!strcmp(d[j].name, name))
+					break;
+			if (j == nd)
+				continue; /* an enum, or an expression */
+			if (d[j].v != v)
+				fail_msg("%s: %s is %lld, the code says %lld",
+					 docs[i], name, v, d[j].v);
+			checked++;
+		}
+		free(text);
+	}
+	assert_true(checked >= 10);
+
+	/* the coordinate and size ranges, in numbers */
+	cmd = slurp("docs/commands.md");
+	{
+		const char *p =
+			strstr(cmd, "`[RDC_COORD_MIN, RDC_COORD_MAX]` = ");
+		int lo, hi, smax;
+
+		assert_non_null(p);
+		assert_int_equal(sscanf(p,
+					"`[RDC_COORD_MIN, RDC_COORD_MAX]` = "
+					"[%d, %d]",
+					&lo, &hi),
+				 2);
+		assert_int_equal(lo, RDC_COORD_MIN);
+		assert_int_equal(hi, RDC_COORD_MAX);
+		p = strstr(cmd, "`[0, RDC_SIZE_MAX]` = [0, ");
+		assert_non_null(p);
+		assert_int_equal(
+			sscanf(p, "`[0, RDC_SIZE_MAX]` = [0, %d]", &smax), 1);
+		assert_int_equal(smax, RDC_SIZE_MAX);
+	}
+	free(cmd);
+}
+
 /* ---- The README's example ------------------------------------------------ */
 
 static void test_readme_example(void **state)
@@ -773,6 +948,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_rdl_statements),
 		cmocka_unit_test(test_rdl_names_case),
 		cmocka_unit_test(test_options),
+		cmocka_unit_test(test_constants),
 		cmocka_unit_test(test_readme_example),
 	};
 	char self[400];
