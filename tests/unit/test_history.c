@@ -15,8 +15,11 @@
 
 #include <cmocka.h>
 
+#include <unistd.h>
+
 #include "dp.h"
 #include "rdc.h"
+#include "rdc_priv.h" /* rdc_rec_*: what rdcd --record does */
 
 #define GOLDEN_LIST "tests/golden/golden.txt"
 #define SCENE_DIR   "tests/golden/scenes"
@@ -116,6 +119,83 @@ static void test_history_fill_xor_text(void **state)
 	/* the history outlives its device */
 	assert_int_equal(rdc_history_count(h), 3);
 	rdc_history_close(h);
+}
+
+/*
+ * The same scene recorded as an rdcd trace and replayed with a history:
+ * the same three writes at the same cycles, each with its trace record;
+ * and the trace's writes against the script's: no divergence.
+ */
+static void test_history_trace(void **state)
+{
+	static const char scene[] = "mode 640x480 xrgb8888\n"
+				    "fg #ff0000\nfill 8 8 32 32\n"
+				    "rop xor\nblit 8 8 12 10 16 16\n"
+				    "rop copy\nfg #ffffff\ntext 12 10 \"A\"\n";
+	char path[] = "/tmp/rdc-history-XXXXXX";
+	struct rdc_history_entry es[3], et;
+	struct rdc_replay_result rr;
+	rdc_history *hs = NULL, *ht = NULL, *ws = NULL, *wt = NULL;
+	struct rdc_rec *rec;
+	rdc_dev *dev, *rdev = NULL;
+	size_t i = 0;
+	int fd;
+
+	(void)state;
+	fd = mkstemp(path);
+	assert_true(fd >= 0);
+	close(fd);
+	/* the script, recorded, with both kinds of history */
+	assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
+	/* (first: the recorder stands in front of the sim: backend) */
+	assert_int_equal(rdc_history_open(dev, 14, 12, 1, 1, 0, &hs), 0);
+	rec = rdc_rec_open(path, 4u << 20);
+	assert_non_null(rec);
+	rdc_rec_attach(rec, dev);
+	run_text(dev, scene);
+	assert_int_equal(rdc_rec_close(rec, dev), 0);
+	rdc_close(dev);
+	assert_int_equal(rdc_history_count(hs), 3);
+	for (i = 0; i < 3; i++)
+		get(hs, i, &es[i]);
+
+	assert_int_equal(
+		rdc_replay_history(path, 14, 12, 1, 1, 0, &ht, &rr, &rdev), 0);
+	assert_non_null(ht);
+	assert_int_equal(rr.mismatches, 0);
+	assert_int_equal(rdc_history_count(ht), 3);
+	for (i = 0; i < 3; i++) {
+		get(ht, i, &et);
+		assert_int_equal(et.opcode, es[i].opcode);
+		assert_int_equal(et.cycle, es[i].cycle);
+		assert_int_equal(et.before, es[i].before);
+		assert_int_equal(et.after, es[i].after);
+		/* a record of the trace, not past its end */
+		assert_true(et.line >= 1 && et.line <= rr.records);
+	}
+	rdc_close(rdev);
+	rdc_history_close(ht);
+
+	/* the trace against the script: the same writes */
+	assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
+	assert_int_equal(
+		rdc_history_open(dev, 0, 0, 0, 0, RDC_HISTORY_WRITES, &ws), 0);
+	run_text(dev, scene);
+	rdc_close(dev);
+	assert_int_equal(rdc_replay_history(path, 0, 0, 0, 0,
+					    RDC_HISTORY_WRITES, &wt, NULL,
+					    NULL),
+			 0);
+	assert_true(rdc_history_write_count(wt) > 3);
+	assert_int_equal(rdc_history_first_diff(ws, wt, &i), 0);
+	/* a trace that is not one: no history */
+	assert_true(rdc_replay_history("/nonexistent/trace", 0, 0, 1, 1, 0, &ht,
+				       NULL, NULL) < 0);
+	assert_null(ht);
+	rdc_history_close(hs);
+	rdc_history_close(ws);
+	rdc_history_close(wt);
+	unlink(path);
 }
 
 /* Nothing outside the watched pixels is recorded. */
@@ -418,6 +498,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_history_fill_xor_text),
 		cmocka_unit_test(test_history_untouched),
+		cmocka_unit_test(test_history_trace),
 		cmocka_unit_test(test_history_torn),
 		cmocka_unit_test(test_history_list_chain),
 		cmocka_unit_test(test_history_subbyte),

@@ -778,6 +778,27 @@ static inline int rdc_history_write_get(rdc_history *h, size_t i,
  * they made the same writes.
  */
 int rdc_history_first_diff(rdc_history *a, rdc_history *b, size_t *index);
+/*
+ * rdc_replay_file with a history open (rdc_history_open's x, y, w, h and
+ * flags) from the trace's first record to its last, power cycles
+ * included; an entry's `line` is then the trace record that was replaying
+ * (1-based, as rdc_replay_result counts them).  *hist is NULL on an error.
+ */
+int rdc_replay_history_sized(const char *path, uint32_t x, uint32_t y,
+			     uint32_t w, uint32_t h, uint32_t flags,
+			     rdc_history **hist, struct rdc_replay_result *res,
+			     rdc_dev **dev_out);
+static inline int rdc_replay_history(const char *path, uint32_t x, uint32_t y,
+				     uint32_t w, uint32_t h, uint32_t flags,
+				     rdc_history **hist,
+				     struct rdc_replay_result *res,
+				     rdc_dev **dev_out)
+{
+	if (res)
+		res->size = sizeof(*res);
+	return rdc_replay_history_sized(path, x, y, w, h, flags, hist, res,
+					dev_out);
+}
 /* Stop watching and free it (also after rdc_close of its device). */
 void rdc_history_close(rdc_history *h);
 

@@ -326,6 +326,21 @@ int rdc_history_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
 	return 0;
 }
 
+int rdc_history_attach(rdc_history *h, rdc_dev *dev)
+{
+	struct rdc_hw *hw = rdc_sim_hw(dev);
+
+	if (!h || h->dev || !hw)
+		return RDC_E_INVAL;
+	if (dev->hist || hw->vram_hook)
+		return RDC_E_BUSY;
+	h->dev = dev;
+	h->hw = hw;
+	dev->hist = h;
+	rdc_hw_set_vram_hook(hw, hist_hook, h);
+	return 0;
+}
+
 int rdc_history_set_limit(rdc_history *h, size_t max_entries)
 {
 	if (!h || !max_entries)

@@ -166,6 +166,9 @@ struct rdc_dev {
 
 /* The device closes under its history (history.c). */
 void rdc_history_detach(rdc_dev *dev);
+/* A detached history goes on on another sim: device (a replayed trace's
+ * power cycle): RDC_E_INVAL if it is attached or dev is not sim:. */
+int rdc_history_attach(rdc_history *h, rdc_dev *dev);
 
 /* Run a wait with one term (core.c). */
 int rdc_wait_one(rdc_dev *dev, enum rdc_wait_test kind, uint32_t reg,

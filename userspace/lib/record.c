@@ -364,6 +364,9 @@ struct replay {
 	uint8_t *buf;
 	uint64_t off; /* bytes read */
 	bool cut;     /* the file ended inside a record */
+	/* rdc_replay_history: the history to keep across power cycles */
+	const uint32_t *watch; /* x, y, w, h, flags; NULL: none */
+	rdc_history *hist;
 };
 
 /* n bytes, or RDC_E_PARSE with p->cut set when the file ends first. */
@@ -412,6 +415,12 @@ static int rp_open(struct replay *p)
 	if (ret)
 		return ret == RDC_E_URI ? RDC_E_PARSE : ret;
 	rdc_hw_set_frame_fn(rdc_sim_hw(p->dev), rp_frame, p->res);
+	if (p->hist)
+		return rdc_history_attach(p->hist, p->dev);
+	if (p->watch)
+		return rdc_history_open(p->dev, p->watch[0], p->watch[1],
+					p->watch[2], p->watch[3], p->watch[4],
+					&p->hist);
 	return 0;
 }
 
@@ -502,10 +511,11 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 }
 
 static int replay_file(const char *path, struct rdc_replay_result *res,
-		       rdc_dev **dev_out)
+		       rdc_dev **dev_out, const uint32_t *watch,
+		       rdc_history **hist)
 {
 	struct rdc_replay_result dummy;
-	struct replay p = { 0 };
+	struct replay p = { .watch = watch };
 	uint8_t hdr[REC_MAGIC_LEN + 8], rec[9];
 	int ret;
 
@@ -569,6 +579,9 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 				p.res->mismatches++;
 			break;
 		}
+		/* pixel history: the record that is replaying (1-based) */
+		p.dev->src_line = (uint32_t)RDC_MIN(p.res->records + 1,
+						    (uint64_t)UINT32_MAX);
 		ret = rp_one(&p, rec[0], t);
 		if (ret && p.cut) {
 			/* the last record is incomplete: not replayed */
@@ -590,6 +603,10 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 		*dev_out = p.dev;
 	else
 		rdc_close(p.dev);
+	if (!ret && hist)
+		*hist = p.hist;
+	else
+		rdc_history_close(p.hist);
 	return ret;
 }
 
@@ -598,8 +615,26 @@ int rdc_replay_file_sized(const char *path, struct rdc_replay_result *res,
 			  rdc_dev **dev_out)
 {
 	struct rdc_replay_result full;
-	int ret = replay_file(path, &full, dev_out);
+	int ret = replay_file(path, &full, dev_out, NULL, NULL);
 
+	if (res)
+		rdc_struct_out(res, &full, sizeof(full));
+	return ret;
+}
+
+int rdc_replay_history_sized(const char *path, uint32_t x, uint32_t y,
+			     uint32_t w, uint32_t h, uint32_t flags,
+			     rdc_history **hist, struct rdc_replay_result *res,
+			     rdc_dev **dev_out)
+{
+	struct rdc_replay_result full;
+	const uint32_t watch[5] = { x, y, w, h, flags };
+	int ret;
+
+	if (!hist)
+		return RDC_E_INVAL;
+	*hist = NULL;
+	ret = replay_file(path, &full, dev_out, watch, hist);
 	if (res)
 		rdc_struct_out(res, &full, sizeof(full));
 	return ret;

@@ -24,7 +24,9 @@ const char rdcctl_history_usage[] =
 	"  diff A.rdl B.rdl [-o D.png]   run both and report the first\n"
 	"                                command and cycle where VRAM\n"
 	"                                differs, the region of the frames\n"
-	"                                that differs, and a PNG of it\n";
+	"                                that differs, and a PNG of it\n"
+	"                                (each FILE a script or a trace of\n"
+	"                                rdcd --record: then its records)\n";
 
 static const char *const rop_names[16] = {
 	"clear",	 "and",		"and-reverse", "copy",
@@ -57,6 +59,7 @@ struct hopts {
 	uint32_t x, y, w, h;
 	size_t limit;
 	int json;
+	int trace; /* the input is an rdcd trace: `line` is its record */
 };
 
 /* "X,Y", "X,Y,W,H" or "screen". */
@@ -96,7 +99,9 @@ static void print_entry(const struct hopts *o, size_t i,
 
 	printf("(%u,%u) #%zu cycle %" PRIu64 " frame %" PRIu64 ": ", e->x, e->y,
 	       i + 1, e->cycle, e->frame);
-	if (e->line)
+	if (e->line && o->trace)
+		printf("%s record %u ", o->script, e->line);
+	else if (e->line)
 		printf("%s:%u ", o->script, e->line);
 	printf("%s", op_str(e->opcode, ob, sizeof(ob)));
 	if (e->source == RDC_HISTORY_SRC_HOST) {
@@ -153,7 +158,8 @@ static void json_entry(const struct hopts *o, const struct rdc_history_entry *e,
 			else
 				putchar(*p);
 		}
-		printf("\", \"line\": %u, ", e->line);
+		printf("\", \"%s\": %u, ", o->trace ? "record" : "line",
+		       e->line);
 	}
 	if (e->source == RDC_HISTORY_SRC_LIST) {
 		printf("\"cmd_addr\": %u, \"calls\": [", e->cmd_addr);
@@ -204,32 +210,83 @@ static void save_frame(rdc_dev *dev, const char *path)
 	free(pix);
 }
 
-static int cmd_history(const struct hopts *o)
+/* An rdcd trace (rdcd --record) rather than a script? */
+static int is_trace(const char *path)
 {
+	FILE *f = fopen(path, "rb");
+	char m[8];
+	int t = f && fread(m, 1, sizeof(m), f) == sizeof(m) &&
+		!memcmp(m, "RDCTRACE", sizeof(m));
+
+	if (f)
+		fclose(f);
+	return t;
+}
+
+/*
+ * Run a script on a device of `uri`, or replay a trace on the fresh sim:
+ * it brings, with a history open.  A script's device error is no failure:
+ * its history up to there is what is wanted.  *ret_run gets it.
+ */
+static int open_run(const char *uri, const char *path, const uint32_t *spec,
+		    uint32_t flags, size_t limit, rdc_history **h,
+		    rdc_dev **dev, int *ret_run)
+{
+	int ret;
+
+	*ret_run = 0;
+	if (is_trace(path)) {
+		struct rdc_replay_result rr;
+
+		ret = rdc_replay_history(path, spec[0], spec[1], spec[2],
+					 spec[3], flags, h, &rr, dev);
+		if (ret)
+			rdcctl_error(path, ret);
+		else if (rr.truncated)
+			fprintf(stderr,
+				"rdcctl: %s: truncated trace, "
+				"replayed up to its last complete "
+				"record\n",
+				path);
+		return ret;
+	}
+	ret = rdc_open(uri, dev);
+	if (ret) {
+		rdcctl_open_error(uri, ret);
+		return ret;
+	}
+	ret = rdc_history_open(*dev, spec[0], spec[1], spec[2], spec[3], flags,
+			       h);
+	if (ret) {
+		rdcctl_error("history", ret);
+		rdc_close(*dev);
+		*dev = NULL;
+		return ret;
+	}
+	if (limit)
+		rdc_history_set_limit(*h, limit);
+	*ret_run = run_file(*dev, path);
+	if (*ret_run && *ret_run != RDC_E_DEVICE && *ret_run != RDC_E_HALTED) {
+		rdc_history_close(*h);
+		rdc_close(*dev);
+		*h = NULL;
+		*dev = NULL;
+		return *ret_run;
+	}
+	return 0;
+}
+
+static int cmd_history(struct hopts *o)
+{
+	const uint32_t spec[4] = { o->x, o->y, o->w, o->h };
 	rdc_history *h = NULL;
-	rdc_dev *dev;
+	rdc_dev *dev = NULL;
 	size_t n;
 	int ret;
 
-	ret = rdc_open(o->uri, &dev);
-	if (ret) {
-		rdcctl_open_error(o->uri, ret);
+	o->trace = is_trace(o->script);
+	if (open_run(o->uri, o->script, spec, 0, o->limit, &h, &dev, &ret))
 		return 1;
-	}
-	ret = rdc_history_open(dev, o->x, o->y, o->w, o->h, 0, &h);
-	if (ret) {
-		rdcctl_error("history", ret);
-		rdc_close(dev);
-		return 1;
-	}
-	if (o->limit)
-		rdc_history_set_limit(h, o->limit);
-	ret = run_file(dev, o->script);
-	if (ret && ret != RDC_E_DEVICE && ret != RDC_E_HALTED) {
-		rdc_history_close(h);
-		rdc_close(dev);
-		return 1;
-	}
 	if (o->png)
 		save_frame(dev, o->png);
 	n = rdc_history_count(h);
@@ -264,6 +321,7 @@ static int cmd_history(const struct hopts *o)
 
 struct side {
 	const char *path;
+	int trace;
 	rdc_history *h; /* kept after its device closes */
 	struct rdc_history_write *w;
 	size_t n;
@@ -274,26 +332,16 @@ struct side {
 
 static int side_run(const char *uri, struct side *s)
 {
+	static const uint32_t none[4] = { 0, 0, 0, 0 };
 	rdc_history *h = NULL;
-	rdc_dev *dev;
+	rdc_dev *dev = NULL;
 	int ret;
 
-	ret = rdc_open(uri, &dev);
-	if (ret) {
-		rdcctl_open_error(uri, ret);
+	s->trace = is_trace(s->path);
+	ret = open_run(uri, s->path, none, RDC_HISTORY_WRITES, 0, &h, &dev,
+		       &s->ret);
+	if (ret)
 		return ret;
-	}
-	ret = rdc_history_open(dev, 0, 0, 0, 0, RDC_HISTORY_WRITES, &h);
-	if (ret) {
-		rdcctl_error("diff", ret);
-		rdc_close(dev);
-		return ret;
-	}
-	s->ret = run_file(dev, s->path);
-	if (s->ret && s->ret != RDC_E_DEVICE && s->ret != RDC_E_HALTED) {
-		ret = s->ret;
-		goto out;
-	}
 	s->n = rdc_history_write_count(h);
 	s->w = calloc(s->n + 1, sizeof(*s->w));
 	if (!s->w) {
@@ -334,7 +382,9 @@ static void diff_write(const char *tag, const struct side *s, size_t i)
 		return;
 	}
 	printf("cycle %" PRIu64 " ", e->cycle);
-	if (e->line)
+	if (e->line && s->trace)
+		printf("%s record %u ", s->path, e->line);
+	else if (e->line)
 		printf("%s:%u ", s->path, e->line);
 	printf("%s", op_str(e->opcode, ob, sizeof(ob)));
 	if (e->source != RDC_HISTORY_SRC_HOST)
