@@ -11,25 +11,25 @@
 #include <linux/platform_device.h>
 #include <linux/version.h>
 
+/* rdcfb_main.c: takes the device down */
+void rdcfb_remove(struct platform_device *pdev);
+
 /*
- * RDCFB_PLATFORM_REMOVE(name, fn) defines name, the platform driver's
- * .remove, calling void fn(struct platform_device *).  From 6.11 .remove
- * returns void; before, it returns an int that the driver core ignores
- * (6.3 to 6.10 also had .remove_new, which returns void).
+ * The platform driver's .remove: from 6.11 it returns void; before, an
+ * int that the driver core ignores (6.3 to 6.10 also had .remove_new,
+ * which returns void).
  */
 #if LINUX_VERSION_CODE >= KERNEL_VERSION(6, 11, 0)
-#define RDCFB_PLATFORM_REMOVE(name, fn) \
-	static void name(struct platform_device *pdev) \
-	{ \
-		fn(pdev); \
-	}
+static inline void rdcfb_platform_remove(struct platform_device *pdev)
+{
+	rdcfb_remove(pdev);
+}
 #else
-#define RDCFB_PLATFORM_REMOVE(name, fn) \
-	static int name(struct platform_device *pdev) \
-	{ \
-		fn(pdev); \
-		return 0; \
-	}
+static inline int rdcfb_platform_remove(struct platform_device *pdev)
+{
+	rdcfb_remove(pdev);
+	return 0;
+}
 #endif
 
 #endif /* RDCFB_COMPAT_H */

@@ -225,7 +225,7 @@ err_chip:
  * references).  Their ioctls meanwhile answer -ENODEV.  The module itself
  * cannot go while a client holds the device: fb_open pins it.
  */
-static void rdcfb_remove(struct platform_device *pdev)
+void rdcfb_remove(struct platform_device *pdev)
 {
 	struct fb_info *info = platform_get_drvdata(pdev);
 	struct rdcfb_par *par = info->par;
@@ -235,7 +235,6 @@ static void rdcfb_remove(struct platform_device *pdev)
 	rdcfb_gpio_unregister(par->chip);
 	unregister_framebuffer(info);
 }
-RDCFB_PLATFORM_REMOVE(rdcfb_platform_remove, rdcfb_remove)
 
 static struct platform_driver rdcfb_driver = {
 	.probe = rdcfb_probe,

@@ -42,13 +42,22 @@ lay_dkms_trees() {
 check "dkms's trees laid over /usr/src, /var/lib/dkms, /lib/modules/$K" \
 	lay_dkms_trees
 
+# shows PATTERN CMD...: CMD's output, shown, has a line matching PATTERN
+shows() {
+	pat=$1
+	shift
+	out=$("$@") || return 1
+	printf '%s\n' "$out"
+	printf '%s\n' "$out" | grep -q "$pat"
+}
+
 dmesg -C
 check "dkms status: rdcfb/$VER installed for $K" \
-	sh -c "dkms status -m rdcfb -v '$VER' -k '$K' | tee /dev/stderr | grep -q ': installed'"
+	shows ': installed' dkms status -m rdcfb -v "$VER" -k "$K"
 check "modprobe finds rdcfb.ko under updates/dkms/" \
-	sh -c "modinfo -n rdcfb | tee /dev/stderr | grep -q '^/lib/modules/$K/updates/dkms/rdcfb\.ko'"
+	shows "^/lib/modules/$K/updates/dkms/rdcfb\.ko" modinfo -n rdcfb
 check "modinfo: version magic of $K" \
-	sh -c "modinfo -F vermagic rdcfb | tee /dev/stderr | grep -q '^$K '"
+	shows "^$K " modinfo -F vermagic rdcfb
 check "modprobe rdcfb loads it" modprobe rdcfb clock=stepped
 check "the loaded module is dkms's build (srcversion)" \
 	test "$(cat /sys/module/rdcfb/srcversion 2>/dev/null)" = \
