@@ -58,7 +58,9 @@ printf '\033[?25l\033[2J\033[H' >$TTY
 check "the cleared console: the RDC-1's frame is black" \
 	"$DRMP" --ink "$OBS" 0,0,0,0
 crc0=$("$DRMP" --crc "$OBS")
-# the character cell: the frame's size over the console's rows and columns
+# the character cell: the frame's size (the fbdev emulation takes the
+# preferred mode, rdcd's --mode 1024x768 in udl_up) over the console's
+# rows and columns
 set -- $(stty -F $TTY size) 0 0
 rows=$1
 cols=$2
