@@ -248,7 +248,7 @@ static rdc_noinline void runs_watched(const struct rdc_hw *hw,
 	for (i = 0; i < n; i++)
 		hw->vram_hook(hw->vram_hook_ctx, t, r[i].addr, r[i].len,
 			      r[i].count, r[i].count > 1 ? stride : 0,
-			      RDC_VRAM_BY_DP);
+			      RDC_VRAM_BY_DP | (i ? RDC_VRAM_MORE : 0));
 }
 
 uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,

@@ -38,10 +38,13 @@ struct rdc_hw;
  * host aperture (who = 1), whose bus access ended at `time`.  Called
  * before the bytes change: the DP writes them after the port call that
  * charged them returns and before its next port call; the host's are
- * copied right after the call.  Nothing may be written from the hook.
+ * copied right after the call.  RDC_VRAM_MORE in `who`: another run of
+ * the same port call (rdc_port_runs), whose runs are all written after
+ * it returns.  Nothing may be written from the hook.
  */
 #define RDC_VRAM_BY_DP	 0u
 #define RDC_VRAM_BY_HOST 1u
+#define RDC_VRAM_MORE	 2u
 typedef void (*rdc_vram_hook_fn)(void *ctx, uint64_t time, uint32_t addr,
 				 uint32_t len, uint32_t count, uint32_t stride,
 				 unsigned int who);

@@ -493,6 +493,122 @@ static void test_history_golden_unchanged(void **state)
 	assert_int_equal(failed, 0);
 }
 
+/* Pixel (x, y) of the framebuffer the registers describe now. */
+static uint32_t fb_pixel(rdc_dev *dev, uint32_t x, uint32_t y)
+{
+	uint32_t base = 0, stride = 0, fmt = 0, bpp;
+	uint8_t b[4] = { 0 };
+	uint64_t bit;
+
+	assert_int_equal(rdc_reg_read(dev, RDC_REG_FB_BASE, &base), 0);
+	assert_int_equal(rdc_reg_read(dev, RDC_REG_FB_STRIDE, &stride), 0);
+	assert_int_equal(rdc_reg_read(dev, RDC_REG_FB_FORMAT, &fmt), 0);
+	bpp = rdc_format_bpp(fmt);
+	bit = (uint64_t)x * bpp;
+	assert_int_equal(rdc_vram_read(dev,
+				       base + y * stride + (uint32_t)(bit / 8),
+				       b, (bpp + 7) / 8),
+			 0);
+	if (bpp < 8)
+		return (uint32_t)(b[0] >> (8 - bpp - bit % 8)) &
+		       ((1u << bpp) - 1);
+	return ((uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 |
+		(uint32_t)b[3] << 24) &
+	       (bpp < 32 ? (1u << bpp) - 1 : ~0u);
+}
+
+/*
+ * Every golden scene (every primitive, format and path of the DP) with a
+ * block of the screen watched: each pixel's entries chain (each `before`
+ * is the last `after`, from the zeroed VRAM on), and the last `after` is
+ * what VRAM holds at the end.  A write the history missed breaks one.
+ */
+#define CHAIN_X 100u
+#define CHAIN_Y 60u
+#define CHAIN_W 64u
+#define CHAIN_H 48u
+static void test_history_chain_golden(void **state)
+{
+	FILE *f = fopen(GOLDEN_LIST, "r");
+	char line[256];
+	size_t scenes = 0, failed = 0, checked = 0;
+	static uint32_t last[CHAIN_W * CHAIN_H];
+	static uint32_t fmt[CHAIN_W * CHAIN_H];
+
+	(void)state;
+	assert_non_null(f);
+	while (fgets(line, sizeof(line), f)) {
+		char name[64], path[160];
+		unsigned int crc;
+		unsigned long long cyc;
+		struct rdc_history_entry e;
+		rdc_history *h = NULL;
+		rdc_dev *dev;
+		size_t n, bad = 0;
+		uint32_t w = 0, hh = 0, mode_fmt = 0;
+
+		if (line[0] == '#' ||
+		    sscanf(line, "%63s %x %llu", name, &crc, &cyc) != 3)
+			continue;
+		snprintf(path, sizeof(path), SCENE_DIR "/%s.rdl", name);
+		dev = open_sim();
+		assert_int_equal(rdc_history_open(dev, CHAIN_X, CHAIN_Y,
+						  CHAIN_W, CHAIN_H, 0, &h),
+				 0);
+		assert_int_equal(rdc_history_set_limit(h, 1u << 21), 0);
+		assert_int_equal(rdc_script_run_file(dev, path, &res), 0);
+		scenes++;
+		n = rdc_history_count(h);
+		assert_int_equal(rdc_history_dropped(h), 0);
+		memset(last, 0, sizeof(last));
+		memset(fmt, 0xff, sizeof(fmt));
+		for (size_t i = 0; i < n; i++) {
+			size_t k;
+
+			get(h, i, &e);
+			k = (e.y - CHAIN_Y) * CHAIN_W + (e.x - CHAIN_X);
+			/* a new format reads the same bytes otherwise */
+			if (fmt[k] != e.format && fmt[k] != 0xffffffffu)
+				last[k] = e.before;
+			fmt[k] = e.format;
+			if (e.before != last[k] && bad++ < 3)
+				print_error("%s: (%u,%u) entry %zu line %u op "
+					    "0x%x: before 0x%x, last after "
+					    "0x%x\n",
+					    name, e.x, e.y, i, e.line, e.opcode,
+					    e.before, last[k]);
+			last[k] = e.after;
+		}
+		assert_int_equal(
+			rdc_reg_read(dev, RDC_REG_FB_FORMAT, &mode_fmt), 0);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_H_DISPLAY, &w), 0);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_V_DISPLAY, &hh), 0);
+		for (uint32_t y = CHAIN_Y; y < CHAIN_Y + CHAIN_H && y < hh; y++)
+			for (uint32_t x = CHAIN_X;
+			     x < CHAIN_X + CHAIN_W && x < w; x++) {
+				size_t k =
+					(y - CHAIN_Y) * CHAIN_W + (x - CHAIN_X);
+				uint32_t v = fb_pixel(dev, x, y);
+
+				if (fmt[k] != 0xffffffffu && fmt[k] != mode_fmt)
+					continue;
+				checked++;
+				if (v != last[k] && bad++ < 3)
+					print_error("%s: (%u,%u) holds 0x%x, "
+						    "history ends at 0x%x\n",
+						    name, x, y, v, last[k]);
+			}
+		if (bad)
+			failed++;
+		rdc_history_close(h);
+		rdc_close(dev);
+	}
+	fclose(f);
+	assert_true(scenes > 0);
+	assert_true(checked > 0);
+	assert_int_equal(failed, 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -506,6 +622,7 @@ int main(void)
 		cmocka_unit_test(test_history_api),
 		cmocka_unit_test(test_history_first_diff),
 		cmocka_unit_test(test_history_golden_unchanged),
+		cmocka_unit_test(test_history_chain_golden),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

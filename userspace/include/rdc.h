@@ -683,9 +683,10 @@ int rdc_image_png_read(const char *path, uint32_t **xrgb, uint32_t *w,
 /* ---- Pixel history (docs/history.md) ------------------------------------- */
 /*
  * Every VRAM write that touches a watched rectangle of the screen (the
- * framebuffer scanout has latched), one entry per pixel per write, in the
- * order the writes land.  sim: only (RDC_E_NOSYS elsewhere); off until
- * rdc_history_open, and then about sizeof(struct rdc_history_entry) + 16
+ * framebuffer as FB_BASE, FB_STRIDE, FB_FORMAT and the mode hold it at the
+ * write, which the next vblank latches), one entry per pixel per write,
+ * in the order the writes land.  sim: only (RDC_E_NOSYS elsewhere); off
+ * until rdc_history_open, and then sizeof(struct rdc_history_entry) + 8
  * bytes an entry (RDC_HISTORY_LIMIT_DEFAULT entries, then they are
  * counted in rdc_history_dropped).
  */

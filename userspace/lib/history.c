@@ -176,10 +176,10 @@ static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 		     uint64_t a, uint64_t len)
 {
 	const struct rdc_crtc *c = &h->hw->crtc;
-	uint64_t base = c->cur_base, st = c->cur_stride, end = a + len;
-	uint32_t bpp = rdc_format_bpp(c->cur_format);
-	uint32_t x1 = RDC_MIN(h->x1, c->cur.h_display);
-	uint32_t y1 = RDC_MIN(h->y1, c->cur.v_display);
+	uint64_t base = c->fb_base, st = c->fb_stride, end = a + len;
+	uint32_t bpp = rdc_format_bpp(c->fb_format);
+	uint32_t x1 = RDC_MIN(h->x1, c->shadow.h_display);
+	uint32_t y1 = RDC_MIN(h->y1, c->shadow.v_display);
 	uint64_t y, ylo, yhi;
 
 	if (!bpp || !st || end <= base || h->x0 >= x1 || h->y0 >= y1)
@@ -216,7 +216,7 @@ static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 			r->e = *ctx;
 			r->e.x = (uint32_t)x;
 			r->e.y = (uint32_t)y;
-			r->e.format = c->cur_format;
+			r->e.format = c->fb_format;
 			r->addr = (uint32_t)at;
 			r->bpp = (uint8_t)bpp;
 			r->shift = bpp < 8 ? (uint8_t)(8 - bpp - bit % 8) : 0;
@@ -237,9 +237,12 @@ static void hist_hook(void *ctx, uint64_t time, uint32_t addr, uint32_t len,
 	const struct rdc_crtc *c = &h->hw->crtc;
 	struct rdc_history_entry e = { 0 };
 	uint64_t last, lo, hi;
-	uint32_t bpp = rdc_format_bpp(c->cur_format);
+	uint32_t bpp = rdc_format_bpp(c->fb_format);
 
-	hist_settle(h);
+	/* the runs of one rdc_port_runs land together, after all of them */
+	if (!(who & RDC_VRAM_MORE))
+		hist_settle(h);
+	who &= RDC_VRAM_BY_HOST;
 	if (!count || !len)
 		return;
 	if (h->flags & RDC_HISTORY_WRITES) {
@@ -271,11 +274,12 @@ static void hist_hook(void *ctx, uint64_t time, uint32_t addr, uint32_t len,
 		return;
 	/* the access's extent against the watched bytes' */
 	last = (uint64_t)addr + (uint64_t)(count - 1) * stride + len;
-	lo = c->cur_base + (uint64_t)h->y0 * c->cur_stride +
+	lo = c->fb_base + (uint64_t)h->y0 * c->fb_stride +
 	     (uint64_t)h->x0 * bpp / 8;
-	hi = c->cur_base +
-	     (uint64_t)(RDC_MIN(h->y1, c->cur.v_display) - 1) * c->cur_stride +
-	     ((uint64_t)RDC_MIN(h->x1, c->cur.h_display) * bpp + 7) / 8;
+	hi = c->fb_base +
+	     (uint64_t)(RDC_MIN(h->y1, c->shadow.v_display) - 1) *
+		     c->fb_stride +
+	     ((uint64_t)RDC_MIN(h->x1, c->shadow.h_display) * bpp + 7) / 8;
 	if (last <= lo || addr >= hi)
 		return;
 	if (!e.size)
