@@ -206,6 +206,10 @@ static void test_rdl_statements(void **state)
 		"convolve 0 0 20 20 8 8 gauss\n",
 		"convolve 0 0 20 20 8 8 sobel 2 10\n",
 		"convolve 0 0 20 20 8 8 0 -1 0 -1 4 -1 0 -1 0 1 0 abs\n",
+		/* DIV and BIAS are optional after a kernel too (rdl.md) */
+		"convolve 0 0 20 20 8 8 0 0 0 0 1 0 0 0 0\n",
+		"convolve 0 0 20 20 8 8 0 -1 0 -1 4 -1 0 -1 0 abs\n",
+		"convolve 0 0 20 20 8 8 laplace abs\n",
 		"threshold 0 0 10 10 128 red\n",
 		"histogram-plot 0x100000 0 100 64 40\n",
 	};
@@ -216,6 +220,7 @@ static void test_rdl_statements(void **state)
 		"convolve 0 0 20 20 8 8 blur\n",
 		"convolve 0 0 20 20 8 8 1 1 1 1 1 1 1 1 300 9\n",
 		"convolve 0 0 20 20 8 8 sobel abs\n",
+		"convolve 0 0 20 20 8 8 0 0 0 0 1 0 0 0\n",
 		"encode jpeg 0x100000 0 0 8 8\n",
 		"encode rle 0x100000 0 0 8 8 purple\n",
 	};
@@ -229,6 +234,27 @@ static void test_rdl_statements(void **state)
 	for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++)
 		if (run(dev, bad[i], &res) != RDC_E_PARSE)
 			fail_msg("'%s' was accepted", bad[i]);
+	/* a kernel without DIV is the kernel with DIV 1, BIAS 0 */
+	{
+		uint32_t w0[8], w1[8];
+
+		assert_int_equal(
+			run(dev,
+			    "list 0x200000\n"
+			    "convolve 0 0 20 20 8 8 1 2 1 2 4 2 1 2 1\n"
+			    "end\n"
+			    "list 0x200100\n"
+			    "convolve 0 0 20 20 8 8 1 2 1 2 4 2 1 2 1 1 0\n"
+			    "end\n",
+			    &res),
+			0);
+		assert_int_equal(rdc_vram_read(dev, 0x200000, w0, sizeof(w0)),
+				 0);
+		assert_int_equal(rdc_vram_read(dev, 0x200100, w1, sizeof(w1)),
+				 0);
+		assert_int_equal(RDC_CMD_OP(w0[0]), RDC_OP_CONVOLVE);
+		assert_memory_equal(w0, w1, sizeof(w0));
+	}
 	/* a rectangle off the screen */
 	assert_int_equal(run(dev, "encode rle 0x100000 300 0 40 8\n", &res),
 			 RDC_E_RANGE);

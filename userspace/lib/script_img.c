@@ -226,11 +226,11 @@ int rdl_st_convolve(struct rdl *r, uint32_t op)
 		fl |= rdl_kernels[n].flags;
 		i = 8;
 	} else {
-		if (end < 17)
+		if (end < 16) /* the keyword, 6 numbers, 9 coefficients */
 			return rdl_err(r, RDC_E_PARSE,
 				       "convolve: a kernel name "
 				       "(box gauss sharpen laplace emboss "
-				       "sobel) or 9 coefficients and DIV");
+				       "sobel) or 9 coefficients");
 		for (int t = 0; t < 9; t++, i++) {
 			ret = rdl_int(r, i, -128, 127, &v);
 			if (ret)
