@@ -21,7 +21,8 @@
 # --all-kernels (what `make check` uses): the tests on the default
 # kernel, then, booted once more, the tests that exercise what is built
 # per kernel on the newest: those named rdcfb-* and those loading rdcfb
-# or gpio-sim (their "# vm-module:" lines).  With one kernel only, once.
+# or gpio-sim (their "# vm-module:" lines).  With one kernel only, or
+# with RDC_VM_KERNEL set, once.
 # With --auto a machine that cannot run it (not root with packages
 # missing, not x86_64, RDC_NO_VM set) is skipped with a message and exit
 # status 0; without it, that is a failure.
