@@ -27,8 +27,7 @@ extern "C" {
 #endif
 
 #define RDC_DEFAULT_CORE_HZ 100000000u
-/* A host wait's default budget: ten simulated seconds of the default core
- * clock. */
+/* A host wait's default budget: ten simulated seconds at the default clock */
 #define RDC_WAIT_BUDGET_DEFAULT (10ull * RDC_DEFAULT_CORE_HZ)
 
 struct rdc_hw;
