@@ -384,6 +384,7 @@ static void web_pump(struct web_sink *w, struct web_conn *c, uint64_t now)
 		c->status_ns = now;
 	} else if (c->dirty) {
 		rect = web_take_band(w, c, r);
+		c->sync_due |= rect;
 	}
 	if (!jn && !rect &&
 	    (c->sync_due ||
@@ -395,7 +396,6 @@ static void web_pump(struct web_sink *w, struct web_conn *c, uint64_t now)
 	}
 	pthread_mutex_unlock(&w->mu);
 	if (rect) {
-		c->sync_due = true;
 		if (!web_send_rect(w, c, r))
 			c->dead = true;
 	} else if (jn && !conn_ws_send(c, WEB_WS_TEXT, json, jn)) {
@@ -903,13 +903,10 @@ static int web_frame(rdc_sink *s, const struct rdc_frame *f)
 		for (uint32_t y = 0; y < f->height; y++)
 			memcpy(fb + (size_t)y * f->width,
 			       f->xrgb + (size_t)y * f->stride, row);
+		/* (no room for a viewer's damage: its thread tries again) */
 		for (struct web_conn *c = w->conns; c; c = c->next)
-			if (c->authed) {
-				if (conn_damage_size(w, c))
-					conn_damage_all(w, c);
-				else
-					c->dead = true;
-			}
+			if (c->authed && conn_damage_size(w, c))
+				conn_damage_all(w, c);
 		changed = true;
 	} else {
 		for (uint32_t y = 0; y < f->height; y++) {
