@@ -116,7 +116,8 @@ uint8_t *rdc_port_span(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 	if (!len || (uint64_t)addr + len > hw->vram_size)
 		return NULL;
 	rdc_bus_charge(hw, addr, len, kind);
-	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
+	    rdc_vram_watched(hw, addr, (uint64_t)addr + len))
 		hw->vram_hook(hw->vram_hook_ctx, hw->now, addr, len, 1, 0,
 			      RDC_VRAM_BY_DP);
 	return hw->vram + addr;
@@ -162,7 +163,9 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 		bus_burst(hw, &t, a, len, kind);
 	}
 	hw->now = t;
-	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
+	    rdc_vram_watched(hw, addr,
+			     addr + (uint64_t)(count - 1) * stride + len))
 		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, count, stride,
 			      RDC_VRAM_BY_DP);
 	return hw->vram + addr;
@@ -243,12 +246,22 @@ static rdc_noinline void runs_watched(const struct rdc_hw *hw,
 				      const struct rdc_port_run *r, uint32_t n,
 				      uint32_t stride, uint64_t t)
 {
+	unsigned int more = 0;
 	uint32_t i;
 
-	for (i = 0; i < n; i++)
+	for (i = 0; i < n; i++) {
+		uint32_t s = r[i].count > 1 ? stride : 0;
+
+		if (!r[i].count ||
+		    !rdc_vram_watched(hw, r[i].addr,
+				      r[i].addr +
+					      (uint64_t)(r[i].count - 1) * s +
+					      r[i].len))
+			continue;
 		hw->vram_hook(hw->vram_hook_ctx, t, r[i].addr, r[i].len,
-			      r[i].count, r[i].count > 1 ? stride : 0,
-			      RDC_VRAM_BY_DP | (i ? RDC_VRAM_MORE : 0));
+			      r[i].count, s, RDC_VRAM_BY_DP | more);
+		more = RDC_VRAM_MORE;
+	}
 }
 
 uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
@@ -351,7 +364,8 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 		w->t = t + c0 + (n - 1) * c1;
 		w->row = (uint32_t)((a + (n - 1) * stride + len - 1) /
 				    RDC_DRAM_ROW_BYTES);
-		if (hw->vram_hook)
+		if (hw->vram_hook &&
+		    rdc_vram_watched(hw, addr, a + (n - 1) * stride + len))
 			hw->vram_hook(hw->vram_hook_ctx, w->t, addr, len,
 				      (uint32_t)n, stride, RDC_VRAM_BY_DP);
 		return (uint32_t)n;
@@ -372,7 +386,8 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 	}
 	w->t = t;
 	w->row = row;
-	if (hw->vram_hook && i)
+	if (hw->vram_hook && i &&
+	    rdc_vram_watched(hw, addr, addr + (uint64_t)(i - 1) * stride + len))
 		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, i, stride,
 			      RDC_VRAM_BY_DP);
 	return i;

@@ -132,7 +132,9 @@ static inline void rdc_vram_watch(const struct rdc_hw *hw, uint64_t t,
 				  uint32_t addr, uint32_t len, uint32_t count,
 				  uint32_t stride)
 {
-	if (hw->vram_hook)
+	if (hw->vram_hook &&
+	    rdc_vram_watched(hw, addr,
+			     addr + (uint64_t)(count - 1) * stride + len))
 		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, count, stride,
 			      RDC_VRAM_BY_DP);
 }

@@ -36,6 +36,8 @@ void rdc_hw_init(struct rdc_hw *hw, const struct rdc_hw_config *cfg,
 void rdc_hw_reset(struct rdc_hw *hw)
 {
 	rdc_trace(hw, RDC_TRACE_RESET, 0, 0);
+	hw->vram_watch_lo = 0;
+	hw->vram_watch_hi = ~0u;
 	hw->control = RDC_CONTROL_RESET_VALUE;
 	hw->irq_status = 0;
 	hw->irq_enable = 0;
@@ -140,6 +142,14 @@ void rdc_hw_set_vram_hook(struct rdc_hw *hw, rdc_vram_hook_fn fn, void *ctx)
 {
 	hw->vram_hook = fn;
 	hw->vram_hook_ctx = ctx;
+	hw->vram_watch_lo = 0;
+	hw->vram_watch_hi = ~0u;
+}
+
+void rdc_hw_set_vram_watch(struct rdc_hw *hw, uint32_t lo, uint32_t hi)
+{
+	hw->vram_watch_lo = lo;
+	hw->vram_watch_hi = hi;
 }
 
 void rdc_hw_set_poll(struct rdc_hw *hw, void (*fn)(void *ctx), void *ctx)
@@ -197,7 +207,7 @@ int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 		return 0;
 	/* lines the beam has passed keep the old bytes */
 	rdc_crtc_catch_up(hw, hw->now);
-	if (hw->vram_hook)
+	if (hw->vram_hook && rdc_vram_watched(hw, addr, (uint64_t)addr + len))
 		hw->vram_hook(hw->vram_hook_ctx, hw->now, addr, len, 1, 0,
 			      RDC_VRAM_BY_HOST);
 	rdc_memcpy(hw->vram + addr, buf, len);
@@ -508,6 +518,9 @@ static bool crtc_side_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t *p;
 
+	/* the framebuffer may move: the VRAM watcher looks again */
+	hw->vram_watch_lo = 0;
+	hw->vram_watch_hi = ~0u;
 	if (timing_reg(&c->shadow, reg, &p)) {
 		*p = val;
 		c->shadow_dirty = 1;

@@ -173,9 +173,12 @@ struct rdc_hw {
 	rdc_trace_fn trace_fn; /* optional */
 	void *trace_ctx;
 
-	/* the VRAM write watcher (rdc_hw_set_vram_hook), optional */
+	/* the VRAM write watcher (rdc_hw_set_vram_hook), optional, and the
+	 * bytes [lo, hi) it watches (a CRTC register write or a reset widens
+	 * them to everything until the watcher narrows them again) */
 	rdc_vram_hook_fn vram_hook;
 	void *vram_hook_ctx;
+	uint32_t vram_watch_lo, vram_watch_hi;
 
 	/* the host's poll hook (rdc_hw_set_poll), optional */
 	void (*poll_fn)(void *ctx);
@@ -297,6 +300,19 @@ void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx);
  * then test one pointer.
  */
 void rdc_hw_set_vram_hook(struct rdc_hw *hw, rdc_vram_hook_fn fn, void *ctx);
+/*
+ * From the hook: only writes that reach bytes [lo, hi) matter to it now
+ * (0, 0: none).  Until a CRTC register write (FB_*, timing, preset) or a
+ * reset, which widen it to all of VRAM, the chip calls it for no other.
+ */
+void rdc_hw_set_vram_watch(struct rdc_hw *hw, uint32_t lo, uint32_t hi);
+
+/* Does a write to [addr, end) concern the watcher? */
+static inline bool rdc_vram_watched(const struct rdc_hw *hw, uint32_t addr,
+				    uint64_t end)
+{
+	return addr < hw->vram_watch_hi && end > hw->vram_watch_lo;
+}
 /*
  * A host that must not wait for a long command (a daemon serving others,
  * a kernel that must reschedule) gets fn(ctx) called every RDC_POLL_EVERY

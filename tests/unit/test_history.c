@@ -323,6 +323,37 @@ static void test_history_subbyte(void **state)
 	rdc_close(dev);
 }
 
+/*
+ * The watched pixel moves with the framebuffer: a mode change after the
+ * history opened (another format, another address for the same pixel),
+ * and FB_BASE written from the command stream.
+ */
+static void test_history_fb_moves(void **state)
+{
+	struct rdc_history_entry e;
+	rdc_history *h = NULL;
+	rdc_dev *dev = open_sim();
+
+	(void)state;
+	assert_int_equal(rdc_history_open(dev, 320, 240, 1, 1, 0, &h), 0);
+	run_text(dev, "fg #ffffff\nfill 0 0 8 8\nmode 640x480 i8\n"
+		      "fg 7\nfill 300 230 40 20\n");
+	assert_int_equal(rdc_history_count(h), 1);
+	get(h, 0, &e);
+	assert_int_equal(e.format, RDC_FMT_I8);
+	assert_int_equal(e.after, 7);
+	/* the framebuffer one line further on: screen line 240 is VRAM's
+	 * line 241 (the DP still draws at 0, SET_DST is apart) */
+	run_text(dev, "cmd-reg FB_BASE 640\nfg 9\nfill 320 240 1 1\n"
+		      "fill 320 241 1 1\n");
+	assert_int_equal(rdc_history_count(h), 2);
+	get(h, 1, &e);
+	assert_int_equal(e.after, 9);
+	assert_int_equal(e.line, 4);
+	rdc_history_close(h);
+	rdc_close(dev);
+}
+
 /* A host aperture write is an entry too. */
 static void test_history_host_write(void **state)
 {
@@ -618,6 +649,7 @@ int main(void)
 		cmocka_unit_test(test_history_torn),
 		cmocka_unit_test(test_history_list_chain),
 		cmocka_unit_test(test_history_subbyte),
+		cmocka_unit_test(test_history_fb_moves),
 		cmocka_unit_test(test_history_host_write),
 		cmocka_unit_test(test_history_api),
 		cmocka_unit_test(test_history_first_diff),

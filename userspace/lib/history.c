@@ -212,7 +212,7 @@ static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 				break;
 			r = hist_add(h);
 			if (!r)
-				return;
+				continue; /* counted in dropped */
 			r->e = *ctx;
 			r->e.x = (uint32_t)x;
 			r->e.y = (uint32_t)y;
@@ -230,14 +230,29 @@ static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 	}
 }
 
+/* The bytes [lo, hi) the watched pixels of the screen occupy now. */
+static bool watch_bytes(const struct rdc_history *h, uint64_t *lo, uint64_t *hi)
+{
+	const struct rdc_crtc *c = &h->hw->crtc;
+	uint32_t bpp = rdc_format_bpp(c->fb_format);
+	uint32_t x1 = RDC_MIN(h->x1, c->shadow.h_display);
+	uint32_t y1 = RDC_MIN(h->y1, c->shadow.v_display);
+
+	if (!bpp || h->x0 >= x1 || h->y0 >= y1)
+		return false;
+	*lo = c->fb_base + (uint64_t)h->y0 * c->fb_stride +
+	      (uint64_t)h->x0 * bpp / 8;
+	*hi = c->fb_base + (uint64_t)(y1 - 1) * c->fb_stride +
+	      ((uint64_t)x1 * bpp + 7) / 8;
+	return true;
+}
+
 static void hist_hook(void *ctx, uint64_t time, uint32_t addr, uint32_t len,
 		      uint32_t count, uint32_t stride, unsigned int who)
 {
 	struct rdc_history *h = ctx;
-	const struct rdc_crtc *c = &h->hw->crtc;
 	struct rdc_history_entry e = { 0 };
 	uint64_t last, lo, hi;
-	uint32_t bpp = rdc_format_bpp(c->fb_format);
 
 	/* the runs of one rdc_port_runs land together, after all of them */
 	if (!(who & RDC_VRAM_MORE))
@@ -270,16 +285,17 @@ static void hist_hook(void *ctx, uint64_t time, uint32_t addr, uint32_t len,
 			h->wdropped++;
 		}
 	}
-	if (h->x0 >= h->x1 || h->y0 >= h->y1 || !bpp)
+	/* the watched bytes, for the chip to call only for what reaches them */
+	if (!watch_bytes(h, &lo, &hi)) {
+		if (!(h->flags & RDC_HISTORY_WRITES))
+			rdc_hw_set_vram_watch(h->hw, 0, 0);
 		return;
-	/* the access's extent against the watched bytes' */
+	}
+	if (!(h->flags & RDC_HISTORY_WRITES))
+		rdc_hw_set_vram_watch(h->hw, (uint32_t)RDC_MIN(lo, UINT32_MAX),
+				      (uint32_t)RDC_MIN(hi, UINT32_MAX));
+	/* the access's extent against them */
 	last = (uint64_t)addr + (uint64_t)(count - 1) * stride + len;
-	lo = c->fb_base + (uint64_t)h->y0 * c->fb_stride +
-	     (uint64_t)h->x0 * bpp / 8;
-	hi = c->fb_base +
-	     (uint64_t)(RDC_MIN(h->y1, c->shadow.v_display) - 1) *
-		     c->fb_stride +
-	     ((uint64_t)RDC_MIN(h->x1, c->shadow.h_display) * bpp + 7) / 8;
 	if (last <= lo || addr >= hi)
 		return;
 	if (!e.size)
