@@ -158,6 +158,7 @@ if [ $all = 1 ] && [ -z "${RDC_VM_KERNEL:-}" ]; then
 	pass=0
 	fail=0
 	skipped=0
+	mkdir -p "$O"
 	for k in $kernels; do
 		if [ "$k" = "$old" ]; then
 			set -- $TESTS
