@@ -315,8 +315,9 @@ install-check: all shared
 
 # The Debian packages (debian/): dpkg-buildpackage -us -uc -b in a copy
 # of the tree in $(O)-debs, lintian, and the packaged rdcctl, rdcd and
-# rdc.pc tried from the unpacked packages (tests/pkg/debs.sh).  It takes
-# more than two minutes (a whole build), so make check leaves it out.
+# rdc.pc tried from the unpacked packages (tests/pkg/debs.sh).  It is a
+# whole build (46 s on a quiet 2-core machine, 3 to 4 minutes on a busy
+# one), so make check leaves it out.
 debs:
 	@scripts/deps.sh --debs
 	@tests/pkg/debs.sh $(O)
