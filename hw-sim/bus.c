@@ -118,8 +118,8 @@ uint8_t *rdc_port_span(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 	rdc_bus_charge(hw, addr, len, kind);
 	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
 	    rdc_vram_watched(hw, addr, (uint64_t)addr + len))
-		hw->vram_hook(hw->vram_hook_ctx, hw->now, addr, len, 1, 0,
-			      RDC_VRAM_BY_DP);
+		rdc_vram_hook_call(hw, hw->now, addr, len, 1, 0,
+				   RDC_VRAM_BY_DP);
 	return hw->vram + addr;
 }
 
@@ -166,8 +166,8 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
 	    rdc_vram_watched(hw, addr,
 			     addr + (uint64_t)(count - 1) * stride + len))
-		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, count, stride,
-			      RDC_VRAM_BY_DP);
+		rdc_vram_hook_call(hw, t, addr, len, count, stride,
+				   RDC_VRAM_BY_DP);
 	return hw->vram + addr;
 }
 
@@ -241,6 +241,14 @@ static rdc_always_inline uint32_t runs_charge(const struct rdc_hw *hw,
 	return i;
 }
 
+/* rdc_vram_watch's call, out of line: the hot paths keep one test. */
+rdc_noinline void rdc_vram_watch_call(const struct rdc_hw *hw, uint64_t t,
+				      uint32_t addr, uint32_t len,
+				      uint32_t count, uint32_t stride)
+{
+	rdc_vram_hook_call(hw, t, addr, len, count, stride, RDC_VRAM_BY_DP);
+}
+
 /* The runs charged, to the VRAM write watcher (off the hot path). */
 static rdc_noinline void runs_watched(const struct rdc_hw *hw,
 				      const struct rdc_port_run *r, uint32_t n,
@@ -258,8 +266,8 @@ static rdc_noinline void runs_watched(const struct rdc_hw *hw,
 					      (uint64_t)(r[i].count - 1) * s +
 					      r[i].len))
 			continue;
-		hw->vram_hook(hw->vram_hook_ctx, t, r[i].addr, r[i].len,
-			      r[i].count, s, RDC_VRAM_BY_DP | more);
+		rdc_vram_hook_call(hw, t, r[i].addr, r[i].len, r[i].count, s,
+				   RDC_VRAM_BY_DP | more);
 		more = RDC_VRAM_MORE;
 	}
 }
@@ -366,8 +374,8 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 				    RDC_DRAM_ROW_BYTES);
 		if (hw->vram_hook &&
 		    rdc_vram_watched(hw, addr, a + (n - 1) * stride + len))
-			hw->vram_hook(hw->vram_hook_ctx, w->t, addr, len,
-				      (uint32_t)n, stride, RDC_VRAM_BY_DP);
+			rdc_vram_hook_call(hw, w->t, addr, len, (uint32_t)n,
+					   stride, RDC_VRAM_BY_DP);
 		return (uint32_t)n;
 	}
 	/* runs_charge's span case, the runs made on the way */
@@ -388,8 +396,7 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 	w->row = row;
 	if (hw->vram_hook && i &&
 	    rdc_vram_watched(hw, addr, addr + (uint64_t)(i - 1) * stride + len))
-		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, i, stride,
-			      RDC_VRAM_BY_DP);
+		rdc_vram_hook_call(hw, t, addr, len, i, stride, RDC_VRAM_BY_DP);
 	return i;
 }
 

@@ -128,6 +128,8 @@ static inline uint64_t rdc_bus_column_cost(uint32_t *row, uint64_t a,
 }
 
 /* A DP write charged in a window, to the VRAM write watcher if any. */
+void rdc_vram_watch_call(const struct rdc_hw *hw, uint64_t t, uint32_t addr,
+			 uint32_t len, uint32_t count, uint32_t stride);
 static inline void rdc_vram_watch(const struct rdc_hw *hw, uint64_t t,
 				  uint32_t addr, uint32_t len, uint32_t count,
 				  uint32_t stride)
@@ -135,8 +137,7 @@ static inline void rdc_vram_watch(const struct rdc_hw *hw, uint64_t t,
 	if (hw->vram_hook &&
 	    rdc_vram_watched(hw, addr,
 			     addr + (uint64_t)(count - 1) * stride + len))
-		hw->vram_hook(hw->vram_hook_ctx, t, addr, len, count, stride,
-			      RDC_VRAM_BY_DP);
+		rdc_vram_watch_call(hw, t, addr, len, count, stride);
 }
 
 /*

@@ -208,8 +208,8 @@ int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 	/* lines the beam has passed keep the old bytes */
 	rdc_crtc_catch_up(hw, hw->now);
 	if (hw->vram_hook && rdc_vram_watched(hw, addr, (uint64_t)addr + len))
-		hw->vram_hook(hw->vram_hook_ctx, hw->now, addr, len, 1, 0,
-			      RDC_VRAM_BY_HOST);
+		rdc_vram_hook_call(hw, hw->now, addr, len, 1, 0,
+				   RDC_VRAM_BY_HOST);
 	rdc_memcpy(hw->vram + addr, buf, len);
 	rdc_trace(hw, RDC_TRACE_VRAM_WRITE, addr, len);
 	return 0;

@@ -17,6 +17,18 @@ static inline void rdc_trace(struct rdc_hw *hw, unsigned int event, uint32_t a,
 		hw->trace_fn(hw->trace_ctx, hw->now, event, a, b);
 }
 
+/*
+ * The VRAM write watcher (rdc_hw_set_vram_hook), set: every call of it is
+ * made here, as the trace's are (the firmware never sets either).
+ */
+static inline void rdc_vram_hook_call(const struct rdc_hw *hw, uint64_t t,
+				      uint32_t addr, uint32_t len,
+				      uint32_t count, uint32_t stride,
+				      unsigned int who)
+{
+	hw->vram_hook(hw->vram_hook_ctx, t, addr, len, count, stride, who);
+}
+
 /* A trace point at its own time (a scanout event processed in a catch-up). */
 static inline void rdc_trace_at(struct rdc_hw *hw, uint64_t time,
 				unsigned int event, uint32_t a, uint32_t b)

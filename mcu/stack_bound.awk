@@ -10,9 +10,9 @@
 # dynamic size, recursion, or an indirect call not resolved below.
 #
 # Indirect calls, by the function making them:
-#  - the chip's hooks (rdc_trace, rdc_port_poll in hw-sim/hw_priv.h, the
-#    frame listener in rdc_crtc_catch_up) call nothing in the firmware,
-#    which never sets them (the Makefile checks that rdc_hw_set_trace,
+#  - the chip's hooks (rdc_trace, rdc_port_poll, rdc_vram_hook_call in
+#    hw-sim/hw_priv.h, the frame listener in rdc_crtc_catch_up) call
+#    nothing in the firmware, which never sets them (the Makefile checks that rdc_hw_set_trace,
 #    rdc_hw_set_poll and rdc_hw_set_frame_fn are not in the image);
 #  - hw_run calls the DP's run, rdc_hw_reset its reset (dp.c's ops);
 #  - dp_poly_scan calls its span callbacks (poly.c, tri.c).
