@@ -1,4 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # rdc top-level build.  `make` builds userspace (librdc, rdcctl) optimised;
 # `make check` builds everything with AddressSanitizer and
 # UndefinedBehaviorSanitizer and runs every test; `make demo` runs
@@ -328,6 +329,7 @@ demo: deps
 
 check test: deps
 	$(MAKE) format-check
+	$(MAKE) licence-check
 	$(MAKE) $(TEST_BINS) $(O)/san/rdcctl $(O)/san/rdcd freestanding $(VM_BINS)
 	$(MAKE) mcu-test
 	$(MAKE) fuzz
@@ -802,6 +804,13 @@ format-check:
 				"(clang-format -i $$f)"; bad=1; }; \
 	done; \
 	[ $$bad = 0 ] && echo "format-check: $(words $(FORMAT_FILES)) files laid out as .clang-format says"
+
+# Every file's licence and copyright (SPDX lines, .reuse/dep5, LICENSES/):
+# README.md, "Licence".
+licence-check:
+	@if command -v reuse >/dev/null; then reuse lint -q && \
+		echo "licence-check: every file names its licence (reuse lint)"; \
+	else echo "licence-check: skipped (reuse is not installed)"; fi
 
 format:
 	$(CLANG_FORMAT) -i $(FORMAT_FILES)

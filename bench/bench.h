@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * rdc-bench internals shared by the driver (rdc_bench.c) and the peer
  * libraries (peer_*.c): the workloads' inputs (bench/README.md), drawn

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd speed, over a UNIX socket, one JSON line per figure:
  *  - batched submit throughput: small commands (1x1 FILL_RECT with its

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * cairo as a peer, on an ARGB32 image surface (opaque colours, so the
  * bytes are rdc's XRGB8888 with X 0xff): fill, one-pixel lines (antialias

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * pixman as a peer: the X server's and cairo's pixel engine.  fill
  * (pixman_fill), blit (pixman_blt), text (a solid colour composited

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * SDL2_gfx as a peer: the classic midpoint and Bresenham primitives on
  * SDL2's software renderer drawing into an ARGB8888 SDL_Surface (no

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdc-bench: the workloads of bench/README.md through the real command path
  * (librdc sim: -> command words -> display-processor firmware -> hw-sim,

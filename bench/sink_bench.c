@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The v4l2 sink's conversion cost per frame, each format against a memcpy
  * of the same XRGB8888 frame measured in the same run, at 1024x768 and

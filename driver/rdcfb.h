@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * rdcfb: the RDC-1 (hw-sim + firmware-model, compiled in unchanged) as a
  * Linux framebuffer device.  Internal interfaces between the driver's files.

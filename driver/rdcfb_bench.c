@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * A self-benchmark in debugfs (rdcfb/fbN/bench; reading it runs it): the
  * console's two workloads, a line of text (imageblit of an 80-column

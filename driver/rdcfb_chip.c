@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The simulated RDC-1 inside the kernel: its memory, the two clocks that
  * move its simulated time, waits, command submission, frames and counters.

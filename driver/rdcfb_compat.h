@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * What differs between the kernels rdcfb builds on, in one place: Debian
  * 12's 6.1 up to Debian 13's 6.12 (docs/driver.md lists them).  The rest

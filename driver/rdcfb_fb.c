@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * fb_ops on the simulated RDC-1: modes program the CRTC, the palette is
  * the CLUT, pan writes the latched base, blank drives the scanout enable,

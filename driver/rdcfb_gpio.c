@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The RDC-1's four pins as Linux GPIO lines: one gpio_chip per device,
  * labelled "rdcfb.N-pins", lines TE, IRQ, RESET_N and BL_EN.

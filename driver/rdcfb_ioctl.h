@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only WITH Linux-syscall-note */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * rdcfb private ioctls: the one header shared by rdcfb.ko and its user
  * space (librdc's fbdev: backend, the VM tests).  Issued on the /dev/fbN

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcfb: a simulated RDC-1 raster display controller as a Linux
  * framebuffer device, as vkms simulates its display.  The chip (hw-sim/)

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * SUBMIT's gate: a command buffer from user space is walked command by
  * command before one word of it reaches the FIFO.  The display processor

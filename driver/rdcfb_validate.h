@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * SUBMIT's check of a command buffer (rdcfb_validate.c).  Kept apart from
  * rdcfb.h so that the unit tests build it in user space too.

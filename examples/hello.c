@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * A first librdc program: draw a small scene on an RDC-1 and print the
  * frame's CRC-32.  Against an installed librdc:

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * BEZIER, HERMITE and BSPLINE: cubic curves traced by forward differencing
  * and drawn as a polyline through the stroker, so the pen and the dash

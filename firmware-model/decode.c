@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * DECODE: an RLE, DPCM or BTC image stream in VRAM (rdc_image.h) decoded
  * into DST.

@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The RDC-1 display processor's firmware: the command decoder, the drawing
  * state and the raster algorithms.  It reaches the chip only through the DP

@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Display-processor internals shared by the decoder (dp.c) and the
  * rasterisers (span.c, line.c, shape.c, blit.c, mono.c and the others;

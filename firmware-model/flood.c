@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Flood fill, span by span (Heckbert's seed fill, widened for 8-connected
  * regions), with a fixed-size stack of pending spans.

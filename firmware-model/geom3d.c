@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The 3D geometry stage: modelling transforms and their stack, the view
  * as the course sets it up (VRP, VPN, VUP, PRP, window, front and back

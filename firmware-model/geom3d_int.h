@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Shared by the 3D files: geom3d.c (matrices, the view, the vertex
  * pipeline, clipping), mesh.c (MESH and the triangle/edge drawing),

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Image processing on the display processor: HISTOGRAM, MAP_BUILD,
  * MAP_APPLY, MAP_CLUT and THRESHOLD, and the command entry of the image

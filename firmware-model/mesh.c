@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Polygon meshes: a vertex buffer and an index buffer in VRAM, every
  * vertex through the pipeline once (the post-transform cache dp->v3),

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Bicubic Bezier patches and 3D Bezier and uniform B-spline curves by
  * forward differencing (Foley & van Dam 11.2-11.3).

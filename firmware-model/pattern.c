@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The fill style: solid FG, or an 8x8 pattern anchored at the DST origin
  * (pixel (x, y) takes pattern cell (x & 7, y & 7)), so fills drawn

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* RECT, FILL_RECT, CIRCLE, ELLIPSE and their fills (span.c's runs). */
 #include "raster.h"
 

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The transform unit: a homogeneous 3x3 matrix in signed 15.16 fixed point
  * applied to the vertices of the geometric primitives, and the

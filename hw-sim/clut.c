@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Colour lookup table.  clut[] is what scanout uses; clut_shadow[] is what
  * the CLUT_DATA port reads back (the last value written to each entry).

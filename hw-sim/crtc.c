@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * CRTC: mode presets and validation, the line-by-line scanout state machine
  * (fetch, vblank latch, line compare), pixel format conversion through the

@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The simulated RDC-1 chip: register file, VRAM and its bus, CLUT, CRTC with
  * scanout and cursor, command FIFO and ring, interrupts, pins, counters, and

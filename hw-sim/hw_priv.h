@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Internal interfaces between the RDC-1 chip's blocks (hw.c, bus.c,
  * crtc.c, clut.c, cmdq.c).  Not for the host or the display processor:

@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Field helpers in the style of the kernel's <linux/bits.h> and
  * <linux/bitfield.h>.  In the kernel the real ones are used; elsewhere this

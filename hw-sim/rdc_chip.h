@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The simulated RDC-1 as a program sees it that runs the chip without
  * owning its insides: an opaque struct rdc_hw and the host calls a server

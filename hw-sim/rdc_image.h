@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * RDC-1 compressed image streams, as the DECODE command reads them from
  * VRAM and librdc's rdc_image_encode() writes them.  Included by

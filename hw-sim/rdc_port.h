@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The portable core's view of its host.  hw-sim/ and firmware-model/ build
  * in three places: user space, the Linux kernel (Kbuild) and freestanding

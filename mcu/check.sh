@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The firmware test (`make mcu-test`, part of `make check`): boot the
 # Cortex-M image under QEMU and check, for every golden scene in it, that
 #  - the firmware's line (frame CRC-32, the script's total cycles, the

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * gen_scenes: compile golden scenes (.rdl) into the operation words that
  * the firmware image replays (mcu/scene.h), at build time, on the host.

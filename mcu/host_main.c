@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The firmware's twin on the host: the same scenes (mcu_scenes.c) and the
  * same replay (replay.c), built with the normal compiler and flags, print

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The firmware: replays the golden scenes compiled into the image on the
  * RDC-1 model (hw-sim/ and firmware-model/, built for the Cortex-M) and

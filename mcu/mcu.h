@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * What the firmware's main needs from its board: semihosting output and
  * exit, and the stack's high-water mark (startup.c).

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Replay of a golden scene's operations on the portable core, exactly as
  * librdc's sim: backend made them (userspace/lib/sim.c): the same calls

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Golden scenes as the firmware image carries them, and the replay that
  * runs them on the portable core (hw-sim/, firmware-model/).

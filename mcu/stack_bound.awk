@@ -1,4 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The firmware's worst-case stack depth from GCC's call graphs
 # (-fcallgraph-info=su: one .ci file per object, every function's frame
 # size and every call it makes):

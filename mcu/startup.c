@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Reset and fault handling for a Cortex-M3 (ARMv7-M), and the semihosting
  * calls the firmware talks through (QEMU: -semihosting-config enable=on).

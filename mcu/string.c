@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The three functions the core's rdc_memcpy/rdc_memmove/rdc_memset
  * (hw-sim/rdc_port.h) become when the compiler does not expand them

@@ -1,11 +1,12 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Install the Debian packages rdc needs, or say how.  Run by `make demo`
 # and `make check`.  As root it installs what is missing with apt-get; as
 # anyone else it prints the one apt-get line to run and fails.
 set -e
 
-PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev libusb-1.0-0-dev sigrok-cli libdrm-dev clang-format"
+PKGS="gcc make pkg-config libc6-dev libpng-dev zlib1g-dev libcmocka-dev libvncserver-dev clang libclang-rt-14-dev libusb-1.0-0-dev sigrok-cli libdrm-dev clang-format reuse"
 # libusb-1.0's static link flags name -ludev: make install-check links
 # examples/hello.c with `pkg-config --static --libs rdc`
 PKGS="$PKGS libudev-dev"

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Lay out rdcfb.ko's source as dkms wants it:
 #
 #   scripts/dkms-source.sh DIR [VERSION]

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # librdc's version script, from the headers it installs: every function
 # they declare (static inline ones aside) is exported, nothing else.
 # Those of rdc_server.h and rdc_chip.h, the interface rdcd uses, go to a

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The register map as librdc installs it: hw-sim/rdc_regs.h (the one copy)
 # with the field helpers under RDC_ names, so that a program including
 # <rdc.h> gets no unprefixed macro (BIT, GENMASK, FIELD_PREP, FIELD_GET).

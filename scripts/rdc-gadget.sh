@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The RDC-1 as a USB device (docs/usb.md): a configfs gadget through
 # libcomposite with one FunctionFS function, whose device side is rdcd
 # (`rdcd --listen ffs:DIR`).

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Run every cmocka test program in $1/tests from the source root and close
 # with one summary line: "tests: N passed, M failed, K skipped" (cmocka's
 # skip(): a test that cannot run here, e.g. a library this build lacks,

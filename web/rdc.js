@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 // The RDC-1's display, live: rectangles of changed pixels arrive over a
 // WebSocket as zlib-compressed RGBA and are drawn in the order they came;
 // status messages (JSON) fill the table beside the picture.

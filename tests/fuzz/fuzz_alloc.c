@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Large allocations kept between fuzz inputs, for fuzz_rdcd and
  * fuzz_script (linked with -Wl,--wrap=calloc,--wrap=free).

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * libFuzzer target for the wire protocol's parser (userspace/lib/proto.c):
  * the input is a byte stream cut into messages exactly as rdcd and librdc

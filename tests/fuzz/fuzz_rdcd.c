@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * libFuzzer target for rdcd's request handling (userspace/rdcd/serve.c),
  * in process: the daemon's own objects except rdcd.c (its main and poll

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * libFuzzer target for the .rdl interpreter (userspace/lib/script.c): the
  * input is a script, run by rdc_script_run on a fresh sim: device with

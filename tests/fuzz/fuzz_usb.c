@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * libFuzzer target for the host side of the USB framing
  * (userspace/lib/usb_host.c): the input is a script of what a device may

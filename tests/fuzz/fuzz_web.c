@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * libFuzzer target: the web sink's parsers (userspace/sink/web_proto.c)
  * on whatever a client could send.  The first byte picks the parser: a

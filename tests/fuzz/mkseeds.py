@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 """Write the seed inputs of fuzz_rdcd (tests/fuzz/seeds/rdcd) in the record
 format tests/fuzz/fuzz_rdcd.c reads, and the few scripts fuzz_script takes
 beside examples/ and tests/golden/scenes/ (seeds/script: the statements

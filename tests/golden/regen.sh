@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Regenerate tests/golden/golden.txt from tests/golden/scenes/*.rdl and
 # write one PNG per scene to look at:  regen.sh RDCCTL OUTDIR
 # (`make golden` calls it).  Each line of golden.txt is

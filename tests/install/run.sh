@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # librdc as a program outside the tree meets it: `make install` into a
 # scratch DESTDIR (PREFIX and LIBDIR not the defaults), then, with nothing
 # but what pkg-config says about the installed rdc.pc:

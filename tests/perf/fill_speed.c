@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Host time of a full-screen 1024x768 XRGB8888 fill through the command
  * path (librdc sim: -> FIFO -> DP firmware -> bus model -> VRAM) against a

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The Debian packages, built and tried as a user of them would:
 #  - `dpkg-buildpackage -us -uc -b` in a copy of the tree (every file git
 #    tracks or would track, as it is now) in BUILD_DIR-debs, so the source

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Reference rasterisers (see ref.h).  Written for obviousness: lines and
  * rectangles are the textbook loops; circles and ellipses test each pixel

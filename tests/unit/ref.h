@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Plain reference rasterisers for the tests: the textbook per-pixel form
  * of each algorithm the display processor implements, with no clipping,

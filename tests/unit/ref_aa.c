@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Anti-aliasing reference rasterisers (see ref_aa.h).  The coverage is
  * computed afresh from the definition, exactly, in 128-bit integers.

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Anti-aliasing references for the tests: the plain rasterisers visit
  * pixels one by one, in the textbook form, and report each with its 8-bit

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Reference curve points (see ref_curve.h): every step i of n is the
  * curve at t = i / n, a fraction num / den of exact integers, rounded.

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Reference points of BEZIER, HERMITE and BSPLINE (see ref.h): each step
  * of docs/commands.md evaluated exactly as a fraction of 64-bit integers

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Reference stroker pieces and arcs.  The convex fill tests each pixel
  * centre against edge functions (the fast path walks scan-line crossings);

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Plain references for the stroker and ARC (see ref.h): per-pixel tests
  * written from the definitions in docs/commands.md, no spans, no clipping.

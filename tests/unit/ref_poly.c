@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The textbook point-in-polygon test at pixel centres.  Edge (x0, y0) ->
  * (x1, y1) takes part in row py when its y range [min, max) holds the

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Plain reference polygon fill: every pixel centre tested against every
  * edge, no edge table, no clipping, no bus (see ref.h).

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Helpers shared by the polygon, flood and triangle tests: a small DST,
  * VRAM snapshots, and bus.h's span cost transcribed for cycle checks.

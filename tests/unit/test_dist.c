@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * What is installed beside the programs: the manual pages (man/), bash
  * completion, systemd units and the udev rule (dist/).  The pages must

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The reference docs against the code, mechanically: every register row of
  * docs/hardware.md against rdc_regs.h (offset, name, access) and librdc's

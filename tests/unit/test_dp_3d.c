@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The 3D geometry stage against an independent double-precision model of
  * the course's pipeline, written here from Foley & van Dam ch. 6 and 16:

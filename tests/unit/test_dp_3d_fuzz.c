@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Random 3D command streams: the opcodes 0x40..0x52 (and their neighbours
  * that are not commands) with random lengths and arguments drawn from a

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Anti-aliased lines, circles and ellipses: the display processor against
  * the per-pixel references of ref_aa.c through an independent pixel and

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * ARC: the sine table, sectors bounded by the axes (where the table is
  * exact, so the expected pixels follow from ELLIPSE/FILL_ELLIPSE and the

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Pixel-moving commands against a model written from the command
  * reference: BLIT (every overlap direction, ROPs, clipping), HOST_BLIT,

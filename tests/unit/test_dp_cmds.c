@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The command decoder: bad input of every kind (nothing outside the target
  * touched, ERR_CODE/ERR_INFO/IRQ_STATUS right, skip versus halt), control

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Shared scaffolding for the display-processor tests: a chip with the DP
  * attached, command pushing through the FIFO register port, a pixel model

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * CIRCLE, FILL_CIRCLE, ELLIPSE, FILL_ELLIPSE and ARC against the
  * inequalities of docs/commands.md, pixel by pixel (ref.c, ref_lines.c):

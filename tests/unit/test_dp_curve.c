@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * BEZIER, HERMITE, BSPLINE: end points, straight curves, single steps
  * against LINE, bounded work for the longest lists, bad arguments and a

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * BEZIER, HERMITE and BSPLINE against exact evaluation (ref_curve.c): the
  * curve's points at the documented steps, computed as exact fractions and

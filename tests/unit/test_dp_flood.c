@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * FLOOD_FILL against a breadth-first search written here over a copy of
  * the image taken before the fill: random closed outlines and noise, both

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Random command streams: every opcode, random lengths and arguments,
  * surfaces near the end of VRAM.  Under ASan and UBSan any out-of-bounds

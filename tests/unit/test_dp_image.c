@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * DECODE: streams written by librdc's encoders (rdc_image_encode) and
  * decoded by the DP.  RLE and DPCM must give back the original samples

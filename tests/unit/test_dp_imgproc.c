@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * HISTOGRAM, MAP_BUILD, MAP_APPLY, MAP_CLUT, CONVOLVE and THRESHOLD
  * against plain references written here from docs/commands.md (never the

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Colour key and global alpha in BLIT and HOST_BLIT against a model of
  * the documented order (key on the source pixel, then the ROP, then the

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Display lists: CALL/RET/JUMP into command lists in VRAM, nesting to
  * RDC_CALL_DEPTH, the errors past it and outside a list, lists that leave

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The .rdl side of display lists, anti-aliasing, alpha and colour key:
  * `list ADDR` ... `end` stores encoded commands in VRAM without running

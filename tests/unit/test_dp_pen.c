@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Pens and dashes: SET_PEN/SET_DASH validation, the geometry of wide
  * strokes (checked against distances computed here in floating point, not

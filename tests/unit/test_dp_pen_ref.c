@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The stroker's fast paths against ref_lines.c on seeded random input:
  * convex pieces (scan-line crossings against edge functions), dashed

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * FILL_POLYGON and SET_PATTERN: the scan-line fill against the plain
  * per-pixel reference (ref_poly.c) on seeded random polygons, the tie rule

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Random streams of the polygon, flood, pattern, triangle and depth
  * commands: random lengths, flags and arguments, surfaces and depth

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The .rdl statements and batch encoders of polygons, flood fill,
  * patterns, triangles and the depth buffer, through librdc's sim backend:

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The DP's rasterisers against the plain reference versions in
  * tests/unit/ref.c, on seeded random input in every format and ROP,

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * TRIANGLE, SET_ZBUF, CLEAR_Z: coverage against the reference polygon
  * test, shared edges drawn once, Gouraud colours against a floating-point

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The transform unit: SET_TRANSFORM/SET_VIEWPORT validation, where known
  * matrices send known points, and the property that drawing through a

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcfb.ko's SUBMIT validation (driver/rdcfb_validate.c), built here in
  * user space: every command stream librdc produces for the golden scenes

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * librdc's fbdev: backend without rdcfb.ko: every URI that does not name
  * an rdcfb framebuffer is refused with a clear error, and nothing is left

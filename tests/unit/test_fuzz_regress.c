@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Inputs the fuzz targets (tests/fuzz/) found to misbehave, each kept as
  * a plain test of the fixed behaviour.

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Golden frames: every scene in tests/golden/scenes through librdc, checked
  * against the CRC-32 and cycle count in tests/golden/golden.txt (written

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Pixel history (userspace/lib/history.c): small scenes whose histories
  * are worked out by hand, the beam's side of a torn pixel checked against

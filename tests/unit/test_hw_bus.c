@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The VRAM bus cost model (hw-sim/bus.h): exact cycles of spans and
  * columns, worked out here from the formulas, a beat-by-beat reference

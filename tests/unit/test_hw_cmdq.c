@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Command queues: the FIFO (overflow, low-water interrupt, fetch cost),
  * the VRAM ring (validation, wrap, fetch cost through the bus model) and

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * CRTC timing: each preset's frame period and refresh rate, beam position,
  * vblank and line-compare interrupts at their times, the frame listener,

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Hostile programming: seeded random register writes and reads, pin
  * changes, DP port calls with wild arguments and runs of simulated time.

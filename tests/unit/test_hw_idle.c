@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdc_hw_run_until_idle: the host regains control at the exact cycle the
  * display processor runs out of work, and not a cycle later.

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The RDC-1's input pins.  BL_EN low darkens the panel: the frames are
  * black while it is low and show the picture again once it is high, and

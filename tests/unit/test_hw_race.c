@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Racing the beam: a fill that tears at the line the bus model predicts, a
  * page flip that never tears, palette and host VRAM writes that show in

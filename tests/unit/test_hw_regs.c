@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * RDC-1 register file: reset values, access semantics (R, RW, W, W1C),
  * bad offsets, the IRQ pin, the pins register and RESET_N, the CLUT port,

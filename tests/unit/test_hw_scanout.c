@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Scanout: every pixel format from known VRAM bytes to XRGB8888 pixels
  * (worked out here from the format definitions in rdc_regs.h), the CLUT in

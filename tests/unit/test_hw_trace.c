@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The chip's signal trace points (RDC_TRACE_PINS, LINE, DP, FIFO): TE edges
  * at the times the mode's timing gives for many frames, also across one

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Host waits (hw-sim/wait.c): a wait run in pieces ends at the same cycle
  * as the same wait run in one go, and budgets and a halted DP end it the

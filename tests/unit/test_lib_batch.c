@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* librdc: every batch encoder against the command encodings of rdc_regs.h. */
 #include <setjmp.h>
 #include <stdarg.h>

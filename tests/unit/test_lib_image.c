@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * librdc's image side: rdc_image_encode's argument checks and bounds,
  * rdc_image_png_read against rdc_png_write, and the .rdl image

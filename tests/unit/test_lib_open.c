@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* librdc: device URIs, error strings, presets, register names. */
 #include <setjmp.h>
 #include <stdarg.h>

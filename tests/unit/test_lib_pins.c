@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The pins API (rdc_pins_*): levels, TE and IRQ edges at the simulated
  * times the mode's timing says, RESET_N holding and releasing the chip,

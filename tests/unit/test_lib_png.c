@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* librdc: PNG output read back with libpng equals the frame. */
 #include <png.h>
 #include <setjmp.h>

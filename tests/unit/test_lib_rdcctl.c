@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcctl as a program: what `run` prints agrees with the library (the
  * golden list is written from it), exit codes, errors with line numbers.

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Traces read while they are written, and traces cut short: the recorder
  * flushes whenever a client gets an answer, so a replay while it still

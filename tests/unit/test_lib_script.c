@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* librdc: the .rdl interpreter: statements, colours, accounting, errors
  * with line numbers, and garbage input. */
 #include <setjmp.h>

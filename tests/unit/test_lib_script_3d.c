@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * librdc: the .rdl statements of the 3D stage on a sim: device.  Each
  * statement must send the words docs/commands.md gives (compared with a

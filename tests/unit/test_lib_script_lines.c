@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* librdc: the pen, dash, polygon, arc, curve, transform and viewport
  * statements and their batch encoders. */
 #include <setjmp.h>

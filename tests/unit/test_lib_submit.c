@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* librdc: submission with back-pressure, fences, vblank and idle waits,
  * device errors, halts, timeouts, simulated time and counters. */
 #include <setjmp.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* librdc: VRAM access bounds, modes, host blit against readback and VRAM,
  * frame grabs. */
 #include <setjmp.h>

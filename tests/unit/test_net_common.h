@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Helpers for the tests that talk to a real rdcd: start the daemon built
  * next to the test program ($(O)/san/rdcd) on a UNIX socket in a fresh

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Conformance: the same test functions run over sim:, unix: and tcp:
  * (rdcd --stepped) and must see identical frames, cycle counts, counters

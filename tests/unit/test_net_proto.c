@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Wire protocol encoding (userspace/lib/proto.c): byte layouts written out
  * by hand from docs/protocol.md, limits, and decoders that refuse what

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The fast paths against the plain ones.  Two chips get the same command
  * stream, one with the display processor's fast paths (queued runs for

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd's limits against hostile and careless clients, over real sockets
  * (docs/protocol.md, "Limits and back-pressure"): silent connections

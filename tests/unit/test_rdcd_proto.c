@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd against hostile and careless clients, over real sockets: malformed,
  * truncated, oversized and out-of-order messages, hang-ups mid-message,

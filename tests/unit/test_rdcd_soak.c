@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd soaked by careless and hostile clients at once, for a bounded
  * time: subscribers that never read and ask for VRAM they never take,

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd under systemd's socket activation: the test plays systemd, making
  * the listening sockets, passing them as descriptors 3, 4, ... with

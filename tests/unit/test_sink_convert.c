@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Frame sinks: XRGB8888 to BGR32, XRGB32, RGB24 and YUYV, byte for byte
  * against a model written from the V4L2 format descriptions and the

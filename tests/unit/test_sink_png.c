@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* The png sink: every Nth frame and on demand, numbered by sequence. */
 #include <dirent.h>
 #include <png.h>

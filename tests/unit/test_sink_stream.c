@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * `rdcctl stream` as a program: the PNG stills it writes are the frames
  * the library itself gives for the same scripts, a mode change with --at

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The v4l2 sink against a fake device that behaves as v4l2loopback 0.12.7
  * does: S_FMT answers with the format in force while the device is held,

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The vnc sink seen by a minimal RFB 3.8 client written from RFC 6143:
  * the first update carries the whole frame, pixel for pixel; after a

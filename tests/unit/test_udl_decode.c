@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The DisplayLink personality's decoder and EDID (userspace/lib/
  * udl_decode.c), without USB: hand-built and random udl command streams,

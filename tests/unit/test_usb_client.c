@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The usb: backend's host pipeline without libusb: the protocol client
  * (net.c, rdc_client.h) over a transport whose bytes come through the USB

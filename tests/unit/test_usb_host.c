@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The libusb-free half of the usb: backend (userspace/lib/usb_host.c):
  * usb: addresses, and the reassembly of bulk IN chunks and interrupt

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The VCD writer (userspace/lib/vcd.c): its exact output for a short scene
  * against a golden file, the file read back by a small reader written here

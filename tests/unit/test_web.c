@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The web sink: its HTTP and WebSocket parsers against the RFCs' own
  * examples and against malformed input, and the live server seen by a

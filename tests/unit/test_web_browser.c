@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The web page in a real browser (tests/web/browser.py): rdcd --web with
  * a scene, headless Chromium through chromedriver, the screenshot's

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # For a VM test's "# vm-dkms: NAME" line (run.sh): `dkms add`, `dkms
 # build` and `dkms install` NAME (rdcfb: the layout scripts/dkms-source.sh
 # makes) for kernel $2, here, as a user would, with everything dkms

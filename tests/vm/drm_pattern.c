@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * A small DRM/KMS client for the DisplayLink personality's VM tests
  * (tests/vm/tests/udl-*.sh): on the udl card it sets a mode with a dumb

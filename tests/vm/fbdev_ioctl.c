@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * fbdev_ioctl: rdcfb.ko's standard framebuffer ioctls as fbdev clients
  * use them, checked against the chip's own registers (read through the

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * gpio_te: what tests/vm/tests/rdcfb-gpio.sh does to rdcfb's GPIO lines
  * (libgpiod v2) and its /dev/fbN (the private ioctls) that a shell cannot.

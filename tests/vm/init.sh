@@ -1,5 +1,6 @@
 #!/bin/busybox sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # /init of the VM tests' initramfs (tests/vm/run.sh builds it): mount the
 # host's root read-only over 9p at /host, then for each test load the
 # modules its "# vm-module:" lines name, run it chrooted into the host

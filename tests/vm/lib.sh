@@ -1,4 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Helpers for tests/vm/tests/*.sh, which run in the guest chrooted into
 # the host's root with RDC_TREE (source tree) and RDC_BUILD (build dir)
 # set.  A test prints TAP lines through check() and ends with finish; its

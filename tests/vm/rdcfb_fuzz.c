@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcfb_fuzz: rdcfb.ko's private ioctls under hostile input.  Thousands
  * of random and malformed SUBMIT buffers (random words, good headers with

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcfb_tool: what the rdcfb VM tests (tests/vm/tests/rdcfb-*.sh) do to
  * /dev/fbN that a shell cannot.

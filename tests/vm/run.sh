@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The VM test harness: boot one of Debian's kernels under QEMU with a small
 # initramfs, share this machine's root file system with the guest over
 # virtio-9p (read-only), and run every tests/vm/tests/*.sh there against

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * TAP output for the VM test programs (one per program: the counters are
  * the program's own).  tap_done() prints the plan and gives the exit code.

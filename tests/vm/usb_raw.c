@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * usb_raw: the RDC-1's USB device side (rdcd --listen ffs:, rdc_usb.h)
  * checked with libusb directly, not through librdc's usb: backend, so the

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * usb_tool: what the usb: VM tests (tests/vm/tests/usb-*.sh) do through
  * librdc that rdcctl does not.

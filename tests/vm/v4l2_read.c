@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * v4l2_read: the capture side of the VM tests.  Reads frames from a V4L2
  * capture device (v4l2loopback) or from a raw file another reader wrote

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 """The web page in a real browser: rdcd --web, headless Chromium driven
 through chromedriver's WebDriver (W3C) HTTP interface, Python's standard
 library only.

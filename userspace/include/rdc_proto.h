@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The rdcd wire protocol, shared by the daemon (userspace/rdcd) and
  * librdc's unix: and tcp: backends.  docs/protocol.md describes it in

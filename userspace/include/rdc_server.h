@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * librdc's interface for a program that serves the simulated RDC-1 itself,
  * as rdcd does: the chip behind a sim: handle (rdc_chip.h: time, register

@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The RDC-1 as a USB device: identifiers, the interface layout and the
  * vendor control requests, shared by the device side (rdcd's FunctionFS

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Command batches: encoders that append RDC_CMD words to a growable array.
  * Arguments are not validated here; the device does that, so a batch can

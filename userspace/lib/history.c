@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Pixel history (docs/history.md): every VRAM write that touches a watched
  * rectangle of the screen, with the command that made it, its cycle, the

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Host-side image encoders for the DP's DECODE command: RLE (PackBits on
  * pixels), DPCM (median predictor, Rice codes with a parameter chosen

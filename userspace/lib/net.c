@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The protocol client (rdc_client.h) and the "unix:" and "tcp:" backends:
  * an RDC-1 served by rdcd, reached with the protocol of rdc_proto.h over

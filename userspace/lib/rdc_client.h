@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The message-level client of the rdcd protocol (rdc_proto.h), in net.c,
  * and the byte transports it runs over: a stream socket (unix:, tcp:, in

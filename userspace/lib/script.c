@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The .rdl script interpreter (the format is documented in docs/rdl.md).
  * rdc_script_run (at the end) reads a logical line, script_lex.c splits it

@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The .rdl interpreter inside librdc: script.c (the statements, their
  * table and rdc_script_run's loop over lines), script_img.c and

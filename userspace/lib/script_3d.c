@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * .rdl statements of the 3D commands (matrices and their stack, the view,
  * illumination, MESH, PATCH, BEZIER3) and the host statements that put

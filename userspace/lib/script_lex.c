@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* .rdl tokens (quotes, escapes, comments) and the values they stand for. */
 #include <stdlib.h>
 #include <string.h>

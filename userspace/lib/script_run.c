@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * How the .rdl interpreter's statements run, and its errors: the layer
  * under the statements (script.c, script_img.c, script_3d.c), which call

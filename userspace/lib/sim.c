@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The "sim:" backend: an RDC-1 (hw-sim) and its display processor
  * (firmware-model) in this process.  Simulated time moves only inside

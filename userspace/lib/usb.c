@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The "usb:" backend: an RDC-1 attached over USB (rdc_usb.h), reached with
  * libusb-1.0.  The protocol client is net.c's (rdc_client.h); this file is

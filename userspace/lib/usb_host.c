@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * usb: addresses and the reassembly of what an RDC-1 sends over USB
  * (usb_host.h).  No libusb: usb.c feeds this from its transfer callbacks,

@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The half of the usb: backend that needs no libusb, so that unit tests
  * and the fuzz target (tests/fuzz/fuzz_usb.c) drive it directly:

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Value Change Dump (IEEE 1364-2001, section 18) of the chip's signals,
  * written from its trace events as simulated time passes.

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Why is this pixel that colour: `rdcctl run FILE --history SPEC`,
  * `rdcctl why X Y FILE` and where two runs part, `rdcctl diff A B`

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcctl image encode --format rle|dpcm|btc [--grey] IN.png OUT: a PNG
  * encoded as an RDC-1 image stream (hw-sim/rdc_image.h) for the DP's

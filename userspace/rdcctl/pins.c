@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcctl pins: the RDC-1's pins on any librdc device: show the levels,
  * drive RESET_N and BL_EN, and watch TE and IRQ edges as gpiomon shows a

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcctl: run .rdl scripts against an RDC-1, dump its registers and
  * counters, save what it shows.

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 #ifndef RDCCTL_REPORT_H
 #define RDCCTL_REPORT_H
 

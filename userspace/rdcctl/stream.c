@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcctl stream: frames from any librdc device to frame sinks, paced to
  * the simulated refresh rate (or as fast as the device goes).

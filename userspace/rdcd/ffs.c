@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd's FunctionFS listener (`--listen ffs:DIR`): the RDC-1 as a USB
  * device (rdc_usb.h, docs/usb.md).

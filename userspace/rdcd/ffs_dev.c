@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * FunctionFS plumbing shared by rdcd's USB listeners (ffs_dev.h).
  *

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The FunctionFS plumbing that rdcd's USB listeners share (ffs.c: the
  * RDC-1's own personality, udl.c: the DisplayLink one): ep0 and its event

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd --gpio-sim NAME: the chip's pins as the lines of a gpio-sim chip
  * (the kernel's GPIO simulator, CONFIG_GPIO_SIM), so that a program

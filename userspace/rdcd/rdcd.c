@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd: a simulated RDC-1 served over UNIX and TCP sockets
  * (docs/protocol.md).  One thread, one poll() loop, non-blocking sockets:

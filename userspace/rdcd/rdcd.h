@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * rdcd internals: the daemon state, its clients, and the functions the
  * event loop (rdcd.c) and the request handlers (serve.c) share.

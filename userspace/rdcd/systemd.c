@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * Listening sockets passed by systemd (socket activation) and readiness
  * notification, by their documented protocols rather than libsystemd:

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The chip has one trace hook; rdcd has several listeners (the VCD
  * writer, the GPIO bridge).  This fans the hook out to them, and puts

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd's DisplayLink listener (`--listen udl:DIR`): the RDC-1 as a USB
  * device that Linux's udl DRM driver drives (docs/usb.md, "DisplayLink

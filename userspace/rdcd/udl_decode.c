@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The DisplayLink command stream as RDC-1 work (udl_decode.h): a streaming
  * decoder, the timing registers' LFSR, and the EDID of the presets.

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The DisplayLink personality of the RDC-1 (docs/usb.md, "DisplayLink
  * personality"): a streaming decoder of the bulk command stream Linux's

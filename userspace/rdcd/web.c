@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * rdcd's side of the web sink (--web): the token rule of tcp: carried to
  * the page, its address in the log, and the device's state beside the

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * XRGB8888 to the V4L2 formats the v4l2 sink offers.  Each converter
  * walks a row at a time with no per-pixel branches; where the host has

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /* The png sink: numbered stills, every Nth frame and on demand. */
 #include <errno.h>
 #include <inttypes.h>

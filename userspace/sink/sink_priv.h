@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * Frame sink internals: the table of operations behind rdc_sink, and the
  * system-call table of the v4l2 sink (so tests can put a fake device

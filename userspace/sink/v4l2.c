@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The v4l2 sink: frames to a V4L2 output device, in practice a
  * v4l2loopback device that cameras' readers (ffmpeg, OBS, browsers)

@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The web sink's page, web/index.html, web/rdc.js and web/rdc.css, built
  * into the library with the assembler's .incbin (the Makefile makes this

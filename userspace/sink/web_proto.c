@@ -1,4 +1,5 @@
-// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * HTTP request heads and WebSocket frames as the web sink reads them
  * (web_proto.h).  Strict on purpose: the only clients are a browser and

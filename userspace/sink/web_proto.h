@@ -1,4 +1,5 @@
-/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-License-Identifier: LGPL-2.1-or-later */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * The web sink's side of HTTP/1.1 and WebSocket (RFC 6455): the parts it
  * reads from a client, as pure functions over a buffer (no I/O), so that

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Build gpio-sim out of tree from Debian's linux-source-SERIES (6.1 for
 # 6.1.0-57-amd64, 6.12 for 6.12.95+deb12-amd64) against the headers of
 # kernel $1, in $2; print the .ko's path.

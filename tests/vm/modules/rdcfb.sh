@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Build rdcfb.ko (driver/ with hw-sim/ and firmware-model/, through the
 # top-level Kbuild) against the headers of kernel $1, in $2; print the
 # .ko's path.  Kbuild runs in a tree of links to the sources, so nothing

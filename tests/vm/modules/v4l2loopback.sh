@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Build v4l2loopback out of tree from Debian's v4l2loopback-dkms source
 # against the headers of kernel $1, in $2; print the .ko's path.  The
 # .deb is unpacked, never installed, so dkms builds nothing for the

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # rdcd --gpio-sim bridges the RDC-1's pins to a gpio-sim chip, and
 # libgpiod's own tools use them as a GPIO-wired panel controller's: they
 # find the lines by name, gpiomon sees one TE rising edge a frame (counted

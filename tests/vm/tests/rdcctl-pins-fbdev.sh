@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # librdc's fbdev: pins, which go through rdcfb.ko's GPIO chip with
 # libgpiod: rdcctl pins reads the four levels, --watch on the stepped
 # clock moves time itself and sees TE's edges alternate, one rising edge a

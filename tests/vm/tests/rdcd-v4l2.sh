@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # rdcd feeds its frames to v4l2loopback (--v4l2) while a client draws a
 # scene over its socket: our reader and ffmpeg get the simulator's frames
 # exactly, at the mode's interval.

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Every golden scene (tests/golden/scenes) and examples/demo.rdl, run by
 # rdcctl through fbdev:/dev/fb0 on rdcfb.ko's stepped clock, gives what
 # the same scene gives through sim: in this guest: the same frame CRC, the

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # rdcfb installed through dkms as a user installs it: the source laid out
 # by scripts/dkms-source.sh with driver/dkms.conf, then `dkms add`, `dkms
 # build` and `dkms install` for this guest's kernel (run on the host by

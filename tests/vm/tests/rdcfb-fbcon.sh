@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # fbcon binds to rdcfb's /dev/fb0 and text written to the console is drawn
 # by the display processor (its command counter rises) as the console font's
 # glyphs in the scanned-out frame, pixel for pixel; `ffmpeg -f fbdev`

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # 10,000 random and malformed SUBMIT buffers, and bad REG/WAIT/STEP/FRAME
 # requests, on rdcfb's private ioctls (rdcfb_fuzz): each refused with its
 # errno, a refused buffer queues nothing, and afterwards a known scene

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # rdcfb.ko's GPIO lines, through libgpiod v2's tools and gpio_te:
 # gpiodetect and gpioinfo show the chip "rdcfb.0-pins" with TE, IRQ,
 # RESET_N and BL_EN; on the stepped clock gpiomon sees exactly one rising

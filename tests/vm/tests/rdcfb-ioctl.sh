@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The standard fbdev ioctls on rdcfb's /dev/fb0 as fbdev clients use them
 # (every preset in 8 bpp indexed, RGB565 and XRGB8888; colour map, pan,
 # vsync, blank, the mapping), checked against the chip's registers and

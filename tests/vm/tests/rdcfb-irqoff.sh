@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # How long rdcfb.ko keeps interrupts off, under load: fbcon scrolling text
 # on fb0 (tty writes and kernel messages, which the console draws with
 # interrupts off), golden scenes drawn through fbdev: on the paced clock

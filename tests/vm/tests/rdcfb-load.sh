@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Every preset size at 8, 16 and 32 bpp and a mode of its own timings
 # set through FBIOPUT_VSCREENINFO show in the frames; FBIOPUTCMAP writes
 # the CLUT, FBIOPAN_DISPLAY flips pages, FBIOBLANK stops the frames.

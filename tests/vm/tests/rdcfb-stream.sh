@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The kernel device streamed to v4l2loopback in the same guest:
 # `rdcctl stream --from fbdev:/dev/fb0 --v4l2 /dev/video0` while scenes are
 # drawn through fbdev: by another client; our reader gets each scene's

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The turning teapot (examples/teapot.rdl, then examples/teapot-spin.rdl:
 # the display processor draws every frame itself from display lists in
 # VRAM, double-buffered, flipping at vertical blanking) streamed by

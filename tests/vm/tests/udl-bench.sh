@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Figures only (docs/usb.md, "Tests and figures"): the DisplayLink
 # personality driven by Linux's udl through dummy_hcd, rdcd paced.  For
 # 640x480 and 1024x768: full-screen updates and 64x64 updates in a row

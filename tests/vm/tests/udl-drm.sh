@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The DisplayLink personality (docs/usb.md): rdcd --listen udl: behind a
 # gadget with DisplayLink's IDs on dummy_hcd, driven by Linux's own udl
 # DRM driver.  udl binds, reads the EDID (the RDC-1's presets, 1024x768

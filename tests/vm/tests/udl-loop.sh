@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The DisplayLink personality's whole loop and life cycle (docs/usb.md),
 # beside udl-drm (which checks binding, modes and exact frames):
 # - fbcon on udl's fbdev emulation: text written to the console shows in

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Figures, not conditions: bench/net_bench --uri against one rdcd --fast
 # in this guest, over its UNIX socket and over USB (dummy_hcd): small
 # commands submitted per second, register-read round trip, 1024x768

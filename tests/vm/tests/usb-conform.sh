@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # librdc's usb: backend against rdcd --stepped behind a USB gadget on
 # dummy_hcd: `rdcctl list` finds the device (bus/port path, IDs, serial)
 # and every URI form reaches it; then the conformance suite of

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # The RDC-1 as a USB device: rdcd --listen ffs: behind a configfs gadget on
 # dummy_hcd enumerates on the guest's own bus with rdc_usb.h's identity
 # (lsusb -v: class, endpoints, strings, serial); usb_raw, written against

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # A hostile or careless USB host against rdcd's ffs: listener, while a
 # UNIX-socket client of the same rdcd asks PING and REG_READ all along:
 # truncated requests, a 4 GiB length, random bytes on bulk OUT, frames

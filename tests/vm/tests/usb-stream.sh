@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Frames over USB: a scene drawn through usb: on rdcd behind a USB gadget,
 # then `rdcctl --connect usb: stream --v4l2 /dev/video0` takes the frames
 # over the bulk endpoints into v4l2loopback: our reader and ffmpeg get the

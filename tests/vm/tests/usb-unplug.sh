@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Unplugging an RDC-1 on USB: the gadget's UDC is unbound during a long
 # submit and during a frame subscription through usb:.  The host side gets
 # RDC_E_GONE ("device gone"), then at once for every later call, within a

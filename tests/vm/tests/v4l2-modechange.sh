@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # A mode change mid-stream (320x200@70 to 640x480@60): the writer
 # renegotiates the format and the interval and keeps streaming; a reader
 # that follows it gets both pictures exactly.

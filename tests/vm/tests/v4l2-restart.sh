@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # Killing a reader leaves the writer streaming to the next one; killing
 # and restarting the writer while a reader waits leaves the reader
 # receiving again.

@@ -1,5 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
 # A scripted scene streamed into v4l2loopback in each sink format: our own
 # reader and ffmpeg (-f v4l2) both get frames equal, CRC for CRC, to the
 # simulator's own, with the mode's frame interval.
