@@ -84,7 +84,10 @@ is_installed() {
 	dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"
 }
 
-# install PKG...: what is missing of them (PKG may be NAME=VERSION).
+# install PKG...: what is missing of them (PKG may be NAME=VERSION).  The
+# kernels' parts run at once: one apt at a time, through APT_LOCK.
+APT_LOCK=${TMPDIR:-/tmp}/rdc-vm-apt.lock
+export APT_LOCK
 install() {
 	missing=""
 	for p in "$@"; do
@@ -95,9 +98,9 @@ install() {
 		skip "missing Debian packages; as root: apt-get install -y$missing"
 	echo "vm: installing$missing"
 	export DEBIAN_FRONTEND=noninteractive
-	apt-get install -y --no-install-recommends $missing >/dev/null 2>&1 ||
+	flock "$APT_LOCK" sh -c "apt-get install -y --no-install-recommends $missing >/dev/null 2>&1 ||
 		{ apt-get update >/dev/null 2>&1 &&
-		  apt-get install -y --no-install-recommends $missing >/dev/null; } ||
+		  apt-get install -y --no-install-recommends $missing >/dev/null; }" ||
 		{ echo "vm: apt-get install$missing failed"; exit 1; }
 }
 
@@ -160,14 +163,27 @@ if [ $all = 1 ] && [ -z "${RDC_VM_KERNEL:-}" ]; then
 	fail=0
 	skipped=0
 	mkdir -p "$O"
+	# The kernels boot side by side: QEMU under TCG keeps one core busy,
+	# and the machines these run on have two.  Each part's output is
+	# shown whole when it is done; apt and dpkg are taken in turn
+	# (flock in install()).
+	pids=""
 	for k in $kernels; do
 		if [ "$k" = "$old" ]; then
 			set -- $TESTS
 		else
 			set -- $NEWTESTS
 		fi
+		echo "vm: booting $k for:" "$@"
 		RDC_VM_KERNEL=$k RDC_VM_TESTS="$*" RDC_VM_PART=1 \
-			sh "$0" $autoflag "$O" 2>&1 | tee "$O/vm-$k.out"
+			sh "$0" $autoflag "$O" >"$O/vm-$k.out" 2>&1 &
+		pids="$pids $!"
+	done
+	for p in $pids; do
+		wait "$p"
+	done
+	for k in $kernels; do
+		cat "$O/vm-$k.out"
 		line=$(sed -n 's/^vm: \([0-9]*\) passed, \([0-9]*\) failed, \([0-9]*\) skipped on .*/\1 \2 \3/p' "$O/vm-$k.out")
 		if [ -n "$line" ]; then
 			set -- $line

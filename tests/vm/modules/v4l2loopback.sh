@@ -28,8 +28,9 @@ if [ -n "$bpo" ]; then
 	codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
 	[ -z "$codename" ] || pkg=$pkg/$codename-backports
 fi
-apt-get download "$pkg" >/dev/null 2>&1 ||
-	{ apt-get update >/dev/null 2>&1 && apt-get download "$pkg" >/dev/null; }
+# one apt at a time: the kernels' parts run side by side (run.sh)
+flock "${APT_LOCK:-/tmp/rdc-vm-apt.lock}" sh -c "apt-get download '$pkg' >/dev/null 2>&1 ||
+	{ apt-get update >/dev/null 2>&1 && apt-get download '$pkg' >/dev/null; }"
 dpkg-deb -x v4l2loopback-dkms_*.deb pkg
 mv pkg/usr/src/v4l2loopback-* src
 make -C "/lib/modules/$kver/build" M="$out/src" modules >build.log 2>&1 ||
