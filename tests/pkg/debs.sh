@@ -17,7 +17,8 @@
 #    the unpacked rdcd serves a client (the unpacked rdcctl) the same
 #    frame; examples/hello.c builds with the unpacked rdc.pc alone and
 #    prints the CRC the build's rdcctl gives tests/install/scene.rdl.
-# Whether the module loads from the dkms package is the VM's to test.
+# Whether the module loads from the dkms package is the VM's to test:
+# make check hands the package to rdcfb-dkms (tests/vm/dkms.sh).
 # Closes with "debs: N passed, M failed".
 #
 #   tests/pkg/debs.sh BUILD_DIR        (from the source root; make debs)

@@ -8,6 +8,9 @@
 #
 #   tests/vm/dkms.sh NAME KVER OUTDIR
 #
+# The source is the tree's (scripts/dkms-source.sh), or with
+# RDC_DKMS_DEB=PATH the files of that rdcfb-dkms package (make debs).
+#
 # dkms runs in a mount namespace of its own where /usr/src, /var/lib/dkms
 # and /lib/modules/KVER are overlays with their upper layers in
 # OUTDIR/upper/{src,dkms,modules}, so this machine's own trees are never
@@ -31,12 +34,24 @@ stamp=$out/installed
 if [ -f "$stamp" ] && [ "$stamp" -nt "/lib/modules/$kver/build/Module.symvers" ] &&
 	[ -z "$(find "$root/Kbuild" "$root/driver" "$root/hw-sim" \
 		"$root/firmware-model" "$root/scripts/dkms-source.sh" "$0" \
-		-newer "$stamp" -print 2>/dev/null | head -n 1)" ]; then
+		${RDC_DKMS_DEB:+"$RDC_DKMS_DEB"} \
+		-newer "$stamp" -print 2>/dev/null | head -n 1)" ] &&
+	[ "$(cat "$out/from" 2>/dev/null)" = "${RDC_DKMS_DEB:-tree}" ]; then
 	exit 0
 fi
 rm -rf "$out"
 mkdir -p "$out"
-src=$(sh "$root/scripts/dkms-source.sh" "$out/source")
+if [ -n "${RDC_DKMS_DEB:-}" ]; then
+	# the rdcfb-dkms package's own files (make debs), as its postinst
+	# hands them to dkms
+	dpkg-deb -x "$RDC_DKMS_DEB" "$out/deb"
+	src=$(ls -d "$out"/deb/usr/src/rdcfb-* | head -n 1)
+	[ -f "$src/dkms.conf" ] ||
+		{ echo "dkms.sh: $RDC_DKMS_DEB holds no dkms.conf" >&2; exit 1; }
+	echo "dkms.sh: source from $RDC_DKMS_DEB"
+else
+	src=$(sh "$root/scripts/dkms-source.sh" "$out/source")
+fi
 ver=${src##*/rdcfb-}
 printf '%s\n' "$ver" >"$out/version"
 
@@ -61,4 +76,5 @@ unshare -m sh -e -c '
 	{ tail -n 30 "$out/dkms.log" >&2; exit 1; }
 # the work directories are overlayfs's own, not to be shared
 rm -rf "$out/work"
+printf '%s\n' "${RDC_DKMS_DEB:-tree}" >"$out/from"
 touch "$stamp"

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-2.0-only
 # SPDX-FileCopyrightText: 2026 The rdc authors
 # rdcfb installed through dkms as a user installs it: the source laid out
-# by scripts/dkms-source.sh with driver/dkms.conf, then `dkms add`, `dkms
+# by scripts/dkms-source.sh with driver/dkms.conf (or the rdcfb-dkms
+# package's files, RDC_DKMS_DEB: tests/vm/dkms.sh), then `dkms add`, `dkms
 # build` and `dkms install` for this guest's kernel (run on the host by
 # tests/vm/dkms.sh, where the build is fast, into overlays kept in the
 # build directory).  Here those overlays are laid over the guest's
