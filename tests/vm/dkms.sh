@@ -60,11 +60,19 @@ unshare -m sh -e -c '
 	kver=$2
 	src=$3
 	ver=$4
+	# dkms'"'"'s own trees, as its configuration names them (these are
+	# its defaults); they must exist already: nothing is created on
+	# this machine outside the namespace'"'"'s overlays
+	source_tree=/usr/src
+	dkms_tree=/var/lib/dkms
+	install_tree=/lib/modules
+	[ ! -r /etc/dkms/framework.conf ] || . /etc/dkms/framework.conf
 	mount --make-rprivate /
-	for m in src:/usr/src dkms:/var/lib/dkms modules:/lib/modules/$kver; do
+	for m in "src:$source_tree" "dkms:$dkms_tree" "modules:$install_tree/$kver"; do
 		n=${m%%:*}
 		d=${m#*:}
-		mkdir -p "$d" "$out/upper/$n" "$out/work/$n"
+		[ -d "$d" ] || { echo "dkms.sh: $d does not exist" >&2; exit 1; }
+		mkdir -p "$out/upper/$n" "$out/work/$n"
 		mount -t overlay overlay \
 			-o "lowerdir=$d,upperdir=$out/upper/$n,workdir=$out/work/$n" "$d"
 	done
