@@ -7,7 +7,9 @@
  * requests and replies alike, frames included.  A frame that decodes goes
  * back through every encoder (RDC_ENC_DELTA against no previous frame and
  * against the frame decoded before it), with exact, ample and too little
- * room, and must decode to itself again.  Built and run by `make fuzz`
+ * room, and must decode to itself again; so must every pixel history
+ * entry of a HIST_READ reply (the header's seq stands for the most the
+ * request asked for).  Built and run by `make fuzz`
  * (short) and `make fuzz-long`; docs/protocol.md has more.
  */
 #include <stddef.h>
@@ -110,6 +112,10 @@ static void fuzz_payload(const struct rdc_proto_hdr *h, const uint8_t *p,
 	struct rdc_proto_hello_reply hr;
 	struct rdc_proto_wait w;
 	struct rdc_proto_stats st;
+	struct rdc_proto_hist_open ho;
+	struct rdc_proto_hist_page pg;
+	struct rdc_proto_hist_entry he;
+	uint8_t ebuf[RDC_PROTO_HIST_ENTRY_SIZE];
 
 	switch (h->type) {
 	case RDC_MSG_HELLO:
@@ -129,6 +135,31 @@ static void fuzz_payload(const struct rdc_proto_hdr *h, const uint8_t *p,
 	case RDC_MSG_FRAME_GRAB:
 	case RDC_MSG_EV_FRAME:
 		fuzz_frame(p, len, h->seq);
+		break;
+	case RDC_MSG_HIST_OPEN:
+		rdc_proto_hist_open_decode(p, len, &ho);
+		break;
+	case RDC_MSG_HIST_READ:
+		if (!(h->flags & RDC_MSGF_REPLY))
+			break;
+		/* a page: its entries, and back through the encoder */
+		if (rdc_proto_hist_page_decode(p, len, h->seq, &pg))
+			break;
+		if (pg.n > h->seq ||
+		    len != RDC_PROTO_HIST_PAGE_HDR +
+				    (size_t)pg.n * RDC_PROTO_HIST_ENTRY_SIZE)
+			abort();
+		for (uint32_t i = 0; i < pg.n; i++) {
+			const uint8_t *q =
+				p + RDC_PROTO_HIST_PAGE_HDR +
+				(size_t)i * RDC_PROTO_HIST_ENTRY_SIZE;
+
+			if (rdc_proto_hist_entry_decode(q, &he))
+				continue;
+			rdc_proto_hist_entry_encode(ebuf, &he);
+			if (memcmp(ebuf, q, RDC_PROTO_HIST_ENTRY_SIZE))
+				abort();
+		}
 		break;
 	default:
 		break;

@@ -312,6 +312,23 @@ static void fz_check_reply(struct fz *z, struct fz_client *c,
 			fz_check_frame(c, p, h->len, false);
 			want = h->len;
 			break;
+		case RDC_MSG_HIST_READ: {
+			/* a page no larger than asked, every entry sound */
+			struct rdc_proto_hist_page pg;
+			struct rdc_proto_hist_entry e;
+
+			fz_assert(!rdc_proto_hist_page_decode(
+				p, h->len, rdc_proto_get32(r->pl + 8), &pg));
+			fz_assert(rdc_proto_get64(r->pl) + pg.n <= pg.count);
+			for (uint32_t i = 0; i < pg.n; i++)
+				fz_assert(!rdc_proto_hist_entry_decode(
+					p + RDC_PROTO_HIST_PAGE_HDR +
+						(size_t)i *
+							RDC_PROTO_HIST_ENTRY_SIZE,
+					&e));
+			want = h->len;
+			break;
+		}
 		case RDC_MSG_SUBSCRIBE:
 			c->sub_events = rdc_proto_get32(r->pl);
 			c->sub_enc = rdc_proto_get32(r->pl + 8);

@@ -11,8 +11,9 @@ import shutil
 import struct
 
 HELLO, REG_READ, REG_WRITE, VRAM_READ, VRAM_WRITE, SUBMIT, WAIT, STEP, \
-    FRAME_GRAB, SUBSCRIBE, STATS, RESET, CLAIM, RELEASE, PING, PINS_SET = \
-    range(1, 17)
+    FRAME_GRAB, SUBSCRIBE, STATS, RESET, CLAIM, RELEASE, PING, PINS_SET, \
+    HIST_OPEN, HIST_READ, HIST_END, HIST_SET = range(1, 21)
+HIST_SET_LIMIT, HIST_SET_LINE = 1, 2
 REG_STATUS, REG_IRQ_STATUS, REG_IRQ_ENABLE = 0x014, 0x018, 0x01c
 REG_FB_FORMAT, REG_MODE_PRESET, REG_FRAME_COUNT = 0x130, 0x140, 0x13c
 OP_SET_FG, OP_SET_DST, OP_FILL_RECT, OP_FENCE = 0x10, 0x14, 0x24, 0x01
@@ -162,6 +163,51 @@ def seeds():
         s.msg(0, RESET, u32(1))
         s.time(10)
         out["reset-ahead-" + name] = s.b
+
+    # pixel history: one client's, paged, busy for the other, while the
+    # chip draws; bad requests of each kind; a client that leaves with one
+    for mode, name in ((2, "stepped"), (1, "fast")):
+        s = Seed(mode)
+        s.connect()
+        s.connect()
+        s.hello(0, control=True)
+        s.hello(1)
+        small_mode(s, 0)
+        s.msg(1, HIST_OPEN, u32(10, 10, 8, 4, 0))
+        s.msg(0, HIST_OPEN, u32(0, 0, 320, 200, 0))  # busy
+        s.msg(1, HIST_SET, u32(HIST_SET_LIMIT, 20))
+        s.msg(0, SUBMIT, draw())
+        s.msg(1, HIST_SET, u32(HIST_SET_LINE, 7))
+        s.msg(0, SUBMIT, draw(9))
+        s.time(100)
+        s.msg(1, HIST_READ, struct.pack("<QI", 0, 0))
+        s.msg(1, HIST_READ, struct.pack("<QI", 0, 16))
+        s.msg(1, HIST_READ, struct.pack("<QI", 16, 16))
+        s.msg(1, HIST_READ, struct.pack("<QI", 1 << 40, 1))  # range
+        s.msg(1, HIST_READ, struct.pack("<QI", 0, 0xffffffff))  # range
+        s.msg(1, HIST_READ, struct.pack("<Q", 0))  # malformed
+        s.msg(1, HIST_SET, u32(HIST_SET_LIMIT, 0))
+        s.msg(1, HIST_SET, u32(HIST_SET_LIMIT, 0xffffffff))
+        s.msg(1, HIST_SET, u32(9, 1))
+        s.msg(0, HIST_READ, struct.pack("<QI", 0, 16))  # not its own
+        s.msg(0, HIST_END)
+        s.msg(0, RESET, u32(1))  # the history follows the new chip
+        s.msg(0, SUBMIT, draw())
+        s.time(50)
+        s.msg(1, HIST_READ, struct.pack("<QI", 0, 8192))
+        s.msg(1, HIST_END)
+        s.msg(1, HIST_END)  # none open
+        s.msg(0, HIST_OPEN, u32(0, 0, 0, 5, 0))  # empty
+        s.msg(0, HIST_OPEN, u32(0, 0, 5, 5, 1))  # write log: not served
+        s.msg(0, HIST_OPEN, u32(0, 0, 5, 5, 0x80))
+        s.msg(0, HIST_OPEN, u32(0, 0, 5, 5))  # malformed
+        s.msg(0, HIST_OPEN, u32(0, 0, 0xffffffff, 0xffffffff, 0))
+        s.msg(0, SUBMIT, draw(3))
+        s.hangup(0)  # with its history open
+        s.time(20)
+        s.msg(1, HIST_OPEN, u32(10, 10, 1, 1, 0))
+        s.msg(1, PING)
+        out["history-" + name] = s.b
 
     s = Seed(0, token=True)
     for _ in range(4):

@@ -148,7 +148,6 @@ static void test_history_trace(void **state)
 	close(fd);
 	/* the script, recorded, with both kinds of history */
 	assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
-	/* (first: the recorder stands in front of the sim: backend) */
 	assert_int_equal(rdc_history_open(dev, 14, 12, 1, 1, 0, &hs), 0);
 	rec = rdc_rec_open(path, 4u << 20);
 	assert_non_null(rec);
@@ -197,6 +196,110 @@ static void test_history_trace(void **state)
 	rdc_history_close(ws);
 	rdc_history_close(wt);
 	unlink(path);
+}
+
+/* Every field of two entries (not their padding). */
+static void assert_entry_equal(const struct rdc_history_entry *a,
+			       const struct rdc_history_entry *b)
+{
+	assert_int_equal(a->x, b->x);
+	assert_int_equal(a->y, b->y);
+	assert_int_equal(a->format, b->format);
+	assert_int_equal(a->before, b->before);
+	assert_int_equal(a->after, b->after);
+	assert_int_equal(a->cycle, b->cycle);
+	assert_int_equal(a->frame, b->frame);
+	assert_int_equal(a->fetched, b->fetched);
+	assert_int_equal(a->opcode, b->opcode);
+	assert_int_equal(a->cmd_index, b->cmd_index);
+	assert_int_equal(a->source, b->source);
+	assert_int_equal(a->line, b->line);
+	assert_int_equal(a->cmd_addr, b->cmd_addr);
+	assert_int_equal(a->depth, b->depth);
+	assert_memory_equal(a->calls, b->calls, sizeof(a->calls));
+	assert_int_equal(a->rop, b->rop);
+	assert_int_equal(a->alpha, b->alpha);
+	assert_int_equal(a->colorkey, b->colorkey);
+	assert_int_equal(a->colorkey_on, b->colorkey_on);
+	assert_int_equal(a->pattern, b->pattern);
+	assert_int_equal(a->fg, b->fg);
+	assert_int_equal(a->bg, b->bg);
+}
+
+/*
+ * A history and a trace recorder in either order (rdcd --record wraps its
+ * device before any client asks for a history): the same entries as
+ * without a recorder, and each trace replays without a mismatch.
+ */
+static void test_history_recorder_order(void **state)
+{
+	static const char scene[] = "mode 640x480 xrgb8888\n"
+				    "fg #ff0000\nfill 8 8 32 32\n"
+				    "rop xor\nfg #00ffff\n"
+				    "blit 8 8 12 10 16 16\n"
+				    "rop copy\nfg #ffffff\ntext 12 10 \"A\"\n";
+	struct rdc_history_entry ref[64], e;
+	size_t n;
+	rdc_history *h = NULL;
+	rdc_dev *dev;
+
+	(void)state;
+	assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
+	assert_int_equal(rdc_history_open(dev, 10, 10, 4, 4, 0, &h), 0);
+	run_text(dev, scene);
+	n = rdc_history_count(h);
+	assert_true(n > 16 && n <= 64);
+	for (size_t i = 0; i < n; i++)
+		get(h, i, &ref[i]);
+	rdc_close(dev);
+	rdc_history_close(h);
+
+	for (int order = 0; order < 2; order++) {
+		char path[] = "/tmp/rdc-history-XXXXXX";
+		struct rdc_replay_result rr;
+		struct rdc_rec *rec;
+		int fd = mkstemp(path);
+
+		assert_true(fd >= 0);
+		close(fd);
+		assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
+		rec = rdc_rec_open(path, 4u << 20);
+		assert_non_null(rec);
+		if (order == 0) {
+			assert_int_equal(
+				rdc_history_open(dev, 10, 10, 4, 4, 0, &h), 0);
+			rdc_rec_attach(rec, dev);
+		} else {
+			rdc_rec_attach(rec, dev);
+			assert_int_equal(
+				rdc_history_open(dev, 10, 10, 4, 4, 0, &h), 0);
+		}
+		/* one a device, recorder or not */
+		{
+			rdc_history *h2 = NULL;
+
+			assert_int_equal(rdc_history_open(dev, 0, 0, 1, 1, 0,
+							  &h2),
+					 RDC_E_BUSY);
+		}
+		run_text(dev, scene);
+		assert_int_equal(rdc_history_count(h), n);
+		for (size_t i = 0; i < n; i++) {
+			get(h, i, &e);
+			assert_entry_equal(&e, &ref[i]);
+		}
+		/* the recorder goes first: the history goes on, and after
+		 * the device too */
+		assert_int_equal(rdc_rec_close(rec, dev), 0);
+		run_text(dev, "fill 10 10 1 1\n");
+		assert_int_equal(rdc_history_count(h), n + 1);
+		rdc_close(dev);
+		assert_int_equal(rdc_history_count(h), n + 1);
+		rdc_history_close(h);
+		assert_int_equal(rdc_replay_file(path, &rr, NULL), 0);
+		assert_int_equal(rr.mismatches, 0);
+		unlink(path);
+	}
 }
 
 /* Nothing outside the watched pixels is recorded. */
@@ -647,6 +750,7 @@ int main(void)
 		cmocka_unit_test(test_history_fill_xor_text),
 		cmocka_unit_test(test_history_untouched),
 		cmocka_unit_test(test_history_trace),
+		cmocka_unit_test(test_history_recorder_order),
 		cmocka_unit_test(test_history_torn),
 		cmocka_unit_test(test_history_list_chain),
 		cmocka_unit_test(test_history_subbyte),

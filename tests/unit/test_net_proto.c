@@ -54,7 +54,7 @@ static void test_header_check(void **state)
 	assert_int_equal(rdc_proto_hdr_check(&h, 100), RDC_ST_TOOBIG);
 	h.len = 0;
 	for (uint32_t t = 0; t < 70; t++) {
-		bool known = (t >= RDC_MSG_HELLO && t <= RDC_MSG_PINS_SET) ||
+		bool known = (t >= RDC_MSG_HELLO && t <= RDC_MSG_HIST_SET) ||
 			     t == RDC_MSG_EV_FRAME || t == RDC_MSG_EV_IRQ;
 
 		h.type = (uint16_t)t;
@@ -91,6 +91,15 @@ static void test_request_sizes(void **state)
 		{ RDC_MSG_PINS_SET, 8, 0 },
 		{ RDC_MSG_PINS_SET, 4, RDC_ST_MALFORMED },
 		{ RDC_MSG_PINS_SET, 12, RDC_ST_MALFORMED },
+		{ RDC_MSG_HIST_OPEN, 20, 0 },
+		{ RDC_MSG_HIST_OPEN, 16, RDC_ST_MALFORMED },
+		{ RDC_MSG_HIST_OPEN, 24, RDC_ST_MALFORMED },
+		{ RDC_MSG_HIST_READ, 12, 0 },
+		{ RDC_MSG_HIST_READ, 8, RDC_ST_MALFORMED },
+		{ RDC_MSG_HIST_END, 0, 0 },
+		{ RDC_MSG_HIST_END, 4, RDC_ST_MALFORMED },
+		{ RDC_MSG_HIST_SET, 8, 0 },
+		{ RDC_MSG_HIST_SET, 4, RDC_ST_MALFORMED },
 		{ RDC_MSG_EV_FRAME, 24, RDC_ST_TYPE },
 		{ RDC_MSG_SUBMIT, RDC_PROTO_MAX_REQUEST + 1, RDC_ST_TOOBIG },
 	};
@@ -102,6 +111,69 @@ static void test_request_sizes(void **state)
 
 		assert_int_equal(rdc_proto_request_check(&h), cases[i].want);
 	}
+}
+
+/*
+ * A pixel history page: each entry field by field at its offset, and a
+ * page whose count of entries does not match its length, or exceeds what
+ * was asked, refused.
+ */
+static void test_hist_page(void **state)
+{
+	struct rdc_proto_hist_entry e = {
+		.x = 1, .y = 2, .format = 3, .before = 4, .after = 5,
+		.cycle = 0x0102030405060708ull, .frame = 9, .fetched = -1,
+		.opcode = 10, .cmd_index = 11, .source = 2, .line = 12,
+		.cmd_addr = 13, .depth = 8, .calls = { 20, 21, 22, 23, 24, 25, 26, 27 },
+		.rop = 14, .alpha = 15, .colorkey = 16, .colorkey_on = 1,
+		.pattern = 3, .fg = 17, .bg = 18,
+	}, g;
+	struct rdc_proto_hist_page pg = { .count = 5, .dropped = 7, .n = 2 };
+	uint8_t b[RDC_PROTO_HIST_PAGE_HDR + 2 * RDC_PROTO_HIST_ENTRY_SIZE];
+	uint8_t *q = b + RDC_PROTO_HIST_PAGE_HDR;
+
+	(void)state;
+	rdc_proto_hist_page_encode(b, &pg);
+	rdc_proto_hist_entry_encode(q, &e);
+	rdc_proto_hist_entry_encode(q + RDC_PROTO_HIST_ENTRY_SIZE, &e);
+	assert_int_equal(rdc_proto_get64(q + 20), e.cycle);
+	assert_int_equal(rdc_proto_get32(q + 36), 0xffffffffu);
+	assert_int_equal(rdc_proto_get32(q + 60), 8);
+	assert_int_equal(rdc_proto_get32(q + 64 + 28), 27);
+	assert_int_equal(rdc_proto_get32(q + 120), 18);
+	memset(&g, 0, sizeof(g));
+	assert_int_equal(rdc_proto_hist_entry_decode(q, &g), 0);
+	assert_memory_equal(&g.calls, &e.calls, sizeof(e.calls));
+	assert_int_equal(g.cycle, e.cycle);
+	assert_int_equal(g.fetched, -1);
+	assert_int_equal(g.bg, 18);
+	memset(&pg, 0, sizeof(pg));
+	assert_int_equal(rdc_proto_hist_page_decode(b, sizeof(b), 2, &pg), 0);
+	assert_int_equal(pg.count, 5);
+	assert_int_equal(pg.dropped, 7);
+	assert_int_equal(pg.n, 2);
+	/* more than asked, cut short, a byte over, shorter than its header */
+	assert_int_equal(rdc_proto_hist_page_decode(b, sizeof(b), 1, &pg),
+			 RDC_ST_MALFORMED);
+	assert_int_equal(rdc_proto_hist_page_decode(b, sizeof(b) - 1, 2, &pg),
+			 RDC_ST_MALFORMED);
+	assert_int_equal(rdc_proto_hist_page_decode(b, sizeof(b) + 0, 9, &pg),
+			 0);
+	assert_int_equal(rdc_proto_hist_page_decode(b, 19, 9, &pg),
+			 RDC_ST_MALFORMED);
+	/* more entries than the history keeps */
+	rdc_proto_put64(b, 1);
+	assert_int_equal(rdc_proto_hist_page_decode(b, sizeof(b), 2, &pg),
+			 RDC_ST_MALFORMED);
+	/* a chain deeper than the DP's, an unknown source, a bad fetched */
+	rdc_proto_put32(q + 60, 9);
+	assert_int_equal(rdc_proto_hist_entry_decode(q, &g), RDC_ST_MALFORMED);
+	rdc_proto_put32(q + 60, 0);
+	rdc_proto_put32(q + 48, 4);
+	assert_int_equal(rdc_proto_hist_entry_decode(q, &g), RDC_ST_MALFORMED);
+	rdc_proto_put32(q + 48, 0);
+	rdc_proto_put32(q + 36, 2);
+	assert_int_equal(rdc_proto_hist_entry_decode(q, &g), RDC_ST_MALFORMED);
 }
 
 static void test_hello(void **state)
@@ -314,6 +386,7 @@ int main(void)
 		cmocka_unit_test(test_header_layout),
 		cmocka_unit_test(test_header_check),
 		cmocka_unit_test(test_request_sizes),
+		cmocka_unit_test(test_hist_page),
 		cmocka_unit_test(test_hello),
 		cmocka_unit_test(test_wait_stats),
 		cmocka_unit_test(test_rle_layout),

@@ -63,6 +63,10 @@ enum rdc_msg_type {
 	RDC_MSG_RELEASE = 14,	/* give control up */
 	RDC_MSG_PING = 15,	/* empty -> empty */
 	RDC_MSG_PINS_SET = 16,	/* u32 mask, u32 levels -> u32 pins */
+	RDC_MSG_HIST_OPEN = 17, /* struct rdc_proto_hist_open */
+	RDC_MSG_HIST_READ = 18, /* u64 first, u32 max -> a page (below) */
+	RDC_MSG_HIST_END = 19,	/* end the client's pixel history */
+	RDC_MSG_HIST_SET = 20,	/* u32 RDC_HIST_SET_*, u32 value */
 	RDC_MSG_EV_FRAME = 64,	/* event: frame (RDC_PROTO_FRAME_HDR + data) */
 	RDC_MSG_EV_IRQ = 65,	/* event: u32 new IRQ_STATUS bits, u64 time */
 	RDC_MSG_TYPE_MAX_ = 66
@@ -109,7 +113,7 @@ enum rdc_status {
 #define RDC_CAP_ALL	   0x1fu
 
 /* The last request type: types up to here are requests. */
-#define RDC_MSG_REQUEST_LAST RDC_MSG_PINS_SET
+#define RDC_MSG_REQUEST_LAST RDC_MSG_HIST_SET
 
 /* Daemon timing modes (HELLO reply) */
 enum rdc_run_mode {
@@ -179,6 +183,47 @@ struct rdc_proto_frame {
 	uint64_t number;  /* frame number since reset */
 };
 
+/*
+ * Pixel history (docs/history.md) kept by the daemon: one at a time on
+ * its chip (BUSY for a second), owned by the client that opened it and
+ * gone with it.  HIST_OPEN watches x, y, w, h of the screen (w, h not 0;
+ * 0xffffffff: to the screen's edge); flags 0 (RDC_HISTORY_WRITES, the
+ * write log, is not served: NOSYS).  HIST_READ answers a page: u64
+ * entries kept so far, u64 entries not kept (over the limit), u32 n, then
+ * n entries of RDC_PROTO_HIST_ENTRY_SIZE from index `first`, n at most
+ * `max` and RDC_PROTO_HIST_PAGE; `first` past the entries kept is RANGE.
+ */
+#define RDC_PROTO_HIST_OPEN_SIZE  20u
+#define RDC_PROTO_HIST_READ_SIZE  12u
+#define RDC_PROTO_HIST_SET_SIZE	  8u
+#define RDC_PROTO_HIST_PAGE_HDR	  20u
+#define RDC_PROTO_HIST_ENTRY_SIZE 124u
+#define RDC_PROTO_HIST_PAGE	  8192u /* entries a page at most (~1 MiB) */
+#define RDC_PROTO_HIST_CALLS	  8u
+#define RDC_PROTO_HIST_LIMIT_MAX  (1u << 20) /* entries a history keeps */
+/* HIST_SET: what to set */
+#define RDC_HIST_SET_LIMIT 1u /* entries kept, 1 .. RDC_PROTO_HIST_LIMIT_MAX */
+#define RDC_HIST_SET_LINE  2u /* the .rdl line later entries carry */
+
+struct rdc_proto_hist_open {
+	uint32_t x, y, w, h, flags;
+};
+
+/* One entry, field by field as rdc.h's struct rdc_history_entry. */
+struct rdc_proto_hist_entry {
+	uint32_t x, y, format, before, after;
+	uint64_t cycle, frame;
+	int32_t fetched;
+	uint32_t opcode, cmd_index, source, line, cmd_addr, depth;
+	uint32_t calls[RDC_PROTO_HIST_CALLS];
+	uint32_t rop, alpha, colorkey, colorkey_on, pattern, fg, bg;
+};
+
+struct rdc_proto_hist_page {
+	uint64_t count, dropped;
+	uint32_t n;
+};
+
 /* ---- Encoding and decoding (userspace/lib/proto.c) ---------------------- */
 void rdc_proto_hdr_encode(uint8_t *p, const struct rdc_proto_hdr *h);
 void rdc_proto_hdr_decode(const uint8_t *p, struct rdc_proto_hdr *h);
@@ -222,6 +267,25 @@ int rdc_proto_stats_decode(const uint8_t *p, size_t len,
 void rdc_proto_frame_hdr_encode(uint8_t *p, const struct rdc_proto_frame *f);
 int rdc_proto_frame_hdr_decode(const uint8_t *p, size_t len,
 			       struct rdc_proto_frame *f);
+
+void rdc_proto_hist_open_encode(uint8_t *p,
+				const struct rdc_proto_hist_open *o);
+int rdc_proto_hist_open_decode(const uint8_t *p, size_t len,
+			       struct rdc_proto_hist_open *o);
+void rdc_proto_hist_page_encode(uint8_t *p,
+				const struct rdc_proto_hist_page *pg);
+/*
+ * A HIST_READ reply of len bytes: its header, checked against the entries
+ * that follow (n of them, exactly) and against `max`, the most asked for.
+ */
+int rdc_proto_hist_page_decode(const uint8_t *p, size_t len, uint32_t max,
+			       struct rdc_proto_hist_page *pg);
+void rdc_proto_hist_entry_encode(uint8_t *p,
+				 const struct rdc_proto_hist_entry *e);
+/* RDC_ST_MALFORMED for a depth past RDC_PROTO_HIST_CALLS or a source
+ * past the four known. */
+int rdc_proto_hist_entry_decode(const uint8_t *p,
+				struct rdc_proto_hist_entry *e);
 
 /*
  * Encode w x h pixels into out (cap bytes) as `enc`; `prev` is the frame

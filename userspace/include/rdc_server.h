@@ -62,6 +62,20 @@ void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from);
 void rdc_rec_sync(struct rdc_rec *rec);
 
 /*
+ * Pixel history in a program that serves the device (rdcd): the entries
+ * made from now on carry `line` as their .rdl line (a client's script
+ * runs on the other side of a socket, and says where it is).
+ */
+void rdc_history_set_line(rdc_history *h, uint32_t line);
+/*
+ * A history whose device was closed goes on on another sim: device (a
+ * replayed trace's power cycle, rdcd's new chip): RDC_E_INVAL if it is
+ * attached or dev is not sim: (a trace recorder on it is fine),
+ * RDC_E_BUSY if dev has one.
+ */
+int rdc_history_attach(rdc_history *h, rdc_dev *dev);
+
+/*
  * The VCD writer (docs/vcd.md) for a program that owns the chip's trace
  * hook itself: it puts rdc_vcd_trace on the hook, or fans events out to
  * it, instead of letting rdc_vcd_open take the hook of a sim: handle.

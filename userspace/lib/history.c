@@ -12,6 +12,10 @@
  * left open (their "after" is in VRAM now), then opens entries for the
  * watched pixels the new access covers, with their "before".  Nothing of
  * this runs while no history is open: the chip tests one pointer.
+ *
+ * On a device rdcd serves, the daemon keeps the history on its chip
+ * (this same code, there) and the handle here fetches its entries a page
+ * at a time (the backend's hist_* operations, rdc_proto.h's HIST_*).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -19,9 +23,11 @@
 #include "dp.h"
 #include "hw.h"
 #include "rdc_priv.h"
+#include "rdc_proto.h"
 
 #define HIST_MAX_DEFAULT (1u << 20) /* entries kept; later ones are counted */
 #define WRITES_MAX	 (1u << 22) /* write accesses logged (RDC_HISTORY_WRITES) */
+#define REMOTE_PAGE	 4096u	    /* entries fetched from a daemon at once */
 
 struct hist_rec {
 	struct rdc_history_entry e;
@@ -42,6 +48,17 @@ struct rdc_history {
 	struct rdc_history_write *wr;
 	size_t nw, wcap, wopen;
 	uint64_t wdropped;
+	/* the line entries carry, when the program says (rdcd) */
+	bool line_set;
+	uint32_t line;
+	/*
+	 * Kept by a daemon (dev->be->hist_*): entries [page_first, page_first
+	 * + page_n) fetched; once its device is closed, all of them.
+	 */
+	bool remote;
+	struct rdc_history_entry *page;
+	size_t page_cap, page_n;
+	uint64_t page_first, rcount, rdropped;
 };
 
 static uint32_t px_get(const uint8_t *vram, const struct hist_rec *r)
@@ -122,7 +139,7 @@ static void hist_context(const struct rdc_history *h,
 	e->size = sizeof(*e);
 	e->cycle = time;
 	e->cmd_index = hw->perf.cmds;
-	e->line = h->dev->src_line;
+	e->line = h->line_set ? h->line : h->dev->src_line;
 	e->frame = hw->crtc.frame_count;
 	if (who == RDC_VRAM_BY_HOST || !dp) {
 		e->opcode = RDC_HISTORY_OP_HOST;
@@ -309,6 +326,45 @@ static void hist_hook(void *ctx, uint64_t time, uint32_t addr, uint32_t len,
 	}
 }
 
+/* A history the daemon serving dev keeps: only the handle is here. */
+static int remote_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
+		       uint32_t h, uint32_t flags, rdc_history **out)
+{
+	struct rdc_history *hi;
+	int ret;
+
+	if (dev->hist)
+		return rdc_err_detail(RDC_E_BUSY,
+				      "a history is already open on this "
+				      "device");
+	if (flags & RDC_HISTORY_WRITES)
+		return rdc_err_detail(RDC_E_NOSYS,
+				      "rdcd keeps no write log "
+				      "(RDC_HISTORY_WRITES): run the diff on "
+				      "sim:, or on the daemon's trace");
+	hi = calloc(1, sizeof(*hi));
+	if (!hi)
+		return RDC_E_NOMEM;
+	ret = dev->be->hist_open(dev, x, y, w, h, flags);
+	if (ret) {
+		free(hi);
+		if (ret == RDC_E_BUSY)
+			return rdc_err_detail(ret, "rdcd keeps another "
+						   "client's history: one "
+						   "at a time");
+		return ret;
+	}
+	hi->dev = dev;
+	hi->remote = true;
+	hi->x0 = x;
+	hi->y0 = y;
+	hi->flags = flags;
+	hi->max = HIST_MAX_DEFAULT;
+	dev->hist = hi;
+	*out = hi;
+	return 0;
+}
+
 int rdc_history_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
 		     uint32_t h, uint32_t flags, rdc_history **out)
 {
@@ -320,7 +376,10 @@ int rdc_history_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
 	*out = NULL;
 	if (!dev || (flags & ~RDC_HISTORY_WRITES))
 		return RDC_E_INVAL;
-	hw = rdc_sim_hw(dev);
+	/* under a trace recorder too (rdcd --record) */
+	hw = rdc_dev_chip(dev);
+	if (!hw && dev->be->hist_open)
+		return remote_open(dev, x, y, w, h, flags, out);
 	if (!hw)
 		return rdc_err_detail(RDC_E_NOSYS,
 				      "pixel history needs a sim: device (the "
@@ -349,9 +408,9 @@ int rdc_history_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
 
 int rdc_history_attach(rdc_history *h, rdc_dev *dev)
 {
-	struct rdc_hw *hw = rdc_sim_hw(dev);
+	struct rdc_hw *hw = rdc_dev_chip(dev);
 
-	if (!h || h->dev || !hw)
+	if (!h || h->dev || h->remote || !hw)
 		return RDC_E_INVAL;
 	if (dev->hist || hw->vram_hook)
 		return RDC_E_BUSY;
@@ -366,8 +425,28 @@ int rdc_history_set_limit(rdc_history *h, size_t max_entries)
 {
 	if (!h || !max_entries)
 		return RDC_E_INVAL;
+	if (h->remote && h->dev) {
+		int ret;
+
+		if (max_entries > RDC_PROTO_HIST_LIMIT_MAX)
+			return rdc_err_detail(RDC_E_RANGE,
+					      "rdcd keeps at most %u entries",
+					      RDC_PROTO_HIST_LIMIT_MAX);
+		ret = h->dev->be->hist_set(h->dev, RDC_HIST_SET_LIMIT,
+					   (uint32_t)max_entries);
+		if (ret)
+			return ret;
+	}
 	h->max = max_entries;
 	return 0;
+}
+
+void rdc_history_set_line(rdc_history *h, uint32_t line)
+{
+	if (!h)
+		return;
+	h->line_set = true;
+	h->line = line;
 }
 
 /* Everything written so far has landed once the chip is between calls. */
@@ -377,17 +456,78 @@ static void hist_sync(rdc_history *h)
 		hist_settle(h);
 }
 
+/*
+ * Entries [first, first + max) of a daemon's history into h->page (max
+ * at most its capacity), and how many it keeps now.
+ */
+static int remote_fetch(rdc_history *h, uint64_t first, uint32_t max)
+{
+	uint32_t n = 0;
+	uint64_t count = 0, dropped = 0;
+	int ret;
+
+	if (max > h->page_cap) {
+		struct rdc_history_entry *p =
+			realloc(h->page, (size_t)max * sizeof(*p));
+
+		if (!p)
+			return RDC_E_NOMEM;
+		h->page = p;
+		h->page_cap = max;
+	}
+	ret = h->dev->be->hist_read(h->dev, first, max, h->page, &n, &count,
+				    &dropped);
+	if (ret)
+		return ret;
+	h->rcount = count;
+	h->rdropped = dropped;
+	if (max) {
+		h->page_first = first;
+		h->page_n = n;
+	}
+	return 0;
+}
+
 size_t rdc_history_count(rdc_history *h)
 {
 	if (!h)
 		return 0;
+	if (h->remote) {
+		if (h->dev && remote_fetch(h, 0, 0))
+			return 0;
+		return h->dev ? (size_t)h->rcount : h->page_n;
+	}
 	hist_sync(h);
 	return h->n;
 }
 
 uint64_t rdc_history_dropped(rdc_history *h)
 {
+	if (h && h->remote && h->dev)
+		remote_fetch(h, 0, 0); /* on an error: the last known */
+	if (h && h->remote)
+		return h->rdropped;
 	return h ? h->dropped + h->wdropped : 0;
+}
+
+static int remote_get(rdc_history *h, size_t i, struct rdc_history_entry *e,
+		      size_t sz)
+{
+	if (i < h->page_first || i - h->page_first >= h->page_n) {
+		int ret;
+
+		if (!h->dev)
+			return RDC_E_RANGE;
+		ret = remote_fetch(h, i, REMOTE_PAGE);
+		if (ret)
+			return ret;
+		if (!h->page_n || h->page_first != i)
+			return RDC_E_RANGE;
+	}
+	memcpy((char *)e + sizeof(uint32_t),
+	       (char *)&h->page[i - h->page_first] + sizeof(uint32_t),
+	       sz - sizeof(uint32_t));
+	return 0;
 }
 
 int rdc_history_get_sized(rdc_history *h, size_t i, struct rdc_history_entry *e)
@@ -396,12 +536,20 @@ int rdc_history_get_sized(rdc_history *h, size_t i, struct rdc_history_entry *e)
 
 	if (!h || !e || e->size < sizeof(uint32_t))
 		return RDC_E_INVAL;
-	hist_sync(h);
-	if (i >= h->n)
-		return RDC_E_RANGE;
 	sz = RDC_MIN((size_t)e->size, sizeof(*e));
-	memcpy((char *)e + sizeof(uint32_t),
-	       (char *)&h->rec[i].e + sizeof(uint32_t), sz - sizeof(uint32_t));
+	if (h->remote) {
+		int ret = remote_get(h, i, e, sz);
+
+		if (ret)
+			return ret;
+	} else {
+		hist_sync(h);
+		if (i >= h->n)
+			return RDC_E_RANGE;
+		memcpy((char *)e + sizeof(uint32_t),
+		       (char *)&h->rec[i].e + sizeof(uint32_t),
+		       sz - sizeof(uint32_t));
+	}
 	if (e->size > sizeof(*e))
 		memset((char *)e + sizeof(*e), 0, e->size - sizeof(*e));
 	return 0;
@@ -457,6 +605,50 @@ int rdc_history_first_diff(rdc_history *a, rdc_history *b, size_t *index)
 	return i < n || a->nw != b->nw ? 1 : 0;
 }
 
+/*
+ * A daemon's history whose device closes: every entry comes over first
+ * (what cannot, for want of memory or a connection, is counted dropped).
+ */
+static void remote_detach(rdc_history *h)
+{
+	rdc_dev *dev = h->dev;
+	uint64_t count = 0;
+
+	if (!remote_fetch(h, 0, 0))
+		count = h->rcount;
+	if (count > SIZE_MAX / sizeof(*h->page))
+		count = 0;
+	if (count > h->page_cap) {
+		struct rdc_history_entry *p =
+			realloc(h->page, (size_t)count * sizeof(*p));
+
+		if (p) {
+			h->page = p;
+			h->page_cap = (size_t)count;
+		} else {
+			count = 0;
+		}
+	}
+	h->page_n = 0;
+	h->page_first = 0;
+	while (h->page_n < count) {
+		uint32_t n = 0, max = (uint32_t)RDC_MIN(count - h->page_n,
+							(uint64_t)REMOTE_PAGE);
+		uint64_t c, d;
+
+		if (dev->be->hist_read(dev, h->page_n, max, h->page + h->page_n,
+				       &n, &c, &d) ||
+		    !n)
+			break;
+		h->page_n += n;
+		h->rdropped = d;
+	}
+	h->rdropped += h->rcount - h->page_n;
+	dev->be->hist_close(dev);
+	h->dev = NULL;
+	dev->hist = NULL;
+}
+
 /* The device goes away first (rdc_close): keep what was recorded. */
 void rdc_history_detach(rdc_dev *dev)
 {
@@ -464,6 +656,10 @@ void rdc_history_detach(rdc_dev *dev)
 
 	if (!h)
 		return;
+	if (h->remote) {
+		remote_detach(h);
+		return;
+	}
 	hist_settle(h);
 	rdc_hw_set_vram_hook(h->hw, NULL, NULL);
 	h->hw = NULL;
@@ -475,8 +671,13 @@ void rdc_history_close(rdc_history *h)
 {
 	if (!h)
 		return;
-	if (h->dev)
+	if (h->remote && h->dev) {
+		h->dev->be->hist_close(h->dev);
+		h->dev->hist = NULL;
+	} else if (h->dev) {
 		rdc_history_detach(h->dev);
+	}
+	free(h->page);
 	free(h->rec);
 	free(h->wr);
 	free(h);

@@ -58,6 +58,10 @@ struct net {
 	/* interrupt events not yet taken */
 	struct rdc_event irq[NET_IRQ_QUEUE];
 	unsigned int irq_head, irq_n;
+	/* a pixel history open on the daemon, and the .rdl line its entries
+	 * carry there */
+	bool hist_open;
+	uint32_t hist_line;
 };
 
 static struct net *net_of(rdc_dev *dev)
@@ -423,6 +427,27 @@ void rdc_client_close(rdc_dev *dev)
 
 /* ---- Operations ---------------------------------------------------------- */
 
+/*
+ * With a pixel history open, the daemon's entries carry the .rdl line
+ * this side runs (dev->src_line, which the script runner sets): before a
+ * request that can make the chip write, the line, if it changed.
+ */
+static int net_hist_line(rdc_dev *dev)
+{
+	struct net *n = net_of(dev);
+	uint8_t b[RDC_PROTO_HIST_SET_SIZE];
+	int ret;
+
+	if (!n->hist_open || dev->src_line == n->hist_line)
+		return 0;
+	rdc_proto_put32(b, RDC_HIST_SET_LINE);
+	rdc_proto_put32(b + 4, dev->src_line);
+	ret = net_call(n, RDC_MSG_HIST_SET, b, sizeof(b), NULL, NULL);
+	if (!ret)
+		n->hist_line = dev->src_line;
+	return ret;
+}
+
 int rdc_client_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 {
 	uint8_t b[4], *pl = NULL;
@@ -442,6 +467,10 @@ int rdc_client_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 int rdc_client_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
 {
 	uint8_t b[8];
+	int ret = net_hist_line(dev);
+
+	if (ret)
+		return ret;
 
 	rdc_proto_put32(b, reg);
 	rdc_proto_put32(b + 4, val);
@@ -481,9 +510,13 @@ int rdc_client_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 			  size_t len)
 {
 	const uint8_t *in = buf;
+	int hret;
 
 	if (len > UINT32_MAX || addr > UINT32_MAX - len)
 		return RDC_E_RANGE;
+	hret = net_hist_line(dev);
+	if (hret)
+		return hret;
 	/* Chunks are exact: a host aperture write takes no simulated time. */
 	do {
 		uint32_t k = (uint32_t)RDC_MIN(len, net_of(dev)->vram_chunk);
@@ -506,7 +539,10 @@ int rdc_client_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 {
 	uint32_t max = net_of(dev)->submit_words;
 	uint8_t *b;
-	int ret = 0;
+	int ret = net_hist_line(dev);
+
+	if (ret)
+		return ret;
 
 	b = malloc(RDC_MIN(n, max) * 4 + 1);
 	if (!b)
@@ -534,7 +570,10 @@ int rdc_client_wait(rdc_dev *dev, const struct rdc_wait *w)
 	struct rdc_proto_wait pw = { .budget = w->budget,
 				     .needs_dp = w->needs_dp };
 	uint8_t b[RDC_PROTO_WAIT_SIZE];
+	int ret = net_hist_line(dev);
 
+	if (ret)
+		return ret;
 	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
 		pw.term[i].kind = w->term[i].kind;
 		pw.term[i].reg = w->term[i].reg;
@@ -548,6 +587,10 @@ int rdc_client_wait(rdc_dev *dev, const struct rdc_wait *w)
 int rdc_client_step(rdc_dev *dev, uint64_t cycles)
 {
 	uint8_t b[8];
+	int ret = net_hist_line(dev);
+
+	if (ret)
+		return ret;
 
 	rdc_proto_put64(b, cycles);
 	return net_call(net_of(dev), RDC_MSG_STEP, b, 8, NULL, NULL);
@@ -557,8 +600,10 @@ int rdc_client_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 {
 	uint8_t b[8], *pl = NULL;
 	uint32_t len = 0;
-	int ret;
+	int ret = net_hist_line(dev);
 
+	if (ret)
+		return ret;
 	rdc_proto_put32(b, mask);
 	rdc_proto_put32(b + 4, levels);
 	ret = net_call(net_of(dev), RDC_MSG_PINS_SET, b, 8, &pl, &len);
@@ -566,6 +611,102 @@ int rdc_client_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 		ret = RDC_E_PROTO;
 	free(pl);
 	return ret;
+}
+
+int rdc_client_hist_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
+			 uint32_t h, uint32_t flags)
+{
+	struct rdc_proto_hist_open o = { x, y, w, h, flags };
+	struct net *n = net_of(dev);
+	uint8_t b[RDC_PROTO_HIST_OPEN_SIZE];
+	int ret;
+
+	rdc_proto_hist_open_encode(b, &o);
+	ret = net_call(n, RDC_MSG_HIST_OPEN, b, sizeof(b), NULL, NULL);
+	if (!ret) {
+		n->hist_open = true;
+		n->hist_line = 0; /* the daemon's new history starts there */
+	}
+	return ret;
+}
+
+int rdc_client_hist_read(rdc_dev *dev, uint64_t first, uint32_t max,
+			 struct rdc_history_entry *e, uint32_t *n,
+			 uint64_t *count, uint64_t *dropped)
+{
+	struct rdc_proto_hist_page pg = { 0 };
+	uint8_t b[RDC_PROTO_HIST_READ_SIZE], *pl = NULL;
+	uint32_t len = 0;
+	int ret;
+
+	rdc_proto_put64(b, first);
+	rdc_proto_put32(b + 8, max);
+	ret = net_call(net_of(dev), RDC_MSG_HIST_READ, b, sizeof(b), &pl, &len);
+	if (!ret && rdc_proto_hist_page_decode(pl, len, max, &pg))
+		ret = RDC_E_PROTO;
+	for (uint32_t i = 0; !ret && i < pg.n; i++) {
+		struct rdc_proto_hist_entry pe;
+
+		if (rdc_proto_hist_entry_decode(
+			    pl + RDC_PROTO_HIST_PAGE_HDR +
+				    (size_t)i * RDC_PROTO_HIST_ENTRY_SIZE,
+			    &pe)) {
+			ret = RDC_E_PROTO;
+			break;
+		}
+		e[i] = (struct rdc_history_entry){
+			.size = sizeof(e[i]),
+			.x = pe.x,
+			.y = pe.y,
+			.format = pe.format,
+			.before = pe.before,
+			.after = pe.after,
+			.cycle = pe.cycle,
+			.frame = pe.frame,
+			.fetched = pe.fetched,
+			.opcode = pe.opcode,
+			.cmd_index = pe.cmd_index,
+			.source = pe.source,
+			.line = pe.line,
+			.cmd_addr = pe.cmd_addr,
+			.depth = pe.depth,
+			.rop = pe.rop,
+			.alpha = pe.alpha,
+			.colorkey = pe.colorkey,
+			.colorkey_on = pe.colorkey_on,
+			.pattern = pe.pattern,
+			.fg = pe.fg,
+			.bg = pe.bg,
+		};
+		_Static_assert(sizeof(e[i].calls) == sizeof(pe.calls),
+			       "rdc.h and rdc_proto.h call chains differ");
+		memcpy(e[i].calls, pe.calls, sizeof(pe.calls));
+	}
+	if (!ret) {
+		*n = pg.n;
+		*count = pg.count;
+		*dropped = pg.dropped;
+	}
+	free(pl);
+	return ret;
+}
+
+int rdc_client_hist_set(rdc_dev *dev, uint32_t what, uint32_t value)
+{
+	uint8_t b[RDC_PROTO_HIST_SET_SIZE];
+
+	rdc_proto_put32(b, what);
+	rdc_proto_put32(b + 4, value);
+	return net_call(net_of(dev), RDC_MSG_HIST_SET, b, sizeof(b), NULL,
+			NULL);
+}
+
+int rdc_client_hist_close(rdc_dev *dev)
+{
+	struct net *n = net_of(dev);
+
+	n->hist_open = false;
+	return net_call(n, RDC_MSG_HIST_END, NULL, 0, NULL, NULL);
 }
 
 int rdc_client_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,

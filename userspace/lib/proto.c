@@ -80,10 +80,17 @@ int rdc_proto_request_check(const struct rdc_proto_hdr *h)
 		return len == RDC_PROTO_WAIT_SIZE ? 0 : RDC_ST_MALFORMED;
 	case RDC_MSG_SUBSCRIBE:
 		return len == 12 ? 0 : RDC_ST_MALFORMED;
+	case RDC_MSG_HIST_OPEN:
+		return len == RDC_PROTO_HIST_OPEN_SIZE ? 0 : RDC_ST_MALFORMED;
+	case RDC_MSG_HIST_READ:
+		return len == RDC_PROTO_HIST_READ_SIZE ? 0 : RDC_ST_MALFORMED;
+	case RDC_MSG_HIST_SET:
+		return len == RDC_PROTO_HIST_SET_SIZE ? 0 : RDC_ST_MALFORMED;
 	case RDC_MSG_STATS:
 	case RDC_MSG_CLAIM:
 	case RDC_MSG_RELEASE:
 	case RDC_MSG_PING:
+	case RDC_MSG_HIST_END:
 		return len == 0 ? 0 : RDC_ST_MALFORMED;
 	default:
 		return RDC_ST_TYPE;
@@ -240,6 +247,113 @@ int rdc_proto_frame_hdr_decode(const uint8_t *p, size_t len,
 	f->number = rdc_proto_get64(p + 16);
 	if (f->encoding >= RDC_ENC_COUNT_ ||
 	    (uint64_t)f->width * f->height > RDC_PROTO_MAX_FRAME_PIXELS)
+		return RDC_ST_MALFORMED;
+	return 0;
+}
+
+void rdc_proto_hist_open_encode(uint8_t *p, const struct rdc_proto_hist_open *o)
+{
+	rdc_proto_put32(p, o->x);
+	rdc_proto_put32(p + 4, o->y);
+	rdc_proto_put32(p + 8, o->w);
+	rdc_proto_put32(p + 12, o->h);
+	rdc_proto_put32(p + 16, o->flags);
+}
+
+int rdc_proto_hist_open_decode(const uint8_t *p, size_t len,
+			       struct rdc_proto_hist_open *o)
+{
+	if (len != RDC_PROTO_HIST_OPEN_SIZE)
+		return RDC_ST_MALFORMED;
+	o->x = rdc_proto_get32(p);
+	o->y = rdc_proto_get32(p + 4);
+	o->w = rdc_proto_get32(p + 8);
+	o->h = rdc_proto_get32(p + 12);
+	o->flags = rdc_proto_get32(p + 16);
+	return 0;
+}
+
+void rdc_proto_hist_page_encode(uint8_t *p,
+				const struct rdc_proto_hist_page *pg)
+{
+	rdc_proto_put64(p, pg->count);
+	rdc_proto_put64(p + 8, pg->dropped);
+	rdc_proto_put32(p + 16, pg->n);
+}
+
+int rdc_proto_hist_page_decode(const uint8_t *p, size_t len, uint32_t max,
+			       struct rdc_proto_hist_page *pg)
+{
+	if (len < RDC_PROTO_HIST_PAGE_HDR)
+		return RDC_ST_MALFORMED;
+	pg->count = rdc_proto_get64(p);
+	pg->dropped = rdc_proto_get64(p + 8);
+	pg->n = rdc_proto_get32(p + 16);
+	if (pg->n > max || pg->n > RDC_PROTO_HIST_PAGE || pg->n > pg->count ||
+	    len - RDC_PROTO_HIST_PAGE_HDR !=
+		    (size_t)pg->n * RDC_PROTO_HIST_ENTRY_SIZE)
+		return RDC_ST_MALFORMED;
+	return 0;
+}
+
+void rdc_proto_hist_entry_encode(uint8_t *p,
+				 const struct rdc_proto_hist_entry *e)
+{
+	const uint32_t head[5] = { e->x, e->y, e->format, e->before, e->after };
+	const uint32_t mid[7] = { (uint32_t)e->fetched,
+				  e->opcode,
+				  e->cmd_index,
+				  e->source,
+				  e->line,
+				  e->cmd_addr,
+				  e->depth };
+	const uint32_t tail[7] = { e->rop,	   e->alpha,   e->colorkey,
+				   e->colorkey_on, e->pattern, e->fg,
+				   e->bg };
+	unsigned int i;
+
+	for (i = 0; i < 5; i++)
+		rdc_proto_put32(p + 4 * i, head[i]);
+	rdc_proto_put64(p + 20, e->cycle);
+	rdc_proto_put64(p + 28, e->frame);
+	for (i = 0; i < 7; i++)
+		rdc_proto_put32(p + 36 + 4 * i, mid[i]);
+	for (i = 0; i < RDC_PROTO_HIST_CALLS; i++)
+		rdc_proto_put32(p + 64 + 4 * i, e->calls[i]);
+	for (i = 0; i < 7; i++)
+		rdc_proto_put32(p + 96 + 4 * i, tail[i]);
+}
+
+int rdc_proto_hist_entry_decode(const uint8_t *p,
+				struct rdc_proto_hist_entry *e)
+{
+	unsigned int i;
+
+	e->x = rdc_proto_get32(p);
+	e->y = rdc_proto_get32(p + 4);
+	e->format = rdc_proto_get32(p + 8);
+	e->before = rdc_proto_get32(p + 12);
+	e->after = rdc_proto_get32(p + 16);
+	e->cycle = rdc_proto_get64(p + 20);
+	e->frame = rdc_proto_get64(p + 28);
+	e->fetched = (int32_t)rdc_proto_get32(p + 36);
+	e->opcode = rdc_proto_get32(p + 40);
+	e->cmd_index = rdc_proto_get32(p + 44);
+	e->source = rdc_proto_get32(p + 48);
+	e->line = rdc_proto_get32(p + 52);
+	e->cmd_addr = rdc_proto_get32(p + 56);
+	e->depth = rdc_proto_get32(p + 60);
+	for (i = 0; i < RDC_PROTO_HIST_CALLS; i++)
+		e->calls[i] = rdc_proto_get32(p + 64 + 4 * i);
+	e->rop = rdc_proto_get32(p + 96);
+	e->alpha = rdc_proto_get32(p + 100);
+	e->colorkey = rdc_proto_get32(p + 104);
+	e->colorkey_on = rdc_proto_get32(p + 108);
+	e->pattern = rdc_proto_get32(p + 112);
+	e->fg = rdc_proto_get32(p + 116);
+	e->bg = rdc_proto_get32(p + 120);
+	if (e->depth > RDC_PROTO_HIST_CALLS || e->source > 3 ||
+	    e->fetched < -1 || e->fetched > 1)
 		return RDC_ST_MALFORMED;
 	return 0;
 }

@@ -79,6 +79,15 @@ int rdc_client_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
 int rdc_client_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
 			  size_t cap, int timeout_ms);
 
+/* Pixel history kept by the daemon (rdc_backend's hist_*). */
+int rdc_client_hist_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
+			 uint32_t h, uint32_t flags);
+int rdc_client_hist_read(rdc_dev *dev, uint64_t first, uint32_t max,
+			 struct rdc_history_entry *e, uint32_t *n,
+			 uint64_t *count, uint64_t *dropped);
+int rdc_client_hist_set(rdc_dev *dev, uint32_t what, uint32_t value);
+int rdc_client_hist_close(rdc_dev *dev);
+
 /* The operations every backend built on the client shares. */
 #define RDC_CLIENT_OPS \
 	.close = rdc_client_close, .reg_read = rdc_client_reg_read, \
@@ -87,6 +96,8 @@ int rdc_client_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
 	.wait = rdc_client_wait, .step = rdc_client_step, \
 	.frame_grab = rdc_client_frame_grab, \
 	.subscribe = rdc_client_subscribe, \
-	.event_next = rdc_client_event_next, .pins_set = rdc_client_pins_set
+	.event_next = rdc_client_event_next, .pins_set = rdc_client_pins_set, \
+	.hist_open = rdc_client_hist_open, .hist_read = rdc_client_hist_read, \
+	.hist_set = rdc_client_hist_set, .hist_close = rdc_client_hist_close
 
 #endif /* RDC_CLIENT_H */

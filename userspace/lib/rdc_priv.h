@@ -139,6 +139,23 @@ struct rdc_backend {
 	 * reaches (rdc_list); returns how many, or a negative error.
 	 */
 	int (*list)(rdc_found_fn fn, void *arg);
+
+	/*
+	 * Optional (a device rdcd serves; NULL: history.c's own, on the
+	 * chip of a sim: handle, or RDC_E_NOSYS): a pixel history the other
+	 * side keeps (rdc_proto.h, HIST_*).  hist_open watches x, y, w, h
+	 * (rdc_history_open's arguments); hist_read copies up to `max`
+	 * entries from index `first` into e and sets *n, *count (the
+	 * entries kept so far) and *dropped; hist_set sets a
+	 * RDC_HIST_SET_* value; hist_close ends it.
+	 */
+	int (*hist_open)(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
+			 uint32_t h, uint32_t flags);
+	int (*hist_read)(rdc_dev *dev, uint64_t first, uint32_t max,
+			 struct rdc_history_entry *e, uint32_t *n,
+			 uint64_t *count, uint64_t *dropped);
+	int (*hist_set)(rdc_dev *dev, uint32_t what, uint32_t value);
+	int (*hist_close)(rdc_dev *dev);
 };
 
 /* Backends (one file each). */
@@ -165,11 +182,11 @@ struct rdc_dev {
 	uint32_t src_line;
 };
 
+/* The chip behind a sim: handle, with a trace recorder attached or not
+ * (record.c); NULL for any other backend. */
+struct rdc_hw *rdc_dev_chip(rdc_dev *dev);
 /* The device closes under its history (history.c). */
 void rdc_history_detach(rdc_dev *dev);
-/* A detached history goes on on another sim: device (a replayed trace's
- * power cycle): RDC_E_INVAL if it is attached or dev is not sim:. */
-int rdc_history_attach(rdc_history *h, rdc_dev *dev);
 
 /* Run a wait with one term (core.c). */
 int rdc_wait_one(rdc_dev *dev, enum rdc_wait_test kind, uint32_t reg,

@@ -155,6 +155,13 @@ void rdc_rec_attach(struct rdc_rec *r, rdc_dev *dev)
 	dev->priv = r;
 }
 
+struct rdc_hw *rdc_dev_chip(rdc_dev *dev)
+{
+	if (dev && dev->be == &rdc_backend_rec)
+		return ((struct rdc_rec *)dev->priv)->hw;
+	return rdc_sim_hw(dev);
+}
+
 void rdc_rec_power(struct rdc_rec *r)
 {
 	rec_head(r, REC_POWER);

@@ -201,6 +201,11 @@ struct rdcd {
 	/* --gpio-sim: the pins on a gpio-sim chip (gpiosim.c), or NULL */
 	struct rdcd_gpiosim *gpiosim;
 
+	/* the pixel history one client keeps on the chip (HIST_*), or NULL;
+	 * it follows the chip across power cycles and ends with its client */
+	rdc_history *hist;
+	struct rdcd_client *hist_client;
+
 	/* pacing: simulated time pace_sim0 was wall time pace_wall0 */
 	uint64_t pace_wall0_ns, pace_sim0;
 };
