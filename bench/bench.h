@@ -63,7 +63,9 @@ enum bench_kind {
 	BENCH_TEXT,
 	BENCH_SCANOUT,
 	BENCH_REALTIME,
+	BENCH_REALTIME_1080, /* realtime at 1920x1080@60 */
 	BENCH_TEAPOT3D,
+	BENCH_GROWTH, /* cost against area and region size */
 	BENCH_KIND_COUNT
 };
 

@@ -48,8 +48,18 @@
 #define PEER_BUDGET_S 1.0
 #define PEER_PROBE    32
 
-/* The five byte-moving workloads must reach this fraction of the limit. */
-#define TARGET_VS_LIMIT 0.7
+/*
+ * Targets (bench/README.md, "Reading the output").  Scanout on: fill,
+ * blit, blit_xor and text against the limit that also converts the frames
+ * the chip scanned out meanwhile; scanout (the workload) against its
+ * lookup.  Scanout off: fill, blit and blit_xor against the plain limit,
+ * text against the bit expand.  line wants SDL2_gfx's rate or better, the
+ * other shapes the best peer's.
+ */
+#define TARGET_SCAN	0.7
+#define TARGET_OFF	0.8
+#define TARGET_OFF_TEXT 0.7
+#define LINE_PEER	"SDL2_gfx"
 /* realtime: simulated frames per wall second wanted, 20x real time. */
 #define RT_PRESET     RDC_PRESET_640x480_60
 #define RT_W	      640u
@@ -62,8 +72,6 @@
 #define RT_FILLS      100u
 #define RT_FILL_MAX   128u
 #define RT_TEXT_ROWS  100u
-#define RT_COLS	      (RT_W / BENCH_GLYPH_W)
-#define RT_ROWS	      (RT_H / BENCH_GLYPH_H)
 #define RT_FIRST_CHAR 32u /* printable ASCII */
 #define RT_CHARS      95u
 /* A sink that discards: png writes only the frames asked for (never). */
@@ -99,7 +107,9 @@ static const char *const kind_name[BENCH_KIND_COUNT] = {
 	[BENCH_TEXT] = "text",
 	[BENCH_SCANOUT] = "scanout",
 	[BENCH_REALTIME] = "realtime",
+	[BENCH_REALTIME_1080] = "realtime1080",
 	[BENCH_TEAPOT3D] = "teapot3d",
+	[BENCH_GROWTH] = "growth",
 };
 
 static const uint32_t kind_ops[BENCH_KIND_COUNT] = {
@@ -129,10 +139,38 @@ static const struct bench_peer *const peers[] = {
 };
 #define NPEERS (sizeof(peers) / sizeof(peers[0]) - 1)
 
+/*
+ * Simulated cycles of each workload's drawing, scanout on and scanout off,
+ * as first measured (bench/README.md, "Simulated cycles"); 0 where they
+ * vary from run to run (realtime).  The simulator may get faster, never
+ * different: a cycle count that changed fails the run, as a CRC does.
+ */
+static const uint64_t expect_cycles[BENCH_KIND_COUNT] = {
+	[BENCH_FILL] = 1047362037u,	  [BENCH_BLIT] = 852290488u,
+	[BENCH_BLIT_XOR] = 1267262678u,	  [BENCH_LINE] = 3465157430u,
+	[BENCH_AALINE] = 1229723067u,	  [BENCH_CIRCLE] = 470645371u,
+	[BENCH_FILL_CIRCLE] = 184788418u, [BENCH_POLYGON] = 222487413u,
+	[BENCH_TEXT] = 254265450u,	  [BENCH_SCANOUT] = 999938688u,
+	[BENCH_TEAPOT3D] = 162255342u,
+};
+static const uint64_t expect_cycles_off[BENCH_KIND_COUNT] = {
+	[BENCH_FILL] = 789235900u,	  [BENCH_BLIT] = 642020749u,
+	[BENCH_BLIT_XOR] = 951224529u,	  [BENCH_LINE] = 2622307538u,
+	[BENCH_AALINE] = 930128316u,	  [BENCH_CIRCLE] = 356120550u,
+	[BENCH_FILL_CIRCLE] = 139462850u, [BENCH_POLYGON] = 167959276u,
+	[BENCH_TEXT] = 195000272u,
+};
+
 static bool byte_moving(enum bench_kind k)
 {
 	return k == BENCH_FILL || k == BENCH_BLIT || k == BENCH_BLIT_XOR ||
 	       k == BENCH_TEXT || k == BENCH_SCANOUT;
+}
+
+/* The drawing workloads: measured with scanout on and with it off. */
+static bool drawing(enum bench_kind k)
+{
+	return k <= BENCH_TEXT;
 }
 
 /* ---- helpers ------------------------------------------------------------- */
@@ -675,7 +713,22 @@ struct rdc_res {
 	uint64_t cycles;
 	uint64_t sim_pixels; /* pixels the DP wrote, by its own count */
 	uint32_t crc;
+	uint64_t frames;    /* scanned out while drawing (scanout on) */
+	uint32_t frame_crc; /* of the first frame after the drawing */
 };
+
+/* CONTROL.SCANOUT_EN = 0: the CRTC stops, and with it its bus traffic. */
+static void scanout_off(rdc_dev *dev)
+{
+	uint32_t ctl;
+
+	if (rdc_reg_read(dev, RDC_REG_CONTROL, &ctl) ||
+	    rdc_reg_write(dev, RDC_REG_CONTROL,
+			  ctl & ~(uint32_t)RDC_CONTROL_SCANOUT_EN) ||
+	    rdc_reg_read(dev, RDC_REG_CONTROL, &ctl) ||
+	    (ctl & RDC_CONTROL_SCANOUT_EN))
+		die("scanout off", RDC_E_IO);
+}
 
 /*
  * scanout: every frame the CRTC converts through the CLUT is handed to
@@ -722,9 +775,19 @@ static void rdc_scanout(const struct bench_input *in, struct rdc_res *res)
  * untimed: loading a saved image instead would start the timed part at
  * another simulated time, and sim_cycles must not depend on the repeat.
  */
-static void rdc_run(const struct bench_input *in, struct rdc_res *res)
+/*
+ * scan false: CONTROL.SCANOUT_EN is cleared before the prefill, so the
+ * drawing runs without the CRTC's reads of VRAM (and their bus stalls).
+ * scan true: the frames the CRTC completes during the drawing are counted
+ * (the frame listener), and the frame after it is the one whose CRC the
+ * limit with scanout must reproduce.
+ */
+static void rdc_run(const struct bench_input *in, struct rdc_res *res,
+		    bool scan)
 {
 	struct rdc_stats st0 = { 0 }, st1 = { 0 };
+	struct frames f = { 0 };
+	struct rdc_hw *hw;
 	struct run r;
 	uint64_t c0, c1;
 	double t0;
@@ -735,6 +798,11 @@ static void rdc_run(const struct bench_input *in, struct rdc_res *res)
 	}
 	run_open(&r, RDC_PRESET_1024x768_60, RDC_FMT_XRGB8888,
 		 BENCH_W * BENCH_H * 4);
+	hw = rdc_sim_hw(r.dev);
+	if (!hw)
+		die("sim hw", RDC_E_NOSYS);
+	if (!scan)
+		scanout_off(r.dev);
 	if (in->prefill) {
 		rdc_fills(&r, in->prefill, BENCH_FILL_OPS);
 		if (in->kind == BENCH_BLIT_XOR)
@@ -742,15 +810,23 @@ static void rdc_run(const struct bench_input *in, struct rdc_res *res)
 		run_finish(&r);
 	}
 	rdc_stats_get(r.dev, &st0);
+	if (scan)
+		rdc_hw_set_frame_fn(hw, frames_fn, &f);
 	rdc_sim_time(r.dev, &c0);
 	t0 = bench_tic();
 	rdc_draw(&r, in);
 	run_finish(&r);
 	res->wall = bench_toc(t0);
 	rdc_sim_time(r.dev, &c1);
+	rdc_hw_set_frame_fn(hw, NULL, NULL);
 	rdc_stats_get(r.dev, &st1);
 	res->cycles = c1 - c0;
 	res->sim_pixels = st1.pixels - st0.pixels;
+	res->frames = f.seen;
+	res->frame_crc = 0;
+	if (scan &&
+	    (rdc_frame_wait(r.dev) || rdc_frame_crc(r.dev, &res->frame_crc)))
+		die("frame crc", RDC_E_IO);
 	res->crc = run_crc(&r);
 	run_close(&r);
 }
@@ -768,20 +844,33 @@ struct rt_res {
 	uint32_t khz; /* teapot3d: the core clock */
 };
 
-static void rt_frame(struct run *r, struct rng *g)
+/* The realtime workload's modes: 640x480 (20x real time wanted), 1080p. */
+struct rt_mode {
+	uint32_t preset, w, h;
+	uint32_t target_fps; /* simulated frames a wall second wanted */
+	uint32_t frames;     /* run this many frames or RT_MAX_S */
+};
+
+static const struct rt_mode rt_vga = { RT_PRESET, RT_W, RT_H, RT_TARGET_FPS,
+				       RT_FRAMES };
+static const struct rt_mode rt_1080 = { RDC_PRESET_1920x1080_60, 1920, 1080,
+					RT_HZ, 2 * RT_HZ };
+#define RT_MAX_COLS (1920 / BENCH_GLYPH_W)
+
+static void rt_frame(struct run *r, struct rng *g, const struct rt_mode *m)
 {
-	char text[RT_COLS];
-	uint32_t i, k;
+	char text[RT_MAX_COLS];
+	uint32_t i, k, cols = m->w / BENCH_GLYPH_W, rows = m->h / BENCH_GLYPH_H;
 
 	for (i = 0; i < RT_LINES; i++) {
-		int x0 = (int)(r32(g) % RT_W), y0 = (int)(r32(g) % RT_H);
-		int x1 = (int)(r32(g) % RT_W), y1 = (int)(r32(g) % RT_H);
+		int x0 = (int)(r32(g) % m->w), y0 = (int)(r32(g) % m->h);
+		int x1 = (int)(r32(g) % m->w), y1 = (int)(r32(g) % m->h);
 
 		rdc_batch_fg(r->b, r32(g) | BENCH_OPAQUE);
 		rdc_batch_line(r->b, x0, y0, x1, y1);
 	}
 	for (i = 0; i < RT_FILLS; i++) {
-		int x = (int)(r32(g) % RT_W), y = (int)(r32(g) % RT_H);
+		int x = (int)(r32(g) % m->w), y = (int)(r32(g) % m->h);
 		uint32_t w = 1 + r32(g) % RT_FILL_MAX;
 		uint32_t h = 1 + r32(g) % RT_FILL_MAX;
 
@@ -789,12 +878,12 @@ static void rt_frame(struct run *r, struct rng *g)
 		rdc_batch_fill_rect(r->b, x, y, w, h);
 	}
 	for (i = 0; i < RT_TEXT_ROWS; i++) {
-		for (k = 0; k < RT_COLS; k++)
+		for (k = 0; k < cols; k++)
 			text[k] = (char)(RT_FIRST_CHAR + r32(g) % RT_CHARS);
 		rdc_batch_fg(r->b, r32(g) | BENCH_OPAQUE);
 		rdc_batch_bg(r->b, r32(g) | BENCH_OPAQUE);
-		rdc_batch_text(r->b, 0, (int)(i % RT_ROWS * BENCH_GLYPH_H),
-			       text, RT_COLS, 0);
+		rdc_batch_text(r->b, 0, (int)(i % rows * BENCH_GLYPH_H), text,
+			       cols, 0);
 	}
 	run_flush(r, true);
 }
@@ -852,7 +941,7 @@ static void rdc_teapot3d(struct rt_res *res)
 	run_close(&r);
 }
 
-static void rdc_realtime(struct rt_res *res)
+static void rdc_realtime(struct rt_res *res, const struct rt_mode *m)
 {
 	struct frames f = { 0 };
 	struct rng g = { BENCH_SEED };
@@ -862,7 +951,7 @@ static void rdc_realtime(struct rt_res *res)
 	double t0;
 	int err;
 
-	run_open(&r, RT_PRESET, RDC_FMT_XRGB8888, RT_W * RT_H * 4);
+	run_open(&r, m->preset, RDC_FMT_XRGB8888, (size_t)m->w * m->h * 4);
 	if (rdc_frame_wait(r.dev))
 		die("frame wait", RDC_E_TIMEOUT);
 	err = rdc_sink_open(RT_SINK, &f.sink);
@@ -879,12 +968,12 @@ static void rdc_realtime(struct rt_res *res)
 	f0 = f.seen;
 	t0 = bench_now();
 	do {
-		rt_frame(&r, &g);
+		rt_frame(&r, &g, m);
 		res->drawn++;
 		if (rdc_vblank_wait(r.dev))
 			die("vblank", RDC_E_TIMEOUT);
 		res->wall = bench_now() - t0;
-	} while (f.seen - f0 < RT_FRAMES && res->wall < RT_MAX_S);
+	} while (f.seen - f0 < m->frames && res->wall < RT_MAX_S);
 	rdc_sim_time(r.dev, &c1);
 	res->frames = f.seen - f0;
 	res->cycles = c1 - c0;
@@ -902,6 +991,7 @@ static void rdc_realtime(struct rt_res *res)
 struct limit {
 	const char *name;
 	double (*run)(const struct bench_input *in, uint32_t *s);
+	const char *scan_name; /* the same with the frames' scanout */
 };
 
 static void c_fills(uint32_t *s, const uint32_t *a, uint32_t ops)
@@ -1034,14 +1124,47 @@ static double limit_scanout(const struct bench_input *in, uint32_t *s)
 }
 
 static const struct limit limits[BENCH_KIND_COUNT][2] = {
-	[BENCH_FILL] = { { "store", limit_store },
-			 { "wmemset", limit_wmemset } },
-	[BENCH_BLIT] = { { "memmove", limit_blit } },
-	[BENCH_BLIT_XOR] = { { "xor", limit_blit_xor } },
-	[BENCH_TEXT] = { { "expand", limit_text } },
-	[BENCH_SCANOUT] = { { "lookup", limit_scanout } },
+	[BENCH_FILL] = { { "store", limit_store, "store+scan" },
+			 { "wmemset", limit_wmemset, "wmemset+scan" } },
+	[BENCH_BLIT] = { { "memmove", limit_blit, "memmove+scan" } },
+	[BENCH_BLIT_XOR] = { { "xor", limit_blit_xor, "xor+scan" } },
+	[BENCH_TEXT] = { { "expand", limit_text, "expand+scan" } },
+	[BENCH_SCANOUT] = { { "lookup", limit_scanout, NULL } },
 };
 #define MAX_LIMITS 2
+
+/*
+ * The limit with scanout: after the drawing, the chip's conversion of the
+ * surface to an XRGB8888 frame (the X byte cleared, as the CRTC and the
+ * sinks see it), done `frames` times: as many frames as the chip scanned
+ * out while it drew.  (The chip converts while it draws, seeing the
+ * picture half done; the bytes moved are the same.)  Returns the seconds
+ * and sets *crc to the last frame's CRC, converted once more untimed when
+ * frames is 0, which must equal the chip's frame after the drawing.
+ */
+static double scan_frames(const uint32_t *s, uint64_t frames, double *cpu,
+			  uint32_t *crc)
+{
+	uint32_t *fb = xcalloc((size_t)BENCH_W * BENCH_H, 4);
+	uint64_t f;
+	double t0 = bench_tic(), t;
+	uint32_t i;
+
+	for (f = 0; f < frames; f++) {
+		for (i = 0; i < BENCH_W * BENCH_H; i++)
+			fb[i] = s[i] & 0x00ffffffu;
+		/* each frame is a new output: keep every one of them */
+		__asm__ volatile("" : : "r"(fb) : "memory");
+	}
+	t = bench_toc(t0);
+	*cpu = bench_cpu();
+	if (!frames)
+		for (i = 0; i < BENCH_W * BENCH_H; i++)
+			fb[i] = s[i] & 0x00ffffffu;
+	*crc = (uint32_t)crc32(0, (const uint8_t *)fb, BENCH_W * BENCH_H * 4);
+	free(fb);
+	return t;
+}
 
 /* ---- measuring ----------------------------------------------------------- */
 
@@ -1056,6 +1179,7 @@ struct figure {
 	int runs;
 	bool slow; /* repeats cut short: see SLOW_S */
 	bool done;
+	uint32_t frame_crc; /* a limit with scanout: its last frame's */
 };
 
 struct opts {
@@ -1135,7 +1259,9 @@ static void figure_init(struct figure *f, const char *name,
 
 struct rdc_ctx {
 	const struct bench_input *in;
-	uint64_t cycles, sim_pixels;
+	bool scan; /* scanout on */
+	uint64_t cycles, sim_pixels, frames;
+	uint32_t frame_crc;
 	bool cycles_differ; /* a run's simulated time was not the first's */
 };
 
@@ -1145,18 +1271,25 @@ static double rdc_one(void *ctx, uint32_t ops, uint32_t *crc)
 	struct rdc_res res = { 0 };
 
 	(void)ops; /* always all of it */
-	rdc_run(c->in, &res);
+	rdc_run(c->in, &res, c->scan);
 	*crc = res.crc;
-	if (c->cycles && c->cycles != res.cycles)
+	if (c->cycles && (c->cycles != res.cycles || c->frames != res.frames ||
+			  c->frame_crc != res.frame_crc))
 		c->cycles_differ = true;
 	c->cycles = res.cycles;
 	c->sim_pixels = res.sim_pixels;
+	c->frames = res.frames;
+	c->frame_crc = res.frame_crc;
 	return res.wall;
 }
 
 struct limit_ctx {
 	const struct bench_input *in;
 	const struct limit *lim;
+	const struct rdc_ctx *scan; /* with scanout: rdc's frame count */
+	uint32_t frame_crc;	    /* of the last frame converted */
+	bool frame_crc_same;	    /* every run's was the same */
+	int runs;
 };
 
 static double limit_one(void *ctx, uint32_t ops, uint32_t *crc)
@@ -1166,6 +1299,17 @@ static double limit_one(void *ctx, uint32_t ops, uint32_t *crc)
 	double t = c->lim->run(c->in, s);
 
 	(void)ops; /* always all of it */
+	if (c->scan) {
+		double cpu = bench_cpu(), cpu2;
+		uint32_t fcrc;
+
+		t += scan_frames(s, c->scan->frames, &cpu2, &fcrc);
+		toc_cpu = cpu + cpu2;
+		c->frame_crc_same = !c->runs ||
+				    (c->frame_crc_same && fcrc == c->frame_crc);
+		c->frame_crc = fcrc;
+		c->runs++;
+	}
 	*crc = bench_surface_crc(s, BENCH_W * 4);
 	free(s);
 	return t;
@@ -1205,19 +1349,34 @@ static uint32_t peer_ops(const struct bench_input *in,
 
 /* ---- reporting ----------------------------------------------------------- */
 
-struct result {
-	enum bench_kind kind;
-	uint64_t ops, pixels, cycles, sim_pixels;
-	struct figure rdc;
-	struct figure lim[MAX_LIMITS];
-	struct figure peer[NPEERS + 1];
-	double fps;	   /* realtime: simulated frames a wall second */
-	double sim_fps;	   /* teapot3d: frames a simulated second */
-	uint64_t rt_drawn; /* realtime: frames' worth of drawing submitted */
-	bool crc_ok;
+/* rdc's figures one way (scanout on, or off) and how they compare. */
+struct way {
+	struct figure *fig;
+	uint64_t cycles, sim_pixels;
+	bool crc_ok, cycles_ok;
 	double vs_limit, vs_peer; /* 0: none measured */
 	const char *best_limit, *best_peer;
+	double target;	       /* the ratio wanted; 0: none */
+	const char *target_of; /* against what */
+	double vs_target;
 	bool met;
+};
+
+struct result {
+	enum bench_kind kind;
+	uint64_t ops, pixels;
+	struct figure rdc, rdc_off;
+	struct figure lim[MAX_LIMITS];
+	struct figure lim_scan[MAX_LIMITS];
+	struct figure peer[NPEERS + 1];
+	struct way on, off; /* off: drawing workloads only */
+	uint64_t frames;    /* scanned out during the drawing (scanout on) */
+	uint32_t frame_crc; /* rdc's frame after the drawing */
+	bool frame_crc_ok;  /* every limit with scanout made the same frame */
+	double fps;	    /* realtime: simulated frames a wall second */
+	double sim_fps;	    /* teapot3d: frames a simulated second */
+	uint64_t rt_drawn;  /* realtime: frames' worth of drawing submitted */
+	bool rt1080;	    /* realtime at 1920x1080 */
 };
 
 static double mpix(uint64_t pixels, double wall)
@@ -1236,6 +1395,16 @@ static const char *crc_word(enum bench_kind k, uint32_t crc)
 	if (!expect_crc[k])
 		return "";
 	return crc == expect_crc[k] ? "OK" : "MISMATCH";
+}
+
+static bool realtime(enum bench_kind k)
+{
+	return k == BENCH_REALTIME || k == BENCH_REALTIME_1080;
+}
+
+static const struct rt_mode *rt_mode_of(enum bench_kind k)
+{
+	return k == BENCH_REALTIME_1080 ? &rt_1080 : &rt_vga;
 }
 
 static void print_figures(const char *key, const struct figure *f, size_t n,
@@ -1258,128 +1427,216 @@ static void print_figures(const char *key, const struct figure *f, size_t n,
 			printf(",\"crc_ok\":%s",
 			       f[i].crc == expect_crc[res->kind] ? "true" :
 								   "false");
+		if (f == res->lim_scan)
+			printf(",\"frames\":%llu,\"frame_crc32\":\"%08x\"",
+			       (unsigned long long)res->frames, f[i].frame_crc);
 		printf("}");
 		first = false;
 	}
 	printf("]");
 }
 
+/* The keys one way of a drawing workload shares with the other. */
+static void print_way(const struct result *res, const struct way *w)
+{
+	const struct figure *f = w->fig;
+
+	printf("\"wall_s\":%.6f,\"mpix_s\":%.1f,\"ops_s\":%.0f,"
+	       "\"sim_cycles\":%llu,\"crc32\":\"%08x\"",
+	       f->wall, mpix(res->pixels, f->wall), (double)res->ops / f->wall,
+	       (unsigned long long)w->cycles, f->crc);
+	if (expect_crc[res->kind])
+		printf(",\"crc_ok\":%s", w->crc_ok ? "true" : "false");
+	printf(",\"cpu_s\":%.6f,\"runs\":%d", f->cpu, f->runs);
+	if (w->sim_pixels)
+		printf(",\"sim_pixels\":%llu",
+		       (unsigned long long)w->sim_pixels);
+	if (f->slow)
+		printf(",\"note\":\"first run over %.0f s: not repeated\"",
+		       SLOW_S);
+}
+
+static void print_target(const struct way *w)
+{
+	if (w->best_limit)
+		printf(",\"vs_limit\":%.3f,\"best_limit\":\"%s\"", w->vs_limit,
+		       w->best_limit);
+	if (w->best_peer)
+		printf(",\"vs_peer\":%.3f,\"best_peer\":\"%s\"", w->vs_peer,
+		       w->best_peer);
+	if (w->target > 0)
+		printf(",\"target\":%.1f,\"target_of\":\"%s\","
+		       "\"vs_target\":%.3f",
+		       w->target, w->target_of, w->vs_target);
+	printf(",\"met\":%s", w->met ? "true" : "false");
+}
+
 static void print_json(const struct result *res)
 {
 	const struct figure *f = &res->rdc;
 
-	printf("{\"workload\":\"%s\",\"ops\":%llu,\"pixels\":%llu,"
-	       "\"wall_s\":%.6f,\"mpix_s\":%.1f,\"ops_s\":%.0f,"
-	       "\"sim_cycles\":%llu,\"crc32\":\"%08x\"",
+	printf("{\"workload\":\"%s\",\"ops\":%llu,\"pixels\":%llu,",
 	       kind_name[res->kind], (unsigned long long)res->ops,
-	       (unsigned long long)res->pixels, f->wall,
-	       mpix(res->pixels, f->wall), (double)res->ops / f->wall,
-	       (unsigned long long)res->cycles, f->crc);
-	if (expect_crc[res->kind])
-		printf(",\"crc_ok\":%s", res->crc_ok ? "true" : "false");
-	if (res->kind != BENCH_REALTIME && res->kind != BENCH_TEAPOT3D)
-		printf(",\"cpu_s\":%.6f", f->cpu);
-	printf(",\"runs\":%d", f->runs);
-	if (res->sim_pixels)
-		printf(",\"sim_pixels\":%llu",
-		       (unsigned long long)res->sim_pixels);
-	if (f->slow)
-		printf(",\"note\":\"first run over %.0f s: not repeated\"",
-		       SLOW_S);
-	if (res->kind == BENCH_REALTIME) {
-		printf(",\"fps\":%.1f,\"target_fps\":%u,\"vs_target\":%.3f,"
+	       (unsigned long long)res->pixels);
+	if (realtime(res->kind) || res->kind == BENCH_TEAPOT3D) {
+		printf("\"wall_s\":%.6f,\"mpix_s\":%.1f,\"ops_s\":%.0f,"
+		       "\"sim_cycles\":%llu,\"crc32\":\"%08x\",\"runs\":%d",
+		       f->wall, mpix(res->pixels, f->wall),
+		       (double)res->ops / f->wall,
+		       (unsigned long long)res->on.cycles, f->crc, f->runs);
+	} else {
+		print_way(res, &res->on);
+	}
+	if (expect_cycles[res->kind])
+		printf(",\"cycles_ok\":%s",
+		       res->on.cycles_ok ? "true" : "false");
+	if (realtime(res->kind)) {
+		const struct rt_mode *m = rt_mode_of(res->kind);
+
+		printf(",\"width\":%u,\"height\":%u,\"fps\":%.1f,"
+		       "\"target_fps\":%u,\"vs_target\":%.3f,"
 		       "\"frames_drawn\":%llu",
-		       res->fps, RT_TARGET_FPS, res->fps / RT_TARGET_FPS,
+		       m->w, m->h, res->fps, m->target_fps,
+		       res->fps / m->target_fps,
 		       (unsigned long long)res->rt_drawn);
 	}
 	if (res->kind == BENCH_TEAPOT3D)
 		printf(",\"wall_fps\":%.1f,\"sim_fps\":%.1f,\"target_fps\":%u,"
 		       "\"vs_target\":%.3f",
 		       res->fps, res->sim_fps, RT_HZ, res->sim_fps / RT_HZ);
-	if (byte_moving(res->kind)) {
+	if (drawing(res->kind))
+		printf(",\"scanout\":\"on\",\"frames_scanned\":%llu,"
+		       "\"frame_crc32\":\"%08x\"",
+		       (unsigned long long)res->frames, res->frame_crc);
+	if (byte_moving(res->kind))
 		print_figures("limits", res->lim, MAX_LIMITS, res);
-		printf(",\"vs_limit\":%.3f", res->vs_limit);
+	if (byte_moving(res->kind) && drawing(res->kind)) {
+		print_figures("limits_scan", res->lim_scan, MAX_LIMITS, res);
+		printf(",\"frame_crc_ok\":%s",
+		       res->frame_crc_ok ? "true" : "false");
 	}
-	if (res->best_peer) {
+	if (res->on.best_peer)
 		print_figures("peers", res->peer, NPEERS + 1, res);
-		printf(",\"best_peer\":\"%s\",\"vs_peer\":%.3f", res->best_peer,
-		       res->vs_peer);
+	if (realtime(res->kind) || res->kind == BENCH_TEAPOT3D)
+		printf(",\"met\":%s", res->on.met ? "true" : "false");
+	else
+		print_target(&res->on);
+	if (drawing(res->kind)) {
+		printf(",\"scanout_off\":{");
+		print_way(res, &res->off);
+		if (expect_cycles_off[res->kind])
+			printf(",\"cycles_ok\":%s",
+			       res->off.cycles_ok ? "true" : "false");
+		print_target(&res->off);
+		printf("}");
 	}
-	printf(",\"met\":%s}\n", res->met ? "true" : "false");
+	printf("}\n");
 	fflush(stdout);
+}
+
+static void target_text(char *buf, size_t n, const struct result *r,
+			const struct way *w)
+{
+	if (realtime(r->kind))
+		snprintf(buf, n, ">=%u fps", rt_mode_of(r->kind)->target_fps);
+	else if (r->kind == BENCH_TEAPOT3D)
+		snprintf(buf, n, ">=%u sim fps", RT_HZ);
+	else if (!strcmp(w->target_of, "limit_scan"))
+		snprintf(buf, n, ">=%.1f lim+scan", w->target);
+	else if (!strcmp(w->target_of, "limit"))
+		snprintf(buf, n, ">=%.1f limit", w->target);
+	else
+		snprintf(buf, n, ">=%.1f %s", w->target,
+			 strcmp(w->target_of, "best_peer") ? w->target_of :
+							     "best peer");
+}
+
+static void print_row(const struct result *r, const struct way *w,
+		      const char *scan)
+{
+	const struct figure *f = w->fig;
+	char buf[64], frames[24];
+	bool peer_target = !byte_moving(r->kind) && !realtime(r->kind) &&
+			   r->kind != BENCH_TEAPOT3D;
+
+	if (w == &r->on && drawing(r->kind))
+		snprintf(frames, sizeof(frames), "%llu",
+			 (unsigned long long)r->frames);
+	else
+		snprintf(frames, sizeof(frames), "-");
+	printf("%-12s %-4s %6s %9.1f %10.0f %12llu %08x %-8s ",
+	       kind_name[r->kind], scan, frames, mpix(r->pixels, f->wall),
+	       (double)r->ops / f->wall, (unsigned long long)w->cycles, f->crc,
+	       crc_word(r->kind, f->crc));
+	if (w->vs_limit > 0)
+		snprintf(buf, sizeof(buf), "%.3f (%s)", w->vs_limit,
+			 w->best_limit);
+	else
+		snprintf(buf, sizeof(buf), "-");
+	printf("%-22s ", buf);
+	if (w->vs_peer > 0)
+		snprintf(buf, sizeof(buf), "%.3f (%s)", w->vs_peer,
+			 w->best_peer);
+	else
+		snprintf(buf, sizeof(buf), "-");
+	printf("%-20s ", buf);
+	target_text(buf, sizeof(buf), r, w);
+	printf("%-18s %s%s\n", buf,
+	       peer_target && w->vs_target <= 0 ? "n/a (no peer)" :
+	       w->met				? "yes" :
+						  "NO",
+	       f->slow ? " *" : "");
 }
 
 static void print_table(const struct result *res, size_t n, bool peers_on)
 {
 	char buf[64];
 	size_t i, k;
-	bool slow = false;
+	bool slow = false, cycles_bad = false;
 
-	printf("\n%-11s %9s %10s %12s %-17s %-22s %-22s %-16s %s\n", "workload",
-	       "Mpix/s", "ops/s", "sim cycles", "CRC", "rdc/limit",
-	       "rdc/best-peer", "target", "met");
+	printf("\n%-12s %-4s %6s %9s %10s %12s %-17s %-22s %-20s %-18s %s\n",
+	       "workload", "scan", "frames", "Mpix/s", "ops/s", "sim cycles",
+	       "CRC", "rdc/limit", "rdc/best-peer", "target", "met");
 	for (i = 0; i < n; i++) {
 		const struct result *r = &res[i];
-		const struct figure *f = &r->rdc;
 
-		slow |= f->slow;
-		printf("%-11s %9.1f %10.0f %12llu %08x %-8s ",
-		       kind_name[r->kind], mpix(r->pixels, f->wall),
-		       (double)r->ops / f->wall, (unsigned long long)r->cycles,
-		       f->crc, crc_word(r->kind, f->crc));
-		if (r->vs_limit > 0)
-			snprintf(buf, sizeof(buf), "%.3f (%s)", r->vs_limit,
-				 r->best_limit);
-		else
-			snprintf(buf, sizeof(buf), "-");
-		printf("%-22s ", buf);
-		if (r->vs_peer > 0)
-			snprintf(buf, sizeof(buf), "%.3f (%s)", r->vs_peer,
-				 r->best_peer);
-		else
-			snprintf(buf, sizeof(buf), "-");
-		printf("%-22s ", buf);
-		if (r->kind == BENCH_REALTIME)
-			snprintf(buf, sizeof(buf), ">=%u fps", RT_TARGET_FPS);
-		else if (r->kind == BENCH_TEAPOT3D)
-			snprintf(buf, sizeof(buf), ">=%u sim fps", RT_HZ);
-		else if (byte_moving(r->kind))
-			snprintf(buf, sizeof(buf), ">=%.1f limit",
-				 TARGET_VS_LIMIT);
-		else
-			snprintf(buf, sizeof(buf), ">=1.0 best peer");
-		printf("%-16s %s%s\n", buf,
-		       !byte_moving(r->kind) && r->kind != BENCH_REALTIME &&
-				       r->kind != BENCH_TEAPOT3D &&
-				       !r->best_peer ?
-			       "n/a (no peer)" :
-		       r->met ? "yes" :
-				"NO",
-		       f->slow ? " *" : "");
+		slow |= r->rdc.slow || r->rdc_off.slow;
+		cycles_bad |= !r->on.cycles_ok ||
+			      (drawing(r->kind) && !r->off.cycles_ok);
+		print_row(r, &r->on, drawing(r->kind) ? "on" : "");
+		if (drawing(r->kind))
+			print_row(r, &r->off, "off");
 	}
-	printf("\n%-11s %-10s %9s %9s %9s %9s %-17s %-5s %s\n", "workload",
+	printf("\n%-12s %-12s %9s %9s %9s %9s %-17s %-5s %s\n", "workload",
 	       "who", "Mpix/s", "wall s", "Mpix/cpus", "cpu s", "CRC", "runs",
 	       "drawn");
 	for (i = 0; i < n; i++) {
 		const struct result *r = &res[i];
-		const struct figure *all[1 + MAX_LIMITS + NPEERS];
+		const struct figure *all[2 + 2 * MAX_LIMITS + NPEERS];
 		size_t m = 0;
 
 		all[m++] = &r->rdc;
+		if (r->rdc_off.done)
+			all[m++] = &r->rdc_off;
 		for (k = 0; k < MAX_LIMITS; k++)
 			if (r->lim[k].done)
 				all[m++] = &r->lim[k];
+		for (k = 0; k < MAX_LIMITS; k++)
+			if (r->lim_scan[k].done)
+				all[m++] = &r->lim_scan[k];
 		for (k = 0; peers[k]; k++)
 			if (r->peer[k].done)
 				all[m++] = &r->peer[k];
 		for (k = 0; k < m; k++) {
 			const struct figure *f = all[k];
-			bool part = r->kind != BENCH_REALTIME &&
+			bool part = !realtime(r->kind) &&
 				    r->kind != BENCH_TEAPOT3D &&
 				    f->ops < r->ops;
-			char drawn[40];
+			bool scanned = f >= r->lim_scan &&
+				       f < r->lim_scan + MAX_LIMITS;
+			char drawn[48];
 
-			if (r->kind == BENCH_REALTIME)
+			if (realtime(r->kind))
 				snprintf(buf, sizeof(buf),
 					 "%.0f fps, %.0f drawn", r->fps,
 					 r->fps * r->rt_drawn / r->ops);
@@ -1396,9 +1653,22 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 				snprintf(drawn, sizeof(drawn),
 					 "%u ops (%.0f%%)", f->ops,
 					 100.0 * f->ops / r->ops);
+			else if (scanned)
+				snprintf(drawn, sizeof(drawn),
+					 "all + %llu frames %08x %s",
+					 (unsigned long long)r->frames,
+					 f->frame_crc,
+					 f->frame_crc == r->frame_crc ?
+						 "OK" :
+						 "MISMATCH");
+			else if (f == &r->rdc && drawing(r->kind))
+				snprintf(drawn, sizeof(drawn),
+					 "all, %llu frames %08x",
+					 (unsigned long long)r->frames,
+					 r->frame_crc);
 			else
 				snprintf(drawn, sizeof(drawn), "all");
-			printf("%-11s %-10s %9.1f %9.3f %9.1f %9.3f %-17s "
+			printf("%-12s %-12s %9.1f %9.3f %9.1f %9.3f %-17s "
 			       "%-2d%-3s %s\n",
 			       k ? "" : kind_name[r->kind], f->name,
 			       mpix(f->pixels, f->wall), f->wall, rate(f) / 1e6,
@@ -1410,6 +1680,9 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 		printf("\n* first run took over %.0f s: measured once, not the "
 		       "median of %s (--full repeats it anyway)\n",
 		       SLOW_S, "the repeats");
+	printf("\nsim cycles: %s\n",
+	       cycles_bad ? "CHANGED from the saved ones (see above)" :
+			    "as saved, scanout on and off");
 	if (!peers_on)
 		printf("\npeers not run (make bench-peers, or rdc-bench-peers "
 		       "--peers)\n");
@@ -1417,67 +1690,118 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 
 /* ---- driver -------------------------------------------------------------- */
 
+/* rdc against the limits and peers one way; then its target. */
+static void way_compare(struct result *res, struct way *w,
+			const struct figure *lim, bool on)
+{
+	enum bench_kind kind = res->kind;
+	const struct figure *line_peer = NULL;
+	size_t k;
+
+	for (k = 0; k < MAX_LIMITS; k++) {
+		double v;
+
+		if (!lim[k].done)
+			continue;
+		v = rate(w->fig) / rate(&lim[k]);
+		if (!w->best_limit || v < w->vs_limit) {
+			w->vs_limit = v;
+			w->best_limit = lim[k].name;
+		}
+	}
+	for (k = 0; peers[k]; k++) {
+		const struct figure *f = &res->peer[k];
+		double v;
+
+		if (!f->done)
+			continue;
+		if (!strcmp(f->name, LINE_PEER))
+			line_peer = f;
+		v = rate(w->fig) / rate(f);
+		if (!w->best_peer || v < w->vs_peer) {
+			w->vs_peer = v;
+			w->best_peer = f->name;
+		}
+	}
+	if (byte_moving(kind)) {
+		w->target = !drawing(kind) || on ? TARGET_SCAN :
+			    kind == BENCH_TEXT	 ? TARGET_OFF_TEXT :
+						   TARGET_OFF;
+		w->target_of = on && drawing(kind) ? "limit_scan" : "limit";
+		w->vs_target = w->vs_limit;
+		w->met = w->crc_ok && w->best_limit &&
+			 w->vs_target >= w->target;
+	} else if (kind == BENCH_LINE) {
+		w->target = 1.0;
+		w->target_of = LINE_PEER;
+		w->vs_target = line_peer ? rate(w->fig) / rate(line_peer) : 0;
+		w->met = line_peer && w->vs_target >= w->target;
+	} else {
+		w->target = 1.0;
+		w->target_of = "best_peer";
+		w->vs_target = w->vs_peer;
+		w->met = w->best_peer && w->vs_target >= w->target;
+	}
+}
+
+static void run_rt(struct result *res, enum bench_kind kind,
+		   const struct opts *o)
+{
+	double fps[MAX_REPEAT];
+	struct rt_res rt = { 0 };
+	int runs;
+
+	for (runs = 0; runs < o->repeat; runs++) {
+		if (kind == BENCH_TEAPOT3D) {
+			rdc_teapot3d(&rt);
+		} else {
+			rdc_realtime(&rt, rt_mode_of(kind));
+		}
+		fps[runs] = (double)rt.frames / rt.wall;
+	}
+	res->fps = median(fps, runs);
+	res->ops = rt.frames;
+	res->rt_drawn = rt.drawn;
+	if (kind == BENCH_TEAPOT3D) {
+		res->pixels = rt.frames * RT_W * RT_H;
+		/* the busy cycles are the same every run: deterministic */
+		res->sim_fps = (double)rt.khz * 1000.0 * rt.frames / rt.cycles;
+		res->on.met = res->sim_fps >= RT_HZ;
+	} else {
+		const struct rt_mode *m = rt_mode_of(kind);
+
+		res->pixels = rt.frames * m->w * m->h;
+		res->on.met = res->fps >= m->target_fps;
+	}
+	res->on.cycles = rt.cycles;
+	res->on.cycles_ok = !expect_cycles[kind] ||
+			    rt.cycles == expect_cycles[kind];
+	res->rdc.wall = (double)rt.frames / res->fps;
+	res->rdc.ops = rt.frames;
+	res->rdc.pixels = res->pixels;
+	res->rdc.crc = rt.crc;
+	res->rdc.runs = runs;
+	res->rdc.done = true;
+}
+
 static void run_kind(struct result *res, enum bench_kind kind,
 		     const struct opts *o)
 {
-	struct entrant e[1 + MAX_LIMITS + NPEERS];
-	struct limit_ctx lc[MAX_LIMITS];
+	struct entrant e[2 + 2 * MAX_LIMITS + NPEERS];
+	struct limit_ctx lc[MAX_LIMITS], ls[MAX_LIMITS];
 	struct peer_ctx pc[NPEERS + 1];
 	struct bench_input in;
-	struct rdc_ctx rc;
+	struct rdc_ctx rc, rc_off;
 	size_t k, n = 0;
 
 	memset(res, 0, sizeof(*res));
 	res->kind = kind;
 	res->rdc.name = "rdc";
-	if (kind == BENCH_TEAPOT3D) {
-		double fps[MAX_REPEAT];
-		struct rt_res rt = { 0 };
-		uint32_t khz;
-		int runs;
-
-		for (runs = 0; runs < o->repeat; runs++) {
-			rdc_teapot3d(&rt);
-			fps[runs] = (double)rt.frames / rt.wall;
-		}
-		res->fps = median(fps, runs);
-		res->ops = rt.frames;
-		res->rt_drawn = rt.drawn;
-		res->pixels = rt.frames * RT_W * RT_H;
-		res->cycles = rt.cycles;
-		/* the busy cycles are the same every run: deterministic */
-		khz = rt.khz;
-		res->sim_fps = (double)khz * 1000.0 * rt.frames / rt.cycles;
-		res->rdc.wall = (double)rt.frames / res->fps;
-		res->rdc.ops = rt.frames;
-		res->rdc.pixels = res->pixels;
-		res->rdc.crc = rt.crc;
-		res->rdc.runs = runs;
-		res->rdc.done = true;
-		res->met = res->sim_fps >= RT_HZ;
-		return;
-	}
-	if (kind == BENCH_REALTIME) {
-		double fps[MAX_REPEAT];
-		struct rt_res rt = { 0 };
-		int runs;
-
-		for (runs = 0; runs < o->repeat; runs++) {
-			rdc_realtime(&rt);
-			fps[runs] = (double)rt.frames / rt.wall;
-		}
-		res->fps = median(fps, runs);
-		res->ops = rt.frames;
-		res->rt_drawn = rt.drawn;
-		res->pixels = rt.frames * RT_W * RT_H;
-		res->cycles = rt.cycles;
-		res->rdc.wall = (double)rt.frames / res->fps;
-		res->rdc.ops = rt.frames;
-		res->rdc.pixels = res->pixels;
-		res->rdc.crc = rt.crc;
-		res->rdc.runs = runs;
-		res->rdc.done = true;
-		res->met = res->fps >= RT_TARGET_FPS;
+	res->on.fig = &res->rdc;
+	res->off.fig = &res->rdc_off;
+	res->on.cycles_ok = res->off.cycles_ok = true;
+	if (realtime(kind) || kind == BENCH_TEAPOT3D) {
+		run_rt(res, kind, o);
 		return;
 	}
 	input_make(&in, kind);
@@ -1485,16 +1809,36 @@ static void run_kind(struct result *res, enum bench_kind kind,
 	res->pixels = in.pixels;
 	memset(&rc, 0, sizeof(rc));
 	rc.in = &in;
+	rc.scan = true;
+	rc_off = (struct rdc_ctx){ .in = &in };
 	figure_init(&res->rdc, "rdc", &in, in.ops);
 	e[n++] = (struct entrant){ .fig = &res->rdc,
 				   .one = rdc_one,
 				   .ctx = &rc };
+	if (drawing(kind)) {
+		figure_init(&res->rdc_off, "rdc-noscan", &in, in.ops);
+		e[n++] = (struct entrant){ .fig = &res->rdc_off,
+					   .one = rdc_one,
+					   .ctx = &rc_off };
+	}
 	for (k = 0; k < MAX_LIMITS && limits[kind][k].name; k++) {
-		lc[k] = (struct limit_ctx){ &in, &limits[kind][k] };
+		lc[k] = (struct limit_ctx){ .in = &in,
+					    .lim = &limits[kind][k] };
 		figure_init(&res->lim[k], limits[kind][k].name, &in, in.ops);
 		e[n++] = (struct entrant){ .fig = &res->lim[k],
 					   .one = limit_one,
 					   .ctx = &lc[k] };
+	}
+	/* after rdc with scanout, whose frame count they need */
+	for (k = 0; k < MAX_LIMITS && limits[kind][k].scan_name; k++) {
+		ls[k] = (struct limit_ctx){ .in = &in,
+					    .lim = &limits[kind][k],
+					    .scan = &rc };
+		figure_init(&res->lim_scan[k], limits[kind][k].scan_name, &in,
+			    in.ops);
+		e[n++] = (struct entrant){ .fig = &res->lim_scan[k],
+					   .one = limit_one,
+					   .ctx = &ls[k] };
 	}
 	for (k = 0; o->peers && peers[k]; k++) {
 		if (!peers[k]->has(kind))
@@ -1507,83 +1851,533 @@ static void run_kind(struct result *res, enum bench_kind kind,
 					   .ctx = &pc[k] };
 	}
 	measure(e, n, o);
-	res->cycles = rc.cycles;
-	res->sim_pixels = rc.sim_pixels;
-	res->crc_ok = expect_crc[kind] && res->rdc.crc == expect_crc[kind] &&
-		      res->rdc.crc_same;
+	res->frames = rc.frames;
+	res->frame_crc = rc.frame_crc;
+	res->frame_crc_ok = true;
 	for (k = 0; k < MAX_LIMITS; k++) {
-		const struct figure *f = &res->lim[k];
-		double v;
-
-		if (!f->done)
+		if (!res->lim_scan[k].done)
 			continue;
-		v = rate(&res->rdc) / rate(f);
-		if (!res->best_limit || v < res->vs_limit) {
-			res->vs_limit = v;
-			res->best_limit = f->name;
-		}
+		res->lim_scan[k].frame_crc = ls[k].frame_crc;
+		res->frame_crc_ok = res->frame_crc_ok && ls[k].frame_crc_same &&
+				    ls[k].frame_crc == rc.frame_crc;
 	}
-	for (k = 0; peers[k]; k++) {
-		const struct figure *f = &res->peer[k];
-		double v;
-
-		if (!f->done)
-			continue;
-		v = rate(&res->rdc) / rate(f);
-		if (!res->best_peer || v < res->vs_peer) {
-			res->vs_peer = v;
-			res->best_peer = f->name;
-		}
+	res->on.cycles = rc.cycles;
+	res->on.sim_pixels = rc.sim_pixels;
+	res->on.crc_ok = expect_crc[kind] && res->rdc.crc == expect_crc[kind] &&
+			 res->rdc.crc_same;
+	res->on.cycles_ok =
+		!expect_cycles[kind] ||
+		(rc.cycles == expect_cycles[kind] && !rc.cycles_differ);
+	way_compare(res, &res->on, drawing(kind) ? res->lim_scan : res->lim,
+		    true);
+	if (drawing(kind)) {
+		res->off.cycles = rc_off.cycles;
+		res->off.sim_pixels = rc_off.sim_pixels;
+		res->off.crc_ok = expect_crc[kind] &&
+				  res->rdc_off.crc == expect_crc[kind] &&
+				  res->rdc_off.crc_same;
+		res->off.cycles_ok =
+			!expect_cycles_off[kind] ||
+			(rc_off.cycles == expect_cycles_off[kind] &&
+			 !rc_off.cycles_differ);
+		way_compare(res, &res->off, res->lim, false);
+		if (!expect_crc[kind] && res->rdc_off.crc != res->rdc.crc)
+			fprintf(stderr,
+				"rdc-bench: %s: scanout off drew %08x, on "
+				"%08x\n",
+				kind_name[kind], res->rdc_off.crc,
+				res->rdc.crc);
 	}
-	if (rc.cycles_differ)
+	if (rc.cycles_differ || rc_off.cycles_differ)
 		fprintf(stderr,
 			"rdc-bench: %s: sim_cycles differ between "
 			"runs\n",
 			kind_name[kind]);
-	if (byte_moving(kind))
-		res->met = res->crc_ok && res->vs_limit >= TARGET_VS_LIMIT;
-	else
-		res->met = res->best_peer && res->vs_peer >= 1.0;
 	input_free(&in);
 }
 
 /*
  * A wrong CRC from rdc or from a limit means the work differs from the
  * workloads' (bench/README.md): the figures are void and the run fails.
- * (Targets missed do not fail it.)
+ * So does a simulated cycle count that is not the saved one, a picture
+ * that differs with scanout off, and a limit with scanout whose last frame
+ * is not the chip's.  (Targets missed do not fail it.)
  */
-static int crc_failures(const struct result *res, size_t n)
+static int check_failures(const struct result *res, size_t n)
 {
 	int bad = 0;
 	size_t i, k;
 
 	for (i = 0; i < n; i++) {
 		const struct result *r = &res[i];
+		const char *name = kind_name[r->kind];
 
-		if (!expect_crc[r->kind])
-			continue;
-		if (!r->crc_ok) {
+		if (!r->on.cycles_ok) {
 			fprintf(stderr,
-				"rdc-bench: %s: rdc CRC %08x, want %08x\n",
-				kind_name[r->kind], r->rdc.crc,
-				expect_crc[r->kind]);
+				"rdc-bench: %s: sim_cycles %llu, saved %llu\n",
+				name, (unsigned long long)r->on.cycles,
+				(unsigned long long)expect_cycles[r->kind]);
 			bad++;
 		}
-		for (k = 0; k < MAX_LIMITS; k++) {
-			const struct figure *f = &r->lim[k];
+		if (drawing(r->kind) && !r->off.cycles_ok) {
+			fprintf(stderr,
+				"rdc-bench: %s: scanout off: sim_cycles %llu, "
+				"saved %llu\n",
+				name, (unsigned long long)r->off.cycles,
+				(unsigned long long)expect_cycles_off[r->kind]);
+			bad++;
+		}
+		if (drawing(r->kind) &&
+		    (r->rdc_off.crc != r->rdc.crc || !r->rdc.crc_same ||
+		     !r->rdc_off.crc_same)) {
+			fprintf(stderr,
+				"rdc-bench: %s: scanout off drew %08x, on "
+				"%08x\n",
+				name, r->rdc_off.crc, r->rdc.crc);
+			bad++;
+		}
+		if (byte_moving(r->kind) && drawing(r->kind) &&
+		    !r->frame_crc_ok) {
+			fprintf(stderr,
+				"rdc-bench: %s: a limit with scanout's last "
+				"frame is not the chip's %08x\n",
+				name, r->frame_crc);
+			bad++;
+		}
+		if (!expect_crc[r->kind])
+			continue;
+		if (!r->on.crc_ok) {
+			fprintf(stderr,
+				"rdc-bench: %s: rdc CRC %08x, want %08x\n",
+				name, r->rdc.crc, expect_crc[r->kind]);
+			bad++;
+		}
+		for (k = 0; k < 2 * MAX_LIMITS; k++) {
+			const struct figure *f =
+				k < MAX_LIMITS ? &r->lim[k] :
+						 &r->lim_scan[k - MAX_LIMITS];
 
 			if (f->done &&
 			    (f->crc != expect_crc[r->kind] || !f->crc_same)) {
 				fprintf(stderr,
 					"rdc-bench: %s: limit %s CRC %08x, "
 					"want %08x\n",
-					kind_name[r->kind], f->name, f->crc,
+					name, f->name, f->crc,
 					expect_crc[r->kind]);
 				bad++;
 			}
 		}
 	}
 	return bad;
+}
+
+/* ---- growth: cost against area and region size -------------------------- */
+
+/*
+ * Fill and blit of squares from 8x8 to the whole 4096x4096 XRGB8888
+ * surface (64 MiB, in a sim: with 256 MiB of VRAM; the blits copy from a
+ * second 4096x4096 surface of random pixels after it), G_PIXELS pixels at
+ * each size; flood fill of a square region of each size, G_FLOOD_PIXELS
+ * at each.  Scanout is off (no mode shows 4096x4096): the figures are
+ * the command path's, the DP's and the bus model's.
+ */
+#define G_URI	       "sim:vram=256M"
+#define G_SIDE	       4096u
+#define G_MIN_SIDE     8u
+#define G_SIZES	       10u /* 8, 16, ..., 4096 */
+#define G_PIXELS       (64ull << 20)
+#define G_FLOOD_PIXELS (32ull << 20)
+#define G_BACK	       0xff203040u /* flood: the surface around the region */
+#define G_REGION_A     0xff00c000u /* flood: the region, alternately */
+#define G_REGION_B     0xffc00000u
+#define G_LINEAR       0.25 /* every size within this of the fit */
+#define G_SRC	       (G_SIDE * G_SIDE * 4) /* blit: the source surface */
+
+enum { G_FILL, G_BLIT, G_FLOOD, G_WHATS };
+static const char *const g_name[G_WHATS] = { "fill", "blit", "flood" };
+
+struct g_row {
+	uint32_t side, ops;
+	double wall, cpu;    /* rdc, median of the repeats */
+	double lim_cpu;	     /* the plain-C limit (fill, blit), median */
+	uint64_t cycles, px; /* simulated cycles; pixels the DP counted */
+	bool crc_ok;	     /* rdc's surface equals the limit's */
+};
+
+static uint32_t g_ops(uint32_t what, uint32_t side)
+{
+	uint64_t n = (what == G_FLOOD ? G_FLOOD_PIXELS : G_PIXELS) /
+		     ((uint64_t)side * side);
+
+	return n ? (uint32_t)n : 1;
+}
+
+static uint32_t g_vram_crc(rdc_dev *dev)
+{
+	uint8_t *buf = xcalloc(G_SIDE, 4);
+	uLong crc = crc32(0, NULL, 0);
+	uint32_t y;
+
+	for (y = 0; y < G_SIDE; y++) {
+		if (rdc_vram_read(dev, y * G_SIDE * 4, buf, G_SIDE * 4))
+			die("vram read", RDC_E_IO);
+		crc = crc32(crc, buf, G_SIDE * 4);
+	}
+	free(buf);
+	return (uint32_t)crc;
+}
+
+static uint32_t g_buf_crc(const uint32_t *s)
+{
+	return (uint32_t)crc32(0, (const uint8_t *)s, G_SIDE * G_SIDE * 4);
+}
+
+/* Inputs of one size: fill x, y, colour; blit sx, sy, dx, dy. */
+static uint32_t *g_input(uint32_t what, uint32_t side, uint32_t ops)
+{
+	uint32_t *a = xcalloc((size_t)ops * 4, 4), i, span = G_SIDE - side + 1;
+	struct rng g = { BENCH_SEED ^ side };
+
+	for (i = 0; i < ops; i++) {
+		a[4 * i] = r32(&g) % span;
+		a[4 * i + 1] = r32(&g) % span;
+		a[4 * i + 2] = what == G_FILL ? r32(&g) | BENCH_OPAQUE :
+						r32(&g) % span;
+		a[4 * i + 3] = r32(&g) % span;
+	}
+	return a;
+}
+
+static uint32_t g_other(uint32_t c)
+{
+	return c == G_REGION_A ? G_REGION_B : G_REGION_A;
+}
+
+/* flood: cur is the region's colour; each op turns it to the other one. */
+static void g_rdc(struct run *r, uint32_t what, uint32_t side,
+		  const uint32_t *a, uint32_t ops, uint32_t cur)
+{
+	uint32_t i;
+
+	for (i = 0; i < ops; i++, a += 4) {
+		if (what == G_FILL) {
+			rdc_batch_fg(r->b, a[2]);
+			rdc_batch_fill_rect(r->b, (int)a[0], (int)a[1], side,
+					    side);
+		} else if (what == G_BLIT) {
+			rdc_batch_blit(r->b, (int)a[0], (int)a[1], (int)a[2],
+				       (int)a[3], side, side);
+		} else {
+			rdc_batch_fg(r->b, i & 1 ? cur : g_other(cur));
+			rdc_batch_flood(r->b, (int)(a[0] + side / 2),
+					(int)(a[1] + side / 2), 0, 0);
+		}
+		run_flush(r, false);
+	}
+}
+
+static void g_limit(uint32_t *s, uint32_t what, uint32_t side,
+		    const uint32_t *a, uint32_t ops)
+{
+	uint32_t i, y;
+
+	for (i = 0; i < ops; i++, a += 4) {
+		for (y = 0; y < side; y++) {
+			if (what == G_FILL) {
+				wmemset((wchar_t *)(s +
+						    (size_t)(a[1] + y) *
+							    G_SIDE +
+						    a[0]),
+					(wchar_t)a[2], side);
+			} else { /* from the source surface after s */
+				memcpy(s + (size_t)(a[3] + y) * G_SIDE + a[2],
+				       s + (size_t)(G_SIDE + a[1] + y) * G_SIDE +
+					       a[0],
+				       (size_t)side * 4);
+			}
+		}
+	}
+}
+
+/* The blits' source: random pixels, in VRAM and in the limit's copy. */
+static void g_source(struct run *r, uint32_t *src)
+{
+	struct rng g = { BENCH_PREFILL_SEED };
+	size_t i;
+
+	for (i = 0; i < (size_t)G_SIDE * G_SIDE; i++)
+		src[i] = r32(&g);
+	if (rdc_vram_write(r->dev, G_SRC, src, (size_t)G_SIDE * G_SIDE * 4))
+		die("vram write", RDC_E_IO);
+}
+
+/* Fill the whole surface with c (setup, untimed), and the limit's too. */
+static void g_clear(struct run *r, uint32_t *s, uint32_t c)
+{
+	rdc_batch_fg(r->b, c);
+	rdc_batch_fill_rect(r->b, 0, 0, G_SIDE, G_SIDE);
+	run_finish(r);
+	wmemset((wchar_t *)s, (wchar_t)c, (size_t)G_SIDE * G_SIDE);
+}
+
+static void g_measure(struct run *r, uint32_t *s, uint32_t what, uint32_t side,
+		      const struct opts *o, struct g_row *row)
+{
+	uint32_t ops = g_ops(what, side), *a = g_input(what, side, ops);
+	double wall[MAX_REPEAT], cpu[MAX_REPEAT], lim[MAX_REPEAT];
+	struct rdc_stats st0 = { 0 }, st1 = { 0 };
+	uint32_t cur = G_REGION_A; /* flood: the region's colour */
+	uint64_t c0, c1;
+	int k;
+
+	memset(row, 0, sizeof(*row));
+	row->side = side;
+	row->ops = ops;
+	row->crc_ok = true;
+	if (what == G_FLOOD) {
+		/* a square region of A on the background, alone */
+		g_clear(r, s, G_BACK);
+		rdc_batch_fg(r->b, G_REGION_A);
+		rdc_batch_fill_rect(r->b, (int)a[0], (int)a[1], side, side);
+		run_finish(r);
+		for (k = 0; k < (int)side; k++)
+			wmemset((wchar_t *)(s + (size_t)(a[1] + k) * G_SIDE +
+					    a[0]),
+				(wchar_t)G_REGION_A, side);
+	}
+	for (k = 0; k < o->repeat; k++) {
+		uint32_t i, *aa = a;
+		double t0;
+
+		if (what == G_FLOOD) {
+			/* every op at the one region's centre */
+			aa = xcalloc((size_t)ops * 4, 4);
+			for (i = 0; i < ops; i++)
+				memcpy(aa + 4 * i, a, 16);
+		}
+		rdc_stats_get(r->dev, &st0);
+		rdc_sim_time(r->dev, &c0);
+		t0 = bench_tic();
+		g_rdc(r, what, side, aa, ops, cur);
+		run_finish(r);
+		wall[k] = bench_toc(t0);
+		cpu[k] = bench_cpu();
+		rdc_sim_time(r->dev, &c1);
+		rdc_stats_get(r->dev, &st1);
+		if (k && c1 - c0 != row->cycles)
+			fprintf(stderr,
+				"rdc-bench: growth %s %u: sim_cycles differ "
+				"between runs\n",
+				g_name[what], side);
+		row->cycles = c1 - c0;
+		row->px = st1.pixels - st0.pixels;
+		if (what == G_FLOOD) {
+			/* the picture the floods leave: the region in the
+			 * colour of the last one */
+			if (ops & 1)
+				cur = g_other(cur);
+			for (i = 0; i < side; i++)
+				wmemset((wchar_t *)(s +
+						    (size_t)(a[1] + i) *
+							    G_SIDE +
+						    a[0]),
+					(wchar_t)cur, side);
+			free(aa);
+			lim[k] = 0;
+		} else {
+			t0 = bench_tic();
+			g_limit(s, what, side, a, ops);
+			bench_toc(t0);
+			lim[k] = bench_cpu();
+		}
+		if (g_vram_crc(r->dev) != g_buf_crc(s))
+			row->crc_ok = false;
+	}
+	row->wall = median(wall, o->repeat);
+	row->cpu = median(cpu, o->repeat);
+	row->lim_cpu = median(lim, o->repeat);
+	free(a);
+}
+
+/*
+ * Fit CPU time per op = a + c * side + b * area (a rectangle's cost: per
+ * operation, per row, per pixel), least squares on the relative error
+ * (every size counts alike, 8x8 as much as 4096x4096).  The growth is
+ * linear in area when every size lies within G_LINEAR of the fit.
+ */
+struct g_fit {
+	double a, c, b; /* seconds per op, per row, per pixel */
+	double worst;	/* largest |measured / fit - 1| */
+	uint32_t worst_side;
+};
+
+static double g_fit_at(const struct g_fit *fit, uint32_t side)
+{
+	return fit->a + fit->c * side + fit->b * (double)side * side;
+}
+
+static void g_fit(const struct g_row *row, uint32_t n, struct g_fit *fit)
+{
+	double m[3][4] = { { 0 } }, x[3] = { 0 };
+	uint32_t i, j, k;
+
+	for (i = 0; i < n; i++) {
+		double t = row[i].cpu / row[i].ops, s = row[i].side;
+		double v[3] = { 1 / t, s / t, s * s / t }; /* each / t */
+
+		for (j = 0; j < 3; j++) {
+			for (k = 0; k < 3; k++)
+				m[j][k] += v[j] * v[k];
+			m[j][3] += v[j]; /* t / t */
+		}
+	}
+	/* Gaussian elimination with partial pivoting */
+	for (j = 0; j < 3; j++) {
+		uint32_t p = j;
+
+		for (k = j + 1; k < 3; k++)
+			if (m[k][j] * m[k][j] > m[p][j] * m[p][j])
+				p = k;
+		for (k = 0; k < 4; k++) {
+			double tmp = m[j][k];
+
+			m[j][k] = m[p][k];
+			m[p][k] = tmp;
+		}
+		for (k = j + 1; k < 3 && m[j][j]; k++) {
+			double f = m[k][j] / m[j][j];
+			uint32_t q;
+
+			for (q = j; q < 4; q++)
+				m[k][q] -= f * m[j][q];
+		}
+	}
+	for (j = 3; j-- > 0;) {
+		double v = m[j][3];
+
+		for (k = j + 1; k < 3; k++)
+			v -= m[j][k] * x[k];
+		x[j] = m[j][j] ? v / m[j][j] : 0;
+	}
+	fit->a = x[0];
+	fit->c = x[1];
+	fit->b = x[2];
+	fit->worst = 0;
+	fit->worst_side = 0;
+	for (i = 0; i < n; i++) {
+		double t = row[i].cpu / row[i].ops,
+		       f = g_fit_at(fit, row[i].side),
+		       e = f > 0 ? t / f - 1 : 1;
+
+		if (e < 0)
+			e = -e;
+		if (e >= fit->worst) {
+			fit->worst = e;
+			fit->worst_side = row[i].side;
+		}
+	}
+}
+
+static void run_growth(const struct opts *o)
+{
+	static struct g_row rows[G_WHATS][G_SIZES];
+	struct g_fit fit[G_WHATS];
+	uint32_t *s = xcalloc((size_t)G_SIDE * G_SIDE * 2, 4); /* dst, src */
+	uint32_t w, i, n = 0, side;
+	struct run r;
+	int err = rdc_open(G_URI, &r.dev);
+
+	if (err)
+		die("open " G_URI, err);
+	r.b = rdc_batch_new();
+	if (!r.b)
+		die("batch", RDC_E_NOMEM);
+	scanout_off(r.dev);
+	rdc_batch_dst(r.b, 0, G_SIDE * 4, G_SIDE, G_SIDE, RDC_FMT_XRGB8888);
+	rdc_batch_src(r.b, G_SRC, G_SIDE * 4, G_SIDE, G_SIDE, RDC_FMT_XRGB8888);
+	rdc_batch_clip(r.b, 0, 0, G_SIDE, G_SIDE);
+	g_clear(&r, s, 0);
+	g_source(&r, s + (size_t)G_SIDE * G_SIDE);
+	for (side = G_MIN_SIDE, n = 0; n < G_SIZES; side *= 2, n++) {
+		for (w = 0; w < G_WHATS; w++) {
+			struct g_row *g = &rows[w][n];
+
+			g_measure(&r, s, w, side, o, g);
+			printf("{\"workload\":\"growth\",\"what\":\"%s\","
+			       "\"side\":%u,\"area\":%u,\"ops\":%u,"
+			       "\"wall_s\":%.6f,\"cpu_s\":%.6f,"
+			       "\"ns_per_op\":%.1f,\"ns_per_pixel\":%.4f,"
+			       "\"sim_cycles\":%llu,\"sim_pixels\":%llu,"
+			       "\"crc_ok\":%s",
+			       g_name[w], side, side * side, g->ops, g->wall,
+			       g->cpu, g->cpu / g->ops * 1e9,
+			       g->cpu / g->ops / side / side * 1e9,
+			       (unsigned long long)g->cycles,
+			       (unsigned long long)g->px,
+			       g->crc_ok ? "true" : "false");
+			if (w != G_FLOOD)
+				printf(",\"limit_ns_per_pixel\":%.4f",
+				       g->lim_cpu / g->ops / side / side * 1e9);
+			printf("}\n");
+			fflush(stdout);
+		}
+	}
+	for (w = 0; w < G_WHATS; w++) {
+		g_fit(rows[w], G_SIZES, &fit[w]);
+		printf("{\"workload\":\"growth_fit\",\"what\":\"%s\","
+		       "\"a_ns\":%.1f,\"c_ns_per_row\":%.3f,"
+		       "\"b_ns_per_pixel\":%.4f,"
+		       "\"worst_residual\":%.3f,\"worst_side\":%u,"
+		       "\"linear\":%s}\n",
+		       g_name[w], fit[w].a * 1e9, fit[w].c * 1e9,
+		       fit[w].b * 1e9, fit[w].worst, fit[w].worst_side,
+		       fit[w].worst <= G_LINEAR ? "true" : "false");
+	}
+	if (!o->json) {
+		printf("\ngrowth: %ux%u XRGB8888, %s, scanout off; time is CPU "
+		       "time per op (median of %d)\n",
+		       G_SIDE, G_SIDE, G_URI, o->repeat);
+		printf("%-6s %9s %9s %8s %12s %10s %12s %7s %10s %10s %s\n",
+		       "what", "side", "area", "ops", "ns/op", "ns/pixel",
+		       "fit ns/op", "vs fit", "limit ns/px", "cycles/px",
+		       "CRC");
+		for (w = 0; w < G_WHATS; w++) {
+			for (i = 0; i < G_SIZES; i++) {
+				const struct g_row *g = &rows[w][i];
+				double a = (double)g->side * g->side,
+				       t = g->cpu / g->ops,
+				       f = g_fit_at(&fit[w], g->side);
+				char lim[16];
+
+				if (w == G_FLOOD)
+					snprintf(lim, sizeof(lim), "-");
+				else
+					snprintf(lim, sizeof(lim), "%.3f",
+						 g->lim_cpu / g->ops / a * 1e9);
+				printf("%-6s %4ux%-4u %9.0f %8u %12.1f "
+				       "%10.3f %12.1f %+6.0f%% %10s %10.2f %s\n",
+				       g_name[w], g->side, g->side, a, g->ops,
+				       t * 1e9, t / a * 1e9, f * 1e9,
+				       (t / f - 1) * 100, lim,
+				       (double)g->cycles / g->ops / a,
+				       g->crc_ok ? "OK" : "MISMATCH");
+			}
+		}
+		printf("\n");
+		for (w = 0; w < G_WHATS; w++)
+			printf("%s: time per op = %.0f ns + %.2f ns x side + "
+			       "%.3f ns x area; %s (every size within %.0f%% of "
+			       "the fit: worst %.0f%% at %ux%u)\n",
+			       g_name[w], fit[w].a * 1e9, fit[w].c * 1e9,
+			       fit[w].b * 1e9,
+			       fit[w].worst <= G_LINEAR ? "linear in area" :
+							  "NOT linear in area",
+			       G_LINEAR * 100, fit[w].worst * 100,
+			       fit[w].worst_side, fit[w].worst_side);
+	}
+	rdc_batch_free(r.b);
+	rdc_close(r.dev);
+	free(s);
 }
 
 static int parse_only(bool *only, const char *arg)
@@ -1637,7 +2431,7 @@ int main(int argc, char **argv)
 	};
 	static struct result res[BENCH_KIND_COUNT];
 	struct opts o = { .repeat = 3 };
-	bool only[BENCH_KIND_COUNT] = { false }, any = false;
+	bool only[BENCH_KIND_COUNT] = { false }, any = false, growth = false;
 	size_t n = 0;
 	int c, k;
 
@@ -1683,11 +2477,17 @@ int main(int argc, char **argv)
 	for (k = 0; k < BENCH_KIND_COUNT; k++) {
 		if (any && !only[k])
 			continue;
+		if (k == BENCH_GROWTH) {
+			growth = true;
+			continue;
+		}
 		run_kind(&res[n], (enum bench_kind)k, &o);
 		print_json(&res[n]);
 		n++;
 	}
-	if (!o.json)
+	if (!o.json && n)
 		print_table(res, n, o.peers && NPEERS);
-	return crc_failures(res, n) ? 1 : 0;
+	if (growth)
+		run_growth(&o);
+	return check_failures(res, n) ? 1 : 0;
 }
