@@ -16,6 +16,7 @@ HELLO, REG_READ, REG_WRITE, VRAM_READ, VRAM_WRITE, SUBMIT, WAIT, STEP, \
 HIST_SET_LIMIT, HIST_SET_LINE = 1, 2
 REG_STATUS, REG_IRQ_STATUS, REG_IRQ_ENABLE = 0x014, 0x018, 0x01c
 REG_FB_FORMAT, REG_MODE_PRESET, REG_FRAME_COUNT = 0x130, 0x140, 0x13c
+REG_FB_STRIDE = 0x12c
 OP_SET_FG, OP_SET_DST, OP_FILL_RECT, OP_FENCE = 0x10, 0x14, 0x24, 0x01
 OP_CALL, OP_JUMP = 0x06, 0x08
 
@@ -173,12 +174,14 @@ def seeds():
         s.hello(0, control=True)
         s.hello(1)
         small_mode(s, 0)
+        s.msg(0, REG_WRITE, u32(REG_FB_STRIDE, 320))
         s.msg(1, HIST_OPEN, u32(10, 10, 8, 4, 0))
         s.msg(0, HIST_OPEN, u32(0, 0, 320, 200, 0))  # busy
         s.msg(1, HIST_SET, u32(HIST_SET_LIMIT, 20))
         s.msg(0, SUBMIT, draw())
         s.msg(1, HIST_SET, u32(HIST_SET_LINE, 7))
         s.msg(0, SUBMIT, draw(9))
+        s.msg(0, STEP, struct.pack("<Q", 400000))
         s.time(100)
         s.msg(1, HIST_READ, struct.pack("<QI", 0, 0))
         s.msg(1, HIST_READ, struct.pack("<QI", 0, 16))
@@ -193,6 +196,7 @@ def seeds():
         s.msg(0, HIST_END)
         s.msg(0, RESET, u32(1))  # the history follows the new chip
         s.msg(0, SUBMIT, draw())
+        s.msg(0, STEP, struct.pack("<Q", 400000))
         s.time(50)
         s.msg(1, HIST_READ, struct.pack("<QI", 0, 8192))
         s.msg(1, HIST_END)
