@@ -345,12 +345,15 @@ $(O)/rel/rdc-bench: $(O)/rel/bench/rdc_bench.o $(O)/rel/librdc.a
 
 # The workloads defined in bench/README.md, then rdcd's and the
 # v4l2 sink's figures; BENCH_ARGS="-w fill -r 5" to narrow the first part.
-bench: $(O)/rel/rdc-bench $(O)/rel/sink-bench $(O)/rel/net_bench $(O)/rel/rdcd
+bench: $(O)/rel/rdc-bench $(O)/rel/sink-bench $(O)/rel/net_bench $(O)/rel/rdcd \
+		$(O)/rel/stream-bench
 	$(O)/rel/rdc-bench $(BENCH_ARGS)
 	@echo "== rdcd over a UNIX socket =="
 	$(O)/rel/net_bench $(O)/rel/rdcd
 	@echo "== v4l2 sink conversion per frame =="
 	$(O)/rel/sink-bench
+	@echo "== rdcctl stream of the demo at 1920x1080 into v4l2 =="
+	$(O)/rel/stream-bench
 
 # The same with the peer libraries (pixman, cairo, SDL2_gfx) whose
 # pkg-config files are found; scripts/deps.sh --peers installs them.
@@ -377,14 +380,21 @@ bench-peers:
 	@scripts/deps.sh --peers || \
 		echo "bench: going on with the peers that are installed"
 	$(MAKE) $(O)/rel/rdc-bench-peers $(O)/rel/sink-bench \
-		$(O)/rel/net_bench $(O)/rel/rdcd
+		$(O)/rel/net_bench $(O)/rel/rdcd $(O)/rel/stream-bench
 	$(O)/rel/rdc-bench-peers --peers $(BENCH_ARGS)
 	@echo "== rdcd over a UNIX socket =="
 	$(O)/rel/net_bench $(O)/rel/rdcd
 	@echo "== v4l2 sink conversion per frame =="
 	$(O)/rel/sink-bench
+	@echo "== rdcctl stream of the demo at 1920x1080 into v4l2 =="
+	$(O)/rel/stream-bench
 
 $(O)/rel/sink-bench: $(O)/rel/bench/sink_bench.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
+
+# rdcctl stream's pipeline into the v4l2 sink, a pipe for the device.
+$(O)/rel/bench/stream_bench.o: REL_CFLAGS += -Iuserspace/sink
+$(O)/rel/stream-bench: $(O)/rel/bench/stream_bench.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 # rdcd's figures (JSON lines): submit throughput, register-read round
