@@ -84,7 +84,7 @@ TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
 	shared install uninstall install-check debs \
 	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
-	bench-peers module dkms-source \
+	bench-peers bench-stream-vm module dkms-source \
 	module-clean checkpatch format format-check firmware-mcu mcu-test
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a shared
 
@@ -106,6 +106,7 @@ help:
 	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
 	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
 	@echo "make bench-usb    the same over USB against the socket, in the VM (figures only)"
+	@echo "make bench-stream-vm  rdcctl stream at 1920x1080 into v4l2loopback, in the VM (figures only)"
 	@echo "make fuzz         short libFuzzer runs: protocol codec, USB framing, rdcd, .rdl"
 	@echo "make fuzz-long    the same targets, ten minutes in all (FUZZ_LONG_TIME s each)"
 	@echo "make fuzz-cov     line coverage per file of the fuzz corpora (llvm-14)"
@@ -409,6 +410,11 @@ bench-net: $(O)/rel/net_bench $(O)/rel/rdcd
 # gadget on dummy_hcd): tests/vm/tests/usb-bench.sh prints them.
 bench-usb: $(O)/rel/net_bench $(O)/rel/rdcd
 	RDC_VM_TESTS=usb-bench tests/vm/run.sh $(O)
+
+# rdcctl stream's pipeline at 1920x1080 into v4l2loopback, in the VM:
+# tests/vm/tests/stream-1080-bench.sh prints the figures.
+bench-stream-vm: $(O)/rel/stream-bench $(O)/rel/rdcctl $(O)/rel/v4l2_read
+	RDC_VM_TESTS=stream-1080-bench tests/vm/run.sh $(O)
 
 # libFuzzer targets (needs clang; tests/fuzz/README.md):
 #   fuzz_proto   the wire protocol's codec (userspace/lib/proto.c)

@@ -14,6 +14,10 @@
  * a write() to v4l2loopback copies them), and the ioctls answer as
  * v4l2loopback does.
  *
+ * With --v4l2 /dev/videoN the frames go to that device (v4l2loopback)
+ * through the sink's own system calls instead (tests/vm/tests/
+ * stream-1080-bench.sh); --frames N sets the frames of each run.
+ *
  * The demo is examples/demo.rdl with its mode line set to 1920x1080 (run
  * from the source tree, as `make bench` does).  One JSON object a run:
  *   {"workload":"stream_v4l2","width":1920,"height":1080,"paced":true,
@@ -46,7 +50,7 @@
 #define HD_W	     1920u
 #define HD_H	     1080u
 #define HD_HZ	     60u
-#define FRAMES	     180u    /* 3 s paced */
+#define FRAMES	     180u    /* 3 s paced; --frames N */
 #define FORMAT	     "bgr32" /* rdcctl stream's default */
 #define NS_PER_S     1000000000ull
 #define PAGE	     4096u
@@ -54,6 +58,8 @@
 #define READ_CHUNK   (1u << 16)
 
 static int pipe_w = -1;
+static const char *v4l2_dev; /* --v4l2 DEV: a real device, no pipe */
+static uint32_t n_frames = FRAMES;
 
 static uint64_t now_ns(void)
 {
@@ -219,13 +225,21 @@ static int stream(rdc_dev *dev, bool paced, struct result *r)
 
 	memset(r, 0, sizeof(*r));
 	r->paced = paced;
-	reader = reader_start();
+	reader = v4l2_dev ? 0 : reader_start();
 	if (!px || reader < 0) {
 		free(px);
 		return RDC_E_NOMEM;
 	}
-	ret = rdc_sink_v4l2_open_io("/dev/video-bench,format=" FORMAT, &dev_io,
-				    &sink);
+	if (v4l2_dev) {
+		char spec[256];
+
+		snprintf(spec, sizeof(spec), "v4l2:%s,format=" FORMAT,
+			 v4l2_dev);
+		ret = rdc_sink_open(spec, &sink);
+	} else {
+		ret = rdc_sink_v4l2_open_io("/dev/video-bench,format=" FORMAT,
+					    &dev_io, &sink);
+	}
 	if (ret) {
 		free(px);
 		return ret;
@@ -233,7 +247,7 @@ static int stream(rdc_dev *dev, bool paced, struct result *r)
 	rc0 = cpu_s(RUSAGE_CHILDREN);
 	c0 = cpu_s(RUSAGE_SELF);
 	t_start = now_ns();
-	for (uint32_t seq = 0; !ret && seq < FRAMES; seq++) {
+	for (uint32_t seq = 0; !ret && seq < n_frames; seq++) {
 		struct rdc_frame f;
 		uint32_t n2, d2;
 
@@ -295,15 +309,17 @@ static int stream(rdc_dev *dev, bool paced, struct result *r)
 	r->h = h;
 	rdc_sink_stats_get(sink, &r->st);
 	rdc_sink_close(sink);
-	close(pipe_w);
-	pipe_w = -1;
-	waitpid(reader, &status, 0);
+	if (!v4l2_dev) {
+		close(pipe_w);
+		pipe_w = -1;
+		waitpid(reader, &status, 0);
+	}
 	r->reader_cpu = cpu_s(RUSAGE_CHILDREN) - rc0;
 	free(px);
 	return ret;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	struct rdc_script_result sres;
 	struct result res[2];
@@ -311,6 +327,19 @@ int main(void)
 	rdc_dev *dev;
 	int ret, i, bad = 0;
 
+	for (i = 1; i < argc; i++) {
+		if (!strcmp(argv[i], "--v4l2") && i + 1 < argc) {
+			v4l2_dev = argv[++i];
+		} else if (!strcmp(argv[i], "--frames") && i + 1 < argc &&
+			   atoi(argv[i + 1]) > 1) {
+			n_frames = (uint32_t)atoi(argv[++i]);
+		} else {
+			fprintf(stderr,
+				"usage: stream-bench [--v4l2 /dev/videoN]"
+				" [--frames N]\n");
+			return 2;
+		}
+	}
 	signal(SIGPIPE, SIG_IGN);
 	if (demo_hd(path, sizeof(path)))
 		return 1;
@@ -340,7 +369,7 @@ int main(void)
 		ret = stream(dev, i == 0, r);
 		if (ret) {
 			fprintf(stderr, "stream-bench: %s\n",
-				rdc_strerror(ret));
+				rdc_last_error_detail(ret));
 			bad = 1;
 			break;
 		}
@@ -348,8 +377,8 @@ int main(void)
 		/* paced: 60 fps (within 1%), every frame written, less than
 		 * the whole of one core */
 		met = r->w == HD_W && r->h == HD_H &&
-		      r->st.written == r->frames && !r->st.dropped &&
-		      fps >= HD_HZ * 0.99 && r->cpu / r->wall < 1.0;
+		      r->st.written == r->frames && fps >= HD_HZ * 0.99 &&
+		      r->cpu / r->wall < 1.0;
 		printf("{\"workload\":\"stream_v4l2\",\"width\":%u,"
 		       "\"height\":%u,\"format\":\"%s\",\"paced\":%s,"
 		       "\"frames\":%u,\"wall_s\":%.3f,\"fps\":%.1f,"
@@ -365,7 +394,7 @@ int main(void)
 		printf("}\n");
 		fflush(stdout);
 		if (r->w != HD_W || r->h != HD_H ||
-		    r->st.written != r->frames) {
+		    (!v4l2_dev && r->st.written != r->frames)) {
 			fprintf(stderr,
 				"stream-bench: %ux%u frames, %llu of %u "
 				"written\n",
@@ -377,8 +406,10 @@ int main(void)
 	rdc_close(dev);
 	if (!bad) {
 		printf("\nrdcctl stream of the demo at %ux%u@%u into v4l2 "
-		       "(%s; a pipe to a reader stands for the device)\n",
-		       HD_W, HD_H, HD_HZ, FORMAT);
+		       "(%s; %s)\n",
+		       HD_W, HD_H, HD_HZ, FORMAT,
+		       v4l2_dev ? v4l2_dev :
+				  "a pipe to a reader stands for the device");
 		printf("%-8s %7s %8s %8s %10s %12s %s\n", "", "frames", "fps",
 		       "cpu s", "cpu share", "reader cpu s", "kept up");
 		for (i = 0; i < 2; i++) {
