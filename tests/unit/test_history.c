@@ -428,6 +428,96 @@ static void test_history_subbyte(void **state)
 }
 
 /*
+ * Every pixel format, sub-byte ones included, and the DP's error
+ * recovery: three pixels of a row written by fills of known values (the
+ * neighbours on either side, sharing their bytes in i1..i4, have no
+ * entry), then a command the DP refuses (no entry: it wrote nothing), a
+ * soft reset, and a fill after it, recorded as before.
+ */
+static void test_history_formats_errors(void **state)
+{
+	static const struct {
+		const char *name;
+		uint32_t fmt, n, m, k;
+	} f[] = {
+		{ "i1", RDC_FMT_I1, 1, 0, 0 },
+		{ "i2", RDC_FMT_I2, 3, 1, 2 },
+		{ "i4", RDC_FMT_I4, 9, 6, 15 },
+		{ "i8", RDC_FMT_I8, 200, 7, 99 },
+		{ "rgb565", RDC_FMT_RGB565, 0xf81f, 0x07e0, 0x1234 },
+		{ "rgb888", RDC_FMT_RGB888, 0x123456, 0xabcdef, 0xfedcba },
+		{ "xrgb8888", RDC_FMT_XRGB8888, 0x654321, 0x00ff00, 0x0000ff },
+	};
+	char text[256];
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(f) / sizeof(f[0]); i++) {
+		/* per pixel 3..8: the values written, in order */
+		const uint32_t want[6][3] = {
+			{ 0 },
+			{ f[i].n },
+			{ f[i].n, f[i].m },
+			{ f[i].n, f[i].k },
+			{ 0 },
+			{ 0 },
+		};
+		const size_t nwant[6] = { 0, 1, 2, 2, 0, 0 };
+		size_t seen[6] = { 0 };
+		uint32_t last[6] = { 0 };
+		struct rdc_history_entry e;
+		rdc_history *h = NULL;
+		rdc_dev *dev = open_sim();
+		uint32_t st = 0;
+		size_t n;
+		int ret;
+
+		snprintf(text, sizeof(text), "mode 640x480 %s\nwait-frame\n",
+			 f[i].name);
+		run_text(dev, text);
+		assert_int_equal(rdc_history_open(dev, 3, 2, 6, 1, 0, &h), 0);
+		snprintf(text, sizeof(text),
+			 "fg %u\nfill 4 2 3 1\nfg %u\nfill 5 2 1 1\n", f[i].n,
+			 f[i].m);
+		run_text(dev, text);
+		/* an unknown opcode: the DP stops with ERR_CODE set */
+		ret = rdc_script_run(dev, "raw 0xfe000000\nfinish\n", 22, &res);
+		assert_true(ret == RDC_E_DEVICE || ret == RDC_E_HALTED);
+		assert_int_equal(rdc_reg_read(dev, RDC_REG_ERR_CODE, &st), 0);
+		assert_int_equal(st, RDC_ERR_OPCODE);
+		/* the reset takes the CRTC back to its defaults: the mode
+		 * again, over what VRAM holds */
+		snprintf(text, sizeof(text),
+			 "reset\nmode 640x480 %s\nfg %u\nfill 6 2 1 1\n"
+			 "finish\n",
+			 f[i].name, f[i].k);
+		run_text(dev, text);
+		n = rdc_history_count(h);
+		for (size_t j = 0; j < n; j++) {
+			size_t x;
+
+			get(h, j, &e);
+			assert_int_equal(e.y, 2);
+			assert_true(e.x >= 3 && e.x < 9);
+			assert_int_equal(e.format, f[i].fmt);
+			x = e.x - 3;
+			assert_true(seen[x] < nwant[x]);
+			/* each entry starts where the last one left */
+			assert_int_equal(e.before, last[x]);
+			assert_int_equal(e.after, want[x][seen[x]]);
+			assert_int_not_equal(e.opcode, 0xfe);
+			last[x] = e.after;
+			seen[x]++;
+		}
+		for (size_t x = 0; x < 6; x++)
+			if (seen[x] != nwant[x])
+				fail_msg("%s: pixel %zu: %zu entries, not %zu",
+					 f[i].name, x + 3, seen[x], nwant[x]);
+		rdc_history_close(h);
+		rdc_close(dev);
+	}
+}
+
+/*
  * The watched pixel moves with the framebuffer: a mode change after the
  * history opened (another format, another address for the same pixel),
  * and FB_BASE written from the command stream.
@@ -754,6 +844,7 @@ int main(void)
 		cmocka_unit_test(test_history_torn),
 		cmocka_unit_test(test_history_list_chain),
 		cmocka_unit_test(test_history_subbyte),
+		cmocka_unit_test(test_history_formats_errors),
 		cmocka_unit_test(test_history_fb_moves),
 		cmocka_unit_test(test_history_host_write),
 		cmocka_unit_test(test_history_api),

@@ -9,9 +9,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
 #include "history.h"
 #include "rdc.h"
+#include "rdc_server.h"
 #include "report.h"
 
 #define DEFAULT_URI "sim:"
@@ -20,7 +22,7 @@ const char rdcctl_history_usage[] =
 	"  run FILE.rdl --history SPEC   every VRAM write to the pixels of\n"
 	"      [--json] [--limit N]      SPEC (X,Y or X,Y,W,H or screen):\n"
 	"                                command, line, cycle, state, value\n"
-	"                                before and after (sim: only)\n"
+	"                                before and after (sim:, rdcd)\n"
 	"  why X Y FILE.rdl [--json]     the same for the pixel X,Y\n"
 	"  diff A.rdl B.rdl [-o D.png]   run both and report the first\n"
 	"                                command and cycle where VRAM\n"
@@ -175,6 +177,59 @@ static void json_entry(const struct hopts *o, const struct rdc_history_entry *e,
 	       e->bg, e->format, e->before, e->after, last ? "" : ",");
 }
 
+/*
+ * The frames scanout made while a script ran on sim: (diff): a CRC-32 of
+ * each, size included, with the cycle it completed at.
+ */
+#define FRAMES_MAX (1u << 22)
+
+struct frames {
+	struct rdc_hw *hw;
+	uint32_t *crc;
+	uint64_t *time;
+	size_t n, cap;
+	int lost; /* out of memory or over FRAMES_MAX: not compared */
+};
+
+static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
+		     uint64_t number)
+{
+	struct frames *f = ctx;
+	uint8_t wh[8];
+	uLong c;
+
+	(void)number;
+	if (f->lost)
+		return;
+	if (f->n == f->cap) {
+		size_t cap = f->cap ? f->cap * 2 : 64;
+		uint32_t *nc = cap <= FRAMES_MAX ?
+				       realloc(f->crc, cap * sizeof(*nc)) :
+				       NULL;
+		uint64_t *nt;
+
+		if (nc)
+			f->crc = nc;
+		nt = nc ? realloc(f->time, cap * sizeof(*nt)) : NULL;
+		if (!nt) {
+			f->lost = 1;
+			return;
+		}
+		f->time = nt;
+		f->cap = cap;
+	}
+	for (int i = 0; i < 4; i++) {
+		wh[i] = (uint8_t)(w >> (8 * i));
+		wh[4 + i] = (uint8_t)(h >> (8 * i));
+	}
+	c = crc32(crc32(0L, Z_NULL, 0), wh, sizeof(wh));
+	for (size_t row = 0; row < h; row++)
+		c = crc32(c, (const Bytef *)(xrgb + row * w), w * 4u);
+	f->crc[f->n] = (uint32_t)c;
+	f->time[f->n] = rdc_hw_now(f->hw);
+	f->n++;
+}
+
 static int run_file(rdc_dev *dev, const char *path)
 {
 	struct rdc_script_result *res = calloc(1, sizeof(*res));
@@ -231,7 +286,7 @@ static int is_trace(const char *path)
  */
 static int open_run(const char *uri, const char *path, const uint32_t *spec,
 		    uint32_t flags, size_t limit, rdc_history **h,
-		    rdc_dev **dev, int *ret_run)
+		    rdc_dev **dev, int *ret_run, struct frames *fr)
 {
 	int ret;
 
@@ -266,7 +321,14 @@ static int open_run(const char *uri, const char *path, const uint32_t *spec,
 	}
 	if (limit)
 		rdc_history_set_limit(*h, limit);
+	if (fr) {
+		fr->hw = rdc_sim_hw(*dev);
+		if (fr->hw)
+			rdc_hw_set_frame_fn(fr->hw, on_frame, fr);
+	}
 	*ret_run = run_file(*dev, path);
+	if (fr && fr->hw)
+		rdc_hw_set_frame_fn(fr->hw, NULL, NULL);
 	if (*ret_run && *ret_run != RDC_E_DEVICE && *ret_run != RDC_E_HALTED) {
 		rdc_history_close(*h);
 		rdc_close(*dev);
@@ -286,7 +348,8 @@ static int cmd_history(struct hopts *o)
 	int ret;
 
 	o->trace = is_trace(o->script);
-	if (open_run(o->uri, o->script, spec, 0, o->limit, &h, &dev, &ret))
+	if (open_run(o->uri, o->script, spec, 0, o->limit, &h, &dev, &ret,
+		     NULL))
 		return 1;
 	if (o->png)
 		save_frame(dev, o->png);
@@ -329,6 +392,7 @@ struct side {
 	uint32_t *pix, width, height;
 	uint64_t time;
 	int ret;
+	struct frames fr; /* a script's every frame; none for a trace */
 };
 
 static int side_run(const char *uri, struct side *s)
@@ -340,7 +404,7 @@ static int side_run(const char *uri, struct side *s)
 
 	s->trace = is_trace(s->path);
 	ret = open_run(uri, s->path, none, RDC_HISTORY_WRITES, 0, &h, &dev,
-		       &s->ret);
+		       &s->ret, &s->fr);
 	if (ret)
 		return ret;
 	s->n = rdc_history_write_count(h);
@@ -441,6 +505,23 @@ static int cmd_diff(const struct hopts *o)
 		       timing + 1, a.w[timing].entry.cycle,
 		       b.w[timing].entry.cycle);
 	printf("total cycles: A %" PRIu64 ", B %" PRIu64 "\n", a.time, b.time);
+	/* the scanned-out frames, each (scripts on sim:; a trace: its last) */
+	if (a.fr.hw && b.fr.hw && !a.fr.lost && !b.fr.lost) {
+		size_t nf = a.fr.n < b.fr.n ? a.fr.n : b.fr.n, k;
+
+		for (k = 0; k < nf && a.fr.crc[k] == b.fr.crc[k]; k++)
+			;
+		if (k < nf) {
+			differs = 1;
+			printf("first frame that differs: frame %zu, completed "
+			       "at cycle %" PRIu64 " in A, %" PRIu64 " in B\n",
+			       k, a.fr.time[k], b.fr.time[k]);
+		} else if (a.fr.n != b.fr.n) {
+			printf("frames: the first %zu the same; A made %zu, B "
+			       "%zu\n",
+			       nf, a.fr.n, b.fr.n);
+		}
+	}
 	w = a.width > b.width ? a.width : b.width;
 	h = a.height > b.height ? a.height : b.height;
 	if (a.width != b.width || a.height != b.height) {
@@ -496,6 +577,10 @@ out:
 	free(b.w);
 	free(a.pix);
 	free(b.pix);
+	free(a.fr.crc);
+	free(a.fr.time);
+	free(b.fr.crc);
+	free(b.fr.time);
 	rdc_history_close(a.h);
 	rdc_history_close(b.h);
 	if (ret)
