@@ -9,6 +9,11 @@
  *   rdc-bench [-w WORKLOAD[,WORKLOAD...]] [-r REPEATS] [--json] [--peers]
  *             [--full]
  *
+ * Every drawing workload runs twice: with scanout on, against limits that
+ * also convert the frames the chip scanned out meanwhile, and with
+ * CONTROL.SCANOUT_EN = 0, against the plain limits.  `-w growth` times
+ * fill, blit and flood fill against area on a 4096x4096 surface.
+ *
  * One JSON object a workload on stdout, the workloads' keys first, then
  * the limits, the peers and the ratios; then, unless --json, a table.
  * Every wall time is the median of the repeats, measured around the
