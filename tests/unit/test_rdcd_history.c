@@ -638,6 +638,98 @@ static void test_rdcd_history_record_power(void **state)
 	unlink(trace);
 }
 
+/* Run $(O)/san/rdcctl with `args`: its stdout in out, the exit status. */
+static int rdcctl(const char *args, char *out, size_t cap)
+{
+	char daemon[4200], cmd[8192];
+	size_t n = 0;
+	FILE *p;
+	int st;
+
+	assert_int_equal(netd_daemon_path(daemon, sizeof(daemon)), 0);
+	/* .../rdcd -> .../rdcctl */
+	snprintf(cmd, sizeof(cmd), "%.*sctl %s", (int)strlen(daemon) - 1,
+		 daemon, args);
+	p = popen(cmd, "r");
+	assert_non_null(p);
+	while (n + 1 < cap) {
+		size_t k = fread(out + n, 1, cap - 1 - n, p);
+
+		if (!k)
+			break;
+		n += k;
+	}
+	out[n] = 0;
+	st = pclose(p);
+	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static void write_file(const char *path, const char *text)
+{
+	FILE *f = fopen(path, "w");
+
+	assert_non_null(f);
+	assert_int_equal(fputs(text, f) >= 0, 1);
+	assert_int_equal(fclose(f), 0);
+}
+
+/*
+ * rdcctl why and run --history against a running rdcd print what they
+ * print on sim:, text and JSON; and diff tells two scripts whose VRAM
+ * writes agree but whose frames do not (a palette) at which frame.
+ */
+static void test_rdcd_history_rdcctl(void **state)
+{
+	static char a[65536], b[65536];
+	char dir[] = "/tmp/rdcd-history-XXXXXX", path[96], p2[96], args[512];
+	struct netd d;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof(path), "%s/scene.rdl", dir);
+	write_file(path, scene);
+	snprintf(args, sizeof(args), "why 14 12 %s", path);
+	assert_int_equal(rdcctl(args, a, sizeof(a)), 0);
+	assert_non_null(strstr(a, "scene.rdl:6 blit (command 7, fifo)"));
+	start(&d, args_stepped);
+	snprintf(args, sizeof(args), "--connect %s why 14 12 %s", d.unix_uri,
+		 path);
+	assert_int_equal(rdcctl(args, b, sizeof(b)), 0);
+	stop(&d);
+	assert_string_equal(b, a);
+
+	snprintf(args, sizeof(args), "run %s --history 10,10,6,6 --json", path);
+	assert_int_equal(rdcctl(args, a, sizeof(a)), 0);
+	start(&d, args_stepped);
+	snprintf(args, sizeof(args),
+		 "--connect %s run %s --history 10,10,6,6 --json", d.unix_uri,
+		 path);
+	assert_int_equal(rdcctl(args, b, sizeof(b)), 0);
+	stop(&d);
+	assert_true(strlen(a) > 1000);
+	assert_string_equal(b, a);
+
+	/* the same writes, another palette entry: frames part */
+	write_file(path, "mode 640x480 i8\npalette 0 #000000 #ff0000\n"
+			 "fg 1\nfill 0 0 10 10\nwait-frame\n"
+			 "palette 1 #00ff00\nwait-frame\nwait-frame\n");
+	snprintf(p2, sizeof(p2), "%s/b.rdl", dir);
+	write_file(p2, "mode 640x480 i8\npalette 0 #000000 #ff0000\n"
+		       "fg 1\nfill 0 0 10 10\nwait-frame\n"
+		       "palette 1 #0000ff\nwait-frame\nwait-frame\n");
+	snprintf(args, sizeof(args), "diff %s %s", path, p2);
+	assert_int_equal(rdcctl(args, a, sizeof(a)), 1);
+	assert_non_null(strstr(a, "VRAM writes: the same"));
+	assert_non_null(strstr(a, "first frame that differs: frame "));
+	assert_non_null(strstr(a, "frame: 100 pixels differ in 0,0 .. 9,9"));
+	snprintf(args, sizeof(args), "diff %s %s", p2, p2);
+	assert_int_equal(rdcctl(args, a, sizeof(a)), 0);
+	assert_null(strstr(a, "first frame that differs"));
+	unlink(path);
+	unlink(p2);
+	rmdir(dir);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -647,6 +739,7 @@ int main(void)
 		cmocka_unit_test(test_rdcd_history_malformed),
 		cmocka_unit_test(test_rdcd_history_client_dies),
 		cmocka_unit_test(test_rdcd_history_record_power),
+		cmocka_unit_test(test_rdcd_history_rdcctl),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
