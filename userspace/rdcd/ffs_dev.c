@@ -138,6 +138,27 @@ bool ffs_dev_session_start(struct ffs_dev *v)
 	return true;
 }
 
+/*
+ * An error reading ep0's events that the next event recovers from:
+ * EINTR, EAGAIN; EIDRM, a pending setup the host cancelled; EL2HLT, a
+ * setup still pending when its answer failed (the link went down under
+ * it, ESHUTDOWN), which FunctionFS then stalls on the next read;
+ * ESHUTDOWN, the link down.  Anything else ends the thread.
+ */
+bool ffs_dev_ep0_transient(int err)
+{
+	switch (err) {
+	case EINTR:
+	case EAGAIN:
+	case EIDRM:
+	case EL2HLT:
+	case ESHUTDOWN:
+		return true;
+	default:
+		return false;
+	}
+}
+
 void *ffs_dev_ep0_thread(void *arg)
 {
 	struct ffs_dev *v = arg;
@@ -157,8 +178,19 @@ void *ffs_dev_ep0_thread(void *arg)
 			continue;
 		n = read(v->ep0, ev, sizeof(ev));
 		if (n < 0) {
-			if (errno == EINTR || errno == EIDRM || errno == EAGAIN)
+			if (ffs_dev_ep0_transient(errno)) {
+				/* the link went down under an answer: the
+				 * next bind starts clean (a short pause
+				 * keeps a storm of them cheap)
+				 */
+				if (errno != EINTR && errno != EAGAIN)
+					rdcd_log(v->d, RDCD_LOG_DEBUG,
+						 "%s:%s: ep0: %s", v->kind,
+						 v->dir, strerror(errno));
+				if (errno == ESHUTDOWN)
+					usleep(10000);
 				continue;
+			}
 			rdcd_log(v->d, RDCD_LOG_ERR, "%s:%s: ep0: %s", v->kind,
 				 v->dir, strerror(errno));
 			break;

@@ -74,6 +74,8 @@ bool ffs_dev_session_end(struct ffs_dev *v, void (*reset)(struct ffs_dev *v));
 bool ffs_dev_session_start(struct ffs_dev *v);
 /* The ep0 thread: events to v->event until stopped. */
 void *ffs_dev_ep0_thread(void *arg);
+/* Whether ep0's events can be read on after this errno (ffs_dev.c). */
+bool ffs_dev_ep0_transient(int err);
 /* DIR/name, opened read-write, or -1 (errno set). */
 int ffs_dev_open_file(const struct ffs_dev *v, const char *name);
 /* Opens DIR/ep0 and writes the descriptors and strings; -1 (logged) on

@@ -110,9 +110,15 @@ up unplug
 # ---- unplug while drawing, and back ---------------------------------------------
 "$DRMP" --mode 1024x768 --loop >"$T/loop.log" 2>&1 &
 loop=$!
+# and the connector probed over and over (each probe reads the EDID, a
+# control request a byte on 6.1), so that the unplug lands in the middle
+# of a control transfer as well as of a bulk one
+(while echo detect >"$CONN/status" 2>/dev/null; do :; done) &
+prober=$!
 sleep 1
 dmesg -c >/dev/null 2>&1
-check "unplug (unbind the UDC) while a client draws" usb_unplug
+check "unplug (unbind the UDC) while a client draws and the host reads the EDID" \
+	usb_unplug
 up unplugged
 check "the drawing client sees the card go and exits" sh -c '
 	i=0
@@ -122,18 +128,25 @@ check "the drawing client sees the card go and exits" sh -c '
 	done
 	! kill -0 $1 2>/dev/null' sh $loop
 up the client has exited
-kill $loop 2>/dev/null
+kill $loop $prober 2>/dev/null
 wait $loop
-echo "# the drawing client's exit status $?: $(tr '\n' ' ' <"$T/loop.log")"
+st=$?
+wait $prober 2>/dev/null
+echo "# the drawing client's exit status $st: $(tr '\n' ' ' <"$T/loop.log")"
 dmesg >"$T/dmesg.txt" 2>&1
-# udl logs a URB it could not submit once the device has gone (-ENODEV,
-# docs/usb.md): that, and no oops, BUG, warning or other error
+# udl logs a URB it could not submit once the device has gone (-ENODEV),
+# and the EDID byte whose control request the unplug cut short (-EPROTO,
+# -ESHUTDOWN, -ENODEV or a timeout: docs/usb.md): those, and no oops, BUG,
+# warning or other error
 check "dmesg after the unplug: no oops, BUG, warning or other error" sh -c '
 	grep -Ei "udl|drm|usb" "$1" | sed "s/^/    /"
 	! grep -Ei "oops|bug:|warn|call trace|error|fail" "$1" |
-	  grep -v "udl_submit_urb.*usb_submit_urb error ffffffed"' \
+	  grep -v "udl_submit_urb.*usb_submit_urb error ffffffed" |
+	  grep -Ev "Read EDID byte [0-9]+ failed err (ffffffb9|ffffff94|ffffffed|ffffff92)$"' \
 	sh "$T/dmesg.txt"
 check "rdcd still runs" usb_rdcd_alive
+check "rdcd's control endpoint outlived the unplug (no ep0 error)" sh -c '
+	! grep -E "error: .*ep0" "$1"' sh "$USB_RDCD_LOG"
 replug() {
 	usb_replug && udl_card 60
 }
