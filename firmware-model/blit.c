@@ -207,6 +207,49 @@ static void blit_row(struct rdc_dp *dp, uint32_t saddr, int32_t y, int32_t xa,
 	dp->hw->perf.pixels += n;
 }
 
+/*
+ * The fast path's rows, each one piece (w <= RDC_DP_CHUNK) and no VRAM
+ * watcher: the pairs the window takes are charged together and their
+ * bytes moved row by row in the same order; the row the window stops at
+ * goes to blit_row, as it would one row at a time.
+ */
+static void blit_rows(struct rdc_dp *dp, uint32_t saddr, uint32_t daddr,
+		      int32_t dy, int32_t dx, uint32_t n, uint32_t h, bool back)
+{
+	const struct rdc_surface *ss = &dp->st.src, *ds = &dp->st.dst;
+	uint32_t len = n * (rdc_format_bpp(ds->format) / 8), k = 0, done, i;
+	int64_t sstep = back ? -(int64_t)ss->stride : (int64_t)ss->stride;
+	int64_t dstep = back ? -(int64_t)ds->stride : (int64_t)ds->stride;
+	unsigned int kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW :
+							    RDC_BUS_WRITE;
+	struct rdc_hw *hw = dp->hw;
+	struct rdc_port_window win;
+
+	rdc_port_window_open(hw, &win);
+	for (;;) {
+		done = rdc_port_window_pairs(hw, &win, saddr, daddr, len, sstep,
+					     dstep, h - k, kind);
+		for (i = 0; i < done; i++) {
+			blit_bytes(dp, win.vram + daddr, win.vram + saddr, len);
+			saddr += (uint32_t)sstep;
+			daddr += (uint32_t)dstep;
+		}
+		hw->perf.pixels += (uint64_t)done * n;
+		k += done;
+		if (k == h)
+			break;
+		rdc_port_window_close(hw, &win);
+		blit_row(dp, saddr, dy + (int32_t)(back ? h - 1 - k : k), dx,
+			 n);
+		rdc_port_window_open(hw, &win);
+		saddr += (uint32_t)sstep;
+		daddr += (uint32_t)dstep;
+		if (++k == h)
+			break;
+	}
+	rdc_port_window_close(hw, &win);
+}
+
 void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 		 int32_t dy32, uint32_t w32, uint32_t h32)
 {
@@ -239,6 +282,18 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 	 * and their bytes moved at once; a pair the window refuses goes to
 	 * blit_row's rdc_port_span_pair, as every row otherwise would.
 	 */
+	if (fast && w <= RDC_DP_CHUNK && !hw->vram_hook) {
+		int64_t row0 = back ? h - 1 : 0;
+
+		blit_rows(dp,
+			  ss->base + (uint32_t)(sy + row0) * ss->stride +
+				  (uint32_t)sx * (bpp / 8),
+			  ds->base + (uint32_t)(dy + row0) * ds->stride +
+				  (uint32_t)dx * (bpp / 8),
+			  (int32_t)dy, (int32_t)dx, (uint32_t)w, (uint32_t)h,
+			  back);
+		return;
+	}
 	kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW : RDC_BUS_WRITE;
 	if (fast)
 		rdc_port_window_open(hw, &win);

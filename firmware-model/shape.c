@@ -63,8 +63,12 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 		hw->perf.pixels += pixels;
 		pixels = 0;
 		p = rdc_port_span(hw, one.addr, one.len, RDC_BUS_WRITE);
-		if (p)
+		if (p && n <= RDC_DP_CHUNK) {
+			row_copy(p, (const uint8_t *)dp->px, one.len);
+			hw->perf.pixels += n;
+		} else if (p) {
 			dp_run_write(dp, p, &one, dp->st.fg);
+		}
 		rdc_port_window_open(hw, &w);
 		one.addr += s->stride;
 		rows--;

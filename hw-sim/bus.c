@@ -100,12 +100,39 @@ void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 				break;
 			}
 		}
-		be = RDC_MIN(end, (a / RDC_BUS_BURST_BYTES + 1) *
-					  RDC_BUS_BURST_BYTES);
-		if (be != end)
-			k &= ~RDC_BUS_TAIL_PARTIAL;
-		bus_burst(hw, &t, a, be - a, k);
-		a = be;
+		/*
+		 * An event falls inside: the bursts that end by it are
+		 * charged one at a time here, as bus_burst would charge them
+		 * (costs add up over bursts); the one it falls inside goes to
+		 * bus_burst.
+		 */
+		for (;;) {
+			unsigned int kb = k;
+
+			be = RDC_MIN(end, (a / RDC_BUS_BURST_BYTES + 1) *
+						  RDC_BUS_BURST_BYTES);
+			if (be != end)
+				kb &= ~RDC_BUS_TAIL_PARTIAL;
+			if (t >= c->fetch_end && c->running &&
+			    c->next_line_time > t) {
+				uint32_t row = hw->bus.open_row;
+				uint64_t cost =
+					rdc_bus_cost(&row, a, be - a, kb, 1);
+
+				if (c->next_line_time >= t + cost) {
+					hw->bus.open_row = row;
+					t += cost;
+					a = be;
+					k &= ~RDC_BUS_HEAD_PARTIAL;
+					if (a < end)
+						continue;
+					break;
+				}
+			}
+			bus_burst(hw, &t, a, be - a, kb);
+			a = be;
+			break;
+		}
 	}
 	hw->now = t;
 }
@@ -398,6 +425,72 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 	if (hw->vram_hook && i &&
 	    rdc_vram_watched(hw, addr, addr + (uint64_t)(i - 1) * stride + len))
 		rdc_vram_hook_call(hw, t, addr, len, i, stride, RDC_VRAM_BY_DP);
+	return i;
+}
+
+uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
+			       struct rdc_port_window *w, uint32_t raddr,
+			       uint32_t waddr, uint32_t len, int64_t rstep,
+			       int64_t wstep, uint32_t count, unsigned int kind)
+{
+	int64_t ra = raddr, wa = waddr, size = (int64_t)hw->vram_size;
+	uint64_t t = w->t;
+	uint32_t row = w->row, i;
+
+	if (!w->open || !len || !count)
+		return 0;
+	if (rstep == wstep && rstep % RDC_DRAM_ROW_BYTES == 0 && count > 1 &&
+	    RDC_MIN(ra, ra + (count - 1) * rstep) >= 0 &&
+	    RDC_MIN(wa, wa + (count - 1) * wstep) >= 0 &&
+	    RDC_MAX(ra, ra + (count - 1) * rstep) + len <= size &&
+	    RDC_MAX(wa, wa + (count - 1) * wstep) + len <= size) {
+		/*
+		 * Both rows move by whole DRAM rows: from the second pair on,
+		 * every read and write has the same offsets in its beat,
+		 * burst and DRAM row, and the same relation to the row the
+		 * one before left open, so each pair costs what the second
+		 * does (as in rdc_port_window_rows).
+		 */
+		uint32_t r1;
+		uint64_t c0, c1, n;
+
+		c0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
+				  rdc_bus_bursts((uint64_t)ra, len));
+		c0 += rdc_bus_cost(&row, (uint64_t)wa, len, kind,
+				   rdc_bus_bursts((uint64_t)wa, len));
+		if (t + c0 > w->lim)
+			return 0;
+		r1 = row;
+		c1 = rdc_bus_cost(&r1, (uint64_t)(ra + rstep), len,
+				  RDC_BUS_READ,
+				  rdc_bus_bursts((uint64_t)(ra + rstep), len));
+		c1 += rdc_bus_cost(&r1, (uint64_t)(wa + wstep), len, kind,
+				   rdc_bus_bursts((uint64_t)(wa + wstep), len));
+		n = RDC_MIN((uint64_t)count, 1 + (w->lim - t - c0) / c1);
+		w->t = t + c0 + (n - 1) * c1;
+		w->row = (uint32_t)((uint64_t)(wa + (int64_t)(n - 1) * wstep +
+					       len - 1) /
+				    RDC_DRAM_ROW_BYTES);
+		return (uint32_t)n;
+	}
+	/* rdc_port_window_pair's charge, pair by pair */
+	for (i = 0; i < count; i++, ra += rstep, wa += wstep) {
+		uint32_t nrw = row;
+		uint64_t c;
+
+		if (ra < 0 || wa < 0 || ra + len > size || wa + len > size)
+			break;
+		c = rdc_bus_cost(&nrw, (uint64_t)ra, len, RDC_BUS_READ,
+				 rdc_bus_bursts((uint64_t)ra, len));
+		c += rdc_bus_cost(&nrw, (uint64_t)wa, len, kind,
+				  rdc_bus_bursts((uint64_t)wa, len));
+		if (t + c > w->lim)
+			break;
+		t += c;
+		row = nrw;
+	}
+	w->t = t;
+	w->row = row;
 	return i;
 }
 

@@ -446,6 +446,17 @@ void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w);
 uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 			      struct rdc_port_window *w, uint32_t addr,
 			      uint32_t len, uint32_t stride, uint32_t count);
+/*
+ * rdc_port_window_pair for the pairs (raddr + i * rstep, waddr + i * wstep),
+ * i = 0, 1, ... count - 1, each len bytes: how many of them, from the
+ * first, it charged.  Calls no VRAM watcher: with one set, a caller
+ * charges pair by pair.
+ */
+uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
+			       struct rdc_port_window *w, uint32_t raddr,
+			       uint32_t waddr, uint32_t len, int64_t rstep,
+			       int64_t wstep, uint32_t count,
+			       unsigned int kind);
 
 /* Charge `cycles` of DP-internal work (decode, setup); no bus use. */
 void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles);
