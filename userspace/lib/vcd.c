@@ -451,7 +451,7 @@ static void vcd_chain(void *ctx, uint64_t time, unsigned int event, uint32_t a,
 
 int rdc_vcd_open(rdc_dev *dev, const char *path, rdc_vcd **out)
 {
-	struct rdc_hw *hw = rdc_sim_hw(dev);
+	struct rdc_hw *hw = rdc_dev_chip(dev);
 	rdc_vcd *v;
 	int ret;
 
