@@ -64,6 +64,205 @@ static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
 }
 
 /*
+ * q pixels of colour v2 (a pixel twice, VRAM byte order) from p: a span,
+ * or (column) one pixel every `stride` bytes.  q is fixed for a line, so
+ * these branches go the same way for all its runs; all pixels are the
+ * same, so 8-byte stores may overlap.
+ */
+static rdc_always_inline void line_q32(uint8_t *p, uint32_t q, uint64_t v2,
+				       bool column, uint32_t stride)
+{
+	uint32_t len = q * 4, k;
+
+	if (column) {
+		for (k = 0; k < q; k++, p += stride)
+			rdc_memcpy(p, &v2, 4);
+	} else if (q == 1) {
+		rdc_memcpy(p, &v2, 4);
+	} else if (q <= 4) {
+		rdc_memcpy(p, &v2, 8);
+		rdc_memcpy(p + len - 8, &v2, 8);
+	} else if (q <= 8) {
+		rdc_memcpy(p, &v2, 8);
+		rdc_memcpy(p + 8, &v2, 8);
+		rdc_memcpy(p + len - 16, &v2, 8);
+		rdc_memcpy(p + len - 8, &v2, 8);
+	} else {
+		for (k = 0; k + 8 < len; k += 8)
+			rdc_memcpy(p + k, &v2, 8);
+		rdc_memcpy(p + len - 8, &v2, 8);
+	}
+}
+
+/*
+ * rdc_bus_cost of bytes [a, a + len) written as RDC_BUS_WRITE (no
+ * PARTIAL flags), for a and len multiples of 4 and a + len below 2^32,
+ * miss0 the open row's miss (1 when it is not a's row): the same sum in
+ * 32 bits with what those allow folded in.  A span of whole pixels
+ * within one beat has at most one partial edge, so the beats merged are
+ * head + tail; both edges share a turnaround only within one burst.
+ */
+_Static_assert(RDC_BUS_BYTES % 4 == 0 && RDC_BUS_BYTES > 4,
+	       "a 4-byte pixel is in one beat, and not a whole one");
+
+static rdc_always_inline uint64_t span_cost32(uint32_t a, uint32_t len,
+					      uint32_t miss0)
+{
+	const uint32_t burst = (uint32_t)RDC_BUS_BURST_BYTES;
+	uint32_t e = a + len - 1;
+	uint32_t beats = e / RDC_BUS_BYTES - a / RDC_BUS_BYTES + 1;
+	uint32_t misses =
+		e / RDC_DRAM_ROW_BYTES - a / RDC_DRAM_ROW_BYTES + miss0;
+	uint32_t head = a % RDC_BUS_BYTES != 0;
+	uint32_t tail = (e + 1) % RDC_BUS_BYTES != 0;
+	uint32_t turns = head + tail - (head & tail & (e / burst == a / burst));
+
+	return (uint64_t)(beats + head + tail) * RDC_T_BEAT +
+	       (uint64_t)misses * RDC_T_ROW_MISS + (uint64_t)turns * RDC_T_TURN;
+}
+
+/* What line_fast needs of a line, fixed while it runs. */
+struct line_fixed {
+	uint8_t *vram;
+	uint64_t lim, v2;
+	uint32_t q, vstep, stride, one;
+	int64_t rr, d0, d1; /* rem < rr: a run of q + 1; rem += d1 or d0 */
+};
+
+/* Where a line is: the next run's first step, its minor offset, rem. */
+struct line_pos {
+	int64_t run, j, rem;
+	uint32_t addr;
+};
+
+/*
+ * One run of line_fast at p: q pixels, then the (q + 1)th to VRAM or to
+ * a scratch word (no branch on the run's length).
+ */
+static rdc_always_inline void line_put(uint8_t *p, uint32_t q, bool more,
+				       uint64_t v2, bool column, uint32_t umul,
+				       uint8_t *scratch)
+{
+	uintptr_t sel = (uintptr_t)0 - more;
+
+	line_q32(p, q, v2, column, umul);
+	rdc_memcpy((uint8_t *)(((uintptr_t)(p + q * umul) & sel) |
+			       ((uintptr_t)scratch & ~sel)),
+		   &v2, 4);
+}
+
+/*
+ * The middle runs of a direct line (each of q or q + 1 steps, rem < 2m),
+ * while the run cannot reach the last step ihi and the port window takes
+ * it: each charged as rdc_port_window_span / _column would (the same
+ * cost, the same test against the window's limit), then written.  Stops
+ * before a run the window refuses, which the caller then takes through
+ * line_run.
+ *
+ * The stride is over a DRAM row plus a beat, so after the first run
+ * every run starts in a row the one before did not end in (a row miss):
+ * a span costs span_cost32 with miss0 1, and a column (one beat a pixel,
+ * a row each) `one` plus a row miss a pixel, so the window's test on
+ * each run is a bound on the step where the runs must end.  Few values
+ * live in the loops, so that they stay in registers: the budget left
+ * before the limit rather than the time and the limit, rem less rr, and j
+ * found again at the end from rem (rem = 2m * run + n - 2n * j all along).
+ */
+static rdc_always_inline void line_fast(struct rdc_port_window *w,
+					const struct line_fixed *f, bool xmajor,
+					int64_t ihi, int64_t n, int64_t m,
+					struct line_pos *pos, uint64_t *pixels)
+{
+	const uint32_t q = f->q, vstep = f->vstep;
+	const uint32_t umul = xmajor ? 4 : f->stride;
+	const uint32_t step0 = q * umul + vstep, step1 = step0 + umul;
+	const uint64_t v2 = f->v2, pp = f->one + RDC_T_ROW_MISS;
+	const int64_t rr = f->rr, d0 = f->d0, d1 = f->d1, end = ihi - q;
+	uint8_t *const vram = f->vram;
+	const int64_t run0 = pos->run;
+	int64_t run = run0, rem = pos->rem - rr, run1;
+	uint64_t budget = f->lim - w->t, cost;
+	uint32_t a = pos->addr, row = w->row, k;
+	uint8_t scratch[4];
+	bool more;
+
+	/* the first run: the open row may be its own */
+	more = rem < 0;
+	k = q + more;
+	if (xmajor)
+		cost = span_cost32(a, k * 4, a / RDC_DRAM_ROW_BYTES != row);
+	else
+		cost = (uint64_t)k * pp -
+		       (a / RDC_DRAM_ROW_BYTES == row ? RDC_T_ROW_MISS : 0);
+	if (cost > budget)
+		return;
+	budget -= cost;
+	line_put(vram + a, q, more, v2, !xmajor, umul, scratch);
+	rem += more ? d1 : d0;
+	run += k;
+	a += more ? step1 : step0;
+	run1 = run;
+
+	if (xmajor) {
+		while (run < end) {
+			more = rem < 0;
+			k = q + more;
+			cost = span_cost32(a, k * 4, 1);
+			if (cost > budget)
+				break;
+			budget -= cost;
+			line_put(vram + a, q, more, v2, false, 4, scratch);
+			rem += more ? d1 : d0;
+			run += k;
+			a += more ? step1 : step0;
+		}
+	} else {
+		/* the runs end by step runmax: `budget / pp` pixels more */
+		uint64_t left = budget / pp;
+		int64_t runmax = left > (uint64_t)(ihi - run) ?
+					 ihi + 1 :
+					 run + (int64_t)left;
+
+		while (run < end) {
+			more = rem < 0;
+			k = q + more;
+			if (run + k > runmax)
+				break;
+			line_put(vram + a, q, more, v2, true, umul, scratch);
+			rem += more ? d1 : d0;
+			run += k;
+			a += more ? step1 : step0;
+		}
+		budget -= pp * (uint64_t)(run - run1);
+	}
+	/* the last pixel written, a + vstep before the next run's first */
+	w->t = f->lim - budget;
+	w->row = (a - vstep - (xmajor ? 1 : umul)) / RDC_DRAM_ROW_BYTES;
+	pos->rem = rem + rr;
+	pos->j = (2 * m * run + n - pos->rem) / (2 * n);
+	pos->run = run;
+	pos->addr = a;
+	*pixels += (uint64_t)(run - run0);
+}
+
+/* line_fast for each axis, out of line: its loop keeps its registers. */
+static rdc_noinline void line_fast_x(struct rdc_port_window *w,
+				     const struct line_fixed *f, int64_t ihi,
+				     int64_t n, int64_t m, struct line_pos *pos,
+				     uint64_t *pixels)
+{
+	line_fast(w, f, true, ihi, n, m, pos, pixels);
+}
+
+static rdc_noinline void line_fast_y(struct rdc_port_window *w,
+				     const struct line_fixed *f, int64_t ihi,
+				     int64_t n, int64_t m, struct line_pos *pos,
+				     uint64_t *pixels)
+{
+	line_fast(w, f, false, ihi, n, m, pos, pixels);
+}
+
+/*
  * rdc_dp_line_steps' loop with its runs queued: the same runs, clipped
  * the same way, as dp_span_fill / dp_col_fill would draw them.
  */
@@ -83,10 +282,12 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 	 * window refuses takes the port call dp_runs_flush would make.
 	 */
 	bool direct = bytes == 4 && !rdc_rop_reads_dst(dp->st.rop);
+	bool fast = false;
 	struct rdc_port_window w = { 0 };
 	struct rdc_port_run one;
+	struct line_fixed f = { 0 };
 	uint64_t pixels = 0;
-	uint32_t fg = 0;
+	uint32_t fg = 0, open;
 	uint8_t pair[8];
 	/* u runs along the major axis, v steps across it */
 	const int32_t ulo = xmajor ? c->x0 : c->y0;
@@ -95,16 +296,6 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 	const int32_t vhi = xmajor ? c->y1 : c->x1;
 	const uint32_t umul = xmajor ? bytes : stride;
 	const uint32_t vmul = xmajor ? stride : bytes;
-
-	if (direct) {
-		if (nruns)
-			dp_runs_flush(dp);
-		nruns = 0;
-		fg = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
-		rdc_st32(pair, fg);
-		rdc_st32(pair + 4, fg);
-		rdc_port_window_open(dp->hw, &w);
-	}
 
 	/*
 	 * One run a pass.  The per-step loop adds 2m to rem until it reaches
@@ -117,10 +308,72 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 		q = n / m;
 		rr = 2 * n - 2 * m * q;
 	}
+	if (direct) {
+		if (nruns)
+			dp_runs_flush(dp);
+		nruns = 0;
+		fg = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
+		rdc_st32(pair, fg);
+		rdc_st32(pair + 4, fg);
+		rdc_port_window_open(dp->hw, &w);
+		/*
+		 * line_fast for the middle runs: without a VRAM watcher (it
+		 * sees each run as rdc_port_window_span / _column does), with
+		 * every pixel 4-byte aligned (a column's in one beat) and the
+		 * line's bounding box in VRAM (no run refused for its address).
+		 */
+		if (m > 0 && !dp->hw->vram_hook && base % 4 == 0 &&
+		    stride % RDC_BUS_BYTES == 0 &&
+		    stride > RDC_DRAM_ROW_BYTES + RDC_BUS_BYTES) {
+			int64_t jz = dp_div_floor(2 * ihi * m + n, 2 * n);
+			int64_t va = v0 + sv * j, vz = v0 + sv * jz;
+			uint64_t lo = base + (uint64_t)(u0 + ilo) * umul +
+				      (uint64_t)RDC_MIN(va, vz) * vmul;
+			uint64_t hi = base + (uint64_t)(u0 + ihi) * umul +
+				      (uint64_t)RDC_MAX(va, vz) * vmul;
+
+			fast = RDC_MIN(va, vz) >= 0 && u0 + ilo >= 0 &&
+			       lo <= hi && hi + 4 <= dp->hw->vram_size;
+		}
+		f.vram = w.vram;
+		f.lim = w.lim;
+		rdc_memcpy(&f.v2, pair, 8);
+		f.q = (uint32_t)q;
+		f.vstep = (uint32_t)sv * vmul;
+		f.stride = stride;
+		/* a pixel in an open row, the same at any 4-aligned address */
+		open = base / RDC_DRAM_ROW_BYTES;
+		f.one = (uint32_t)rdc_bus_cost(&open, base, 4, RDC_BUS_WRITE,
+					       1);
+		f.rr = rr;
+		f.d0 = 2 * m * q - 2 * n;
+		f.d1 = f.d0 + 2 * m;
+	}
+
 	for (; i <= ihi; i++, j++) {
 		int32_t v, a, b;
 		struct rdc_port_run *r;
 
+		if (fast && w.open && w.t <= w.lim && rem < 2 * m &&
+		    i + q < ihi) {
+			struct line_pos pos = {
+				.run = i,
+				.j = j,
+				.rem = rem,
+				.addr = base +
+					(uint32_t)(v0 + sv * (int32_t)j) *
+						vmul +
+					(uint32_t)(u0 + (int32_t)i) * umul,
+			};
+
+			if (xmajor)
+				line_fast_x(&w, &f, ihi, n, m, &pos, &pixels);
+			else
+				line_fast_y(&w, &f, ihi, n, m, &pos, &pixels);
+			i = pos.run;
+			j = pos.j;
+			rem = pos.rem;
+		}
 		run = i;
 		if (m == 0) {
 			i = ihi;
@@ -152,6 +405,8 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 		r->count = xmajor ? 1 : (uint32_t)(b - a + 1);
 		if (direct) {
 			line_run(dp, &w, r, pair, &pixels);
+			f.vram = w.vram;
+			f.lim = w.lim;
 			continue;
 		}
 		if (++nruns == RDC_DP_CHUNK) {
