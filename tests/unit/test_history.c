@@ -21,6 +21,7 @@
 #include "dp.h"
 #include "rdc.h"
 #include "rdc_priv.h" /* rdc_rec_*: what rdcd --record does */
+#include "test_history_common.h"
 
 #define GOLDEN_LIST "tests/golden/golden.txt"
 #define SCENE_DIR   "tests/golden/scenes"
@@ -196,34 +197,6 @@ static void test_history_trace(void **state)
 	rdc_history_close(ws);
 	rdc_history_close(wt);
 	unlink(path);
-}
-
-/* Every field of two entries (not their padding). */
-static void assert_entry_equal(const struct rdc_history_entry *a,
-			       const struct rdc_history_entry *b)
-{
-	assert_int_equal(a->x, b->x);
-	assert_int_equal(a->y, b->y);
-	assert_int_equal(a->format, b->format);
-	assert_int_equal(a->before, b->before);
-	assert_int_equal(a->after, b->after);
-	assert_int_equal(a->cycle, b->cycle);
-	assert_int_equal(a->frame, b->frame);
-	assert_int_equal(a->fetched, b->fetched);
-	assert_int_equal(a->opcode, b->opcode);
-	assert_int_equal(a->cmd_index, b->cmd_index);
-	assert_int_equal(a->source, b->source);
-	assert_int_equal(a->line, b->line);
-	assert_int_equal(a->cmd_addr, b->cmd_addr);
-	assert_int_equal(a->depth, b->depth);
-	assert_memory_equal(a->calls, b->calls, sizeof(a->calls));
-	assert_int_equal(a->rop, b->rop);
-	assert_int_equal(a->alpha, b->alpha);
-	assert_int_equal(a->colorkey, b->colorkey);
-	assert_int_equal(a->colorkey_on, b->colorkey_on);
-	assert_int_equal(a->pattern, b->pattern);
-	assert_int_equal(a->fg, b->fg);
-	assert_int_equal(a->bg, b->bg);
 }
 
 /*

@@ -17,6 +17,7 @@
 #include <cmocka.h>
 
 #include "rdc.h"
+#include "test_history_common.h"
 #include "test_net_common.h"
 
 static const char *const args_stepped[] = { "--stepped", NULL };
@@ -55,34 +56,6 @@ static void start(struct netd *d, const char *const *args)
 static void stop(struct netd *d)
 {
 	assert_int_equal(netd_stop(d), 0);
-}
-
-/* Every field of two entries (not their padding). */
-static void assert_entry_equal(const struct rdc_history_entry *a,
-			       const struct rdc_history_entry *b)
-{
-	assert_int_equal(a->x, b->x);
-	assert_int_equal(a->y, b->y);
-	assert_int_equal(a->format, b->format);
-	assert_int_equal(a->before, b->before);
-	assert_int_equal(a->after, b->after);
-	assert_int_equal(a->cycle, b->cycle);
-	assert_int_equal(a->frame, b->frame);
-	assert_int_equal(a->fetched, b->fetched);
-	assert_int_equal(a->opcode, b->opcode);
-	assert_int_equal(a->cmd_index, b->cmd_index);
-	assert_int_equal(a->source, b->source);
-	assert_int_equal(a->line, b->line);
-	assert_int_equal(a->cmd_addr, b->cmd_addr);
-	assert_int_equal(a->depth, b->depth);
-	assert_memory_equal(a->calls, b->calls, sizeof(a->calls));
-	assert_int_equal(a->rop, b->rop);
-	assert_int_equal(a->alpha, b->alpha);
-	assert_int_equal(a->colorkey, b->colorkey);
-	assert_int_equal(a->colorkey_on, b->colorkey_on);
-	assert_int_equal(a->pattern, b->pattern);
-	assert_int_equal(a->fg, b->fg);
-	assert_int_equal(a->bg, b->bg);
 }
 
 /* The whole history of `text` run on `uri` over x, y, w, h. */

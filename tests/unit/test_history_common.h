@@ -1,0 +1,38 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/* SPDX-FileCopyrightText: 2026 The rdc authors */
+/*
+ * What the pixel-history tests share: two entries compared field by field
+ * (include after cmocka.h and rdc.h).
+ */
+#ifndef TEST_HISTORY_COMMON_H
+#define TEST_HISTORY_COMMON_H
+
+/* Every field of two entries (not their padding). */
+static inline void assert_entry_equal(const struct rdc_history_entry *a,
+				      const struct rdc_history_entry *b)
+{
+	assert_int_equal(a->x, b->x);
+	assert_int_equal(a->y, b->y);
+	assert_int_equal(a->format, b->format);
+	assert_int_equal(a->before, b->before);
+	assert_int_equal(a->after, b->after);
+	assert_int_equal(a->cycle, b->cycle);
+	assert_int_equal(a->frame, b->frame);
+	assert_int_equal(a->fetched, b->fetched);
+	assert_int_equal(a->opcode, b->opcode);
+	assert_int_equal(a->cmd_index, b->cmd_index);
+	assert_int_equal(a->source, b->source);
+	assert_int_equal(a->line, b->line);
+	assert_int_equal(a->cmd_addr, b->cmd_addr);
+	assert_int_equal(a->depth, b->depth);
+	assert_memory_equal(a->calls, b->calls, sizeof(a->calls));
+	assert_int_equal(a->rop, b->rop);
+	assert_int_equal(a->alpha, b->alpha);
+	assert_int_equal(a->colorkey, b->colorkey);
+	assert_int_equal(a->colorkey_on, b->colorkey_on);
+	assert_int_equal(a->pattern, b->pattern);
+	assert_int_equal(a->fg, b->fg);
+	assert_int_equal(a->bg, b->bg);
+}
+
+#endif
