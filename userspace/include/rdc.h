@@ -625,6 +625,10 @@ struct rdc_replay_result {
 	 * running, or was killed); everything up to its last complete
 	 * record was replayed */
 	uint32_t truncated;
+	/* 1: the trace has no times (rdc_record_start on a device without
+	 * a chip in this process): its operations ran in order, and only
+	 * their results were compared; `time` is the replay's own */
+	uint32_t untimed;
 };
 
 /*
@@ -645,6 +649,31 @@ static inline int rdc_replay_file(const char *path,
 		res->size = sizeof(*res);
 	return rdc_replay_file_sized(path, res, dev_out);
 }
+
+/*
+ * Record every operation this handle makes on its device, from now until
+ * rdc_record_stop or rdc_close, into a trace at `path` (created or
+ * truncated) that rdc_replay_file and `rdcctl replay`, `why`, `diff`
+ * take, on any device: register writes, reads with the value read, VRAM
+ * writes, command words, waits with their result, steps and pin changes
+ * (docs/protocol.md, "Traces").  A sim: handle's trace carries the
+ * simulated time of each; any other device's is untimed (its time would
+ * cost an operation of its own to ask, and be late on a paced device):
+ * replay runs its operations in order and compares what they returned,
+ * not when.  Only this handle's operations are recorded, not another
+ * client's of the same daemon, nor what rdcfb.ko's console draws.
+ * RDC_E_BUSY if the handle is already recorded, RDC_E_FILE if the file
+ * cannot be written (rdc_last_error_detail says why).  While recording,
+ * rdc_pins_get and rdc_pins_wait read the register PINS through the
+ * recorder (on fbdev: instead of the GPIO lines: the same levels).
+ */
+int rdc_record_start(rdc_dev *dev, const char *path);
+/*
+ * Write the trace's end and close it; the handle goes on unrecorded.
+ * RDC_E_FILE if a write failed (the trace is incomplete), RDC_E_INVAL
+ * if the handle was not recorded.  rdc_close ends a recording too.
+ */
+int rdc_record_stop(rdc_dev *dev);
 
 /* ---- Compressed images (the DECODE command) ------------------------------ */
 /*

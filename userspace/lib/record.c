@@ -11,7 +11,7 @@
  * trace that does not match the build that replays it.
  *
  * File format, little-endian:
- *   "RDCTRACE" u32 version u32 vram_size
+ *   "RDCTRACE" u32 version u32 vram_size [u32 flags: version 3 on]
  *   records: u8 op, u64 time (before the operation), then by op:
  *     REG_WRITE   u32 reg, u32 value
  *     REG_READ    u32 reg, u32 value read (reads can pop RDATA)
@@ -22,9 +22,22 @@
  *     END         (time is the final time)
  *     PINS        u32 mask, u32 levels: the inputs in mask (RDC_PINS_IN)
  *                 driven to levels (version 2 on)
+ *     SUBMIT      u32 n, n command words, i32 result (version 3 on)
  *
- * Version 1 is version 2 without PINS: such traces still replay.  The
- * same layout, as a table: docs/protocol.md, "Traces".
+ * Version 1 is version 2 without PINS: such traces still replay.
+ * Version 3 adds the flags word and SUBMIT.  A recorder on a device
+ * without a chip in this process (fbdev:, unix:, tcp:, usb:: the client
+ * side of rdc_record_start) cannot know the device's time without asking
+ * for it, which would be an operation of its own, paid for with a round
+ * trip (an ioctl) per record and still not exact on a paced device, whose
+ * time moves between the question and the operation.  So it writes an
+ * untimed trace: version 3, flag REC_F_UNTIMED, every time 0; replay runs
+ * its operations in order and compares what they return, not when.  Such
+ * a device takes command words in bulk (its backend's submit: the FIFO
+ * is fed on the other side), and SUBMIT records them as the client gave
+ * them; replay feeds them to sim: as rdc_submit does there.  A timed
+ * trace, rdcd's or a client's on sim:, is written as version 2 as before.
+ * The same layout, as a table: docs/protocol.md, "Traces".
  *
  * The file is flushed whenever a client gets an answer (after REG_READ,
  * WAIT, POWER and END records): a replay while the recorder still runs
@@ -45,9 +58,17 @@
 
 #define REC_MAGIC	   "RDCTRACE"
 #define REC_MAGIC_LEN	   8u
-#define REC_VERSION	   2u
+#define REC_VERSION	   2u /* a timed trace */
+#define REC_VERSION_FLAGS  3u /* the flags word and SUBMIT */
 #define REC_VERSION_MIN	   1u /* no PINS records */
+#define REC_VERSION_MAX	   REC_VERSION_FLAGS
 #define REC_MAX_VRAM_WRITE (256u << 20)
+/* Words a SUBMIT record carries at most (a command is 4097 at most). */
+#define REC_SUBMIT_MAX 65536u
+
+/* Header flags (version 3 on). */
+#define REC_F_UNTIMED 0x1u /* no time: every record's is 0 */
+#define REC_F_KNOWN   REC_F_UNTIMED
 
 enum rec_op {
 	REC_REG_WRITE = 1,
@@ -58,6 +79,7 @@ enum rec_op {
 	REC_POWER = 6,
 	REC_END = 7,
 	REC_PINS = 8,
+	REC_SUBMIT = 9,
 };
 
 struct rdc_rec {
@@ -65,13 +87,24 @@ struct rdc_rec {
 	int err;
 	const struct rdc_backend *inner;
 	void *inner_priv;
-	struct rdc_hw *hw;
+	struct rdc_hw *hw; /* NULL: an untimed trace, or after a power cycle */
+	bool untimed;
+	/* rdc_record_start's: ends with the handle (rdc_close) */
+	bool owned;
+	/* the wrapper's table: the inner backend's optional operations that
+	 * it has, passed through or recorded */
+	struct rdc_backend be;
 	/* time moved on the chip directly since moved_from (rdc_rec_time_moved) */
 	bool moved;
 	uint64_t moved_from;
 };
 
 static const struct rdc_backend rdc_backend_rec;
+
+static uint64_t rec_now(const struct rdc_rec *r)
+{
+	return r->hw ? r->hw->now : 0;
+}
 
 static void rec_put(struct rdc_rec *r, const void *p, size_t n)
 {
@@ -111,7 +144,7 @@ static void rec_head(struct rdc_rec *r, uint8_t op)
 
 	rec_flush_moved(r);
 	b[0] = op;
-	rdc_proto_put64(b + 1, r->hw ? r->hw->now : 0);
+	rdc_proto_put64(b + 1, rec_now(r));
 	rec_put(r, b, sizeof(b));
 }
 
@@ -125,41 +158,95 @@ static void rec_u32x2(struct rdc_rec *r, uint8_t op, uint32_t a, uint32_t v)
 	rec_put(r, b, sizeof(b));
 }
 
-struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size)
+static struct rdc_rec *rec_open(const char *path, uint32_t vram_size,
+				uint32_t flags, int *err)
 {
 	struct rdc_rec *r = calloc(1, sizeof(*r));
-	uint8_t b[8];
+	uint8_t b[12];
 
-	if (!r)
+	if (!r) {
+		*err = RDC_E_NOMEM;
 		return NULL;
+	}
 	r->f = fopen(path, "wb");
 	if (!r->f) {
-		rdc_err_detail(RDC_E_FILE, "%s: %s", path, strerror(errno));
+		*err = rdc_err_detail(RDC_E_FILE, "%s: %s", path,
+				      strerror(errno));
 		free(r);
 		return NULL;
 	}
+	r->untimed = flags & REC_F_UNTIMED;
 	rec_put(r, REC_MAGIC, REC_MAGIC_LEN);
-	rdc_proto_put32(b, REC_VERSION);
+	rdc_proto_put32(b, flags ? REC_VERSION_FLAGS : REC_VERSION);
 	rdc_proto_put32(b + 4, vram_size);
-	rec_put(r, b, sizeof(b));
+	rdc_proto_put32(b + 8, flags);
+	rec_put(r, b, flags ? 12 : 8);
 	rec_sync(r);
 	return r;
+}
+
+struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size)
+{
+	int err;
+
+	return rec_open(path, vram_size, 0, &err);
+}
+
+/* The wrapper's table for `inner`: what it lacks, the wrapper lacks. */
+static void rec_table(struct rdc_rec *r, const struct rdc_backend *inner)
+{
+	r->be = rdc_backend_rec;
+	r->be.scheme = inner->scheme;
+	/*
+	 * A device that takes words in bulk gets them so, as a SUBMIT
+	 * record.  sim:'s submit is its FIFO loop, whose register writes
+	 * and waits the recorder sees one by one when it runs the core's
+	 * (timed traces stay version 2).
+	 */
+	if (r->untimed && inner->submit)
+		r->be.submit = rdc_backend_rec.submit;
+	else
+		r->be.submit = NULL;
+	r->be.subscribe = inner->subscribe ? rdc_backend_rec.subscribe : NULL;
+	r->be.event_next = inner->event_next ? rdc_backend_rec.event_next :
+					       NULL;
+	if (!inner->hist_open) {
+		r->be.hist_open = NULL;
+		r->be.hist_read = NULL;
+		r->be.hist_set = NULL;
+		r->be.hist_close = NULL;
+	}
+	if (!inner->pins_set)
+		r->be.pins_set = NULL;
+	if (!inner->step)
+		r->be.step = NULL;
+	if (!inner->frame_grab)
+		r->be.frame_grab = NULL;
 }
 
 void rdc_rec_attach(struct rdc_rec *r, rdc_dev *dev)
 {
 	r->inner = dev->be;
 	r->inner_priv = dev->priv;
-	r->hw = rdc_sim_hw(dev);
-	dev->be = &rdc_backend_rec;
+	r->hw = r->untimed ? NULL : rdc_sim_hw(dev);
+	rec_table(r, r->inner);
+	dev->be = &r->be;
 	dev->priv = r;
+}
+
+/* Is `dev` wrapped by a recorder? */
+static struct rdc_rec *rec_of(rdc_dev *dev)
+{
+	if (dev && dev->be && dev->be->close == rdc_backend_rec.close)
+		return dev->priv;
+	return NULL;
 }
 
 struct rdc_hw *rdc_dev_chip(rdc_dev *dev)
 {
-	if (dev && dev->be == &rdc_backend_rec)
-		return ((struct rdc_rec *)dev->priv)->hw;
-	return rdc_sim_hw(dev);
+	struct rdc_rec *r = rec_of(dev);
+
+	return r ? r->hw : rdc_sim_hw(dev);
 }
 
 void rdc_rec_power(struct rdc_rec *r)
@@ -175,12 +262,12 @@ int rdc_rec_close(struct rdc_rec *r, rdc_dev *dev)
 
 	if (!r)
 		return 0;
-	if (dev && dev->be == &rdc_backend_rec)
+	if (rec_of(dev) == r)
 		rec_head(r, REC_END);
 	if (fclose(r->f))
 		r->err = RDC_E_FILE;
 	ret = r->err;
-	if (dev && dev->be == &rdc_backend_rec) {
+	if (rec_of(dev) == r) {
 		/* unwrap: the handle goes on without a recorder */
 		dev->be = r->inner;
 		dev->priv = r->inner_priv;
@@ -203,10 +290,18 @@ static void rec_be_close(rdc_dev *dev)
 {
 	struct rdc_rec *r = dev->priv;
 
+	/* rdc_record_start's recorder ends with the handle: END first,
+	 * with the time the chip is at */
+	if (r->owned)
+		rec_head(r, REC_END);
 	dev->priv = r->inner_priv;
 	r->inner->close(dev);
 	dev->be = r->inner;
 	r->hw = NULL;
+	if (r->owned) {
+		fclose(r->f);
+		free(r);
+	}
 }
 
 static int rec_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
@@ -217,7 +312,7 @@ static int rec_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 	int ret;
 
 	rec_flush_moved(r);
-	t = r->hw->now;
+	t = rec_now(r);
 	ret = REC_INNER(dev, r, reg_read(dev, reg, val));
 
 	b[0] = REC_REG_READ;
@@ -232,9 +327,18 @@ static int rec_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 static int rec_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
 {
 	struct rdc_rec *r = dev->priv;
+	int ret;
 
-	rec_u32x2(r, REC_REG_WRITE, reg, val);
-	return REC_INNER(dev, r, reg_write(dev, reg, val));
+	if (!r->untimed) {
+		rec_u32x2(r, REC_REG_WRITE, reg, val);
+		return REC_INNER(dev, r, reg_write(dev, reg, val));
+	}
+	/* A device on the other side may refuse a write (rdcfb's checks,
+	 * an observer's handle): a refused one changed nothing. */
+	ret = REC_INNER(dev, r, reg_write(dev, reg, val));
+	if (!ret)
+		rec_u32x2(r, REC_REG_WRITE, reg, val);
+	return ret;
 }
 
 static int rec_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
@@ -293,7 +397,7 @@ static int rec_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 	int ret;
 
 	rec_flush_moved(r);
-	t = r->hw->now;
+	t = rec_now(r);
 	ret = REC_INNER(dev, r, pins_set(dev, mask, levels));
 	if (!ret) {
 		uint8_t b[17];
@@ -311,11 +415,70 @@ static int rec_step(rdc_dev *dev, uint64_t cycles)
 {
 	struct rdc_rec *r = dev->priv;
 	uint8_t b[8];
+	int ret;
 
-	rec_head(r, REC_STEP);
 	rdc_proto_put64(b, cycles);
-	rec_put(r, b, sizeof(b));
-	return REC_INNER(dev, r, step(dev, cycles));
+	if (!r->untimed) {
+		rec_head(r, REC_STEP);
+		rec_put(r, b, sizeof(b));
+		return REC_INNER(dev, r, step(dev, cycles));
+	}
+	/* a paced device refuses to step (RDC_E_NOSYS): nothing moved */
+	ret = REC_INNER(dev, r, step(dev, cycles));
+	if (!ret) {
+		rec_head(r, REC_STEP);
+		rec_put(r, b, sizeof(b));
+	}
+	return ret;
+}
+
+/*
+ * Words to a device that takes them in bulk (untimed traces only), in
+ * records of at most REC_SUBMIT_MAX words cut at command boundaries (as
+ * fbdev.c cuts them for rdcfb, which checks each piece command by
+ * command), each submitted in turn with its result.
+ */
+static size_t rec_piece(const uint32_t *w, size_t n)
+{
+	size_t i = 0;
+
+	if (n <= REC_SUBMIT_MAX)
+		return n;
+	for (;;) {
+		size_t len = RDC_CMD_LEN(w[i]);
+		size_t next = i + 1 + (len > RDC_CMD_MAX_ARGS ? 0 : len);
+
+		if (next > REC_SUBMIT_MAX)
+			break;
+		i = next;
+	}
+	return i ? i : REC_SUBMIT_MAX;
+}
+
+static int rec_submit(rdc_dev *dev, const uint32_t *words, size_t n)
+{
+	struct rdc_rec *r = dev->priv;
+	int ret = 0;
+
+	while (n && !ret) {
+		size_t k = rec_piece(words, n);
+		uint8_t b[4];
+
+		rec_head(r, REC_SUBMIT);
+		rdc_proto_put32(b, (uint32_t)k);
+		rec_put(r, b, sizeof(b));
+		for (size_t i = 0; i < k; i++) {
+			rdc_proto_put32(b, words[i]);
+			rec_put(r, b, sizeof(b));
+		}
+		ret = REC_INNER(dev, r, submit(dev, words, k));
+		rdc_proto_put32(b, (uint32_t)ret);
+		rec_put(r, b, sizeof(b));
+		words += k;
+		n -= k;
+	}
+	rec_sync(r);
+	return ret;
 }
 
 void rdc_rec_sync(struct rdc_rec *rec)
@@ -342,6 +505,56 @@ static int rec_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 	return REC_INNER(dev, r, frame_grab(dev, buf, cap, width, height));
 }
 
+/* Not recorded: they change nothing on the chip. */
+static int rec_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
+			 uint32_t encoding)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r, subscribe(dev, events, every, encoding));
+}
+
+static int rec_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
+			  size_t cap, int timeout_ms)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r, event_next(dev, ev, buf, cap, timeout_ms));
+}
+
+static int rec_hist_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
+			 uint32_t h, uint32_t flags)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r, hist_open(dev, x, y, w, h, flags));
+}
+
+static int rec_hist_read(rdc_dev *dev, uint64_t first, uint32_t max,
+			 struct rdc_history_entry *e, uint32_t *n,
+			 uint64_t *count, uint64_t *dropped)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r,
+			 hist_read(dev, first, max, e, n, count, dropped));
+}
+
+static int rec_hist_set(rdc_dev *dev, uint32_t what, uint32_t value)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r, hist_set(dev, what, value));
+}
+
+static int rec_hist_close(rdc_dev *dev)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r, hist_close(dev));
+}
+
+/* The template of every recorder's table (rec_table). */
 static const struct rdc_backend rdc_backend_rec = {
 	.scheme = "sim",
 	.close = rec_be_close,
@@ -356,9 +569,67 @@ static const struct rdc_backend rdc_backend_rec = {
 	/*
 	 * No pins_get or pins_wait: the core reads PINS and waits through
 	 * reg_read and wait, which are recorded (the inner pins_wait would
-	 * move time behind the trace's back).
+	 * move time behind the trace's back; fbdev:'s reads the GPIO lines,
+	 * the same levels as PINS).
 	 */
+	.submit = rec_submit,
+	.subscribe = rec_subscribe,
+	.event_next = rec_event_next,
+	.hist_open = rec_hist_open,
+	.hist_read = rec_hist_read,
+	.hist_set = rec_hist_set,
+	.hist_close = rec_hist_close,
 };
+
+/* ---- The client's recorder (rdc.h) ---------------------------------------- */
+
+int rdc_record_start(rdc_dev *dev, const char *path)
+{
+	struct rdc_rec *r;
+	uint32_t vram = 0;
+	int ret;
+
+	rdc_err_detail_clear();
+	if (!dev || !path || !*path)
+		return rdc_err_detail(RDC_E_INVAL, "rdc_record_start: %s",
+				      !dev ? "no device" : "no file name");
+	if (rec_of(dev))
+		return rdc_err_detail(RDC_E_BUSY,
+				      "%s: the device is already recorded "
+				      "(rdc_record_stop ends it)",
+				      path);
+	/* before the recorder: this read is not the client's */
+	ret = dev->be->reg_read(dev, RDC_REG_VRAM_SIZE, &vram);
+	if (ret)
+		return ret;
+	if (!vram || vram > REC_MAX_VRAM_WRITE)
+		return rdc_err_detail(RDC_E_PROTO,
+				      "%s: the device reports %u bytes of "
+				      "VRAM",
+				      path, vram);
+	r = rec_open(path, vram, rdc_sim_hw(dev) ? 0 : REC_F_UNTIMED, &ret);
+	if (!r)
+		return ret;
+	if (r->err) {
+		ret = rdc_err_detail(r->err, "%s: %s", path, strerror(errno));
+		rdc_rec_close(r, NULL);
+		return ret;
+	}
+	r->owned = true;
+	rdc_rec_attach(r, dev);
+	return 0;
+}
+
+int rdc_record_stop(rdc_dev *dev)
+{
+	struct rdc_rec *r = rec_of(dev);
+
+	if (!r || !r->owned)
+		return rdc_err_detail(RDC_E_INVAL,
+				      "rdc_record_stop: the device is not "
+				      "recorded (rdc_record_start)");
+	return rdc_rec_close(r, dev);
+}
 
 /* ---- Replay -------------------------------------------------------------- */
 
@@ -369,9 +640,11 @@ struct replay {
 	rdc_dev *dev;
 	uint32_t version;
 	uint32_t vram;
+	bool untimed; /* REC_F_UNTIMED: times are not compared */
 	uint8_t *buf;
-	uint64_t off; /* bytes read */
-	bool cut;     /* the file ended inside a record */
+	uint32_t *words; /* a SUBMIT record's, REC_SUBMIT_MAX */
+	uint64_t off;	 /* bytes read */
+	bool cut;	 /* the file ended inside a record */
 	/* rdc_replay_history: the history to keep across power cycles */
 	const uint32_t *watch; /* x, y, w, h, flags; NULL: none */
 	rdc_history *hist;
@@ -440,7 +713,7 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 	uint32_t v;
 	int ret;
 
-	if (op != REC_POWER && hw->now != t)
+	if (op != REC_POWER && !p->untimed && hw->now != t)
 		p->res->mismatches++;
 	switch (op) {
 	case REC_REG_WRITE:
@@ -501,6 +774,27 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 		return 0;
 	case REC_POWER:
 		return rp_open(p);
+	case REC_SUBMIT: {
+		uint32_t n;
+
+		if (p->version < REC_VERSION_FLAGS || rp_get(p, b, 4))
+			return RDC_E_PARSE;
+		n = rdc_proto_get32(b);
+		if (!n || n > REC_SUBMIT_MAX)
+			return RDC_E_PARSE;
+		for (uint32_t i = 0; i < n; i++) {
+			if (rp_get(p, b, 4))
+				return RDC_E_PARSE;
+			p->words[i] = rdc_proto_get32(b);
+		}
+		if (rp_get(p, b, 4))
+			return RDC_E_PARSE;
+		/* as on sim: the core's FIFO loop, with its waits */
+		ret = rdc_submit(p->dev, p->words, n);
+		if (ret != (int)rdc_proto_get32(b))
+			p->res->mismatches++;
+		return 0;
+	}
 	case REC_PINS: {
 		uint32_t mask;
 
@@ -524,7 +818,7 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 {
 	struct rdc_replay_result dummy;
 	struct replay p = { .watch = watch };
-	uint8_t hdr[REC_MAGIC_LEN + 8], rec[9];
+	uint8_t hdr[REC_MAGIC_LEN + 8], rec[9], fl[4];
 	int ret;
 
 	if (!path)
@@ -543,19 +837,35 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 	p.version = ret ? 0 : rdc_proto_get32(hdr + REC_MAGIC_LEN);
 	if (ret || memcmp(hdr, REC_MAGIC, REC_MAGIC_LEN))
 		ret = rp_bad(&p, "not an rdcd trace (no RDCTRACE header)", 0);
-	else if (p.version < REC_VERSION_MIN || p.version > REC_VERSION)
+	else if (p.version < REC_VERSION_MIN || p.version > REC_VERSION_MAX)
 		ret = rdc_err_detail(RDC_E_PARSE,
 				     "%s: trace version %u (this build reads "
 				     "%u to %u)",
 				     path, p.version, REC_VERSION_MIN,
-				     REC_VERSION);
+				     REC_VERSION_MAX);
+	if (!ret && p.version >= REC_VERSION_FLAGS) {
+		if (rp_get(&p, fl, sizeof(fl)))
+			ret = rp_bad(&p, "no flags in the header", p.off);
+		else if (rdc_proto_get32(fl) & ~REC_F_KNOWN)
+			ret = rp_bad(&p, "unknown header flags",
+				     REC_MAGIC_LEN + 8);
+		else
+			p.untimed = rdc_proto_get32(fl) & REC_F_UNTIMED;
+		p.res->untimed = p.untimed;
+	}
 	if (!ret) {
 		p.vram = rdc_proto_get32(hdr + REC_MAGIC_LEN + 4);
 		p.buf = p.vram <= REC_MAX_VRAM_WRITE ? malloc(p.vram + 1) :
 						       NULL;
-		ret = p.buf ? rp_open(&p) :
-			      rp_bad(&p, "VRAM size out of range",
-				     REC_MAGIC_LEN + 4);
+		p.words = p.version >= REC_VERSION_FLAGS ?
+				  malloc(REC_SUBMIT_MAX * sizeof(*p.words)) :
+				  NULL;
+		if (p.version >= REC_VERSION_FLAGS && !p.words)
+			ret = RDC_E_NOMEM;
+		else
+			ret = p.buf ? rp_open(&p) :
+				      rp_bad(&p, "VRAM size out of range",
+					     REC_MAGIC_LEN + 4);
 	}
 	while (!ret) {
 		uint64_t t, at = p.off;
@@ -566,7 +876,7 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 		 * unknown op in the last bytes is damage all the same. */
 		if (ret && p.cut &&
 		    (p.off == at ||
-		     (rec[0] >= REC_REG_WRITE && rec[0] <= REC_PINS))) {
+		     (rec[0] >= REC_REG_WRITE && rec[0] <= REC_SUBMIT))) {
 			p.res->truncated = 1;
 			ret = 0;
 			break;
@@ -581,6 +891,9 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 		if (rec[0] == REC_END) {
 			struct rdc_hw *hw = rdc_sim_hw(p.dev);
 
+			/* untimed: the replay ends where its operations do */
+			if (p.untimed)
+				break;
 			if (hw->now < t)
 				rdc_hw_run_until(hw, t);
 			if (hw->now != t)
@@ -605,6 +918,7 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 		p.res->time = rdc_sim_hw(p.dev)->now;
 	fclose(p.f);
 	free(p.buf);
+	free(p.words);
 	if (p.dev)
 		rdc_hw_set_frame_fn(rdc_sim_hw(p.dev), NULL, NULL);
 	if (!ret && dev_out)

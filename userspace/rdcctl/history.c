@@ -282,11 +282,14 @@ static int is_trace(const char *path)
 /*
  * Run a script on a device of `uri`, or replay a trace on the fresh sim:
  * it brings, with a history open.  A script's device error is no failure:
- * its history up to there is what is wanted.  *ret_run gets it.
+ * its history up to there is what is wanted.  *ret_run gets it; *untimed
+ * (may be NULL) whether the trace has no times (rdc_record_start's on a
+ * device other than sim:).
  */
 static int open_run(const char *uri, const char *path, const uint32_t *spec,
 		    uint32_t flags, size_t limit, rdc_history **h,
-		    rdc_dev **dev, int *ret_run, struct frames *fr)
+		    rdc_dev **dev, int *ret_run, struct frames *fr,
+		    int *untimed)
 {
 	int ret;
 
@@ -294,8 +297,18 @@ static int open_run(const char *uri, const char *path, const uint32_t *spec,
 	if (is_trace(path)) {
 		struct rdc_replay_result rr;
 
+		if (rdcctl_record_path) {
+			fprintf(stderr,
+				"rdcctl: --record: %s is a trace, replayed on "
+				"a fresh sim: (nothing of --connect's to "
+				"record)\n",
+				path);
+			return RDC_E_INVAL;
+		}
 		ret = rdc_replay_history(path, spec[0], spec[1], spec[2],
 					 spec[3], flags, h, &rr, dev);
+		if (untimed)
+			*untimed = !ret && rr.untimed;
 		if (ret)
 			rdcctl_error(path, ret);
 		else if (rr.truncated)
@@ -306,11 +319,9 @@ static int open_run(const char *uri, const char *path, const uint32_t *spec,
 				path);
 		return ret;
 	}
-	ret = rdc_open(uri, dev);
-	if (ret) {
-		rdcctl_open_error(uri, ret);
+	ret = rdcctl_open(uri, dev);
+	if (ret)
 		return ret;
-	}
 	ret = rdc_history_open(*dev, spec[0], spec[1], spec[2], spec[3], flags,
 			       h);
 	if (ret) {
@@ -348,7 +359,7 @@ static int cmd_history(struct hopts *o)
 	int ret;
 
 	o->trace = is_trace(o->script);
-	if (open_run(o->uri, o->script, spec, 0, o->limit, &h, &dev, &ret,
+	if (open_run(o->uri, o->script, spec, 0, o->limit, &h, &dev, &ret, NULL,
 		     NULL))
 		return 1;
 	if (o->png)
@@ -386,6 +397,7 @@ static int cmd_history(struct hopts *o)
 struct side {
 	const char *path;
 	int trace;
+	int untimed;	/* a trace without times: its cycles are the replay's */
 	rdc_history *h; /* kept after its device closes */
 	struct rdc_history_write *w;
 	size_t n;
@@ -404,7 +416,7 @@ static int side_run(const char *uri, struct side *s)
 
 	s->trace = is_trace(s->path);
 	ret = open_run(uri, s->path, none, RDC_HISTORY_WRITES, 0, &h, &dev,
-		       &s->ret, &s->fr);
+		       &s->ret, &s->fr, &s->untimed);
 	if (ret)
 		return ret;
 	s->n = rdc_history_write_count(h);
@@ -499,12 +511,19 @@ static int cmd_diff(const struct hopts *o)
 	} else {
 		printf("VRAM writes: the same %zu writes\n", a.n);
 	}
-	if (timing != SIZE_MAX && timing < i)
+	if (a.untimed || b.untimed)
+		/* the cycles are sim:'s replay's, not the device's */
+		printf("timing: not compared (%s is an untimed trace: the "
+		       "device's time was not recorded)\n",
+		       a.untimed ? a.path : b.path);
+	else if (timing != SIZE_MAX && timing < i)
 		printf("timing parts first at write %zu: cycle %" PRIu64
 		       " in A, %" PRIu64 " in B\n",
 		       timing + 1, a.w[timing].entry.cycle,
 		       b.w[timing].entry.cycle);
-	printf("total cycles: A %" PRIu64 ", B %" PRIu64 "\n", a.time, b.time);
+	if (!a.untimed && !b.untimed)
+		printf("total cycles: A %" PRIu64 ", B %" PRIu64 "\n", a.time,
+		       b.time);
 	/* the scanned-out frames, each (scripts on sim:; a trace: its last) */
 	if (a.fr.hw && b.fr.hw && !a.fr.lost && !b.fr.lost) {
 		size_t nf = a.fr.n < b.fr.n ? a.fr.n : b.fr.n, k;

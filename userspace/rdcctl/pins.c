@@ -215,11 +215,9 @@ int rdcctl_pins_main(int argc, char **argv)
 	sigaction(SIGINT, &sa, NULL);
 	sigaction(SIGTERM, &sa, NULL);
 
-	ret = rdc_open(o.uri, &dev);
-	if (ret) {
-		rdcctl_open_error(o.uri, ret);
+	ret = rdcctl_open(o.uri, &dev);
+	if (ret)
 		return 1;
-	}
 	if (o.set_mask) {
 		ret = rdc_pins_set(dev, o.set_mask, o.set_levels);
 		if (ret) {

@@ -20,7 +20,8 @@
 static void usage(FILE *f)
 {
 	fprintf(f,
-		"usage: rdcctl [--connect URI] COMMAND [ARGS]\n"
+		"usage: rdcctl [--connect URI] [--record TRACE] COMMAND "
+		"[ARGS]\n"
 		"\n"
 		"commands:\n"
 		"  run FILE.rdl [-o OUT.png]  run a script, wait for the next\n"
@@ -48,11 +49,95 @@ static void usage(FILE *f)
 		"                 unix:/run/user/1000/rdc/rdc.sock, "
 		"tcp:127.0.0.1:7000);\n"
 		"                 --uri is the same\n"
+		"  --record TRACE  record every operation rdcctl makes on the\n"
+		"                 device (any URI) into a trace for replay,\n"
+		"                 why and diff; untimed but on sim:\n"
 		"  -h, --help  this text\n"
 		"\n"
 		"The script format is described in docs/rdl.md.\n",
 		rdcctl_stream_usage, rdcctl_pins_usage, rdcctl_image_usage,
 		rdcctl_history_usage);
+}
+
+const char *rdcctl_record_path;
+
+int rdcctl_open(const char *uri, rdc_dev **dev)
+{
+	int ret = rdc_open(uri, dev);
+
+	if (ret) {
+		rdcctl_open_error(uri, ret);
+		return ret;
+	}
+	if (!rdcctl_record_path)
+		return 0;
+	ret = rdc_record_start(*dev, rdcctl_record_path);
+	if (ret) {
+		rdcctl_report("--record", rdcctl_record_path, ret);
+		rdc_close(*dev);
+		*dev = NULL;
+	}
+	return ret;
+}
+
+/*
+ * Take --record TRACE (--record=TRACE) out of argv, before or after the
+ * command: every subcommand then sees only the options it knows.  -1 on
+ * a missing value.
+ */
+static int take_record(int *argc, char **argv)
+{
+	int i = 1, j;
+
+	while (i < *argc) {
+		const char *a = argv[i];
+
+		if (!strncmp(a, "--record=", 9)) {
+			rdcctl_record_path = a + 9;
+			j = 1;
+		} else if (!strcmp(a, "--record")) {
+			if (i + 1 >= *argc) {
+				fprintf(stderr, "rdcctl: --record needs a "
+						"value\n");
+				return -1;
+			}
+			rdcctl_record_path = argv[i + 1];
+			j = 2;
+		} else {
+			/* a URI is a value, whatever it looks like */
+			i += !strcmp(a, "--uri") || !strcmp(a, "--connect") ?
+				     2 :
+				     1;
+			continue;
+		}
+		memmove(argv + i, argv + i + j,
+			(size_t)(*argc - i - j + 1) * sizeof(*argv));
+		*argc -= j;
+	}
+	if (rdcctl_record_path && !*rdcctl_record_path) {
+		fprintf(stderr, "rdcctl: --record needs a file name\n");
+		return -1;
+	}
+	return 0;
+}
+
+/* Commands that open no device of --connect's have nothing to record. */
+static int record_refused(int argc, char **argv)
+{
+	static const char *const none[] = { "diff", "replay", "list" };
+	const char *uri;
+
+	if (!rdcctl_record_path)
+		return 0;
+	for (size_t k = 0; k < sizeof(none) / sizeof(none[0]); k++)
+		if (rdcctl_command_at(argc, argv, none[k], &uri) >= 0) {
+			fprintf(stderr,
+				"rdcctl: --record does not go with %s (it "
+				"opens no device of --connect's to record)\n",
+				none[k]);
+			return 1;
+		}
+	return 0;
 }
 
 struct opts {
@@ -346,6 +431,8 @@ int main(int argc, char **argv)
 	rdc_dev *dev;
 	int ret;
 
+	if (take_record(&argc, argv) || record_refused(argc, argv))
+		return 2;
 	ret = rdcctl_stream_main(argc, argv);
 	if (ret >= 0)
 		return ret;
@@ -384,11 +471,9 @@ int main(int argc, char **argv)
 		fprintf(stderr, "rdcctl: run needs a script\n");
 		return 2;
 	}
-	ret = rdc_open(o.uri, &dev);
-	if (ret) {
-		rdcctl_open_error(o.uri, ret);
+	ret = rdcctl_open(o.uri, &dev);
+	if (ret)
 		return 1;
-	}
 	if (!strcmp(o.cmd, "run")) {
 		ret = cmd_run(dev, &o);
 	} else {
@@ -401,6 +486,13 @@ int main(int argc, char **argv)
 		if (!ret)
 			ret = !strcmp(o.cmd, "regs") ? cmd_regs(dev) :
 						       cmd_stats(dev);
+	}
+	if (rdcctl_record_path) {
+		int err = rdc_record_stop(dev);
+
+		if (err)
+			rdcctl_report("--record", rdcctl_record_path, err);
+		ret = ret ? ret : err;
 	}
 	rdc_close(dev);
 	return ret ? 1 : 0;

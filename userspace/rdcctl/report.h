@@ -61,6 +61,14 @@ static inline int rdcctl_command_at(int argc, char **argv, const char *cmd,
 	return i;
 }
 
+/* rdcctl --record FILE (rdcctl.c): NULL when not given. */
+extern const char *rdcctl_record_path;
+/*
+ * rdc_open(uri), and the handle recorded into rdcctl_record_path when
+ * --record is given (rdc_close ends the trace); errors are reported.
+ */
+int rdcctl_open(const char *uri, rdc_dev **dev);
+
 /* rdc_open(uri) failed. */
 static inline void rdcctl_open_error(const char *uri, int err)
 {

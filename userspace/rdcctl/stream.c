@@ -426,11 +426,9 @@ int rdcctl_stream_main(int argc, char **argv)
 	sigaction(SIGTERM, &sa, NULL);
 	signal(SIGPIPE, SIG_IGN);
 
-	ret = rdc_open(o.uri, &dev);
-	if (ret) {
-		rdcctl_open_error(o.uri, ret);
+	ret = rdcctl_open(o.uri, &dev);
+	if (ret)
 		return 1;
-	}
 	ret = stream_open_sinks(&o, sinks, &nsinks);
 	if (!ret)
 		ret = stream_run(dev, &o, sinks, nsinks);
