@@ -180,34 +180,50 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 	const int64_t rr = f->rr, d0 = f->d0, d1 = f->d1, end = ihi - q;
 	uint8_t *const vram = f->vram;
 	const int64_t run0 = pos->run;
-	int64_t run = run0, rem = pos->rem - rr, run1;
+	int64_t run = run0, rem = pos->rem, run1, k;
 	uint64_t budget = f->lim - w->t, cost;
-	uint32_t a = pos->addr, row = w->row, k;
+	uint32_t a = pos->addr, row = w->row;
 	uint8_t scratch[4];
-	bool more;
+	bool more, last;
 
-	/* the first run: the open row may be its own */
-	more = rem < 0;
-	k = q + more;
+	/*
+	 * The first run, as rdc_dp_line_steps' loop makes it: rem may be
+	 * 2m or more, the run may be the last, and the open row may be its
+	 * own.
+	 */
+	if (rem < 2 * m)
+		k = (int64_t)q + (rem < rr);
+	else
+		k = (2 * n - rem + 2 * m - 1) / (2 * m);
+	last = run + k - 1 >= ihi;
+	if (last)
+		k = ihi - run + 1;
 	if (xmajor)
-		cost = span_cost32(a, k * 4, a / RDC_DRAM_ROW_BYTES != row);
+		cost = span_cost32(a, (uint32_t)k * 4,
+				   a / RDC_DRAM_ROW_BYTES != row);
 	else
 		cost = (uint64_t)k * pp -
 		       (a / RDC_DRAM_ROW_BYTES == row ? RDC_T_ROW_MISS : 0);
 	if (cost > budget)
 		return;
 	budget -= cost;
-	line_put(vram + a, q, more, v2, !xmajor, umul, scratch);
-	rem += more ? d1 : d0;
+	line_q32(vram + a, (uint32_t)k, v2, !xmajor, umul);
+	if (last) {
+		row = (a + ((uint32_t)k - 1) * umul + (xmajor ? 3 : 0)) /
+		      RDC_DRAM_ROW_BYTES;
+		run = ihi + 1;
+		goto out;
+	}
+	rem += 2 * m * k - 2 * n - rr;
 	run += k;
-	a += more ? step1 : step0;
+	a += (uint32_t)k * umul + vstep;
 	run1 = run;
 
 	if (xmajor) {
 		while (run < end) {
 			more = rem < 0;
 			k = q + more;
-			cost = span_cost32(a, k * 4, 1);
+			cost = span_cost32(a, (uint32_t)k * 4, 1);
 			if (cost > budget)
 				break;
 			budget -= cost;
@@ -236,12 +252,36 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 		budget -= pp * (uint64_t)(run - run1);
 	}
 	/* the last pixel written, a + vstep before the next run's first */
-	w->t = f->lim - budget;
-	w->row = (a - vstep - (xmajor ? 1 : umul)) / RDC_DRAM_ROW_BYTES;
+	row = (a - vstep - (xmajor ? 1 : umul)) / RDC_DRAM_ROW_BYTES;
+	/* the run or two left once no run of q + 1 fits before ihi */
+	while (run >= end && run <= ihi) {
+		k = (int64_t)q + (rem < 0);
+		last = run + k - 1 >= ihi;
+		if (last)
+			k = ihi - run + 1;
+		cost = xmajor ? span_cost32(a, (uint32_t)k * 4, 1) :
+				(uint64_t)k * pp;
+		if (cost > budget)
+			break;
+		budget -= cost;
+		line_q32(vram + a, (uint32_t)k, v2, !xmajor, umul);
+		row = (a + ((uint32_t)k - 1) * umul + (xmajor ? 3 : 0)) /
+		      RDC_DRAM_ROW_BYTES;
+		if (last) {
+			run = ihi + 1;
+			goto out;
+		}
+		rem += 2 * m * k - 2 * n;
+		run += k;
+		a += (uint32_t)k * umul + vstep;
+	}
 	pos->rem = rem + rr;
 	pos->j = (2 * m * run + n - pos->rem) / (2 * n);
-	pos->run = run;
 	pos->addr = a;
+out:
+	w->t = f->lim - budget;
+	w->row = row;
+	pos->run = run;
 	*pixels += (uint64_t)(run - run0);
 }
 
@@ -354,8 +394,7 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 		int32_t v, a, b;
 		struct rdc_port_run *r;
 
-		if (fast && w.open && w.t <= w.lim && rem < 2 * m &&
-		    i + q < ihi) {
+		if (fast && w.open && w.t <= w.lim) {
 			struct line_pos pos = {
 				.run = i,
 				.j = j,
@@ -370,6 +409,8 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 				line_fast_x(&w, &f, ihi, n, m, &pos, &pixels);
 			else
 				line_fast_y(&w, &f, ihi, n, m, &pos, &pixels);
+			if (pos.run > ihi)
+				break;
 			i = pos.run;
 			j = pos.j;
 			rem = pos.rem;
