@@ -51,6 +51,44 @@ static uint64_t line_offset(const struct rdc_hw *hw,
 	       ((uint64_t)tm->pixclk_khz * HZ_PER_KHZ);
 }
 
+/*
+ * line_offset of c->next_line in `cur`, and one line's step, for
+ * crtc_line_step: after every change of `cur` or of next_line other than
+ * the step itself.
+ */
+static void crtc_line_sync(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint64_t num = (uint64_t)c->cur.h_total * hw->core_hz;
+	uint64_t den = (uint64_t)c->cur.pixclk_khz * HZ_PER_KHZ;
+
+	if (!den) {
+		c->line_den = 0;
+		return;
+	}
+	c->line_den = den;
+	c->step_q = num / den;
+	c->step_r = num % den;
+	c->line_q = (uint64_t)c->next_line * num / den;
+	c->line_r = (uint64_t)c->next_line * num % den;
+}
+
+/* line_offset(hw, &c->cur, c->next_line + 1), from the last one. */
+static inline uint64_t crtc_line_step(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	if (!c->line_den) /* no mode in force: as line_offset divides */
+		return line_offset(hw, &c->cur, c->next_line + 1);
+	c->line_q += c->step_q;
+	c->line_r += c->step_r;
+	if (c->line_r >= c->line_den) {
+		c->line_r -= c->line_den;
+		c->line_q++;
+	}
+	return c->line_q;
+}
+
 static bool timing_axis_ok(uint32_t disp, uint32_t ss, uint32_t se,
 			   uint32_t total)
 {
@@ -106,6 +144,7 @@ static void crtc_latch(struct rdc_hw *hw, bool at_vblank)
 			c->cur = c->shadow;
 			c->mode_valid = 1;
 			c->mode_pending = 0;
+			crtc_line_sync(hw);
 		} else if (!timing_same(in_force, &c->shadow)) {
 			c->pending = c->shadow;
 			c->mode_pending = !timing_same(&c->cur, &c->shadow);
@@ -346,6 +385,20 @@ static uint64_t crtc_next_frame_vblank(const struct rdc_hw *hw)
 }
 
 /*
+ * What the catch-up to t compares with t: crtc_next_frame_vblank, or,
+ * when t comes before the next frame starts (and so before its vblank),
+ * that start, which compares the same and needs no division.
+ */
+static inline uint64_t crtc_shown_until(const struct rdc_hw *hw, uint64_t t)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+
+	if (t < c->frame_start + c->frame_cycles)
+		return c->frame_start + c->frame_cycles;
+	return crtc_next_frame_vblank(hw);
+}
+
+/*
  * A line start's signals for the trace and the pins, out of line: the
  * loop below carries only a test and a branch a line for them when nobody
  * traces (the frame-skip path runs millions of line starts a second).
@@ -377,7 +430,7 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 	 * far ahead costs little more than the bus bookkeeping.
 	 */
 	if (c->running && c->next_line_time <= t && !hw->frame_fn)
-		shown_until = crtc_next_frame_vblank(hw);
+		shown_until = crtc_shown_until(hw, t);
 	while (c->running && c->next_line_time <= t) {
 		uint32_t n = c->next_line;
 		uint64_t when = c->next_line_time;
@@ -391,16 +444,17 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 							      c->cur.v_total);
 			}
 			n = 0;
+			c->next_line = 0;
+			crtc_line_sync(hw);
 			if (!hw->frame_fn)
-				shown_until = crtc_next_frame_vblank(hw);
+				shown_until = crtc_shown_until(hw, t);
 		}
 		/*
 		 * Step past the event before acting on it: the frame listener
 		 * may read registers, which catches up again.
 		 */
+		c->next_line_time = c->frame_start + crtc_line_step(hw);
 		c->next_line = n + 1;
-		c->next_line_time =
-			c->frame_start + line_offset(hw, &c->cur, n + 1);
 		if (hw->now < when)
 			hw->now = when;
 		if (hw->trace_fn || n == 0)
@@ -434,6 +488,7 @@ void rdc_crtc_start(struct rdc_hw *hw)
 	}
 	c->frame_start = hw->now;
 	c->frame_cycles = line_offset(hw, &c->cur, c->cur.v_total);
+	crtc_line_sync(hw);
 	c->next_line_time = hw->now;
 }
 

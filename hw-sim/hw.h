@@ -108,6 +108,12 @@ struct rdc_crtc {
 	int shadow_dirty; /* timing/format shadows written since the latch */
 	int mode_pending; /* `pending` goes in force at the next frame start */
 	struct rdc_timing pending;
+	/*
+	 * next_line's start from frame_start, line_q + line_r / line_den
+	 * cycles, and one line of `cur` as much: stepped a line at a time
+	 * rather than divided out (crtc.c's line_offset, exactly).
+	 */
+	uint64_t line_q, line_r, step_q, step_r, line_den;
 };
 
 /* The DRAM bus's state for the cost model (see bus.h). */
