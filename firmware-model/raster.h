@@ -59,35 +59,34 @@ static inline void px_st(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v)
 }
 
 #define FILL_BLOCK 64 /* bytes of pattern copied at a time */
+#define FILL_STORE 32 /* bytes of pattern one store of dp_fill32 writes */
 
 /*
- * n XRGB8888 pixels of v: memset when the bytes agree, else a pattern block the
- * compiler turns into wide stores.
+ * n XRGB8888 pixels of v: memset when the bytes agree, else stores of a
+ * pattern block of a fixed size, which the compiler keeps in registers
+ * (wide stores, no reads), the last one ending at the end (overlapping the
+ * one before: every pixel is v).
  */
 static inline void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
 {
 	size_t len = (size_t)n * 4, i;
-	uint8_t pair[8];
-	uint64_t v2;
+	uint8_t blk[FILL_STORE];
 
 	if ((v & 0xff) * 0x01010101u == v) {
 		rdc_memset(p, (int)(v & 0xff), len);
 		return;
 	}
-	if (len < FILL_BLOCK) {
+	if (len < FILL_STORE) {
 		for (i = 0; i < len; i += 4)
 			rdc_st32(p + i, v);
 		return;
 	}
-	/* one block by 8-byte stores, then doubling copies of it */
-	rdc_st32(pair, v);
-	rdc_st32(pair + 4, v);
-	rdc_memcpy(&v2, pair, sizeof(v2));
-	for (i = 0; i < FILL_BLOCK; i += sizeof(v2))
-		rdc_memcpy(p + i, &v2, sizeof(v2));
-	for (; i * 2 <= len; i *= 2)
-		rdc_memcpy(p + i, p, i);
-	rdc_memcpy(p + i, p, len - i);
+	for (i = 0; i < FILL_STORE; i += 4)
+		rdc_st32(blk + i, v);
+	for (i = 0; i + FILL_STORE <= len; i += FILL_STORE)
+		rdc_memcpy(p + i, blk, FILL_STORE);
+	if (i < len)
+		rdc_memcpy(p + len - FILL_STORE, blk, FILL_STORE);
 }
 
 /*

@@ -4,23 +4,11 @@
 #include "raster.h"
 
 /*
- * memcpy with a length the compiler knows nothing about: where it knows
- * the length is at most a staging buffer it expands the copy inline
- * (rep movsq on x86), which is slower than the library's for rows of a
- * few hundred bytes.
- */
-static inline void row_copy(uint8_t *d, const uint8_t *s, size_t n)
-{
-	rdc_hide_var(n);
-	rdc_memcpy(d, s, n);
-}
-
-/*
  * A filled rectangle's rows [ya, ye] of pixels [xa, xb] (clipped) in
  * XRGB8888 with a ROP that ignores the destination, charged and written
  * row by row as the queued runs would be (see line_run): no queue, and
- * each row one memcpy of the colour staged in dp->px.  False (nothing
- * done) for other formats and ROPs.
+ * each row dp_fill32's stores.  False (nothing done) for other formats and
+ * ROPs.
  */
 static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 			int32_t ye)
@@ -38,8 +26,6 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	if (dp->nruns)
 		dp_runs_flush(dp);
 	v = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
-	if (n <= RDC_DP_CHUNK)
-		dp_fill32((uint8_t *)dp->px, v, n);
 	one.addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
 	one.len = n * 4;
 	one.count = 1;
@@ -48,13 +34,8 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	while (rows) {
 		done = rdc_port_window_rows(hw, &w, one.addr, one.len,
 					    s->stride, rows);
-		for (k = 0; k < done; k++, one.addr += s->stride) {
-			p = w.vram + one.addr;
-			if (n <= RDC_DP_CHUNK)
-				row_copy(p, (const uint8_t *)dp->px, one.len);
-			else
-				dp_fill32(p, v, n);
-		}
+		for (k = 0; k < done; k++, one.addr += s->stride)
+			dp_fill32(w.vram + one.addr, v, n);
 		pixels += (uint64_t)done * n;
 		rows -= done;
 		if (!rows)
@@ -63,12 +44,8 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 		hw->perf.pixels += pixels;
 		pixels = 0;
 		p = rdc_port_span(hw, one.addr, one.len, RDC_BUS_WRITE);
-		if (p && n <= RDC_DP_CHUNK) {
-			row_copy(p, (const uint8_t *)dp->px, one.len);
-			hw->perf.pixels += n;
-		} else if (p) {
+		if (p)
 			dp_run_write(dp, p, &one, dp->st.fg);
-		}
 		rdc_port_window_open(hw, &w);
 		one.addr += s->stride;
 		rows--;

@@ -183,7 +183,7 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	const struct rdc_port_run *r = dp->runs + first, *end = r + n;
-	uint32_t stride = s->stride, v, staged = 0;
+	uint32_t stride = s->stride, v;
 	uint64_t pixels = 0;
 	uint8_t pair[8];
 
@@ -194,8 +194,7 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 	}
 	/*
 	 * XRGB8888 over a destination the ROP ignores: plain stores, and
-	 * rows of a block or more copied from one row of the colour staged
-	 * in dp->px (one memcpy a row, the fill's memset speed).
+	 * rows of a block or more dp_fill32's wide stores.
 	 */
 	v = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
 	rdc_st32(pair, v);
@@ -204,16 +203,7 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 		uint8_t *q = p + r->addr;
 
 		if (r->count == 1 && r->len >= FILL_BLOCK) {
-			if (r->len <= sizeof(dp->px)) {
-				if (staged < r->len) {
-					dp_fill32((uint8_t *)dp->px, v,
-						  r->len / 4);
-					staged = r->len;
-				}
-				rdc_memcpy(q, dp->px, r->len);
-			} else {
-				dp_fill32(q, v, r->len / 4);
-			}
+			dp_fill32(q, v, r->len / 4);
 			pixels += r->len / 4;
 			continue;
 		}
