@@ -218,6 +218,10 @@ static void rec_table(struct rdc_rec *r, const struct rdc_backend *inner)
 	}
 	if (!inner->pins_set)
 		r->be.pins_set = NULL;
+	if (!inner->pins_get)
+		r->be.pins_get = NULL;
+	if (!inner->pins_wait)
+		r->be.pins_wait = NULL;
 	if (!inner->step)
 		r->be.step = NULL;
 	if (!inner->frame_grab)
@@ -411,6 +415,28 @@ static int rec_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 	return ret;
 }
 
+/*
+ * A device's own pin reads (fbdev: its GPIO lines) go to it unrecorded:
+ * they change nothing on the chip, and a replay reads the register PINS.
+ */
+static int rec_pins_get(rdc_dev *dev, uint32_t *levels)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r, pins_get(dev, levels));
+}
+
+static int rec_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
+			 uint64_t budget_cycles, uint64_t timeout_us,
+			 struct rdc_pin_edge *ev)
+{
+	struct rdc_rec *r = dev->priv;
+
+	return REC_INNER(dev, r,
+			 pins_wait(dev, pins, edges, budget_cycles, timeout_us,
+				   ev));
+}
+
 static int rec_step(rdc_dev *dev, uint64_t cycles)
 {
 	struct rdc_rec *r = dev->priv;
@@ -566,6 +592,8 @@ static const struct rdc_backend rdc_backend_rec = {
 	.step = rec_step,
 	.frame_grab = rec_frame_grab,
 	.pins_set = rec_pins_set,
+	.pins_get = rec_pins_get,
+	.pins_wait = rec_pins_wait,
 	/*
 	 * No pins_get or pins_wait: the core reads PINS and waits through
 	 * reg_read and wait, which are recorded (the inner pins_wait would
