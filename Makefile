@@ -393,9 +393,11 @@ bench-peers:
 $(O)/rel/sink-bench: $(O)/rel/bench/sink_bench.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
-# rdcctl stream's pipeline into the v4l2 sink, a pipe for the device.
+# rdcctl stream's own loop into the v4l2 sink, a pipe for the device.
 $(O)/rel/bench/stream_bench.o: REL_CFLAGS += -Iuserspace/sink
-$(O)/rel/stream-bench: $(O)/rel/bench/stream_bench.o $(O)/rel/librdc.a
+$(O)/rel/bench/stream_bench.o: REL_CFLAGS += -Iuserspace/rdcctl
+$(O)/rel/stream-bench: $(O)/rel/bench/stream_bench.o \
+		$(O)/rel/userspace/rdcctl/stream.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 # rdcd's figures (JSON lines): submit throughput, register-read round

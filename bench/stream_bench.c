@@ -4,11 +4,11 @@
  * stream-bench: `rdcctl stream` of the demo at 1920x1080 into a v4l2
  * sink, measured where no v4l2loopback device can be loaded.
  *
- * The pipeline is rdcctl stream's (userspace/rdcctl/stream.c): sim:, the
- * demo script, then for every frame rdc_vblank_wait, rdc_frame_grab,
- * rdc_sink_interval and rdc_sink_frame into the v4l2 sink (its format
- * conversion and its one write() a frame), paced to the simulated refresh
- * as rdcctl does, or unpaced (--fast).  Only the device is replaced: the
+ * The loop is rdcctl stream's own (rdcctl_stream_run, userspace/rdcctl/
+ * stream.c): sim:, the demo script, then for every frame rdc_vblank_wait,
+ * rdc_frame_grab, rdc_sink_interval and rdc_sink_frame into the v4l2 sink
+ * (its format conversion and its one write() a frame), paced to the
+ * simulated refresh, or unpaced (--fast).  Only the device is replaced: the
  * sink's system calls go to a pipe whose other end a child process reads
  * and discards (so every frame's bytes are copied through the kernel, as
  * a write() to v4l2loopback copies them), and the ioctls answer as
@@ -23,8 +23,7 @@
  *   {"workload":"stream_v4l2","width":1920,"height":1080,"paced":true,
  *    "frames":N,"wall_s":S,"fps":F,"target_fps":60,"cpu_s":C,
  *    "cpu_share":C/S,"reader_cpu_s":R,"written":W,"dropped":D,"met":B}
- * fps counts the frames handed to the sink a second, from the first to
- * the last; cpu_share is this process's user + system time (getrusage)
+ * fps counts the frames written a second, from the first to the last; cpu_share is this process's user + system time (getrusage)
  * over the wall time: the share of one core the stream takes (the
  * simulator included); reader_cpu_s is the reader's, the device's part.
  */
@@ -35,6 +34,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/ioctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -43,6 +44,8 @@
 #include "rdc.h"
 #include "rdc_sink.h"
 #include "sink_priv.h"
+#include "report.h" /* rdcctl_open */
+#include "stream.h"
 
 #define DEMO	     "examples/demo.rdl"
 #define DEMO_MODE    "mode 640x480 i8"
@@ -54,7 +57,6 @@
 #define FORMAT	     "bgr32" /* rdcctl stream's default */
 #define NS_PER_S     1000000000ull
 #define PAGE	     4096u
-#define MAX_LAG_NS   NS_PER_S /* as rdcctl stream */
 #define READ_CHUNK   (1u << 16)
 
 static int pipe_w = -1;
@@ -115,9 +117,18 @@ static int dev_ioctl(int fd, unsigned long req, void *arg)
 	return -1;
 }
 
+/* when the first and the last frame of a run were written */
+static uint64_t t_first, t_last;
+static uint32_t n_written;
+
 static ssize_t dev_write(int fd, const void *buf, size_t len)
 {
-	return write(fd, buf, len);
+	ssize_t n = write(fd, buf, len);
+
+	t_last = now_ns();
+	if (!n_written++)
+		t_first = t_last;
+	return n;
 }
 
 static int dev_close(int fd)
@@ -128,6 +139,24 @@ static int dev_close(int fd)
 static const struct rdc_v4l2_io dev_io = {
 	.open = dev_open,
 	.ioctl = dev_ioctl,
+	.write = dev_write,
+	.close = dev_close,
+};
+
+/* --v4l2 DEV: the device's own system calls, the writes timed */
+static int real_open(const char *path, int flags)
+{
+	return open(path, flags);
+}
+
+static int real_ioctl(int fd, unsigned long req, void *arg)
+{
+	return ioctl(fd, req, arg);
+}
+
+static const struct rdc_v4l2_io real_io = {
+	.open = real_open,
+	.ioctl = real_ioctl,
 	.write = dev_write,
 	.close = dev_close,
 };
@@ -209,15 +238,19 @@ struct result {
 	bool paced;
 	uint32_t frames, w, h;
 	double wall, cpu, reader_cpu;
-	double fps; /* frames handed to the sink a second, first to last */
+	double fps; /* frames written a second, from the first to the last */
 	struct rdc_sink_stats st;
 };
 
+/* rdcctl's own: the stream loop opens nothing but through librdc. */
+int rdcctl_open(const char *uri, rdc_dev **dev)
+{
+	return rdc_open(uri, dev);
+}
+
 static int stream(rdc_dev *dev, bool paced, struct result *r)
 {
-	uint32_t *px = malloc((size_t)HD_W * HD_H * 4), w = 0, h = 0;
-	uint64_t t_start, t0 = 0, k = 0, num = 0, den = 0, t_first = 0,
-			  t_last = 0;
+	uint64_t t_start;
 	double c0, rc0;
 	rdc_sink *sink;
 	pid_t reader;
@@ -226,88 +259,33 @@ static int stream(rdc_dev *dev, bool paced, struct result *r)
 	memset(r, 0, sizeof(*r));
 	r->paced = paced;
 	reader = v4l2_dev ? 0 : reader_start();
-	if (!px || reader < 0) {
-		free(px);
+	if (reader < 0)
 		return RDC_E_NOMEM;
-	}
 	if (v4l2_dev) {
 		char spec[256];
 
-		snprintf(spec, sizeof(spec), "v4l2:%s,format=" FORMAT,
-			 v4l2_dev);
-		ret = rdc_sink_open(spec, &sink);
+		snprintf(spec, sizeof(spec), "%s,format=" FORMAT, v4l2_dev);
+		ret = rdc_sink_v4l2_open_io(spec, &real_io, &sink);
 	} else {
 		ret = rdc_sink_v4l2_open_io("/dev/video-bench,format=" FORMAT,
 					    &dev_io, &sink);
 	}
-	if (ret) {
-		free(px);
+	n_written = 0;
+	if (ret)
 		return ret;
-	}
 	rc0 = cpu_s(RUSAGE_CHILDREN);
 	c0 = cpu_s(RUSAGE_SELF);
 	t_start = now_ns();
-	for (uint32_t seq = 0; !ret && seq < n_frames; seq++) {
-		struct rdc_frame f;
-		uint32_t n2, d2;
-
-		ret = rdc_vblank_wait(dev);
-		if (!ret)
-			ret = rdc_frame_grab(dev, px, (size_t)HD_W * HD_H, &w,
-					     &h);
-		if (ret)
-			break;
-		if (rdc_sink_interval(dev, &n2, &d2))
-			n2 = d2 = 0;
-		memset(&f, 0, sizeof(f));
-		f.xrgb = px;
-		f.width = w;
-		f.height = h;
-		f.stride = w;
-		f.seq = seq;
-		f.interval_num = n2;
-		f.interval_den = d2;
-		ret = rdc_sink_frame(sink, &f);
-		t_last = now_ns();
-		if (!r->frames++)
-			t_first = t_last;
-		if (ret || !paced || !n2 || !d2)
-			continue;
-		if (n2 != num || d2 != den || !t0) {
-			num = n2;
-			den = d2;
-			t0 = now_ns();
-			k = 0;
-		}
-		k++;
-		{
-			uint64_t due = t0 + k * num * NS_PER_S / den;
-			uint64_t t = now_ns();
-
-			if (t > due + MAX_LAG_NS) {
-				t0 = t;
-				k = 0;
-			} else {
-				struct timespec ts = {
-					.tv_sec = (time_t)(due / NS_PER_S),
-					.tv_nsec = (long)(due % NS_PER_S)
-				};
-
-				while (clock_nanosleep(CLOCK_MONOTONIC,
-						       TIMER_ABSTIME, &ts,
-						       NULL) == EINTR)
-					;
-			}
-		}
-	}
+	ret = rdcctl_stream_run(dev, n_frames, !paced, &sink, 1);
 	r->wall = (double)(now_ns() - t_start) / 1e9;
-	r->fps = t_last > t_first ?
-			 (r->frames - 1) * 1e9 / (double)(t_last - t_first) :
-			 0;
 	r->cpu = cpu_s(RUSAGE_SELF) - c0;
-	r->w = w;
-	r->h = h;
 	rdc_sink_stats_get(sink, &r->st);
+	r->frames = (uint32_t)r->st.frames;
+	r->fps = n_written > 1 && t_last > t_first ?
+			 (n_written - 1) * 1e9 / (double)(t_last - t_first) :
+			 0;
+	/* the frames' size: the device's (a grab with no room says it) */
+	rdc_frame_grab(dev, NULL, 0, &r->w, &r->h);
 	rdc_sink_close(sink);
 	if (!v4l2_dev) {
 		close(pipe_w);
@@ -315,7 +293,6 @@ static int stream(rdc_dev *dev, bool paced, struct result *r)
 		waitpid(reader, &status, 0);
 	}
 	r->reader_cpu = cpu_s(RUSAGE_CHILDREN) - rc0;
-	free(px);
 	return ret;
 }
 

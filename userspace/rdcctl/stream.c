@@ -390,6 +390,14 @@ static int stream_run(rdc_dev *dev, const struct stream_opts *o,
 	return ret;
 }
 
+int rdcctl_stream_run(rdc_dev *dev, uint64_t frames, bool fast,
+		      rdc_sink **sinks, int nsinks)
+{
+	struct stream_opts o = { .frames = frames, .fast = fast };
+
+	return stream_run(dev, &o, sinks, nsinks);
+}
+
 static void stream_report(rdc_sink **sinks, int n)
 {
 	for (int i = 0; i < n; i++) {
