@@ -93,6 +93,9 @@ struct rdcd_client {
 	int fd;
 	uint32_t id;
 	bool tcp, hello, dead, closing;
+	/* this client's *_HI snapshot: the HI register its last *_LO read
+	 * belongs to (0: none) and that HI's value then (serve.c) */
+	uint32_t snap_reg, snap_val;
 	/* a complete request waits in hdr/body until the chip is between
 	 * commands (it changes the device) */
 	bool held;

@@ -1282,6 +1282,55 @@ static bool rdcd_needs_control(const struct rdcd *d,
 	}
 }
 
+/* The HI register whose value a read of `reg` snapshots, or 0. */
+static uint32_t rdcd_snap_hi(uint32_t reg)
+{
+	switch (reg) {
+	case RDC_REG_TIME_LO:
+	case RDC_REG_PERF_BUSY_LO:
+	case RDC_REG_PERF_STALL_LO:
+	case RDC_REG_PERF_PIXELS_LO:
+		return reg + 4;
+	default:
+		return 0;
+	}
+}
+
+/* A chip reset drops the snapshots, the clients' as the chip's. */
+static void rdcd_snap_forget(struct rdcd *d)
+{
+	for (struct rdcd_client *c = d->clients; c; c = c->next)
+		c->snap_reg = 0;
+}
+
+/*
+ * A client's register read.  The chip keeps one *_HI snapshot, taken by
+ * a *_LO read (docs/hardware.md); several clients reading 64-bit
+ * counters would take each other's.  So each client has its own: a LO
+ * read here reads its HI on the chip at once (the chip's snapshot used
+ * up: the chip's state is as after a whole 64-bit read, and a trace
+ * holds both reads), and that client's HI read is answered from it.
+ */
+static int rdcd_reg_read(struct rdcd *d, struct rdcd_client *c, uint32_t reg,
+			 uint32_t *v)
+{
+	uint32_t hi = rdcd_snap_hi(reg);
+	int ret;
+
+	if (c->snap_reg && reg == c->snap_reg) {
+		*v = c->snap_val;
+		c->snap_reg = 0;
+		return 0;
+	}
+	ret = rdc_reg_read(d->dev, reg, v);
+	if (!ret && hi) {
+		c->snap_reg = 0;
+		if (!rdc_reg_read(d->dev, hi, &c->snap_val))
+			c->snap_reg = hi;
+	}
+	return ret;
+}
+
 static void rdcd_submit(struct rdcd *d, struct rdcd_client *c,
 			const struct rdc_proto_hdr *h, uint8_t **pl)
 {
@@ -1377,7 +1426,7 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 	}
 	switch (h->type) {
 	case RDC_MSG_REG_READ:
-		ret = rdc_reg_read(d->dev, rdc_proto_get32(pl), &v);
+		ret = rdcd_reg_read(d, c, rdc_proto_get32(pl), &v);
 		rdc_proto_put32(out, v);
 		if (ret)
 			rdcd_reply_err(d, c, h, ret);
@@ -1385,6 +1434,9 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 			rdcd_reply(d, c, h, RDC_ST_OK, out, 4);
 		break;
 	case RDC_MSG_REG_WRITE:
+		if (rdc_proto_get32(pl) == RDC_REG_CONTROL &&
+		    (rdc_proto_get32(pl + 4) & RDC_CONTROL_SOFT_RESET))
+			rdcd_snap_forget(d);
 		ret = rdc_reg_write(d->dev, rdc_proto_get32(pl),
 				    rdc_proto_get32(pl + 4));
 		rdcd_reply_err(d, c, h, ret);
@@ -1487,6 +1539,7 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 			break;
 		}
 		rdcd_reset_pending(d, c, v == RDC_RESET_POWER);
+		rdcd_snap_forget(d);
 		if (v == RDC_RESET_SOFT) {
 			ret = rdc_reset(d->dev);
 		} else {
@@ -1526,6 +1579,9 @@ static void rdcd_dispatch(struct rdcd *d, struct rdcd_client *c,
 		rdcd_reply(d, c, h, RDC_ST_OK, NULL, 0);
 		break;
 	case RDC_MSG_PINS_SET:
+		/* RESET_N moved resets the chip */
+		if (rdc_proto_get32(pl) & RDC_PIN_RESET_N)
+			rdcd_snap_forget(d);
 		rdcd_pins_set(d, c, h, pl);
 		break;
 	case RDC_MSG_HIST_OPEN:
