@@ -179,14 +179,6 @@ struct rdc_dp {
 	struct rdc_port_run runs[RDC_DP_CHUNK];
 	uint32_t nruns;
 	bool queue_spans;
-	/*
-	 * Opaque MONO/TEXT in XRGB8888: the four pixels (VRAM bytes) of each
-	 * 4-bit group of glyph bits, for FG nibble_fg and BG nibble_bg (valid
-	 * once nibble_ok)
-	 */
-	uint8_t nibble_px[16][16];
-	uint32_t nibble_fg, nibble_bg;
-	bool nibble_ok;
 
 	/* DECODE, HISTOGRAM, MAP_*, CONVOLVE, THRESHOLD (image.h) */
 	struct rdc_dp_img img;

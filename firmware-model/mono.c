@@ -72,54 +72,68 @@ static void bits_expand(struct rdc_dp *dp, const struct row_src *rs, uint32_t r,
 }
 
 /*
- * Pixels [bx, bx + n) of row r of a MONO or TEXT source as XRGB8888 at q,
- * FG and BG both written: with `table`, whole bytes of bits as two
- * 4-pixel groups from dp->nibble_px (nibble_fill); otherwise, and at the
- * ragged ends, pixel by pixel.
+ * Two XRGB8888 pixels, a then b, as the 8 bytes VRAM holds them (VRAM is
+ * little-endian), for 8-byte stores.
  */
-#define BIT_PX(q, k) \
-	rdc_st32((q) + 4 * (k), bg ^ (diff & -((byte >> (7 - (k))) & 1)))
+static inline uint64_t px_pair(uint32_t a, uint32_t b)
+{
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+	return (uint64_t)b << 32 | a;
+#else
+	return (uint64_t)__builtin_bswap32(a) << 32 | __builtin_bswap32(b);
+#endif
+}
 
-static inline void bits_write32(struct rdc_dp *dp, uint8_t *q,
-				const struct row_src *rs, uint32_t r,
-				uint32_t bx, uint32_t n, bool table)
+/*
+ * The four 2-pixel groups of FG and BG: pair[u] has FG as its first pixel
+ * if bit 1 of u is set, as its second if bit 0 is.  Built a command (four
+ * values), read back whole.
+ */
+struct mono_pairs {
+	uint64_t pair[4];
+};
+
+static inline void pairs_fill(struct mono_pairs *t, uint32_t fg, uint32_t bg)
+{
+	t->pair[0] = px_pair(bg, bg);
+	t->pair[1] = px_pair(bg, fg);
+	t->pair[2] = px_pair(fg, bg);
+	t->pair[3] = px_pair(fg, fg);
+}
+
+/* The 8 pixels of a byte of bits (bit 7 leftmost) at q. */
+static inline void byte_write32(uint8_t *q, const struct mono_pairs *t,
+				uint32_t byte)
+{
+	rdc_memcpy(q, &t->pair[byte >> 6 & 3], 8);
+	rdc_memcpy(q + 8, &t->pair[byte >> 4 & 3], 8);
+	rdc_memcpy(q + 16, &t->pair[byte >> 2 & 3], 8);
+	rdc_memcpy(q + 24, &t->pair[byte & 3], 8);
+}
+
+/*
+ * Pixels [bx, bx + n) of row r of a MONO or TEXT source as XRGB8888 at q,
+ * FG and BG both written: whole bytes of bits as four 2-pixel groups
+ * (byte_write32); at the ragged ends, pixel by pixel.
+ */
+static inline void bits_write32(uint8_t *q, const struct row_src *rs,
+				const struct mono_pairs *t, uint32_t r,
+				uint32_t bx, uint32_t n)
 {
 	uint32_t i = 0, bg = rs->bg, diff = rs->fg ^ rs->bg;
 	unsigned int b;
 
-	if (table && bx % 8 == 0) /* whole bytes from the first pixel */
-		for (; n - i >= 8; i += 8, q += 32) {
-			uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
-
-			rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
-			rdc_memcpy(q + 16, dp->nibble_px[byte & 15], 16);
-		}
 	while (i < n) {
 		uint32_t byte = bits_byte(rs, r, (bx + i) / 8);
 
 		b = (bx + i) % 8;
-		/* a set bit turns BG into FG: bg ^ (diff & -bit) */
 		if (b == 0 && n - i >= 8) {
-			if (table) {
-				rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
-				rdc_memcpy(q + 16, dp->nibble_px[byte & 15],
-					   16);
-				q += 32;
-			} else {
-				/* written out: constant shifts, no loop */
-				BIT_PX(q, 0);
-				BIT_PX(q, 1);
-				BIT_PX(q, 2);
-				BIT_PX(q, 3);
-				BIT_PX(q, 4);
-				BIT_PX(q, 5);
-				BIT_PX(q, 6);
-				BIT_PX(q, 7);
-				q += 32;
-			}
+			byte_write32(q, t, byte);
+			q += 32;
 			i += 8;
 			continue;
 		}
+		/* a set bit turns BG into FG: bg ^ (diff & -bit) */
 		for (; b < 8 && i < n; b++, i++, q += 4)
 			rdc_st32(q, bg ^ (diff & -((byte >> (7 - b)) & 1)));
 	}
@@ -127,55 +141,19 @@ static inline void bits_write32(struct rdc_dp *dp, uint8_t *q,
 
 /*
  * bits_write32 for `rows` rows of exactly one whole byte of a MONO
- * source (bx a multiple of 8, n 8, with the table), the console's 8-pixel
- * glyph rows: the row loop without a call or the ragged-end tests per row.
+ * source (bx a multiple of 8, n 8), the console's 8-pixel glyph rows:
+ * the row loop without a call or the ragged-end tests per row.
  */
-static inline void mono8_rows32(const struct rdc_dp *dp, uint8_t *q,
-				uint32_t stride, const struct row_src *rs,
-				uint32_t r, uint32_t bx, uint32_t rows)
+static inline void mono8_rows32(uint8_t *q, uint32_t stride,
+				const struct row_src *rs,
+				const struct mono_pairs *t, uint32_t r,
+				uint32_t bx, uint32_t rows)
 {
 	const uint32_t *d = rs->data + (size_t)r * rs->wpr;
 	uint32_t k;
 
-	for (k = 0; k < rows; k++, q += stride, d += rs->wpr) {
-		uint32_t byte = word_byte(d, bx / 8);
-
-		rdc_memcpy(q, dp->nibble_px[byte >> 4], 16);
-		rdc_memcpy(q + 16, dp->nibble_px[byte & 15], 16);
-	}
-}
-
-/*
- * dp->nibble_px for FG and BG (group v's pixel k is FG if bit 3 - k is
- * set), unless it holds them already.  False where the `n` pixels to draw
- * with it (all rows: an 8x16 glyph is 128) are too few to repay building
- * it (a byte of bits is two lookups instead of eight selects; the table
- * is 64 stores).
- */
-#define NIBBLE_MIN_PX 32u
-
-static bool nibble_fill(struct rdc_dp *dp, uint32_t fg, uint32_t bg, uint64_t n)
-{
-	uint8_t pair[4][8]; /* pair[u]: pixel k is FG if bit 1 - k of u */
-	unsigned int v;
-
-	if (dp->nibble_ok && dp->nibble_fg == fg && dp->nibble_bg == bg)
-		return true;
-	if (n < NIBBLE_MIN_PX)
-		return false;
-	/* from the four 2-pixel pairs: 8 stores and 32 copies, not 64 */
-	for (v = 0; v < 4; v++) {
-		rdc_st32(pair[v], v & 2 ? fg : bg);
-		rdc_st32(pair[v] + 4, v & 1 ? fg : bg);
-	}
-	for (v = 0; v < 16; v++) {
-		rdc_memcpy(dp->nibble_px[v], pair[v >> 2], 8);
-		rdc_memcpy(dp->nibble_px[v] + 8, pair[v & 3], 8);
-	}
-	dp->nibble_fg = fg;
-	dp->nibble_bg = bg;
-	dp->nibble_ok = true;
-	return true;
+	for (k = 0; k < rows; k++, q += stride, d += rs->wpr)
+		byte_write32(q, t, word_byte(d, bx / 8));
 }
 
 /*
@@ -194,15 +172,15 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 	uint32_t n = (uint32_t)(xb - xa), bx = (uint32_t)(xa - x);
 	uint32_t addr, rows, done, r, k;
 	struct rdc_port_window w;
+	struct mono_pairs t;
 	uint64_t pixels = 0;
-	bool table, mono8;
+	bool mono8;
 	uint8_t *p;
 
 	if (ya >= yb)
 		return;
-	table = nibble_fill(dp, rs->fg, rs->bg,
-			    (uint64_t)n * (uint64_t)(yb - ya));
-	mono8 = table && rs->kind == SRC_MONO && n == 8 && bx % 8 == 0;
+	pairs_fill(&t, rs->fg, rs->bg);
+	mono8 = rs->kind == SRC_MONO && n == 8 && bx % 8 == 0;
 	addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
 	rows = (uint32_t)(yb - ya);
 	r = (uint32_t)(ya - y);
@@ -211,14 +189,13 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 		done = rdc_port_window_rows(hw, &w, addr, n * 4, s->stride,
 					    rows);
 		if (mono8) {
-			mono8_rows32(dp, w.vram + addr, s->stride, rs, r, bx,
+			mono8_rows32(w.vram + addr, s->stride, rs, &t, r, bx,
 				     done);
 			r += done;
 			addr += done * s->stride;
 		} else {
 			for (k = 0; k < done; k++, r++, addr += s->stride)
-				bits_write32(dp, w.vram + addr, rs, r, bx, n,
-					     table);
+				bits_write32(w.vram + addr, rs, &t, r, bx, n);
 		}
 		pixels += (uint64_t)done * n;
 		rows -= done;
@@ -230,7 +207,7 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 		pixels = 0;
 		p = rdc_port_span(hw, addr, n * 4, RDC_BUS_WRITE);
 		if (p) {
-			bits_write32(dp, p, rs, r, bx, n, table);
+			bits_write32(p, rs, &t, r, bx, n);
 			hw->perf.pixels += n;
 		}
 		rdc_port_window_open(hw, &w);
