@@ -394,9 +394,11 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 		r1 = r0;
 		c1 = rdc_bus_cost(&r1, a + stride, len, RDC_BUS_WRITE,
 				  rdc_bus_bursts(a + stride, len));
-		if (stride)
+		/* (divided only when not all fit: a glyph's rows mostly do) */
+		if ((n - 1) * stride > hw->vram_size - len - a)
 			n = RDC_MIN(n, (hw->vram_size - len - a) / stride + 1);
-		n = RDC_MIN(n, 1 + (w->lim - t - c0) / c1);
+		if ((n - 1) * c1 > w->lim - t - c0)
+			n = RDC_MIN(n, 1 + (w->lim - t - c0) / c1);
 		w->t = t + c0 + (n - 1) * c1;
 		w->row = (uint32_t)((a + (n - 1) * stride + len - 1) /
 				    RDC_DRAM_ROW_BYTES);

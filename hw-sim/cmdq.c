@@ -118,6 +118,27 @@ uint32_t rdc_port_cmd_avail(struct rdc_hw *hw, unsigned int src)
 	return 0;
 }
 
+/* Commands are a few words: those by hand, not by a library call. */
+static inline void words_copy(uint32_t *d, const uint32_t *s, uint32_t n)
+{
+	if (n >= 8) {
+		rdc_memcpy(d, s, n * sizeof(*d));
+		return;
+	}
+	if (n & 4) {
+		rdc_memcpy(d, s, 4 * sizeof(*d));
+		d += 4;
+		s += 4;
+	}
+	if (n & 2) {
+		rdc_memcpy(d, s, 2 * sizeof(*d));
+		d += 2;
+		s += 2;
+	}
+	if (n & 1)
+		*d = *s;
+}
+
 static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 {
 	uint32_t before = hw->fifo_count, i;
@@ -129,9 +150,9 @@ static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 	rdc_hw_idle_to(hw, hw->now + n * RDC_T_FIFO_WORD);
 	/* the ring holds the n words in at most two pieces */
 	i = RDC_MIN(n, RDC_FIFO_DEPTH - hw->fifo_head);
-	rdc_memcpy(dst, hw->fifo + hw->fifo_head, i * sizeof(*dst));
+	words_copy(dst, hw->fifo + hw->fifo_head, i);
 	if (i < n)
-		rdc_memcpy(dst + i, hw->fifo, (n - i) * sizeof(*dst));
+		words_copy(dst + i, hw->fifo, n - i);
 	hw->fifo_head = (hw->fifo_head + n) % RDC_FIFO_DEPTH;
 	hw->fifo_count -= n;
 	rdc_fifo_traced(hw);
