@@ -17,6 +17,8 @@
 #ifndef RDC_SERVER_H
 #define RDC_SERVER_H
 
+#include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "rdc.h"
@@ -93,6 +95,40 @@ int rdc_vcd_new(const char *path, struct rdc_hw *const *hw, rdc_vcd **out);
 /* An rdc_trace_fn: the signal events become value changes. */
 void rdc_vcd_trace(void *vcd, uint64_t time, unsigned int event, uint32_t a,
 		   uint32_t b);
+
+/*
+ * Tokens for a server on the network (rdcd's tcp:, the web sink): a
+ * constant-time comparison, and a table of the addresses that failed.
+ * After RDC_AUTH_FREE_FAILS failures an address is refused without a look
+ * at its token for a second, doubling at each further failure up to
+ * RDC_AUTH_BACKOFF_MAX_S; a success forgets it.  The table keeps
+ * RDC_AUTH_TABLE addresses, the least recent making room.  Not locked:
+ * one thread uses a table.
+ */
+#define RDC_AUTH_FREE_FAILS    3
+#define RDC_AUTH_BACKOFF_MAX_S 64
+#define RDC_AUTH_TABLE	       32
+#define RDC_AUTH_PEER_MAX      64
+
+struct rdc_auth {
+	struct rdc_auth_peer {
+		char peer[RDC_AUTH_PEER_MAX];
+		uint32_t fails;
+		uint64_t last_ns, until_ns;
+	} t[RDC_AUTH_TABLE];
+};
+
+/* Whether got[0 .. n) is the token want[0 .. len), in time that depends
+ * on len only. */
+bool rdc_auth_token_equal(const uint8_t *want, size_t len, const uint8_t *got,
+			  size_t n);
+/* Whether `peer` is refused at now_ns (monotonic nanoseconds). */
+bool rdc_auth_locked(const struct rdc_auth *a, const char *peer,
+		     uint64_t now_ns);
+/* A wrong token from `peer` at now_ns. */
+void rdc_auth_failed(struct rdc_auth *a, const char *peer, uint64_t now_ns);
+/* The right token from `peer`: its failures are forgotten. */
+void rdc_auth_passed(struct rdc_auth *a, const char *peer);
 
 #ifdef __cplusplus
 }

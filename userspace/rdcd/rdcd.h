@@ -29,12 +29,10 @@
  */
 #define RDCD_MAX_PENDING 8
 #define RDCD_HELLO_MS	 5000
-/* Failed tokens: after RDCD_AUTH_FREE_FAILS from one address, that address
- * is refused for a second, doubling at each further failure up to a minute;
- * failed-token log lines are kept to one a second. */
-#define RDCD_AUTH_FREE_FAILS	3
-#define RDCD_AUTH_BACKOFF_MAX_S 64
-#define RDCD_AUTH_TABLE		32
+/* Failed tokens: after RDC_AUTH_FREE_FAILS from one address, that address
+ * is refused for a second, doubling at each further failure up to a minute
+ * (rdc_auth_*, rdc_server.h); failed-token log lines are kept to one a
+ * second. */
 /* Requests handled per client per loop turn, so one cannot starve others. */
 #define RDCD_REQ_PER_TURN 64
 /* Replies queued for a client before the daemon stops reading from it. */
@@ -172,11 +170,7 @@ struct rdcd {
 	uint8_t token[RDC_PROTO_MAX_TOKEN];
 	uint32_t token_len;
 	bool have_token;
-	struct rdcd_authfail {
-		char peer[64];
-		uint32_t fails;
-		uint64_t last_ns, until_ns;
-	} authfail[RDCD_AUTH_TABLE];
+	struct rdc_auth auth; /* failed tokens, by peer address */
 	/* lines that a flood could repeat: at most one a second each */
 	struct rdcd_ratelog {
 		uint64_t last_ns;

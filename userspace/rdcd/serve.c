@@ -604,52 +604,6 @@ static void rdcd_fatal(struct rdcd *d, struct rdcd_client *c,
 	rdcd_reply(d, c, req, status, NULL, 0);
 }
 
-/*
- * Failed tokens, by peer address: after RDCD_AUTH_FREE_FAILS, the address
- * is refused without a look at its token for a second, doubling with each
- * further failure up to RDCD_AUTH_BACKOFF_MAX_S.  A success forgets it.
- */
-static struct rdcd_authfail *rdcd_authfail_find(struct rdcd *d,
-						const char *peer, bool make)
-{
-	struct rdcd_authfail *old = &d->authfail[0];
-
-	for (unsigned int i = 0; i < RDCD_AUTH_TABLE; i++) {
-		struct rdcd_authfail *a = &d->authfail[i];
-
-		if (a->peer[0] && !strcmp(a->peer, peer))
-			return a;
-		if (a->last_ns < old->last_ns)
-			old = a;
-	}
-	if (!make)
-		return NULL;
-	memset(old, 0, sizeof(*old));
-	snprintf(old->peer, sizeof(old->peer), "%s", peer);
-	return old;
-}
-
-static bool rdcd_auth_locked(struct rdcd *d, const char *peer)
-{
-	struct rdcd_authfail *a = rdcd_authfail_find(d, peer, false);
-
-	return a && a->until_ns > rdcd_wall_ns();
-}
-
-static void rdcd_auth_failed(struct rdcd *d, const char *peer)
-{
-	struct rdcd_authfail *a = rdcd_authfail_find(d, peer, true);
-	uint64_t now = rdcd_wall_ns();
-
-	a->last_ns = now;
-	if (++a->fails >= RDCD_AUTH_FREE_FAILS) {
-		uint32_t sh = a->fails - RDCD_AUTH_FREE_FAILS;
-		uint64_t s = sh >= 6 ? RDCD_AUTH_BACKOFF_MAX_S : 1ull << sh;
-
-		a->until_ns = now + s * 1000000000ull;
-	}
-}
-
 /* ---- Requests ------------------------------------------------------------ */
 
 /* Registers whose read changes the device (or means nothing). */
@@ -675,7 +629,6 @@ static void rdcd_hello(struct rdcd *d, struct rdcd_client *c,
 	};
 	uint8_t out[RDC_PROTO_HELLO_REPLY_SIZE];
 	uint32_t st;
-	int diff = 0;
 
 	if (c->hello) {
 		rdcd_reply(d, c, h, RDC_ST_ORDER, NULL, 0);
@@ -687,27 +640,17 @@ static void rdcd_hello(struct rdcd *d, struct rdcd_client *c,
 		return;
 	}
 	if (c->tcp && d->have_token) {
-		if (rdcd_auth_locked(d, c->peer)) {
+		if (rdc_auth_locked(&d->auth, c->peer, rdcd_wall_ns())) {
 			rdcd_fatal(d, c, h, RDC_ST_AUTH);
 			return;
 		}
-		/* constant time: the token is a secret */
-		diff = hello.token_len != d->token_len;
-		for (uint32_t i = 0; i < d->token_len; i++)
-			diff |= (i < hello.token_len ? hello.token[i] : 0) ^
-				d->token[i];
-		if (diff) {
-			rdcd_auth_failed(d, c->peer);
+		if (!rdc_auth_token_equal(d->token, d->token_len, hello.token,
+					  hello.token_len)) {
+			rdc_auth_failed(&d->auth, c->peer, rdcd_wall_ns());
 			rdcd_fatal(d, c, h, RDC_ST_AUTH);
 			return;
 		}
-		{
-			struct rdcd_authfail *a =
-				rdcd_authfail_find(d, c->peer, false);
-
-			if (a)
-				memset(a, 0, sizeof(*a));
-		}
+		rdc_auth_passed(&d->auth, c->peer);
 	}
 	if (d->nclients >= RDCD_MAX_CLIENTS ||
 	    rdcd_count_lis(d, c->lis, true, NULL) >=

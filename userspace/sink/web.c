@@ -59,11 +59,6 @@
  * at most this often. */
 #define WEB_STATUS_NS (250ull * 1000000ull)
 #define WEB_TOKEN_MAX 256u
-/* Failed tokens: rdcd's rule (three free, then a second doubling up to a
- * minute, per address). */
-#define WEB_AUTH_FREE_FAILS    3
-#define WEB_AUTH_BACKOFF_MAX_S 64
-#define WEB_AUTH_TABLE	       32
 /* The binary message: type, x, y, w, h (u32 little-endian), then the
  * rectangle's RGBA rows through zlib. */
 #define WEB_RECT_TYPE 1u
@@ -98,12 +93,6 @@ struct web_conn {
 	uint64_t status_ns;
 };
 
-struct web_authfail {
-	char peer[INET6_ADDRSTRLEN];
-	uint32_t fails;
-	uint64_t last_ns, until_ns;
-};
-
 struct web_sink {
 	int lfd, wake_fd;
 	pthread_t thr;
@@ -113,7 +102,7 @@ struct web_sink {
 	uint8_t token[WEB_TOKEN_MAX];
 	size_t token_len;
 	bool have_token;
-	struct web_authfail authfail[WEB_AUTH_TABLE];
+	struct rdc_auth auth; /* failed tokens, by peer address */
 	uint8_t *rgba; /* the server thread's: one band (WEB_BAND_BYTES) */
 	uint8_t *zbuf;
 	size_t zcap;
@@ -512,54 +501,20 @@ static void web_request(struct web_sink *w, struct web_conn *c,
 
 /* ---- Tokens ------------------------------------------------------------ */
 
-static struct web_authfail *web_authfail_find(struct web_sink *w,
-					      const char *peer, bool make)
-{
-	struct web_authfail *old = &w->authfail[0];
-
-	for (unsigned int i = 0; i < WEB_AUTH_TABLE; i++) {
-		struct web_authfail *a = &w->authfail[i];
-
-		if (a->peer[0] && !strcmp(a->peer, peer))
-			return a;
-		if (a->last_ns < old->last_ns)
-			old = a;
-	}
-	if (!make)
-		return NULL;
-	memset(old, 0, sizeof(*old));
-	snprintf(old->peer, sizeof(old->peer), "%s", peer);
-	return old;
-}
-
 static bool web_token_ok(struct web_sink *w, struct web_conn *c,
 			 const uint8_t *p, size_t n)
 {
-	struct web_authfail *a = web_authfail_find(w, c->peer, false);
 	uint64_t now = web_now_ns();
-	int diff;
 
 	if (!w->have_token)
 		return true;
-	if (a && a->until_ns > now)
+	if (rdc_auth_locked(&w->auth, c->peer, now))
 		return false;
-	/* constant time: the token is a secret */
-	diff = n != w->token_len;
-	for (size_t i = 0; i < w->token_len; i++)
-		diff |= (i < n ? p[i] : 0) ^ w->token[i];
-	if (!diff) {
-		if (a)
-			memset(a, 0, sizeof(*a));
+	if (rdc_auth_token_equal(w->token, w->token_len, p, n)) {
+		rdc_auth_passed(&w->auth, c->peer);
 		return true;
 	}
-	a = web_authfail_find(w, c->peer, true);
-	a->last_ns = now;
-	if (++a->fails >= WEB_AUTH_FREE_FAILS) {
-		uint32_t sh = a->fails - WEB_AUTH_FREE_FAILS;
-		uint64_t s = sh >= 6 ? WEB_AUTH_BACKOFF_MAX_S : 1ull << sh;
-
-		a->until_ns = now + s * NS_PER_S;
-	}
+	rdc_auth_failed(&w->auth, c->peer, now);
 	return false;
 }
 
