@@ -63,6 +63,8 @@ static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
 	rdc_port_window_open(hw, w);
 }
 
+#define LINE_AHEAD 4 /* rows: see line_q32 */
+
 /*
  * q pixels of colour v2 (a pixel twice, VRAM byte order) from p: a span,
  * or (column) one pixel every `stride` bytes.  q is fixed for a line, so
@@ -75,8 +77,17 @@ static rdc_always_inline void line_q32(uint8_t *p, uint32_t q, uint64_t v2,
 	uint32_t len = q * 4, k;
 
 	if (column) {
-		for (k = 0; k < q; k++, p += stride)
+		/*
+		 * A column's pixels are a cache line each: ask for the line
+		 * LINE_AHEAD rows down while this one is stored.
+		 */
+		for (k = 0; k < q; k++, p += stride) {
 			rdc_memcpy(p, &v2, 4);
+			__builtin_prefetch(
+				(const void *)((uintptr_t)p +
+					       LINE_AHEAD * (uintptr_t)stride),
+				1);
+		}
 	} else if (q == 1) {
 		rdc_memcpy(p, &v2, 4);
 	} else if (q <= 4) {
@@ -95,29 +106,30 @@ static rdc_always_inline void line_q32(uint8_t *p, uint32_t q, uint64_t v2,
 }
 
 /*
- * rdc_bus_cost of bytes [a, a + len) written as RDC_BUS_WRITE (no
- * PARTIAL flags), for a and len multiples of 4 and a + len below 2^32,
- * miss0 the open row's miss (1 when it is not a's row): the same sum in
- * 32 bits with what those allow folded in.  A span of whole pixels
+ * rdc_bus_cost of the k pixels (4k bytes) from a written as RDC_BUS_WRITE
+ * (no PARTIAL flags), for a a multiple of 4 and a + 4k below 2^32, miss0
+ * the open row's miss (1 when it is not a's row): the same sum in 32 bits
+ * with what those allow folded in.  With two pixels a beat, the span's
+ * first beat is partial (head) when a is odd in pixels, its last (tail)
+ * when a + 4k is, and its beats are (k - tail + head) / 2 + tail; a span
  * within one beat has at most one partial edge, so the beats merged are
  * head + tail; both edges share a turnaround only within one burst.
  */
-_Static_assert(RDC_BUS_BYTES % 4 == 0 && RDC_BUS_BYTES > 4,
-	       "a 4-byte pixel is in one beat, and not a whole one");
+_Static_assert(RDC_BUS_BYTES == 8, "two 4-byte pixels a beat");
+_Static_assert((RDC_BUS_BURST_BYTES & (RDC_BUS_BURST_BYTES - 1)) == 0,
+	       "bursts a power of two bytes");
 
-static rdc_always_inline uint64_t span_cost32(uint32_t a, uint32_t len,
+static rdc_always_inline uint64_t span_cost32(uint32_t a, uint32_t k,
 					      uint32_t miss0)
 {
-	const uint32_t burst = (uint32_t)RDC_BUS_BURST_BYTES;
-	uint32_t e = a + len - 1;
-	uint32_t beats = e / RDC_BUS_BYTES - a / RDC_BUS_BYTES + 1;
+	uint32_t e = a + 4 * k - 1;
+	uint32_t head = a / 4 & 1, tail = head ^ (k & 1);
 	uint32_t misses =
 		e / RDC_DRAM_ROW_BYTES - a / RDC_DRAM_ROW_BYTES + miss0;
-	uint32_t head = a % RDC_BUS_BYTES != 0;
-	uint32_t tail = (e + 1) % RDC_BUS_BYTES != 0;
-	uint32_t turns = head + tail - (head & tail & (e / burst == a / burst));
+	uint32_t one_burst = (a ^ e) < RDC_BUS_BURST_BYTES;
+	uint32_t turns = head + tail - (head & tail & one_burst);
 
-	return (uint64_t)(beats + head + tail) * RDC_T_BEAT +
+	return (uint64_t)((k + 3 * (head + tail)) / 2) * RDC_T_BEAT +
 	       (uint64_t)misses * RDC_T_ROW_MISS + (uint64_t)turns * RDC_T_TURN;
 }
 
@@ -199,7 +211,7 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 	if (last)
 		k = ihi - run + 1;
 	if (xmajor)
-		cost = span_cost32(a, (uint32_t)k * 4,
+		cost = span_cost32(a, (uint32_t)k,
 				   a / RDC_DRAM_ROW_BYTES != row);
 	else
 		cost = (uint64_t)k * pp -
@@ -223,7 +235,7 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 		while (run < end) {
 			more = rem < 0;
 			k = q + more;
-			cost = span_cost32(a, (uint32_t)k * 4, 1);
+			cost = span_cost32(a, (uint32_t)k, 1);
 			if (cost > budget)
 				break;
 			budget -= cost;
@@ -259,7 +271,7 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 		last = run + k - 1 >= ihi;
 		if (last)
 			k = ihi - run + 1;
-		cost = xmajor ? span_cost32(a, (uint32_t)k * 4, 1) :
+		cost = xmajor ? span_cost32(a, (uint32_t)k, 1) :
 				(uint64_t)k * pp;
 		if (cost > budget)
 			break;
