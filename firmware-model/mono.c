@@ -186,8 +186,8 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 	r = (uint32_t)(ya - y);
 	rdc_port_window_open(hw, &w);
 	while (rows) {
-		done = rdc_port_window_rows(hw, &w, addr, n * 4, s->stride,
-					    rows);
+		done = rdc_port_window_rows_all(hw, &w, addr, n * 4, s->stride,
+						rows);
 		if (mono8) {
 			mono8_rows32(w.vram + addr, s->stride, rs, &t, r, bx,
 				     done);

@@ -121,9 +121,19 @@ uint32_t rdc_port_cmd_avail(struct rdc_hw *hw, unsigned int src)
 /* Commands are a few words: those by hand, not by a library call. */
 static inline void words_copy(uint32_t *d, const uint32_t *s, uint32_t n)
 {
-	if (n >= 8) {
+	if (n >= 32) {
 		rdc_memcpy(d, s, n * sizeof(*d));
 		return;
+	}
+	if (n & 16) {
+		rdc_memcpy(d, s, 16 * sizeof(*d));
+		d += 16;
+		s += 16;
+	}
+	if (n & 8) {
+		rdc_memcpy(d, s, 8 * sizeof(*d));
+		d += 8;
+		s += 8;
 	}
 	if (n & 4) {
 		rdc_memcpy(d, s, 4 * sizeof(*d));
