@@ -97,12 +97,25 @@ int rdc_batch_cmd(rdc_batch *b, uint32_t op, uint32_t flags,
 	return err;
 }
 
+/* rdc_batch_cmd for n <= 4 arguments, stored one by one (no memcpy call). */
 static int batch_args(rdc_batch *b, uint32_t op, size_t n, uint32_t a0,
 		      uint32_t a1, uint32_t a2, uint32_t a3)
 {
-	const uint32_t a[4] = { a0, a1, a2, a3 };
+	uint32_t *p;
+	int err;
 
-	return rdc_batch_cmd(b, op, 0, a, n);
+	p = batch_open(b, op, 0, n, &err);
+	if (!p)
+		return err;
+	if (n > 0)
+		p[0] = a0;
+	if (n > 1)
+		p[1] = a1;
+	if (n > 2)
+		p[2] = a2;
+	if (n > 3)
+		p[3] = a3;
+	return 0;
 }
 
 int rdc_batch_nop(rdc_batch *b)
