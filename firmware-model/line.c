@@ -377,7 +377,9 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 		if (m > 0 && !dp->hw->vram_hook && base % 4 == 0 &&
 		    stride % RDC_BUS_BYTES == 0 &&
 		    stride > RDC_DRAM_ROW_BYTES + RDC_BUS_BYTES) {
-			int64_t jz = dp_div_floor(2 * ihi * m + n, 2 * n);
+			int64_t jz =
+				ihi == n ? m : /* j(n) */
+					   dp_div_floor(2 * ihi * m + n, 2 * n);
 			int64_t va = v0 + sv * j, vz = v0 + sv * jz;
 			uint64_t lo = base + (uint64_t)(u0 + ilo) * umul +
 				      (uint64_t)RDC_MIN(va, vz) * vmul;
@@ -522,18 +524,26 @@ void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		/* j(i) >= jlo  <=>  i >= ceil((2n*jlo - n) / 2m) */
 		if (jlo > 0)
 			ilo = RDC_MAX(ilo, dp_div_ceil(2 * n * jlo - n, 2 * m));
-		/* j(i) <= jhi  <=>  2im < 2n(jhi + 1) - n */
-		ihi = RDC_MIN(ihi,
-			      dp_div_ceil(2 * n * (jhi + 1) - n, 2 * m) - 1);
+		/*
+		 * j(i) <= jhi  <=>  2im < 2n(jhi + 1) - n; no bound when
+		 * jhi >= m = j(n) (the line ends inside)
+		 */
+		if (jhi < m)
+			ihi = RDC_MIN(
+				ihi,
+				dp_div_ceil(2 * n * (jhi + 1) - n, 2 * m) - 1);
 	} else if (jlo > 0) {
 		return; /* j is always 0 */
 	}
 	if (ilo > ihi)
 		return;
 
-	if (n > 0) {
+	if (n > 0 && ilo > 0) {
 		j = dp_div_floor(2 * ilo * m + n, 2 * n);
 		rem = 2 * ilo * m + n - j * 2 * n;
+	} else if (n > 0) {
+		j = 0; /* j(0) */
+		rem = n;
 	} else {
 		j = 0;
 		rem = 0;
