@@ -56,15 +56,7 @@ static void get(rdc_history *h, size_t i, struct rdc_history_entry *e)
  */
 static void test_history_fill_xor_text(void **state)
 {
-	static const char scene[] = "mode 640x480 xrgb8888\n" /* 1 */
-				    "fg #ff0000\n"
-				    "fill 8 8 32 32\n" /* 3 */
-				    "rop xor\n"
-				    "fg #00ffff\n"
-				    "blit 8 8 12 10 16 16\n" /* 6 */
-				    "rop copy\n"
-				    "fg #ffffff\n"
-				    "text 12 10 \"A\"\n"; /* 9 */
+	static const char scene[] = HISTORY_SCENE;
 	struct rdc_history_entry e[3];
 	rdc_history *h = NULL;
 	rdc_dev *dev = open_sim();

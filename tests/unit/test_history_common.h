@@ -1,11 +1,23 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
- * What the pixel-history tests share: two entries compared field by field
- * (include after cmocka.h and rdc.h).
+ * What the pixel-history tests share: the scene of docs/history.md, and
+ * two entries compared field by field (include after cmocka.h and rdc.h).
  */
 #ifndef TEST_HISTORY_COMMON_H
 #define TEST_HISTORY_COMMON_H
+
+/* The fill / XOR blit / text scene of docs/history.md, lines 1 to 9. */
+#define HISTORY_SCENE \
+	"mode 640x480 xrgb8888\n" /* 1 */ \
+	"fg #ff0000\n" \
+	"fill 8 8 32 32\n" /* 3 */ \
+	"rop xor\n" \
+	"fg #00ffff\n" \
+	"blit 8 8 12 10 16 16\n" /* 6 */ \
+	"rop copy\n" \
+	"fg #ffffff\n" \
+	"text 12 10 \"A\"\n" /* 9 */
 
 /* Every field of two entries (not their padding). */
 static inline void assert_entry_equal(const struct rdc_history_entry *a,

@@ -23,26 +23,19 @@
 
 #include "rdc.h"
 #include "rdc_port.h"
+#include "test_history_common.h"
 #include "test_net_common.h"
 
 static const char *const args_stepped[] = { "--stepped", NULL };
 
 /* The docs/history.md scene, with a display list written to VRAM. */
-static const char scene[] = "mode 640x480 xrgb8888\n" /* 1 */
-			    "fg #ff0000\n"
-			    "fill 8 8 32 32\n" /* 3 */
-			    "rop xor\n"
-			    "fg #00ffff\n"
-			    "blit 8 8 12 10 16 16\n" /* 6 */
-			    "rop copy\n"
-			    "fg #ffffff\n"
-			    "text 12 10 \"A\"\n" /* 9 */
-			    "list 0x200000\n"
-			    "fg #2040ff\n"
-			    "fill-rect 100 100 40 30\n"
-			    "ret\n"
-			    "end\n"
-			    "call 0x200000\n"; /* 15 */
+static const char scene[] = HISTORY_SCENE /* lines 1 to 9 */
+	"list 0x200000\n"
+	"fg #2040ff\n"
+	"fill-rect 100 100 40 30\n"
+	"ret\n"
+	"end\n"
+	"call 0x200000\n"; /* 15 */
 /* The same with line 9's text changed. */
 static const char scene_b[] = "mode 640x480 xrgb8888\n"
 			      "fg #ff0000\n"

@@ -23,15 +23,7 @@
 static const char *const args_stepped[] = { "--stepped", NULL };
 
 /* The fill / XOR blit / text scene of docs/history.md. */
-static const char scene[] = "mode 640x480 xrgb8888\n" /* 1 */
-			    "fg #ff0000\n"
-			    "fill 8 8 32 32\n" /* 3 */
-			    "rop xor\n"
-			    "fg #00ffff\n"
-			    "blit 8 8 12 10 16 16\n" /* 6 */
-			    "rop copy\n"
-			    "fg #ffffff\n"
-			    "text 12 10 \"A\"\n"; /* 9 */
+static const char scene[] = HISTORY_SCENE;
 
 static void run_text(rdc_dev *dev, const char *text)
 {
