@@ -599,6 +599,17 @@ uint32_t dp_cmd_stroke(struct rdc_dp *dp, uint32_t op, uint32_t len,
 
 	if (len < 2)
 		return RDC_ERR_LENGTH;
+	if (op == RDC_OP_LINE && len == 2 && dp_pen_plain(dp) &&
+	    !dp->pen_npieces) {
+		/* what the stroke below comes to: one whole segment */
+		int32_t x0 = RDC_X(a[0]), y0 = RDC_Y(a[0]);
+		int32_t x1 = RDC_X(a[1]), y1 = RDC_Y(a[1]);
+
+		if (!dp_xform(dp, &x0, &y0) || !dp_xform(dp, &x1, &y1))
+			return RDC_ERR_RANGE;
+		rdc_dp_line(dp, x0, y0, x1, y1, false, false);
+		return RDC_ERR_NONE;
+	}
 	if (!pts_ok(dp, a, len))
 		return RDC_ERR_RANGE;
 	dp_stroke_begin(&sk, dp);
