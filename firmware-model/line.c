@@ -36,20 +36,15 @@ void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
  * the perf count not yet added, added before any port call that could
  * let someone look at it.
  */
-static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
-			    const struct rdc_port_run *r, const uint8_t *pair,
-			    uint64_t *pixels)
+static rdc_noinline void line_run_port(struct rdc_dp *dp,
+				       struct rdc_port_window *w,
+				       const struct rdc_port_run *r,
+				       uint64_t *pixels)
 {
 	struct rdc_hw *hw = dp->hw;
 	uint32_t stride = dp->st.dst.stride;
 	uint8_t *p;
 
-	if (r->count == 1 ? rdc_port_window_span(hw, w, r->addr, r->len) :
-			    rdc_port_window_column(hw, w, r, stride)) {
-		*pixels += run_store32(w->vram + r->addr, r, stride, pair,
-				       rdc_ld32(pair));
-		return;
-	}
 	rdc_port_window_close(hw, w);
 	hw->perf.pixels += *pixels;
 	*pixels = 0;
@@ -61,6 +56,47 @@ static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
 	if (p)
 		dp_run_write(dp, p, r, dp->st.fg);
 	rdc_port_window_open(hw, w);
+}
+
+static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
+			    const struct rdc_port_run *r, const uint8_t *pair,
+			    uint64_t *pixels)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint32_t stride = dp->st.dst.stride;
+
+	if (r->count == 1 ? rdc_port_window_span(hw, w, r->addr, r->len) :
+			    rdc_port_window_column(hw, w, r, stride)) {
+		*pixels += run_store32(w->vram + r->addr, r, stride, pair,
+				       rdc_ld32(pair));
+		return;
+	}
+	line_run_port(dp, w, r, pixels);
+}
+
+/*
+ * A middle run of k steps at a that line_fast's window refuses (a
+ * scanout event falls in it): line_run's port path for it, as
+ * rdc_dp_line_steps' loop would take it, t and row the window's as the
+ * runs before left them.  True when line_fast may go on in the window
+ * reopened after it: open, not past its limit, and the open row the one
+ * the run ended in (no fetch in between), so that the next run starts
+ * with a row miss as line_fast's loops take it.
+ */
+static rdc_noinline bool line_cut(struct rdc_dp *dp, struct rdc_port_window *w,
+				  uint32_t a, uint32_t k, bool xmajor,
+				  uint64_t *pixels)
+{
+	uint32_t stride = dp->st.dst.stride;
+	struct rdc_port_run r = {
+		.addr = a,
+		.len = xmajor ? 4 * k : 4,
+		.count = xmajor ? 1 : k,
+	};
+	uint32_t last = xmajor ? a + 4 * k - 1 : a + (k - 1) * stride;
+
+	line_run_port(dp, w, &r, pixels);
+	return w->open && w->t <= w->lim && w->row == last / RDC_DRAM_ROW_BYTES;
 }
 
 #define LINE_AHEAD 4 /* rows: see line_q32 */
@@ -180,7 +216,8 @@ static rdc_always_inline void line_put(uint8_t *p, uint32_t q, bool more,
  * before the limit rather than the time and the limit, rem less rr, and j
  * found again at the end from rem (rem = 2m * run + n - 2n * j all along).
  */
-static rdc_always_inline void line_fast(struct rdc_port_window *w,
+static rdc_always_inline void line_fast(struct rdc_dp *dp,
+					struct rdc_port_window *w,
 					const struct line_fixed *f, bool xmajor,
 					int64_t ihi, int64_t n, int64_t m,
 					struct line_pos *pos, uint64_t *pixels)
@@ -191,9 +228,9 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 	const uint64_t v2 = f->v2, pp = f->one + RDC_T_ROW_MISS;
 	const int64_t rr = f->rr, d0 = f->d0, d1 = f->d1, end = ihi - q;
 	uint8_t *const vram = f->vram;
-	const int64_t run0 = pos->run;
+	int64_t run0 = pos->run;
 	int64_t run = run0, rem = pos->rem, run1, k;
-	uint64_t budget = f->lim - w->t, cost;
+	uint64_t lim = f->lim, budget = lim - w->t, cost;
 	uint32_t a = pos->addr, row = w->row;
 	uint8_t scratch[4];
 	bool more, last;
@@ -236,8 +273,23 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 			more = rem < 0;
 			k = q + more;
 			cost = span_cost32(a, (uint32_t)k, 1);
-			if (cost > budget)
-				break;
+			if (cost > budget) {
+				/* the run an event falls in, and on after it */
+				w->t = lim - budget;
+				w->row = (a - vstep - 1) / RDC_DRAM_ROW_BYTES;
+				*pixels += (uint64_t)(run - run0);
+				more = line_cut(dp, w, a, (uint32_t)k, true,
+						pixels);
+				rem += k > q ? d1 : d0;
+				run += k;
+				a += k > q ? step1 : step0;
+				run0 = run;
+				if (!more)
+					goto cut;
+				lim = w->lim;
+				budget = lim - w->t;
+				continue;
+			}
 			budget -= cost;
 			line_put(vram + a, q, more, v2, false, 4, scratch);
 			rem += more ? d1 : d0;
@@ -254,8 +306,30 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 		while (run < end) {
 			more = rem < 0;
 			k = q + more;
-			if (run + k > runmax)
-				break;
+			if (run + k > runmax) {
+				/* the run an event falls in, and on after it */
+				budget -= pp * (uint64_t)(run - run1);
+				w->t = lim - budget;
+				w->row =
+					(a - vstep - umul) / RDC_DRAM_ROW_BYTES;
+				*pixels += (uint64_t)(run - run0);
+				more = line_cut(dp, w, a, (uint32_t)k, false,
+						pixels);
+				rem += k > q ? d1 : d0;
+				run += k;
+				a += k > q ? step1 : step0;
+				run0 = run;
+				if (!more)
+					goto cut;
+				lim = w->lim;
+				budget = lim - w->t;
+				run1 = run;
+				left = budget / pp;
+				runmax = left > (uint64_t)(ihi - run) ?
+						 ihi + 1 :
+						 run + (int64_t)left;
+				continue;
+			}
 			line_put(vram + a, q, more, v2, true, umul, scratch);
 			rem += more ? d1 : d0;
 			run += k;
@@ -291,27 +365,36 @@ static rdc_always_inline void line_fast(struct rdc_port_window *w,
 	pos->j = (2 * m * run + n - pos->rem) / (2 * n);
 	pos->addr = a;
 out:
-	w->t = f->lim - budget;
+	w->t = lim - budget;
 	w->row = row;
 	pos->run = run;
 	*pixels += (uint64_t)(run - run0);
+	return;
+cut:
+	/* stopped after a cut: the window is as line_cut left it */
+	pos->rem = rem + rr;
+	pos->j = (2 * m * run + n - pos->rem) / (2 * n);
+	pos->addr = a;
+	pos->run = run;
 }
 
 /* line_fast for each axis, out of line: its loop keeps its registers. */
-static rdc_noinline void line_fast_x(struct rdc_port_window *w,
+static rdc_noinline void line_fast_x(struct rdc_dp *dp,
+				     struct rdc_port_window *w,
 				     const struct line_fixed *f, int64_t ihi,
 				     int64_t n, int64_t m, struct line_pos *pos,
 				     uint64_t *pixels)
 {
-	line_fast(w, f, true, ihi, n, m, pos, pixels);
+	line_fast(dp, w, f, true, ihi, n, m, pos, pixels);
 }
 
-static rdc_noinline void line_fast_y(struct rdc_port_window *w,
+static rdc_noinline void line_fast_y(struct rdc_dp *dp,
+				     struct rdc_port_window *w,
 				     const struct line_fixed *f, int64_t ihi,
 				     int64_t n, int64_t m, struct line_pos *pos,
 				     uint64_t *pixels)
 {
-	line_fast(w, f, false, ihi, n, m, pos, pixels);
+	line_fast(dp, w, f, false, ihi, n, m, pos, pixels);
 }
 
 /*
@@ -420,9 +503,11 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 			};
 
 			if (xmajor)
-				line_fast_x(&w, &f, ihi, n, m, &pos, &pixels);
+				line_fast_x(dp, &w, &f, ihi, n, m, &pos,
+					    &pixels);
 			else
-				line_fast_y(&w, &f, ihi, n, m, &pos, &pixels);
+				line_fast_y(dp, &w, &f, ihi, n, m, &pos,
+					    &pixels);
 			if (pos.run > ihi)
 				break;
 			i = pos.run;
