@@ -72,9 +72,9 @@ unshare -m sh -e -c '
 		n=${m%%:*}
 		d=${m#*:}
 		[ -d "$d" ] || { echo "dkms.sh: $d does not exist" >&2; exit 1; }
-		mkdir -p "$out/upper/$n" "$out/work/$n"
+		mkdir -p "$out/upper/$n" "$out/scratch/$n"
 		mount -t overlay overlay \
-			-o "lowerdir=$d,upperdir=$out/upper/$n,workdir=$out/work/$n" "$d"
+			-o "lowerdir=$d,upperdir=$out/upper/$n,workdir=$out/scratch/$n" "$d"
 	done
 	dkms add "$src"
 	dkms build -m rdcfb -v "$ver" -k "$kver" -j 2
@@ -82,7 +82,7 @@ unshare -m sh -e -c '
 	dkms status -m rdcfb -v "$ver" -k "$kver"
 ' dkms "$out" "$kver" "$src" "$ver" >"$out/dkms.log" 2>&1 ||
 	{ tail -n 30 "$out/dkms.log" >&2; exit 1; }
-# the work directories are overlayfs's own, not to be shared
-rm -rf "$out/work"
+# overlayfs's scratch directories (workdir=), not to be shared
+rm -rf "$out/scratch"
 printf '%s\n' "${RDC_DKMS_DEB:-tree}" >"$out/from"
 touch "$stamp"
