@@ -77,10 +77,17 @@ static void test_table_full(void **state)
 	rdc_auth_failed(&a, "new", 20 * S);
 	assert_false(rdc_auth_locked(&a, "old", 10 * S));
 	assert_true(rdc_auth_locked(&a, "p1", 10 * S + 1));
-	/* a long address is cut to the table's width, not overrun */
-	memset(peer, 'x', sizeof(peer) - 1);
-	peer[sizeof(peer) - 1] = 0;
-	rdc_auth_failed(&a, peer, 30 * S);
+	/* a long address is kept cut to the table's width (not overrun)
+	 * and still found: it backs off like any other */
+	{
+		char lng[2 * RDC_AUTH_PEER_MAX];
+
+		memset(lng, 'x', sizeof(lng) - 1);
+		lng[sizeof(lng) - 1] = 0;
+		for (int k = 0; k < RDC_AUTH_FREE_FAILS; k++)
+			rdc_auth_failed(&a, lng, 30 * S);
+		assert_true(rdc_auth_locked(&a, lng, 30 * S));
+	}
 }
 
 static void test_token_equal(void **state)

@@ -7,6 +7,8 @@
 #ifndef TEST_HISTORY_COMMON_H
 #define TEST_HISTORY_COMMON_H
 
+#include <string.h>
+
 /* The fill / XOR blit / text scene of docs/history.md, lines 1 to 9. */
 #define HISTORY_SCENE \
 	"mode 640x480 xrgb8888\n" /* 1 */ \
@@ -45,6 +47,26 @@ static inline void assert_entry_equal(const struct rdc_history_entry *a,
 	assert_int_equal(a->pattern, b->pattern);
 	assert_int_equal(a->fg, b->fg);
 	assert_int_equal(a->bg, b->bg);
+}
+
+/* Runs an .rdl text on dev; it must succeed (the error is printed).  The
+ * result goes to *out if out is not NULL. */
+static inline void history_script_res(rdc_dev *dev, const char *text,
+				      struct rdc_script_result *out)
+{
+	struct rdc_script_result mine, *res = out ? out : &mine;
+	int ret;
+
+	memset(res, 0, sizeof(*res));
+	ret = rdc_script_run(dev, text, strlen(text), res);
+	if (ret)
+		print_error("line %u: %s\n", res->error_line, res->error_msg);
+	assert_int_equal(ret, 0);
+}
+
+static inline void history_script(rdc_dev *dev, const char *text)
+{
+	history_script_res(dev, text, NULL);
 }
 
 #endif

@@ -79,13 +79,8 @@ static uint32_t run_text(rdc_dev *dev, const char *text)
 {
 	struct rdc_script_result res;
 	uint32_t crc = 0;
-	int ret;
 
-	memset(&res, 0, sizeof(res));
-	ret = rdc_script_run(dev, text, strlen(text), &res);
-	if (ret)
-		print_error("line %u: %s\n", res.error_line, res.error_msg);
-	assert_int_equal(ret, 0);
+	history_script_res(dev, text, &res);
 	assert_int_equal(rdc_script_frame_wait(dev, &res), 0);
 	assert_int_equal(rdc_frame_crc(dev, &crc), 0);
 	return crc;

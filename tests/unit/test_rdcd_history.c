@@ -25,18 +25,6 @@ static const char *const args_stepped[] = { "--stepped", NULL };
 /* The fill / XOR blit / text scene of docs/history.md. */
 static const char scene[] = HISTORY_SCENE;
 
-static void run_text(rdc_dev *dev, const char *text)
-{
-	struct rdc_script_result res;
-	int ret;
-
-	memset(&res, 0, sizeof(res));
-	ret = rdc_script_run(dev, text, strlen(text), &res);
-	if (ret)
-		print_error("line %u: %s\n", res.error_line, res.error_msg);
-	assert_int_equal(ret, 0);
-}
-
 static void start(struct netd *d, const char *const *args)
 {
 	if (netd_start(d, args)) {
@@ -61,7 +49,7 @@ static size_t history_of(const char *uri, const char *text, uint32_t x,
 
 	assert_int_equal(rdc_open(uri, &dev), 0);
 	assert_int_equal(rdc_history_open(dev, x, y, w, h, 0, &hist), 0);
-	run_text(dev, text);
+	history_script(dev, text);
 	assert_int_equal(rdc_finish(dev), 0);
 	assert_int_equal(rdc_sim_time(dev, time), 0);
 	n = rdc_history_count(hist);
@@ -156,7 +144,7 @@ static void test_rdcd_history_pages(void **state)
 	assert_int_equal(rdc_history_open(dev, 0, 0, RDC_HISTORY_SCREEN,
 					  RDC_HISTORY_SCREEN, 0, &h),
 			 0);
-	run_text(dev, fill);
+	history_script(dev, fill);
 	assert_int_equal(rdc_finish(dev), 0);
 	assert_int_equal(rdc_history_count(h), want);
 	/* every pixel once, row by row, black to the colour, line 3 */
@@ -196,7 +184,7 @@ static void test_rdcd_history_pages(void **state)
 					   sizeof(b), NULL, 0),
 				 RDC_ST_OK);
 	}
-	run_text(dev, "fg #654321\nfill 0 0 640 480\n");
+	history_script(dev, "fg #654321\nfill 0 0 640 480\n");
 	assert_int_equal(rdc_finish(dev), 0);
 	for (size_t k = 0; k < RDC_ARRAY_SIZE(asks); k++) {
 		struct rdc_proto_hist_page pg;
@@ -256,7 +244,7 @@ static void test_rdcd_history_pages(void **state)
 		assert_int_equal(
 			netd_send(fd, RDC_MSG_HIST_READ, 100 + k, b, 12), 0);
 	}
-	run_text(dev, "fill 0 0 4 4\n");
+	history_script(dev, "fill 0 0 4 4\n");
 	assert_int_equal(rdc_finish(dev), 0);
 	for (uint32_t k = 0; k < 40; k++) {
 		assert_int_equal(netd_reply(fd, &hdr, NULL, 0), 0);
@@ -308,7 +296,7 @@ static void test_rdcd_history_busy(void **state)
 	assert_int_equal(rdc_history_set_limit(h1, 10), 0);
 	assert_int_equal(rdc_history_set_limit(h1, (size_t)1 << 30),
 			 RDC_E_RANGE);
-	run_text(a, "mode 640x480 xrgb8888\nfill 0 0 8 8\n");
+	history_script(a, "mode 640x480 xrgb8888\nfill 0 0 8 8\n");
 	assert_int_equal(rdc_finish(a), 0);
 	assert_int_equal(rdc_history_count(h1), 10);
 	assert_int_equal(rdc_history_dropped(h1), 54);
@@ -358,8 +346,8 @@ static void test_rdcd_history_malformed(void **state)
 	start(&d, args_stepped);
 	assert_int_equal(rdc_open(d.unix_uri, &s.dev), 0);
 	assert_int_equal(rdc_history_open(s.dev, 8, 8, 4, 4, 0, &s.h), 0);
-	run_text(s.dev, "mode 640x480 xrgb8888\nfg #ff0000\n"
-			"fill 0 0 64 64\n");
+	history_script(s.dev, "mode 640x480 xrgb8888\nfg #ff0000\n"
+			      "fill 0 0 64 64\n");
 	assert_int_equal(rdc_finish(s.dev), 0);
 	assert_served(&s);
 
@@ -439,7 +427,7 @@ static void test_rdcd_history_malformed(void **state)
 	assert_int_equal(netd_call(fd, RDC_MSG_HIST_END, 25, NULL, 0, NULL, 0),
 			 RDC_ST_OK);
 	assert_int_equal(rdc_history_open(s.dev, 8, 8, 4, 4, 0, &s.h), 0);
-	run_text(s.dev, "fill 0 0 64 64\n");
+	history_script(s.dev, "fill 0 0 64 64\n");
 	assert_int_equal(rdc_finish(s.dev), 0);
 	assert_served(&s);
 
@@ -503,7 +491,7 @@ static void test_rdcd_history_client_dies(void **state)
 	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
 	assert_int_equal(rdc_history_open(dev, 0, 0, 1, 1, 0, &h), RDC_E_BUSY);
 	/* a screenful of entries waiting for it */
-	run_text(dev, "mode 640x480 xrgb8888\nfill 0 0 640 480\n");
+	history_script(dev, "mode 640x480 xrgb8888\nfill 0 0 640 480\n");
 	assert_int_equal(rdc_finish(dev), 0);
 	close(fd);
 	for (int i = 0; i < NETD_IO_MS / 10 && ret == RDC_E_BUSY; i++) {
@@ -513,7 +501,7 @@ static void test_rdcd_history_client_dies(void **state)
 	}
 	assert_int_equal(ret, 0);
 	assert_true(netd_log_has(&d, "its pixel history closed with it"));
-	run_text(dev, "fill 0 0 1 1\n");
+	history_script(dev, "fill 0 0 1 1\n");
 	assert_int_equal(rdc_history_count(h), 1);
 	rdc_history_close(h);
 	rdc_close(dev);
@@ -570,7 +558,7 @@ static void test_rdcd_history_record_power(void **state)
 	ns = history_of("sim:", scene, 14, 12, 1, 1, &es, &ts);
 	assert_int_equal(ns, 3);
 	assert_int_equal(rdc_open(d.unix_uri, &dev), 0);
-	run_text(dev, scene);
+	history_script(dev, scene);
 	assert_int_equal(rdc_finish(dev), 0);
 	rdc_close(dev);
 	rdc_proto_put64(b, 0);

@@ -20,11 +20,14 @@ bool rdc_auth_token_equal(const uint8_t *want, size_t len, const uint8_t *got,
 	return !diff;
 }
 
+/* An address longer than the table's width is known by its first
+ * RDC_AUTH_PEER_MAX - 1 characters, as it is kept. */
 static struct rdc_auth_peer *auth_find(const struct rdc_auth *a,
 				       const char *peer)
 {
 	for (unsigned int i = 0; i < RDC_AUTH_TABLE; i++)
-		if (a->t[i].peer[0] && !strcmp(a->t[i].peer, peer))
+		if (a->t[i].peer[0] &&
+		    !strncmp(a->t[i].peer, peer, RDC_AUTH_PEER_MAX - 1))
 			return (struct rdc_auth_peer *)&a->t[i];
 	return NULL;
 }
