@@ -107,7 +107,7 @@ help:
 	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
 	@echo "make bench-usb    the same over USB against the socket, in the VM (figures only)"
 	@echo "make bench-stream-vm  rdcctl stream at 1920x1080 into v4l2loopback, in the VM (figures only)"
-	@echo "make fuzz         short libFuzzer runs: protocol codec, USB framing, rdcd, .rdl"
+	@echo "make fuzz         short libFuzzer runs: protocol codec, USB framing, rdcd, .rdl, traces"
 	@echo "make fuzz-long    the same targets, ten minutes in all (FUZZ_LONG_TIME s each)"
 	@echo "make fuzz-cov     line coverage per file of the fuzz corpora (llvm-14)"
 	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/* (RDC_VM_KERNEL=)"
@@ -424,8 +424,9 @@ bench-stream-vm: $(O)/rel/stream-bench $(O)/rel/rdcctl $(O)/rel/v4l2_read
 #   fuzz_rdcd    rdcd's request handling, several clients (rdcd/serve.c)
 #   fuzz_script  the .rdl interpreter on a sim: device (lib/script*.c)
 #   fuzz_web     the web sink's HTTP and WebSocket parsers (sink/web_proto.c)
+#   fuzz_trace   trace replay (lib/record.c: rdcctl replay, why, diff)
 # `make fuzz` is the short run `make check` does (fuzz_proto, fuzz_usb and
-# fuzz_web a million inputs each, fuzz_rdcd and fuzz_script FUZZ_TIME
+# fuzz_web a million inputs each, fuzz_rdcd, fuzz_script and fuzz_trace FUZZ_TIME
 # seconds each from their
 # seeds in tests/fuzz/seeds/); `make fuzz-long` gives each target
 # FUZZ_LONG_TIME seconds (150: ten minutes in all) and keeps its corpus in
@@ -439,7 +440,7 @@ FUZZ_CFLAGS := -std=gnu11 -g -O1 -fsanitize=fuzzer $(FUZZ_INSTR) $(INC) \
 FUZZ_RUNS ?= 1000000
 FUZZ_TIME ?= 15
 FUZZ_LONG_TIME ?= 150
-FUZZ_TARGETS := proto usb rdcd script web
+FUZZ_TARGETS := proto usb rdcd script web trace
 FUZZ_BINS := $(patsubst %,$(FUZZ_DIR)/fuzz_%,$(FUZZ_TARGETS))
 $(FUZZ_DIR)/fuzz_proto: tests/fuzz/fuzz_proto.c userspace/lib/proto.c \
 		userspace/include/rdc_proto.h
@@ -498,6 +499,11 @@ $(FUZZ_DIR)/fuzz_script: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_script.o \
 		-Wl,--wrap=rdc_png_write,--wrap=rdc_sim_step \
 		-Wl,--wrap=rdc_sim_run_until,--wrap=rdc_hw_wait_begin \
 		-Wl,--wrap=fopen $^ $(LIBS) -o $@
+$(FUZZ_DIR)/fuzz_trace: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_trace.o \
+		$(FUZZ_ALLOC) $(FUZZ_DIR)/librdc.a
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_WRAP_ALLOC) \
+		-Wl,--wrap=rdc_hw_run_until,--wrap=rdc_hw_wait_begin \
+		$^ $(LIBS) -o $@
 
 fuzz-bins: $(FUZZ_BINS)
 
@@ -507,16 +513,17 @@ fuzz-bins: $(FUZZ_BINS)
 FUZZ_SEEDS = case $$t in \
 	rdcd) seeds=tests/fuzz/seeds/rdcd;; \
 	script) seeds="tests/fuzz/seeds/script examples tests/golden/scenes";; \
+	trace) seeds=tests/fuzz/seeds/trace;; \
 	*) seeds=;; esac
 
-# fuzz_rdcd and fuzz_script start from their seeds each time (a fresh
+# fuzz_rdcd, fuzz_script and fuzz_trace start from their seeds each time (a fresh
 # $(FUZZ_DIR)/short-NAME, so a run does not depend on the last one).
 fuzz: $(FUZZ_BINS)
 	$(FUZZ_DIR)/fuzz_proto -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
 	$(FUZZ_DIR)/fuzz_usb -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
 	$(FUZZ_DIR)/fuzz_web -runs=$(FUZZ_RUNS) -max_len=16384 -seed=1 \
 		-dict=tests/fuzz/web.dict
-	@for t in rdcd script; do \
+	@for t in rdcd script trace; do \
 		rm -rf $(FUZZ_DIR)/short-$$t && mkdir -p $(FUZZ_DIR)/short-$$t; \
 		dict=; [ -f tests/fuzz/$$t.dict ] && dict=-dict=tests/fuzz/$$t.dict; \
 		cmd="$(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_TIME) -seed=1"; \
@@ -548,7 +555,8 @@ LLVM_PROFDATA ?= llvm-profdata-14
 LLVM_COV ?= llvm-cov-14
 FUZZ_COV_DIR := $(O)/fuzz-cov
 FUZZ_COV_FILES := userspace/lib/proto.c userspace/lib/usb_host.c \
-	userspace/rdcd/serve.c $(sort $(wildcard userspace/lib/script*.c))
+	userspace/rdcd/serve.c userspace/lib/record.c \
+	$(sort $(wildcard userspace/lib/script*.c))
 fuzz-cov:
 	@command -v $(LLVM_COV) >/dev/null && command -v $(LLVM_PROFDATA) \
 		>/dev/null || { echo "fuzz-cov: $(LLVM_COV) or $(LLVM_PROFDATA)" \
