@@ -452,13 +452,14 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 		rdc_st32(pair + 4, fg);
 		rdc_port_window_open(dp->hw, &w);
 		/*
-		 * line_fast for the middle runs: without a VRAM watcher (it
+		 * line_fast for the middle runs: not on the reference paths
+		 * (test_perf_paths), without a VRAM watcher (it
 		 * sees each run as rdc_port_window_span / _column does), with
 		 * every pixel 4-byte aligned (a column's in one beat) and the
 		 * line's bounding box in VRAM (no run refused for its address).
 		 */
-		if (m > 0 && !dp->hw->vram_hook && base % 4 == 0 &&
-		    stride % RDC_BUS_BYTES == 0 &&
+		if (m > 0 && !dp->hw->vram_hook && !dp->ref_paths &&
+		    base % 4 == 0 && stride % RDC_BUS_BYTES == 0 &&
 		    stride > RDC_DRAM_ROW_BYTES + RDC_BUS_BYTES) {
 			int64_t jz =
 				ihi == n ? m : /* j(n) */

@@ -131,9 +131,21 @@ static void tp_random_dst(struct tp_pair *p, uint32_t *seed, uint32_t op)
 		s.base = (1u << 20) + (uint32_t)tdp_range(seed, 0, 3) *
 					      (tdp_rand(seed) % 2 ? 1 : 4);
 	}
-	/* rows whole DRAM rows apart: filled rectangles' closed form */
-	if (s.format == RDC_FMT_XRGB8888 && tdp_rand(seed) % 2)
-		s.stride = RDC_DRAM_ROW_BYTES * (s.width * 4 > 2048 ? 2 : 1);
+	/* rows whole DRAM rows apart: filled rectangles' closed form; rows
+	 * more than a DRAM row apart (a 640-pixel screen's): lines' */
+	if (s.format == RDC_FMT_XRGB8888) {
+		switch (tdp_rand(seed) % 3) {
+		case 0:
+			s.stride = RDC_DRAM_ROW_BYTES *
+				   (s.width * 4 > 2048 ? 2 : 1);
+			break;
+		case 1:
+			s.stride = 640 * 4;
+			break;
+		default:
+			break;
+		}
+	}
 	tdp_set_surface(p->c[0], op, &s);
 	tdp_set_surface(p->c[1], op, &s);
 }
