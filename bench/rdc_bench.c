@@ -9,9 +9,9 @@
  *   rdc-bench [-w WORKLOAD[,WORKLOAD...]] [-r REPEATS] [--json] [--peers]
  *             [--full]
  *
- * Every drawing workload runs twice: with scanout on, against limits that
- * also convert the frames the chip scanned out meanwhile, and with
- * CONTROL.SCANOUT_EN = 0, against the plain limits.  `-w growth` times
+ * Every drawing workload runs twice: with scanout on, against limits and
+ * peers that also convert the frames the chip scanned out meanwhile, and
+ * with CONTROL.SCANOUT_EN = 0, against the plain limits and peers.  `-w growth` times
  * fill, blit and flood fill against area on a 4096x4096 surface.
  *
  * One JSON object a workload on stdout, the workloads' keys first, then
@@ -59,7 +59,8 @@
  * the chip scanned out meanwhile; scanout (the workload) against its
  * lookup.  Scanout off: fill, blit and blit_xor against the plain limit,
  * text against the bit expand.  line wants SDL2_gfx's rate or better, the
- * other shapes the best peer's.
+ * other shapes the best peer's: with scanout on, the peers' with the same
+ * frame conversions ("+scan").
  */
 #define TARGET_SCAN	0.7
 #define TARGET_OFF	0.8
@@ -1185,6 +1186,7 @@ struct figure {
 	bool slow; /* repeats cut short: see SLOW_S */
 	bool done;
 	uint32_t frame_crc; /* a limit with scanout: its last frame's */
+	uint64_t frames;    /* a peer with scanout: the frames it converts */
 };
 
 struct opts {
@@ -1332,6 +1334,41 @@ static double peer_one(void *ctx, uint32_t ops, uint32_t *crc)
 	return c->peer->run(c->in, ops, crc);
 }
 
+/*
+ * A peer with scanout: the peer's drawing, then as many frame conversions
+ * as rdc's scanout made for the pixels the peer drew (a peer may draw a
+ * prefix: the frames are prorated by pixels).  The conversions read a
+ * surface of the peer's size that was written before (the peer keeps its
+ * own), so they cost what the limits' do.
+ */
+struct peer_scan_ctx {
+	const struct bench_input *in;
+	const struct bench_peer *peer;
+	const struct rdc_ctx *scan; /* rdc's frame count */
+	struct figure *fig;
+};
+
+static double peer_scan_one(void *ctx, uint32_t ops, uint32_t *crc)
+{
+	struct peer_scan_ctx *c = ctx;
+	double t = c->peer->run(c->in, ops, crc), cpu, cpu2;
+	uint32_t *s, fcrc;
+
+	if (t < 0)
+		return t;
+	cpu = bench_cpu();
+	c->fig->frames =
+		(uint64_t)((double)c->scan->frames * (double)c->fig->pixels /
+				   (double)c->in->pixels +
+			   0.5);
+	s = xcalloc((size_t)BENCH_W * BENCH_H, 4);
+	memset(s, 0x5a, (size_t)BENCH_W * BENCH_H * 4);
+	t += scan_frames(s, c->fig->frames, &cpu2, &fcrc);
+	toc_cpu = cpu + cpu2;
+	free(s);
+	return t;
+}
+
 /* How much of the workload a peer draws: see PEER_BUDGET_S. */
 static uint32_t peer_ops(const struct bench_input *in,
 			 const struct bench_peer *peer, const struct opts *o)
@@ -1361,6 +1398,9 @@ struct way {
 	bool crc_ok, cycles_ok;
 	double vs_limit, vs_peer; /* 0: none measured */
 	const char *best_limit, *best_peer;
+	/* scanout on: against the peers without their scanout */
+	double vs_peer_plain;
+	const char *best_peer_plain;
 	double target;	       /* the ratio wanted; 0: none */
 	const char *target_of; /* against what */
 	double vs_target;
@@ -1374,7 +1414,8 @@ struct result {
 	struct figure lim[MAX_LIMITS];
 	struct figure lim_scan[MAX_LIMITS];
 	struct figure peer[NPEERS + 1];
-	struct way on, off; /* off: drawing workloads only */
+	struct figure peer_scan[NPEERS + 1]; /* drawing workloads */
+	struct way on, off;		     /* off: drawing workloads only */
 	uint64_t frames;    /* scanned out during the drawing (scanout on) */
 	uint32_t frame_crc; /* rdc's frame after the drawing */
 	bool frame_crc_ok;  /* every limit with scanout made the same frame */
@@ -1435,6 +1476,9 @@ static void print_figures(const char *key, const struct figure *f, size_t n,
 		if (f == res->lim_scan)
 			printf(",\"frames\":%llu,\"frame_crc32\":\"%08x\"",
 			       (unsigned long long)res->frames, f[i].frame_crc);
+		if (f == res->peer_scan)
+			printf(",\"frames\":%llu",
+			       (unsigned long long)f[i].frames);
 		printf("}");
 		first = false;
 	}
@@ -1469,6 +1513,9 @@ static void print_target(const struct way *w)
 	if (w->best_peer)
 		printf(",\"vs_peer\":%.3f,\"best_peer\":\"%s\"", w->vs_peer,
 		       w->best_peer);
+	if (w->best_peer_plain)
+		printf(",\"vs_peer_plain\":%.3f,\"best_peer_plain\":\"%s\"",
+		       w->vs_peer_plain, w->best_peer_plain);
 	if (w->target > 0)
 		printf(",\"target\":%.1f,\"target_of\":\"%s\","
 		       "\"vs_target\":%.3f",
@@ -1520,8 +1567,12 @@ static void print_json(const struct result *res)
 		printf(",\"frame_crc_ok\":%s",
 		       res->frame_crc_ok ? "true" : "false");
 	}
-	if (res->on.best_peer)
+	if (res->on.best_peer) {
 		print_figures("peers", res->peer, NPEERS + 1, res);
+		if (drawing(res->kind))
+			print_figures("peers_scan", res->peer_scan, NPEERS + 1,
+				      res);
+	}
 	if (realtime(res->kind) || res->kind == BENCH_TEAPOT3D)
 		printf(",\"met\":%s", res->on.met ? "true" : "false");
 	else
@@ -1617,7 +1668,7 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 	       "drawn");
 	for (i = 0; i < n; i++) {
 		const struct result *r = &res[i];
-		const struct figure *all[2 + 2 * MAX_LIMITS + NPEERS];
+		const struct figure *all[2 + 2 * MAX_LIMITS + 2 * NPEERS];
 		size_t m = 0;
 
 		all[m++] = &r->rdc;
@@ -1632,6 +1683,9 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 		for (k = 0; peers[k]; k++)
 			if (r->peer[k].done)
 				all[m++] = &r->peer[k];
+		for (k = 0; peers[k]; k++)
+			if (r->peer_scan[k].done)
+				all[m++] = &r->peer_scan[k];
 		for (k = 0; k < m; k++) {
 			const struct figure *f = all[k];
 			bool part = !realtime(r->kind) &&
@@ -1654,10 +1708,19 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 			else
 				snprintf(buf, sizeof(buf), "%08x %s", f->crc,
 					 crc_word(r->kind, f->crc));
-			if (part)
+			if (part && f->frames)
+				snprintf(drawn, sizeof(drawn),
+					 "%u ops (%.0f%%) + %llu frames",
+					 f->ops, 100.0 * f->ops / r->ops,
+					 (unsigned long long)f->frames);
+			else if (part)
 				snprintf(drawn, sizeof(drawn),
 					 "%u ops (%.0f%%)", f->ops,
 					 100.0 * f->ops / r->ops);
+			else if (f->frames)
+				snprintf(drawn, sizeof(drawn),
+					 "all + %llu frames",
+					 (unsigned long long)f->frames);
 			else if (scanned)
 				snprintf(drawn, sizeof(drawn),
 					 "all + %llu frames %08x %s",
@@ -1700,6 +1763,9 @@ static void way_compare(struct result *res, struct way *w,
 			const struct figure *lim, bool on)
 {
 	enum bench_kind kind = res->kind;
+	/* with scanout, the peers with the same conversions (as limits) */
+	const struct figure *peer = on && drawing(kind) ? res->peer_scan :
+							  res->peer;
 	const struct figure *line_peer = NULL;
 	size_t k;
 
@@ -1715,17 +1781,24 @@ static void way_compare(struct result *res, struct way *w,
 		}
 	}
 	for (k = 0; peers[k]; k++) {
-		const struct figure *f = &res->peer[k];
+		const struct figure *f = &peer[k];
 		double v;
 
 		if (!f->done)
 			continue;
-		if (!strcmp(f->name, LINE_PEER))
+		if (!strcmp(peers[k]->name, LINE_PEER))
 			line_peer = f;
 		v = rate(w->fig) / rate(f);
 		if (!w->best_peer || v < w->vs_peer) {
 			w->vs_peer = v;
 			w->best_peer = f->name;
+		}
+		if (peer == res->peer || !res->peer[k].done)
+			continue;
+		v = rate(w->fig) / rate(&res->peer[k]);
+		if (!w->best_peer_plain || v < w->vs_peer_plain) {
+			w->vs_peer_plain = v;
+			w->best_peer_plain = res->peer[k].name;
 		}
 	}
 	if (byte_moving(kind)) {
@@ -1738,7 +1811,7 @@ static void way_compare(struct result *res, struct way *w,
 			 w->vs_target >= w->target;
 	} else if (kind == BENCH_LINE) {
 		w->target = 1.0;
-		w->target_of = LINE_PEER;
+		w->target_of = line_peer ? line_peer->name : LINE_PEER;
 		w->vs_target = line_peer ? rate(w->fig) / rate(line_peer) : 0;
 		w->met = line_peer && w->vs_target >= w->target;
 	} else {
@@ -1792,9 +1865,11 @@ static void run_rt(struct result *res, enum bench_kind kind,
 static void run_kind(struct result *res, enum bench_kind kind,
 		     const struct opts *o)
 {
-	struct entrant e[2 + 2 * MAX_LIMITS + NPEERS];
+	struct entrant e[2 + 2 * MAX_LIMITS + 2 * NPEERS];
 	struct limit_ctx lc[MAX_LIMITS], ls[MAX_LIMITS];
 	struct peer_ctx pc[NPEERS + 1];
+	struct peer_scan_ctx psc[NPEERS + 1];
+	static char scan_name[NPEERS + 1][48];
 	struct bench_input in;
 	struct rdc_ctx rc, rc_off;
 	size_t k, n = 0;
@@ -1854,6 +1929,18 @@ static void run_kind(struct result *res, enum bench_kind kind,
 		e[n++] = (struct entrant){ .fig = &res->peer[k],
 					   .one = peer_one,
 					   .ctx = &pc[k] };
+		if (!drawing(kind))
+			continue;
+		/* after rdc with scanout, whose frame count it needs */
+		snprintf(scan_name[k], sizeof(scan_name[k]), "%s+scan",
+			 peers[k]->name);
+		figure_init(&res->peer_scan[k], scan_name[k], &in,
+			    res->peer[k].ops);
+		psc[k] = (struct peer_scan_ctx){ &in, peers[k], &rc,
+						 &res->peer_scan[k] };
+		e[n++] = (struct entrant){ .fig = &res->peer_scan[k],
+					   .one = peer_scan_one,
+					   .ctx = &psc[k] };
 	}
 	measure(e, n, o);
 	res->frames = rc.frames;
