@@ -138,8 +138,9 @@ bool dp_runs_ok(const struct rdc_dp *dp)
 	const struct rdc_surface *s = &dp->st.dst;
 	unsigned int bpp = rdc_format_bpp(s->format);
 
+	/* bpp / 8 a power of two: a mask, not a division (every command) */
 	return !dp->ref_paths && (bpp == 8 || bpp == 16 || bpp == 32) &&
-	       s->base % (bpp / 8) == 0 && s->stride % (bpp / 8) == 0;
+	       ((s->base | s->stride) & (bpp / 8 - 1)) == 0;
 }
 
 /* The pixels of run r at p with colour fg through the ROP. */

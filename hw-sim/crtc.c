@@ -219,6 +219,10 @@ static inline void convert_indexed(const uint32_t *clut, uint32_t *out,
  * no aliasing let the compiler use its widest loads and stores with no
  * run-time checks, so a line costs about a memcpy.  Kept out of line:
  * inlined, the restrict qualifiers are lost and the loop stays scalar.
+ * Where the port streams stores (RDC_STREAM), the frame is streamed past
+ * the caches, which then keep VRAM for the drawing that goes on while the
+ * beam runs (rdc-bench, scanout on: fill, blit and line about 5% less
+ * CPU); crtc_vblank fences the frame before it hands it on.
  */
 #define XRGB_BLOCK 16u
 
@@ -226,6 +230,18 @@ static rdc_noinline void convert_xrgb(uint32_t *restrict out,
 				      const uint8_t *restrict src, uint32_t w)
 {
 	uint32_t k;
+#if RDC_STREAM
+	const rdc_u32x4 mask = { RGB_MASK, RGB_MASK, RGB_MASK, RGB_MASK };
+
+	for (; w && ((uintptr_t)out & 15); w--, out++, src += 4)
+		*out = rdc_ld32(src) & RGB_MASK;
+	for (; w >= 4; w -= 4, out += 4, src += 16) {
+		rdc_u32x4 v;
+
+		rdc_memcpy(&v, src, 16);
+		rdc_stream16(out, v & mask);
+	}
+#endif
 
 	for (; w >= XRGB_BLOCK; w -= XRGB_BLOCK) {
 		for (k = 0; k < XRGB_BLOCK; k++)
@@ -368,8 +384,10 @@ static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
 		lit = hw->pins_in & RDC_PIN_BL_EN;
 		rdc_memset(out, 0, (size_t)w * sizeof(*out));
 	}
-	if (lit && (hw->control & RDC_CONTROL_CURSOR_EN))
+	if (lit && (hw->control & RDC_CONTROL_CURSOR_EN)) {
+		rdc_stream_fence(); /* the cursor's stores after the line's */
 		cursor_line(hw, out, n, w);
+	}
 }
 
 static void crtc_vblank(struct rdc_hw *hw, uint64_t when)
@@ -388,6 +406,7 @@ static void crtc_vblank(struct rdc_hw *hw, uint64_t when)
 	c->frame_count++;
 	rdc_trace(hw, RDC_TRACE_VBLANK, (uint32_t)number, 0);
 	crtc_latch(hw, true);
+	rdc_stream_fence(); /* the frame whole before anyone reads it */
 	if (hw->frame_fn)
 		hw->frame_fn(hw->frame_ctx, hw->frame[hw->frame_back ^ 1], w, h,
 			     number);

@@ -54,6 +54,37 @@
 #define rdc_always_inline inline __attribute__((__always_inline__))
 #endif
 
+/*
+ * Stores that pass the CPU's caches by, for what is written once for
+ * others to read later (scanout's frames), so that the caches keep what
+ * the chip will touch again (VRAM).  x86-64 outside the kernel (which
+ * keeps vector registers to itself): MOVNTDQ, 16 aligned bytes a store
+ * (AddressSanitizer does not see these; their bounds are the mode's,
+ * checked when it is set).  Elsewhere RDC_STREAM is 0 and callers store
+ * plainly.  Streamed stores are weakly ordered: rdc_stream_fence() puts
+ * them before every store after it (a frame is fenced before anyone is
+ * given it).
+ */
+#if defined(__x86_64__) && !defined(__KERNEL__)
+#define RDC_STREAM 1
+typedef uint32_t rdc_u32x4 __attribute__((__vector_size__(16), __may_alias__));
+
+static inline void rdc_stream16(void *p, rdc_u32x4 v)
+{
+	__asm__("movntdq %1, %0" : "=m"(*(rdc_u32x4 *)p) : "x"(v));
+}
+
+static inline void rdc_stream_fence(void)
+{
+	__asm__ __volatile__("sfence" : : : "memory");
+}
+#else
+#define RDC_STREAM 0
+static inline void rdc_stream_fence(void)
+{
+}
+#endif
+
 #define RDC_MIN(a, b)	  ((a) < (b) ? (a) : (b))
 #define RDC_MAX(a, b)	  ((a) > (b) ? (a) : (b))
 #define RDC_ARRAY_SIZE(a) (sizeof(a) / sizeof((a)[0]))
