@@ -4,6 +4,22 @@
 #include "raster.h"
 
 /*
+ * The rows of a small rectangle anywhere on a large surface are each a
+ * cache line or two no cache holds, and stored row after row, each row's
+ * miss waits for the one before: asked for FILL_AHEAD rows ahead, they
+ * come in together (rdc-bench -w growth: a 16x16 fill on a 4096-wide
+ * surface 1.1-1.4 us -> 0.5 us, an 8x32 one 1.9 -> 0.7 us).  A row's
+ * first and last lines are asked for; the hardware brings those between.
+ */
+#define FILL_AHEAD 16
+
+static inline void row_prefetch(const uint8_t *p, uint32_t len)
+{
+	__builtin_prefetch(p, 1);
+	__builtin_prefetch(p + len - 1, 1);
+}
+
+/*
  * A filled rectangle's rows [ya, ye] of pixels [xa, xb] (clipped) in
  * XRGB8888 with a ROP that ignores the destination, charged and written
  * row by row as the queued runs would be (see line_run): no queue, and
@@ -34,8 +50,16 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	while (rows) {
 		done = rdc_port_window_rows(hw, &w, one.addr, one.len,
 					    s->stride, rows);
-		for (k = 0; k < done; k++, one.addr += s->stride)
+		for (k = 0; k < done && k < FILL_AHEAD; k++)
+			row_prefetch(w.vram + one.addr + k * s->stride,
+				     one.len);
+		for (k = 0; k < done; k++, one.addr += s->stride) {
+			if (k + FILL_AHEAD < done)
+				row_prefetch(w.vram + one.addr +
+						     FILL_AHEAD * s->stride,
+					     one.len);
 			dp_fill32(w.vram + one.addr, v, n);
+		}
 		pixels += (uint64_t)done * n;
 		rows -= done;
 		if (!rows)
