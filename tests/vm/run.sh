@@ -225,6 +225,10 @@ KERNEL=/boot/vmlinuz-$KVER
 
 VMDIR=$O/vm/$KVER
 mkdir -p "$VMDIR"
+# One run at a time per kernel and build directory: the initramfs and the
+# console log below are the run's own.
+exec 9>"$VMDIR/lock"
+flock 9
 LOG=$VMDIR/console.log
 
 # ---- The modules the tests declare ------------------------------------------------
