@@ -36,7 +36,7 @@
 #include <drm/drm.h>
 #else
 #include <linux/types.h>
-#include <drm/drm.h> /* libdrm's copy: pkg-config --cflags libdrm */
+#include <drm.h> /* libdrm's copy, in pkg-config --cflags libdrm */
 #endif
 
 /* drm_version.name of an rdcdrm device. */
