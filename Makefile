@@ -64,6 +64,18 @@ LIBS += $(shell $(PKG_CONFIG) --libs libgpiod)
 else
 MISSING += "libgpiod >= 2.0 not found (Debian 12: libgpiod-dev from bookworm-backports): building without GPIO lines"
 endif
+# The drm: backend (rdcdrm.ko's cards) and the KMS test programs need
+# libdrm; without it drm: answers RDC_E_NOSYS and the VM tests that use
+# them skip.
+HAVE_DRM := $(shell $(PKG_CONFIG) --exists libdrm 2>/dev/null && echo 1)
+ifeq ($(HAVE_DRM),1)
+DRM_CFLAGS := -DRDC_HAVE_DRM $(shell $(PKG_CONFIG) --cflags libdrm)
+REL_CFLAGS += $(DRM_CFLAGS)
+SAN_CFLAGS += $(DRM_CFLAGS)
+LIBS += $(shell $(PKG_CONFIG) --libs libdrm)
+else
+MISSING += "libdrm not found (Debian: libdrm-dev): building without the drm: backend"
+endif
 LIBS += -lpthread
 CMOCKA_LIBS := $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
@@ -227,7 +239,8 @@ $(O)/rel/dyn/rdcd: $(patsubst %.c,$(O)/rel/%.o,$(RDCD_SRCS)) $(SO_LINKS)
 # rdc.pc (written by make install): the optional libraries this build
 # links are its Requires.private.
 RDC_PC_REQUIRES := libpng zlib $(if $(HAVE_VNC),libvncserver) \
-	$(if $(HAVE_USB),libusb-1.0) $(if $(HAVE_GPIOD),libgpiod)
+	$(if $(HAVE_USB),libusb-1.0) $(if $(HAVE_GPIOD),libgpiod) \
+	$(if $(HAVE_DRM),libdrm)
 
 shared: $(SO_LINKS) $(O)/rel/dyn/rdcctl $(O)/rel/dyn/rdcd
 
@@ -629,7 +642,6 @@ $(O)/san/usb_tool: $(O)/san/tests/vm/usb_tool.o $(O)/san/librdc.a
 
 # drm_pattern: a DRM/KMS client (libdrm) of the udl card the DisplayLink
 # personality brings up (tests/vm/tests/udl-*.sh, which skip without it).
-HAVE_DRM := $(shell $(PKG_CONFIG) --exists libdrm && echo 1)
 ifeq ($(HAVE_DRM),1)
 VM_BINS += $(O)/rel/drm_pattern
 endif

@@ -20,6 +20,20 @@
  *                           rdcfb framebuffer, RDC_E_FILE if it cannot
  *                           be opened; rdc_sim_step needs the module's
  *                           clock=stepped (else RDC_E_NOSYS)
+ *   "drm:/dev/dri/cardN", "drm:"
+ *                           the RDC-1 that rdcdrm.ko simulates in the
+ *                           kernel, through its DRM card (the private
+ *                           ioctls of rdcdrm_ioctl.h beside KMS); "drm:"
+ *                           alone: the first card whose DRM driver is
+ *                           "rdc".  RDC_E_URI if the node is not a DRM
+ *                           card of driver rdc (rdc_last_error_detail
+ *                           names what it is), RDC_E_FILE if it cannot
+ *                           be opened or no rdc card is there (the
+ *                           module not loaded), RDC_E_NOSYS in a build
+ *                           without libdrm; the handle drops DRM master,
+ *                           so a compositor can drive the card beside
+ *                           it; rdc_sim_step needs the module's stepped
+ *                           clock (else RDC_E_NOSYS)
  *   "usb:"                  an RDC-1 attached over USB (rdc_usb.h,
  *                           docs/usb.md), through libusb: the first
  *                           device with IDs 1209:0001 and the RDC-1
@@ -369,10 +383,11 @@ int rdc_batch_jump(rdc_batch *b, uint32_t addr);
  *
  * sim:, unix:, tcp: and usb: reach them through the register PINS and the
  * wire protocol (a daemon lets only its controlling client drive them).
- * fbdev: reaches them as GPIO lines, with libgpiod, on the gpio_chip
- * rdcfb.ko registers for the framebuffer's device (label "rdcfb.N-pins",
- * lines "TE", "IRQ", "RESET_N", "BL_EN"); built without libgpiod, every
- * rdc_pins_* call on fbdev: returns RDC_E_NOSYS.
+ * fbdev: and drm: reach them as GPIO lines, with libgpiod, on the
+ * gpio_chip rdcfb.ko or rdcdrm.ko registers for the device (label
+ * "rdcfb.N-pins" or "rdcdrm.N-pins" after the node's device, lines "TE",
+ * "IRQ", "RESET_N", "BL_EN"); built without libgpiod, every rdc_pins_*
+ * call on fbdev: and drm: returns RDC_E_NOSYS.
  */
 #define RDC_PINS_OUT (RDC_PIN_TE | RDC_PIN_IRQ)	       /* driven by the chip */
 #define RDC_PINS_IN  (RDC_PIN_RESET_N | RDC_PIN_BL_EN) /* driven by the host */

@@ -21,7 +21,7 @@
  */
 static const struct rdc_backend *const rdc_backends[] = {
 	&rdc_backend_sim, &rdc_backend_unix,  &rdc_backend_tcp,
-	&rdc_backend_usb, &rdc_backend_fbdev,
+	&rdc_backend_usb, &rdc_backend_fbdev, &rdc_backend_drm,
 };
 
 static const char *const rdc_error_str[] = {
@@ -132,7 +132,7 @@ int rdc_open(const char *uri, rdc_dev **out)
 	if (!be)
 		return rdc_err_detail(RDC_E_URI,
 				      "'%.*s:' is not a device kind (sim:, "
-				      "unix:, tcp:, usb:, fbdev:)",
+				      "unix:, tcp:, usb:, fbdev:, drm:)",
 				      (int)RDC_MIN(slen, (size_t)40), uri);
 	if (!be->open)
 		return rdc_err_detail(RDC_E_NOSYS,

@@ -24,37 +24,19 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#ifdef RDC_HAVE_GPIOD
-#include <dirent.h>
-#include <gpiod.h>
-#include <stdio.h>
-#include <sys/sysmacros.h>
-#endif
-
+#include "kchip.h"
 #include "rdc_priv.h"
 #include "rdcfb_ioctl.h"
 
 /* Wall-clock slack on top of a wait's simulated budget when paced. */
 #define FBDEV_WAIT_SLACK_MS 1000u
 
-/* Edge events read from the GPIO chip at once. */
-#define FBDEV_EDGE_BUF 16u
-/* Stepped clock: simulated cycles a pins wait moves between looks. */
-#define FBDEV_PINS_STEP RDC_WAIT_SLICE_MAX
-/* Stepped clock: how long an edge PINS already shows may take to arrive. */
-#define FBDEV_EDGE_LATE_NS 1000000000ll
-
-/* The pins as GPIO lines: TE, IRQ, RESET_N, BL_EN, in RDC_PIN_* order. */
-#define FBDEV_NPINS 4u
-
-struct fbdev_gpio;
-
 struct fbdev {
 	int fd;
 	uint8_t *vram;
 	uint32_t vram_size;
 	uint32_t core_khz;
-	struct fbdev_gpio *gpio; /* opened on the first rdc_pins_* call */
+	struct rdc_kchip_pins *gpio; /* opened on the first rdc_pins_* call */
 };
 
 static struct fbdev *fbdev_of(rdc_dev *dev)
@@ -63,47 +45,9 @@ static struct fbdev *fbdev_of(rdc_dev *dev)
 }
 
 /*
- * The one place an errno from the device becomes a library error.  The
- * meanings follow rdcfb_ioctl.h's list; anything else is a transport
- * failure.
+ * ioctl() as a library error (rdcfb_ioctl.h's errnos, mapped by kchip.c);
+ * a signal does not abandon the request.
  */
-static int fbdev_error(int err)
-{
-	switch (err) {
-	case 0:
-		return 0;
-	case EINVAL:
-	case EFAULT:
-		return RDC_E_INVAL;
-	case E2BIG:
-	case ERANGE:
-	case ENOSPC:
-	case EOVERFLOW:
-		return RDC_E_RANGE;
-	case ENOMEM:
-		return RDC_E_NOMEM;
-	case EPROTO:
-		return RDC_E_PROTO;
-	case ETIMEDOUT:
-		return RDC_E_TIMEOUT;
-	case EIO:
-		return RDC_E_HALTED;
-	case EBUSY:
-		return RDC_E_BUSY;
-	case EPERM: /* STEP on a paced clock */
-	case ENOTTY:
-	case EOPNOTSUPP:
-		return RDC_E_NOSYS;
-	case ENOENT:
-	case EACCES:
-	case EROFS:
-		return RDC_E_FILE;
-	default: /* ENODEV (module going away), ENXIO, ... */
-		return RDC_E_IO;
-	}
-}
-
-/* ioctl() as a library error; a signal does not abandon the request. */
 static int fbdev_ioctl(struct fbdev *f, unsigned long req, void *arg)
 {
 	int r;
@@ -111,7 +55,7 @@ static int fbdev_ioctl(struct fbdev *f, unsigned long req, void *arg)
 	do {
 		r = ioctl(f->fd, req, arg);
 	} while (r < 0 && errno == EINTR);
-	return r < 0 ? fbdev_error(errno) : 0;
+	return r < 0 ? rdc_kchip_error(errno) : 0;
 }
 
 static int fbdev_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
@@ -131,11 +75,9 @@ static int fbdev_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
 	return fbdev_ioctl(fbdev_of(dev), RDCFB_IOC_REG_WRITE, &r);
 }
 
-static void fbdev_gpio_free(struct fbdev_gpio *g);
-
 static void fbdev_free(struct fbdev *f)
 {
-	fbdev_gpio_free(f->gpio);
+	rdc_kchip_pins_free(f->gpio);
 	if (f->vram)
 		munmap(f->vram, f->vram_size);
 	if (f->fd >= 0)
@@ -191,7 +133,7 @@ static int fbdev_open(rdc_dev *dev, const char *opts)
 		return RDC_E_NOMEM;
 	f->fd = open(opts, O_RDWR | O_CLOEXEC | O_NOCTTY);
 	if (f->fd < 0) {
-		ret = fbdev_error(errno);
+		ret = rdc_kchip_error(errno);
 		fbdev_free(f);
 		/* A missing node is a bad URI, not a bad transport. */
 		return ret == RDC_E_IO ? RDC_E_URI : ret;
@@ -204,7 +146,7 @@ static int fbdev_open(rdc_dev *dev, const char *opts)
 	map = mmap(NULL, f->vram_size, PROT_READ | PROT_WRITE, MAP_SHARED,
 		   f->fd, 0);
 	if (map == MAP_FAILED) {
-		ret = fbdev_error(errno);
+		ret = rdc_kchip_error(errno);
 		fbdev_free(f);
 		return ret == RDC_E_NOMEM ? ret : RDC_E_IO;
 	}
@@ -242,36 +184,12 @@ static int fbdev_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 	return 0;
 }
 
-/*
- * Words up to the last command boundary at or before `max` (the driver
- * checks each buffer command by command, so a command must not be split
- * between two of them).  A command longer than RDC_CMD_MAX_ARGS is one
- * word: the DP consumes only its header.
- */
-static size_t fbdev_piece(const uint32_t *w, size_t n, size_t max)
-{
-	size_t i = 0;
-
-	if (n <= max)
-		return n;
-	for (;;) {
-		size_t len = RDC_CMD_LEN(w[i]);
-		size_t next = i + 1 + (len > RDC_CMD_MAX_ARGS ? 0 : len);
-
-		if (next > max)
-			break;
-		i = next;
-	}
-	/* cannot happen while max > RDC_CMD_MAX_ARGS; never loop forever */
-	return i ? i : max;
-}
-
 static int fbdev_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 {
 	struct fbdev *f = fbdev_of(dev);
 
 	while (n) {
-		size_t k = fbdev_piece(words, n, RDCFB_SUBMIT_MAX_WORDS);
+		size_t k = rdc_kchip_piece(words, n, RDCFB_SUBMIT_MAX_WORDS);
 		struct rdcfb_submit s = {
 			.words = (uintptr_t)words,
 			.count = (uint32_t)k,
@@ -341,7 +259,7 @@ static int fbdev_frame_size(struct fbdev *f, uint32_t *width, uint32_t *height)
 		r = ioctl(f->fd, RDCFB_IOC_FRAME, &fr);
 	} while (r < 0 && errno == EINTR);
 	if (r < 0)
-		return errno == EAGAIN ? 1 : fbdev_error(errno);
+		return errno == EAGAIN ? 1 : rdc_kchip_error(errno);
 	if (!fr.seq)
 		return 1;
 	*width = fr.width;
@@ -370,7 +288,7 @@ static int fbdev_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 		}
 		if (!r || errno == EAGAIN)
 			return 1;
-		ret = fbdev_error(errno);
+		ret = rdc_kchip_error(errno);
 		/* Too small a buffer: say how big the frame is. */
 		if (fbdev_frame_size(f, width, height) == 0 &&
 		    (size_t)*width * *height > cap)
@@ -383,435 +301,31 @@ static int fbdev_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 	return (size_t)*width * *height > cap ? RDC_E_RANGE : 0;
 }
 
-/* ---- Pins: the device's GPIO chip, through libgpiod ---------------------- */
-#ifdef RDC_HAVE_GPIOD
-
-static const char *const fbdev_pin_name[FBDEV_NPINS] = {
-	"TE",
-	"IRQ",
-	"RESET_N",
-	"BL_EN",
-};
-
-/*
- * TE and IRQ are requested once as inputs with edge detection; RESET_N and
- * BL_EN each as an output the first time they are driven (requesting an
- * output drives it, so a line nobody set is left alone), then held.
- */
-struct fbdev_gpio {
-	struct gpiod_chip *chip;
-	unsigned int off[FBDEV_NPINS];
-	struct gpiod_line_request *in;
-	struct gpiod_line_request *out[FBDEV_NPINS];
-	uint32_t driven; /* levels of the lines we drive */
-	struct gpiod_edge_event_buffer *buf;
-	int buf_n, buf_next; /* events read and not yet looked at */
-	uint32_t levels;     /* TE and IRQ as the last event left them */
-	bool stepped;	     /* the module's clock=stepped: waits move time */
-};
-
-static void fbdev_gpio_free(struct fbdev_gpio *g)
-{
-	if (!g)
-		return;
-	for (unsigned int i = 0; i < FBDEV_NPINS; i++)
-		if (g->out[i])
-			gpiod_line_request_release(g->out[i]);
-	if (g->in)
-		gpiod_line_request_release(g->in);
-	if (g->buf)
-		gpiod_edge_event_buffer_free(g->buf);
-	if (g->chip)
-		gpiod_chip_close(g->chip);
-	free(g);
-}
-
-/*
- * The chip's label names the framebuffer's platform device: "rdcfb.N"
- * (/sys/dev/char/MAJ:MIN/device) gives "rdcfb.N-pins".
- */
-static int fbdev_gpio_label(struct fbdev *f, char *label, size_t cap)
-{
-	char link[128], target[256];
-	const char *base;
-	struct stat st;
-	ssize_t n;
-
-	if (fstat(f->fd, &st))
-		return RDC_E_IO;
-	snprintf(link, sizeof(link), "/sys/dev/char/%u:%u/device",
-		 major(st.st_rdev), minor(st.st_rdev));
-	n = readlink(link, target, sizeof(target) - 1);
-	if (n <= 0)
-		return RDC_E_NOSYS;
-	target[n] = 0;
-	base = strrchr(target, '/');
-	base = base ? base + 1 : target;
-	if ((size_t)snprintf(label, cap, "%s-pins", base) >= cap)
-		return RDC_E_NOSYS;
-	return 0;
-}
-
-static struct gpiod_chip *fbdev_gpio_find(const char *label)
-{
-	struct gpiod_chip *found = NULL;
-	struct dirent *de;
-	DIR *dir = opendir("/dev");
-
-	if (!dir)
-		return NULL;
-	while (!found && (de = readdir(dir))) {
-		char path[300];
-		struct gpiod_chip *c;
-		struct gpiod_chip_info *info;
-
-		if (strncmp(de->d_name, "gpiochip", 8))
-			continue;
-		snprintf(path, sizeof(path), "/dev/%s", de->d_name);
-		c = gpiod_chip_open(path);
-		if (!c)
-			continue;
-		info = gpiod_chip_get_info(c);
-		if (info && !strcmp(gpiod_chip_info_get_label(info), label))
-			found = c;
-		else
-			gpiod_chip_close(c);
-		if (info)
-			gpiod_chip_info_free(info);
-	}
-	closedir(dir);
-	return found;
-}
-
-static struct gpiod_line_request *fbdev_gpio_request(struct gpiod_chip *chip,
-						     const unsigned int *off,
-						     size_t n, bool output,
-						     bool high)
-{
-	struct gpiod_line_settings *ls = gpiod_line_settings_new();
-	struct gpiod_line_config *lc = gpiod_line_config_new();
-	struct gpiod_request_config *rc = gpiod_request_config_new();
-	struct gpiod_line_request *req = NULL;
-
-	if (!ls || !lc || !rc)
-		goto out;
-	if (output) {
-		gpiod_line_settings_set_direction(ls,
-						  GPIOD_LINE_DIRECTION_OUTPUT);
-		gpiod_line_settings_set_output_value(
-			ls, high ? GPIOD_LINE_VALUE_ACTIVE :
-				   GPIOD_LINE_VALUE_INACTIVE);
-	} else {
-		gpiod_line_settings_set_direction(ls,
-						  GPIOD_LINE_DIRECTION_INPUT);
-		gpiod_line_settings_set_edge_detection(ls,
-						       GPIOD_LINE_EDGE_BOTH);
-		gpiod_line_settings_set_event_clock(ls,
-						    GPIOD_LINE_CLOCK_MONOTONIC);
-	}
-	if (gpiod_line_config_add_line_settings(lc, off, n, ls))
-		goto out;
-	gpiod_request_config_set_consumer(rc, "librdc");
-	gpiod_request_config_set_event_buffer_size(rc, 64);
-	req = gpiod_chip_request_lines(chip, rc, lc);
-out:
-	gpiod_request_config_free(rc);
-	gpiod_line_config_free(lc);
-	gpiod_line_settings_free(ls);
-	return req;
-}
-
-/* TE, IRQ and the chip's levels (the inputs from PINS until we drive). */
-static int fbdev_gpio_sample(struct fbdev *f)
-{
-	struct fbdev_gpio *g = f->gpio;
-	enum gpiod_line_value v[2];
-
-	if (gpiod_line_request_get_values(g->in, v))
-		return fbdev_error(errno);
-	g->levels = (v[0] == GPIOD_LINE_VALUE_ACTIVE ? RDC_PIN_TE : 0) |
-		    (v[1] == GPIOD_LINE_VALUE_ACTIVE ? RDC_PIN_IRQ : 0);
-	return 0;
-}
-
-static int fbdev_gpio_open(struct fbdev *f)
-{
-	struct fbdev_gpio *g;
-	char label[160];
-	int ret;
-
-	if (f->gpio)
-		return 0;
-	ret = fbdev_gpio_label(f, label, sizeof(label));
-	if (ret)
-		return ret;
-	g = calloc(1, sizeof(*g));
-	if (!g)
-		return RDC_E_NOMEM;
-	/* a module without the pins' chip offers no pins */
-	ret = RDC_E_NOSYS;
-	g->chip = fbdev_gpio_find(label);
-	if (!g->chip)
-		goto fail;
-	for (unsigned int i = 0; i < FBDEV_NPINS; i++) {
-		int o = gpiod_chip_get_line_offset_from_name(g->chip,
-							     fbdev_pin_name[i]);
-
-		if (o < 0)
-			goto fail;
-		g->off[i] = (unsigned int)o;
-	}
-	ret = RDC_E_NOMEM;
-	g->buf = gpiod_edge_event_buffer_new(FBDEV_EDGE_BUF);
-	if (!g->buf)
-		goto fail;
-	g->in = fbdev_gpio_request(g->chip, g->off, 2, false, false);
-	if (!g->in) {
-		ret = errno == EBUSY ? RDC_E_BUSY : fbdev_error(errno);
-		goto fail;
-	}
-	f->gpio = g;
-	/* a step of nothing: refused (EPERM) on the paced clock */
-	g->stepped = !fbdev_ioctl(f, RDCFB_IOC_STEP,
-				  &(struct rdcfb_step){ .cycles = 0 });
-	ret = fbdev_gpio_sample(f);
-	if (ret) {
-		f->gpio = NULL;
-		goto fail;
-	}
-	return 0;
-fail:
-	fbdev_gpio_free(g);
-	return ret;
-}
-
-_Static_assert(RDC_PIN_TE == 1u && RDC_PIN_IRQ == 2u && RDC_PIN_RESET_N == 4u &&
-		       RDC_PIN_BL_EN == 8u,
-	       "fbdev_pin_name is in RDC_PIN_* bit order");
-
-static uint32_t fbdev_bit(unsigned int i)
-{
-	return 1u << i;
-}
+/* ---- Pins: the device's GPIO chip (kchip.c) ----------------------------- */
 
 static int fbdev_pins_get(rdc_dev *dev, uint32_t *levels)
 {
 	struct fbdev *f = fbdev_of(dev);
-	uint32_t in = 0, mine = 0;
-	int ret = fbdev_gpio_open(f);
 
-	if (!ret)
-		ret = fbdev_gpio_sample(f);
-	if (ret)
-		return ret;
-	for (unsigned int i = 2; i < FBDEV_NPINS; i++)
-		if (f->gpio->out[i])
-			mine |= fbdev_bit(i);
-	/* lines this handle does not drive: as the chip sees them */
-	if (mine != RDC_PINS_IN) {
-		ret = fbdev_reg_read(dev, RDC_REG_PINS, &in);
-		if (ret)
-			return ret;
-	}
-	*levels = f->gpio->levels | (in & RDC_PINS_IN & ~mine) |
-		  (f->gpio->driven & mine);
-	return 0;
+	return rdc_kchip_pins_get(dev, f->fd, &f->gpio, levels);
 }
 
 static int fbdev_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 {
 	struct fbdev *f = fbdev_of(dev);
-	struct fbdev_gpio *g;
-	int ret = fbdev_gpio_open(f);
 
-	if (ret)
-		return ret;
-	g = f->gpio;
-	for (unsigned int i = 2; i < FBDEV_NPINS; i++) {
-		uint32_t bit = fbdev_bit(i);
-		bool high = levels & bit;
-
-		if (!(mask & bit))
-			continue;
-		if (!g->out[i]) {
-			g->out[i] = fbdev_gpio_request(g->chip, &g->off[i], 1,
-						       true, high);
-			if (!g->out[i])
-				return errno == EBUSY ? RDC_E_BUSY :
-							fbdev_error(errno);
-		} else if (gpiod_line_request_set_value(
-				   g->out[i], g->off[i],
-				   high ? GPIOD_LINE_VALUE_ACTIVE :
-					  GPIOD_LINE_VALUE_INACTIVE)) {
-			return fbdev_error(errno);
-		}
-		g->driven = (g->driven & ~bit) | (high ? bit : 0);
-	}
-	return 0;
-}
-
-/* The next buffered edge event, reading more within `ns`; 0 on timeout. */
-static int fbdev_gpio_next(struct fbdev_gpio *g, int64_t ns,
-			   struct gpiod_edge_event **out)
-{
-	int r;
-
-	if (g->buf_next < g->buf_n) {
-		*out = gpiod_edge_event_buffer_get_event(
-			g->buf, (unsigned long)g->buf_next++);
-		return 1;
-	}
-	r = gpiod_line_request_wait_edge_events(g->in, ns);
-	if (r <= 0)
-		return r < 0 ? fbdev_error(errno) : 0;
-	r = gpiod_line_request_read_edge_events(g->in, g->buf, FBDEV_EDGE_BUF);
-	if (r < 0)
-		return fbdev_error(errno);
-	g->buf_n = r;
-	g->buf_next = 0;
-	if (!r)
-		return 0;
-	*out = gpiod_edge_event_buffer_get_event(g->buf,
-						 (unsigned long)g->buf_next++);
-	return 1;
-}
-
-/*
- * Note an edge event in the levels; 1 if it is one the caller wants (ev
- * filled in), 0 if not, or an error.
- */
-static int fbdev_gpio_take(rdc_dev *dev, struct fbdev_gpio *g,
-			   struct gpiod_edge_event *e, uint32_t pins,
-			   uint32_t edges, struct rdc_pin_edge *ev)
-{
-	uint32_t bit, in = 0;
-	bool rising;
-	int ret;
-
-	bit = gpiod_edge_event_get_line_offset(e) == g->off[0] ? RDC_PIN_TE :
-								 RDC_PIN_IRQ;
-	rising = gpiod_edge_event_get_event_type(e) ==
-		 GPIOD_EDGE_EVENT_RISING_EDGE;
-	g->levels = (g->levels & ~bit) | (rising ? bit : 0);
-	if (!(pins & bit) ||
-	    !(edges & (rising ? RDC_EDGE_RISING : RDC_EDGE_FALLING)))
-		return 0;
-	ev->pins = bit;
-	ev->time = RDC_PIN_TIME_NONE;
-	ev->wall_ns = gpiod_edge_event_get_timestamp_ns(e);
-	ret = fbdev_reg_read(dev, RDC_REG_PINS, &in);
-	if (ret)
-		return ret;
-	ev->levels = g->levels | (in & RDC_PINS_IN);
-	return 1;
-}
-
-/*
- * Paced, the chip runs by itself: wait for the lines' events in wall
- * time.  Stepped, nothing moves unless asked, so the wait moves simulated
- * time as waits on sim: do, a slice at a time up to the budget; when PINS
- * shows TE or IRQ where the last event did not leave them, the edge's
- * event is on its way (the driver hands edges over from a worker), and
- * the wait takes it before time moves on.
- */
-static int fbdev_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
-			   uint64_t budget_cycles, uint64_t timeout_us,
-			   struct rdc_pin_edge *ev)
-{
-	struct fbdev *f = fbdev_of(dev);
-	uint64_t deadline, now, moved = 0;
-	struct fbdev_gpio *g;
-	int ret = fbdev_gpio_open(f);
-
-	if (ret)
-		return ret;
-	g = f->gpio;
-	if (!timeout_us)
-		timeout_us = RDC_WAIT_BUDGET_DEFAULT /
-			     (RDC_DEFAULT_CORE_HZ / 1000000u);
-	deadline = rdc_pins_wall_ns() + timeout_us * 1000u;
-	for (;;) {
-		struct gpiod_edge_event *e = NULL;
-		int64_t ns = 0;
-		uint32_t in;
-
-		if (!g->stepped) {
-			now = rdc_pins_wall_ns();
-			ns = now < deadline ? (int64_t)(deadline - now) : 0;
-		}
-		ret = fbdev_gpio_next(g, ns, &e);
-		if (ret > 0)
-			ret = fbdev_gpio_take(dev, g, e, pins, edges, ev);
-		if (ret < 0)
-			return ret;
-		if (ret > 0)
-			return 0;
-		if (e)
-			continue; /* an edge nobody asked for */
-		if (!g->stepped)
-			return RDC_E_TIMEOUT;
-		ret = fbdev_reg_read(dev, RDC_REG_PINS, &in);
-		if (ret)
-			return ret;
-		if ((in ^ g->levels) & RDC_PINS_OUT) {
-			ret = fbdev_gpio_next(g, FBDEV_EDGE_LATE_NS, &e);
-			if (ret > 0)
-				ret = fbdev_gpio_take(dev, g, e, pins, edges,
-						      ev);
-			if (ret < 0)
-				return ret;
-			if (ret > 0)
-				return 0;
-			if (!e) /* never came (a full queue): go by PINS */
-				g->levels = in & RDC_PINS_OUT;
-			continue;
-		}
-		if (moved >= budget_cycles)
-			return RDC_E_TIMEOUT;
-		ns = (int64_t)RDC_MIN(FBDEV_PINS_STEP, budget_cycles - moved);
-		ret = fbdev_step(dev, (uint64_t)ns);
-		if (ret)
-			return ret;
-		moved += (uint64_t)ns;
-	}
-}
-
-#else /* !RDC_HAVE_GPIOD: no GPIO lines, no pins */
-
-static void fbdev_gpio_free(struct fbdev_gpio *g)
-{
-	(void)g;
-}
-
-static int fbdev_pins_get(rdc_dev *dev, uint32_t *levels)
-{
-	(void)dev;
-	(void)levels;
-	return RDC_E_NOSYS;
-}
-
-static int fbdev_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
-{
-	(void)dev;
-	(void)mask;
-	(void)levels;
-	return RDC_E_NOSYS;
+	return rdc_kchip_pins_set(dev, f->fd, &f->gpio, mask, levels);
 }
 
 static int fbdev_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 			   uint64_t budget_cycles, uint64_t timeout_us,
 			   struct rdc_pin_edge *ev)
 {
-	(void)dev;
-	(void)pins;
-	(void)edges;
-	(void)budget_cycles;
-	(void)timeout_us;
-	(void)ev;
-	return RDC_E_NOSYS;
-}
+	struct fbdev *f = fbdev_of(dev);
 
-#endif /* RDC_HAVE_GPIOD */
+	return rdc_kchip_pins_wait(dev, f->fd, &f->gpio, pins, edges,
+				   budget_cycles, timeout_us, ev);
+}
 
 /* rdcfb's framebuffers: /sys/class/graphics/fbN whose name is RDCFB_ID. */
 static int fbdev_list(rdc_found_fn fn, void *arg)

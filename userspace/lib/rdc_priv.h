@@ -164,6 +164,7 @@ extern const struct rdc_backend rdc_backend_unix;  /* net.c */
 extern const struct rdc_backend rdc_backend_tcp;   /* net.c */
 extern const struct rdc_backend rdc_backend_fbdev; /* fbdev.c, rdcfb.ko */
 extern const struct rdc_backend rdc_backend_usb;   /* usb.c, libusb */
+extern const struct rdc_backend rdc_backend_drm;   /* drm.c, rdcdrm.ko */
 
 /* rdc_sim_hw, the trace recorder (rdc_rec_*), rdc_vcd_new: rdc_server.h. */
 
