@@ -38,11 +38,11 @@ struct rdcfb_bench_run {
 	u64 dp_ns, sys_ns, busy;
 };
 
-static u64 rdcfb_busy(struct rdcfb_chip *chip)
+static u64 rdcfb_busy(struct rdc_kchip *chip)
 {
-	struct rdcfb_counters c;
+	struct rdc_kchip_counters c;
 
-	rdcfb_chip_counters(chip, &c);
+	rdc_kchip_counters(chip, &c);
 	return c.busy;
 }
 
@@ -119,7 +119,7 @@ static void rdcfb_bench_scroll(struct fb_info *info, struct fb_info *sys,
 	r->sys_ns = ktime_to_ns(ktime_sub(ktime_get(), t0));
 }
 
-static void rdcfb_bench_print(struct seq_file *m, struct rdcfb_chip *chip,
+static void rdcfb_bench_print(struct seq_file *m, struct rdc_kchip *chip,
 			      const char *what, u32 ops,
 			      const struct rdcfb_bench_run *r)
 {
@@ -200,17 +200,17 @@ static int rdcfb_irqoff_show(struct seq_file *m, void *unused)
 {
 	struct fb_info *info = m->private;
 	struct rdcfb_par *par = info->par;
-	struct rdcfb_irqoff *st = &par->chip->irqoff;
+	struct rdc_kchip_irqoff *st = &par->chip->irqoff;
 	unsigned int k;
 	s64 n;
 
-	for (k = 0; k < RDCFB_IRQOFF_BUCKETS; k++) {
+	for (k = 0; k < RDC_KCHIP_IRQOFF_BUCKETS; k++) {
 		n = atomic64_read(&st->hist[k]);
 		if (!n)
 			continue;
 		if (!k)
 			seq_puts(m, "<1us");
-		else if (k == RDCFB_IRQOFF_BUCKETS - 1)
+		else if (k == RDC_KCHIP_IRQOFF_BUCKETS - 1)
 			seq_printf(m, ">=%uus", 1u << (k - 1));
 		else
 			seq_printf(m, "%u-%uus", 1u << (k - 1), 1u << k);

@@ -131,7 +131,7 @@ static int rdcfb_var_timing(const struct fb_var_screeninfo *var,
 	    v[0] > RDC_CRTC_MAX_DISPLAY || h[3] > RDC_CRTC_MAX_TOTAL ||
 	    v[3] > RDC_CRTC_MAX_TOTAL || v[0] >= v[3] ||
 	    khz < RDC_PIXCLK_MIN_KHZ || khz > RDC_PIXCLK_MAX_KHZ ||
-	    h[0] * v[0] > RDCFB_FRAME_CAP)
+	    h[0] * v[0] > RDC_KCHIP_FRAME_CAP)
 		return -EINVAL;
 	/* a line must last at least one core cycle */
 	if (h[3] * RDC_DEFAULT_CORE_HZ < (u64)khz * 1000)
@@ -243,7 +243,7 @@ struct rdcfb_op {
 
 /* A record being written: opq.lock is held from begin to end. */
 struct rdcfb_qw {
-	struct rdcfb_chip *chip;
+	struct rdc_kchip *chip;
 	unsigned long flags;
 	u32 start, tail; /* ring positions of its header, of the next word */
 	u32 acc;	 /* a data word being filled bits at a time */
@@ -252,7 +252,7 @@ struct rdcfb_qw {
 
 static void rdcfb_q_put(struct rdcfb_qw *q, u32 word)
 {
-	q->chip->opq.ring[q->tail++ % RDCFB_OPQ_WORDS] = word;
+	rdcfb_dev_of(q->chip)->opq.ring[q->tail++ % RDCFB_OPQ_WORDS] = word;
 }
 
 /* Data bits go into words little-endian (byte 0 in bits 7:0). */
@@ -277,20 +277,20 @@ static void rdcfb_q_end_row(struct rdcfb_qw *q)
 }
 
 /* Take the chip, which applies the queue, where the caller may sleep. */
-static void rdcfb_q_apply(struct rdcfb_chip *chip)
+static void rdcfb_q_apply(struct rdc_kchip *chip)
 {
-	rdcfb_chip_lock(chip);
-	rdcfb_chip_unlock(chip);
+	rdc_kchip_lock(chip);
+	rdc_kchip_unlock(chip);
 }
 
 /*
  * Start a record (true, opq.lock held until rdcfb_q_end), or drop it
  * (false) when the queue has no room for it and the caller cannot wait.
  */
-static bool rdcfb_q_begin(struct rdcfb_chip *chip, struct rdcfb_qw *q,
+static bool rdcfb_q_begin(struct rdc_kchip *chip, struct rdcfb_qw *q,
 			  const struct rdcfb_op *op)
 {
-	struct rdcfb_opq *oq = &chip->opq;
+	struct rdcfb_opq *oq = &rdcfb_dev_of(chip)->opq;
 	u32 need = RDCFB_OP_HDR_WORDS + op->words;
 	const u32 *hdr = (const u32 *)op;
 	bool can_wait = preemptible(); /* asked before the lock is taken */
@@ -302,15 +302,15 @@ static bool rdcfb_q_begin(struct rdcfb_chip *chip, struct rdcfb_qw *q,
 	q->acc_bits = 0;
 	if (WARN_ON_ONCE(op->words > RDC_CMD_MAX_ARGS))
 		return false;
-	rdcfb_spin_lock(&oq->lock, q->flags, oq->t0);
+	rdc_kchip_spin_lock(&oq->lock, q->flags, oq->t0);
 	if (RDCFB_OPQ_WORDS - oq->count < need && can_wait) {
-		rdcfb_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
+		rdc_kchip_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
 		rdcfb_q_apply(chip);
-		rdcfb_spin_lock(&oq->lock, q->flags, oq->t0);
+		rdc_kchip_spin_lock(&oq->lock, q->flags, oq->t0);
 	}
 	if (RDCFB_OPQ_WORDS - oq->count < need) {
 		oq->dropped++;
-		rdcfb_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
+		rdc_kchip_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
 		return false;
 	}
 	q->start = oq->head + oq->count;
@@ -323,15 +323,15 @@ static bool rdcfb_q_begin(struct rdcfb_chip *chip, struct rdcfb_qw *q,
 /* Commit the record, then see that it is applied. */
 static void rdcfb_q_end(struct rdcfb_qw *q)
 {
-	struct rdcfb_chip *chip = q->chip;
-	struct rdcfb_opq *oq = &chip->opq;
+	struct rdc_kchip *chip = q->chip;
+	struct rdcfb_opq *oq = &rdcfb_dev_of(chip)->opq;
 
 	rdcfb_q_end_row(q);
 	/* the header says how many data words there really are */
 	oq->ring[(q->start + 1) % RDCFB_OPQ_WORDS] =
 		q->tail - q->start - RDCFB_OP_HDR_WORDS;
 	oq->count = q->tail - oq->head;
-	rdcfb_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
+	rdc_kchip_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
 	if (preemptible())
 		rdcfb_q_apply(chip);
 	else
@@ -339,7 +339,7 @@ static void rdcfb_q_end(struct rdcfb_qw *q)
 }
 
 /* A record with nothing but a header. */
-static void rdcfb_q_op(struct rdcfb_chip *chip, const struct rdcfb_op *op)
+static void rdcfb_q_op(struct rdc_kchip *chip, const struct rdcfb_op *op)
 {
 	struct rdcfb_qw q;
 
@@ -348,7 +348,7 @@ static void rdcfb_q_op(struct rdcfb_chip *chip, const struct rdcfb_op *op)
 }
 
 /* Register writes, in order: `n` pairs of register and value. */
-static void rdcfb_q_regs(struct rdcfb_chip *chip, const u32 *pairs, u32 n)
+static void rdcfb_q_regs(struct rdc_kchip *chip, const u32 *pairs, u32 n)
 {
 	struct rdcfb_op op = { .kind = RDCFB_OPK_REGS, .words = 2 * n };
 	struct rdcfb_qw q;
@@ -361,15 +361,15 @@ static void rdcfb_q_regs(struct rdcfb_chip *chip, const u32 *pairs, u32 n)
 	rdcfb_q_end(&q);
 }
 
-u64 rdcfb_ops_dropped(struct rdcfb_chip *chip)
+u64 rdcfb_ops_dropped(struct rdc_kchip *chip)
 {
-	struct rdcfb_opq *oq = &chip->opq;
+	struct rdcfb_opq *oq = &rdcfb_dev_of(chip)->opq;
 	unsigned long flags;
 	u64 n;
 
-	rdcfb_spin_lock(&oq->lock, flags, oq->t0);
+	rdc_kchip_spin_lock(&oq->lock, flags, oq->t0);
 	n = oq->dropped;
-	rdcfb_spin_unlock(&oq->lock, flags, oq->t0, &chip->irqoff);
+	rdc_kchip_spin_unlock(&oq->lock, flags, oq->t0, &chip->irqoff);
 	return n;
 }
 
@@ -384,7 +384,7 @@ static int rdcfb_set_par(struct fb_info *info)
 		RDC_REG_CRTC_FLAGS,
 	};
 	struct rdcfb_par *par = info->par;
-	struct rdcfb_chip *chip = par->chip;
+	struct rdc_kchip *chip = par->chip;
 	struct rdc_timing t;
 	u32 regs[2 * (3 + ARRAY_SIZE(timing_regs))], *r = regs;
 	u32 val[ARRAY_SIZE(timing_regs)];
@@ -516,7 +516,7 @@ static int rdcfb_mmap(struct fb_info *info, struct vm_area_struct *vma)
 
 /* Command words on their way to the FIFO, staged a few at a time. */
 struct rdcfb_stage {
-	struct rdcfb_chip *chip;
+	struct rdc_kchip *chip;
 	u32 w[RDCFB_STAGE_WORDS];
 	u32 n;
 	int err;
@@ -525,7 +525,7 @@ struct rdcfb_stage {
 static void rdcfb_flush(struct rdcfb_stage *s)
 {
 	if (s->n && !s->err)
-		s->err = rdcfb_push_locked(s->chip, s->w, s->n);
+		s->err = rdc_kchip_push_locked(s->chip, s->w, s->n);
 	s->n = 0;
 }
 
@@ -544,14 +544,14 @@ static void rdcfb_put(struct rdcfb_stage *s, u32 word)
 static void rdcfb_begin(struct rdcfb_par *par, const struct rdcfb_op *op,
 			struct rdcfb_stage *s)
 {
-	struct rdcfb_chip *chip = par->chip;
+	struct rdc_kchip *chip = par->chip;
 	u32 wh = RDC_WH(op->vw, op->vh);
 	int k;
 
 	s->chip = chip;
 	s->n = 0;
 	s->err = 0;
-	if (par->state_valid && par->state_gen == chip->fb_state_gen &&
+	if (par->state_valid && par->state_gen == chip->state_gen &&
 	    par->dp_fmt == op->fmt && par->dp_stride == op->stride &&
 	    par->dp_wh == wh)
 		return;
@@ -573,7 +573,7 @@ static void rdcfb_begin(struct rdcfb_par *par, const struct rdcfb_op *op,
 	rdcfb_put(s, RDC_CMD(RDC_OP_SET_COLORKEY, 0, 1));
 	rdcfb_put(s, 0);
 	par->state_valid = true;
-	par->state_gen = chip->fb_state_gen;
+	par->state_gen = chip->state_gen;
 	par->dp_fmt = op->fmt;
 	par->dp_stride = op->stride;
 	par->dp_wh = wh;
@@ -624,7 +624,7 @@ static void rdcfb_dp_draw(struct rdcfb_par *par, const struct rdcfb_op *op,
 		rdcfb_put(&s, RDC_WH(op->w, op->h));
 		rdcfb_flush(&s);
 		if (!s.err)
-			s.err = rdcfb_push_locked(s.chip, data, op->words);
+			s.err = rdc_kchip_push_locked(s.chip, data, op->words);
 		break;
 	}
 	rdcfb_end(par, &s);
@@ -665,7 +665,7 @@ static u32 rdcfb_cpu_src(const struct rdcfb_op *op, const u32 *row, u32 x,
  * Draw a record with the CPU, as the DP would have: inside the op's
  * screen, which lies inside VRAM (check_var saw to it; checked again).
  */
-static void rdcfb_cpu_draw(struct rdcfb_chip *chip, const struct rdcfb_op *op,
+static void rdcfb_cpu_draw(struct rdc_kchip *chip, const struct rdcfb_op *op,
 			   const u32 *data)
 {
 	u32 bpp = rdc_format_bpp(op->fmt), bytes = bpp / 8;
@@ -713,7 +713,7 @@ static void rdcfb_cpu_draw(struct rdcfb_chip *chip, const struct rdcfb_op *op,
 
 /* ---- Applying the queue (chip->lock held) -------------------------------- */
 
-static void rdcfb_blank_locked(struct rdcfb_chip *chip, int blank)
+static void rdcfb_blank_locked(struct rdc_kchip *chip, int blank)
 {
 	struct rdc_hw *hw = &chip->hw;
 	u32 ctl, pins;
@@ -735,7 +735,7 @@ static void rdcfb_blank_locked(struct rdcfb_chip *chip, int blank)
 static void rdcfb_op_run(struct rdcfb_par *par, const struct rdcfb_op *op,
 			 const u32 *data)
 {
-	struct rdcfb_chip *chip = par->chip;
+	struct rdc_kchip *chip = par->chip;
 	struct rdc_hw *hw = &chip->hw;
 	u32 i;
 
@@ -743,35 +743,35 @@ static void rdcfb_op_run(struct rdcfb_par *par, const struct rdcfb_op *op,
 	case RDCFB_OPK_REGS:
 		for (i = 0; i + 1 < op->words; i += 2)
 			rdc_hw_write(hw, data[i], data[i + 1]);
-		rdcfb_irq_check_locked(chip);
+		rdc_kchip_irq_check_locked(chip);
 		return;
 	case RDCFB_OPK_BLANK:
 		rdcfb_blank_locked(chip, op->arg);
-		rdcfb_irq_check_locked(chip);
+		rdc_kchip_irq_check_locked(chip);
 		return;
 	}
-	if (rdcfb_dp_usable(chip)) {
+	if (rdc_kchip_dp_usable(chip)) {
 		rdcfb_dp_draw(par, op, data);
 		return;
 	}
 	/* the CPU draws: after what the DP has queued */
 	if ((hw->control & RDC_CONTROL_DP_EN) &&
 	    !(hw->dp_status & RDC_STATUS_DP_HALTED))
-		rdcfb_drain_locked(chip);
+		rdc_kchip_drain_locked(chip);
 	rdcfb_cpu_draw(chip, op, data);
 }
 
-/* Apply every queued record, in order (rdcfb_chip_lock does). */
-void rdcfb_ops_apply_locked(struct rdcfb_chip *chip)
+/* Apply every queued record, in order (rdc_kchip_lock does). */
+static void rdcfb_ops_apply_locked(struct rdc_kchip *chip)
 {
-	struct rdcfb_opq *oq = &chip->opq;
+	struct rdcfb_opq *oq = &rdcfb_dev_of(chip)->opq;
 	struct rdcfb_op op;
 	unsigned long flags;
 	u32 i, n;
 
 	lockdep_assert_held(&chip->lock);
 	for (;;) {
-		rdcfb_spin_lock(&oq->lock, flags, oq->t0);
+		rdc_kchip_spin_lock(&oq->lock, flags, oq->t0);
 		n = oq->count ?
 			    RDCFB_OP_HDR_WORDS +
 				    oq->ring[(oq->head + 1) % RDCFB_OPQ_WORDS] :
@@ -781,15 +781,64 @@ void rdcfb_ops_apply_locked(struct rdcfb_chip *chip)
 			oq->buf[i] = oq->ring[(oq->head + i) % RDCFB_OPQ_WORDS];
 		oq->head = (oq->head + n) % RDCFB_OPQ_WORDS;
 		oq->count -= n;
-		rdcfb_spin_unlock(&oq->lock, flags, oq->t0, &chip->irqoff);
+		rdc_kchip_spin_unlock(&oq->lock, flags, oq->t0, &chip->irqoff);
 		if (n < RDCFB_OP_HDR_WORDS)
 			break;
 		memcpy(&op, oq->buf, sizeof(op));
 		op.words = n - RDCFB_OP_HDR_WORDS;
-		rdcfb_op_run(chip->info->par, &op,
+		rdcfb_op_run(rdcfb_dev_of(chip)->info->par, &op,
 			     oq->buf + RDCFB_OP_HDR_WORDS);
 		cond_resched();
 	}
+}
+
+/* The host's before_use hook: the queue goes to the chip first. */
+static void rdcfb_before_use(struct rdc_kchip *chip)
+{
+	struct rdcfb_dev *rd = rdcfb_dev_of(chip);
+
+	if (READ_ONCE(rd->opq.count) && rd->info)
+		rdcfb_ops_apply_locked(chip);
+}
+
+const struct rdc_kchip_hooks rdcfb_hooks = {
+	.before_use = rdcfb_before_use,
+};
+
+/* The fb-op queue's worker: for work queued where nobody could apply it. */
+static void rdcfb_opq_work(struct work_struct *work)
+{
+	struct rdcfb_dev *rd = container_of(work, struct rdcfb_dev, opq.work);
+
+	rdc_kchip_lock(&rd->chip);
+	rdc_kchip_unlock(&rd->chip);
+}
+
+int rdcfb_opq_init(struct rdcfb_dev *rd)
+{
+	struct rdcfb_opq *oq = &rd->opq;
+
+	spin_lock_init(&oq->lock);
+	INIT_WORK(&oq->work, rdcfb_opq_work);
+	oq->ring = vmalloc(array_size(RDCFB_OPQ_WORDS, sizeof(u32)));
+	oq->buf = kmalloc_array(RDCFB_OP_MAX_WORDS, sizeof(u32), GFP_KERNEL);
+	if (!oq->ring || !oq->buf) {
+		rdcfb_opq_free(rd);
+		return -ENOMEM;
+	}
+	return 0;
+}
+
+/* No fb_ops can come any more (the framebuffer is unregistered). */
+void rdcfb_opq_free(struct rdcfb_dev *rd)
+{
+	struct rdcfb_opq *oq = &rd->opq;
+
+	cancel_work_sync(&oq->work);
+	kfree(oq->buf);
+	vfree(oq->ring);
+	oq->buf = NULL;
+	oq->ring = NULL;
 }
 
 /* ---- fb_ops: drawing ----------------------------------------------------- */
@@ -916,21 +965,21 @@ void rdcfb_blit(struct fb_info *info, const struct fb_image *img)
 int rdcfb_sync(struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
-	struct rdcfb_chip *chip = par->chip;
+	struct rdc_kchip *chip = par->chip;
 
 	if (!preemptible())
 		return 0;
-	rdcfb_chip_lock(chip);
+	rdc_kchip_lock(chip);
 	if ((chip->hw.control & RDC_CONTROL_DP_EN) &&
 	    !(chip->hw.dp_status & RDC_STATUS_DP_HALTED))
-		rdcfb_drain_locked(chip);
-	rdcfb_chip_unlock(chip);
+		rdc_kchip_drain_locked(chip);
+	rdc_kchip_unlock(chip);
 	return 0;
 }
 
 /* ---- Private ioctls ------------------------------------------------------ */
 
-static int rdcfb_ioc_reg(struct rdcfb_chip *chip, unsigned int cmd,
+static int rdcfb_ioc_reg(struct rdc_kchip *chip, unsigned int cmd,
 			 void __user *arg)
 {
 	struct rdcfb_reg r;
@@ -940,14 +989,14 @@ static int rdcfb_ioc_reg(struct rdcfb_chip *chip, unsigned int cmd,
 	if (r.reg % sizeof(u32) || r.reg >= RDC_REG_WINDOW)
 		return -EINVAL;
 	if (cmd == RDCFB_IOC_REG_WRITE) {
-		rdcfb_reg_write(chip, r.reg, r.val);
+		rdc_kchip_reg_write(chip, r.reg, r.val);
 		return 0;
 	}
-	r.val = rdcfb_reg_read(chip, r.reg);
+	r.val = rdc_kchip_reg_read(chip, r.reg);
 	return copy_to_user(arg, &r, sizeof(r)) ? -EFAULT : 0;
 }
 
-static int rdcfb_ioc_submit(struct rdcfb_chip *chip, void __user *arg)
+static int rdcfb_ioc_submit(struct rdc_kchip *chip, void __user *arg)
 {
 	struct rdcfb_submit s;
 	u32 *words;
@@ -977,13 +1026,13 @@ static int rdcfb_ioc_submit(struct rdcfb_chip *chip, void __user *arg)
 			ret = -EFAULT;
 		goto out;
 	}
-	ret = rdcfb_chip_submit(chip, words, s.count);
+	ret = rdc_kchip_submit(chip, words, s.count);
 out:
 	kvfree(words);
 	return ret;
 }
 
-static int rdcfb_ioc_frame(struct rdcfb_chip *chip, void __user *arg)
+static int rdcfb_ioc_frame(struct rdc_kchip *chip, void __user *arg)
 {
 	struct rdcfb_frame f;
 	size_t bytes;
@@ -994,7 +1043,7 @@ static int rdcfb_ioc_frame(struct rdcfb_chip *chip, void __user *arg)
 	if (f.reserved)
 		return -EINVAL;
 	mutex_lock(&chip->snap_lock);
-	ret = rdcfb_chip_snapshot(chip);
+	ret = rdc_kchip_snapshot(chip);
 	if (ret) {
 		f.seq = 0;
 		f.width = 0;
@@ -1022,8 +1071,9 @@ static int rdcfb_ioctl(struct fb_info *info, unsigned int cmd,
 		       unsigned long arg)
 {
 	struct rdcfb_par *par = info->par;
-	struct rdcfb_chip *chip = par->chip;
+	struct rdc_kchip *chip = par->chip;
 	void __user *argp = (void __user *)arg;
+	struct rdc_kchip_counters kc;
 	struct rdcfb_counters c;
 	struct rdcfb_wait w;
 	struct rdcfb_step st;
@@ -1035,7 +1085,7 @@ static int rdcfb_ioctl(struct fb_info *info, unsigned int cmd,
 	case FBIO_WAITFORVSYNC:
 		if (get_user(crtc, (u32 __user *)argp))
 			return -EFAULT;
-		return crtc ? -ENODEV : rdcfb_chip_vsync(chip);
+		return crtc ? -ENODEV : rdc_kchip_vsync(chip);
 	case RDCFB_IOC_REG_READ:
 	case RDCFB_IOC_REG_WRITE:
 		return rdcfb_ioc_reg(chip, cmd, argp);
@@ -1047,13 +1097,24 @@ static int rdcfb_ioctl(struct fb_info *info, unsigned int cmd,
 		/* the driver's own waits (vsync, SUBMIT) are not capped */
 		if (w.budget > RDCFB_MAX_CYCLES)
 			return -EINVAL;
-		return rdcfb_chip_wait(chip, &w);
+		return rdc_kchip_wait(chip, &w);
 	case RDCFB_IOC_STEP:
 		if (copy_from_user(&st, argp, sizeof(st)))
 			return -EFAULT;
-		return rdcfb_chip_step(chip, st.cycles);
+		return rdc_kchip_step(chip, st.cycles);
 	case RDCFB_IOC_COUNTERS:
-		rdcfb_chip_counters(chip, &c);
+		rdc_kchip_counters(chip, &kc);
+		c = (struct rdcfb_counters){
+			.now = kc.now,
+			.busy = kc.busy,
+			.stall = kc.stall,
+			.pixels = kc.pixels,
+			.cmds = kc.cmds,
+			.last_cycles = kc.last_cycles,
+			.last_opcode = kc.last_opcode,
+			.fence = kc.fence,
+			.frames = (u32)kc.frames,
+		};
 		return copy_to_user(argp, &c, sizeof(c)) ? -EFAULT : 0;
 	case RDCFB_IOC_FRAME:
 		return rdcfb_ioc_frame(chip, argp);
@@ -1074,9 +1135,11 @@ static int rdcfb_compat_ioctl(struct fb_info *info, unsigned int cmd,
 static void rdcfb_destroy(struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
+	struct rdcfb_dev *rd = rdcfb_dev_of(par->chip);
 
-	rdcfb_chip_free(par->chip);
-	kfree(par->chip);
+	rdcfb_opq_free(rd);
+	rdc_kchip_free(&rd->chip);
+	kfree(rd);
 	fb_dealloc_cmap(&info->cmap);
 	framebuffer_release(info);
 }
@@ -1115,7 +1178,7 @@ int rdcfb_fb_setup(struct fb_info *info, const char *mode)
 	if (sscanf(mode, "%ux%u-%u", &w, &h, &bpp) < 2 ||
 	    rdcfb_preset_of(w, h, &t))
 		return -EINVAL;
-	par->chip->info = info;
+	rdcfb_dev_of(par->chip)->info = info;
 	info->fbops = &rdcfb_ops;
 	info->screen_buffer = par->chip->vram;
 	info->screen_size = par->chip->hw.vram_size;

@@ -44,7 +44,7 @@ static struct platform_device *rdcfb_pdev[RDCFB_MAX_DEVICES];
 
 /* ---- sysfs: the counters ------------------------------------------------- */
 
-static struct rdcfb_chip *rdcfb_chip_of(struct device *dev)
+static struct rdc_kchip *rdc_kchip_of(struct device *dev)
 {
 	struct fb_info *info = dev_get_drvdata(dev);
 
@@ -55,9 +55,9 @@ static struct rdcfb_chip *rdcfb_chip_of(struct device *dev)
 	static ssize_t name##_show(struct device *dev, \
 				   struct device_attribute *attr, char *buf) \
 	{ \
-		struct rdcfb_counters c; \
+		struct rdc_kchip_counters c; \
 \
-		rdcfb_chip_counters(rdcfb_chip_of(dev), &c); \
+		rdc_kchip_counters(rdc_kchip_of(dev), &c); \
 		return sysfs_emit(buf, "%llu\n", (unsigned long long)(expr)); \
 	} \
 	static DEVICE_ATTR_RO(name)
@@ -73,10 +73,10 @@ RDCFB_COUNTER_ATTR(now, c.now);
 	static ssize_t name##_show(struct device *dev, \
 				   struct device_attribute *attr, char *buf) \
 	{ \
-		struct rdcfb_chip *chip = rdcfb_chip_of(dev); \
-		struct rdcfb_pin_stats s; \
+		struct rdc_kchip *chip = rdc_kchip_of(dev); \
+		struct rdc_kchip_pin_stats s; \
 \
-		rdcfb_gpio_stats(READ_ONCE(chip->gpio), &s); \
+		rdc_kgpio_stats(READ_ONCE(chip->gpio), &s); \
 		return sysfs_emit(buf, "%llu\n", (unsigned long long)s.field); \
 	} \
 	static DEVICE_ATTR_RO(name)
@@ -89,11 +89,11 @@ RDCFB_PIN_ATTR(pin_late_avg_ns, late_avg_ns);
 static ssize_t frame_crc_show(struct device *dev, struct device_attribute *attr,
 			      char *buf)
 {
-	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
+	struct rdc_kchip *chip = rdc_kchip_of(dev);
 	ssize_t ret;
 
 	mutex_lock(&chip->snap_lock);
-	ret = rdcfb_chip_snapshot(chip);
+	ret = rdc_kchip_snapshot(chip);
 	if (!ret)
 		ret = sysfs_emit(buf, "%08x %u %ux%u\n", chip->snap_crc,
 				 (u32)chip->snap_seq, chip->snap_w,
@@ -107,7 +107,7 @@ static DEVICE_ATTR_RO(frame_crc);
 static ssize_t irqs_off_max_ns_show(struct device *dev,
 				    struct device_attribute *attr, char *buf)
 {
-	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
+	struct rdc_kchip *chip = rdc_kchip_of(dev);
 
 	return sysfs_emit(buf, "%lld\n",
 			  (long long)atomic64_read(&chip->irqoff.max_ns));
@@ -117,9 +117,9 @@ static ssize_t irqs_off_max_ns_store(struct device *dev,
 				     struct device_attribute *attr,
 				     const char *buf, size_t count)
 {
-	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
+	struct rdc_kchip *chip = rdc_kchip_of(dev);
 
-	rdcfb_irqoff_reset(&chip->irqoff);
+	rdc_kchip_irqoff_reset(&chip->irqoff);
 	return count;
 }
 static DEVICE_ATTR_RW(irqs_off_max_ns);
@@ -127,7 +127,7 @@ static DEVICE_ATTR_RW(irqs_off_max_ns);
 static ssize_t irqs_off_max_at_show(struct device *dev,
 				    struct device_attribute *attr, char *buf)
 {
-	struct rdcfb_chip *chip = rdcfb_chip_of(dev);
+	struct rdc_kchip *chip = rdc_kchip_of(dev);
 
 	return sysfs_emit(buf, "%pS\n", (void *)READ_ONCE(chip->irqoff.max_at));
 }
@@ -139,7 +139,7 @@ static ssize_t fb_dropped_show(struct device *dev,
 {
 	return sysfs_emit(
 		buf, "%llu\n",
-		(unsigned long long)rdcfb_ops_dropped(rdcfb_chip_of(dev)));
+		(unsigned long long)rdcfb_ops_dropped(rdc_kchip_of(dev)));
 }
 static DEVICE_ATTR_RO(fb_dropped);
 
@@ -166,18 +166,24 @@ ATTRIBUTE_GROUPS(rdcfb);
 
 static int rdcfb_probe(struct platform_device *pdev)
 {
-	struct rdcfb_chip *chip;
+	struct rdcfb_dev *rd;
+	struct rdc_kchip *chip;
 	struct rdcfb_par *par;
 	struct fb_info *info;
 	int ret;
 
-	chip = kzalloc(sizeof(*chip), GFP_KERNEL);
-	if (!chip)
+	rd = kzalloc(sizeof(*rd), GFP_KERNEL);
+	if (!rd)
 		return -ENOMEM;
-	ret = rdcfb_chip_init(chip, &pdev->dev, rdcfb_vram_bytes,
-			      rdcfb_stepped);
+	chip = &rd->chip;
+	chip->hooks = &rdcfb_hooks;
+	ret = rdcfb_opq_init(rd);
 	if (ret)
 		goto err_chip;
+	ret = rdc_kchip_init(chip, &pdev->dev, rdcfb_vram_bytes,
+			     rdcfb_stepped);
+	if (ret)
+		goto err_opq;
 	info = framebuffer_alloc(sizeof(*par), &pdev->dev);
 	if (!info) {
 		ret = -ENOMEM;
@@ -192,14 +198,14 @@ static int rdcfb_probe(struct platform_device *pdev)
 		goto err_info;
 	}
 	platform_set_drvdata(pdev, info);
-	rdcfb_chip_start(chip);
+	rdc_kchip_start(chip);
 	/* from here on info owns chip: fb_destroy frees both */
 	ret = register_framebuffer(info);
 	if (ret)
 		goto err_stop;
 	rdcfb_bench_init(info);
 	/* a framebuffer without its pins as GPIO lines is still one */
-	ret = rdcfb_gpio_register(chip, &pdev->dev, pdev->id);
+	ret = rdc_kgpio_register(chip, &pdev->dev);
 	if (ret)
 		dev_warn(&pdev->dev, "no GPIO lines for the pins: %d\n", ret);
 	fb_info(info, "%s: %ux%u, %u KiB VRAM, %s clock\n", info->fix.id,
@@ -208,14 +214,16 @@ static int rdcfb_probe(struct platform_device *pdev)
 	return 0;
 
 err_stop:
-	rdcfb_chip_stop(chip);
+	rdc_kchip_stop(chip);
 	fb_dealloc_cmap(&info->cmap);
 err_info:
 	framebuffer_release(info);
 err_free:
-	rdcfb_chip_free(chip);
+	rdc_kchip_free(chip);
+err_opq:
+	rdcfb_opq_free(rd);
 err_chip:
-	kfree(chip);
+	kfree(rd);
 	return ret;
 }
 
@@ -232,8 +240,8 @@ void rdcfb_remove(struct platform_device *pdev)
 	struct rdcfb_par *par = info->par;
 
 	rdcfb_bench_exit(info);
-	rdcfb_chip_stop(par->chip);
-	rdcfb_gpio_unregister(par->chip);
+	rdc_kchip_stop(par->chip);
+	rdc_kgpio_unregister(par->chip);
 	unregister_framebuffer(info);
 }
 
@@ -308,7 +316,7 @@ static void __exit rdcfb_exit(void)
 {
 	rdcfb_unregister_devices();
 	platform_driver_unregister(&rdcfb_driver);
-	rdcfb_gpio_module_exit();
+	rdc_kgpio_module_exit();
 	rdcfb_bench_module_exit();
 }
 
