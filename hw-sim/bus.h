@@ -39,7 +39,11 @@
  * The fetch leaves its last row open.  A fetch that finds the previous
  * one still on the bus (a line that takes longer to read than to show)
  * starts when it ends; lines whose bytes would leave VRAM are not fetched
- * (they show black) and take no bus time.
+ * (they show black) and take no bus time.  With the ARGB8888 cursor on
+ * the line, the window goes on with the cursor row's S * 4 bytes at
+ * CURSOR_BASE + (line - y) * S * 4, read by the same formula from the row
+ * the line's read left open (a row leaving VRAM is not read); the 2 bpp
+ * cursor's image, copied at vblank, is not charged.
  *
  * Command fetch: a FIFO word costs RDC_T_FIFO_WORD; ring words are VRAM
  * reads by the formula.  Each command costs RDC_T_DECODE once it is fetched.

@@ -3,7 +3,8 @@
 /*
  * CRTC: mode presets and validation, the line-by-line scanout state machine
  * (fetch, vblank latch, line compare), pixel format conversion through the
- * CLUT and the hardware cursor overlay.
+ * CLUT, the gamma of direct colour and the hardware cursor overlay (2 bpp
+ * or ARGB8888).
  *
  * Scanout is lazy: nothing happens until someone looks (a register read,
  * a DP bus access, the run loop), and then every event whose time has come
@@ -157,12 +158,58 @@ static void crtc_latch(struct rdc_hw *hw, bool at_vblank)
 	}
 	c->cur_base = c->fb_base;
 	c->cur_stride = c->fb_stride;
-	if ((uint64_t)c->cursor_base + RDC_CURSOR_BYTES <= hw->vram_size)
-		rdc_memcpy(c->cursor_img, hw->vram + c->cursor_base,
-			   RDC_CURSOR_BYTES);
-	else
-		rdc_memset(c->cursor_img, 0, RDC_CURSOR_BYTES);
+	c->cur_gamma = (hw->control & RDC_CONTROL_GAMMA_EN) != 0;
+	c->cur_cursor_ctrl = c->cursor_ctrl;
+	c->cur_cursor_base = c->cursor_base;
+	/*
+	 * The 2 bpp image is latched whole; ARGB8888 rows are fetched a line
+	 * at a time (cursor_argb_row).
+	 */
+	if (FIELD_GET(RDC_CURSOR_CTRL_FMT, c->cur_cursor_ctrl) ==
+	    RDC_CURSOR_FMT_2BPP) {
+		if ((uint64_t)c->cursor_base + RDC_CURSOR_BYTES <=
+		    hw->vram_size)
+			rdc_memcpy(c->cursor_img, hw->vram + c->cursor_base,
+				   RDC_CURSOR_BYTES);
+		else
+			rdc_memset(c->cursor_img, 0, RDC_CURSOR_BYTES);
+	}
 	rdc_clut_latch(hw);
+}
+
+/* Is the cursor on, with ARGB8888 latched? */
+static inline bool cursor_argb(const struct rdc_hw *hw)
+{
+	return (hw->control & RDC_CONTROL_CURSOR_EN) &&
+	       FIELD_GET(RDC_CURSOR_CTRL_FMT, hw->crtc.cur_cursor_ctrl) ==
+		       RDC_CURSOR_FMT_ARGB8888;
+}
+
+/*
+ * The VRAM address of the ARGB8888 cursor row that active line n of `tm`
+ * shows, fetched at the line's start; false if the line shows none: the
+ * cursor off or 2 bpp, not on this line, wholly left or right of the
+ * display, or the row leaving VRAM (then it is not fetched and shows
+ * nothing).
+ */
+static inline bool cursor_argb_row(const struct rdc_hw *hw,
+				   const struct rdc_timing *tm, uint32_t n,
+				   uint64_t *addr)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	int32_t size, cx, cy;
+	int64_t dy;
+
+	if (!cursor_argb(hw))
+		return false;
+	size = (int32_t)rdc_cursor_size(c->cur_cursor_ctrl);
+	cx = (int16_t)(c->cursor_pos & 0xffff);
+	cy = (int16_t)(c->cursor_pos >> 16);
+	dy = (int64_t)n - cy;
+	if (dy < 0 || dy >= size || cx <= -size || cx >= (int32_t)tm->h_display)
+		return false;
+	*addr = c->cur_cursor_base + (uint64_t)dy * (uint32_t)size * 4;
+	return *addr + (uint32_t)size * 4 <= hw->vram_size;
 }
 
 /* VRAM range of active line n; false if it leaves VRAM (scans black). */
@@ -190,7 +237,8 @@ int rdc_crtc_next_fetches(const struct rdc_hw *hw)
 		if (c->mode_pending)
 			tm = &c->pending;
 	}
-	return n < tm->v_display && line_range(hw, tm, n, &addr, &bytes);
+	return n < tm->v_display && (line_range(hw, tm, n, &addr, &bytes) ||
+				     cursor_argb_row(hw, tm, n, &addr));
 }
 
 /*
@@ -322,6 +370,71 @@ static void convert_line(const struct rdc_hw *hw, uint32_t *out,
 	}
 }
 
+/*
+ * GAMMA_EN: each component of a direct-colour pixel through the CLUT's
+ * entry of its value, in that entry's own component.
+ */
+static void gamma_line(const uint32_t *clut, uint32_t *out, uint32_t w)
+{
+	uint32_t x;
+
+	for (x = 0; x < w; x++) {
+		uint32_t v = out[x];
+
+		out[x] = (clut[(v >> 16) & 0xff] & 0xff0000u) |
+			 (clut[(v >> 8) & 0xff] & 0x00ff00u) |
+			 (clut[v & 0xff] & 0x0000ffu);
+	}
+}
+
+/*
+ * One component of a premultiplied cursor pixel over the screen's: c +
+ * d (255 - a) / 255 rounded to nearest, saturated at 255 (a component
+ * above its alpha is not premultiplied).  With t = d (255 - a) + 128,
+ * ((t >> 8) + t) >> 8 is (d (255 - a) + 127) / 255 for every 8-bit d and
+ * a, without the division.
+ */
+static inline uint32_t cursor_over(uint32_t c, uint32_t d, uint32_t a)
+{
+	uint32_t t = d * (255 - a) + 128;
+	uint32_t v = c + (((t >> 8) + t) >> 8);
+
+	return v > 255 ? 255 : v;
+}
+
+/* The ARGB8888 cursor's row at VRAM `addr` over line `out`, clipped. */
+static void cursor_argb_line(const struct rdc_hw *hw, uint32_t *out, uint32_t w,
+			     uint64_t addr)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	const uint8_t *row = hw->vram + addr;
+	int32_t size = (int32_t)rdc_cursor_size(c->cur_cursor_ctrl);
+	int32_t cx = (int16_t)(c->cursor_pos & 0xffff);
+	int32_t i = cx < 0 ? -cx : 0;
+	int32_t end = RDC_MIN(size, (int32_t)w - cx);
+
+	for (; i < end; i++) {
+		uint32_t p = rdc_ld32(row + 4 * i), a = p >> 24;
+		uint32_t d = out[cx + i], r, g, b;
+
+		r = cursor_over((p >> 16) & 0xff, (d >> 16) & 0xff, a);
+		g = cursor_over((p >> 8) & 0xff, (d >> 8) & 0xff, a);
+		b = cursor_over(p & 0xff, d & 0xff, a);
+		out[cx + i] = r << 16 | g << 8 | b;
+	}
+}
+
+/* The ARGB8888 cursor row's fetch: after the line's, in its window. */
+static void cursor_argb_fetch(struct rdc_hw *hw, uint64_t when, uint64_t addr)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint64_t start = RDC_MAX(when, c->fetch_end);
+	uint32_t bytes = rdc_cursor_size(c->cur_cursor_ctrl) * 4;
+
+	c->fetch_end =
+		start + rdc_bus_read_cost(&hw->bus.open_row, addr, bytes);
+}
+
 static void cursor_line(const struct rdc_hw *hw, uint32_t *out, uint32_t n,
 			uint32_t w)
 {
@@ -352,9 +465,10 @@ static void cursor_line(const struct rdc_hw *hw, uint32_t *out, uint32_t n,
 }
 
 /*
- * Start of active line n: the CRTC reads it and converts it at once.  The
- * bus sees every fetch; the conversion is skipped (`hidden`) for a frame
- * that nobody can ever look at.  While BL_EN is low the panel is dark: the
+ * Start of active line n: the CRTC reads it (and the ARGB8888 cursor's
+ * row on it, in the same window) and converts it at once.  The bus sees
+ * every fetch; the conversion is skipped (`hidden`) for a frame that
+ * nobody can ever look at.  While BL_EN is low the panel is dark: the
  * line is fetched and timed as ever, and shows black (cursor included).
  */
 static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
@@ -363,30 +477,44 @@ static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t w = c->cur.h_display, bytes;
 	uint32_t *out = hw->frame[hw->frame_back] + (size_t)n * w;
-	uint64_t addr;
-	bool lit;
+	uint64_t addr, cursor_addr = 0;
+	bool lit, argb = cursor_argb_row(hw, &c->cur, n, &cursor_addr);
 
 	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
 		uint64_t start = RDC_MAX(when, c->fetch_end);
 
 		c->fetch_end = start + rdc_bus_read_cost(&hw->bus.open_row,
 							 addr, bytes);
+		if (argb)
+			cursor_argb_fetch(hw, when, cursor_addr);
 		if (hidden)
 			return;
 		/* read past the hidden-frame return: that path is the hot one */
 		lit = hw->pins_in & RDC_PIN_BL_EN;
-		if (lit)
+		if (lit) {
 			convert_line(hw, out, hw->vram + addr, w,
 				     c->cur_format);
-		else
+			if (c->cur_gamma &&
+			    !rdc_format_indexed(c->cur_format)) {
+				rdc_stream_fence(); /* read after the stores */
+				gamma_line(hw->clut, out, w);
+			}
+		} else {
 			rdc_memset(out, 0, (size_t)w * sizeof(*out));
+		}
 	} else {
+		if (argb)
+			cursor_argb_fetch(hw, when, cursor_addr);
 		lit = hw->pins_in & RDC_PIN_BL_EN;
 		rdc_memset(out, 0, (size_t)w * sizeof(*out));
 	}
 	if (lit && (hw->control & RDC_CONTROL_CURSOR_EN)) {
 		rdc_stream_fence(); /* the cursor's stores after the line's */
-		cursor_line(hw, out, n, w);
+		if (argb)
+			cursor_argb_line(hw, out, w, cursor_addr);
+		else if (FIELD_GET(RDC_CURSOR_CTRL_FMT, c->cur_cursor_ctrl) ==
+			 RDC_CURSOR_FMT_2BPP)
+			cursor_line(hw, out, n, w);
 	}
 }
 

@@ -11,7 +11,7 @@
 #define CONTROL_RW_BITS \
 	(RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_RING_EN | \
 	 RDC_CONTROL_HALT_ON_ERR | RDC_CONTROL_CLUT_LATCH | \
-	 RDC_CONTROL_CURSOR_EN)
+	 RDC_CONTROL_CURSOR_EN | RDC_CONTROL_GAMMA_EN)
 #define PINS_IN (RDC_PIN_RESET_N | RDC_PIN_BL_EN)
 
 void rdc_hw_init(struct rdc_hw *hw, const struct rdc_hw_config *cfg,
@@ -411,6 +411,8 @@ static uint32_t reg_read(struct rdc_hw *hw, uint32_t reg)
 		return c->cursor_fg;
 	case RDC_REG_CURSOR_BG:
 		return c->cursor_bg;
+	case RDC_REG_CURSOR_CTRL:
+		return c->cursor_ctrl;
 	case RDC_REG_FIFO_DATA:
 		return 0;
 	case RDC_REG_FIFO_FREE:
@@ -574,6 +576,13 @@ static bool crtc_side_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
 		return true;
 	case RDC_REG_CURSOR_BG:
 		c->cursor_bg = val & RGB_MASK;
+		return true;
+	case RDC_REG_CURSOR_CTRL:
+		/* an unknown format is refused whole; other bits drop */
+		if (FIELD_GET(RDC_CURSOR_CTRL_FMT, val) >= RDC_CURSOR_FMT_COUNT)
+			rdc_port_error(hw, RDC_ERR_REG, reg);
+		else
+			c->cursor_ctrl = val & RDC_CURSOR_CTRL_MASK;
 		return true;
 	default:
 		return false;

@@ -95,7 +95,11 @@ struct rdc_crtc {
 	uint32_t line_compare;
 	uint32_t preset;
 	uint32_t cursor_base, cursor_pos, cursor_fg, cursor_bg;
-	uint8_t cursor_img[RDC_CURSOR_BYTES]; /* latched at vblank */
+	uint32_t cursor_ctrl;		      /* CURSOR_CTRL */
+	uint8_t cursor_img[RDC_CURSOR_BYTES]; /* latched at vblank (2 bpp) */
+	/* latched at vblank: CURSOR_CTRL, CURSOR_BASE, CONTROL.GAMMA_EN */
+	uint32_t cur_cursor_ctrl, cur_cursor_base;
+	int cur_gamma;
 	int running;	       /* a mode is in force and scanout is enabled */
 	uint64_t frame_start;  /* time line 0 of this frame starts */
 	uint64_t frame_cycles; /* core cycles a frame lasts */

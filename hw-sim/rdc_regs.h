@@ -25,7 +25,12 @@
 /* clang-format off */
 
 #define RDC_ID_VALUE 0x31434452u /* "RDC1" little-endian */
-#define RDC_VERSION_VALUE 0x00010000u /* 1.0 */
+/*
+ * 1.1 added the ARGB8888 cursor (CURSOR_CTRL) and the gamma of direct
+ * colour (CONTROL.GAMMA_EN); on 1.0 CURSOR_CTRL is a hole in the map and
+ * CONTROL bit 6 reads 0
+ */
+#define RDC_VERSION_VALUE 0x00010001u
 #define RDC_REG_WINDOW 0x400u
 
 /* ---- Identification and control ------------------------------------- */
@@ -41,6 +46,12 @@
 #define   RDC_CONTROL_HALT_ON_ERR BIT(3) /* bad command halts the DP */
 #define   RDC_CONTROL_CLUT_LATCH BIT(4) /* CLUT writes apply at vblank */
 #define   RDC_CONTROL_CURSOR_EN BIT(5) /* hardware cursor overlay */
+/*
+ * latched at vblank: RGB565, RGB888 and XRGB8888 pixels go through the
+ * CLUT a component at a time, R' = CLUT[R].r, G' = CLUT[G].g, B' =
+ * CLUT[B].b (565's components widened first); no effect on indexed formats
+ */
+#define   RDC_CONTROL_GAMMA_EN BIT(6)
 #define   RDC_CONTROL_RESUME BIT(30) /* W: leave the halted state */
 #define   RDC_CONTROL_SOFT_RESET BIT(31) /* W: reset the chip, self-clearing */
 #define   RDC_CONTROL_RESET_VALUE \
@@ -132,16 +143,46 @@
 
 /* ---- Hardware cursor ---------------------------------------------------- */
 /*
- * 32x32 pixels, 2 bpp (8 bytes a row, pixel 0 in bits 7:6 of byte 0), read
- * from VRAM at CURSOR_BASE when the CRTC latches at vblank:
- *   0 transparent, 1 CURSOR_FG, 2 CURSOR_BG, 3 invert the screen pixel.
+ * CURSOR_CTRL's format, latched at vblank with CURSOR_BASE:
+ *  2BPP (reset): 32x32 pixels, 2 bpp (8 bytes a row, pixel 0 in bits 7:6
+ *    of byte 0), the image read from VRAM at CURSOR_BASE when the CRTC
+ *    latches at vblank:
+ *      0 transparent, 1 CURSOR_FG, 2 CURSOR_BG, 3 invert the screen pixel.
+ *  ARGB8888: S x S pixels, S = 32, or 64 with SIZE64, each the 32-bit
+ *    word 0xAARRGGBB with premultiplied alpha, row r at CURSOR_BASE +
+ *    r * S * 4.  The row a line shows is fetched from VRAM at that line's
+ *    start (as the framebuffer is) and laid over the line after the CLUT
+ *    and gamma, per component: out = min(255, c + (dst * (255 - a) + 127)
+ *    / 255).  CURSOR_FG and CURSOR_BG play no part.
+ * A format value of RDC_CURSOR_FMT_COUNT or more is refused with
+ * RDC_ERR_REG (the register keeps its value).
  */
 #define RDC_REG_CURSOR_BASE 0x1a0 /* RW latched */
 #define RDC_REG_CURSOR_POS 0x1a4 /* RW  [15:0] x, [31:16] y, signed */
 #define RDC_REG_CURSOR_FG 0x1a8 /* RW  0x00RRGGBB */
 #define RDC_REG_CURSOR_BG 0x1ac /* RW  0x00RRGGBB */
+#define RDC_REG_CURSOR_CTRL 0x1b0 /* RW latched  image format and size */
+#define   RDC_CURSOR_CTRL_FMT GENMASK(1, 0) /* enum rdc_cursor_format */
+#define   RDC_CURSOR_CTRL_SIZE64 BIT(8) /* ARGB8888: 64x64, else 32x32 */
+#define   RDC_CURSOR_CTRL_MASK (RDC_CURSOR_CTRL_FMT | RDC_CURSOR_CTRL_SIZE64)
 #define RDC_CURSOR_SIZE 32
 #define RDC_CURSOR_BYTES (RDC_CURSOR_SIZE * RDC_CURSOR_SIZE / 4)
+#define RDC_CURSOR_ARGB_MAX 64 /* the larger ARGB8888 size */
+
+enum rdc_cursor_format {
+	RDC_CURSOR_FMT_2BPP = 0,
+	RDC_CURSOR_FMT_ARGB8888 = 1,
+	RDC_CURSOR_FMT_COUNT
+};
+
+/* Width and height of the cursor CURSOR_CTRL value `ctrl` shows. */
+static inline uint32_t rdc_cursor_size(uint32_t ctrl)
+{
+	if (FIELD_GET(RDC_CURSOR_CTRL_FMT, ctrl) == RDC_CURSOR_FMT_ARGB8888 &&
+	    (ctrl & RDC_CURSOR_CTRL_SIZE64))
+		return RDC_CURSOR_ARGB_MAX;
+	return RDC_CURSOR_SIZE;
+}
 
 /* ---- Command queue ------------------------------------------------------ */
 /*
@@ -208,6 +249,11 @@ enum rdc_format {
 	RDC_FMT_XRGB8888 = 6,
 	RDC_FMT_COUNT
 };
+/*
+ * ARGB8888 (0xAARRGGBB) scans out as XRGB8888, the alpha byte ignored, as
+ * a KMS primary plane shows it: the same format, not a value of its own
+ */
+#define RDC_FMT_ARGB8888 RDC_FMT_XRGB8888
 
 static inline unsigned int rdc_format_bpp(unsigned int fmt)
 {

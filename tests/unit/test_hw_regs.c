@@ -3,7 +3,7 @@
 /*
  * RDC-1 register file: reset values, access semantics (R, RW, W, W1C),
  * bad offsets, the IRQ pin, the pins register and RESET_N, the CLUT port,
- * counters and MODE_PRESET.
+ * counters and MODE_PRESET, CURSOR_CTRL and CONTROL.GAMMA_EN (1.1).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -558,6 +558,56 @@ static void test_port_reg_write(void **state)
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_ERR_CODE), RDC_ERR_NONE);
 }
 
+/*
+ * The 1.1 registers: CURSOR_CTRL keeps its two fields and refuses an
+ * unknown format whole, from the host and from REG_WRITE; GAMMA_EN is a
+ * CONTROL bit like the others; a soft reset clears both.
+ */
+static void test_cursor_ctrl_and_gamma_bit(void **state)
+{
+	const uint32_t argb64 =
+		FIELD_PREP(RDC_CURSOR_CTRL_FMT, RDC_CURSOR_FMT_ARGB8888) |
+		RDC_CURSOR_CTRL_SIZE64;
+	struct fx *f = *state;
+	struct rdc_hw *hw = &f->hw;
+
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_VERSION), 0x00010001);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_CURSOR_CTRL), 0);
+	/* bits outside the fields drop */
+	rdc_hw_write(hw, RDC_REG_CURSOR_CTRL, argb64 | 0xfffffe00u | BIT(4));
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_CURSOR_CTRL), argb64);
+	assert_int_equal(rdc_cursor_size(argb64), 64);
+	assert_int_equal(rdc_cursor_size(argb64 & ~RDC_CURSOR_CTRL_SIZE64), 32);
+	/* SIZE64 does not make the 2 bpp cursor larger */
+	assert_int_equal(rdc_cursor_size(RDC_CURSOR_CTRL_SIZE64), 32);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_ERR_CODE), RDC_ERR_NONE);
+	/* formats 2 and 3 do not exist: refused, the old value stays */
+	for (uint32_t fmt = RDC_CURSOR_FMT_COUNT; fmt < 4; fmt++) {
+		rdc_hw_write(hw, RDC_REG_CURSOR_CTRL,
+			     FIELD_PREP(RDC_CURSOR_CTRL_FMT, fmt));
+		assert_int_equal(rdc_hw_read(hw, RDC_REG_CURSOR_CTRL), argb64);
+		expect_reg_error(hw, RDC_REG_CURSOR_CTRL);
+	}
+	/* the command stream reaches it as it reaches the other cursor regs */
+	assert_int_equal(rdc_port_reg_write(hw, RDC_REG_CURSOR_CTRL, 0), 0);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_CURSOR_CTRL), 0);
+	assert_int_equal(rdc_port_reg_write(hw, RDC_REG_CURSOR_CTRL, 3), 0);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_CURSOR_CTRL), 0);
+	expect_reg_error(hw, RDC_REG_CURSOR_CTRL);
+
+	rdc_hw_write(hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_RESET_VALUE | RDC_CONTROL_GAMMA_EN);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_CONTROL),
+			 RDC_CONTROL_RESET_VALUE | RDC_CONTROL_GAMMA_EN);
+	rdc_hw_write(hw, RDC_REG_CURSOR_CTRL, argb64);
+	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_CONTROL),
+			 RDC_CONTROL_RESET_VALUE);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_CURSOR_CTRL), 0);
+	assert_int_equal(hw->crtc.cur_cursor_ctrl, 0);
+	assert_int_equal(hw->crtc.cur_gamma, 0);
+}
+
 struct trace_log {
 	int n;
 	uint64_t t[16];
@@ -649,6 +699,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_port_reg_write, setup,
 						teardown),
 		cmocka_unit_test_setup_teardown(test_trace, setup, teardown),
+		cmocka_unit_test_setup_teardown(test_cursor_ctrl_and_gamma_bit,
+						setup, teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
