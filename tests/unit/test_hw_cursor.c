@@ -518,6 +518,49 @@ static void test_fetch_cycles(void **state)
 }
 
 /*
+ * A framebuffer that leaves VRAM scans black and costs nothing; the
+ * cursor over it is still fetched, over black, and its row alone takes
+ * the bus.
+ */
+static void test_over_missing_lines(void **state)
+{
+	struct fx *f = *state;
+	struct rdc_hw *hw = &f->hw;
+	const int32_t px = 10, py = 5;
+	const uint32_t *p;
+
+	random_cursor(f, 32);
+	start_mode(hw);
+	rdc_hw_write(hw, RDC_REG_FB_BASE, 0xfffff000u);
+	rdc_hw_write(hw, RDC_REG_CURSOR_BASE, CUR_BASE);
+	rdc_hw_write(hw, RDC_REG_CURSOR_CTRL, argb_ctrl(32));
+	rdc_hw_write(hw, RDC_REG_CURSOR_POS, RDC_XY(px, py));
+	rdc_hw_write(hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_RESET_VALUE | RDC_CONTROL_CURSOR_EN);
+	p = grab_settled(hw);
+	for (uint32_t y = 0; y < SCR_H; y++)
+		for (uint32_t x = 0; x < SCR_W; x++) {
+			int32_t cx = (int32_t)x - px, cy = (int32_t)y - py;
+			uint32_t want = 0;
+
+			if (cx >= 0 && cx < 32 && cy >= 0 && cy < 32)
+				want = over(get32(f->vram + CUR_BASE +
+						  4 * (uint32_t)(cy * 32 + cx)),
+					    0);
+			assert_int_equal(p[y * SCR_W + x], want);
+		}
+	/* lines 6..36 follow a line whose window was a cursor row */
+	for (uint32_t n = 7; n < 37; n += 4) {
+		uint32_t row = (CUR_BASE + (n - 1 - py) * 128 + 127) / 2048;
+		uint64_t want = read_cost(&row, CUR_BASE + (n - py) * 128, 128);
+
+		assert_int_equal(measured_window(hw, n), want);
+	}
+	/* no cursor on the line: no fetch at all */
+	assert_int_equal(measured_window(hw, 40), 0);
+}
+
+/*
  * The 2 bpp cursor as it always was: latched at vblank, FG / BG / invert,
  * and its image costs no bus time (test_fetch_cycles).
  */
@@ -580,6 +623,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_rows_leaving_vram, setup,
 						teardown),
 		cmocka_unit_test_setup_teardown(test_fetch_cycles, setup,
+						teardown),
+		cmocka_unit_test_setup_teardown(test_over_missing_lines, setup,
 						teardown),
 		cmocka_unit_test_setup_teardown(test_2bpp_unchanged, setup,
 						teardown),
