@@ -54,10 +54,22 @@ static void usage(FILE *f)
 		"                 device (any URI) into a trace for replay,\n"
 		"                 why and diff; untimed but on sim:\n"
 		"  -h, --help  this text\n"
+		"  --version   rdcctl's release and librdc's\n"
 		"\n"
-		"The script format is described in docs/rdl.md.\n",
+		"The script format is described in rdl(5), the commands in "
+		"rdcctl(1).\n",
 		rdcctl_stream_usage, rdcctl_pins_usage, rdcctl_image_usage,
 		rdcctl_history_usage);
+}
+
+/* The release rdcctl was built as, and the librdc it runs on. */
+static void version(void)
+{
+	uint32_t v = rdc_version();
+
+	printf("rdcctl %u.%u.%u (librdc %u.%u.%u)\n", RDC_VERSION_MAJOR,
+	       RDC_VERSION_MINOR, RDC_VERSION_PATCH, RDC_VERSION_GET_MAJOR(v),
+	       RDC_VERSION_GET_MINOR(v), RDC_VERSION_GET_PATCH(v));
 }
 
 const char *rdcctl_record_path;
@@ -156,6 +168,9 @@ static int parse_args(int argc, char **argv, struct opts *o)
 
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
 			usage(stdout);
+			exit(0);
+		} else if (!strcmp(a, "--version")) {
+			version();
 			exit(0);
 		} else if (!strcmp(a, "--uri") || !strcmp(a, "--connect") ||
 			   !strcmp(a, "-o") || !strcmp(a, "--vcd")) {
