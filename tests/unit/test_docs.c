@@ -20,6 +20,7 @@
 #include <ctype.h>
 #include <dirent.h>
 #include <libgen.h>
+#include <limits.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -938,6 +939,133 @@ static void test_readme_example(void **state)
 	free(readme);
 }
 
+/* ---- The README's commands ---------------------------------------------- */
+
+/* The whole line of `text` that holds `what`, without its newline. */
+static char *line_with(const char *text, const char *what)
+{
+	const char *p = strstr(text, what), *a, *b;
+	char *s;
+
+	if (!p)
+		fail_msg("no '%s' in the document", what);
+	for (a = p; a > text && a[-1] != '\n'; a--)
+		;
+	b = strchr(p, '\n');
+	s = strndup(a, b ? (size_t)(b - a) : strlen(a));
+	assert_non_null(s);
+	return s;
+}
+
+/* `line` with each "build/rel/" made this build's directory. */
+static char *this_build(const char *line)
+{
+	size_t cap = strlen(line) * 4 + sizeof(bindir) * 8 + 1, n = 0;
+	char *s = malloc(cap);
+
+	assert_non_null(s);
+	for (const char *p = line; *p;) {
+		if (!strncmp(p, "build/rel/", 10)) {
+			n += (size_t)snprintf(s + n, cap - n, "%s/", bindir);
+			p += 10;
+		} else {
+			s[n++] = *p++;
+		}
+	}
+	s[n] = 0;
+	return s;
+}
+
+/*
+ * The README's still on demand, its two lines as they are (with this
+ * build's rdcd), three times in a fresh directory: rdcd survives the
+ * signal, writes one PNG and exits 0 on SIGTERM.  The wait for the PNG
+ * is bounded only so that a broken rdcd cannot hang the test.
+ */
+static void test_readme_still(void **state)
+{
+	char *readme = slurp("README.md");
+	char *l1 = line_with(readme, "--png shots,every=0");
+	char *l2 = line_with(readme, "kill -USR1 $!");
+	char *a = this_build(l1), *b = this_build(l2);
+	char dir[] = "/tmp/rdc-still-XXXXXX", script[600], cmd[800];
+	static char bad[8192];
+	FILE *f;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(script, sizeof(script), "%s/still.sh", dir);
+	f = fopen(script, "w");
+	assert_non_null(f);
+	fprintf(f,
+		"cd %s/t || exit 9\n"
+		"XDG_RUNTIME_DIR=%s/t/run; export XDG_RUNTIME_DIR\n"
+		"%s\n%s\n"
+		"n=0\n"
+		"until [ -n \"$(ls shots 2>/dev/null)\" ] || [ $n -ge 1200 ]; do\n"
+		"\tn=$((n + 1)); sleep 0.1; done\n"
+		"kill -TERM $!; wait $!; echo \"exit $?\"\n"
+		"ls shots | grep -c '^frame-[0-9]*\\.png$'\n"
+		"[ -e rdcd.up ] && echo 'rdcd.up left behind'\n",
+		dir, dir, a, b);
+	assert_int_equal(fclose(f), 0);
+	for (int k = 0; k < 3; k++) {
+		char out[4096] = "";
+		size_t n;
+		FILE *p;
+
+		snprintf(cmd, sizeof(cmd),
+			 "rm -rf %s/t && mkdir -p %s/t/run && "
+			 "timeout 300 sh %s 2>&1",
+			 dir, dir, script);
+		p = popen(cmd, "r");
+		assert_non_null(p);
+		n = fread(out, 1, sizeof(out) - 1, p);
+		out[n] = 0;
+		pclose(p);
+		if (!strstr(out, "exit 0\n1\n") || strstr(out, "left behind")) {
+			snprintf(bad, sizeof(bad),
+				 "run %d of the README's\n%s\n%s\n%s", k + 1,
+				 l1, l2, out);
+			break;
+		}
+	}
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", dir);
+	assert_int_equal(system(cmd), 0);
+	free(b);
+	free(a);
+	free(l2);
+	free(l1);
+	free(readme);
+	if (bad[0])
+		fail_msg("%s", bad);
+}
+
+/* --version: the release of the headers and of the library, as rdc.h's. */
+static void test_versions(void **state)
+{
+	static const char *const progs[] = { "rdcctl", "rdcd" };
+	char want[200], out[400], cmd[600];
+
+	(void)state;
+	for (size_t i = 0; i < 2; i++) {
+		FILE *f;
+		size_t n;
+
+		snprintf(cmd, sizeof(cmd), "%s/%s --version", bindir, progs[i]);
+		f = popen(cmd, "r");
+		assert_non_null(f);
+		n = fread(out, 1, sizeof(out) - 1, f);
+		out[n] = 0;
+		assert_int_equal(pclose(f), 0);
+		snprintf(want, sizeof(want), "%s %d.%d.%d (librdc %d.%d.%d)\n",
+			 progs[i], RDC_VERSION_MAJOR, RDC_VERSION_MINOR,
+			 RDC_VERSION_PATCH, RDC_VERSION_MAJOR,
+			 RDC_VERSION_MINOR, RDC_VERSION_PATCH);
+		assert_string_equal(out, want);
+	}
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -951,12 +1079,17 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_options),
 		cmocka_unit_test(test_constants),
 		cmocka_unit_test(test_readme_example),
+		cmocka_unit_test(test_readme_still),
+		cmocka_unit_test(test_versions),
 	};
-	char self[400];
+	char self[PATH_MAX], abs[PATH_MAX];
 
 	(void)argc;
-	snprintf(self, sizeof(self), "%s", argv[0]);
-	/* $(O)/san/tests/test_docs -> $(O)/san */
-	snprintf(bindir, sizeof(bindir), "%s/..", dirname(self));
+	/* $(O)/san/tests/test_docs -> $(O)/san, absolute: the README's
+	 * commands run in directories of their own */
+
+	snprintf(self, sizeof(self), "%s/..", dirname(argv[0]));
+	snprintf(bindir, sizeof(bindir), "%.399s",
+		 realpath(self, abs) ? abs : self);
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -132,8 +132,19 @@ static void usage(FILE *f)
 	      "                   (/sys/kernel/config/gpio-sim/NAME) and taken\n"
 	      "                   down on exit (needs gpio-sim.ko; docs/pins.md)\n"
 	      "  -v, -q           more, less logging (stderr)\n"
-	      "  -h, --help       this text\n",
+	      "  -h, --help       this text\n"
+	      "  --version        rdcd's release and librdc's\n",
 	      f);
+}
+
+/* The release rdcd was built as, and the librdc it runs on. */
+static void rdcd_version(void)
+{
+	uint32_t v = rdc_version();
+
+	printf("rdcd %u.%u.%u (librdc %u.%u.%u)\n", RDC_VERSION_MAJOR,
+	       RDC_VERSION_MINOR, RDC_VERSION_PATCH, RDC_VERSION_GET_MAJOR(v),
+	       RDC_VERSION_GET_MINOR(v), RDC_VERSION_GET_PATCH(v));
 }
 
 uint64_t rdcd_wall_ns(void)
@@ -646,6 +657,9 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
 			usage(stdout);
 			exit(0);
+		} else if (!strcmp(a, "--version")) {
+			rdcd_version();
+			exit(0);
 		} else if (!strcmp(a, "--fast")) {
 			d->mode = RDC_RUN_FAST;
 		} else if (!strcmp(a, "--stepped")) {
@@ -831,15 +845,16 @@ int main(int argc, char **argv)
 	struct sigaction snap = { .sa_handler = rdcd_on_snapshot };
 	rdc_vcd *vcd = NULL;
 	sigset_t block;
+	bool ready = false;
 	int ret = 1;
 
-	if (parse_args(&d, argc, argv, &o))
-		return 2;
-	if (o.vram)
-		d.vram_size = o.vram;
-	if (o.token && rdcd_read_token(&d, o.token))
-		return 1;
-	/* Block the signals; ppoll lets them in atomically. */
+	/*
+	 * Before anything else: a SIGUSR1 sent as rdcd starts (`rdcd ... &
+	 * kill -USR1 $!`) is held until the loop's ppoll lets it in, rather
+	 * than ending the process by its default action.  One that reaches
+	 * the shell's child before it has become rdcd is out of rdcd's
+	 * reach: the README waits for --ready-file.
+	 */
 	sigemptyset(&block);
 	sigaddset(&block, SIGINT);
 	sigaddset(&block, SIGTERM);
@@ -849,6 +864,13 @@ int main(int argc, char **argv)
 	sigaction(SIGTERM, &sa, NULL);
 	sigaction(SIGUSR1, &snap, NULL);
 	signal(SIGPIPE, SIG_IGN);
+
+	if (parse_args(&d, argc, argv, &o))
+		return 2;
+	if (o.vram)
+		d.vram_size = o.vram;
+	if (o.token && rdcd_read_token(&d, o.token))
+		return 1;
 
 	if (o.record) {
 		d.rec = rdc_rec_open(o.record, d.vram_size);
@@ -922,6 +944,7 @@ int main(int argc, char **argv)
 			 strerror(errno));
 		goto out;
 	}
+	ready = o.ready != NULL;
 	rdcd_log(&d, RDCD_LOG_INFO, "%s, vram %u bytes",
 		 d.mode == RDC_RUN_STEPPED ? "stepped" :
 		 d.mode == RDC_RUN_FAST	   ? "fast" :
@@ -935,6 +958,9 @@ int main(int argc, char **argv)
 	rdcd_systemd_notify(&d, "STOPPING=1");
 	ret = 0;
 out:
+	/* no longer ready: a script waiting for the file waits for a new one */
+	if (ready)
+		unlink(o.ready);
 	rdcd_chip_close(&d); /* a run in progress stops where it is */
 	while (d.clients) {
 		/* let the last replies go if the sockets take them */
