@@ -1066,6 +1066,179 @@ static void test_versions(void **state)
 	}
 }
 
+/* ---- rdcctl's exit status ---------------------------------------------- */
+
+/* Run `bindir`/rdcctl with `args`; stdout and stderr into out. */
+static int ctl_status(const char *args, char *out, size_t cap)
+{
+	char cmd[1200];
+	size_t n;
+	FILE *p;
+	int st;
+
+	snprintf(cmd, sizeof(cmd), "%s/rdcctl %s 2>&1", bindir, args);
+	p = popen(cmd, "r");
+	assert_non_null(p);
+	n = fread(out, 1, cap - 1, p);
+	out[n] = 0;
+	st = pclose(p);
+	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* `text` with roff's font escapes and \- taken out, lines joined. */
+static char *plain(const char *text)
+{
+	char *s = malloc(strlen(text) + 1), *o = s;
+
+	assert_non_null(s);
+	for (const char *p = text; *p;) {
+		if (p[0] == '\\' && p[1] == 'f' && p[2]) {
+			p += 3;
+		} else if (p[0] == '\\' && p[1] == '-') {
+			*o++ = '-';
+			p += 2;
+		} else if ((p == text || p[-1] == '\n') && *p == '.') {
+			while (*p && *p != ' ' && *p != '\n')
+				p++; /* a request: .B, .RB ... */
+			if (*p == ' ')
+				p++;
+		} else {
+			*o++ = *p == '\n' ? ' ' : *p;
+			p++;
+		}
+	}
+	*o = 0;
+	return s;
+}
+
+/*
+ * rdcctl's exit status is one rule, stated in rdl.md's rdcctl section
+ * and in rdcctl(1)'s EXIT STATUS and nowhere else in them: each of its
+ * codes is said there and is what rdcctl does, for every kind of
+ * command.  A missing file keeps its name and the system's reason.
+ */
+static void test_exit_status(void **state)
+{
+	static const struct {
+		int code;
+		const char *said; /* how both documents put it */
+	} rule[] = {
+		{ 0, "0 on success" },
+		{ 1, "1 on an error" },
+		{ 2, "2 for bad usage" },
+		{ 3, "3 when a command that compares found a difference" },
+	};
+	static char out[65536];
+	char *rdl = slurp("docs/rdl.md"), *man = slurp("man/rdcctl.1");
+	char *sec_rdl = section(rdl, "Exit status, of every command:", "\n\n");
+	char *sec_man = section(man, ".SH EXIT STATUS", "\n.SH ");
+	char *p_man = plain(sec_man), *p_rdl = plain(sec_rdl);
+	char dir[] = "/tmp/rdc-exit-XXXXXX", a[300], b[300], args[1000];
+	const char *missing = "/nonexistent-dir/missing.rdl";
+	FILE *f;
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(rule) / sizeof(rule[0]); i++) {
+		if (!strstr(p_rdl, rule[i].said))
+			fail_msg("docs/rdl.md's exit status lacks '%s'",
+				 rule[i].said);
+		if (!strstr(p_man, rule[i].said))
+			fail_msg("rdcctl(1)'s EXIT STATUS lacks '%s'",
+				 rule[i].said);
+	}
+	/* stated once: no other exit status in either */
+	for (const char *q = rdl; (q = strcasestr(q, "exit")); q++)
+		if (q < strstr(rdl, sec_rdl) ||
+		    q >= strstr(rdl, sec_rdl) + strlen(sec_rdl))
+			fail_msg(
+				"docs/rdl.md speaks of exits outside its rule: "
+				"%.60s",
+				q);
+	for (const char *q = man; (q = strcasestr(q, "exit")); q++)
+		if ((q < strstr(man, sec_man) ||
+		     q >= strstr(man, sec_man) + strlen(sec_man)) &&
+		    strncmp(q, "exit.", 5))
+			fail_msg("rdcctl(1) speaks of exits outside EXIT "
+				 "STATUS: %.60s",
+				 q);
+
+	assert_non_null(mkdtemp(dir));
+	snprintf(a, sizeof(a), "%s/a.rdl", dir);
+	snprintf(b, sizeof(b), "%s/b.rdl", dir);
+	f = fopen(a, "w");
+	assert_non_null(f);
+	fputs("mode 320x200 i8\nfg 1\nfill 0 0 8 8\n", f);
+	assert_int_equal(fclose(f), 0);
+	f = fopen(b, "w");
+	assert_non_null(f);
+	fputs("mode 320x200 i8\nfg 2\nfill 0 0 8 8\n", f);
+	assert_int_equal(fclose(f), 0);
+
+	/* 0 */
+	snprintf(args, sizeof(args), "run %s", a);
+	assert_int_equal(ctl_status(args, out, sizeof(out)), 0);
+	snprintf(args, sizeof(args), "diff %s %s", a, a);
+	assert_int_equal(ctl_status(args, out, sizeof(out)), 0);
+	/* 1, a missing file named with its reason by every command */
+	for (int i = 0; i < 8; i++) {
+		char fa[1000];
+		int st;
+
+		switch (i) {
+		case 0:
+			snprintf(fa, sizeof(fa), "run %s", missing);
+			break;
+		case 1:
+			snprintf(fa, sizeof(fa), "regs %s", missing);
+			break;
+		case 2:
+			snprintf(fa, sizeof(fa), "stats %s", missing);
+			break;
+		case 3:
+			snprintf(fa, sizeof(fa), "why 1 1 %s", missing);
+			break;
+		case 4:
+			snprintf(fa, sizeof(fa), "run %s --history 1,1",
+				 missing);
+			break;
+		case 5:
+			snprintf(fa, sizeof(fa), "diff %s %s", missing, a);
+			break;
+		case 6:
+			snprintf(fa, sizeof(fa), "diff %s %s", a, missing);
+			break;
+		default:
+			snprintf(fa, sizeof(fa), "replay %s", missing);
+			break;
+		}
+		st = ctl_status(fa, out, sizeof(out));
+		if (st != 1 || !strstr(out, missing) ||
+		    !strstr(out, "No such file or directory"))
+			fail_msg("rdcctl %s: exit %d, '%s' (want 1, the file "
+				 "and the system's reason)",
+				 fa, st, out);
+	}
+	/* 2 */
+	assert_int_equal(ctl_status("frobnicate", out, sizeof(out)), 2);
+	snprintf(args, sizeof(args), "diff %s", a);
+	assert_int_equal(ctl_status(args, out, sizeof(out)), 2);
+	assert_int_equal(ctl_status("run --bogus", out, sizeof(out)), 2);
+	/* 3 */
+	snprintf(args, sizeof(args), "diff %s %s", a, b);
+	assert_int_equal(ctl_status(args, out, sizeof(out)), 3);
+	assert_non_null(strstr(out, "first divergence"));
+
+	unlink(a);
+	unlink(b);
+	rmdir(dir);
+	free(p_rdl);
+	free(p_man);
+	free(sec_man);
+	free(sec_rdl);
+	free(man);
+	free(rdl);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -1081,6 +1254,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_readme_example),
 		cmocka_unit_test(test_readme_still),
 		cmocka_unit_test(test_versions),
+		cmocka_unit_test(test_exit_status),
 	};
 	char self[PATH_MAX], abs[PATH_MAX];
 

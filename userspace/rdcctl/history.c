@@ -238,11 +238,8 @@ static int run_file(rdc_dev *dev, const char *path)
 	if (!res)
 		return RDC_E_NOMEM;
 	ret = rdc_script_run_file(dev, path, res);
-	if (ret && res->error_line)
-		fprintf(stderr, "%s:%u: error: %s\n", path, res->error_line,
-			res->error_msg);
-	else if (ret)
-		rdcctl_error(path, ret);
+	if (ret)
+		rdcctl_script_error(path, ret, res);
 	if (!ret)
 		ret = rdc_script_frame_wait(dev, res);
 	free(res);
@@ -603,8 +600,8 @@ out:
 	rdc_history_close(a.h);
 	rdc_history_close(b.h);
 	if (ret)
-		return 2;
-	return differs;
+		return 1;
+	return differs ? RDCCTL_EXIT_DIFFERS : 0;
 }
 
 static int need(int argc, char **argv, int i)

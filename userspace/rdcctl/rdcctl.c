@@ -214,18 +214,8 @@ static int run_script(rdc_dev *dev, const char *path,
 {
 	int ret = rdc_script_run_file(dev, path, res);
 
-	if (!ret)
-		return 0;
-	if (res->error_line && res->error_col)
-		fprintf(stderr, "%s:%u:%u: error: %s\n", path, res->error_line,
-			res->error_col, res->error_msg);
-	else if (res->error_line)
-		fprintf(stderr, "%s:%u: error: %s\n", path, res->error_line,
-			res->error_msg);
-	else if (res->error_msg[0])
-		fprintf(stderr, "rdcctl: %s\n", res->error_msg);
-	else
-		rdcctl_error(path, ret);
+	if (ret)
+		rdcctl_script_error(path, ret, res);
 	return ret;
 }
 
@@ -419,7 +409,9 @@ static int cmd_replay(const struct opts *o)
 		free(pix);
 	}
 	rdc_close(dev);
-	return ret || res.mismatches ? 1 : 0;
+	if (ret)
+		return 1;
+	return res.mismatches ? RDCCTL_EXIT_DIFFERS : 0;
 }
 
 static void list_one(const struct rdc_found *f, void *arg)

@@ -9,6 +9,14 @@
 #include "rdc.h"
 
 /*
+ * The exit status of every command (rdcctl(1), EXIT STATUS): 0 success,
+ * 1 an error (said on stderr), 2 bad usage (said before any device is
+ * opened), RDCCTL_EXIT_DIFFERS when a command that compares found a
+ * difference: diff's two runs, replay's trace against its replay.
+ */
+#define RDCCTL_EXIT_DIFFERS 3
+
+/*
  * "rdcctl: WHAT: ERROR: DETAIL" on stderr: the error's name, then what
  * librdc knows of its cause (rdc_last_error_detail: the system's reason,
  * a hint), when it knows something.  A detail that starts with `name`
@@ -29,6 +37,26 @@ static inline void rdcctl_report(const char *what, const char *name, int err)
 static inline void rdcctl_error(const char *what, int err)
 {
 	rdcctl_report(what, what, err);
+}
+
+/*
+ * rdc_script_run_file(path) failed: "FILE:LINE:COL: error: ..." for an
+ * error in the script, else what the interpreter said (a file it could
+ * not read, with the system's reason), else the error's name.
+ */
+static inline void rdcctl_script_error(const char *path, int err,
+				       const struct rdc_script_result *res)
+{
+	if (res->error_line && res->error_col)
+		fprintf(stderr, "%s:%u:%u: error: %s\n", path, res->error_line,
+			res->error_col, res->error_msg);
+	else if (res->error_line)
+		fprintf(stderr, "%s:%u: error: %s\n", path, res->error_line,
+			res->error_msg);
+	else if (res->error_msg[0])
+		fprintf(stderr, "rdcctl: %s\n", res->error_msg);
+	else
+		rdcctl_error(path, err);
 }
 
 /*

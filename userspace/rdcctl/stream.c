@@ -222,20 +222,7 @@ static int stream_scripts(rdc_dev *dev, const struct stream_opts *o,
 		memset(res, 0, sizeof(*res));
 		ret = rdc_script_run_file(dev, o->scripts[i].path, res);
 		if (ret) {
-			const char *msg = res->error_msg[0] ? res->error_msg :
-							      rdc_strerror(ret);
-
-			if (res->error_col)
-				fprintf(stderr, "%s:%u:%u: %s\n",
-					o->scripts[i].path, res->error_line,
-					res->error_col, msg);
-			else if (res->error_line)
-				fprintf(stderr, "%s:%u: %s\n",
-					o->scripts[i].path, res->error_line,
-					msg);
-			else
-				fprintf(stderr, "rdcctl: %s: %s\n",
-					o->scripts[i].path, msg);
+			rdcctl_script_error(o->scripts[i].path, ret, res);
 			return ret;
 		}
 		/* The next frame sent is the script's whole picture. */

@@ -66,7 +66,7 @@ changed() {
 	"$RDCCTL" diff "$T/s.trace" "$T/b.rdl" >"$T/diff.out"
 	r=$?
 	cat "$T/diff.out"
-	[ $r = 1 ] && grep -q '^first divergence' "$T/diff.out" &&
+	[ $r = 3 ] && grep -q '^first divergence' "$T/diff.out" &&
 		grep -q "B: .*b.rdl:10 text" "$T/diff.out"
 }
 check "diff of the trace and a changed scene finds the text" changed
