@@ -165,6 +165,9 @@ $(O)/san/rdcctl: $(patsubst %.c,$(O)/san/%.o,$(CTL_SRCS)) $(O)/san/librdc.a
 $(O)/san/tests/%: $(O)/san/tests/unit/%.o $(TEST_HELPER_OBJS) $(O)/san/librdc.a
 	@mkdir -p $(dir $@)
 	$(CC) $(SAN_CFLAGS) $^ $(CMOCKA_LIBS) $(LIBS) -lm -o $@
+# Tests run the rdcctl and rdcd beside them ($(O)/san): building one test
+# (`make $(O)/san/tests/test_vcd`) builds those too.
+$(TEST_BINS): | $(O)/san/rdcctl $(O)/san/rdcd
 
 # The DisplayLink decoder is rdcd's (userspace/rdcd/udl_decode.c).
 $(O)/san/tests/unit/test_udl_decode.o: SAN_CFLAGS += -Iuserspace/rdcd

@@ -1239,6 +1239,66 @@ static void test_exit_status(void **state)
 	free(rdl);
 }
 
+/* ---- docs/vcd.md's golden regeneration --------------------------------- */
+
+/* Run `cmd` through sh; its exit status. */
+static int sh_status(const char *cmd)
+{
+	int st = system(cmd);
+
+	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/*
+ * `RDC_VCD_REGEN=1 test_vcd` never rewrites the golden file after a
+ * failure: a copy of test_vcd alone in a directory (no rdcctl, rdcd
+ * beside it, so its front-end tests fail) leaves a golden file it was
+ * pointed at as it was; the test_vcd of this build, all passing,
+ * rewrites it to the tree's.
+ */
+static void test_vcd_regen(void **state)
+{
+	char dir[] = "/tmp/rdc-regen-XXXXXX", cmd[2400], vcd[600];
+	const char *tree = "tests/unit/data/vcd_tiny.vcd";
+	int st;
+
+	(void)state;
+	snprintf(vcd, sizeof(vcd), "%s/tests/test_vcd", bindir);
+	if (access(vcd, X_OK)) {
+		print_message("test_vcd is not built: %s\n", vcd);
+		skip();
+	}
+	assert_non_null(mkdtemp(dir));
+	snprintf(cmd, sizeof(cmd),
+		 "mkdir %s/tests && cp %s %s/tests/ && "
+		 "printf 'not a VCD\\n' >%s/golden.vcd",
+		 dir, vcd, dir, dir);
+	assert_int_equal(sh_status(cmd), 0);
+	snprintf(cmd, sizeof(cmd),
+		 "RDC_VCD_REGEN=1 RDC_VCD_GOLDEN=%s/golden.vcd "
+		 "%s/tests/test_vcd >%s/log 2>&1",
+		 dir, dir, dir);
+	st = sh_status(cmd);
+	if (!st)
+		fail_msg("test_vcd without rdcctl and rdcd passed (%s/log)",
+			 dir);
+	snprintf(cmd, sizeof(cmd), "grep -qx 'not a VCD' %s/golden.vcd", dir);
+	if (sh_status(cmd))
+		fail_msg("RDC_VCD_REGEN rewrote the golden file after a "
+			 "failure (%s)",
+			 dir);
+	snprintf(cmd, sizeof(cmd),
+		 "RDC_VCD_REGEN=1 RDC_VCD_GOLDEN=%s/golden.vcd %s "
+		 ">%s/log 2>&1 && cmp -s %s/golden.vcd %s",
+		 dir, vcd, dir, dir, tree);
+	if (sh_status(cmd))
+		fail_msg("RDC_VCD_REGEN with every test passing did not "
+			 "write the tree's golden file (%s/log)",
+			 dir);
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", dir);
+	assert_int_equal(sh_status(cmd), 0);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -1255,6 +1315,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_readme_still),
 		cmocka_unit_test(test_versions),
 		cmocka_unit_test(test_exit_status),
+		cmocka_unit_test(test_vcd_regen),
 	};
 	char self[PATH_MAX], abs[PATH_MAX];
 

@@ -8,9 +8,11 @@
  * vector against the timing, and the two front ends: rdcctl run --vcd
  * (and its refusal on a daemon) and rdcd --vcd.
  *
- * The golden file: tests/unit/data/vcd_tiny.vcd.  After a deliberate
- * change to the writer or the scene, regenerate it from the source root
- * with `RDC_VCD_REGEN=1 $(O)/san/tests/test_vcd`, and look at the diff.
+ * The golden file: tests/unit/data/vcd_tiny.vcd (RDC_VCD_GOLDEN names
+ * another).  After a deliberate change to the writer or the scene,
+ * regenerate it from the source root with `RDC_VCD_REGEN=1
+ * $(O)/san/tests/test_vcd`, and look at the diff: the file is rewritten
+ * only when every other test passed, never after a failure.
  */
 #include <libgen.h>
 #include <setjmp.h>
@@ -372,6 +374,16 @@ static void tmp_path(char *buf, size_t cap, const char *what)
 
 /* ---- tests --------------------------------------------------------------- */
 
+/* RDC_VCD_REGEN: the new golden file, put in place once all passed. */
+static char regen_path[128];
+
+static const char *golden(void)
+{
+	const char *g = getenv("RDC_VCD_GOLDEN");
+
+	return g && *g ? g : GOLDEN;
+}
+
 static void test_golden(void **state)
 {
 	char path[128];
@@ -382,20 +394,49 @@ static void test_golden(void **state)
 	tmp_path(path, sizeof(path), "tiny");
 	tiny_scene(path);
 	if (getenv("RDC_VCD_REGEN")) {
-		char cmd[512];
-
-		snprintf(cmd, sizeof(cmd), "cp %s %s", path, GOLDEN);
-		assert_int_equal(system(cmd), 0);
-		print_message("wrote %s\n", GOLDEN);
+		/* kept aside: main() puts it in place if nothing fails */
+		tmp_path(regen_path, sizeof(regen_path), "regen");
+		assert_int_equal(rename(path, regen_path), 0);
+		return;
 	}
 	a = r_slurp(path, &a_len);
-	b = r_slurp(GOLDEN, &b_len);
+	b = r_slurp(golden(), &b_len);
 	if (a_len != b_len || memcmp(a, b, a_len))
 		fail_msg("%s differs from %s (RDC_VCD_REGEN=1 rewrites it)",
-			 path, GOLDEN);
+			 path, golden());
 	free(a);
 	free(b);
 	unlink(path);
+}
+
+/*
+ * RDC_VCD_REGEN: the new file replaces the golden one only when every
+ * test passed (the writer read back, the front ends run); else it is
+ * dropped and the golden file stays as it was.
+ */
+static int regen_finish(int failed)
+{
+	char cmd[512];
+
+	if (!regen_path[0])
+		return failed;
+	if (failed) {
+		fprintf(stderr,
+			"RDC_VCD_REGEN: %s not rewritten: %d test(s) failed\n",
+			golden(), failed);
+		unlink(regen_path);
+		return failed;
+	}
+	/* cp, not rename: /tmp and the tree may be different filesystems */
+	snprintf(cmd, sizeof(cmd), "cp %s %s", regen_path, golden());
+	if (system(cmd)) {
+		fprintf(stderr, "RDC_VCD_REGEN: cannot write %s\n", golden());
+		unlink(regen_path);
+		return 1;
+	}
+	unlink(regen_path);
+	printf("RDC_VCD_REGEN: wrote %s\n", golden());
+	return 0;
 }
 
 /* The tiny scene read back: every signal where the timing puts it. */
@@ -710,5 +751,5 @@ int main(int argc, char **argv)
 	/* rdcctl and rdcd are built next to the tests: $(O)/san */
 	snprintf(self, sizeof(self), "%s", argv[0]);
 	snprintf(bindir, sizeof(bindir), "%s/..", dirname(self));
-	return cmocka_run_group_tests(tests, NULL, NULL);
+	return regen_finish(cmocka_run_group_tests(tests, NULL, NULL));
 }
