@@ -645,13 +645,17 @@ $(O)/san/usb_tool: $(O)/san/tests/vm/usb_tool.o $(O)/san/librdc.a
 
 # drm_pattern: a DRM/KMS client (libdrm) of the udl card the DisplayLink
 # personality brings up (tests/vm/tests/udl-*.sh, which skip without it).
+# kms_conform: KMS conformance of rdcdrm.ko's card (libdrm; run by
+# tests/vm/tests/rdcdrm-kms.sh, which skips without it).
 ifeq ($(HAVE_DRM),1)
-VM_BINS += $(O)/rel/drm_pattern
+VM_BINS += $(O)/rel/drm_pattern $(O)/rel/kms_conform
 endif
 $(O)/rel/drm_pattern: tests/vm/drm_pattern.c $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) -Iuserspace/rdcd \
 		$(shell $(PKG_CONFIG) --cflags libdrm) $^ \
 		$(shell $(PKG_CONFIG) --libs libdrm) $(LIBS) -o $@
+$(O)/rel/kms_conform: $(O)/rel/tests/vm/kms_conform.o
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 vm-test: $(VM_BINS)
 	@tests/vm/run.sh $(O)

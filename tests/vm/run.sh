@@ -21,8 +21,8 @@
 # Debian 12, 6.1).
 # --all-kernels (what `make check` uses): the tests on the default
 # kernel, then, booted once more, the tests that exercise what is built
-# per kernel on the newest: those named rdcfb-* and those loading rdcfb
-# or gpio-sim (their "# vm-module:" lines).  With one kernel only, or
+# per kernel on the newest: those named rdcfb-* or rdcdrm-* and those
+# loading rdcfb, rdcdrm or gpio-sim (their "# vm-module:" lines).  With one kernel only, or
 # with RDC_VM_KERNEL set, once.
 # With --auto a machine that cannot run it (not root with packages
 # missing, not x86_64, RDC_NO_VM set) is skipped with a message and exit
@@ -75,8 +75,8 @@ done
 
 # What is built per kernel: the driver, gpio-sim from the kernel's source.
 per_kernel() {
-	case $1 in rdcfb-*) return 0 ;; esac
-	grep -Eq '^# vm-module: *(rdcfb|gpio-sim)( |$)' "$HERE/tests/$1.sh"
+	case $1 in rdcfb-* | rdcdrm-*) return 0 ;; esac
+	grep -Eq '^# vm-module: *(rdcfb|rdcdrm|gpio-sim)( |$)' "$HERE/tests/$1.sh"
 }
 
 # ---- Packages ---------------------------------------------------------------------

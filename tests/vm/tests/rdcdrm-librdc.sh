@@ -1,0 +1,90 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only
+# SPDX-FileCopyrightText: 2026 The rdc authors
+# librdc's drm: backend on rdcdrm.ko's card: rdcctl list names it; info,
+# regs and stats read the chip; a scene that sets its own mode and surface
+# draws to sim:'s frame CRC through drm:/dev/dri/card0 and through drm:
+# alone (rdcdrm-record records and replays one); the pins read through
+# the module's GPIO lines; rdcctl stream --from drm: feeds
+# v4l2loopback while another client draws, and our reader and ffmpeg get
+# the scene exactly, as rdcfb-stream does for fbdev:.  A node that is not an rdc card is refused, naming it.
+# vm-module: rdcdrm
+# vm-module: v4l2loopback devices=1 exclusive_caps=1 video_nr=0 card_label=rdc
+. "$RDC_TREE/tests/vm/lib.sh"
+
+# the console would draw on the card between the client's operations
+fbcon_unbind
+CARD=""
+for c in /dev/dri/card*; do
+	[ -c "$c" ] || continue
+	"$RDCCTL" --connect "drm:$c" regs >/dev/null 2>&1 && { CARD=$c; break; }
+done
+[ -n "$CARD" ] || { echo "no card of rdcdrm.ko in /dev/dri"; ls -l /dev/dri; exit 1; }
+DRM=drm:$CARD
+a=$SCENES/stream_a.rdl
+
+crc_of() {
+	awk '$1 == "crc32" { print $2 }' "$1"
+}
+
+listed() {
+	"$RDCCTL" list | tee "$T/list.out"
+	grep -q "^$DRM " "$T/list.out"
+}
+check "rdcctl list names $DRM" listed
+
+regs() {
+	"$RDCCTL" --connect "$DRM" regs >"$T/regs.out" || return 1
+	head -n 4 "$T/regs.out"
+	grep -q '^0x000 ID  *0x31434452 ' "$T/regs.out"
+}
+check "rdcctl regs on $DRM: the chip's ID (RDC1)" regs
+check "rdcctl stats on $DRM" "$RDCCTL" --connect "$DRM" stats
+
+same_crc() {
+	"$RDCCTL" --connect "$1" run "$a" >"$T/dev.out" || return 1
+	"$RDCCTL" run "$a" >"$T/sim.out" || return 1
+	echo "$1 $(crc_of "$T/dev.out"), sim: $(crc_of "$T/sim.out")"
+	[ -n "$(crc_of "$T/sim.out")" ] &&
+		[ "$(crc_of "$T/dev.out")" = "$(crc_of "$T/sim.out")" ]
+}
+check "a scene through $DRM gives sim:'s frame CRC" same_crc "$DRM"
+check "the same through drm: (the first rdc card)" same_crc drm:
+
+pins() {
+	"$RDCCTL" --connect "$DRM" pins >"$T/pins.out" 2>&1
+	r=$?
+	cat "$T/pins.out"
+	[ $r = 0 ] && grep -q RESET_N "$T/pins.out"
+}
+if "$RDCCTL" --connect "$DRM" pins 2>&1 | grep -q 'not supported'; then
+	echo "# pins: this build has no libgpiod"
+else
+	check "rdcctl pins on $DRM reads the module's GPIO lines" pins
+fi
+
+refused() {
+	out=$("$RDCCTL" --connect "drm:$1" regs 2>&1)
+	r=$?
+	echo "$out"
+	[ $r != 0 ] && echo "$out" | grep -q "$2"
+}
+check "drm:/dev/null is refused as no DRM device" \
+	refused /dev/null "not a DRM device"
+check "a missing card names rdcdrm.ko and how to load it" \
+	refused /dev/dri/card63 "modprobe rdcdrm"
+
+[ -c "$DEV" ] || { echo "no $DEV"; finish; exit 1; }
+# The stream holds the card open while another client draws: when the
+# card's last client closes it, DRM hands the display back to its fbdev
+# emulation, which sets its own picture.
+writer_start --from "$DRM" --format bgr32
+check "the stream from drm: gives the device a format" wait_device 60
+check "scene a drawn through $DRM while streaming" \
+	"$RDCCTL" --connect "$DRM" run "$a"
+check "own reader: 30 frames of scene a, exact" \
+	"$READ" --device "$DEV" --expect "$a" --frames 30 --settle --timeout 60
+check "ffmpeg -f v4l2: 10 frames of scene a, exact" \
+	ffmpeg_frames bgr32 "$a" 10
+check "the stream is still running" writer_alive
+finish
