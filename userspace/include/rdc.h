@@ -33,7 +33,13 @@
  *                           without libdrm; the handle drops DRM master,
  *                           so a compositor can drive the card beside
  *                           it; rdc_sim_step needs the module's stepped
- *                           clock (else RDC_E_NOSYS)
+ *                           clock (else RDC_E_NOSYS).  When the card's
+ *                           last open file closes, DRM gives the display
+ *                           back to the card's fbdev emulation, which
+ *                           sets its own mode and picture: a picture
+ *                           drawn through one handle stays while some
+ *                           handle (rdcctl stream's, a compositor's)
+ *                           holds the card open
  *   "usb:"                  an RDC-1 attached over USB (rdc_usb.h,
  *                           docs/usb.md), through libusb: the first
  *                           device with IDs 1209:0001 and the RDC-1
