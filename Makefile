@@ -123,7 +123,7 @@ help:
 	@echo "make fuzz-long    the same targets, ten minutes in all (FUZZ_LONG_TIME s each)"
 	@echo "make fuzz-cov     line coverage per file of the fuzz corpora (llvm-14)"
 	@echo "make vm-test      boot Debian's kernel in QEMU and run tests/vm/tests/* (RDC_VM_KERNEL=)"
-	@echo "make module       build rdcfb.ko in $(O)/kmod (KDIR= for another kernel)"
+	@echo "make module       build rdcfb.ko and rdcdrm.ko in $(O)/kmod (KDIR= for another kernel)"
 	@echo "make dkms-source  rdcfb.ko's source for dkms in $(O)/dkms/rdcfb-VERSION"
 	@echo "make checkpatch   the kernel's checkpatch.pl over driver/ and the core"
 	@echo "make format-check clang-format 14 over every C file: fails on any difference"
@@ -643,6 +643,13 @@ $(O)/rel/usb_tool: $(O)/rel/tests/vm/usb_tool.o $(O)/rel/librdc.a
 $(O)/san/usb_tool: $(O)/san/tests/vm/usb_tool.o $(O)/san/librdc.a
 	$(CC) $(SAN_CFLAGS) $^ $(LIBS) -o $@
 
+# rdcdrm_tool: the client of rdcdrm.ko's card in the rdcdrm VM tests
+# (tests/vm/tests/rdcdrm-*.sh, which skip without it).
+ifeq ($(HAVE_DRM),1)
+VM_BINS += $(O)/rel/rdcdrm_tool
+endif
+$(O)/rel/rdcdrm_tool: $(O)/rel/tests/vm/rdcdrm_tool.o
+	$(CC) $(REL_CFLAGS) $^ $(shell $(PKG_CONFIG) --libs libdrm) -lz -o $@
 # drm_pattern: a DRM/KMS client (libdrm) of the udl card the DisplayLink
 # personality brings up (tests/vm/tests/udl-*.sh, which skip without it).
 # kms_conform: KMS conformance of rdcdrm.ko's card (libdrm; run by
@@ -785,7 +792,7 @@ mcu-test:
 		$(O)/rel/mcu-host $(O)/rel/rdcctl $(MCU_DIR)/scenes.txt \
 		tests/golden/scenes $(MCU_DIR)/check
 
-# rdcfb.ko (driver/, docs/driver.md) against the installed
+# rdcfb.ko and rdcdrm.ko (driver/, docs/driver.md) against the installed
 # linux-headers-amd64's kernel, or KDIR=<kernel build dir>.  Kbuild runs in
 # $(O)/kmod, a tree of links to the sources, so no object lands beside
 # them.  The outer make's variables (O=, -j) mean other things to Kbuild.
@@ -802,7 +809,7 @@ module:
 	find $(KMOD_DIR) -xtype l -delete; ln -sf $(CURDIR)/Kbuild $(KMOD_DIR)/Kbuild
 	env -u MAKEFLAGS -u MAKEOVERRIDES -u MFLAGS -u MAKELEVEL \
 		$(MAKE) -C $(KDIR) M=$(KMOD_DIR) modules
-	@echo "module: $(KMOD_DIR)/rdcfb.ko"
+	@echo "module: $(KMOD_DIR)/rdcfb.ko $(KMOD_DIR)/rdcdrm.ko"
 
 module-clean:
 	rm -rf $(KMOD_DIR)
@@ -821,13 +828,13 @@ checkpatch:
 			--wildcards '*/scripts/checkpatch.pl' \
 			'*/scripts/spelling.txt' '*/scripts/const_structs.checkpatch'; }
 	perl $(CHECKPATCH) --no-tree --terse --show-types -f Kbuild \
-		$(filter-out driver/rdcfb_compat.h,$(wildcard driver/*.[ch])) \
+		$(filter-out driver/rdcfb_compat.h driver/rdcdrm_compat.h,$(wildcard driver/*.[ch])) \
 		$(filter-out hw-sim/rdc_port.h,$(wildcard \
 		hw-sim/*.[ch] firmware-model/*.[ch]))
 	@# the kernel versions the module builds on are told apart here
 	perl $(CHECKPATCH) --no-tree --terse --show-types -f \
 		--ignore LINUX_VERSION_CODE,CONSTANT_COMPARISON \
-		driver/rdcfb_compat.h
+		driver/rdcfb_compat.h driver/rdcdrm_compat.h
 	@# the user-space branch spells out what the kernel's headers give
 	perl $(CHECKPATCH) --no-tree --terse --show-types -f \
 		--ignore PREFER_DEFINED_ATTRIBUTE_MACRO,COMPLEX_MACRO \
