@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
 # SPDX-FileCopyrightText: 2026 The rdc authors
-# Lay out rdcfb.ko's source as dkms wants it:
+# Lay out the source of rdcfb.ko and rdcdrm.ko as dkms wants it:
 #
 #   scripts/dkms-source.sh DIR [VERSION]
 #

@@ -60,6 +60,8 @@ check "modprobe finds rdcfb.ko under updates/dkms/" \
 	shows "^/lib/modules/$K/updates/dkms/rdcfb\.ko" modinfo -n rdcfb
 check "modinfo: version magic of $K" \
 	shows "^$K " modinfo -F vermagic rdcfb
+check "rdcdrm.ko, built beside it, is under updates/dkms/ too" \
+	shows "^/lib/modules/$K/updates/dkms/rdcdrm\.ko" modinfo -n rdcdrm
 check "modprobe rdcfb loads it" modprobe rdcfb clock=stepped
 check "the loaded module is dkms's build (srcversion)" \
 	test "$(cat /sys/module/rdcfb/srcversion 2>/dev/null)" = \
