@@ -94,11 +94,11 @@ TEST_BINS := $(patsubst tests/unit/%.c,$(O)/san/tests/%,$(TEST_SRCS))
 TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
-	shared install uninstall install-check debs \
+	shared install uninstall install-check debs FORCE \
 	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
 	bench-peers bench-stream-vm module dkms-source \
 	module-clean checkpatch format format-check firmware-mcu mcu-test
-all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a shared
+all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a shared $(O)/rel/rdc.pc
 
 help:
 	@echo "make              build librdc (.a, .so), rdcctl and rdcd (optimised) in $(O)/rel"
@@ -229,15 +229,23 @@ $(SO_LINKS): $(O)/rel/$(RDC_SO_FILE)
 	ln -sf $(RDC_SO_FILE) $@
 
 # -Wl,--as-needed: a library the program itself does not call (libpng for
-# rdcd) is librdc.so's to load, not its.
-$(O)/rel/dyn/rdcctl: $(patsubst %.c,$(O)/rel/%.o,$(CTL_SRCS)) $(SO_LINKS)
+# rdcd) is librdc.so's to load, not its.  $(RDC_RUNPATH): see make
+# install; the stamp relinks them when it changes (another LIBDIR).
+$(O)/rel/dyn/rdcctl: $(patsubst %.c,$(O)/rel/%.o,$(CTL_SRCS)) $(SO_LINKS) \
+		$(O)/rel/dyn/runpath
 	@mkdir -p $(dir $@)
-	$(CC) $(REL_CFLAGS) $(LDFLAGS) -Wl,--as-needed \
+	$(CC) $(REL_CFLAGS) $(LDFLAGS) -Wl,--as-needed $(RDC_RUNPATH) \
 		$(filter %.o,$^) $(O)/rel/librdc.so $(LIBS) -o $@
-$(O)/rel/dyn/rdcd: $(patsubst %.c,$(O)/rel/%.o,$(RDCD_SRCS)) $(SO_LINKS)
+$(O)/rel/dyn/rdcd: $(patsubst %.c,$(O)/rel/%.o,$(RDCD_SRCS)) $(SO_LINKS) \
+		$(O)/rel/dyn/runpath
 	@mkdir -p $(dir $@)
-	$(CC) $(REL_CFLAGS) $(LDFLAGS) -Wl,--as-needed \
+	$(CC) $(REL_CFLAGS) $(LDFLAGS) -Wl,--as-needed $(RDC_RUNPATH) \
 		$(filter %.o,$^) $(O)/rel/librdc.so $(LIBS) -o $@
+$(O)/rel/dyn/runpath: FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(RDC_RUNPATH)' | cmp -s - $@ 2>/dev/null || \
+		echo '$(RDC_RUNPATH)' >$@
+FORCE:
 
 # rdc.pc (written by make install): the optional libraries this build
 # links are its Requires.private.
@@ -262,6 +270,24 @@ UDEVRULESDIR ?= $(PREFIX)/lib/udev/rules.d
 INSTALL ?= install
 INSTALL_PROGRAM ?= $(INSTALL) -m 755
 INSTALL_DATA ?= $(INSTALL) -m 644
+
+# The installed rdcctl and rdcd find librdc.so.1 where the loader looks:
+# in a directory of ldconfig's (/usr/lib/<triplet>, /usr/local/lib ...:
+# RDC_LOADER_DIRS, symlinks resolved), where make install into the live
+# system (no DESTDIR) then runs ldconfig, as autotools and meson installs
+# do; any other LIBDIR is named by their RUNPATH, as libtool links them.
+LDCONFIG ?= /sbin/ldconfig
+# (a directory not made yet is one ldconfig "can't stat").
+RDC_LOADER_DIRS ?= $(eval RDC_LOADER_DIRS := $(shell LC_ALL=C $(LDCONFIG) \
+	-v -N 2>&1 | sed -n -e 's/^\(\/[^:]*\): .from .*/\1/p' \
+	-e "s/.*Can't stat \(\/[^:]*\):.*/\1/p" | \
+	xargs -r realpath -m))$(RDC_LOADER_DIRS)
+RDC_LIBDIR_LOADER = $(filter $(shell realpath -m '$(LIBDIR)'),$(RDC_LOADER_DIRS))
+RDC_RUNPATH = $(if $(RDC_LIBDIR_LOADER),,-Wl,-rpath,$(LIBDIR))
+# The directories make install creates (parents too) are listed in
+# $(RDC_INSTALL_DIRS), so that make uninstall removes them when empty,
+# and only them.
+RDC_INSTALL_DIRS := $(O)/install-dirs
 
 # What the rest of the tree brings, picked up as it lands: manual pages
 # (man/*.[1-8], or generated into $(O)/man), bash completion
@@ -288,9 +314,41 @@ Cflags: -I$${includedir}/rdc
 endef
 export RDC_PC
 
+# $(O)/rel/rdc.pc: librdc where `make` leaves it, for a program built
+# against the tree as against an install: `PKG_CONFIG_PATH=$(O)/rel
+# pkg-config --cflags --libs rdc` names librdc.a, every library this
+# build links into it, and the headers as make install lays them out.
+define RDC_PC_BUILD
+libdir=$(abspath $(O))/rel
+includedir=$(abspath $(HDR_DIR))
+
+Name: rdc
+Description: librdc, the host library of the RDC-1 simulated raster display controller (build tree, librdc.a)
+Version: $(RDC_VERSION)
+Requires: $(strip $(RDC_PC_REQUIRES))
+Libs: $${libdir}/librdc.a -lpthread
+Cflags: -I$${includedir}
+endef
+export RDC_PC_BUILD
+
+$(O)/rel/rdc.pc: $(HDR_DIR)/.stamp Makefile
+	@mkdir -p $(dir $@)
+	printf '%s\n' "$$RDC_PC_BUILD" >$@
+
+# Where make install puts files; make uninstall removes those of them,
+# and their parents, that make install created, when they are empty.
+RDC_DEST_DIRS = $(BINDIR) $(LIBDIR) $(INCLUDEDIR)/rdc $(PKGCONFIGDIR) \
+	$(sort $(foreach f,$(INSTALL_MAN),$(MANDIR)/man$(subst .,,$(suffix $(f))))) \
+	$(if $(INSTALL_BASHCOMP),$(BASHCOMPDIR)) \
+	$(if $(INSTALL_UNITS),$(SYSTEMDUSERUNITDIR)) \
+	$(if $(INSTALL_UDEV),$(UDEVRULESDIR))
+
 install: all shared
-	$(INSTALL) -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) \
-		$(DESTDIR)$(INCLUDEDIR)/rdc $(DESTDIR)$(PKGCONFIGDIR)
+	@set -e; mkdir -p $(O); for d in $(RDC_DEST_DIRS); do \
+		d=$(DESTDIR)$$d; p=$$d; new=; \
+		while [ ! -d "$$p" ]; do new="$$p $$new"; p=$$(dirname "$$p"); done; \
+		echo "$(INSTALL) -d $$d"; $(INSTALL) -d "$$d"; \
+		for n in $$new; do echo "$$n" >>$(RDC_INSTALL_DIRS); done; done
 	$(INSTALL_PROGRAM) $(O)/rel/dyn/rdcctl $(O)/rel/dyn/rdcd \
 		$(DESTDIR)$(BINDIR)/
 	$(INSTALL_DATA) $(O)/rel/$(RDC_SO_FILE) $(O)/rel/librdc.a \
@@ -309,6 +367,10 @@ install: all shared
 		[ -n "$$files" ] || continue; $(INSTALL) -d $$dir; \
 		echo "$(INSTALL_DATA) $$files $$dir/"; \
 		$(INSTALL_DATA) $$files $$dir/; done
+	@if [ -z "$(DESTDIR)" ] && [ -n "$(RDC_LIBDIR_LOADER)" ]; then \
+		echo "$(LDCONFIG)"; $(LDCONFIG) || { echo "install:" \
+		"$(LDCONFIG) failed: until it runs as root, programs do not" \
+		"find $(RDC_SO_NAME) in $(LIBDIR)"; exit 1; }; fi
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/rdcctl $(DESTDIR)$(BINDIR)/rdcd \
@@ -325,6 +387,15 @@ uninstall:
 		rm -f $(DESTDIR)$(SYSTEMDUSERUNITDIR)/$$f; done; \
 	for f in $(notdir $(INSTALL_UDEV)); do \
 		rm -f $(DESTDIR)$(UDEVRULESDIR)/$$f; done
+	@[ -f $(RDC_INSTALL_DIRS) ] || exit 0; \
+	for d in $(RDC_DEST_DIRS); do d=$(DESTDIR)$$d; \
+		while [ "$$d" != / ] && [ "$$d" != . ]; do \
+			if grep -qxF "$$d" $(RDC_INSTALL_DIRS) && \
+				rmdir "$$d" 2>/dev/null; then echo "rmdir $$d"; fi; \
+			d=$$(dirname "$$d"); done; done; \
+	while read -r d; do [ ! -d "$$d" ] || echo "$$d"; done \
+		<$(RDC_INSTALL_DIRS) >$(RDC_INSTALL_DIRS).tmp; \
+	mv $(RDC_INSTALL_DIRS).tmp $(RDC_INSTALL_DIRS)
 
 # Install into a scratch directory and build examples/hello.c against it
 # with pkg-config alone (tests/install/run.sh says what it checks).
@@ -361,16 +432,26 @@ $(O)/rel/rdc-bench: $(O)/rel/bench/rdc_bench.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 # The workloads defined in bench/README.md, then rdcd's and the
-# v4l2 sink's figures; BENCH_ARGS="-w fill -r 5" to narrow the first part.
-bench: $(O)/rel/rdc-bench $(O)/rel/sink-bench $(O)/rel/net_bench $(O)/rel/rdcd \
-		$(O)/rel/stream-bench
-	$(O)/rel/rdc-bench $(BENCH_ARGS)
-	@echo "== rdcd over a UNIX socket =="
-	$(O)/rel/net_bench $(O)/rel/rdcd
-	@echo "== v4l2 sink conversion per frame =="
-	$(O)/rel/sink-bench
-	@echo "== rdcctl stream of the demo at 1920x1080 into v4l2 =="
+# v4l2 sink's figures; BENCH_ARGS="-w fill -r 5" runs only the
+# workloads it names (make bench-net, bench-sink: the rest alone).
+BENCH_REST := $(O)/rel/sink-bench $(O)/rel/net_bench $(O)/rel/rdcd \
 	$(O)/rel/stream-bench
+define BENCH_RUN_REST
+	@if [ -n '$(BENCH_ARGS)' ]; then echo "bench: BENCH_ARGS" \
+		"names workloads: rdcd's, the sink's and the stream's" \
+		"figures left out (make bench-net, make bench-sink)"; \
+	else set -e; \
+	echo "== rdcd over a UNIX socket =="; \
+	echo "$(O)/rel/net_bench $(O)/rel/rdcd"; \
+	$(O)/rel/net_bench $(O)/rel/rdcd; \
+	echo "== v4l2 sink conversion per frame =="; \
+	echo "$(O)/rel/sink-bench"; $(O)/rel/sink-bench; \
+	echo "== rdcctl stream of the demo at 1920x1080 into v4l2 =="; \
+	echo "$(O)/rel/stream-bench"; $(O)/rel/stream-bench; fi
+endef
+bench: $(O)/rel/rdc-bench $(if $(BENCH_ARGS),,$(BENCH_REST))
+	$(O)/rel/rdc-bench $(BENCH_ARGS)
+	$(BENCH_RUN_REST)
 
 # The same with the peer libraries (pixman, cairo, SDL2_gfx) whose
 # pkg-config files are found; scripts/deps.sh --peers installs them.
@@ -396,15 +477,9 @@ $(O)/rel/rdc-bench-peers: bench/rdc_bench.c bench/bench.h bench/peer_*.c \
 bench-peers:
 	@scripts/deps.sh --peers || \
 		echo "bench: going on with the peers that are installed"
-	$(MAKE) $(O)/rel/rdc-bench-peers $(O)/rel/sink-bench \
-		$(O)/rel/net_bench $(O)/rel/rdcd $(O)/rel/stream-bench
+	$(MAKE) $(O)/rel/rdc-bench-peers $(if $(BENCH_ARGS),,$(BENCH_REST))
 	$(O)/rel/rdc-bench-peers --peers $(BENCH_ARGS)
-	@echo "== rdcd over a UNIX socket =="
-	$(O)/rel/net_bench $(O)/rel/rdcd
-	@echo "== v4l2 sink conversion per frame =="
-	$(O)/rel/sink-bench
-	@echo "== rdcctl stream of the demo at 1920x1080 into v4l2 =="
-	$(O)/rel/stream-bench
+	$(BENCH_RUN_REST)
 
 $(O)/rel/sink-bench: $(O)/rel/bench/sink_bench.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@

@@ -12,9 +12,21 @@
 #  - examples/hello.c, built shared and static, draws its scene and prints
 #    the same frame CRC as the build's own rdcctl running
 #    tests/install/scene.rdl; so does the installed rdcctl;
-#  - the installed rdcctl and rdcd use librdc.so, and rdcd's sources do
-#    not include librdc's or the chip's private headers;
-#  - `make uninstall` leaves no file behind.
+#  - the installed rdcctl and rdcd use librdc.so, through a RUNPATH
+#    naming LIBDIR (/opt/rdc/lib64: not where the loader looks), and
+#    rdcd's sources do not include librdc's or the chip's private headers;
+#  - a DESTDIR install does not run ldconfig;
+#  - `make uninstall` leaves no file and no directory behind;
+#  - $O/rel/rdc.pc (PKG_CONFIG_PATH=$O/rel) builds examples/hello.c from
+#    the tree, and it draws the same frame;
+#  - installed into a scratch PREFIX on the live system (no DESTDIR),
+#    rdcctl runs on the system's loader alone (no LD_LIBRARY_PATH);
+#  - as root, with unshare: `make install` with the default PREFIX into
+#    the live system, seen only in a private mount namespace (an empty
+#    /usr/local, a copy of /etc for ldconfig's cache): the installed
+#    rdcctl and examples/hello.c built with pkg-config run on the
+#    system's loader, through the ldconfig make install ran, and make
+#    uninstall empties /usr/local again.
 # Closes with "install: N passed, M failed".
 #
 #   tests/install/run.sh BUILD_DIR     (from the source root; make
@@ -39,10 +51,13 @@ trap 'rm -rf "$tmp"' EXIT INT TERM
 dest=$tmp/root
 prefix=/opt/rdc
 libdir=$prefix/lib64
-vars="O=$O DESTDIR=$dest PREFIX=$prefix LIBDIR=$libdir"
+# the directories make install creates are logged here, not in $O
+vars="O=$O DESTDIR=$dest PREFIX=$prefix LIBDIR=$libdir RDC_INSTALL_DIRS=$tmp/dirs"
 
 # shellcheck disable=SC2086 # $vars is a list of words
-if $MAKE -s --no-print-directory $vars install >"$tmp/install.log" 2>&1; then
+# (LDCONFIG=false: a DESTDIR install that ran ldconfig would fail)
+if $MAKE -s --no-print-directory $vars LDCONFIG=false install \
+	>"$tmp/install.log" 2>&1; then
 	ok "make install"
 else
 	cat "$tmp/install.log"
@@ -173,20 +188,58 @@ else
 fi
 cd - >/dev/null || exit 1
 
-# The installed tools run on the installed library.
+# The installed tools run on the installed library, which LIBDIR, not a
+# directory the loader searches, holds: their RUNPATH names it.
 for t in rdcctl rdcd; do
-	if readelf -d "$dest$prefix/bin/$t" | grep -q 'NEEDED.*\[librdc\.so\.1\]'; then
-		ok "$t uses librdc.so.1"
+	rp=$(readelf -d "$dest$prefix/bin/$t" | sed -n 's/.*(RUNPATH).*\[\(.*\)\]/\1/p')
+	if readelf -d "$dest$prefix/bin/$t" | grep -q 'NEEDED.*\[librdc\.so\.1\]' &&
+		[ "$rp" = "$libdir" ]; then
+		ok "$t uses librdc.so.1, RUNPATH $rp"
 	else
-		bad "$t does not use librdc.so.1"
+		bad "$t: NEEDED librdc.so.1 and RUNPATH $libdir wanted, RUNPATH '$rp'"
 	fi
 done
-got=$(LD_LIBRARY_PATH="$dest$libdir" "$dest$prefix/bin/rdcctl" run \
-	tests/install/scene.rdl | sed -n 's/^crc32 //p')
-if [ -n "$want" ] && [ "$got" = "$want" ]; then
-	ok "installed rdcctl: crc32 $got"
+
+# In the tree, as installed: $O/rel/rdc.pc names librdc.a and the
+# headers make install lays out.
+if tflags=$(env -u PKG_CONFIG_SYSROOT_DIR -u PKG_CONFIG_LIBDIR \
+	PKG_CONFIG_PATH="$O/rel" $PKG_CONFIG --cflags --libs rdc) &&
+	# shellcheck disable=SC2086 # the flags are words
+	$CC -Wall -Werror examples/hello.c $tflags -o "$tmp/hello-tree" \
+		2>"$tmp/tree.err"; then
+	got=$("$tmp/hello-tree" | sed -n 's/^crc32 //p')
+	if [ -n "$want" ] && [ "$got" = "$want" ]; then
+		ok "hello (PKG_CONFIG_PATH=$O/rel): crc32 $got"
+	else
+		bad "hello (PKG_CONFIG_PATH=$O/rel): crc32 '$got', rdcctl '$want'"
+	fi
 else
-	bad "installed rdcctl: crc32 '$got', the build's '$want'"
+	cat "$tmp/tree.err" 2>/dev/null
+	bad "PKG_CONFIG_PATH=$O/rel pkg-config --cflags --libs rdc does not build examples/hello.c"
+fi
+
+# Into the live system under a scratch PREFIX (not a directory the loader
+# searches): the installed rdcctl runs on the system's loader alone.
+live=$tmp/live
+if $MAKE -s --no-print-directory O="$O" PREFIX="$live" \
+	RDC_INSTALL_DIRS="$tmp/live-dirs" LDCONFIG=false install \
+	>"$tmp/live.log" 2>&1; then
+	got=$(env -u LD_LIBRARY_PATH "$live/bin/rdcctl" run \
+		tests/install/scene.rdl 2>"$tmp/live.err" | sed -n 's/^crc32 //p')
+	if [ -n "$want" ] && [ "$got" = "$want" ]; then
+		ok "rdcctl installed in $live runs on the system's loader: crc32 $got"
+	else
+		cat "$tmp/live.err"
+		bad "rdcctl installed in $live: crc32 '$got', the build's '$want'"
+	fi
+	$MAKE -s --no-print-directory O="$O" PREFIX="$live" \
+		RDC_INSTALL_DIRS="$tmp/live-dirs" uninstall >>"$tmp/live.log" 2>&1
+	if [ -e "$live" ]; then
+		bad "make uninstall left $(find "$live" | head -n 5 | tr '\n' ' ')"
+	fi
+else
+	cat "$tmp/live.log"
+	bad "make install PREFIX=$live"
 fi
 priv=$(grep -l '#include "\(rdc_priv\|rdc_client\|hw\|hw_priv\|dp\)\.h"' userspace/rdcd/*.[ch])
 if [ -z "$priv" ]; then
@@ -197,15 +250,59 @@ fi
 
 # shellcheck disable=SC2086
 if $MAKE -s --no-print-directory $vars uninstall >"$tmp/uninstall.log" 2>&1; then
-	left=$(find "$dest" ! -type d)
+	left=$(find "$dest" 2>/dev/null)
 	if [ -z "$left" ]; then
-		ok "make uninstall removed every file"
+		ok "make uninstall removed every file and directory it made"
 	else
 		bad "make uninstall left: $(echo "$left" | head -n 5 | tr '\n' ' ')"
 	fi
 else
 	cat "$tmp/uninstall.log"
 	bad "make uninstall"
+fi
+
+# The default PREFIX in the live system, as a new user installs, in a
+# mount namespace of its own: an empty /usr/local and a copy of /etc,
+# whose ld.so.cache the ldconfig of make install rewrites.
+if [ "$(id -u)" != 0 ] || ! unshare -m true 2>/dev/null; then
+	echo "install: skipped: make install into /usr/local in a mount namespace (needs root and unshare)"
+elif ! cp -a /etc "$tmp/etc" 2>"$tmp/etc.err"; then
+	cat "$tmp/etc.err"
+	bad "cannot copy /etc for the mount namespace"
+else
+	cat >"$tmp/ns.sh" <<EOF
+mount -t tmpfs rdc-install /usr/local && mount --bind "$tmp/etc" /etc || exit 1
+unset LD_LIBRARY_PATH PKG_CONFIG_PATH PKG_CONFIG_LIBDIR PKG_CONFIG_SYSROOT_DIR
+$MAKE -s --no-print-directory O="$O" RDC_INSTALL_DIRS="$tmp/ns-dirs" install \\
+	>"$tmp/ns.log" 2>&1 || { cat "$tmp/ns.log"; echo "ns: make install failed"; exit 1; }
+grep -q 'ldconfig\$' "$tmp/ns.log" && echo "ns: ldconfig ran"
+readelf -d /usr/local/bin/rdcctl | grep -q RUNPATH && echo "ns: rdcctl has a RUNPATH"
+echo "ns: rdcctl \$(/usr/local/bin/rdcctl run tests/install/scene.rdl 2>&1 | sed -n 's/^crc32 //p;/error/p')"
+$CC -Wall -Werror examples/hello.c \$(pkg-config --cflags --libs rdc) \\
+	-o "$tmp/hello-ns" && echo "ns: hello \$("$tmp/hello-ns" 2>&1 | sed -n 's/^crc32 //p;/error/p')"
+$MAKE -s --no-print-directory O="$O" RDC_INSTALL_DIRS="$tmp/ns-dirs" uninstall \\
+	>>"$tmp/ns.log" 2>&1 || echo "ns: make uninstall failed"
+echo "ns: left \$(find /usr/local -mindepth 1 | head -n 5 | tr '\n' ' ')"
+EOF
+	unshare -m sh "$tmp/ns.sh" >"$tmp/ns.out" 2>&1
+	cat "$tmp/ns.out"
+	if grep -q '^ns: ldconfig ran$' "$tmp/ns.out" &&
+		! grep -q '^ns: rdcctl has a RUNPATH' "$tmp/ns.out"; then
+		ok "make install into /usr/local ran ldconfig, and linked no RUNPATH"
+	else
+		bad "make install into /usr/local: no ldconfig, or a RUNPATH"
+	fi
+	if [ -n "$want" ] && grep -qx "ns: rdcctl $want" "$tmp/ns.out" &&
+		grep -qx "ns: hello $want" "$tmp/ns.out"; then
+		ok "/usr/local/bin/rdcctl and hello built with pkg-config run on the system's loader: crc32 $want"
+	else
+		bad "/usr/local/bin/rdcctl or hello built with pkg-config: not crc32 '$want'"
+	fi
+	if grep -qx 'ns: left ' "$tmp/ns.out"; then
+		ok "make uninstall left /usr/local empty, as it was"
+	else
+		bad "make uninstall in /usr/local: $(grep '^ns: left' "$tmp/ns.out")"
+	fi
 fi
 
 echo "install: $pass passed, $fail failed"

@@ -1299,6 +1299,59 @@ static void test_vcd_regen(void **state)
 	assert_int_equal(sh_status(cmd), 0);
 }
 
+/* ---- make bench BENCH_ARGS=... (bench/README.md) ----------------------- */
+
+/*
+ * With BENCH_ARGS, `make bench` runs rdc-bench with them and nothing
+ * else: make -n neither builds nor runs net_bench, sink-bench or
+ * stream-bench (the shell line that says they are left out names them);
+ * without, it does both.
+ */
+static void test_bench_args(void **state)
+{
+	static const char *const rest[] = { "net_bench", "sink-bench",
+					    "stream-bench" };
+	static char out[1 << 18];
+	char dir[] = "/tmp/rdc-bench-XXXXXX", cmd[600], want[200];
+
+	(void)state;
+	if (sh_status("command -v make >/dev/null 2>&1"))
+		skip();
+	assert_non_null(mkdtemp(dir));
+	for (int with = 1; with >= 0; with--) {
+		FILE *p;
+		size_t n;
+
+		snprintf(cmd, sizeof(cmd),
+			 "make -n -s --no-print-directory O=%s bench %s 2>&1",
+			 dir, with ? "BENCH_ARGS='-w growth'" : "");
+		p = popen(cmd, "r");
+		assert_non_null(p);
+		n = fread(out, 1, sizeof(out) - 1, p);
+		out[n] = 0;
+		assert_int_equal(pclose(p), 0);
+		snprintf(want, sizeof(want), "\n%s/rel/rdc-bench%s\n", dir,
+			 with ? " -w growth" : " ");
+		if (!strstr(out, want))
+			fail_msg("%s: no '%s'", cmd, want + 1);
+		for (size_t i = 0; i < sizeof(rest) / sizeof(rest[0]); i++) {
+			char built[300], run[300];
+			bool b, r;
+
+			snprintf(built, sizeof(built), "-o %s/rel/%s\n", dir,
+				 rest[i]);
+			snprintf(run, sizeof(run), "\n%s/rel/%s", dir, rest[i]);
+			b = strstr(out, built);
+			r = strstr(out, run);
+			if (with && (b || r))
+				fail_msg("%s builds or runs %s", cmd, rest[i]);
+			if (!with && !b)
+				fail_msg("%s does not build %s", cmd, rest[i]);
+		}
+	}
+	rmdir(dir);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -1316,6 +1369,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_versions),
 		cmocka_unit_test(test_exit_status),
 		cmocka_unit_test(test_vcd_regen),
+		cmocka_unit_test(test_bench_args),
 	};
 	char self[PATH_MAX], abs[PATH_MAX];
 
