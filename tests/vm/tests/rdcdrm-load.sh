@@ -24,12 +24,13 @@ vmalloc_kb() {
 	sed -n 's/^VmallocUsed: *\([0-9]*\).*/\1/p' /proc/meminfo
 }
 
+# (its counter is its own: loop's $i stays loop's)
 wait_held() {
-	i=0
-	while [ $i -lt 300 ]; do
+	w=0
+	while [ $w -lt 300 ]; do
 		grep -q held "$1" 2>/dev/null && return 0
 		sleep 0.1
-		i=$((i + 1))
+		w=$((w + 1))
 	done
 	return 1
 }
@@ -100,7 +101,6 @@ wait "$pid"
 check "the harness's module unloads" rmmod rdcdrm
 base=$(vmalloc_kb)
 
-# progress goes to the console as it happens (a hang shows where)
 loop() {
 	i=0
 	while [ $i -lt "$LOOPS" ]; do
@@ -109,7 +109,6 @@ loop() {
 		2) args="devices=2 vram=18M" ;;
 		*) args="" ;;
 		esac
-		echo "# run $i: insmod $args" >/dev/console
 		insmod "$KO" $args || { echo "run $i: insmod $args failed"; return 1; }
 		[ -c $CARD ] || { echo "run $i: no $CARD"; return 1; }
 		if [ "$args" = "devices=2 vram=18M" ] && [ ! -c /dev/dri/card1 ]; then
@@ -117,7 +116,7 @@ loop() {
 			return 1
 		fi
 		fbcon_unbind
-		echo "# run $i: mode set" >/dev/console
+		: >"$T/hold.out"
 		"$TOOL" hold "$CARD" >"$T/hold.out" 2>&1 &
 		pid=$!
 		wait_held "$T/hold.out" ||
@@ -126,7 +125,6 @@ loop() {
 			{ echo "run $i ($args): frame"; cat "$T/frame.out"; return 1; }
 		kill "$pid"
 		wait "$pid"
-		echo "# run $i: rmmod" >/dev/console
 		rmmod rdcdrm || { echo "run $i: rmmod failed"; return 1; }
 		i=$((i + 1))
 	done
@@ -136,6 +134,7 @@ check "load, use, unload $LOOPS times" loop
 
 insmod "$KO"
 fbcon_unbind
+: >"$T/hold.out"
 "$TOOL" hold "$CARD" >"$T/hold.out" 2>&1 &
 pid=$!
 check "a client holds $CARD with a mode set" wait_held "$T/hold.out"
