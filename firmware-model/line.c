@@ -177,6 +177,7 @@ static rdc_always_inline uint64_t span_cost32(uint32_t a, uint32_t k,
 struct line_fixed {
 	uint8_t *vram;
 	uint64_t lim, v2;
+	uint64_t lo, hi; /* the bytes the line may write (the write barrier) */
 	uint32_t q, vstep, stride, one;
 	int64_t rr, d0, d1; /* rem < rr: a run of q + 1; rem += d1 or d0 */
 };
@@ -221,6 +222,8 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 	uint64_t lim = f->lim, budget = lim - w->t, cost;
 	uint32_t a = pos->addr, row = w->row;
 	bool more, last;
+
+	rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
 
 	/*
 	 * The first run, as rdc_dp_line_steps' loop makes it: rem may be
@@ -275,6 +278,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 					goto cut;
 				lim = w->lim;
 				budget = lim - w->t;
+				rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
 				continue;
 			}
 			budget -= cost;
@@ -310,6 +314,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 					goto cut;
 				lim = w->lim;
 				budget = lim - w->t;
+				rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
 				run1 = run;
 				left = budget / pp;
 				runmax = left > (uint64_t)(ihi - run) ?
@@ -459,6 +464,8 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 
 			fast = RDC_MIN(va, vz) >= 0 && u0 + ilo >= 0 &&
 			       lo <= hi && hi + 4 <= dp->hw->vram_size;
+			f.lo = lo;
+			f.hi = hi + 4;
 		}
 		f.vram = w.vram;
 		f.lim = w.lim;

@@ -144,6 +144,8 @@ uint8_t *rdc_port_span(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 	if (!len || (uint64_t)addr + len > hw->vram_size)
 		return NULL;
 	rdc_bus_charge(hw, addr, len, kind);
+	if ((kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+		rdc_scan_check(hw, addr, (uint64_t)addr + len);
 	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
 	    rdc_vram_watched(hw, addr, (uint64_t)addr + len))
 		rdc_vram_hook_call(hw, hw->now, addr, len, 1, 0,
@@ -191,6 +193,9 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 		bus_burst(hw, &t, a, len, kind);
 	}
 	hw->now = t;
+	if ((kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+		rdc_scan_check(hw, addr,
+			       addr + (uint64_t)(count - 1) * stride + len);
 	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
 	    rdc_vram_watched(hw, addr,
 			     addr + (uint64_t)(count - 1) * stride + len))
@@ -277,6 +282,24 @@ rdc_noinline void rdc_vram_watch_call(const struct rdc_hw *hw, uint64_t t,
 	rdc_vram_hook_call(hw, t, addr, len, count, stride, RDC_VRAM_BY_DP);
 }
 
+/* Does one of the runs charged reach lines scanout has not converted? */
+static rdc_noinline bool runs_scan_hit(const struct rdc_hw *hw,
+				       const struct rdc_port_run *r, uint32_t n,
+				       uint32_t stride)
+{
+	uint32_t i;
+
+	for (i = 0; i < n; i++) {
+		uint64_t s = r[i].count > 1 ? stride : 0;
+
+		if (r[i].count &&
+		    rdc_scan_hits(hw, r[i].addr,
+				  r[i].addr + (r[i].count - 1) * s + r[i].len))
+			return true;
+	}
+	return false;
+}
+
 /* The runs charged, to the VRAM write watcher (off the hot path). */
 static rdc_noinline void runs_watched(const struct rdc_hw *hw,
 				      const struct rdc_port_run *r, uint32_t n,
@@ -324,6 +347,9 @@ uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 		*done = runs_charge(hw, r, n, stride, kind, &row, &t, lim);
 	hw->bus.open_row = row;
 	hw->now = t;
+	if (hw->scan_hi && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
+	    runs_scan_hit(hw, r, *done, stride))
+		rdc_scan_drop_all(hw);
 	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
 		runs_watched(hw, r, *done, stride, t);
 	return hw->vram;
@@ -341,6 +367,7 @@ void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w)
 	w->row = hw->bus.open_row;
 	w->lim = c->running ? c->next_line_time : RDC_NEVER;
 	w->open = w->t >= c->fetch_end;
+	w->scan_hit = false;
 }
 
 bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
@@ -361,6 +388,9 @@ bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
 		return false;
 	w->t = t;
 	w->row = row;
+	if (hw->scan_hi && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
+	    runs_scan_hit(hw, r, 1, stride))
+		w->scan_hit = true;
 	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
 		runs_watched(hw, r, 1, stride, t);
 	return true;
@@ -402,6 +432,7 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 		w->t = t + c0 + (n - 1) * c1;
 		w->row = (uint32_t)((a + (n - 1) * stride + len - 1) /
 				    RDC_DRAM_ROW_BYTES);
+		rdc_scan_window_hit(hw, w, a, a + (n - 1) * stride + len);
 		if (hw->vram_hook &&
 		    rdc_vram_watched(hw, addr, a + (n - 1) * stride + len))
 			rdc_vram_hook_call(hw, w->t, addr, len, (uint32_t)n,
@@ -424,10 +455,25 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 	}
 	w->t = t;
 	w->row = row;
+	if (i)
+		rdc_scan_window_hit(hw, w, addr,
+				    addr + (uint64_t)(i - 1) * stride + len);
 	if (hw->vram_hook && i &&
 	    rdc_vram_watched(hw, addr, addr + (uint64_t)(i - 1) * stride + len))
 		rdc_vram_hook_call(hw, t, addr, len, i, stride, RDC_VRAM_BY_DP);
 	return i;
+}
+
+/* The writes of count pairs, wa + i * wstep, to the write barrier. */
+static inline void pairs_scan_hit(const struct rdc_hw *hw,
+				  struct rdc_port_window *w, int64_t wa,
+				  int64_t wstep, uint32_t len, uint32_t count)
+{
+	int64_t last = wa + (int64_t)(count ? count - 1 : 0) * wstep;
+
+	if (count)
+		rdc_scan_window_hit(hw, w, (uint64_t)RDC_MIN(wa, last),
+				    (uint64_t)RDC_MAX(wa, last) + len);
 }
 
 uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
@@ -473,6 +519,7 @@ uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
 		w->row = (uint32_t)((uint64_t)(wa + (int64_t)(n - 1) * wstep +
 					       len - 1) /
 				    RDC_DRAM_ROW_BYTES);
+		pairs_scan_hit(hw, w, wa, wstep, len, (uint32_t)n);
 		return (uint32_t)n;
 	}
 	/* rdc_port_window_pair's charge, pair by pair */
@@ -493,6 +540,7 @@ uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
 	}
 	w->t = t;
 	w->row = row;
+	pairs_scan_hit(hw, w, waddr, wstep, len, i);
 	return i;
 }
 
@@ -500,6 +548,9 @@ void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w)
 {
 	hw->bus.open_row = w->row;
 	hw->now = w->t;
+	/* the bytes are written now, but nothing has looked since */
+	if (w->scan_hit)
+		rdc_scan_drop_all(hw);
 }
 
 void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles)

@@ -132,6 +132,19 @@ static inline uint64_t rdc_bus_column_cost(uint32_t *row, uint64_t a,
 	return count * one + misses * RDC_T_ROW_MISS;
 }
 
+/*
+ * A DP write to [lo, hi) charged in a window: scanout on demand drops the
+ * lines it reaches that wait unconverted at the window's close (the DP
+ * writes the bytes before, but nothing can look in between).
+ */
+static inline void rdc_scan_window_hit(const struct rdc_hw *hw,
+				       struct rdc_port_window *w, uint64_t lo,
+				       uint64_t hi)
+{
+	if (lo < hw->scan_hi && hi > hw->scan_lo)
+		w->scan_hit = true;
+}
+
 /* A DP write charged in a window, to the VRAM write watcher if any. */
 void rdc_vram_watch_call(const struct rdc_hw *hw, uint64_t t, uint32_t addr,
 			 uint32_t len, uint32_t count, uint32_t stride);
@@ -170,6 +183,8 @@ static inline bool rdc_port_window_column(const struct rdc_hw *hw,
 		return false;
 	w->t = t;
 	w->row = row;
+	rdc_scan_window_hit(hw, w, a, a + (uint64_t)(r->count - 1) * stride +
+					     r->len);
 	rdc_vram_watch(hw, t, r->addr, r->len, r->count, stride);
 	return true;
 }
@@ -197,6 +212,7 @@ static inline bool rdc_port_window_pair(const struct rdc_hw *hw,
 		return false;
 	w->t = t;
 	w->row = row;
+	rdc_scan_window_hit(hw, w, waddr, (uint64_t)waddr + len);
 	rdc_vram_watch(hw, t, waddr, len, 1, 0);
 	return true;
 }
@@ -220,6 +236,7 @@ static inline bool rdc_port_window_span(const struct rdc_hw *hw,
 		return false;
 	w->t = t;
 	w->row = row;
+	rdc_scan_window_hit(hw, w, addr, (uint64_t)addr + len);
 	rdc_vram_watch(hw, t, addr, len, 1, 0);
 	return true;
 }
@@ -251,6 +268,7 @@ static inline uint32_t rdc_port_window_rows_all(const struct rdc_hw *hw,
 		return rdc_port_window_rows(hw, w, addr, len, stride, count);
 	w->t = t;
 	w->row = (uint32_t)((end - 1) / RDC_DRAM_ROW_BYTES);
+	rdc_scan_window_hit(hw, w, a, end);
 	return count;
 }
 

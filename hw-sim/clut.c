@@ -65,8 +65,10 @@ void rdc_port_clut_write(struct rdc_hw *hw, uint32_t index, uint32_t rgb)
 	/* lines fetched before this moment keep the old colour */
 	rdc_crtc_catch_up(hw, hw->now);
 	hw->clut_shadow[index] = rgb;
-	if (hw->control & RDC_CONTROL_CLUT_LATCH)
+	if (hw->control & RDC_CONTROL_CLUT_LATCH) {
 		hw->clut_dirty = 1;
-	else
+	} else if (hw->clut[index] != rgb) {
+		rdc_scan_changed(hw);
 		hw->clut[index] = rgb;
+	}
 }

@@ -465,47 +465,27 @@ static void cursor_line(const struct rdc_hw *hw, uint32_t *out, uint32_t n,
 }
 
 /*
- * Start of active line n: the CRTC reads it (and the ARGB8888 cursor's
- * row on it, in the same window) and converts it at once.  The bus sees
- * every fetch; the conversion is skipped (`hidden`) for a frame that
- * nobody can ever look at.  While BL_EN is low the panel is dark: the
- * line is fetched and timed as ever, and shows black (cursor included).
+ * Convert active line n of the frame in buffer `buf` as the CRTC fetched
+ * it (crtc_fetch, or later for a line that waited: then nothing it reads
+ * has changed since, or the write barrier would have dropped it).  While
+ * BL_EN is low the panel is dark: the line shows black, cursor included.
  */
-static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
-		       bool hidden)
+static void crtc_convert(struct rdc_hw *hw, unsigned int buf, uint32_t n)
 {
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t w = c->cur.h_display, bytes;
-	uint32_t *out = hw->frame[hw->frame_back] + (size_t)n * w;
+	uint32_t *out = hw->frame[buf] + (size_t)n * w;
 	uint64_t addr, cursor_addr = 0;
-	bool lit, argb = cursor_argb_row(hw, &c->cur, n, &cursor_addr);
+	bool lit = hw->pins_in & RDC_PIN_BL_EN;
+	bool argb = cursor_argb_row(hw, &c->cur, n, &cursor_addr);
 
-	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
-		uint64_t start = RDC_MAX(when, c->fetch_end);
-
-		c->fetch_end = start + rdc_bus_read_cost(&hw->bus.open_row,
-							 addr, bytes);
-		if (argb)
-			cursor_argb_fetch(hw, when, cursor_addr);
-		if (hidden)
-			return;
-		/* read past the hidden-frame return: that path is the hot one */
-		lit = hw->pins_in & RDC_PIN_BL_EN;
-		if (lit) {
-			convert_line(hw, out, hw->vram + addr, w,
-				     c->cur_format);
-			if (c->cur_gamma &&
-			    !rdc_format_indexed(c->cur_format)) {
-				rdc_stream_fence(); /* read after the stores */
-				gamma_line(hw->clut, out, w);
-			}
-		} else {
-			rdc_memset(out, 0, (size_t)w * sizeof(*out));
+	if (lit && line_range(hw, &c->cur, n, &addr, &bytes)) {
+		convert_line(hw, out, hw->vram + addr, w, c->cur_format);
+		if (c->cur_gamma && !rdc_format_indexed(c->cur_format)) {
+			rdc_stream_fence(); /* read after the stores */
+			gamma_line(hw->clut, out, w);
 		}
 	} else {
-		if (argb)
-			cursor_argb_fetch(hw, when, cursor_addr);
-		lit = hw->pins_in & RDC_PIN_BL_EN;
 		rdc_memset(out, 0, (size_t)w * sizeof(*out));
 	}
 	if (lit && (hw->control & RDC_CONTROL_CURSOR_EN)) {
@@ -516,6 +496,204 @@ static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
 			 RDC_CURSOR_FMT_2BPP)
 			cursor_line(hw, out, n, w);
 	}
+}
+
+/* ---- scanout on demand (rdc_hw_set_on_demand) ---------------------------- */
+
+/* VRAM bytes the waiting lines of buffer b read: [*lo, *hi), or false. */
+static bool scan_bytes(const struct rdc_hw *hw, unsigned int b, uint64_t *lo,
+		       uint64_t *hi)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	uint32_t first = hw->pend_lo[b], last = hw->pend_hi[b], bytes;
+	uint64_t a0, a1;
+
+	if (first == last)
+		return false;
+	*lo = UINT64_MAX;
+	*hi = 0;
+	bytes = rdc_format_row_bytes(c->cur_format, c->cur.h_display);
+	a0 = c->cur_base + (uint64_t)first * c->cur_stride;
+	a1 = c->cur_base + (uint64_t)(last - 1) * c->cur_stride + bytes;
+	if (a0 < hw->vram_size) {
+		*lo = a0;
+		*hi = RDC_MIN(a1, (uint64_t)hw->vram_size);
+	}
+	if (cursor_argb(hw)) {
+		uint64_t size = rdc_cursor_size(c->cur_cursor_ctrl);
+		uint64_t e = c->cur_cursor_base + size * size * 4;
+
+		*lo = RDC_MIN(*lo, (uint64_t)c->cur_cursor_base);
+		*hi = RDC_MAX(*hi, RDC_MIN(e, (uint64_t)hw->vram_size));
+	}
+	return *lo < *hi;
+}
+
+/* The write barrier's bounds, after the waiting lines changed. */
+static void scan_bounds(struct rdc_hw *hw)
+{
+	uint64_t lo = UINT64_MAX, hi = 0, l, h;
+	unsigned int b;
+
+	for (b = 0; b < 2; b++) {
+		if (scan_bytes(hw, b, &l, &h)) {
+			lo = RDC_MIN(lo, l);
+			hi = RDC_MAX(hi, h);
+		}
+	}
+	if (lo >= hi)
+		lo = hi = 0;
+	hw->scan_lo = lo;
+	hw->scan_hi = hi;
+}
+
+/* Drop the waiting lines of the buffers in mask `bufs`, and their frames. */
+static void scan_drop(struct rdc_hw *hw, unsigned int bufs)
+{
+	unsigned int b;
+
+	for (b = 0; b < 2; b++) {
+		if (!(bufs & (1u << b)) || hw->pend_lo[b] == hw->pend_hi[b])
+			continue;
+		hw->frame_ok[b] = false;
+		hw->pend_lo[b] = hw->pend_hi[b] = 0;
+	}
+	scan_bounds(hw);
+}
+
+void rdc_scan_drop_all(struct rdc_hw *hw)
+{
+	scan_drop(hw, 3);
+}
+
+rdc_noinline void rdc_scan_write(struct rdc_hw *hw, uint64_t lo, uint64_t hi)
+{
+	uint64_t l, h;
+	unsigned int b, bufs = 0;
+
+	for (b = 0; b < 2; b++)
+		if (scan_bytes(hw, b, &l, &h) && lo < h && hi > l)
+			bufs |= 1u << b;
+	scan_drop(hw, bufs);
+}
+
+/* Convert the waiting lines of the buffers in mask `bufs`. */
+static void scan_convert(struct rdc_hw *hw, unsigned int bufs)
+{
+	unsigned int b;
+	uint32_t n;
+
+	for (b = 0; b < 2; b++) {
+		if (!(bufs & (1u << b)))
+			continue;
+		for (n = hw->pend_lo[b]; n < hw->pend_hi[b]; n++)
+			crtc_convert(hw, b, n);
+		hw->pend_lo[b] = hw->pend_hi[b] = 0;
+	}
+	rdc_stream_fence();
+	scan_bounds(hw);
+}
+
+void rdc_scan_update(struct rdc_hw *hw)
+{
+	hw->lazy = hw->on_demand && !hw->consumers && !hw->frame_fn;
+	if (!hw->lazy)
+		scan_convert(hw, 3);
+}
+
+void rdc_scan_front(struct rdc_hw *hw)
+{
+	unsigned int front = hw->frame_back ^ 1;
+
+	if (hw->pend_lo[front] != hw->pend_hi[front])
+		scan_convert(hw, 1u << front);
+}
+
+/* A new frame goes into buffer b: nothing of it fetched, nothing lost. */
+static void scan_new_frame(struct rdc_hw *hw, unsigned int b)
+{
+	hw->frame_ok[b] = true;
+	if (hw->pend_lo[b] != hw->pend_hi[b]) {
+		hw->pend_lo[b] = hw->pend_hi[b] = 0;
+		scan_bounds(hw);
+	}
+}
+
+/* Line n, fetched into the back buffer, waits for a look. */
+static void scan_defer(struct rdc_hw *hw, uint32_t n)
+{
+	unsigned int b = hw->frame_back;
+
+	if (!hw->frame_ok[b])
+		return;
+	if (hw->pend_lo[b] == hw->pend_hi[b])
+		hw->pend_lo[b] = n;
+	hw->pend_hi[b] = n + 1;
+	scan_bounds(hw);
+}
+
+/*
+ * Start of active line n: the CRTC reads it (and the ARGB8888 cursor's
+ * row on it, in the same window) and converts it at once.  The bus sees
+ * every fetch; the conversion is skipped (`hidden`) for a frame that
+ * nobody can ever look at, and put off while nobody looks (hw->lazy).
+ */
+static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
+		       bool hidden)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t bytes;
+	uint64_t addr, cursor_addr = 0;
+	bool argb = cursor_argb_row(hw, &c->cur, n, &cursor_addr);
+
+	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
+		uint64_t start = RDC_MAX(when, c->fetch_end);
+
+		c->fetch_end = start + rdc_bus_read_cost(&hw->bus.open_row,
+							 addr, bytes);
+	}
+	if (argb)
+		cursor_argb_fetch(hw, when, cursor_addr);
+	if (hidden) {
+		hw->frame_ok[hw->frame_back] = false;
+		return;
+	}
+	if (hw->lazy) {
+		scan_defer(hw, n);
+		return;
+	}
+	crtc_convert(hw, hw->frame_back, n);
+}
+
+/*
+ * Would the latch at this vblank change how a line of the frame just
+ * completed converts?  (Its waiting lines are dropped then.)
+ */
+static bool crtc_latch_changes(const struct rdc_hw *hw)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	uint32_t i;
+
+	if (c->shadow_dirty || !c->mode_valid || c->mode_pending ||
+	    hw->clut_dirty || c->cur_base != c->fb_base ||
+	    c->cur_stride != c->fb_stride ||
+	    c->cur_gamma != ((hw->control & RDC_CONTROL_GAMMA_EN) != 0) ||
+	    c->cur_cursor_ctrl != c->cursor_ctrl ||
+	    c->cur_cursor_base != c->cursor_base)
+		return true;
+	if (FIELD_GET(RDC_CURSOR_CTRL_FMT, c->cursor_ctrl) !=
+	    RDC_CURSOR_FMT_2BPP)
+		return false;
+	if ((uint64_t)c->cursor_base + RDC_CURSOR_BYTES > hw->vram_size) {
+		for (i = 0; i < RDC_CURSOR_BYTES; i++)
+			if (c->cursor_img[i])
+				return true;
+		return false;
+	}
+	for (i = 0; i < RDC_CURSOR_BYTES; i++)
+		if (c->cursor_img[i] != hw->vram[c->cursor_base + i])
+			return true;
+	return false;
 }
 
 static void crtc_vblank(struct rdc_hw *hw, uint64_t when)
@@ -533,9 +711,13 @@ static void crtc_vblank(struct rdc_hw *hw, uint64_t when)
 	hw->have_frame = 1;
 	c->frame_count++;
 	rdc_trace(hw, RDC_TRACE_VBLANK, (uint32_t)number, 0);
+	scan_new_frame(hw, hw->frame_back);
+	if (hw->pend_lo[hw->frame_back ^ 1] != hw->pend_hi[hw->frame_back ^ 1] &&
+	    crtc_latch_changes(hw))
+		scan_drop(hw, 1u << (hw->frame_back ^ 1));
 	crtc_latch(hw, true);
 	rdc_stream_fence(); /* the frame whole before anyone reads it */
-	if (hw->frame_fn)
+	if (hw->frame_fn && hw->frame_ok[hw->frame_back ^ 1])
 		hw->frame_fn(hw->frame_ctx, hw->frame[hw->frame_back ^ 1], w, h,
 			     number);
 }
@@ -611,6 +793,7 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 		if (n >= c->cur.v_total) {
 			c->frame_start += c->frame_cycles;
 			if (c->mode_pending) {
+				rdc_scan_drop_all(hw);
 				c->cur = c->pending;
 				c->mode_pending = 0;
 				c->frame_cycles = line_offset(hw, &c->cur,
@@ -646,6 +829,9 @@ void rdc_crtc_start(struct rdc_hw *hw)
 {
 	struct rdc_crtc *c = &hw->crtc;
 
+	/* the latch and a new timing: what waits is not shown as fetched */
+	rdc_scan_drop_all(hw);
+	scan_new_frame(hw, hw->frame_back);
 	if (c->mode_pending) {
 		c->cur = c->pending;
 		c->mode_pending = 0;

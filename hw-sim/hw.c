@@ -56,6 +56,9 @@ void rdc_hw_reset(struct rdc_hw *hw)
 	hw->front_w = 0;
 	hw->front_h = 0;
 	hw->frame_back = 0;
+	hw->frame_ok[0] = hw->frame_ok[1] = true;
+	hw->pend_lo[0] = hw->pend_hi[0] = hw->pend_lo[1] = hw->pend_hi[1] = 0;
+	hw->scan_lo = hw->scan_hi = 0;
 	rdc_crtc_reset(hw);
 	if (!hw->in_reset)
 		rdc_crtc_start(hw);
@@ -110,6 +113,8 @@ void rdc_hw_set_pins(struct rdc_hw *hw, uint32_t pins_in)
 	bool hold = !(pins_in & RDC_PIN_RESET_N);
 
 	rdc_crtc_catch_up(hw, hw->now);
+	if ((hw->pins_in ^ pins_in) & RDC_PIN_BL_EN)
+		rdc_scan_changed(hw);
 	hw->pins_in = pins_in & PINS_IN;
 	if (hold != (bool)hw->in_reset) {
 		hw->in_reset = hold;
@@ -131,6 +136,35 @@ void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx)
 	/* frames skipped so far were never shown: nothing to catch up */
 	hw->frame_fn = fn;
 	hw->frame_ctx = ctx;
+	rdc_scan_update(hw);
+}
+
+void rdc_hw_set_on_demand(struct rdc_hw *hw, bool on)
+{
+	rdc_crtc_catch_up(hw, hw->now);
+	hw->on_demand = on;
+	rdc_scan_update(hw);
+}
+
+void rdc_hw_consumer_attach(struct rdc_hw *hw)
+{
+	rdc_crtc_catch_up(hw, hw->now);
+	hw->consumers++;
+	rdc_scan_update(hw);
+}
+
+void rdc_hw_consumer_detach(struct rdc_hw *hw)
+{
+	rdc_crtc_catch_up(hw, hw->now);
+	if (hw->consumers)
+		hw->consumers--;
+	rdc_scan_update(hw);
+}
+
+void rdc_hw_vram_touched(struct rdc_hw *hw, uint32_t addr, uint32_t len)
+{
+	rdc_crtc_catch_up(hw, hw->now);
+	rdc_scan_check(hw, addr, (uint64_t)addr + len);
 }
 
 void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx)
@@ -160,10 +194,10 @@ void rdc_hw_set_poll(struct rdc_hw *hw, void (*fn)(void *ctx), void *ctx)
 	hw->poll_count = 0;
 }
 
-const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
+const uint32_t *rdc_hw_frame(struct rdc_hw *hw, uint32_t *width,
 			     uint32_t *height)
 {
-	if (!hw->have_frame) {
+	if (!hw->have_frame || !hw->frame_ok[hw->frame_back ^ 1]) {
 		if (width)
 			*width = 0;
 		if (height)
@@ -174,6 +208,7 @@ const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
 		*width = hw->front_w;
 	if (height)
 		*height = hw->front_h;
+	rdc_scan_front(hw);
 	return hw->frame[hw->frame_back ^ 1];
 }
 
@@ -208,6 +243,7 @@ int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
 		return 0;
 	/* lines the beam has passed keep the old bytes */
 	rdc_crtc_catch_up(hw, hw->now);
+	rdc_scan_check(hw, addr, (uint64_t)addr + len);
 	if (hw->vram_hook && rdc_vram_watched(hw, addr, (uint64_t)addr + len))
 		rdc_vram_hook_call(hw, hw->now, addr, len, 1, 0,
 				   RDC_VRAM_BY_HOST);
@@ -485,6 +521,8 @@ static void control_write(struct rdc_hw *hw, uint32_t val)
 	if (val & RDC_CONTROL_RESUME)
 		hw->dp_resume = 1;
 	hw->control = val & CONTROL_RW_BITS;
+	if ((old ^ hw->control) & RDC_CONTROL_CURSOR_EN)
+		rdc_scan_changed(hw);
 	if (!(hw->control & RDC_CONTROL_DP_EN))
 		rdc_dp_active(hw, 0);
 	if ((old ^ hw->control) & RDC_CONTROL_SCANOUT_EN) {
@@ -569,12 +607,18 @@ static bool crtc_side_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
 		c->cursor_base = val;
 		return true;
 	case RDC_REG_CURSOR_POS:
+		if (c->cursor_pos != val)
+			rdc_scan_changed(hw);
 		c->cursor_pos = val;
 		return true;
 	case RDC_REG_CURSOR_FG:
+		if (c->cursor_fg != (val & RGB_MASK))
+			rdc_scan_changed(hw);
 		c->cursor_fg = val & RGB_MASK;
 		return true;
 	case RDC_REG_CURSOR_BG:
+		if (c->cursor_bg != (val & RGB_MASK))
+			rdc_scan_changed(hw);
 		c->cursor_bg = val & RGB_MASK;
 		return true;
 	case RDC_REG_CURSOR_CTRL:

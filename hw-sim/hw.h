@@ -181,6 +181,24 @@ struct rdc_hw {
 	int have_frame;
 	uint32_t front_w, front_h;
 
+	/*
+	 * Scanout on demand (rdc_hw_set_on_demand): with it on and nobody
+	 * looking (`lazy`: no consumer attached, no frame listener), lines
+	 * are fetched and timed but not converted.  A buffer's frame stays
+	 * showable (frame_ok) while nothing it fetched and has not
+	 * converted, lines [pend_lo, pend_hi), has changed since: such lines
+	 * are converted when somebody looks.  A write to VRAM bytes
+	 * [scan_lo, scan_hi) (what pending lines read, the ARGB8888 cursor
+	 * included), or to a register, CLUT entry or pin that converting them
+	 * reads, drops them and their frame instead (the write barrier);
+	 * scan_lo == scan_hi: nothing pending, one test on the write paths.
+	 */
+	bool on_demand, lazy;
+	uint32_t consumers;
+	bool frame_ok[2];
+	uint32_t pend_lo[2], pend_hi[2];
+	uint64_t scan_lo, scan_hi;
+
 	rdc_trace_fn trace_fn; /* optional */
 	void *trace_ctx;
 
@@ -336,8 +354,12 @@ static inline bool rdc_vram_watched(const struct rdc_hw *hw, uint32_t addr,
 #define RDC_POLL_EVERY 64u
 void rdc_hw_set_poll(struct rdc_hw *hw, void (*fn)(void *ctx), void *ctx);
 
-/* The last complete frame (NULL before the first) and its size. */
-const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
+/*
+ * The last complete frame and its size: NULL before the first, and for
+ * a frame that scanout on demand dropped (rdc_hw_set_on_demand).  Lines
+ * of it that wait unconverted are converted first: a look.
+ */
+const uint32_t *rdc_hw_frame(struct rdc_hw *hw, uint32_t *width,
 			     uint32_t *height);
 
 /* Beam position at hw->now (y >= V_DISPLAY in vertical blanking). */
@@ -441,6 +463,7 @@ struct rdc_port_window {
 	uint64_t t, lim;
 	uint32_t row;
 	bool open; /* false: a fetch window holds the bus now */
+	bool scan_hit; /* a write reached lines scanout has not converted */
 };
 
 void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w);

@@ -130,6 +130,39 @@ static inline void rdc_hw_idle_to(struct rdc_hw *hw, uint64_t t)
 	hw->now = t;
 }
 
+/*
+ * Scanout on demand's write barrier (hw.h's struct rdc_hw says what
+ * waits): rdc_scan_check before bytes [lo, hi) of VRAM change (or after,
+ * before anything can look: dropping needs no old bytes), one test while
+ * nothing waits; rdc_scan_changed when a register, CLUT entry or pin that
+ * converting a line reads changes.
+ */
+void rdc_scan_write(struct rdc_hw *hw, uint64_t lo, uint64_t hi);
+void rdc_scan_drop_all(struct rdc_hw *hw);
+/* hw->lazy again after a consumer, listener or setting changed */
+void rdc_scan_update(struct rdc_hw *hw);
+/* convert what waits of the last complete frame (a look at it) */
+void rdc_scan_front(struct rdc_hw *hw);
+
+static inline bool rdc_scan_hits(const struct rdc_hw *hw, uint64_t lo,
+				 uint64_t hi)
+{
+	return lo < hw->scan_hi && hi > hw->scan_lo;
+}
+
+static inline void rdc_scan_check(struct rdc_hw *hw, uint64_t lo, uint64_t hi)
+{
+	if (rdc_scan_hits(hw, lo, hi))
+		rdc_scan_write(hw, lo, hi);
+}
+
+static inline void rdc_scan_changed(struct rdc_hw *hw)
+{
+	if (hw->pend_lo[0] != hw->pend_hi[0] ||
+	    hw->pend_lo[1] != hw->pend_hi[1])
+		rdc_scan_drop_all(hw);
+}
+
 void rdc_crtc_start(struct rdc_hw *hw);
 void rdc_crtc_stop(struct rdc_hw *hw);
 /* Does the next scanout event open a fetch window (an active line)? */

@@ -38,7 +38,9 @@ struct rdc_hw;
  * frame_number counts from 0 (FRAME_COUNT reads frame_number + 1 then).
  * Without a listener the chip skips converting frames that are replaced
  * before anyone could look at them with rdc_hw_frame (a long
- * rdc_hw_run_until); with one, every frame is converted and handed over.
+ * rdc_hw_run_until); with one, every frame is converted and handed over
+ * (but for one that scanout on demand dropped before the listener came:
+ * see rdc_hw_set_on_demand).
  */
 typedef void (*rdc_frame_fn)(void *ctx, const uint32_t *xrgb, uint32_t width,
 			     uint32_t height, uint64_t frame_number);
@@ -158,11 +160,52 @@ void rdc_hw_timing(const struct rdc_hw *hw, struct rdc_timing *t);
 /* The timing of a preset; 0, or -1 for an unknown preset. */
 int rdc_preset_timing(uint32_t preset, struct rdc_timing *t);
 
+/*
+ * Scanout on demand.  The CRTC fetches every line at its time and charges
+ * the bus for it whatever the setting, so cycles, tearing, interrupts and
+ * TE never depend on it; what it decides is whether fetched lines are
+ * converted (format, CLUT, gamma, cursor) into the XRGB8888 frame.
+ *
+ * Off (after rdc_hw_init and every reset keeps the setting): as before,
+ * every frame that anyone could look at is converted as its lines are
+ * fetched.  On: lines are converted at their fetch only while a frame
+ * consumer is attached or a frame listener is set.  With neither, they
+ * wait unconverted, and an idle display costs only the bus bookkeeping:
+ *  - a look (rdc_hw_frame, an attach, a listener set) converts the lines
+ *    still waiting, bit for bit as at their fetch;
+ *  - a change to what a waiting line would show (a write to its VRAM
+ *    bytes or the ARGB8888 cursor's, by the DP or the host; a CLUT entry
+ *    in force; CURSOR_POS, CURSOR_FG, CURSOR_BG, CONTROL.CURSOR_EN; BL_EN;
+ *    a vblank latch that changes the framebuffer, format, gamma, cursor or
+ *    CLUT; a mode change; scanout restarted) drops its frame instead:
+ *    rdc_hw_frame returns NULL for a dropped frame, and a listener is not
+ *    called with one;
+ *  - so after an attach, the frame being scanned (if nothing dropped it)
+ *    and every one after it are there, and each is bit-identical to the
+ *    frame scanout off gives.
+ *
+ * A consumer is whatever looks at frames: a sink, a frame subscriber, a
+ * CRC, a frame grab that must not fail.  Attaches are counted; each
+ * detach undoes one.  The kernel chip host turns it on once after
+ * rdc_hw_init and attaches for each consumer it has (rdcfb: an open
+ * reader or a mapping of VRAM; rdcdrm: a CRC source, a plane's frame
+ * read back), under the lock it holds around every call here.  Bytes
+ * written behind the chip's back (user space writing a mapping of VRAM)
+ * pass no barrier: a host that lets that happen keeps a consumer
+ * attached meanwhile, or reports each write with rdc_hw_vram_touched
+ * before anything looks again.
+ */
+void rdc_hw_set_on_demand(struct rdc_hw *hw, bool on);
+void rdc_hw_consumer_attach(struct rdc_hw *hw);
+void rdc_hw_consumer_detach(struct rdc_hw *hw);
+/* Bytes [addr, addr + len) of VRAM changed outside rdc_hw_vram_write. */
+void rdc_hw_vram_touched(struct rdc_hw *hw, uint32_t addr, uint32_t len);
+
 /* The same calls as hw.h declares (and documents there). */
 uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg);
 void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t);
 uint32_t rdc_hw_pins(struct rdc_hw *hw);
-const uint32_t *rdc_hw_frame(const struct rdc_hw *hw, uint32_t *width,
+const uint32_t *rdc_hw_frame(struct rdc_hw *hw, uint32_t *width,
 			     uint32_t *height);
 void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx);
 void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx);
