@@ -684,6 +684,10 @@ $(O)/rel/rdcfb_tool: $(O)/rel/tests/vm/rdcfb_tool.o $(O)/rel/librdc.a
 $(O)/rel/v4l2_read: $(O)/rel/tests/vm/v4l2_read.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 VM_BINS += $(O)/rel/fbdev_ioctl $(O)/rel/rdcfb_fuzz
+# frame_check: a compositor's screenshot against the chip's frame
+VM_BINS += $(O)/rel/frame_check
+$(O)/rel/frame_check: $(O)/rel/tests/vm/frame_check.o $(O)/rel/librdc.a
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 $(O)/rel/fbdev_ioctl: $(O)/rel/tests/vm/fbdev_ioctl.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 $(O)/rel/rdcfb_fuzz: $(O)/rel/tests/vm/rdcfb_fuzz.o $(O)/rel/librdc.a

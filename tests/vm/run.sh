@@ -201,6 +201,13 @@ if [ $all = 1 ] && [ -z "${RDC_VM_KERNEL:-}" ]; then
 fi
 
 install $BASE_PKGS
+# The desktop-* tests run Debian's compositors and X server on rdcdrm.ko:
+# weston, Xorg's modesetting driver and cage (wlroots, which also wants
+# Xwayland), seatd for cage's seat, the screenshot tools (grim, xwd) and
+# X clients (xsetroot, xdpyinfo, xeyes).
+DESKTOP_PKGS="weston seatd xserver-xorg-core xwayland cage grim x11-apps
+x11-utils x11-xserver-utils"
+case " $TESTS " in *" desktop-"*) install $DESKTOP_PKGS ;; esac
 case ${RDC_VM_KERNEL:-} in
 "") KVER=$(meta_kernel linux-image-amd64) ;;
 newest) KVER=$(newest_kernel) ;;
