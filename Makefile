@@ -722,6 +722,8 @@ $(O)/rel/usb_tool: $(O)/rel/tests/vm/usb_tool.o $(O)/rel/librdc.a
 $(O)/san/usb_tool: $(O)/san/tests/vm/usb_tool.o $(O)/san/librdc.a
 	$(CC) $(SAN_CFLAGS) $^ $(LIBS) -o $@
 
+# drm_pattern: a DRM/KMS client (libdrm) of the udl card the DisplayLink
+# personality brings up (tests/vm/tests/udl-*.sh, which skip without it).
 # rdcdrm_tool: the client of rdcdrm.ko's card in the rdcdrm VM tests
 # (tests/vm/tests/rdcdrm-*.sh, which skip without it).
 ifeq ($(HAVE_DRM),1)
@@ -729,19 +731,17 @@ VM_BINS += $(O)/rel/rdcdrm_tool
 endif
 $(O)/rel/rdcdrm_tool: $(O)/rel/tests/vm/rdcdrm_tool.o
 	$(CC) $(REL_CFLAGS) $^ $(shell $(PKG_CONFIG) --libs libdrm) -lz -o $@
-# drm_pattern: a DRM/KMS client (libdrm) of the udl card the DisplayLink
-# personality brings up (tests/vm/tests/udl-*.sh, which skip without it).
 # kms_conform: KMS conformance of rdcdrm.ko's card (libdrm; run by
 # tests/vm/tests/rdcdrm-kms.sh, which skips without it).
 ifeq ($(HAVE_DRM),1)
 VM_BINS += $(O)/rel/drm_pattern $(O)/rel/kms_conform
 endif
+$(O)/rel/kms_conform: $(O)/rel/tests/vm/kms_conform.o
+	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 $(O)/rel/drm_pattern: tests/vm/drm_pattern.c $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) -Iuserspace/rdcd \
 		$(shell $(PKG_CONFIG) --cflags libdrm) $^ \
 		$(shell $(PKG_CONFIG) --libs libdrm) $(LIBS) -o $@
-$(O)/rel/kms_conform: $(O)/rel/tests/vm/kms_conform.o
-	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 vm-test: $(VM_BINS)
 	@tests/vm/run.sh $(O)
