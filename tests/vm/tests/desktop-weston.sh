@@ -78,5 +78,6 @@ PERIOD_US=$("$RDCCTL" --connect "drm:$CARD" regs | awk '
 	END { if (k) printf "%.3f\n", h * v * 1000 / k; else print 0 }')
 check "weston repaints on the chip's vblanks" present
 check "weston exits cleanly" desktop_stop
+check "rdcdrm unloads afterwards" rmmod rdcdrm
 [ $failed -eq 0 ] || desktop_logs
 finish
