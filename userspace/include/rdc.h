@@ -252,7 +252,9 @@ int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
  * into buf of `cap` words.  Returns RDC_E_RANGE if cap is too small (so
  * cap 0 and buf NULL asks for the size), RDC_E_NOSYS if the backend cannot
  * see frames (never on sim:).  width and height are set whenever a frame
- * exists; before the first frame the call waits for one vblank.
+ * exists; before the first frame the call waits for one vblank, and for a
+ * frame the chip did not keep (scanout on demand: nobody looked while it
+ * was scanned, and the picture changed under it) for up to two.
  */
 int rdc_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap, uint32_t *width,
 		   uint32_t *height);

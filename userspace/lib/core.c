@@ -771,7 +771,7 @@ int rdc_host_blit(rdc_dev *dev, int x, int y, uint32_t w, uint32_t h,
 int rdc_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap, uint32_t *width,
 		   uint32_t *height)
 {
-	uint32_t w = 0, h = 0;
+	uint32_t w = 0, h = 0, tries;
 	int ret;
 
 	if (!dev || (!buf && cap))
@@ -779,14 +779,19 @@ int rdc_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap, uint32_t *width,
 	if (!dev->be->frame_grab)
 		return RDC_E_NOSYS;
 	ret = dev->be->frame_grab(dev, buf, cap, &w, &h);
-	if (ret == 1) {
+	/*
+	 * No frame: before the first, or one that scanout on demand dropped
+	 * (hw-sim/rdc_chip.h); the one scanned whole after the look began
+	 * completes at the second vblank at the latest.
+	 */
+	for (tries = 0; ret == 1 && tries < 2; tries++) {
 		ret = rdc_vblank_wait(dev);
 		if (ret)
 			return ret;
 		ret = dev->be->frame_grab(dev, buf, cap, &w, &h);
-		if (ret == 1)
-			ret = RDC_E_TIMEOUT;
 	}
+	if (ret == 1)
+		ret = RDC_E_TIMEOUT;
 	if (ret == 0 || ret == RDC_E_RANGE) {
 		if (width)
 			*width = w;
