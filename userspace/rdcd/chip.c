@@ -186,6 +186,7 @@ int rdcd_chip_run(struct rdcd *d, rdcd_chip_fn fn, void *arg)
 {
 	struct rdcd_chip *ch = d->chip;
 
+	rdcd_watch(d); /* sinks open after the chip: before its first run */
 	if (!ch) {
 		fn(d, arg);
 		return 0;

@@ -29,6 +29,9 @@
 #define NS_PER_S 1000000000ull
 /* Paced mode: wake this often to move time (1 ms). */
 #define RDCD_TICK_MS 1
+/* ... and with nobody looking at frames (rdcd_watch): 50 ms, within
+ * RDCD_PACE_SLACK, so that an idle daemon wakes 20 times a second. */
+#define RDCD_IDLE_TICK_MS 50
 /* Fast mode: simulated cycles between looks at the sockets (1 ms). */
 #define RDCD_FAST_SLICE (RDC_DEFAULT_CORE_HZ / 1000u)
 /* Paced mode: a host this far behind the wall clock starts over from now
@@ -763,7 +766,10 @@ static void rdcd_loop(struct rdcd *d)
 		if (rdcd_chip_busy(d)) {
 			tmo = &ts; /* zero: the chip goes on at once */
 		} else if (d->mode == RDC_RUN_PACED) {
-			ts.tv_nsec = RDCD_TICK_MS * 1000000L;
+			ts.tv_nsec = (d->watched || d->gpiosim ?
+					      RDCD_TICK_MS :
+					      RDCD_IDLE_TICK_MS) *
+				     1000000L;
 			tmo = &ts;
 		} else if (d->mode == RDC_RUN_FAST || rdcd_has_pending(d)) {
 			tmo = &ts; /* zero: just look */

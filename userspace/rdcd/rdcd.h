@@ -183,6 +183,8 @@ struct rdcd {
 	int log_level;
 	uint32_t last_irq;
 	uint64_t frames;
+	/* the chip converts frames: a client or a sink may look (rdcd_watch) */
+	bool watched;
 
 	/* every frame also goes to these */
 	rdc_sink *sinks[RDCD_MAX_SINKS];
@@ -239,6 +241,13 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c);
 void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c);
 /* After simulated time moved: finish pending requests, push IRQ events. */
 void rdcd_after_advance(struct rdcd *d);
+/*
+ * Scanout on demand: the chip converts frames only while a client (which
+ * may grab or subscribe at any time) or a sink is there; an idle rdcd
+ * with neither only keeps the simulated time.  Before the chip runs and
+ * when a client comes or goes.
+ */
+void rdcd_watch(struct rdcd *d);
 bool rdcd_has_pending(const struct rdcd *d);
 /* Paced and fast modes, inside the loop's advance: refill the FIFO from
  * the pending SUBMITs; true while one still has words left. */

@@ -276,6 +276,16 @@ static void rdcd_on_frame(void *ctx, const uint32_t *xrgb, uint32_t w,
 		rdcd_frame_to_sinks(d, xrgb, w, h, number);
 }
 
+void rdcd_watch(struct rdcd *d)
+{
+	bool on = d->nclients || d->nsinks;
+
+	if (!d->hw || on == d->watched)
+		return;
+	rdc_hw_set_frame_fn(d->hw, on ? rdcd_on_frame : NULL, d);
+	d->watched = on;
+}
+
 /* ---- Device -------------------------------------------------------------- */
 
 int rdcd_device_open(struct rdcd *d)
@@ -290,7 +300,9 @@ int rdcd_device_open(struct rdcd *d)
 	d->hw = rdc_sim_hw(d->dev);
 	if (d->rec)
 		rdc_rec_attach(d->rec, d->dev);
-	rdc_hw_set_frame_fn(d->hw, rdcd_on_frame, d);
+	rdc_hw_set_on_demand(d->hw, true);
+	d->watched = false;
+	rdcd_watch(d);
 	rdcd_trace_attach(d);
 	rdcd_chip_attach(d);
 	d->last_irq = 0;
@@ -474,8 +486,10 @@ void rdcd_client_free(struct rdcd *d, struct rdcd_client *c)
 			break;
 		}
 	}
-	if (c->hello)
+	if (c->hello) {
 		d->nclients--;
+		rdcd_watch(d);
+	}
 	if (d->ctl == c) {
 		d->ctl = NULL;
 		rdcd_log(d, RDCD_LOG_INFO, "client %u left; nobody in control",
@@ -660,6 +674,7 @@ static void rdcd_hello(struct rdcd *d, struct rdcd_client *c,
 	}
 	c->hello = true;
 	d->nclients++;
+	rdcd_watch(d);
 	rdcd_log(d, RDCD_LOG_INFO, "client %u said HELLO (%s)", c->id, c->peer);
 	r.caps = RDC_CAP_ALL &
 		 ~(d->mode == RDC_RUN_STEPPED ? 0u : RDC_CAP_STEP);
