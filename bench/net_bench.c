@@ -7,7 +7,9 @@
  *  - round trip of a register read: mean, median and 99th percentile;
  *  - a subscriber to 1024x768 frames, daemon unpaced: frames received
  *    per wall second and frames dropped for it, in each encoding;
- *  - the same, daemon paced: 60 frames per wall second expected.
+ *  - the same, daemon paced: 60 frames per wall second expected;
+ *  - an idle paced daemon at 1024x768@60, nobody connected: the share of
+ *    a core it takes with no frame consumer, and with one (a sink).
  * Usage: net_bench PATH/TO/rdcd  (`make bench-net` builds and runs it).
  *
  * net_bench --uri URI measures a device that is already there (any
@@ -19,6 +21,7 @@
  * that USB 2.0 high speed's practical 35-40 MB/s would carry.
  */
 #include <signal.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,6 +40,9 @@
 #define BENCH_RTT_URI_N 2000  /* register reads with --uri (slow links) */
 #define BENCH_USB_HS_LO 35e6  /* USB 2.0 high speed, bytes/s in practice */
 #define BENCH_USB_HS_HI 40e6
+#define BENCH_IDLE_S	4.0 /* seconds an idle daemon is watched */
+#define BENCH_IDLE_SETTLE_S 1 /* after its start, before that */
+#define BENCH_IDLE_ROUNDS 2
 
 /* "unix", "usb"...: the JSON lines' transport */
 static char bench_transport[16] = "unix";
@@ -233,6 +239,110 @@ static void bench_paced(rdc_dev *dev, const char *uri)
 	rdc_close(obs);
 }
 
+/*
+ * Nanoseconds pid has run on a CPU: /proc/PID/schedstat's first field, or
+ * (without schedstats) utime + stime of /proc/PID/stat, in clock ticks.
+ */
+static double cpu_ns_of(pid_t pid)
+{
+	char path[64], buf[1024], *p;
+	unsigned long long ns, ut, st;
+	FILE *f;
+	int i;
+
+	snprintf(path, sizeof(path), "/proc/%d/schedstat", (int)pid);
+	f = fopen(path, "r");
+	if (f) {
+		i = fscanf(f, "%llu", &ns);
+		fclose(f);
+		if (i == 1)
+			return (double)ns;
+	}
+	snprintf(path, sizeof(path), "/proc/%d/stat", (int)pid);
+	f = fopen(path, "r");
+	if (!f)
+		return -1;
+	p = fgets(buf, sizeof(buf), f);
+	fclose(f);
+	p = p ? strrchr(buf, ')') : NULL;
+	/* after "pid (comm)": state and 10 fields, then utime, stime */
+	for (i = 0; p && i < 12; i++)
+		p = strchr(p + 1, ' ');
+	if (!p || sscanf(p, "%llu %llu", &ut, &st) != 2)
+		return -1;
+	return (double)(ut + st) * 1e9 / (double)sysconf(_SC_CLK_TCK);
+}
+
+/*
+ * An idle paced rdcd at 1024x768@60 (--mode), nobody connected, for
+ * BENCH_IDLE_S seconds after it settled: the share of one core it takes
+ * (its CPU time over the wall time), with no frame consumer (scanout on
+ * demand converts nothing) and with one (a png sink that writes only
+ * when asked, so every frame is converted and nothing else is done),
+ * rounds interleaved; each the least of its rounds (a shared machine
+ * only adds to a share).
+ */
+static void bench_idle(const char *rdcd, const char *dir)
+{
+	double share[2][BENCH_IDLE_ROUNDS];
+	char ready[220], lis[220], png[220];
+
+	snprintf(ready, sizeof(ready), "%s/ready", dir);
+	snprintf(lis, sizeof(lis), "unix:%s/idle.sock", dir);
+	snprintf(png, sizeof(png), "%s,every=0", dir);
+	for (int r = 0; r < BENCH_IDLE_ROUNDS; r++) {
+		for (int w = 0; w < 2; w++) {
+			struct timespec settle = { BENCH_IDLE_SETTLE_S, 0 }, ts;
+			double c0, c1, t0, t1;
+			bool up;
+			pid_t pid;
+			int st;
+
+			unlink(ready);
+			pid = fork();
+			if (pid == 0) {
+				if (w)
+					execl(rdcd, rdcd, "-q", "--mode",
+					      "1024x768", "--listen", lis,
+					      "--ready-file", ready, "--png",
+					      png, (char *)NULL);
+				else
+					execl(rdcd, rdcd, "-q", "--mode",
+					      "1024x768", "--listen", lis,
+					      "--ready-file", ready,
+					      (char *)NULL);
+				_exit(127);
+			}
+			if (pid < 0)
+				return;
+			nanosleep(&settle, NULL);
+			up = access(ready, F_OK) == 0;
+			c0 = cpu_ns_of(pid);
+			t0 = now_s();
+			ts.tv_sec = (time_t)BENCH_IDLE_S;
+			ts.tv_nsec = (long)((BENCH_IDLE_S - (double)ts.tv_sec) *
+					    1e9);
+			nanosleep(&ts, NULL);
+			c1 = cpu_ns_of(pid);
+			t1 = now_s();
+			kill(pid, SIGTERM);
+			waitpid(pid, &st, 0);
+			if (c0 < 0 || c1 < 0 || !up)
+				return; /* it did not come up */
+			share[w][r] = (c1 - c0) * 1e-9 / (t1 - t0);
+		}
+	}
+	unlink(ready);
+	qsort(share[0], BENCH_IDLE_ROUNDS, sizeof(double), cmp_double);
+	qsort(share[1], BENCH_IDLE_ROUNDS, sizeof(double), cmp_double);
+	printf("{\"bench\":\"rdcd_idle\",\"size\":\"1024x768@60\","
+	       "\"seconds\":%.1f,\"rounds\":%d,"
+	       "\"cpu_share_no_consumer\":%.5f,"
+	       "\"cpu_share_with_consumer\":%.5f,\"ratio\":%.3f}\n",
+	       BENCH_IDLE_S, BENCH_IDLE_ROUNDS, share[0][0], share[1][0],
+	       share[1][0] > 0 ? share[0][0] / share[1][0] : 0);
+}
+
 static void bench_draw(rdc_dev *dev)
 {
 	/* something on screen, so that frames are not uniform */
@@ -392,6 +502,7 @@ int main(int argc, char **argv)
 		waitpid(pid, &st, 0);
 	}
 	unlink(path);
+	bench_idle(argv[1], dir);
 	rmdir(dir);
 	return 0;
 }
