@@ -779,6 +779,7 @@ static int st_flip(struct kms *k, bool atomic)
 	unsigned int missed = 0, torn = 0, events = 0, shown[FLIP_BUFS] = { 0 };
 	unsigned int first = 0, prev = 0;
 	uint64_t chip_first = 0, chip_last = 0, t0, lat = 0;
+	uint64_t flips_first = 0, flips_last = 0;
 	int64_t off0 = 0, off1 = 0;
 	struct drm_rdc_frame fr;
 	struct drm_rdc_counters c;
@@ -832,6 +833,7 @@ static int st_flip(struct kms *k, bool atomic)
 				off0 = INT64_MIN;
 			rdc_counters(k, &c);
 			chip_first = c.frames;
+			flips_first = c.flips;
 		} else if (ev.seq != prev + 1) {
 			if (missed < 5)
 				printf("#   flip %u: event sequence %u after "
@@ -866,6 +868,7 @@ static int st_flip(struct kms *k, bool atomic)
 			off1 = INT64_MAX;
 		rdc_counters(k, &c);
 		chip_last = c.frames;
+		flips_last = c.flips;
 	}
 	printf("#   %u flips in %.2f s wall, %.2f ms from a flip's ioctl to "
 	       "its event on average (a frame: %.2f ms); frames of each "
@@ -883,6 +886,10 @@ static int st_flip(struct kms *k, bool atomic)
 	tap(!ret && torn == 0,
 	    "%s: 0 torn (every frame one buffer's picture): %u torn", name,
 	    torn);
+	tap(!ret && events && flips_last - flips_first + 1 == events,
+	    "%s: the chip latched one flip an event (COUNTERS.flips %" PRIu64
+	    " -> %" PRIu64 ")",
+	    name, flips_first, flips_last);
 	tap(!ret && off0 == off1 && prev - first + 1 == events,
 	    "%s: %u events, and the chip's frame counter advanced %" PRId64
 	    " frames over them (vblank offset %" PRId64 " -> %" PRId64 ")",
@@ -1515,12 +1522,13 @@ out:
 /* Commit d again with the damage `clip` (NULL: none, the whole plane). */
 static int damage_commit(struct kms *k, struct dumb *d,
 			 const struct drm_mode_rect *clip, uint64_t *cycles,
-			 uint64_t *busy)
+			 uint64_t *busy, uint64_t *wall)
 {
 	struct drm_rdc_counters c0, c1;
 	struct drm_rdc_frame fr;
 	drmModeAtomicReqPtr r = drmModeAtomicAlloc();
 	uint32_t blob = 0;
+	uint64_t t;
 	int ret;
 
 	if (clip &&
@@ -1531,7 +1539,9 @@ static int damage_commit(struct kms *k, struct dumb *d,
 	rdc_counters(k, &c0);
 	add(r, k->primary_id, k->pp.fb_id, d->fb);
 	add(r, k->primary_id, k->pp.damage, blob);
+	t = now_ns();
 	ret = commit(k, r, 0);
+	*wall = now_ns() - t;
 	if (!ret)
 		ret = settle(k, &fr);
 	rdc_counters(k, &c1);
@@ -1547,6 +1557,7 @@ static int st_damage(struct kms *k)
 	uint32_t *want = want_new(k);
 	struct drm_mode_rect clip = { 40, 24, 40 + 16, 24 + 16 };
 	uint64_t full = 0, small = 0, busy_full = 0, busy_small = 0;
+	uint64_t wall_full = 0, wall_small = 0;
 	struct dumb d;
 	int ret = 0;
 
@@ -1564,7 +1575,7 @@ static int st_damage(struct kms *k)
 	/* full updates, twice: the second is a full one's own cost */
 	for (int i = 0; i < 2 && !ret; i++) {
 		paint(&d, 20 + (uint32_t)i);
-		ret = damage_commit(k, &d, NULL, &full, &busy_full);
+		ret = damage_commit(k, &d, NULL, &full, &busy_full, &wall_full);
 	}
 	expect_xrgb(k, &d, want);
 	tap(!ret && !frame_diff(k, want, "full"),
@@ -1575,14 +1586,18 @@ static int st_damage(struct kms *k)
 			for (int x = clip.x1; x < clip.x2; x++)
 				*px(&d, (uint32_t)x, (uint32_t)y) =
 					0xff000000u | (0x102030u * (i + 1));
-		ret = damage_commit(k, &d, &clip, &small, &busy_small);
+		ret = damage_commit(k, &d, &clip, &small, &busy_small,
+				    &wall_small);
 	}
 	expect_xrgb(k, &d, want);
 	tap(!ret && !frame_diff(k, want, "damaged"),
 	    "damage: a 16x16 damage clip's change is in the frame");
 	printf("#   upload cycles: full %" PRIu64 ", 16x16 %" PRIu64
-	       "; busy cycles: full %" PRIu64 ", 16x16 %" PRIu64 "\n",
-	       full, small, busy_full, busy_small);
+	       "; busy cycles: full %" PRIu64 ", 16x16 %" PRIu64
+	       "; a blocking commit's wall time: full %.2f ms, 16x16 %.2f ms "
+	       "(a frame: %.2f ms)\n",
+	       full, small, busy_full, busy_small, (double)wall_full / 1e6,
+	       (double)wall_small / 1e6, (double)period_ns(k) / 1e6);
 	tap(!ret && small > 0 && small < full,
 	    "damage: the 16x16 update charges fewer upload cycles (%" PRIu64
 	    ") than a full one (%" PRIu64 ")",
