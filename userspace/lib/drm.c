@@ -396,7 +396,7 @@ static int drm_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 
 	if (buf && cap) {
 		ret = drm_frame(d, buf, cap, &fr);
-		if (ret <= 0 && !ret) {
+		if (!ret) {
 			*width = fr.width;
 			*height = fr.height;
 			return 0;
