@@ -285,10 +285,9 @@ static int rdcdrm_plane_check(struct drm_plane *plane,
 		return ret;
 	if (!new->visible)
 		return 0;
-	if (cursor && (new->fb->width > RDCDRM_CURSOR_SIZE ||
-		       new->fb->height > RDCDRM_CURSOR_SIZE ||
-		       drm_rect_width(&new->src) >> 16 > RDCDRM_CURSOR_SIZE ||
-		       drm_rect_height(&new->src) >> 16 > RDCDRM_CURSOR_SIZE))
+	/* a visible cursor lies within 64 pixels of the screen */
+	if (cursor && (new->src_w >> 16 > RDCDRM_CURSOR_SIZE ||
+		       new->src_h >> 16 > RDCDRM_CURSOR_SIZE))
 		return -EINVAL;
 	if (rdcdrm_format_of(new->fb->format->format) == RDC_FMT_COUNT)
 		return -EINVAL;
@@ -443,14 +442,20 @@ static void rdcdrm_cursor_update(struct drm_plane *plane,
 		rdc_kchip_unlock(&rd->chip);
 		return;
 	}
-	w = drm_rect_width(&new->src) >> 16;
-	h = drm_rect_height(&new->src) >> 16;
+	/*
+	 * The image and position as asked, not as clipped to the screen:
+	 * the chip clips the cursor itself, and a move alone uploads nothing
+	 */
+	w = min(new->src_w >> 16, RDCDRM_CURSOR_SIZE);
+	h = min(new->src_h >> 16, RDCDRM_CURSOR_SIZE);
 	src = (const u8 *)shadow->data[0].vaddr + fb->offsets[0] +
-	      (size_t)(new->src.y1 >> 16) * fb->pitches[0] +
-	      (new->src.x1 >> 16) * sizeof(u32);
+	      (size_t)(new->src_y >> 16) * fb->pitches[0] +
+	      (new->src_x >> 16) * sizeof(u32);
 	rdc_kchip_lock(&rd->chip);
 	if (old->fb != fb || drm_plane_get_damage_clips_count(new) ||
-	    !old->visible) {
+	    !old->visible || old->src_x != new->src_x ||
+	    old->src_y != new->src_y || old->src_w != new->src_w ||
+	    old->src_h != new->src_h) {
 		rd->cursor_buf ^= 1;
 		base = RDCDRM_CURSOR_BASE + rd->cursor_buf * RDCDRM_CURSOR_BYTES;
 		for (y = 0; y < RDCDRM_CURSOR_SIZE; y++) {
@@ -467,8 +472,7 @@ static void rdcdrm_cursor_update(struct drm_plane *plane,
 				     RDC_CURSOR_CTRL_SIZE64);
 		rdc_hw_write(hw, RDC_REG_CURSOR_BASE, base);
 	}
-	rdc_hw_write(hw, RDC_REG_CURSOR_POS,
-		     RDC_XY(new->dst.x1, new->dst.y1));
+	rdc_hw_write(hw, RDC_REG_CURSOR_POS, RDC_XY(new->crtc_x, new->crtc_y));
 	rdcdrm_cursor_show(rd, true);
 	rdc_kchip_unlock(&rd->chip);
 }
