@@ -632,6 +632,7 @@ static int st_atomic_test_only(struct kms *k)
 	drmModeAtomicReqPtr r;
 	struct drm_rdc_counters c0, c1;
 	drmModePlanePtr pl;
+	int ret;
 
 	if (dumb_new(k, k->w, k->h, DRM_FORMAT_XRGB8888, &a) ||
 	    dumb_new(k, k->w, k->h, DRM_FORMAT_XRGB8888, &b))
@@ -699,6 +700,37 @@ static int st_atomic_test_only(struct kms *k)
 	add(r, k->crtc_id, k->mode_id, 0xfffff3u);
 	expect_err(commit(k, r, DRM_MODE_ATOMIC_TEST_ONLY), -EINVAL,
 		   "MODE_ID of no blob");
+
+	/* a framebuffer that does not fit the plane */
+	r = drmModeAtomicAlloc();
+	add_primary(k, r, a.fb, a.w / 2, a.h / 2);
+	ret = commit(k, r, DRM_MODE_ATOMIC_TEST_ONLY);
+	tap(ret == -ERANGE || ret == -EINVAL,
+	    "half the framebuffer scaled to the whole CRTC: %s (ERANGE or "
+	    "EINVAL expected: the chip does not scale)",
+	    ret ? strerror(-ret) : "accepted");
+	r = drmModeAtomicAlloc();
+	add_primary(k, r, a.fb, a.w / 2, a.h / 2);
+	add(r, k->primary_id, k->pp.crtc_w, k->w / 2);
+	add(r, k->primary_id, k->pp.crtc_h, k->h / 2);
+	ret = commit(k, r, DRM_MODE_ATOMIC_TEST_ONLY);
+	tap(ret == -EINVAL || ret == -ERANGE,
+	    "a primary plane covering a quarter of the CRTC: %s (EINVAL "
+	    "expected: the chip's picture is the whole screen)",
+	    ret ? strerror(-ret) : "accepted");
+	if (k->cursor_id) {
+		r = drmModeAtomicAlloc();
+		add_primary(k, r, a.fb, a.w, a.h);
+		add(r, k->cursor_id, k->cp.fb_id, a.fb); /* XRGB8888 */
+		add(r, k->cursor_id, k->cp.crtc_id, k->crtc_id);
+		add(r, k->cursor_id, k->cp.src_w, 64u << 16);
+		add(r, k->cursor_id, k->cp.src_h, 64u << 16);
+		add(r, k->cursor_id, k->cp.crtc_w, 64);
+		add(r, k->cursor_id, k->cp.crtc_h, 64);
+		expect_err(commit(k, r, DRM_MODE_ATOMIC_TEST_ONLY), -EINVAL,
+			   "an XRGB8888 framebuffer on the ARGB8888 cursor "
+			   "plane");
+	}
 
 	/* flags */
 	r = drmModeAtomicAlloc();
