@@ -620,23 +620,25 @@ int rdc_kchip_vsync(struct rdc_kchip *chip)
 
 /*
  * Push validated words into the FIFO as librdc's core does for a backend
- * without a submit op: as many as FIFO_FREE says, then wait (a needs-DP
- * wait) for half a FIFO.  The words of one SUBMIT go in under the lock in
+ * without a submit op: as many as FIFO_FREE says (in bulk, which is the
+ * same as FIFO_DATA writes of each, at half the CPU), then wait (a
+ * needs-DP wait) for half a FIFO.  The words of one SUBMIT go in under the lock in
  * runs, so fb_ops (which see chip->submitting) keep out of the middle of
  * a command.
  */
 int rdc_kchip_submit(struct rdc_kchip *chip, const u32 *words, u32 n)
 {
 	struct rdc_hw *hw = &chip->hw;
-	u32 free_words;
+	u32 free_words, taken;
 	int ret = 0;
 
 	while (n) {
 		rdc_kchip_lock(chip);
 		chip->state_gen++;
 		free_words = rdc_hw_read(hw, RDC_REG_FIFO_FREE);
-		for (; free_words && n; free_words--, n--, words++)
-			rdc_hw_write(hw, RDC_REG_FIFO_DATA, *words);
+		taken = rdc_hw_fifo_push(hw, words, min(n, free_words));
+		words += taken;
+		n -= taken;
 		chip->submitting = n != 0;
 		rdc_kchip_unlock(chip);
 		if (n) {
@@ -699,8 +701,9 @@ int rdc_kchip_push_locked(struct rdc_kchip *chip, const u32 *words, u32 n)
 			cond_resched();
 			continue;
 		}
-		for (; free_words && n; free_words--, n--, words++)
-			rdc_hw_write(hw, RDC_REG_FIFO_DATA, *words);
+		free_words = rdc_hw_fifo_push(hw, words, min(n, free_words));
+		words += free_words;
+		n -= free_words;
 	}
 	return 0;
 }
