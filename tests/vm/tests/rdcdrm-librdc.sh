@@ -8,6 +8,7 @@
 # the module's GPIO lines; rdcctl stream --from drm: feeds
 # v4l2loopback while another client draws, and our reader and ffmpeg get
 # the scene exactly, as rdcfb-stream does for fbdev:.  A node that is not an rdc card is refused, naming it.
+# vm-module: bochs
 # vm-module: rdcdrm
 # vm-module: v4l2loopback devices=1 exclusive_caps=1 video_nr=0 card_label=rdc
 . "$RDC_TREE/tests/vm/lib.sh"
@@ -32,6 +33,12 @@ listed() {
 	grep -q "^$DRM " "$T/list.out"
 }
 check "rdcctl list names $DRM" listed
+only_rdc() {
+	cnt=$(grep -c "^drm:" "$T/list.out")
+	echo "$cnt drm: line(s)"
+	[ "$cnt" = 1 ]
+}
+check "rdcctl list names no other DRM card" only_rdc
 
 regs() {
 	"$RDCCTL" --connect "$DRM" regs >"$T/regs.out" || return 1
@@ -69,6 +76,16 @@ refused() {
 	echo "$out"
 	[ $r != 0 ] && echo "$out" | grep -q "$2"
 }
+OTHER=""
+for c in /dev/dri/card*; do
+	[ -c "$c" ] && [ "drm:$c" != "$DRM" ] && { OTHER=$c; break; }
+done
+if [ -n "$OTHER" ]; then
+	check "$OTHER (another driver's card) is refused, naming its driver" \
+		refused "$OTHER" "is a DRM card of driver '.*', not rdcdrm.ko's"
+else
+	echo "# no DRM card of another driver here (bochs did not bind)"
+fi
 check "drm:/dev/null is refused as no DRM device" \
 	refused /dev/null "not a DRM device"
 check "a missing card names rdcdrm.ko and how to load it" \
