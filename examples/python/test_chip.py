@@ -171,9 +171,10 @@ def test_fifo_low_water_interrupt(rdc_sim):
 def golden(name):
     """A golden scene's path and its line in tests/golden/golden.txt:
     (path, crc32, total cycles), or a skip outside the source tree."""
-    top = rdc._headers.source_tree()
-    if top is None:
-        pytest.skip("the golden scenes are in the source tree")
+    top = os.path.dirname(os.path.dirname(os.path.dirname(
+        os.path.abspath(__file__))))
+    if not os.path.exists(os.path.join(top, "tests/golden/golden.txt")):
+        pytest.skip("the golden scenes are in rdc's source tree")
     with open(os.path.join(top, "tests/golden/golden.txt")) as f:
         for line in f:
             fields = line.split()

@@ -41,9 +41,13 @@ __all__ = ["open", "Device", "Batch", "Frame", "Error", "Vcd", "History",
            "ScriptResult", "ReplayResult", "replay_file", "replay_history",
            "list_devices", "version", "strerror", "preset_by_name",
            "preset_size", "op_name", "reg_by_name", "reg_names", "png_read",
-           "png_write", "crc32"]
+           "png_write", "crc32", "library"]
 
-LIBRARY = _lib.path
+
+def library():
+    """The path librdc.so.1 was loaded from (loading it if need be)."""
+    lib.rdc_version
+    return lib.path
 
 
 # ---- Errors ----------------------------------------------------------------

@@ -2,9 +2,10 @@
 # SPDX-FileCopyrightText: 2026 The rdc authors
 """librdc.so.1 through ctypes: the library, its structures, its functions.
 
-Which library: $RDC_LIBRARY if set (a path); else, when the package sits
-in the source tree, the tree's build/rel/librdc.so.1 if it has been built;
-else librdc.so.1 wherever the dynamic loader finds it (an installed one).
+Which library, loaded at the first call: $RDC_LIBRARY if set (a path);
+else, when the package sits in the source tree, the tree's
+build/rel/librdc.so.1 if it has been built; else librdc.so.1 wherever the
+dynamic loader finds it (an installed one).
 """
 
 import ctypes
@@ -39,9 +40,6 @@ def _load():
             hint = " (build it with `make shared`, or set RDC_LIBRARY)"
         raise ImportError("rdc: cannot load %s from %s: %s%s"
                           % (path, how, e, hint)) from e
-
-
-lib, path = _load()
 
 
 class Stats(Structure):
@@ -224,10 +222,31 @@ _BATCH = {
 for _name, _args in _BATCH.items():
     _PROTOS["rdc_batch_" + _name] = (i, [_vp] + _args)
 
-for _name, (_res, _args) in _PROTOS.items():
-    _fn = getattr(lib, _name)
-    _fn.restype = _res
-    _fn.argtypes = _args
+
+class _Library:
+    """librdc, loaded and its prototypes set at the first call, so that
+    importing rdc (pytest loads the plugin of an installed copy in every
+    run) never fails for want of the library."""
+
+    path = None
+
+    def __getattr__(self, name):
+        if name.startswith("__"):
+            raise AttributeError(name)
+        cdll = self.__dict__.get("_cdll")
+        if cdll is None:
+            cdll, self.path = _load()
+            for fname, (res, args) in _PROTOS.items():
+                fn = getattr(cdll, fname)
+                fn.restype = res
+                fn.argtypes = args
+            self._cdll = cdll
+        fn = getattr(cdll, name)
+        setattr(self, name, fn)
+        return fn
+
+
+lib = _Library()
 
 BATCH_ENCODERS = tuple(_BATCH)
 libc_free = ctypes.CDLL(None).free
