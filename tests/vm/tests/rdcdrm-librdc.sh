@@ -1,13 +1,19 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
 # SPDX-FileCopyrightText: 2026 The rdc authors
-# librdc's drm: backend on rdcdrm.ko's card: rdcctl list names it; info,
-# regs and stats read the chip; a scene that sets its own mode and surface
-# draws to sim:'s frame CRC through drm:/dev/dri/card0 and through drm:
+# librdc's drm: backend on rdcdrm.ko's card: rdcctl list names it; regs
+# and stats read the chip; a scene that sets its own mode and surface
+# draws to sim:'s frame CRC through drm:/dev/dri/cardN and through drm:
 # alone (rdcdrm-record records and replays one); the pins read through
-# the module's GPIO lines; rdcctl stream --from drm: feeds
-# v4l2loopback while another client draws, and our reader and ffmpeg get
-# the scene exactly, as rdcfb-stream does for fbdev:.  A node that is not an rdc card is refused, naming it.
+# the module's GPIO lines; rdcctl stream --from drm: feeds v4l2loopback
+# while another client draws, and our reader and ffmpeg get the scene
+# exactly, as rdcfb-stream does for fbdev:.  bochs (QEMU's VGA) is
+# loaded first, so the guest has a DRM card of another driver before
+# rdcdrm.ko's: rdc_list leaves it out, drm: alone passes it by, and drm:
+# on it is refused, naming its driver; /dev/null and a missing card are
+# refused too.  (The two share DRM's helper modules, so the harness's
+# `modprobe -r rdcdrm` afterwards reports the helpers bochs still uses
+# as "cannot unload rdcdrm".)
 # vm-module: bochs
 # vm-module: rdcdrm
 # vm-module: v4l2loopback devices=1 exclusive_caps=1 video_nr=0 card_label=rdc
