@@ -1299,6 +1299,78 @@ static void test_vcd_regen(void **state)
 	assert_int_equal(sh_status(cmd), 0);
 }
 
+/* ---- docs/web.md's rdcctl and the unix: hint --------------------------- */
+
+/*
+ * web.md's rdcctl line works wherever rdcd listens by default: it names
+ * no $XDG_RUNTIME_DIR (unset for root, in containers and CI), and, as
+ * written, reaches a default rdcd.  A failed unix: connect names the
+ * path rdcd listens on without --listen, XDG_RUNTIME_DIR set or not.
+ */
+static void test_web_doc(void **state)
+{
+	char *web = slurp("docs/web.md");
+	char *line = line_with(web, "rdcctl --connect");
+	char *cmd_line = this_build(line);
+	char dir[] = "/tmp/rdc-web-XXXXXX", cmd[4000], want[200];
+	static char out[16384];
+	size_t n;
+	FILE *p;
+
+	(void)state;
+	if (strstr(line, "XDG_RUNTIME_DIR"))
+		fail_msg("docs/web.md: '%s' depends on $XDG_RUNTIME_DIR", line);
+	assert_non_null(mkdtemp(dir));
+	snprintf(cmd, sizeof(cmd),
+		 "XDG_RUNTIME_DIR=%s; export XDG_RUNTIME_DIR; "
+		 "%s/rdcd --stepped -q --ready-file %s/up & "
+		 "until [ -e %s/up ] || ! kill -0 $!; do sleep 0.1; done; "
+		 "%s\necho \"status $?\"; kill $!; wait $!",
+		 dir, bindir, dir, dir, cmd_line);
+	p = popen(cmd, "r");
+	assert_non_null(p);
+	n = fread(out, 1, sizeof(out) - 1, p);
+	out[n] = 0;
+	pclose(p);
+	if (!strstr(out, "status 0\n"))
+		fail_msg("docs/web.md's '%s' with rdcd's default socket: %s",
+			 line, out);
+
+	/* the hint, with and without XDG_RUNTIME_DIR */
+	for (int xdg = 0; xdg < 2; xdg++) {
+		int st;
+
+		if (xdg) {
+			snprintf(cmd, sizeof(cmd),
+				 "env XDG_RUNTIME_DIR=%s %s/rdcctl --connect "
+				 "unix:%s/none/rdc.sock stats 2>&1",
+				 dir, bindir, dir);
+			snprintf(want, sizeof(want),
+				 "listens on unix:%s/rdc/rdc.sock", dir);
+		} else {
+			snprintf(cmd, sizeof(cmd),
+				 "env -u XDG_RUNTIME_DIR %s/rdcctl --connect "
+				 "unix:%s/none/rdc.sock stats 2>&1",
+				 bindir, dir);
+			snprintf(want, sizeof(want),
+				 "listens on unix:/tmp/rdc-%u/rdc.sock",
+				 (unsigned int)getuid());
+		}
+		p = popen(cmd, "r");
+		assert_non_null(p);
+		n = fread(out, 1, sizeof(out) - 1, p);
+		out[n] = 0;
+		st = pclose(p);
+		if (!WIFEXITED(st) || WEXITSTATUS(st) != 1 ||
+		    !strstr(out, want))
+			fail_msg("%s: '%s', not '%s'", cmd, out, want);
+	}
+	rmdir(dir);
+	free(cmd_line);
+	free(line);
+	free(web);
+}
+
 /* ---- make bench BENCH_ARGS=... (bench/README.md) ----------------------- */
 
 /*
@@ -1370,6 +1442,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_exit_status),
 		cmocka_unit_test(test_vcd_regen),
 		cmocka_unit_test(test_bench_args),
+		cmocka_unit_test(test_web_doc),
 	};
 	char self[PATH_MAX], abs[PATH_MAX];
 

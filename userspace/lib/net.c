@@ -887,17 +887,39 @@ static const struct rdc_xport_ops sock_ops = {
 	.close = sock_close,
 };
 
-/* A connect() that failed: the address, the reason, and what to try. */
+/*
+ * A connect() that failed: the address, the reason, and what to try.
+ * For a socket path other than rdcd's default, the hint names the
+ * default too (the path rdcd listens on without --listen), which a
+ * path written from a variable unset here ($XDG_RUNTIME_DIR) misses.
+ */
 static int net_connect_failed(const char *uri)
 {
-	bool absent = errno == ENOENT || errno == ECONNREFUSED;
+	int err = errno;
+	bool absent = err == ENOENT || err == ECONNREFUSED;
+	char def[sizeof(((struct sockaddr_un *)0)->sun_path)];
 
-	return rdc_err_detail(RDC_E_IO, "%s: connect: %s%s%s%s", uri,
-			      strerror(errno),
-			      absent ? " (is rdcd running? start it with "
-				       "rdcd --listen " :
-				       "",
-			      absent ? uri : "", absent ? ")" : "");
+	if (!absent)
+		return rdc_err_detail(RDC_E_IO, "%s: connect: %s", uri,
+				      strerror(err));
+	if (!strncmp(uri, "unix:", 5) &&
+	    !rdc_proto_default_path(def, sizeof(def)) && strcmp(uri + 5, def))
+		return rdc_err_detail(
+			RDC_E_IO,
+			"%s: connect: %s (is rdcd running? without --listen "
+			"it listens on unix:%s, which plain unix: reaches; or "
+			"start it with rdcd --listen %s)",
+			uri, strerror(err), def, uri);
+	if (!strncmp(uri, "unix:", 5))
+		return rdc_err_detail(RDC_E_IO,
+				      "%s: connect: %s (is rdcd running? start "
+				      "it with rdcd: without --listen it "
+				      "listens there)",
+				      uri, strerror(err));
+	return rdc_err_detail(RDC_E_IO,
+			      "%s: connect: %s (is rdcd running? start it with "
+			      "rdcd --listen %s)",
+			      uri, strerror(err), uri);
 }
 
 static int net_connect_unix(const char *path)
