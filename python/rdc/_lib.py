@@ -30,10 +30,24 @@ def _find():
     return SONAME, "the dynamic loader"
 
 
+def _mapped(name):
+    """Where the loader found a library loaded by name (Linux)."""
+    try:
+        with open("/proc/self/maps") as f:
+            for line in f:
+                p = line.split(None, 5)[-1].strip()
+                if os.path.basename(p).startswith(name):
+                    return p
+    except OSError:
+        pass
+    return name
+
+
 def _load():
     path, how = _find()
     try:
-        return ctypes.CDLL(path), path
+        cdll = ctypes.CDLL(path)
+        return cdll, path if "/" in path else _mapped(path)
     except OSError as e:
         hint = ""
         if how == "the dynamic loader" and _headers.source_tree():
