@@ -97,7 +97,8 @@ TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 	shared install uninstall install-check debs FORCE \
 	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
 	bench-peers bench-stream-vm module dkms-source \
-	module-clean checkpatch format format-check firmware-mcu mcu-test
+	module-clean checkpatch format format-check firmware-mcu mcu-test \
+	python-check
 all: $(O)/rel/rdcctl $(O)/rel/rdcd $(O)/rel/librdc.a shared $(O)/rel/rdc.pc
 
 help:
@@ -107,6 +108,7 @@ help:
 	@echo "make install-check install into a scratch DESTDIR, build examples/hello.c against it"
 	@echo "make debs         the Debian packages (debian/) in $(O)-debs, lintian, and the packaged tools run"
 	@echo "make demo         install missing packages, build, run examples/demo.rdl"
+	@echo "make python-check the Python bindings' and pytest plugin's tests (docs/python.md)"
 	@echo "make check        install missing packages, build with ASan+UBSan, run every test"
 	@echo "make golden       regenerate tests/golden/golden.txt and write PNGs to $(O)/golden"
 	@echo "make freestanding compile hw-sim/ and firmware-model/ with no libc headers"
@@ -335,13 +337,40 @@ $(O)/rel/rdc.pc: $(HDR_DIR)/.stamp Makefile
 	@mkdir -p $(dir $@)
 	printf '%s\n' "$$RDC_PC_BUILD" >$@
 
+# The Python package python/rdc (docs/python.md), for PYTHON, Debian's
+# interpreter unless told, in PYTHONDIR: the dist-packages directory
+# Debian's python3 reads for PREFIX /usr or /usr/local, else
+# PREFIX/lib/python3.X/site-packages (scripts/python-sitedir.py).  The
+# constants it reads from the headers in the tree go into its
+# _constants.py; its dist-info's pytest11 entry point has pytest load
+# the plugin.  Without PYTHON, make install leaves it out and says so.
+PYTHON ?= /usr/bin/python3
+PYTHONDIR ?= $(eval PYTHONDIR := $(shell $(PYTHON) scripts/python-sitedir.py \
+	'$(PREFIX)' 2>/dev/null))$(PYTHONDIR)
+PY_SRCS := $(sort $(wildcard python/rdc/*.py))
+PY_DISTINFO = $(PYTHONDIR)/rdc-$(RDC_VERSION).dist-info
+define RDC_PY_METADATA
+Metadata-Version: 2.1
+Name: rdc
+Version: $(RDC_VERSION)
+Summary: librdc, the host library of the RDC-1 simulated raster display controller
+License: LGPL-2.1-or-later
+endef
+export RDC_PY_METADATA
+define RDC_PY_ENTRY_POINTS
+[pytest11]
+rdc.pytest_plugin = rdc.pytest_plugin
+endef
+export RDC_PY_ENTRY_POINTS
+
 # Where make install puts files; make uninstall removes those of them,
 # and their parents, that make install created, when they are empty.
 RDC_DEST_DIRS = $(BINDIR) $(LIBDIR) $(INCLUDEDIR)/rdc $(PKGCONFIGDIR) \
 	$(sort $(foreach f,$(INSTALL_MAN),$(MANDIR)/man$(subst .,,$(suffix $(f))))) \
 	$(if $(INSTALL_BASHCOMP),$(BASHCOMPDIR)) \
 	$(if $(INSTALL_UNITS),$(SYSTEMDUSERUNITDIR)) \
-	$(if $(INSTALL_UDEV),$(UDEVRULESDIR))
+	$(if $(INSTALL_UDEV),$(UDEVRULESDIR)) \
+	$(if $(PYTHONDIR),$(PYTHONDIR)/rdc $(PY_DISTINFO))
 
 install: all shared
 	@set -e; mkdir -p $(O); for d in $(RDC_DEST_DIRS); do \
@@ -367,6 +396,20 @@ install: all shared
 		[ -n "$$files" ] || continue; $(INSTALL) -d $$dir; \
 		echo "$(INSTALL_DATA) $$files $$dir/"; \
 		$(INSTALL_DATA) $$files $$dir/; done
+	@set -e; if [ -z "$(PYTHONDIR)" ]; then echo "install: $(PYTHON)" \
+		"not found: the Python package rdc left out"; exit 0; fi; \
+	d=$(DESTDIR)$(PYTHONDIR); \
+	echo "$(INSTALL_DATA) $(PY_SRCS) $$d/rdc/"; \
+	$(INSTALL_DATA) $(PY_SRCS) $$d/rdc/; \
+	echo "$(PYTHON) python/rdc/_headers.py ... >$$d/rdc/_constants.py"; \
+	$(PYTHON) python/rdc/_headers.py hw-sim/rdc_regs.h \
+		userspace/include/rdc.h >$$d/rdc/_constants.py; \
+	chmod 644 $$d/rdc/_constants.py; \
+	echo "$(DESTDIR)$(PY_DISTINFO)/METADATA, entry_points.txt"; \
+	printf '%s\n' "$$RDC_PY_METADATA" >$(DESTDIR)$(PY_DISTINFO)/METADATA; \
+	printf '%s\n' "$$RDC_PY_ENTRY_POINTS" \
+		>$(DESTDIR)$(PY_DISTINFO)/entry_points.txt; \
+	echo rdc >$(DESTDIR)$(PY_DISTINFO)/top_level.txt
 	@if [ -z "$(DESTDIR)" ] && [ -n "$(RDC_LIBDIR_LOADER)" ]; then \
 		echo "$(LDCONFIG)"; $(LDCONFIG) || { echo "install:" \
 		"$(LDCONFIG) failed: until it runs as root, programs do not" \
@@ -379,6 +422,7 @@ uninstall:
 		$(DESTDIR)$(LIBDIR)/librdc.so $(DESTDIR)$(LIBDIR)/librdc.a \
 		$(DESTDIR)$(PKGCONFIGDIR)/rdc.pc
 	rm -rf $(DESTDIR)$(INCLUDEDIR)/rdc
+	$(if $(PYTHONDIR),rm -rf $(DESTDIR)$(PYTHONDIR)/rdc $(DESTDIR)$(PY_DISTINFO))
 	@set -e; for f in $(notdir $(INSTALL_MAN)); do \
 		rm -f $(DESTDIR)$(MANDIR)/man$${f##*.}/$$f; done; \
 	for f in $(notdir $(INSTALL_BASHCOMP)); do \
@@ -396,6 +440,11 @@ uninstall:
 	while read -r d; do [ ! -d "$$d" ] || echo "$$d"; done \
 		<$(RDC_INSTALL_DIRS) >$(RDC_INSTALL_DIRS).tmp; \
 	mv $(RDC_INSTALL_DIRS).tmp $(RDC_INSTALL_DIRS)
+
+# The Python bindings' and pytest plugin's tests on this build, from the
+# tree (tests/python/run.sh; make check runs them in tests/run.sh).
+python-check: shared $(O)/rel/rdcctl $(O)/rel/rdcd
+	@tests/python/run.sh $(O)
 
 # Install into a scratch directory and build examples/hello.c against it
 # with pkg-config alone (tests/install/run.sh says what it checks).

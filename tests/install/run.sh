@@ -16,6 +16,8 @@
 #    naming LIBDIR (/opt/rdc/lib64: not where the loader looks), and
 #    rdcd's sources do not include librdc's or the chip's private headers;
 #  - a DESTDIR install does not run ldconfig;
+#  - the Python package lands where python3 finds it for PREFIX, and
+#    imported from there runs the scene on the installed librdc.so.1;
 #  - `make uninstall` leaves no file and no directory behind;
 #  - $O/rel/rdc.pc (PKG_CONFIG_PATH=$O/rel) builds examples/hello.c from
 #    the tree, and it draws the same frame;
@@ -155,6 +157,36 @@ done
 # The scene's CRC as the build's rdcctl computes it, from the script.
 want=$("$O/rel/rdcctl" run tests/install/scene.rdl | sed -n 's/^crc32 //p')
 [ -n "$want" ] || bad "$O/rel/rdcctl run tests/install/scene.rdl gave no crc32"
+
+# The Python package where PYTHON (Debian's python3) finds it for this
+# PREFIX, importable from there alone and drawing on the installed
+# librdc.so.1 what rdcctl draws.
+py=${PYTHON:-/usr/bin/python3}
+if [ ! -x "$py" ]; then
+	echo "install: skipped: the Python package ($py not found)"
+else
+	site=$dest$("$py" scripts/python-sitedir.py "$prefix")
+	for f in rdc/__init__.py rdc/_lib.py rdc/pytest_plugin.py \
+		rdc/_constants.py rdc-*.dist-info/entry_points.txt; do
+		# shellcheck disable=SC2086 # the dist-info's name is a pattern
+		[ -e "$(echo $site/$f)" ] || bad "installed: $site/$f missing"
+	done
+	got=$(env -u RDC_LIBRARY PYTHONPATH="$site" PYTHONDONTWRITEBYTECODE=1 \
+		LD_LIBRARY_PATH="$dest$libdir" "$py" -c '
+import os, sys, rdc
+assert rdc._headers.source_tree() is None, "the tree, not the install"
+with rdc.open() as d:
+    r = d.script_run_file(sys.argv[1])
+    d.script_frame_wait(r)
+    print(os.path.realpath(rdc.library()), "%08x" % d.frame_crc())' \
+		tests/install/scene.rdl 2>&1)
+	lib1=$(readlink -f "$dest$libdir/librdc.so.1")
+	if [ "$got" = "$lib1 $want" ]; then
+		ok "python3 imports the installed rdc on the installed librdc.so.1: crc32 $want"
+	else
+		bad "the installed Python package: '$got', want '$lib1 $want'"
+	fi
+fi
 
 cp examples/hello.c "$tmp/hello.c"
 cd "$tmp" || exit 1
