@@ -1,8 +1,9 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-only
 # SPDX-FileCopyrightText: 2026 The rdc authors
-# Run every cmocka test program in $1/tests from the source root and close
-# with one summary line: "tests: N passed, M failed, K skipped" (cmocka's
+# Run every cmocka test program in $1/tests, then the Python tests
+# (tests/python/run.sh), from the source root and close with one summary
+# line: "tests: N passed, M failed, K skipped" (cmocka's
 # skip(): a test that cannot run here, e.g. a library this build lacks,
 # says why in its output), after the names of the skipped tests.
 set -u
@@ -35,6 +36,17 @@ for t in "$dir"/tests/test_*; do
 	fail=$((fail + ${f:-0}))
 	[ $rc -ne 0 ] && bad="$bad $(basename "$t")"
 done
+# The Python bindings and pytest plugin on $dir's sibling rel/ build
+# (librdc.so.1), counted with the rest: tests/python/run.sh
+out=$(tests/python/run.sh "$(dirname "$dir")" 2>&1)
+printf '%s\n' "$out"
+c=$(printf '%s\n' "$out" | sed -n 's/^python: \([0-9]*\) passed, \([0-9]*\) failed, \([0-9]*\) skipped$/\1 \2 \3/p' | tail -n 1)
+set -- ${c:-0 1 0}
+pass=$((pass + $1))
+fail=$((fail + $2))
+skipped=$((skipped + $3))
+[ "$3" -gt 0 ] && skips="$skips python"
+[ "$2" -gt 0 ] && bad="$bad python"
 [ -n "$skips" ] && echo "skipped tests:$skips"
 [ -n "$bad" ] && echo "failing programs:$bad"
 echo "tests: $pass passed, $fail failed, $skipped skipped"
