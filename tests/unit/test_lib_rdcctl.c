@@ -106,6 +106,19 @@ static void test_errors_and_exit_codes(void **state)
 	assert_non_null(strstr(out, "No such file or directory"));
 	assert_non_null(strstr(out, "is rdcd running?"));
 	assert_int_equal(ctl("--uri nope: stats"), 1);
+	/* no framebuffer node: whether rdcfb.ko is loaded, and how to load
+	 * it; a node that is not rdcfb's: said so */
+	assert_int_equal(ctl("--connect fbdev:/nonexistent-dir/fb9 stats"), 1);
+	assert_non_null(strstr(out, "/nonexistent-dir/fb9: No such file or "
+				    "directory"));
+	if (access("/sys/module/rdcfb", F_OK)) {
+		assert_non_null(strstr(out, "rdcfb.ko is not loaded"));
+		assert_non_null(strstr(out, "modprobe rdcfb"));
+	} else {
+		assert_non_null(strstr(out, "rdcctl list"));
+	}
+	assert_int_equal(ctl("--connect fbdev:/dev/null stats"), 1);
+	assert_non_null(strstr(out, "/dev/null is not rdcfb.ko's framebuffer"));
 
 	fd = mkstemp(path);
 	assert_true(fd >= 0);

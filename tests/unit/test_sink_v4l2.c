@@ -212,6 +212,11 @@ static void test_v4l2_open_errors(void **state)
 	assert_int_equal(rdc_sink_v4l2_open_io("/dev/video7", &fake_io, &s),
 			 RDC_E_FILE);
 	assert_null(s);
+	/* no such node: the file, the reason, and where one comes from */
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "/dev/video7: No such file or directory"));
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "modprobe v4l2loopback"));
 	fk.present = true;
 	fk.output = false; /* a camera, not an output */
 	assert_int_equal(rdc_sink_v4l2_open_io("/dev/video7", &fake_io, &s),

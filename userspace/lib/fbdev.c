@@ -119,6 +119,28 @@ static int fbdev_probe(struct fbdev *f)
 	return 0;
 }
 
+/*
+ * No node at `path`: say whether rdcfb.ko is loaded at all, and how to
+ * load it (docs/driver.md), or, loaded, that its node is another one.
+ */
+static int fbdev_missing(const char *path, int ret)
+{
+	struct stat st;
+
+	if (stat("/sys/module/rdcfb", &st))
+		return rdc_err_detail(ret,
+				      "%s: %s: rdcfb.ko is not loaded (load it "
+				      "with `modprobe rdcfb` from the "
+				      "rdcfb-dkms package, or `insmod "
+				      "build/kmod/rdcfb.ko` after `make "
+				      "module`: docs/driver.md)",
+				      path, strerror(ENOENT));
+	return rdc_err_detail(ret,
+			      "%s: %s: rdcfb.ko is loaded, its framebuffer "
+			      "is another /dev/fbN (`rdcctl list` names it)",
+			      path, strerror(ENOENT));
+}
+
 static int fbdev_open(rdc_dev *dev, const char *opts)
 {
 	struct fbdev *f;
@@ -133,12 +155,25 @@ static int fbdev_open(rdc_dev *dev, const char *opts)
 		return RDC_E_NOMEM;
 	f->fd = open(opts, O_RDWR | O_CLOEXEC | O_NOCTTY);
 	if (f->fd < 0) {
-		ret = rdc_kchip_error(errno);
+		int err = errno;
+
+		ret = rdc_kchip_error(err);
 		fbdev_free(f);
+		if (err == ENOENT)
+			return fbdev_missing(opts, ret);
 		/* A missing node is a bad URI, not a bad transport. */
-		return ret == RDC_E_IO ? RDC_E_URI : ret;
+		ret = ret == RDC_E_IO ? RDC_E_URI : ret;
+		return rdc_err_detail(ret, "%s: %s", opts, strerror(err));
 	}
 	ret = fbdev_probe(f);
+	if (ret == RDC_E_URI) {
+		fbdev_free(f);
+		return rdc_err_detail(ret,
+				      "%s is not rdcfb.ko's framebuffer "
+				      "(`rdcctl list` names the RDC-1s "
+				      "this machine has)",
+				      opts);
+	}
 	if (ret) {
 		fbdev_free(f);
 		return ret;

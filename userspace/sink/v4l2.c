@@ -97,6 +97,14 @@ static int v4l2_connect(struct v4l2_sink *v)
 	uint32_t caps;
 	int fd = v->io.open(v->path, O_WRONLY | O_NONBLOCK | O_CLOEXEC);
 
+	if (fd < 0 && errno == ENOENT)
+		return rdc_err_detail(
+			RDC_E_FILE,
+			"%s: %s: no such V4L2 device; v4l2loopback makes one "
+			"(`modprobe v4l2loopback exclusive_caps=1`, Debian's "
+			"v4l2loopback-dkms; `v4l2-ctl --list-devices` names "
+			"its /dev/videoN)",
+			v->path, strerror(ENOENT));
 	if (fd < 0)
 		return rdc_err_detail(RDC_E_FILE, "%s: %s", v->path,
 				      strerror(errno));
