@@ -19,6 +19,9 @@ PKGS="$PKGS groff-base man-db bash-completion systemd"
 # test_web_browser: the web sink's page in headless Chromium, driven
 # through chromedriver by tests/web/browser.py
 PKGS="$PKGS python3 chromium chromium-driver"
+# the Python bindings' tests (tests/python/run.sh): pytest for them and
+# the plugin, numpy for frames as arrays, pycodestyle for their layout
+PKGS="$PKGS python3-pytest python3-numpy pycodestyle"
 # libgpiod's v2 API (GPIO lines): Debian 13 has it in main; Debian 12 only
 # in bookworm-backports, which is enabled for these two packages alone
 # (apt-get -t for them, the rest stays on bookworm).
@@ -28,7 +31,7 @@ PEER_PKGS="libpixman-1-dev libcairo2-dev libsdl2-gfx-dev"
 [ "$1" = "--peers" ] && PKGS="$PKGS $PEER_PKGS"
 # `--debs`: what `make debs` needs to build the Debian packages (debian/)
 # and check them.
-DEB_PKGS="dpkg-dev debhelper dh-dkms lintian"
+DEB_PKGS="dpkg-dev debhelper dh-dkms dh-python lintian"
 [ "$1" = "--debs" ] && PKGS="$PKGS $DEB_PKGS"
 
 missing=""

@@ -6,7 +6,8 @@
 #    tracks or would track, as it is now) in BUILD_DIR-debs, so the source
 #    tree gets none of debhelper's files (and BUILD_DIR none of its
 #    directories, which the Makefile would read as dependency files):
-#    librdc1, librdc-dev, rdc-tools and rdcfb-dkms, nothing else;
+#    librdc1, librdc-dev, rdc-tools, python3-rdc and rdcfb-dkms, nothing
+#    else;
 #  - lintian over them: no error (its warnings are printed);
 #  - each package unpacked (dpkg -x) into one scratch root, which must
 #    then hold what each is for (the library and its SONAME link; headers,
@@ -16,7 +17,10 @@
 #    examples/demo.rdl and prints the CRC tests/golden/golden.txt holds;
 #    the unpacked rdcd serves a client (the unpacked rdcctl) the same
 #    frame; examples/hello.c builds with the unpacked rdc.pc alone and
-#    prints the CRC the build's rdcctl gives tests/install/scene.rdl.
+#    prints the CRC the build's rdcctl gives tests/install/scene.rdl;
+#    the unpacked python3-rdc, imported by Debian's python3 on the
+#    unpacked library, gives examples/demo.rdl the same CRC, and offers
+#    pytest its plugin through its entry point.
 # Whether the module loads from the dkms package is the VM's to test:
 # make check hands the package to rdcfb-dkms (tests/vm/dkms.sh).
 # Closes with "debs: N passed, M failed".
@@ -79,10 +83,10 @@ fi
 debs=$(cd "$work" && ls ./*.deb | sed 's|^\./||' | grep -v -- '-dbgsym_' |
 	sort | tr '\n' ' ')
 names=$(for d in $debs; do echo "${d%%_*}"; done | sort | tr '\n' ' ')
-if [ "$names" = "librdc-dev librdc1 rdc-tools rdcfb-dkms " ]; then
+if [ "$names" = "librdc-dev librdc1 python3-rdc rdc-tools rdcfb-dkms " ]; then
 	ok "packages: $debs"
 else
-	bad "packages: '$names', want librdc-dev librdc1 rdc-tools rdcfb-dkms"
+	bad "packages: '$names', want librdc-dev librdc1 python3-rdc rdc-tools rdcfb-dkms"
 fi
 
 changes=$(ls "$work"/*.changes | head -n 1)
@@ -190,6 +194,25 @@ if [ -n "$want" ] && [ "$got" = "$want" ] && [ $st -eq 0 ]; then
 else
 	cat "$work/rdcd.log"
 	bad "packaged rdcd: crc32 '$got' (want '$want'), exit $st"
+fi
+
+# python3-rdc on the unpacked library, with nothing from the tree.
+pysite=$root/usr/lib/python3/dist-packages
+want=$(awk '$1 == "example_demo" { print $2 }' tests/golden/golden.txt)
+got=$(cd "$work" && PYTHONPATH=$pysite PYTHONDONTWRITEBYTECODE=1 \
+	/usr/bin/python3 -c '
+import importlib.metadata as md, os, sys, rdc
+assert rdc.library().startswith(sys.argv[2]), rdc.library()
+eps = [e.value for e in md.entry_points(group="pytest11")]
+assert "rdc.pytest_plugin" in eps, eps
+with rdc.open() as d:
+    r = d.script_run_file(sys.argv[1])
+    d.script_frame_wait(r)
+    print("%08x" % d.frame_crc())' "$top/examples/demo.rdl" "$root/" 2>&1)
+if [ -n "$want" ] && [ "$got" = "$want" ]; then
+	ok "python3-rdc on the packaged librdc.so.1: demo crc32 $got, pytest plugin registered"
+else
+	bad "python3-rdc: '$got', want crc32 '$want'"
 fi
 
 # A program of one's own against librdc-dev, through its rdc.pc alone.
