@@ -41,6 +41,7 @@ done
 out=$(tests/python/run.sh "$(dirname "$dir")" 2>&1)
 printf '%s\n' "$out"
 c=$(printf '%s\n' "$out" | sed -n 's/^python: \([0-9]*\) passed, \([0-9]*\) failed, \([0-9]*\) skipped$/\1 \2 \3/p' | tail -n 1)
+# shellcheck disable=SC2086 # three numbers
 set -- ${c:-0 1 0}
 pass=$((pass + $1))
 fail=$((fail + $2))

@@ -21,7 +21,9 @@ skip() {
 	echo "python: 0 passed, 0 failed, 1 skipped"
 	exit 0
 }
-[ -f "$py" ] && [ -x "$py" ] || skip "$py not found (Debian: python3)"
+if [ ! -f "$py" ] || [ ! -x "$py" ]; then
+	skip "$py not found (Debian: python3)"
+fi
 "$py" -c 'import pytest' 2>/dev/null ||
 	skip "pytest not importable by $py (Debian: python3-pytest)"
 [ -e "$O/rel/librdc.so.1" ] ||
@@ -61,6 +63,7 @@ failed = n["failures"] + n["errors"]
 print(n["tests"] - failed - n["skipped"], failed, n["skipped"])
 EOF
 )
+# shellcheck disable=SC2086 # three numbers
 set -- $counts
 pass=$1 fail=$2 skipped=$3
 # pytest failing without a failed test (a usage or collection error)
