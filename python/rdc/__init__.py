@@ -616,6 +616,7 @@ class Device:
         self.uri = uri
         self._h = None
         self._frame_size = None
+        self._vcds = []
         if _handle is not None:
             self._h = _handle
             return
@@ -624,8 +625,11 @@ class Device:
         self._h = h
 
     def close(self):
-        """rdc_close; closing twice is harmless."""
+        """rdc_close, after the VCD dumps still open (newest first);
+        closing twice is harmless."""
         if self._h:
+            while self._vcds:
+                self._vcds[-1].close()
             lib.rdc_close(self._h)
             self._h = None
 
@@ -738,8 +742,8 @@ class Device:
         return self.fence_wait(fence)
 
     def wait_irq(self, mask=None, timeout_us=0):
-        """Wait for an interrupt: enable `mask` (RDC_IRQ_* bits) in
-        IRQ_ENABLE if given, wait for the IRQ pin's rising edge
+        """Wait for an interrupt: set IRQ_ENABLE to `mask` (RDC_IRQ_*
+        bits) if given, wait for the IRQ pin's rising edge
         (rdc_pins_wait_edge) unless it is high already, and return the
         IRQ_STATUS bits found (WaitResult.irq), not cleared."""
         if mask is not None:
@@ -894,12 +898,15 @@ class Device:
         self._call("rdc_subscribe", events, every, encoding)
 
     def event_next(self, timeout_ms=-1, into=None, max_pixels=None):
-        """The next event; a frame event's pixels go into a Frame."""
+        """The next event (rdc_event_next): an Event; a frame event's
+        pixels are written into `into` (a writable buffer a loop can
+        reuse), else a new buffer of max_pixels, by default room for the
+        largest frame the CRTC can scan (a frame that does not fit is
+        lost: RDC_E_RANGE)."""
         ev = _lib.Event(size=ctypes.sizeof(_lib.Event))
         if into is None:
             if max_pixels is None:
-                w, h = self._frame_size or (2048, 2048)
-                max_pixels = w * h
+                max_pixels = CRTC_MAX_DISPLAY * CRTC_MAX_DISPLAY
             into = bytearray(max_pixels * 4)
         p, n, keep = _out(into)
         self._call("rdc_event_next_sized", byref(ev), p, n // 4, timeout_ms)
@@ -921,10 +928,12 @@ class Device:
 
     def vcd_open(self, path):
         """Dump the chip's signals to a VCD file (sim: only): a Vcd, a
-        context manager; close it before the device."""
+        context manager; closing the device closes it first."""
         h = c_void_p()
         self._call("rdc_vcd_open", str(path).encode(), byref(h))
-        return Vcd(h, self)
+        vcd = Vcd(h, self)
+        self._vcds.append(vcd)
+        return vcd
 
     def history_open(self, x=0, y=0, w=HISTORY_SCREEN, h=HISTORY_SCREEN,
                      flags=0):
@@ -958,9 +967,17 @@ class Vcd:
         self.dev = dev
 
     def close(self):
+        """End the dump and close its file (before the device: the
+        device's close does it for dumps still open)."""
         if self._h:
             h, self._h = self._h, None
+            if self in self.dev._vcds:
+                self.dev._vcds.remove(self)
             _check(lib.rdc_vcd_close(h), "rdc_vcd_close")
+
+    def __del__(self):
+        if self._h and self.dev._h:
+            self.close()
 
     def __enter__(self):
         return self

@@ -318,6 +318,17 @@ def test_record_and_replay(sim, tmp_path):
         assert hist[-1].after & 0xFFFFFF == 0xFF8000
 
 
+def test_vcd_closed_with_its_device(tmp_path):
+    path = tmp_path / "w.vcd"
+    dev = rdc.open()
+    vcd = dev.vcd_open(path)
+    dev.mode_set("320x200")
+    dev.frame_wait()
+    dev.close()  # the dump first, then the device
+    assert vcd._h is None
+    assert "$enddefinitions" in path.read_text()
+
+
 def test_vcd(sim, tmp_path):
     path = tmp_path / "w.vcd"
     with sim.vcd_open(path):
@@ -352,3 +363,17 @@ def test_rdcd_irq_events(rdcd):
         dev.vblank_wait()
         ev = obs.event_next(timeout_ms=10000)
         assert ev.type == rdc.EVENT_IRQ and ev.irq & rdc.IRQ_VBLANK
+
+
+def test_rdcd_frame_events(rdcd):
+    with rdcd.open() as dev, rdcd.open(observe=True) as obs:
+        draw(dev)
+        want = dev.frame_grab()
+        obs.subscribe(rdc.EVENT_FRAME, 1, rdc.FRAME_RLE)
+        buf = bytearray(320 * 200 * 4)
+        for _ in range(3):
+            dev.vblank_wait()
+        ev = obs.event_next(timeout_ms=10000, into=buf)
+        assert ev.type == rdc.EVENT_FRAME
+        assert ev.frame.data is buf  # decoded straight into it
+        assert ev.frame == want
