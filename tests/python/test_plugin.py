@@ -172,3 +172,30 @@ def test_sim_only(rdc_sim):
     pass
 """, "--rdc-uri", rdcd.uri)
     res.assert_outcomes(passed=1, skipped=1)
+
+
+def test_frame_compare_without_numpy(monkeypatch):
+    """The pure-Python comparison finds what the numpy one finds."""
+    from rdc import pytest_plugin as plugin
+    with rdc.open() as dev:
+        dev.mode_set("320x200", "xrgb8888")
+        with rdc.Batch() as b:
+            dev.submit(b.fg(0x102030).fill_rect(0, 0, 320, 200))
+        dev.finish()
+        dev.frame_wait()
+        a = dev.frame_grab()
+        with rdc.Batch() as b:
+            dev.submit(b.fg(0xFFFFFF).pixel(7, 3).pixel(300, 150))
+        dev.finish()
+        dev.frame_wait()
+        b = dev.frame_grab()
+    results = []
+    for np in ((rdc.numpy, None) if rdc.numpy is not None else (None,)):
+        monkeypatch.setattr(rdc, "numpy", np)
+        first, count = plugin._first_diff(a, b)
+        d = plugin.diff_frame(a, b)
+        results.append((first, count, bytes(d)))
+        assert (first % 320, first // 320, count) == (7, 3, 2)
+        assert d.pixel(7, 3) == d.pixel(300, 150) == 0xFF0000
+        assert d.pixel(0, 0) == (0x102030 >> 2) & 0x3F3F3F
+    assert all(r == results[0] for r in results)
