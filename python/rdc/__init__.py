@@ -296,27 +296,31 @@ def image_encode(codec, pixels, width, height, channels, pitch=None):
 
 class Frame:
     """A scanned-out frame: width x height XRGB8888 pixels, each the
-    little-endian word 0x00RRGGBB, in `data`, a bytearray librdc wrote into
-    directly.  array() views it as numpy (no copy)."""
+    little-endian word 0x00RRGGBB, in `data`, the buffer librdc wrote into
+    directly (a bytearray, or the caller's: a numpy array ...).  array()
+    views it as numpy, words() as a memoryview of ints (no copies)."""
 
-    __slots__ = ("data", "width", "height")
+    __slots__ = ("data", "width", "height", "_bytes")
 
     def __init__(self, data, width, height):
         self.data = data
         self.width = width
         self.height = height
+        mv = memoryview(data).cast("B")
+        if mv.nbytes < width * height * 4:
+            raise ValueError("rdc: %d bytes hold no %dx%d frame"
+                             % (mv.nbytes, width, height))
+        self._bytes = mv[:width * height * 4]
 
     def __len__(self):
         return self.width * self.height
 
     def __bytes__(self):
-        return bytes(self.data[:self.width * self.height * 4])
+        return self._bytes.tobytes()
 
     def __eq__(self, other):
         return (isinstance(other, Frame) and self.width == other.width and
-                self.height == other.height and
-                memoryview(self.data)[:len(self) * 4] ==
-                memoryview(other.data)[:len(other) * 4])
+                self.height == other.height and self._bytes == other._bytes)
 
     __hash__ = None
 
@@ -326,7 +330,11 @@ class Frame:
 
     def crc(self):
         """CRC-32 of the pixels' bytes, as rdc_frame_crc's."""
-        return crc32(memoryview(self.data)[:len(self) * 4])
+        return crc32(self._bytes)
+
+    def words(self):
+        """The pixels as a memoryview of unsigned ints (0xXXRRGGBB)."""
+        return self._bytes.cast("I")
 
     def pixel(self, x, y):
         """The pixel at (x, y) as 0x00RRGGBB."""
@@ -334,12 +342,12 @@ class Frame:
             raise IndexError("rdc: (%d, %d) outside %dx%d"
                              % (x, y, self.width, self.height))
         o = (y * self.width + x) * 4
-        return int.from_bytes(self.data[o:o + 4], "little") & 0xFFFFFF
+        return int.from_bytes(self._bytes[o:o + 4], "little") & 0xFFFFFF
 
     def row(self, y):
         """Row y as a list of 0x00RRGGBB values."""
         o = y * self.width * 4
-        mv = memoryview(self.data)[o:o + self.width * 4].cast("I")
+        mv = self._bytes[o:o + self.width * 4].cast("I")
         return [v & 0xFFFFFF for v in mv]
 
     def array(self):
@@ -348,9 +356,8 @@ class Frame:
         if numpy is None:
             raise ImportError("rdc: Frame.array() needs numpy "
                               "(Debian: python3-numpy)")
-        return numpy.frombuffer(self.data, dtype="<u4",
-                                count=len(self)).reshape(self.height,
-                                                         self.width)
+        return numpy.frombuffer(self._bytes, dtype="<u4").reshape(
+            self.height, self.width)
 
     def rgb(self):
         """(height, width, 3) uint8 numpy array R, G, B (a copy)."""

@@ -171,7 +171,7 @@ _MASK = 0xFFFFFF
 
 
 def _pixels(frame):
-    return memoryview(frame.data)[:len(frame) * 4].cast("I")
+    return frame.words()
 
 
 def _first_diff(a, b):

@@ -202,6 +202,8 @@ def test_frame_as_numpy_shares_memory(sim):
     out = np.zeros((200, 320), dtype=np.uint32)
     f2 = sim.frame_grab(into=out)
     assert f2.data is out and (out == a).all()
+    assert f2 == frame and f2.crc() == frame.crc()
+    assert f2.pixel(10, 20) == 0xFF8000 and f2.row(20) == frame.row(20)
 
 
 def test_readback_equals_the_frame(sim):
