@@ -403,7 +403,8 @@ install: all shared
 	$(INSTALL_DATA) $(PY_SRCS) $$d/rdc/; \
 	echo "$(PYTHON) python/rdc/_headers.py ... >$$d/rdc/_constants.py"; \
 	$(PYTHON) python/rdc/_headers.py hw-sim/rdc_regs.h \
-		userspace/include/rdc.h >$$d/rdc/_constants.py; \
+		hw-sim/rdc_image.h userspace/include/rdc.h \
+		>$$d/rdc/_constants.py; \
 	chmod 644 $$d/rdc/_constants.py; \
 	echo "$(DESTDIR)$(PY_DISTINFO)/METADATA, entry_points.txt"; \
 	printf '%s\n' "$$RDC_PY_METADATA" >$(DESTDIR)$(PY_DISTINFO)/METADATA; \

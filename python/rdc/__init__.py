@@ -292,6 +292,18 @@ def image_encode(codec, pixels, width, height, channels, pitch=None):
     return bytes(out[:n.value])
 
 
+def image_samples(frame, channels=3):
+    """A frame's pixels as samples for image_encode (rdc_image_samples):
+    R, G, B bytes (channels 3) or luma (1)."""
+    out = bytearray(len(frame) * channels)
+    p, _, keep = _in(frame.words())
+    o, _, okeep = _out(out)
+    _check(lib.rdc_image_samples(p, frame.width, frame.height, frame.width,
+                                 channels, o), "rdc_image_samples")
+    del keep, okeep
+    return out
+
+
 # ---- Frames -----------------------------------------------------------------
 
 class Frame:
