@@ -325,6 +325,36 @@ def test_pixel_history(sim):
         assert hist.dropped == 0
 
 
+def test_history_writes_and_where_two_runs_part():
+    def run(colour):
+        dev = rdc.open()
+        dev.mode_set("320x200", "xrgb8888")
+        dev.vblank_wait()
+        hist = dev.history_open(flags=rdc.HISTORY_WRITES)
+        with rdc.Batch() as b:
+            b.fg(0x0000FF).fill_rect(0, 0, 50, 50)
+            b.fg(colour).fill_rect(100, 100, 20, 20)
+            dev.submit(b)
+        dev.finish()
+        return dev, hist
+
+    runs = [run(0xFF0000), run(0xFF0000), run(0x00FF00)]
+    try:
+        (_, a), (_, same), (_, other) = runs
+        writes = a.writes()
+        assert writes and writes[0].entry.op == "fill-rect"
+        assert a.first_diff(same) is None
+        part = a.first_diff(other)
+        assert part is not None and part > 0
+        # the blue square is drawn alike; the part is in the second fill
+        assert writes[part].entry.fg == 0xFF0000
+        assert other.writes()[part].entry.fg == 0x00FF00
+    finally:
+        for dev, hist in runs:
+            hist.close()
+            dev.close()
+
+
 def test_record_and_replay(sim, tmp_path):
     trace = tmp_path / "t.trace"
     with sim.record_start(trace):
