@@ -98,7 +98,9 @@ def _find_rdcd(config):
 
 
 class Rdcd:
-    """A running rdcd: `uri` to rdc.open, `process`, `log` (its output)."""
+    """A running rdcd: `uri` (its UNIX socket) to rdc.open, `uris` every
+    address it listens on (as its --ready-file lists them: a tcp: one
+    with the port the kernel picked for PORT 0), `process`, `log`."""
 
     def __init__(self, exe, args):
         self.dir = tempfile.mkdtemp(prefix="rdcd-")
@@ -120,6 +122,8 @@ class Rdcd:
                 raise RuntimeError("rdcd did not start (%s): %s"
                                    % (" ".join(self.args), self.output()))
             time.sleep(0.01)
+        with open(ready, encoding="utf-8") as f:
+            self.uris = f.read().split()
 
     def output(self):
         try:

@@ -431,3 +431,13 @@ def test_rdcd_frame_events(rdcd):
         assert ev.type == rdc.EVENT_FRAME
         assert ev.frame.data is buf  # decoded straight into it
         assert ev.frame == want
+
+
+@pytest.mark.rdcd_args("--listen", "tcp:127.0.0.1:0")
+def test_rdcd_over_tcp(sim, rdcd):
+    tcp = [u for u in rdcd.uris if u.startswith("tcp:")]
+    assert len(tcp) == 1 and rdcd.uri in rdcd.uris
+    draw(sim)
+    with rdc.open(tcp[0]) as dev:
+        draw(dev)
+        assert dev.frame_crc() == sim.frame_crc()
