@@ -20,7 +20,7 @@
  * flip event, whose registers the chip latches at that same vblank.
  * DRM's counter follows the chip's frame count (get_vblank_counter) and
  * its timestamps are the wall times the paced clock maps the simulated
- * vblanks to.
+ * end of each vblank to (the next frame's first line).
  */
 #include <drm/drm_atomic.h>
 #include <drm/drm_atomic_helper.h>
@@ -36,6 +36,7 @@
 #include <drm/drm_simple_kms_helper.h>
 #include <drm/drm_vblank.h>
 #include <linux/iosys-map.h>
+#include <linux/math64.h>
 #include <linux/minmax.h>
 
 #include "rdcdrm.h"
@@ -686,7 +687,7 @@ static u32 rdcdrm_get_vblank_counter(struct drm_crtc *crtc)
 	return n;
 }
 
-/* The wall time of the last simulated vblank. */
+/* When the frame after the last simulated vblank starts (wall time). */
 static bool rdcdrm_get_vblank_timestamp(struct drm_crtc *crtc, int *max_error,
 					ktime_t *vblank_time,
 					bool in_vblank_irq)
@@ -791,6 +792,28 @@ static const struct drm_crtc_funcs rdcdrm_crtc_funcs = {
 /* ---- The chip's vblank hook ---------------------------------------------- */
 
 /*
+ * DRM's vblank timestamp is when the frame after the vblank starts to
+ * scan out: the vblank's own time plus its lines, in the timing in force.
+ */
+static ktime_t rdcdrm_scanout_start(struct rdc_kchip *chip, u64 sim,
+				    ktime_t wall)
+{
+	u32 hz = chip->hw.core_hz;
+	struct rdc_timing t;
+	u64 cycles;
+
+	rdc_hw_timing(&chip->hw, &t);
+	if (!t.pixclk_khz || t.v_total <= t.v_display)
+		return wall;
+	cycles = div_u64((u64)(t.v_total - t.v_display) * t.h_total * hz,
+			 t.pixclk_khz * 1000);
+	if (chip->stepped)
+		return ktime_add_ns(wall,
+				    mul_u64_u32_div(cycles, NSEC_PER_SEC, hz));
+	return rdc_kchip_wall_of_locked(chip, sim + cycles);
+}
+
+/*
  * Chip lock held, inside the simulation, once per frame.  The registers a
  * commit wrote before this vblank are latched at it: its event goes now.
  */
@@ -799,11 +822,12 @@ static void rdcdrm_vblank(struct rdc_kchip *chip, u64 frame, u64 sim,
 {
 	struct rdcdrm_device *rd = rdcdrm_of_chip(chip);
 	struct drm_pending_vblank_event *ev = rd->event;
+	ktime_t ts = rdcdrm_scanout_start(chip, sim, wall);
 	unsigned long flags;
 
 	spin_lock_irqsave(&rd->vbl_lock, flags);
 	rd->vbl_frames = frame;
-	rd->vbl_time = wall;
+	rd->vbl_time = ts;
 	spin_unlock_irqrestore(&rd->vbl_lock, flags);
 	if (!rd->crtc_on)
 		return;
