@@ -69,15 +69,22 @@ def _is_sim(uri):
 
 @pytest.fixture
 def rdc_sim(request):
-    """A fresh RDC-1: rdc.open(--rdc-uri), reset unless it is a new sim:,
-    in the mode of the test's rdc_mode marker; closed after the test."""
+    """A fresh RDC-1: rdc.open(--rdc-uri), reset with RESET_N and BL_EN
+    high unless it is a new sim:, in the mode of the test's rdc_mode
+    marker; closed after the test."""
     uri = request.config.getoption("rdc_uri")
     if not _is_sim(uri) and request.node.get_closest_marker("rdc_sim_only"):
         pytest.skip("needs the in-process simulator, not %s" % uri)
     dev = rdc.open(uri)
     try:
         if not _is_sim(uri):
+            # as a new chip: reset, and the inputs high (a pin keeps the
+            # level the last test drove it to)
             dev.reset()
+            try:
+                dev.pins_set(rdc.PINS_IN, rdc.PINS_IN)
+            except rdc.NotSupported:  # fbdev:, drm: built without libgpiod
+                pass
         m = request.node.get_closest_marker("rdc_mode")
         if m is not None:
             dev.mode_set(*m.args, **m.kwargs)

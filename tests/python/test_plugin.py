@@ -174,6 +174,19 @@ def test_sim_only(rdc_sim):
     res.assert_outcomes(passed=1, skipped=1)
 
 
+def test_rdc_sim_on_a_daemon_is_a_fresh_chip(pytester, rdcd):
+    res = run(pytester, """
+def test_dirty(rdc_sim):
+    rdc_sim.reg_write(rdc.REG_LINE_COMPARE, 77)
+    rdc_sim.pins_set(rdc.PIN_BL_EN, 0)
+
+def test_clean(rdc_sim):
+    assert rdc_sim.reg_read(rdc.REG_LINE_COMPARE) != 77
+    assert rdc_sim.pins_get() & rdc.PINS_IN == rdc.PINS_IN
+""", "--rdc-uri", rdcd.uri)
+    res.assert_outcomes(passed=2)
+
+
 def test_frame_compare_without_numpy(monkeypatch):
     """The pure-Python comparison finds what the numpy one finds."""
     from rdc import pytest_plugin as plugin
