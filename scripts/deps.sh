@@ -51,10 +51,13 @@ gpiod_ok || gpiod_missing=1
 
 if [ "$(id -u)" = 0 ]; then
 	export DEBIAN_FRONTEND=noninteractive
+	# Wait for another apt or dpkg (an unattended upgrade, a second
+	# install) rather than fail at once on its lock.
+	APT_WAIT="-o DPkg::Lock::Timeout=600"
 	if [ -n "$missing" ]; then
 		echo "deps: installing$missing"
-		apt-get install -y --no-install-recommends $missing >/dev/null ||
-			{ apt-get update >/dev/null && apt-get install -y --no-install-recommends $missing >/dev/null; }
+		apt-get $APT_WAIT install -y --no-install-recommends $missing >/dev/null ||
+			{ apt-get $APT_WAIT update >/dev/null && apt-get $APT_WAIT install -y --no-install-recommends $missing >/dev/null; }
 	fi
 	if [ -n "$gpiod_missing" ]; then
 		. /etc/os-release
@@ -68,10 +71,10 @@ if [ "$(id -u)" = 0 ]; then
 					"Suites: bookworm-backports" "Components: main" \
 					"Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg" >"$src"
 			fi
-			apt-get update >/dev/null
+			apt-get $APT_WAIT update >/dev/null
 		fi
 		echo "deps: installing $GPIOD_PKGS${target:+ ($target)}"
-		apt-get install -y --no-install-recommends $target $GPIOD_PKGS >/dev/null ||
+		apt-get $APT_WAIT install -y --no-install-recommends $target $GPIOD_PKGS >/dev/null ||
 			echo "deps: libgpiod v2 could not be installed: building without GPIO lines" >&2
 	fi
 	exit 0

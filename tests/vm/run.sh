@@ -87,6 +87,8 @@ is_installed() {
 # install PKG...: what is missing of them (PKG may be NAME=VERSION).  The
 # kernels' parts run at once: one apt at a time, through APT_LOCK.
 APT_LOCK=${TMPDIR:-/tmp}/rdc-vm-apt.lock
+# and dpkg's own lock, held by any other apt: wait for it too
+LOCK_WAIT="-o DPkg::Lock::Timeout=600"
 export APT_LOCK
 install() {
 	missing=""
@@ -98,9 +100,9 @@ install() {
 		skip "missing Debian packages; as root: apt-get install -y$missing"
 	echo "vm: installing$missing"
 	export DEBIAN_FRONTEND=noninteractive
-	flock "$APT_LOCK" sh -c "apt-get install -y --no-install-recommends $missing >/dev/null 2>&1 ||
-		{ apt-get update >/dev/null 2>&1 &&
-		  apt-get install -y --no-install-recommends $missing >/dev/null; }" ||
+	flock "$APT_LOCK" sh -c "apt-get $LOCK_WAIT install -y --no-install-recommends $missing >/dev/null 2>&1 ||
+		{ apt-get $LOCK_WAIT update >/dev/null 2>&1 &&
+		  apt-get $LOCK_WAIT install -y --no-install-recommends $missing >/dev/null; }" ||
 		{ echo "vm: apt-get install$missing failed"; exit 1; }
 }
 
