@@ -21,7 +21,10 @@
  *                     unknown objects and properties, bad flags refused
  *                     with their documented errno
  *   flip-legacy       300 page flips (drmModePageFlip with
- *   flip-atomic       DRM_MODE_PAGE_FLIP_EVENT; atomic NONBLOCK commits):
+ *   flip-atomic       DRM_MODE_PAGE_FLIP_EVENT; atomic NONBLOCK commits;
+ *   flip-damage       those with FB_DAMAGE_CLIPS of the one patch where
+ *                     the buffers differ, so that each flip uploads a
+ *                     patch, not a frame):
  *                     no vblank missed (each event's sequence the
  *                     previous one's + 1), no frame torn (each a whole
  *                     buffer's colour, by the chip's CRC), the events as
@@ -784,12 +787,22 @@ static int frames_vs_vblank(struct kms *k, int64_t *offset)
 	return -EAGAIN;
 }
 
-static int flip_to(struct kms *k, struct dumb *d, bool atomic)
+/* How the flips go: legacy or atomic, whole pictures or a damaged patch. */
+enum flip_kind { FLIP_LEGACY, FLIP_ATOMIC, FLIP_DAMAGE };
+
+/* The patch that tells the buffers of flip-damage apart. */
+#define FLIP_PATCH 16
+
+/* A flip to d with an event; damage: the FB_DAMAGE_CLIPS blob, or 0. */
+static int flip_to(struct kms *k, struct dumb *d, enum flip_kind kind,
+		   uint32_t damage)
 {
-	if (atomic) {
+	if (kind != FLIP_LEGACY) {
 		drmModeAtomicReqPtr r = drmModeAtomicAlloc();
 
 		add(r, k->primary_id, k->pp.fb_id, d->fb);
+		if (damage)
+			add(r, k->primary_id, k->pp.damage, damage);
 		return commit(k, r,
 			      DRM_MODE_ATOMIC_NONBLOCK |
 				      DRM_MODE_PAGE_FLIP_EVENT);
@@ -800,9 +813,23 @@ static int flip_to(struct kms *k, struct dumb *d, bool atomic)
 		       0;
 }
 
-static int st_flip(struct kms *k, bool atomic)
+/*
+ * FLIP_FRAMES flips through FLIP_BUFS buffers, each flip issued as soon as
+ * the previous one's event arrives.  FLIP_LEGACY and FLIP_ATOMIC flip
+ * between whole pictures of their own colour, so each flip uploads a
+ * whole frame; FLIP_DAMAGE between buffers that differ only in a patch of
+ * their own colour, each flip saying so in FB_DAMAGE_CLIPS (as a
+ * compositor does), so each uploads the patch: whether a flip makes the
+ * next vblank then does not hang on how fast the machine simulates a
+ * whole frame's upload.
+ */
+static int st_flip(struct kms *k, enum flip_kind kind)
 {
-	const char *name = atomic ? "flip-atomic" : "flip-legacy";
+	const char *name = kind == FLIP_LEGACY ? "flip-legacy" :
+			   kind == FLIP_ATOMIC ? "flip-atomic" :
+						 "flip-damage";
+	struct drm_mode_rect patch = { 8, 8, 8 + FLIP_PATCH, 8 + FLIP_PATCH };
+	uint32_t damage = 0;
 	static const uint32_t colour[FLIP_BUFS] = { 0xc03020, 0x20c040,
 						    0x3050d0 };
 	struct dumb d[FLIP_BUFS];
@@ -822,7 +849,15 @@ static int st_flip(struct kms *k, bool atomic)
 			tap(0, "%s: buffers", name);
 			return 1;
 		}
-		fill(&d[i], colour[i]);
+		if (kind == FLIP_DAMAGE) {
+			fill(&d[i], 0x404040);
+			for (int y = patch.y1; y < patch.y2; y++)
+				for (int x = patch.x1; x < patch.x2; x++)
+					*px(&d[i], (uint32_t)x, (uint32_t)y) =
+						0xff000000u | colour[i];
+		} else {
+			fill(&d[i], colour[i]);
+		}
 		/* the chip's CRC of each picture, its pixels checked once */
 		expect_xrgb(k, &d[i], want);
 		if (show(k, &d[i]) || settle(k, &fr) ||
@@ -840,13 +875,18 @@ static int st_flip(struct kms *k, bool atomic)
 	free(want);
 	if (!ok)
 		goto out;
+	if (kind == FLIP_DAMAGE &&
+	    drmModeCreatePropertyBlob(k->fd, &patch, sizeof(patch), &damage)) {
+		tap(0, "%s: the damage blob: %s", name, strerror(errno));
+		goto out;
+	}
 
 	ev.flips = 0;
 	t0 = now_ns();
 	for (unsigned int i = 1; i <= FLIP_FRAMES; i++) {
 		uint64_t t = now_ns();
 
-		ret = flip_to(k, &d[i % FLIP_BUFS], atomic);
+		ret = flip_to(k, &d[i % FLIP_BUFS], kind, damage);
 		if (ret) {
 			printf("#   flip %u: %s\n", i, strerror(-ret));
 			break;
@@ -928,6 +968,8 @@ static int st_flip(struct kms *k, bool atomic)
 	    name, events, (int64_t)(prev - first) + 1 + (off1 - off0), off0,
 	    off1);
 out:
+	if (damage)
+		drmModeDestroyPropertyBlob(k->fd, damage);
 	for (int i = 0; i < FLIP_BUFS; i++)
 		dumb_free(k, &d[i]);
 	return 0;
@@ -935,12 +977,22 @@ out:
 
 static int st_flip_legacy(struct kms *k)
 {
-	return st_flip(k, false);
+	return st_flip(k, FLIP_LEGACY);
 }
 
 static int st_flip_atomic(struct kms *k)
 {
-	return st_flip(k, true);
+	return st_flip(k, FLIP_ATOMIC);
+}
+
+static int st_flip_damage(struct kms *k)
+{
+	if (!k->pp.damage) {
+		tap_skip("flip-damage: the primary plane has no "
+			 "FB_DAMAGE_CLIPS");
+		return 77;
+	}
+	return st_flip(k, FLIP_DAMAGE);
 }
 
 /* ---- vblank ----------------------------------------------------------------- */
@@ -1750,6 +1802,7 @@ static const struct {
 	{ "atomic-test-only", st_atomic_test_only },
 	{ "flip-legacy", st_flip_legacy },
 	{ "flip-atomic", st_flip_atomic },
+	{ "flip-damage", st_flip_damage },
 	{ "vblank", st_vblank },
 	{ "cursor", st_cursor },
 	{ "gamma", st_gamma },
