@@ -23,6 +23,10 @@
  *                                   in software
  *   rdcdrm_tool crc DEV DEBUGFS     the debugfs CRCs (source auto) against
  *                                   the FRAME ioctl's, frame by frame
+ *   rdcdrm_tool fuzz DEV N          N random private ioctls with random
+ *                                   arguments (REG_WRITE aside): each
+ *                                   answers 0 or its errno; a mode set
+ *                                   draws after
  *   rdcdrm_tool hold DEV            a mode set from a mapped dumb buffer;
  *                                   print "held", wait for a signal
  *   rdcdrm_tool unbind DEV PDEV     with DEV open and a dumb buffer mapped,
@@ -920,6 +924,142 @@ static int cmd_crc(const char *dev, const char *dir)
 	return failures ? 1 : 0;
 }
 
+/* ---- fuzz ---------------------------------------------------------------- */
+
+static uint64_t rng_state = 0x9e3779b97f4a7c15ull;
+
+static uint32_t rnd(void)
+{
+	rng_state ^= rng_state << 13;
+	rng_state ^= rng_state >> 7;
+	rng_state ^= rng_state << 17;
+	return (uint32_t)(rng_state >> 16);
+}
+
+/* A word that is often near a boundary. */
+static uint32_t rnd_word(void)
+{
+	static const uint32_t edge[] = {
+		0, 1, 3, 4, 0xff, 0x3ff, 0x400, 0xffff, 0x10000, 0x7fffffff,
+		0x80000000u, 0xfffffffcu, 0xffffffffu, 32u << 20, 16u << 20,
+	};
+
+	return rnd() % 3 ? rnd() : edge[rnd() % (sizeof(edge) / 4)];
+}
+
+/*
+ * Random private ioctls with random arguments (REG_WRITE aside: a random
+ * register write may switch scanout off, which is allowed and not what
+ * is being looked for): each answers 0 or an errno, never hangs, and the
+ * card draws a mode set after.
+ */
+static int cmd_fuzz(const char *dev, unsigned int n)
+{
+	int fd = open_dev(dev), ret;
+	uint32_t words[64], *big = malloc(4u << 20), errs[160] = { 0 };
+	struct pipe_info p;
+	struct dumb d, g;
+	uint32_t salt = 42;
+	unsigned int i, k, ok = 0;
+
+	if (!big || find_pipe(fd, &p, 320, 200) ||
+	    dumb_new(fd, &g, 64, 48, DRM_FORMAT_XRGB8888, 32))
+		return 1;
+	for (i = 0; i < n; i++) {
+		union {
+			struct drm_rdc_reg r;
+			struct drm_rdc_submit s;
+			struct drm_rdc_wait w;
+			struct drm_rdc_step st;
+			struct drm_rdc_counters c;
+			struct drm_rdc_frame f;
+			struct drm_rdc_vram v;
+			uint32_t raw[32];
+		} a;
+		unsigned long req;
+
+		for (k = 0; k < 32; k++)
+			a.raw[k] = rnd_word();
+		for (k = 0; k < 64; k++)
+			words[k] = rnd_word();
+		switch (rnd() % 7) {
+		case 0:
+			req = DRM_IOCTL_RDC_REG_READ;
+			break;
+		case 1:
+			req = DRM_IOCTL_RDC_SUBMIT;
+			a.s.words = rnd() % 8 ? (uintptr_t)words : rnd_word();
+			a.s.count %= rnd() % 4 ? 65 : 0x20000;
+			if (a.s.count > 64)
+				a.s.words = (uintptr_t)big;
+			if (rnd() % 2) {
+				a.s.flags = DRM_RDC_SUBMIT_GEM;
+				a.s.reserved[0] = a.s.reserved[1] = 0;
+				if (rnd() % 2) {
+					a.s.handle = g.handle;
+					a.s.format = DRM_FORMAT_XRGB8888;
+					a.s.width %= 100;
+					a.s.height %= 100;
+					a.s.pitch %= 1024;
+				}
+			}
+			break;
+		case 2:
+			req = DRM_IOCTL_RDC_WAIT;
+			a.w.timeout_ms %= 20;
+			a.w.budget %= 200000;
+			if (rnd() % 2)
+				a.w.term[0].kind %= 5;
+			break;
+		case 3:
+			req = DRM_IOCTL_RDC_STEP;
+			break;
+		case 4:
+			req = DRM_IOCTL_RDC_COUNTERS;
+			break;
+		case 5:
+			req = DRM_IOCTL_RDC_FRAME;
+			if (rnd() % 2) {
+				a.f.pixels = (uintptr_t)big;
+				a.f.cap %= (4u << 20) / 4;
+			}
+			break;
+		default:
+			req = DRM_IOCTL_RDC_VRAM;
+			a.v.data = rnd() % 4 ? (uintptr_t)big : rnd_word();
+			a.v.len %= rnd() % 2 ? 4096 : (4u << 20);
+			a.v.flags &= rnd() % 2 ? DRM_RDC_VRAM_WRITE : ~0u;
+			if (rnd() % 2)
+				a.v.reserved = 0;
+			break;
+		}
+		ret = ioctl(fd, req, &a);
+		if (!ret)
+			ok++;
+		else
+			errs[errno < 160 ? errno : 0]++;
+	}
+	printf("%u random ioctls: %u done, errors:", n, ok);
+	for (k = 0; k < 160; k++)
+		if (errs[k])
+			printf(" %s %u", strerrorname_np(k), errs[k]);
+	printf("\n");
+	if (errs[0] || errs[ENOTTY])
+		FAIL("an error that is no errno of the ioctls\n");
+	/* the card still shows what it is given */
+	if (dumb_new(fd, &d, 320, 200, DRM_FORMAT_XRGB8888, 32)) {
+		FAIL("dumb buffer after fuzzing: %s\n", strerror(errno));
+		return 1;
+	}
+	fill_xrgb(&d, salt, 0, 0, d.w, d.h);
+	if (!set_crtc(fd, &p, d.fb))
+		wait_frame(fd, d.w, d.h, want_pattern, &salt,
+			   "a mode set after fuzzing");
+	free(big);
+	close(fd);
+	return failures ? 1 : 0;
+}
+
 /* ---- hold and unbind ----------------------------------------------------- */
 
 static volatile sig_atomic_t stop;
@@ -997,11 +1137,13 @@ int main(int argc, char **argv)
 		return cmd_cursor(argv[2]);
 	if (argc == 4 && !strcmp(argv[1], "crc"))
 		return cmd_crc(argv[2], argv[3]);
+	if (argc == 4 && !strcmp(argv[1], "fuzz"))
+		return cmd_fuzz(argv[2], strtoul(argv[3], NULL, 0));
 	if (argc == 3 && !strcmp(argv[1], "hold"))
 		return cmd_hold(argv[2]);
 	if (argc == 4 && !strcmp(argv[1], "unbind"))
 		return cmd_unbind(argv[2], argv[3]);
 	fprintf(stderr, "usage: rdcdrm_tool frame|kms|formats|cursor|crc|"
-			"hold|unbind DEV [...]\n");
+			"fuzz|hold|unbind DEV [...]\n");
 	return 2;
 }

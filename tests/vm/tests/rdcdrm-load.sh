@@ -6,9 +6,10 @@
 # dumb buffer with modetest's plain pattern, and rdcdrm_tool's own mode
 # sets, damage, flips, vblank counts, formats, gamma and cursor give chip
 # frames (the FRAME ioctl) equal to what was drawn; the debugfs CRCs are
-# the frames'; bad ioctl input gets clean errors.  Load and unload with
-# both clocks; unload refused while a client holds the card; unbind under
-# an open, mapped client; no memory left behind and dmesg clean.
+# the frames'; bad ioctl input gets clean errors, random input too.  Load
+# and unload with both clocks; unload refused while a client holds the
+# card; unbind under an open, mapped client; no memory left behind and
+# dmesg clean.
 # vm-module: rdcdrm
 . "$RDC_TREE/tests/vm/lib.sh"
 
@@ -97,6 +98,8 @@ check "debugfs CRCs (source auto) are the scanned-out frames'" \
 	"$TOOL" crc "$CARD" "$DEBUGFS"
 kill "$pid"
 wait "$pid"
+check "1000 random private ioctls answer 0 or their errno; the card draws after" \
+	"$TOOL" fuzz "$CARD" 1000
 
 check "the harness's module unloads" rmmod rdcdrm
 base=$(vmalloc_kb)
