@@ -836,8 +836,8 @@ static int st_flip(struct kms *k, enum flip_kind kind)
 	uint32_t crc[FLIP_BUFS];
 	uint32_t *want = want_new(k);
 	unsigned int missed = 0, torn = 0, events = 0, shown[FLIP_BUFS] = { 0 };
-	unsigned int first = 0, prev = 0;
-	uint64_t chip_first = 0, chip_last = 0, t0, lat = 0;
+	unsigned int first = 0, prev = 0, late = 0;
+	uint64_t chip_first = 0, chip_last = 0, t0, lat = 0, prev_ns = 0;
 	uint64_t flips_first = 0, flips_last = 0;
 	int64_t off0 = 0, off1 = 0;
 	struct drm_rdc_frame fr;
@@ -907,13 +907,25 @@ static int st_flip(struct kms *k, enum flip_kind kind)
 			chip_first = c.frames;
 			flips_first = c.flips;
 		} else if (ev.seq != prev + 1) {
+			/* when it was asked for, against the vblank it
+			 * missed (the previous event's time + a frame) */
+			int64_t early =
+				(int64_t)(prev_ns + period_ns(k)) - (int64_t)t;
+
+			if (early <= 0)
+				late++;
 			if (missed < 5)
 				printf("#   flip %u: event sequence %u after "
-				       "%u\n",
-				       i, ev.seq, prev);
+				       "%u; asked for %.2f ms %s the vblank "
+				       "it missed\n",
+				       i, ev.seq, prev,
+				       (double)(early < 0 ? -early : early) /
+					       1e6,
+				       early > 0 ? "before" : "after");
 			missed += ev.seq > prev ? ev.seq - prev - 1 : 1;
 		}
 		prev = ev.seq;
+		prev_ns = ev.ns;
 		/* the last whole frame: one buffer's picture, no mix */
 		if (!rdc_frame(k, NULL, &fr)) {
 			int b = -1;
@@ -951,6 +963,11 @@ static int st_flip(struct kms *k, enum flip_kind kind)
 	       chip_first, chip_last);
 	tap(!ret && events == FLIP_FRAMES,
 	    "%s: %u flips completed with an event each", name, events);
+	if (missed)
+		printf("#   of the flips that missed a vblank, %u were asked "
+		       "for only after it (the paced clock catching up, or "
+		       "this program late), the others before it\n",
+		       late);
 	tap(!ret && missed == 0,
 	    "%s: 0 missed (each event's sequence the previous + 1): %u "
 	    "missed, sequences %u..%u",
