@@ -6,8 +6,11 @@
  *
  * One device handle (rdc_dev) reached through a URI that picks a backend:
  *   "sim:", "sim" or ""     an RDC-1 simulated in this process (default);
- *                           options: "sim:vram=16M" (64K..256M bytes,
- *                           K/M suffixes)
+ *                           options, joined by ',': "vram=16M" (64K..256M
+ *                           bytes, K/M suffixes), "scanout=demand" (no
+ *                           frame is converted while nothing looks: a
+ *                           grab that finds none waits for the next
+ *                           whole frame; hw-sim/rdc_chip.h)
  *   "unix:PATH", "unix:"   an RDC-1 served by rdcd on a UNIX socket (the
  *                           default path when PATH is empty)
  *   "tcp:HOST:PORT"         the same over TCP; options after '?', joined

@@ -34,6 +34,11 @@ struct sim {
 	uint8_t *vram;
 	uint32_t *frame[2];
 	size_t vram_len;
+	/*
+	 * scanout=demand: a grab that found no frame attached a consumer,
+	 * kept until a grab finds one (the frame scanned whole after it)
+	 */
+	bool grab_watch;
 };
 
 /*
@@ -126,11 +131,13 @@ static uint64_t sim_parse_size(const char *s, size_t len)
 	return v;
 }
 
-static int sim_parse_opts(const char *opts, uint32_t *vram_size)
+static int sim_parse_opts(const char *opts, uint32_t *vram_size,
+			  bool *on_demand)
 {
 	const char *p = opts;
 
 	*vram_size = SIM_VRAM_DEFAULT;
+	*on_demand = false;
 	while (*p) {
 		const char *end = strchr(p, ',');
 		size_t len = end ? (size_t)(end - p) : strlen(p);
@@ -141,6 +148,8 @@ static int sim_parse_opts(const char *opts, uint32_t *vram_size)
 			if (v < SIM_VRAM_MIN || v > SIM_VRAM_MAX || (v & 3))
 				return RDC_E_URI;
 			*vram_size = (uint32_t)v;
+		} else if (len == 14 && !strncmp(p, "scanout=demand", 14)) {
+			*on_demand = true;
 		} else if (len) {
 			return RDC_E_URI;
 		}
@@ -165,9 +174,10 @@ static int sim_open(rdc_dev *dev, const char *opts)
 {
 	struct rdc_hw_config cfg = { 0 };
 	struct sim *s;
+	bool on_demand;
 	int ret;
 
-	ret = sim_parse_opts(opts, &cfg.vram_size);
+	ret = sim_parse_opts(opts, &cfg.vram_size, &on_demand);
 	if (ret)
 		return ret;
 	s = calloc(1, sizeof(*s));
@@ -184,6 +194,7 @@ static int sim_open(rdc_dev *dev, const char *opts)
 	rdc_hw_init(&s->hw, &cfg, s->vram, s->frame[0], s->frame[1],
 		    SIM_FRAME_CAP);
 	rdc_dp_init(&s->dp, &s->hw);
+	rdc_hw_set_on_demand(&s->hw, on_demand);
 	dev->priv = s;
 	return 0;
 }
@@ -264,14 +275,28 @@ static int sim_step(rdc_dev *dev, uint64_t cycles)
 	return 0;
 }
 
+/*
+ * A grab is a look: with scanout=demand, one that finds no frame (none
+ * was kept: nobody looked while the picture changed) keeps a consumer
+ * attached until a grab finds one, so that rdc_frame_grab's vblank
+ * waits end with the frame scanned whole after it.
+ */
 static int sim_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 			  uint32_t *width, uint32_t *height)
 {
+	struct sim *s = sim_of(dev);
 	uint32_t w = 0, h = 0;
-	const uint32_t *f = rdc_hw_frame(&sim_of(dev)->hw, &w, &h);
+	const uint32_t *f = rdc_hw_frame(&s->hw, &w, &h);
 
-	if (!f)
+	if (!f) {
+		if (!s->grab_watch)
+			rdc_hw_consumer_attach(&s->hw);
+		s->grab_watch = true;
 		return 1;
+	}
+	if (s->grab_watch)
+		rdc_hw_consumer_detach(&s->hw);
+	s->grab_watch = false;
 	*width = w;
 	*height = h;
 	if (cap < (size_t)w * h)
