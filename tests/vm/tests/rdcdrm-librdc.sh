@@ -4,16 +4,16 @@
 # librdc's drm: backend on rdcdrm.ko's card: rdcctl list names it; regs
 # and stats read the chip; a scene that sets its own mode and surface
 # draws to sim:'s frame CRC through drm:/dev/dri/cardN and through drm:
-# alone (rdcdrm-record records and replays one); the pins read through
-# the module's GPIO lines; rdcctl stream --from drm: feeds v4l2loopback
-# while another client draws, and our reader and ffmpeg get the scene
-# exactly, as rdcfb-stream does for fbdev:.  bochs (QEMU's VGA) is
-# loaded first, so the guest has a DRM card of another driver before
-# rdcdrm.ko's: rdc_list leaves it out, drm: alone passes it by, and drm:
-# on it is refused, naming its driver; /dev/null and a missing card are
-# refused too.  (The two share DRM's helper modules, so the harness's
-# `modprobe -r rdcdrm` afterwards reports the helpers bochs still uses
-# as "cannot unload rdcdrm".)
+# alone (rdcdrm-record records and replays one); the pins through the
+# module's GPIO lines (levels, TE's edges, BL_EN driven); rdcctl stream
+# --from drm: feeds v4l2loopback while another client draws, and our
+# reader and ffmpeg get the scene exactly, as rdcfb-stream does for
+# fbdev:.  bochs (QEMU's VGA) is loaded first, so the guest has a DRM
+# card of another driver before rdcdrm.ko's: rdc_list leaves it out,
+# drm: alone passes it by, and drm: on it is refused, naming its driver;
+# /dev/null and a missing card are refused too.  (The two share DRM's
+# helper modules, so the harness's `modprobe -r rdcdrm` afterwards
+# reports the helpers bochs still uses as "cannot unload rdcdrm".)
 # vm-module: bochs
 # vm-module: rdcdrm
 # vm-module: v4l2loopback devices=1 exclusive_caps=1 video_nr=0 card_label=rdc
@@ -70,10 +70,30 @@ pins() {
 	cat "$T/pins.out"
 	[ $r = 0 ] && grep -q RESET_N "$T/pins.out"
 }
+watch_te() {
+	timeout 60 "$RDCCTL" --connect "$DRM" pins --watch --pin TE \
+		--count 8 >"$T/watch" || return 1
+	cat "$T/watch"
+	r=$(grep -c rising "$T/watch")
+	f=$(grep -c falling "$T/watch")
+	echo "$r rising, $f falling"
+	cut -f2 "$T/watch" | tr '\n' ' ' | grep -q 'rising rising\|falling falling' &&
+		{ echo "two edges of one kind in a row"; return 1; }
+	[ "$r" = 4 ] && [ "$f" = 4 ]
+}
+set_and_show() {
+	"$RDCCTL" --connect "$DRM" pins --set "$1" &&
+		"$RDCCTL" --connect "$DRM" pins | tee /dev/stderr | grep -q "$1"
+}
 if "$RDCCTL" --connect "$DRM" pins 2>&1 | grep -q 'not supported'; then
 	echo "# pins: this build has no libgpiod"
 else
 	check "rdcctl pins on $DRM reads the module's GPIO lines" pins
+	check "pins --watch: TE's edges alternate, as the paced clock makes them" \
+		watch_te
+	check "pins --set BL_EN=0 drives the line; the chip keeps it" \
+		set_and_show BL_EN=0
+	check "pins --set BL_EN=1" set_and_show BL_EN=1
 fi
 
 refused() {
