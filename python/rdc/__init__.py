@@ -764,11 +764,13 @@ class Device:
         """Wait for an interrupt: set IRQ_ENABLE to `mask` (RDC_IRQ_*
         bits) if given, wait for the IRQ pin's rising edge
         (rdc_pins_wait_edge) unless it is high already, and return the
-        IRQ_STATUS bits found (WaitResult.irq), not cleared."""
+        IRQ_STATUS bits found (WaitResult.irq), not cleared.  The pin's
+        level is read again after each edge: one that is over already (a
+        queued GPIO event on fbdev: and drm:) does not end the wait."""
         if mask is not None:
             self.reg_write(REG_IRQ_ENABLE, mask)
         edge = None
-        if not self.pins_get() & PIN_IRQ:
+        while not self.pins_get() & PIN_IRQ:
             edge = self.pins_wait_edge(PIN_IRQ, EDGE_RISING, timeout_us)
         status = self.reg_read(REG_IRQ_STATUS)
         return self._waited(irq=status, edge=edge)
