@@ -705,9 +705,10 @@ class Device:
         self._call("rdc_vram_write", addr, p, n)
         del keep
 
-    def mode_set(self, preset, fmt=None, base=0):
-        """rdc_mode_set; preset and format by number or name."""
-        fmt = FMT_XRGB8888 if fmt is None else format_by_name(fmt)
+    def mode_set(self, preset, format=None, base=0):
+        """rdc_mode_set; preset and format by number or name (format
+        XRGB8888 unless given)."""
+        fmt = FMT_XRGB8888 if format is None else format_by_name(format)
         self._call("rdc_mode_set", preset_by_name(preset), fmt, base)
         self._frame_size = None
 

@@ -35,6 +35,11 @@ def test_mode(rdc_sim):
     assert (frame.width, frame.height) == (320, 200)
     assert rdc_sim.reg_read(rdc.REG_FB_FORMAT) == rdc.FMT_I8
 
+@pytest.mark.rdc_mode(preset="320x200", format="rgb565", base=0x1000)
+def test_mode_keywords(rdc_sim):
+    assert rdc_sim.reg_read(rdc.REG_FB_FORMAT) == rdc.FMT_RGB565
+    assert rdc_sim.reg_read(rdc.REG_FB_BASE) == 0x1000
+
 def test_fresh_chip_each_time(rdc_sim):
     assert rdc_sim.reg_read(rdc.REG_LINE_COMPARE) != 77
     rdc_sim.reg_write(rdc.REG_LINE_COMPARE, 77)
@@ -43,7 +48,7 @@ def test_fresh_chip_each_time_again(rdc_sim):
     assert rdc_sim.reg_read(rdc.REG_LINE_COMPARE) != 77
     rdc_sim.reg_write(rdc.REG_LINE_COMPARE, 77)
 """)
-    res.assert_outcomes(passed=3)
+    res.assert_outcomes(passed=4)
 
 
 def test_frame_equal_passes_on_the_same_picture(pytester, tmp_path):
