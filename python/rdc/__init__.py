@@ -36,6 +36,9 @@ except ImportError:  # frames stay bytes
     numpy = None
 
 globals().update(_headers.load())
+# the release of the headers the package was installed (or is) with;
+# version() is the library's
+__version__ = "%d.%d.%d" % (VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH)
 
 __all__ = ["open", "Device", "Batch", "Frame", "Error", "Vcd", "History",
            "ScriptResult", "ReplayResult", "replay_file", "replay_history",

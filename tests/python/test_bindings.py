@@ -93,6 +93,7 @@ def test_constants_agree_with_the_library():
     assert rdc.op_name(rdc.OP_FILL_RECT) == "fill-rect"
     assert rdc.version() == (rdc.VERSION_MAJOR, rdc.VERSION_MINOR,
                              rdc.VERSION_PATCH)
+    assert rdc.__version__ == "%d.%d.%d" % rdc.version()
 
 
 def test_registers_by_name_and_offset(sim):
