@@ -217,6 +217,36 @@ def test_readback_equals_the_frame(sim):
             assert words[y * 6 + x] & 0xFFFFFF == frame.pixel(8 + x, 18 + y)
 
 
+SCENE = """mode 320x200 xrgb8888
+fg #000000
+fill-rect 0 0 320 200
+fg #ff8000
+fill-rect 10 20 30 40
+fg #00ff00
+line 0 0 319 199
+text 100 100 "rdc"
+fill-polygon 200 10 260 60 180 70
+"""
+
+
+def test_batches_draw_what_the_script_draws(sim, rdcctl, tmp_path,
+                                            frame_equal):
+    """The same drawing through Batch and through an .rdl script that
+    `rdcctl run -o` renders from C: frame_equal against its PNG."""
+    (tmp_path / "s.rdl").write_text(SCENE)
+    png = tmp_path / "s.png"
+    subprocess.run([rdcctl, "run", str(tmp_path / "s.rdl"), "-o",
+                    str(png)], check=True, stdout=subprocess.DEVNULL)
+    draw(sim)
+    with rdc.Batch() as b:
+        b.text(100, 100, "rdc").fill_polygon([(200, 10), (260, 60),
+                                              (180, 70)])
+        sim.submit(b)
+    sim.finish()
+    sim.frame_wait()
+    assert frame_equal(sim, png)
+
+
 def test_png_round_trip(sim, tmp_path):
     draw(sim)
     frame = sim.frame_grab()
