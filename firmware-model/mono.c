@@ -219,6 +219,66 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 	hw->perf.pixels += pixels;
 }
 
+/*
+ * HOST_BLIT of 8, 16 or 32 bpp pixels with ROP COPY, no colour key and
+ * nothing to blend, the case of a driver uploading a framebuffer: each
+ * chunk's span is charged as dp_blit_span charges it (a plain write) and
+ * the host's pixels are stored straight from its words, not staged in
+ * dp->px first.  Same spans, same order, same bytes.
+ */
+static bool host_copy_ok(const struct rdc_dp *dp, unsigned int bpp)
+{
+	const struct rdc_dp_state *st = &dp->st;
+
+	return !dp->ref_paths && st->rop == RDC_ROP_COPY && !st->colorkey_on &&
+	       (st->alpha == RDC_ALPHA_OPAQUE ||
+		rdc_format_indexed(st->dst.format)) &&
+	       (bpp == 8 || bpp == 16 || bpp == 32);
+}
+
+static void host_rows_copy(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
+			   int64_t xb, int64_t ya, int64_t yb,
+			   const struct row_src *rs)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	uint32_t bytes = rs->bpp / 8, n, i;
+	int64_t row, col;
+	uint8_t *p;
+
+	for (row = ya; row < yb; row++) {
+		const uint32_t *d = rs->data + (size_t)(row - y) * rs->wpr;
+
+		for (col = xa; col < xb; col += RDC_DP_CHUNK) {
+			uint32_t bx = (uint32_t)(col - x);
+
+			n = (uint32_t)RDC_MIN(xb - col, (int64_t)RDC_DP_CHUNK);
+			p = rdc_port_span(dp->hw,
+					  s->base + (uint32_t)row * s->stride +
+						  (uint32_t)col * bytes,
+					  n * bytes, RDC_BUS_WRITE);
+			if (!p)
+				continue;
+			switch (bytes) {
+			case 4:
+				for (i = 0; i < n; i++)
+					rdc_st32(p + 4 * i, d[bx + i]);
+				break;
+			case 2:
+				for (i = 0; i < n; i++)
+					rdc_st16(p + 2 * i,
+						 d[(bx + i) / 2] >>
+							 (16 * ((bx + i) % 2)));
+				break;
+			default:
+				for (i = 0; i < n; i++)
+					p[i] = (uint8_t)word_byte(d, bx + i);
+				break;
+			}
+			dp->hw->perf.pixels += n;
+		}
+	}
+}
+
 static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		      uint32_t h, const struct row_src *rs)
 {
@@ -234,6 +294,10 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 	    dp->st.dst.format == RDC_FMT_XRGB8888 && xa < xb &&
 	    xb - xa <= (int64_t)RDC_DP_CHUNK) {
 		rows_text32(dp, x, y, xa, xb, ya, yb, rs);
+		return;
+	}
+	if (rs->kind == SRC_HOST && host_copy_ok(dp, rs->bpp)) {
+		host_rows_copy(dp, x, y, xa, xb, ya, yb, rs);
 		return;
 	}
 

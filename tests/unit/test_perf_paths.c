@@ -246,6 +246,56 @@ static void test_blits_match(void **state)
 	tp_assert_raced(p);
 }
 
+/*
+ * HOST_BLIT: random rectangles of random host words into random surfaces,
+ * with and without the colour key and global alpha, any ROP: the fast
+ * stores of a plain copy must charge and write as the staged pixels do.
+ */
+static void test_host_blits_match(void **state)
+{
+	struct tp_pair *p = *state;
+	uint32_t seed = 0x4057u, a[2 + 1200];
+	unsigned int round, i, k;
+
+	for (round = 0; round < TP_ROUNDS; round++) {
+		tp_random_dst(p, &seed, RDC_OP_SET_DST);
+		tp_random_state(p, &seed);
+		if (tdp_rand(&seed) % 4 == 0) {
+			uint32_t key = tdp_rand(&seed);
+
+			tp_cmd(p, RDC_OP_SET_COLORKEY, RDC_COLORKEY_ENABLE, 1,
+			       &key);
+		} else {
+			TP_CMD(p, RDC_OP_SET_COLORKEY, 0);
+		}
+		TP_CMD(p, RDC_OP_SET_ALPHA,
+		       tdp_rand(&seed) % 4 ?
+			       RDC_ALPHA_OPAQUE :
+			       (uint32_t)tdp_range(&seed, 0, 255));
+		/* the DST format the words are packed for, once it is set */
+		tdp_drain(p->c[0]);
+		tdp_drain(p->c[1]);
+		for (i = 0; i < TP_BATCH; i++) {
+			uint32_t fmt = p->c[0]->dp.st.dst.format;
+			uint32_t w = (uint32_t)tdp_range(&seed, 1, 120);
+			uint32_t wpr = (w * tdp_bpp(fmt) + 31) / 32;
+			uint32_t h = (uint32_t)tdp_range(&seed, 1, 40);
+
+			while (wpr * h > RDC_ARRAY_SIZE(a) - 2)
+				h--;
+			if (!h)
+				continue;
+			a[0] = tp_xy(&seed);
+			a[1] = RDC_WH(w, h);
+			for (k = 0; k < wpr * h; k++)
+				a[2 + k] = tdp_rand(&seed);
+			tp_cmd(p, RDC_OP_HOST_BLIT, 0, 2 + wpr * h, a);
+		}
+		tp_check(p);
+	}
+	tp_assert_raced(p);
+}
+
 static void test_glyphs_match(void **state)
 {
 	struct tp_pair *p = *state;
@@ -877,6 +927,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_lines_match, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_blits_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_host_blits_match, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_glyphs_match, tp_setup,
 						tp_teardown),
