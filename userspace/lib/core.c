@@ -734,14 +734,14 @@ int rdc_host_blit_encode(uint32_t fmt, int x, int y, uint32_t w, uint32_t h,
 				const uint8_t *row = src +
 						     (size_t)(py + r) * pitch +
 						     src_off;
-				uint8_t pad[4];
+				uint32_t whole = row_bytes / 4;
+				uint8_t pad[4] = { 0 };
 
-				for (uint32_t k = 0; k < row_words; k++) {
-					uint32_t nb =
-						RDC_MIN(4u, row_bytes - k * 4);
-
-					memset(pad, 0, sizeof(pad));
-					memcpy(pad, row + k * 4, nb);
+				for (uint32_t k = 0; k < whole; k++)
+					cmd[n++] = rdc_ld32(row + k * 4);
+				if (whole < row_words) {
+					memcpy(pad, row + whole * 4,
+					       row_bytes - whole * 4);
 					cmd[n++] = rdc_ld32(pad);
 				}
 			}
