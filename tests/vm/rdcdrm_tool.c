@@ -27,6 +27,9 @@
  *                                   arguments (REG_WRITE aside): each
  *                                   answers 0 or its errno; a mode set
  *                                   draws after
+ *   rdcdrm_tool stepped DEV         on the stepped clock: a mode set, a
+ *                                   damaged rectangle, a flip and a STEP;
+ *                                   print the counters and the frame's CRC
  *   rdcdrm_tool hold DEV            a mode set from a mapped dumb buffer;
  *                                   print "held", wait for a signal
  *   rdcdrm_tool unbind DEV PDEV     with DEV open and a dumb buffer mapped,
@@ -1060,6 +1063,51 @@ static int cmd_fuzz(const char *dev, unsigned int n)
 	return failures ? 1 : 0;
 }
 
+/* ---- stepped clock ------------------------------------------------------- */
+
+/*
+ * On the stepped clock: a mode set from a pattern, a damaged rectangle
+ * and a page flip, then STEP a million cycles; print the counters and the
+ * frame's CRC, which must come out the same on every load.
+ */
+static int cmd_stepped(const char *dev)
+{
+	int fd = open_dev(dev);
+	drmModeClip clip = { 8, 8, 40, 24 };
+	struct drm_rdc_step st = { .cycles = 1000000 };
+	struct drm_rdc_counters c;
+	struct drm_rdc_frame f;
+	struct pipe_info p;
+	struct dumb a, b;
+	uint32_t *px;
+
+	if (find_pipe(fd, &p, 640, 480) ||
+	    dumb_new(fd, &a, 640, 480, DRM_FORMAT_XRGB8888, 32) ||
+	    dumb_new(fd, &b, 640, 480, DRM_FORMAT_XRGB8888, 32))
+		return 1;
+	fill_xrgb(&a, 7, 0, 0, a.w, a.h);
+	fill_xrgb(&b, 8, 0, 0, b.w, b.h);
+	if (set_crtc(fd, &p, a.fb))
+		return 1;
+	fill_xrgb(&a, 9, 8, 8, 32, 16);
+	if (drmModeDirtyFB(fd, a.fb, &clip, 1) ||
+	    drmModeSetCrtc(fd, p.crtc, b.fb, 0, 0, &p.conn, 1, &p.mode) ||
+	    drmIoctl(fd, DRM_IOCTL_RDC_STEP, &st)) {
+		FAIL("stepped: %s\n", strerror(errno));
+		return 1;
+	}
+	counters(fd, &c);
+	px = get_frame(fd, &f);
+	free(px);
+	printf("now %llu frames %llu flips %llu damage %llu busy %llu crc %08x\n",
+	       (unsigned long long)c.now, (unsigned long long)c.frames,
+	       (unsigned long long)c.flips,
+	       (unsigned long long)c.damage_cycles,
+	       (unsigned long long)c.busy, f.crc32);
+	close(fd);
+	return failures ? 1 : 0;
+}
+
 /* ---- hold and unbind ----------------------------------------------------- */
 
 static volatile sig_atomic_t stop;
@@ -1137,6 +1185,8 @@ int main(int argc, char **argv)
 		return cmd_cursor(argv[2]);
 	if (argc == 4 && !strcmp(argv[1], "crc"))
 		return cmd_crc(argv[2], argv[3]);
+	if (argc == 3 && !strcmp(argv[1], "stepped"))
+		return cmd_stepped(argv[2]);
 	if (argc == 4 && !strcmp(argv[1], "fuzz"))
 		return cmd_fuzz(argv[2], strtoul(argv[3], NULL, 0));
 	if (argc == 3 && !strcmp(argv[1], "hold"))
@@ -1144,6 +1194,6 @@ int main(int argc, char **argv)
 	if (argc == 4 && !strcmp(argv[1], "unbind"))
 		return cmd_unbind(argv[2], argv[3]);
 	fprintf(stderr, "usage: rdcdrm_tool frame|kms|formats|cursor|crc|"
-			"fuzz|hold|unbind DEV [...]\n");
+			"fuzz|stepped|hold|unbind DEV [...]\n");
 	return 2;
 }
