@@ -40,12 +40,36 @@ wait_for() {
 
 # /run is the host's, read-only: seatd and the compositors get a tmpfs.
 # Shared memory (POSIX shm, as grim's buffers) needs /dev/shm, which the
-# guest's devtmpfs lacks.
+# guest's devtmpfs lacks.  X servers (Xorg, cage's Xwayland) put their
+# lock files and sockets in /tmp, which is the host's, read-only, when
+# the tree lives under /tmp (the tests' scratch is /run then): a
+# writable overlay goes over it, the tree still showing through.
+DESKTOP_MOUNTS=""
 desktop_run_tmpfs() {
-	mountpoint -q /run/rdc-desktop 2>/dev/null && return 0
-	mount -t tmpfs run /run
-	mkdir -p /run/rdc-desktop /dev/shm
-	mountpoint -q /dev/shm || mount -t tmpfs -o mode=1777 shm /dev/shm
+	if [ "$T" = /run ]; then
+		mkdir -p /run/rdc-tmp-upper /run/rdc-tmp-work
+		chmod 1777 /run/rdc-tmp-upper
+		if mount -t overlay overlay -o lowerdir=/tmp,upperdir=/run/rdc-tmp-upper,workdir=/run/rdc-tmp-work /tmp; then
+			DESKTOP_MOUNTS="/tmp $DESKTOP_MOUNTS"
+		else
+			echo "# /tmp stays read-only: X servers may not start"
+		fi
+	else
+		mount -t tmpfs run /run && DESKTOP_MOUNTS="/run $DESKTOP_MOUNTS"
+	fi
+	mkdir -p /dev/shm
+	if ! mountpoint -q /dev/shm; then
+		mount -t tmpfs -o mode=1777 shm /dev/shm &&
+			DESKTOP_MOUNTS="/dev/shm $DESKTOP_MOUNTS"
+	fi
+}
+
+# What desktop_run_tmpfs mounted goes, for the tests after this one.
+desktop_cleanup() {
+	for m in $DESKTOP_MOUNTS; do
+		umount "$m" || umount -l "$m"
+	done
+	DESKTOP_MOUNTS=""
 }
 
 # Weston on the card, pixman renderer, direct launcher on a VT, the

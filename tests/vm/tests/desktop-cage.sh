@@ -6,6 +6,7 @@
 # screencopy) equals the chip's scanned-out frame pixel for pixel, and
 # cage exits cleanly, after which rdcdrm unloads.
 # vm-module: rdcdrm
+# vm-module: overlay
 . "$RDC_TREE/tests/vm/lib.sh"
 . "$RDC_TREE/tests/vm/desktop.sh"
 
@@ -21,4 +22,5 @@ check "cage exits cleanly with its client" desktop_stop weston-flower
 seatd_stop
 check "rdcdrm unloads afterwards" rmmod rdcdrm
 [ $failed -eq 0 ] || desktop_logs
+desktop_cleanup
 finish

@@ -9,6 +9,7 @@
 # screen's centre) and shows in red in the frame, and the server exits
 # cleanly, after which rdcdrm unloads.
 # vm-module: rdcdrm
+# vm-module: overlay
 . "$RDC_TREE/tests/vm/lib.sh"
 . "$RDC_TREE/tests/vm/desktop.sh"
 
@@ -44,4 +45,5 @@ kill $CLIENT 2>/dev/null
 check "Xorg exits cleanly" desktop_stop
 check "rdcdrm unloads afterwards" rmmod rdcdrm
 [ $failed -eq 0 ] || desktop_logs
+desktop_cleanup
 finish
