@@ -786,11 +786,15 @@ static void rdc_scanout(const struct bench_input *in, struct rdc_res *res)
  * drawing runs without the CRTC's reads of VRAM (and their bus stalls).
  * scan true: the frames the CRTC completes during the drawing are counted
  * (the frame listener), and the frame after it is the one whose CRC the
- * limit with scanout must reproduce.
+ * limit with scanout must reproduce.  lazy (with scan): scanout on with
+ * no frame consumer (scanout on demand, hw-sim/rdc_chip.h): the same bus
+ * and cycles, no frame converted; the frames are counted by FRAME_COUNT,
+ * and the frame after the drawing is taken with a consumer attached.
  */
 static void rdc_run(const struct bench_input *in, struct rdc_res *res,
-		    bool scan)
+		    bool scan, bool lazy)
 {
+	uint32_t fc0 = 0, fc1 = 0;
 	struct rdc_stats st0 = { 0 }, st1 = { 0 };
 	struct frames f = { 0 };
 	struct rdc_hw *hw;
@@ -809,6 +813,8 @@ static void rdc_run(const struct bench_input *in, struct rdc_res *res,
 		die("sim hw", RDC_E_NOSYS);
 	if (!scan)
 		scanout_off(r.dev);
+	if (lazy)
+		rdc_hw_set_on_demand(hw, true);
 	if (in->prefill) {
 		rdc_fills(&r, in->prefill, BENCH_FILL_OPS);
 		if (in->kind == BENCH_BLIT_XOR)
@@ -816,23 +822,31 @@ static void rdc_run(const struct bench_input *in, struct rdc_res *res,
 		run_finish(&r);
 	}
 	rdc_stats_get(r.dev, &st0);
-	if (scan)
+	if (scan && !lazy)
 		rdc_hw_set_frame_fn(hw, frames_fn, &f);
+	if (lazy && rdc_reg_read(r.dev, RDC_REG_FRAME_COUNT, &fc0))
+		die("frame count", RDC_E_IO);
 	rdc_sim_time(r.dev, &c0);
 	t0 = bench_tic();
 	rdc_draw(&r, in);
 	run_finish(&r);
 	res->wall = bench_toc(t0);
 	rdc_sim_time(r.dev, &c1);
+	if (lazy && rdc_reg_read(r.dev, RDC_REG_FRAME_COUNT, &fc1))
+		die("frame count", RDC_E_IO);
 	rdc_hw_set_frame_fn(hw, NULL, NULL);
 	rdc_stats_get(r.dev, &st1);
 	res->cycles = c1 - c0;
 	res->sim_pixels = st1.pixels - st0.pixels;
-	res->frames = f.seen;
+	res->frames = lazy ? fc1 - fc0 : f.seen;
 	res->frame_crc = 0;
+	if (lazy)
+		rdc_hw_consumer_attach(hw);
 	if (scan &&
 	    (rdc_frame_wait(r.dev) || rdc_frame_crc(r.dev, &res->frame_crc)))
 		die("frame crc", RDC_E_IO);
+	if (lazy)
+		rdc_hw_consumer_detach(hw);
 	res->crc = run_crc(&r);
 	run_close(&r);
 }
@@ -845,6 +859,7 @@ static void rdc_run(const struct bench_input *in, struct rdc_res *res,
  */
 struct rt_res {
 	double wall;
+	double cpu; /* CPU seconds of the drawing thread over the same span */
 	uint64_t frames, drawn, cycles;
 	uint32_t crc;
 	uint32_t khz; /* teapot3d: the core clock */
@@ -947,46 +962,72 @@ static void rdc_teapot3d(struct rt_res *res)
 	run_close(&r);
 }
 
-static void rdc_realtime(struct rt_res *res, const struct rt_mode *m)
+/* Frames the chip completed: FRAME_COUNT, for a run without a listener. */
+static uint64_t rt_frame_count(rdc_dev *dev)
+{
+	uint32_t fc;
+
+	if (rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &fc))
+		die("frame count", RDC_E_IO);
+	return fc;
+}
+
+/*
+ * lazy: the same drawing and time with no frame consumer at all (no
+ * sink, no listener; scanout on demand): the bus is charged the same, no
+ * frame is converted.  The frames are counted by FRAME_COUNT.
+ */
+static void rdc_realtime(struct rt_res *res, const struct rt_mode *m,
+			 bool lazy)
 {
 	struct frames f = { 0 };
 	struct rng g = { BENCH_SEED };
 	struct rdc_hw *hw;
 	struct run r;
-	uint64_t c0, c1, f0;
+	uint64_t c0, c1, f0, seen;
 	double t0;
 	int err;
 
 	run_open(&r, m->preset, RDC_FMT_XRGB8888, (size_t)m->w * m->h * 4);
 	if (rdc_frame_wait(r.dev))
 		die("frame wait", RDC_E_TIMEOUT);
-	err = rdc_sink_open(RT_SINK, &f.sink);
-	if (err)
-		die("sink", err);
-	if (rdc_sink_interval(r.dev, &f.num, &f.den))
-		f.num = f.den = 0;
 	hw = rdc_sim_hw(r.dev);
 	if (!hw)
 		die("sim hw", RDC_E_NOSYS);
-	rdc_hw_set_frame_fn(hw, frames_fn, &f);
+	if (lazy) {
+		rdc_hw_set_on_demand(hw, true);
+	} else {
+		err = rdc_sink_open(RT_SINK, &f.sink);
+		if (err)
+			die("sink", err);
+		if (rdc_sink_interval(r.dev, &f.num, &f.den))
+			f.num = f.den = 0;
+		rdc_hw_set_frame_fn(hw, frames_fn, &f);
+	}
 	res->drawn = 0;
 	rdc_sim_time(r.dev, &c0);
-	f0 = f.seen;
+	f0 = lazy ? rt_frame_count(r.dev) : f.seen;
 	t0 = bench_now();
+	res->cpu = cpu_now();
 	do {
 		rt_frame(&r, &g, m);
 		res->drawn++;
 		if (rdc_vblank_wait(r.dev))
 			die("vblank", RDC_E_TIMEOUT);
 		res->wall = bench_now() - t0;
-	} while (f.seen - f0 < m->frames && res->wall < RT_MAX_S);
+		seen = lazy ? rt_frame_count(r.dev) : f.seen;
+	} while (seen - f0 < m->frames && res->wall < RT_MAX_S);
+	res->cpu = cpu_now() - res->cpu;
 	rdc_sim_time(r.dev, &c1);
-	res->frames = f.seen - f0;
+	res->frames = seen - f0;
 	res->cycles = c1 - c0;
 	rdc_hw_set_frame_fn(hw, NULL, NULL);
+	if (lazy)
+		rdc_hw_set_on_demand(hw, false); /* the CRC's frame: kept */
 	if (rdc_frame_crc(r.dev, &res->crc))
 		res->crc = 0;
-	rdc_sink_close(f.sink);
+	if (f.sink)
+		rdc_sink_close(f.sink);
 	run_close(&r);
 }
 
@@ -1277,6 +1318,7 @@ static void figure_init(struct figure *f, const char *name,
 struct rdc_ctx {
 	const struct bench_input *in;
 	bool scan; /* scanout on */
+	bool lazy; /* and no frame consumer */
 	uint64_t cycles, sim_pixels, frames;
 	uint32_t frame_crc;
 	bool cycles_differ; /* a run's simulated time was not the first's */
@@ -1288,7 +1330,7 @@ static double rdc_one(void *ctx, uint32_t ops, uint32_t *crc)
 	struct rdc_res res = { 0 };
 
 	(void)ops; /* always all of it */
-	rdc_run(c->in, &res, c->scan);
+	rdc_run(c->in, &res, c->scan, c->lazy);
 	*crc = res.crc;
 	if (c->cycles && (c->cycles != res.cycles || c->frames != res.frames ||
 			  c->frame_crc != res.frame_crc))
@@ -1421,6 +1463,14 @@ struct result {
 	enum bench_kind kind;
 	uint64_t ops, pixels;
 	struct figure rdc, rdc_off;
+	struct figure rdc_lazy; /* scanout on, no frame consumer */
+	uint64_t lazy_cycles, lazy_frames;
+	uint32_t lazy_frame_crc;
+	bool lazy_ok; /* its cycles, frames, CRC and frame as rdc's */
+	double fps_lazy; /* realtime with no frame consumer */
+	/* realtime: frames a CPU second of the drawing thread, with its
+	 * sink and with no consumer (what the ratio compares) */
+	double cpu_fps, cpu_fps_lazy;
 	struct figure lim[MAX_LIMITS];
 	struct figure lim_scan[MAX_LIMITS];
 	struct figure peer[NPEERS + 1];
@@ -1533,6 +1583,26 @@ static void print_target(const struct way *w)
 	printf(",\"met\":%s", w->met ? "true" : "false");
 }
 
+/*
+ * Scanout on with no frame consumer (bench/README.md, "Scanout on
+ * demand"): its figures, and its CPU time over scanout off's and over
+ * scanout on's with a consumer.
+ */
+static void print_lazy(const struct result *res)
+{
+	const struct figure *f = &res->rdc_lazy;
+
+	printf(",\"scanout_no_consumer\":{\"wall_s\":%.6f,\"cpu_s\":%.6f,"
+	       "\"runs\":%d,\"sim_cycles\":%llu,\"frames_scanned\":%llu,"
+	       "\"frame_crc32\":\"%08x\",\"crc32\":\"%08x\",\"same_as_on\":%s,"
+	       "\"cpu_vs_off\":%.3f,\"cpu_vs_on\":%.3f}",
+	       f->wall, f->cpu, f->runs, (unsigned long long)res->lazy_cycles,
+	       (unsigned long long)res->lazy_frames, res->lazy_frame_crc,
+	       f->crc, res->lazy_ok ? "true" : "false",
+	       res->rdc_off.cpu > 0 ? f->cpu / res->rdc_off.cpu : 0,
+	       res->rdc.cpu > 0 ? f->cpu / res->rdc.cpu : 0);
+}
+
 static void print_json(const struct result *res)
 {
 	const struct figure *f = &res->rdc;
@@ -1595,7 +1665,13 @@ static void print_json(const struct result *res)
 			       res->off.cycles_ok ? "true" : "false");
 		print_target(&res->off);
 		printf("}");
+		print_lazy(res);
 	}
+	if (realtime(res->kind))
+		printf(",\"fps_no_consumer\":%.1f,\"cpu_fps\":%.1f,"
+		       "\"cpu_fps_no_consumer\":%.1f,\"no_consumer_vs_sink\":%.3f",
+		       res->fps_lazy, res->cpu_fps, res->cpu_fps_lazy,
+		       res->cpu_fps > 0 ? res->cpu_fps_lazy / res->cpu_fps : 0);
 	printf("}\n");
 	fflush(stdout);
 }
@@ -1654,6 +1730,45 @@ static void print_row(const struct result *r, const struct way *w,
 	       f->slow ? " *" : "");
 }
 
+/*
+ * Scanout on demand: each drawing workload's CPU time with scanout on and
+ * a frame consumer, on and none, and off; the realtime ones' frames a
+ * second with their sink and with none.
+ */
+static void print_lazy_table(const struct result *res, size_t n)
+{
+	size_t i, rows = 0;
+
+	for (i = 0; i < n; i++)
+		rows += realtime(res[i].kind) || res[i].rdc_lazy.done;
+	if (!rows)
+		return;
+	printf("\n%-12s %12s %12s %9s %12s %12s\n", "workload",
+	       "on+consumer", "on, none", "off", "none/off", "consumer/off");
+	for (i = 0; i < n; i++) {
+		const struct result *r = &res[i];
+
+		if (realtime(r->kind)) {
+			printf("%-12s %8.0f fps %8.0f fps %9s %12s %12s  "
+			       "(frames a CPU second: %.0f, %.0f; none/sink "
+			       "%.3f)\n",
+			       kind_name[r->kind], r->fps, r->fps_lazy, "-", "-",
+			       "-", r->cpu_fps, r->cpu_fps_lazy,
+			       r->cpu_fps > 0 ? r->cpu_fps_lazy / r->cpu_fps : 0);
+			continue;
+		}
+		if (!drawing(r->kind) || !r->rdc_lazy.done)
+			continue;
+		printf("%-12s %10.3f s %10.3f s %7.3f s %12.3f %12.3f%s\n",
+		       kind_name[r->kind], r->rdc.cpu, r->rdc_lazy.cpu,
+		       r->rdc_off.cpu,
+		       r->rdc_off.cpu > 0 ? r->rdc_lazy.cpu / r->rdc_off.cpu :
+					    0,
+		       r->rdc_off.cpu > 0 ? r->rdc.cpu / r->rdc_off.cpu : 0,
+		       r->lazy_ok ? "" : "  MISMATCH");
+	}
+}
+
 static void print_table(const struct result *res, size_t n, bool peers_on)
 {
 	char buf[64];
@@ -1678,12 +1793,14 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 	       "drawn");
 	for (i = 0; i < n; i++) {
 		const struct result *r = &res[i];
-		const struct figure *all[2 + 2 * MAX_LIMITS + 2 * NPEERS];
+		const struct figure *all[3 + 2 * MAX_LIMITS + 2 * NPEERS];
 		size_t m = 0;
 
 		all[m++] = &r->rdc;
 		if (r->rdc_off.done)
 			all[m++] = &r->rdc_off;
+		if (r->rdc_lazy.done)
+			all[m++] = &r->rdc_lazy;
 		for (k = 0; k < MAX_LIMITS; k++)
 			if (r->lim[k].done)
 				all[m++] = &r->lim[k];
@@ -1744,6 +1861,12 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 					 "all, %llu frames %08x",
 					 (unsigned long long)r->frames,
 					 r->frame_crc);
+			else if (f == &r->rdc_lazy)
+				snprintf(drawn, sizeof(drawn),
+					 "all, %llu frames unseen, %08x %s",
+					 (unsigned long long)r->lazy_frames,
+					 r->lazy_frame_crc,
+					 r->lazy_ok ? "OK" : "MISMATCH");
 			else
 				snprintf(drawn, sizeof(drawn), "all");
 			printf("%-12s %-12s %9.1f %9.3f %9.1f %9.3f %-17s "
@@ -1754,6 +1877,7 @@ static void print_table(const struct result *res, size_t n, bool peers_on)
 			       drawn);
 		}
 	}
+	print_lazy_table(res, n);
 	if (slow)
 		printf("\n* first run took over %.0f s: measured once, not the "
 		       "median of %s (--full repeats it anyway)\n",
@@ -1835,19 +1959,30 @@ static void way_compare(struct result *res, struct way *w,
 static void run_rt(struct result *res, enum bench_kind kind,
 		   const struct opts *o)
 {
-	double fps[MAX_REPEAT];
-	struct rt_res rt = { 0 };
+	double fps[MAX_REPEAT], fps_lazy[MAX_REPEAT];
+	double cfps[MAX_REPEAT], cfps_lazy[MAX_REPEAT];
+	struct rt_res rt = { 0 }, rt_lazy = { 0 };
 	int runs;
 
+	/* realtime: with its sink and with no frame consumer, by turns */
 	for (runs = 0; runs < o->repeat; runs++) {
 		if (kind == BENCH_TEAPOT3D) {
 			rdc_teapot3d(&rt);
 		} else {
-			rdc_realtime(&rt, rt_mode_of(kind));
+			rdc_realtime(&rt_lazy, rt_mode_of(kind), true);
+			fps_lazy[runs] = (double)rt_lazy.frames / rt_lazy.wall;
+			cfps_lazy[runs] = (double)rt_lazy.frames / rt_lazy.cpu;
+			rdc_realtime(&rt, rt_mode_of(kind), false);
+			cfps[runs] = (double)rt.frames / rt.cpu;
 		}
 		fps[runs] = (double)rt.frames / rt.wall;
 	}
 	res->fps = median(fps, runs);
+	if (kind != BENCH_TEAPOT3D) {
+		res->fps_lazy = median(fps_lazy, runs);
+		res->cpu_fps = median(cfps, runs);
+		res->cpu_fps_lazy = median(cfps_lazy, runs);
+	}
 	res->ops = rt.frames;
 	res->rt_drawn = rt.drawn;
 	if (kind == BENCH_TEAPOT3D) {
@@ -1875,13 +2010,13 @@ static void run_rt(struct result *res, enum bench_kind kind,
 static void run_kind(struct result *res, enum bench_kind kind,
 		     const struct opts *o)
 {
-	struct entrant e[2 + 2 * MAX_LIMITS + 2 * NPEERS];
+	struct entrant e[3 + 2 * MAX_LIMITS + 2 * NPEERS];
 	struct limit_ctx lc[MAX_LIMITS], ls[MAX_LIMITS];
 	struct peer_ctx pc[NPEERS + 1];
 	struct peer_scan_ctx psc[NPEERS + 1];
 	static char scan_name[NPEERS + 1][48];
 	struct bench_input in;
-	struct rdc_ctx rc, rc_off;
+	struct rdc_ctx rc, rc_off, rc_lazy;
 	size_t k, n = 0;
 
 	memset(res, 0, sizeof(*res));
@@ -1901,6 +2036,7 @@ static void run_kind(struct result *res, enum bench_kind kind,
 	rc.in = &in;
 	rc.scan = true;
 	rc_off = (struct rdc_ctx){ .in = &in };
+	rc_lazy = (struct rdc_ctx){ .in = &in, .scan = true, .lazy = true };
 	figure_init(&res->rdc, "rdc", &in, in.ops);
 	e[n++] = (struct entrant){ .fig = &res->rdc,
 				   .one = rdc_one,
@@ -1910,6 +2046,10 @@ static void run_kind(struct result *res, enum bench_kind kind,
 		e[n++] = (struct entrant){ .fig = &res->rdc_off,
 					   .one = rdc_one,
 					   .ctx = &rc_off };
+		figure_init(&res->rdc_lazy, "rdc-lazy", &in, in.ops);
+		e[n++] = (struct entrant){ .fig = &res->rdc_lazy,
+					   .one = rdc_one,
+					   .ctx = &rc_lazy };
 	}
 	for (k = 0; k < MAX_LIMITS && limits[kind][k].name; k++) {
 		lc[k] = (struct limit_ctx){ .in = &in,
@@ -1983,6 +2123,15 @@ static void run_kind(struct result *res, enum bench_kind kind,
 			(rc_off.cycles == expect_cycles_off[kind] &&
 			 !rc_off.cycles_differ);
 		way_compare(res, &res->off, res->lim, false);
+		res->lazy_cycles = rc_lazy.cycles;
+		res->lazy_frames = rc_lazy.frames;
+		res->lazy_frame_crc = rc_lazy.frame_crc;
+		res->lazy_ok = res->rdc_lazy.done && !rc_lazy.cycles_differ &&
+			       rc_lazy.cycles == rc.cycles &&
+			       rc_lazy.frames == rc.frames &&
+			       rc_lazy.frame_crc == rc.frame_crc &&
+			       res->rdc_lazy.crc == res->rdc.crc &&
+			       res->rdc_lazy.crc_same;
 		if (!expect_crc[kind] && res->rdc_off.crc != res->rdc.crc)
 			fprintf(stderr,
 				"rdc-bench: %s: scanout off drew %08x, on "
@@ -1990,7 +2139,7 @@ static void run_kind(struct result *res, enum bench_kind kind,
 				kind_name[kind], res->rdc_off.crc,
 				res->rdc.crc);
 	}
-	if (rc.cycles_differ || rc_off.cycles_differ)
+	if (rc.cycles_differ || rc_off.cycles_differ || rc_lazy.cycles_differ)
 		fprintf(stderr,
 			"rdc-bench: %s: sim_cycles differ between "
 			"runs\n",
@@ -2036,6 +2185,19 @@ static int check_failures(const struct result *res, size_t n)
 				"rdc-bench: %s: scanout off drew %08x, on "
 				"%08x\n",
 				name, r->rdc_off.crc, r->rdc.crc);
+			bad++;
+		}
+		if (drawing(r->kind) && !r->lazy_ok) {
+			fprintf(stderr,
+				"rdc-bench: %s: with no frame consumer: cycles "
+				"%llu, frames %llu, frame %08x, CRC %08x; with "
+				"one %llu, %llu, %08x, %08x\n",
+				name, (unsigned long long)r->lazy_cycles,
+				(unsigned long long)r->lazy_frames,
+				r->lazy_frame_crc, r->rdc_lazy.crc,
+				(unsigned long long)r->on.cycles,
+				(unsigned long long)r->frames, r->frame_crc,
+				r->rdc.crc);
 			bad++;
 		}
 		if (byte_moving(r->kind) && drawing(r->kind) &&
