@@ -359,7 +359,8 @@ static void check_vblank(int fd)
 	       first, last, last - first, (unsigned long long)c0.frames,
 	       (unsigned long long)c1.frames, vb.reply.tval_sec,
 	       vb.reply.tval_usec);
-	if (last - first != VBLANKS)
+	/* a loaded host may come back after the next vblank: more, not less */
+	if (last - first < VBLANKS)
 		FAIL("%u vblanks in %u waits\n", last - first, VBLANKS);
 	/* the counters are read just after the vblank each wait ended at */
 	if (c1.frames - c0.frames != last - first)
