@@ -1371,6 +1371,276 @@ static void test_web_doc(void **state)
 	free(web);
 }
 
+/* ---- Documented sessions: "$ command" and its output ------------------- */
+
+#define SESSION_MAX_LINES 256
+#define SESSION_MARK	  "@@rdc-doc-session@@"
+
+/* A growing string. */
+struct sbuf {
+	char *s;
+	size_t n, cap;
+};
+
+static void sb_add(struct sbuf *b, const char *s, size_t n)
+{
+	if (b->n + n + 1 > b->cap) {
+		b->cap = (b->n + n + 1) * 2;
+		b->s = realloc(b->s, b->cap);
+		assert_non_null(b->s);
+	}
+	memcpy(b->s + b->n, s, n);
+	b->n += n;
+	b->s[b->n] = 0;
+}
+
+static void sb_line(struct sbuf *b, const char *s)
+{
+	sb_add(b, s, strlen(s));
+	sb_add(b, "\n", 1);
+}
+
+/* The lines of `text` (modified in place) into v; their count. */
+static size_t split_lines(char *text, char **v, size_t cap)
+{
+	size_t n = 0;
+
+	for (char *p = text; *p && n < cap;) {
+		char *nl = strchr(p, '\n');
+
+		v[n++] = p;
+		if (!nl)
+			break;
+		*nl = 0;
+		p = nl + 1;
+	}
+	return n;
+}
+
+/* A line of "..." alone (indented or not) stands for any lines. */
+static bool is_dots(const char *line)
+{
+	return !strcmp(line + strspn(line, " "), "...");
+}
+
+/*
+ * Does `got` (n lines) show as `want` (m lines)?  A "..." line in want
+ * stands for any lines, none included.
+ */
+static bool lines_match(char **got, size_t n, char **want, size_t m)
+{
+	size_t k;
+
+	for (k = 0; k < m && !is_dots(want[k]); k++)
+		if (k >= n || strcmp(got[k], want[k]))
+			return false;
+	if (k == m)
+		return n == m;
+	/* the lines after "..." are the last ones */
+	if (n < m - 1)
+		return false;
+	for (size_t j = k + 1; j < m; j++)
+		if (strcmp(got[n - (m - j)], want[j]))
+			return false;
+	return true;
+}
+
+/*
+ * Run one session (the lines of a ``` block from a "$ " line on) in a
+ * scratch directory where build/rel is this build and examples/ the
+ * tree's, the commands in one shell; each command's output, stdout and
+ * stderr, against the lines after it.  With `regen`, *out gets the
+ * block as the commands print it ("..." kept where it was, standing for
+ * the same number of lines from the end).  false if one differs.
+ */
+static bool run_session(char **blk, size_t nb, struct sbuf *out, char *why,
+			size_t whycap)
+{
+	char dir[] = "/tmp/rdc-session-XXXXXX", cmd[PATH_MAX + 1200];
+	char root[PATH_MAX];
+	static char got[1 << 20];
+	char *gl[SESSION_MAX_LINES * 4];
+	struct sbuf sh = { 0 };
+	size_t ng, n, g = 0, i = 0;
+	bool ok = true;
+	FILE *p;
+
+	assert_non_null(getcwd(root, sizeof(root)));
+	assert_non_null(mkdtemp(dir));
+	snprintf(cmd, sizeof(cmd),
+		 "mkdir %s/build && ln -s %s %s/build/rel && "
+		 "ln -s %s/examples %s/examples",
+		 dir, bindir, dir, root, dir);
+	assert_int_equal(sh_status(cmd), 0);
+	sb_line(&sh, "exec 2>&1");
+	snprintf(cmd, sizeof(cmd), "cd %s || exit 1", dir);
+	sb_line(&sh, cmd);
+	for (size_t k = 0; k < nb; k++) {
+		if (strncmp(blk[k], "$ ", 2))
+			continue;
+		sb_line(&sh, blk[k] + 2);
+		/* what runs in the background is stopped at the end */
+		sb_line(&sh, "[ -z \"$!\" ] || bgs=\"$bgs $!\"");
+		sb_line(&sh, "echo " SESSION_MARK);
+	}
+	sb_line(&sh, "for p in $bgs; do kill $p 2>/dev/null; done; wait");
+	snprintf(cmd, sizeof(cmd), "%s/session.sh", dir);
+	p = fopen(cmd, "w");
+	assert_non_null(p);
+	fputs(sh.s, p);
+	assert_int_equal(fclose(p), 0);
+	snprintf(cmd, sizeof(cmd), "timeout 120 sh %s/session.sh", dir);
+	p = popen(cmd, "r");
+	assert_non_null(p);
+	n = fread(got, 1, sizeof(got) - 1, p);
+	got[n] = 0;
+	pclose(p);
+	ng = split_lines(got, gl, sizeof(gl) / sizeof(gl[0]));
+	/* this build's own noise (the sanitizers' notes), not the program's */
+	for (size_t k = 0; k < ng;) {
+		if (!strncmp(gl[k], "==", 2) && strstr(gl[k], "==WARNING: ")) {
+			memmove(gl + k, gl + k + 1, (ng - k - 1) * sizeof(*gl));
+			ng--;
+		} else {
+			k++;
+		}
+	}
+
+	while (i < nb) {
+		size_t w0, wn, g0;
+
+		if (strncmp(blk[i], "$ ", 2)) {
+			i++;
+			continue;
+		}
+		sb_line(out, blk[i]);
+		w0 = ++i;
+		while (i < nb && strncmp(blk[i], "$ ", 2))
+			i++;
+		wn = i - w0;
+		g0 = g;
+		while (g < ng && strcmp(gl[g], SESSION_MARK))
+			g++;
+		if (g == ng) {
+			snprintf(why, whycap, "'%s' did not finish",
+				 blk[w0 - 1]);
+			ok = false;
+			break;
+		}
+		if (!lines_match(gl + g0, g - g0, blk + w0, wn)) {
+			if (ok)
+				snprintf(
+					why, whycap,
+					"'%s' prints\n%.*s\nnot as documented",
+					blk[w0 - 1],
+					(int)(g > g0 ?
+						      gl[g - 1] +
+							      strlen(gl[g - 1]) -
+							      gl[g0] :
+						      0),
+					g > g0 ? gl[g0] : "");
+			ok = false;
+		}
+		/* what the block becomes */
+		{
+			size_t dots = wn, after = 0;
+
+			for (size_t k = 0; k < wn; k++)
+				if (is_dots(blk[w0 + k])) {
+					dots = k;
+					after = wn - k - 1;
+				}
+			if (dots == wn || g - g0 <= dots + after) {
+				for (size_t k = g0; k < g; k++)
+					sb_line(out, gl[k]);
+			} else {
+				for (size_t k = 0; k < dots; k++)
+					sb_line(out, gl[g0 + k]);
+				sb_line(out, blk[w0 + dots]);
+				for (size_t k = g - after; k < g; k++)
+					sb_line(out, gl[k]);
+			}
+		}
+		g++;
+	}
+	free(sh.s);
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", dir);
+	assert_int_equal(sh_status(cmd), 0);
+	return ok;
+}
+
+/*
+ * Every ``` block of README.md and docs/history.md that starts with a
+ * "$ " line is a session whose output is the code's: run as written (on
+ * this build), each command prints what the document shows.
+ * RDC_DOCS_REGEN=1 rewrites the documents with what they print.  Also,
+ * the scene history.md lists is examples/scene.rdl.
+ */
+static void test_doc_sessions(void **state)
+{
+	static const char *const docs[] = { "README.md", "docs/history.md" };
+	bool regen = getenv("RDC_DOCS_REGEN") != NULL;
+	static char why[8192];
+	int sessions = 0;
+
+	(void)state;
+	for (size_t d = 0; d < sizeof(docs) / sizeof(docs[0]); d++) {
+		char *text = slurp(docs[d]);
+		struct sbuf out = { 0 };
+		const char *p = text, *q;
+		bool changed = false;
+
+		while ((q = strstr(p, "```\n$ "))) {
+			const char *b = q + 4, *e = strstr(b, "```\n");
+			char *blk_text, *blk[SESSION_MAX_LINES];
+			struct sbuf nb = { 0 };
+			size_t n;
+
+			assert_non_null(e);
+			sb_add(&out, p, (size_t)(b - p));
+			blk_text = strndup(b, (size_t)(e - b));
+			assert_non_null(blk_text);
+			if (*blk_text && blk_text[strlen(blk_text) - 1] == '\n')
+				blk_text[strlen(blk_text) - 1] = 0;
+			n = split_lines(blk_text, blk, SESSION_MAX_LINES);
+			why[0] = 0;
+			if (!run_session(blk, n, &nb, why, sizeof(why))) {
+				if (!regen)
+					fail_msg("%s: %s (RDC_DOCS_REGEN=1 "
+						 "rewrites it)",
+						 docs[d], why);
+				changed = true;
+				print_message("%s: rewrote: %s\n", docs[d],
+					      why);
+			}
+			sb_add(&out, nb.s ? nb.s : "", nb.n);
+			free(nb.s);
+			free(blk_text);
+			p = e;
+			sessions++;
+		}
+		sb_add(&out, p, strlen(p));
+		if (changed) {
+			FILE *f = fopen(docs[d], "w");
+
+			assert_non_null(f);
+			fputs(out.s, f);
+			assert_int_equal(fclose(f), 0);
+		}
+		if (d == 1) {
+			char *scene = slurp("examples/scene.rdl");
+
+			if (!strstr(text, scene))
+				fail_msg("docs/history.md does not list "
+					 "examples/scene.rdl as it is");
+			free(scene);
+		}
+		free(out.s);
+		free(text);
+	}
+	assert_true(sessions >= 6);
+}
+
 /* ---- make bench BENCH_ARGS=... (bench/README.md) ----------------------- */
 
 /*
@@ -1443,6 +1713,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_vcd_regen),
 		cmocka_unit_test(test_bench_args),
 		cmocka_unit_test(test_web_doc),
+		cmocka_unit_test(test_doc_sessions),
 	};
 	char self[PATH_MAX], abs[PATH_MAX];
 

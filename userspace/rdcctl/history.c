@@ -188,7 +188,8 @@ struct frames {
 	uint32_t *crc;
 	uint64_t *time;
 	size_t n, cap;
-	int lost; /* out of memory or over FRAMES_MAX: not compared */
+	int lost;     /* out of memory or over FRAMES_MAX: not compared */
+	uint64_t end; /* when the script's last statement ended, as run's */
 };
 
 static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
@@ -230,7 +231,8 @@ static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 	f->n++;
 }
 
-static int run_file(rdc_dev *dev, const char *path)
+/* *end (may be NULL): the time the last statement ended, run's "total". */
+static int run_file(rdc_dev *dev, const char *path, uint64_t *end)
 {
 	struct rdc_script_result *res = calloc(1, sizeof(*res));
 	int ret;
@@ -240,6 +242,8 @@ static int run_file(rdc_dev *dev, const char *path)
 	ret = rdc_script_run_file(dev, path, res);
 	if (ret)
 		rdcctl_script_error(path, ret, res);
+	if (end)
+		rdc_sim_time(dev, end);
 	if (!ret)
 		ret = rdc_script_frame_wait(dev, res);
 	free(res);
@@ -334,7 +338,7 @@ static int open_run(const char *uri, const char *path, const uint32_t *spec,
 		if (fr->hw)
 			rdc_hw_set_frame_fn(fr->hw, on_frame, fr);
 	}
-	*ret_run = run_file(*dev, path);
+	*ret_run = run_file(*dev, path, fr ? &fr->end : NULL);
 	if (fr && fr->hw)
 		rdc_hw_set_frame_fn(fr->hw, NULL, NULL);
 	if (*ret_run && *ret_run != RDC_E_DEVICE && *ret_run != RDC_E_HALTED) {
@@ -424,7 +428,12 @@ static int side_run(const char *uri, struct side *s)
 	}
 	for (size_t i = 0; i < s->n; i++)
 		rdc_history_write_get(h, i, &s->w[i]);
-	rdc_sim_time(dev, &s->time);
+	/* as run's and replay's "total": a script's until its last
+	 * statement ended, before the wait for its frame */
+	if (s->trace)
+		rdc_sim_time(dev, &s->time);
+	else
+		s->time = s->fr.end;
 	ret = rdc_frame_grab(dev, NULL, 0, &s->width, &s->height);
 	if (ret == RDC_E_RANGE) {
 		s->pix = malloc(((size_t)s->width * s->height + 1) *
@@ -519,8 +528,9 @@ static int cmd_diff(const struct hopts *o)
 		       timing + 1, a.w[timing].entry.cycle,
 		       b.w[timing].entry.cycle);
 	if (!a.untimed && !b.untimed)
-		printf("total cycles: A %" PRIu64 ", B %" PRIu64 "\n", a.time,
-		       b.time);
+		printf("total cycles: A %" PRIu64 ", B %" PRIu64
+		       " (as run or replay prints each)\n",
+		       a.time, b.time);
 	/* the scanned-out frames, each (scripts on sim:; a trace: its last) */
 	if (a.fr.hw && b.fr.hw && !a.fr.lost && !b.fr.lost) {
 		size_t nf = a.fr.n < b.fr.n ? a.fr.n : b.fr.n, k;
