@@ -64,12 +64,30 @@ desktop_run_tmpfs() {
 	fi
 }
 
-# What desktop_run_tmpfs mounted goes, for the tests after this one.
+# What desktop_run_tmpfs mounted goes, for the tests after this one, and
+# the consoles a compositor may have left in graphics mode (killed, it
+# cannot restore them) are text consoles again, the first one in front:
+# fbcon draws nothing on a console in graphics mode.
 desktop_cleanup() {
 	for m in $DESKTOP_MOUNTS; do
 		umount "$m" || umount -l "$m"
 	done
 	DESKTOP_MOUNTS=""
+	/usr/bin/python3 -c '
+import fcntl, os
+KDSETMODE, KD_TEXT = 0x4B3A, 0
+for n in (1, 2, 3):
+    try:
+        fd = os.open("/dev/tty%d" % n, os.O_RDWR | os.O_NOCTTY)
+    except OSError:
+        continue
+    try:
+        fcntl.ioctl(fd, KDSETMODE, KD_TEXT)
+    except OSError:
+        pass
+    os.close(fd)
+' 2>/dev/null
+	busybox chvt 1 2>/dev/null || chvt 1 2>/dev/null
 }
 
 # Weston on the card, pixman renderer, direct launcher on a VT, the
