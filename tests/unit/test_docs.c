@@ -1218,6 +1218,12 @@ static void test_exit_status(void **state)
 				 "and the system's reason)",
 				 fa, st, out);
 	}
+	snprintf(args, sizeof(args), "--record %s run %s", missing, a);
+	if (ctl_status(args, out, sizeof(out)) != 1 || !strstr(out, missing) ||
+	    !strstr(out, "No such file or directory"))
+		fail_msg("rdcctl %s: '%s' (want 1, the file and the system's "
+			 "reason)",
+			 args, out);
 	/* 2 */
 	assert_int_equal(ctl_status("frobnicate", out, sizeof(out)), 2);
 	snprintf(args, sizeof(args), "diff %s", a);

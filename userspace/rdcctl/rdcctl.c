@@ -86,7 +86,7 @@ int rdcctl_open(const char *uri, rdc_dev **dev)
 		return 0;
 	ret = rdc_record_start(*dev, rdcctl_record_path);
 	if (ret) {
-		rdcctl_report("--record", rdcctl_record_path, ret);
+		rdcctl_record_error(rdcctl_record_path, ret);
 		rdc_close(*dev);
 		*dev = NULL;
 	}
@@ -499,7 +499,7 @@ int main(int argc, char **argv)
 		int err = rdc_record_stop(dev);
 
 		if (err)
-			rdcctl_report("--record", rdcctl_record_path, err);
+			rdcctl_record_error(rdcctl_record_path, err);
 		ret = ret ? ret : err;
 	}
 	rdc_close(dev);

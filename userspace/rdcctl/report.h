@@ -97,6 +97,15 @@ extern const char *rdcctl_record_path;
  */
 int rdcctl_open(const char *uri, rdc_dev **dev);
 
+/* --record TRACE failed: "--record TRACE: ERROR: the reason". */
+static inline void rdcctl_record_error(const char *path, int err)
+{
+	char what[300];
+
+	snprintf(what, sizeof(what), "--record %s", path);
+	rdcctl_report(what, path, err);
+}
+
 /* rdc_open(uri) failed. */
 static inline void rdcctl_open_error(const char *uri, int err)
 {
