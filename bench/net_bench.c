@@ -33,16 +33,16 @@
 #include "rdc.h"
 #include "rdc_proto.h"
 
-#define BENCH_BATCH	1024  /* commands per submit */
-#define BENCH_SUBMIT_S	2.0   /* seconds of submitting */
-#define BENCH_RTT_N	20000 /* register reads */
-#define BENCH_FRAMES_S	3.0   /* seconds of watching frames */
-#define BENCH_RTT_URI_N 2000  /* register reads with --uri (slow links) */
-#define BENCH_USB_HS_LO 35e6  /* USB 2.0 high speed, bytes/s in practice */
-#define BENCH_USB_HS_HI 40e6
-#define BENCH_IDLE_S	4.0 /* seconds an idle daemon is watched */
-#define BENCH_IDLE_SETTLE_S 1 /* after its start, before that */
-#define BENCH_IDLE_ROUNDS 2
+#define BENCH_BATCH	    1024  /* commands per submit */
+#define BENCH_SUBMIT_S	    2.0	  /* seconds of submitting */
+#define BENCH_RTT_N	    20000 /* register reads */
+#define BENCH_FRAMES_S	    3.0	  /* seconds of watching frames */
+#define BENCH_RTT_URI_N	    2000  /* register reads with --uri (slow links) */
+#define BENCH_USB_HS_LO	    35e6  /* USB 2.0 high speed, bytes/s in practice */
+#define BENCH_USB_HS_HI	    40e6
+#define BENCH_IDLE_S	    4.0 /* seconds an idle daemon is watched */
+#define BENCH_IDLE_SETTLE_S 1	/* after its start, before that */
+#define BENCH_IDLE_ROUNDS   2
 
 /* "unix", "usb"...: the JSON lines' transport */
 static char bench_transport[16] = "unix";

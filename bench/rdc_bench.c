@@ -977,8 +977,7 @@ static uint64_t rt_frame_count(rdc_dev *dev)
  * sink, no listener; scanout on demand): the bus is charged the same, no
  * frame is converted.  The frames are counted by FRAME_COUNT.
  */
-static void rdc_realtime(struct rt_res *res, const struct rt_mode *m,
-			 bool lazy)
+static void rdc_realtime(struct rt_res *res, const struct rt_mode *m, bool lazy)
 {
 	struct frames f = { 0 };
 	struct rng g = { BENCH_SEED };
@@ -1466,7 +1465,7 @@ struct result {
 	struct figure rdc_lazy; /* scanout on, no frame consumer */
 	uint64_t lazy_cycles, lazy_frames;
 	uint32_t lazy_frame_crc;
-	bool lazy_ok; /* its cycles, frames, CRC and frame as rdc's */
+	bool lazy_ok;	 /* its cycles, frames, CRC and frame as rdc's */
 	double fps_lazy; /* realtime with no frame consumer */
 	/* realtime: frames a CPU second of the drawing thread, with its
 	 * sink and with no consumer (what the ratio compares) */
@@ -1743,8 +1742,8 @@ static void print_lazy_table(const struct result *res, size_t n)
 		rows += realtime(res[i].kind) || res[i].rdc_lazy.done;
 	if (!rows)
 		return;
-	printf("\n%-12s %12s %12s %9s %12s %12s\n", "workload",
-	       "on+consumer", "on, none", "off", "none/off", "consumer/off");
+	printf("\n%-12s %12s %12s %9s %12s %12s\n", "workload", "on+consumer",
+	       "on, none", "off", "none/off", "consumer/off");
 	for (i = 0; i < n; i++) {
 		const struct result *r = &res[i];
 
@@ -1752,9 +1751,10 @@ static void print_lazy_table(const struct result *res, size_t n)
 			printf("%-12s %8.0f fps %8.0f fps %9s %12s %12s  "
 			       "(frames a CPU second: %.0f, %.0f; none/sink "
 			       "%.3f)\n",
-			       kind_name[r->kind], r->fps, r->fps_lazy, "-", "-",
-			       "-", r->cpu_fps, r->cpu_fps_lazy,
-			       r->cpu_fps > 0 ? r->cpu_fps_lazy / r->cpu_fps : 0);
+			       kind_name[r->kind], r->fps, r->fps_lazy, "-",
+			       "-", "-", r->cpu_fps, r->cpu_fps_lazy,
+			       r->cpu_fps > 0 ? r->cpu_fps_lazy / r->cpu_fps :
+						0);
 			continue;
 		}
 		if (!drawing(r->kind) || !r->rdc_lazy.done)

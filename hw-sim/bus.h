@@ -183,8 +183,8 @@ static inline bool rdc_port_window_column(const struct rdc_hw *hw,
 		return false;
 	w->t = t;
 	w->row = row;
-	rdc_scan_window_hit(hw, w, a, a + (uint64_t)(r->count - 1) * stride +
-					     r->len);
+	rdc_scan_window_hit(hw, w, a,
+			    a + (uint64_t)(r->count - 1) * stride + r->len);
 	rdc_vram_watch(hw, t, r->addr, r->len, r->count, stride);
 	return true;
 }

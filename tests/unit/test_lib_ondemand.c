@@ -89,7 +89,8 @@ static void grab_same(rdc_dev *a, rdc_dev *b)
 
 static void test_nothing_converted_until_a_grab(void **state)
 {
-	rdc_dev *eager = open_dev("sim:"), *lazy = open_dev("sim:scanout=demand");
+	rdc_dev *eager = open_dev("sim:"),
+		*lazy = open_dev("sim:scanout=demand");
 	struct rdc_hw *hw = rdc_sim_hw(lazy);
 	uint64_t ta, tb;
 
