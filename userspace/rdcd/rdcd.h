@@ -72,10 +72,21 @@ enum rdcd_log_level {
 	RDCD_LOG_DEBUG
 };
 
+/* One encoding of one frame's pixels, shared by the subscribers that
+ * asked for that encoding (serve.c): freed with its last reference. */
+struct rdcd_shared {
+	unsigned int refs;
+	uint32_t enc; /* what it holds (RLE may fall back to RAW) */
+	size_t len;
+	uint8_t data[];
+};
+
+/* A message queued for a client: data[0..hlen), then shared's bytes. */
 struct rdcd_obuf {
 	struct rdcd_obuf *next;
-	size_t len, off;
+	size_t len, off, hlen;
 	bool frame;
+	struct rdcd_shared *shared; /* or NULL: all of it is in data */
 	uint8_t data[];
 };
 
@@ -183,6 +194,9 @@ struct rdcd {
 	int log_level;
 	uint32_t last_irq;
 	uint64_t frames;
+	/* subscribers' frame encodings done, frames queued and dropped
+	 * (logged at exit) */
+	uint64_t frame_encodings, sub_queued, sub_dropped;
 	/* the chip converts frames: a client or a sink may look (rdcd_watch) */
 	bool watched;
 
