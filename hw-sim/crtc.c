@@ -161,6 +161,8 @@ static void crtc_latch(struct rdc_hw *hw, bool at_vblank)
 	c->cur_gamma = (hw->control & RDC_CONTROL_GAMMA_EN) != 0;
 	c->cur_cursor_ctrl = c->cursor_ctrl;
 	c->cur_cursor_base = c->cursor_base;
+	c->cur_raster_base = c->raster_base;
+	c->cur_raster_ctrl = c->raster_ctrl;
 	/*
 	 * The 2 bpp image is latched whole; ARGB8888 rows are fetched a line
 	 * at a time (cursor_argb_row).
@@ -223,6 +225,20 @@ static bool line_range(const struct rdc_hw *hw, const struct rdc_timing *tm,
 	return *addr + *bytes <= hw->vram_size;
 }
 
+/* Does the raster list fetch at the start of line n (the next one)? */
+static bool raster_fetches_at(const struct rdc_hw *hw, uint32_t n)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+
+	if (n == 0) /* it restarts */
+		return (c->cur_raster_ctrl & RDC_RASTER_CTRL_EN) &&
+		       rdc_crtc_raster_fetches(
+			       hw, c->cur_raster_base & RDC_RASTER_BASE_MASK,
+			       0);
+	return c->rl_wait <= n &&
+	       rdc_crtc_raster_fetches(hw, c->rl_addr, c->rl_count);
+}
+
 int rdc_crtc_next_fetches(const struct rdc_hw *hw)
 {
 	const struct rdc_crtc *c = &hw->crtc;
@@ -237,6 +253,8 @@ int rdc_crtc_next_fetches(const struct rdc_hw *hw)
 		if (c->mode_pending)
 			tm = &c->pending;
 	}
+	if (raster_fetches_at(hw, n))
+		return 1;
 	return n < tm->v_display && (line_range(hw, tm, n, &addr, &bytes) ||
 				     cursor_argb_row(hw, tm, n, &addr));
 }
@@ -632,6 +650,155 @@ static void scan_defer(struct rdc_hw *hw, uint32_t n)
 	scan_bounds(hw);
 }
 
+/* ---- raster list ---------------------------------------------------------- */
+
+#define RDC_NEVER_LINE UINT32_MAX
+
+/*
+ * A raster-list write is about to change what converting a line reads:
+ * lines that wait for a look are converted first, as they were fetched,
+ * so that the frame stays whole (dropping them would lose it every frame).
+ */
+static void raster_settle(struct rdc_hw *hw)
+{
+	hw->crtc.rl_touched = 1;
+	if (hw->pend_lo[0] != hw->pend_hi[0] ||
+	    hw->pend_lo[1] != hw->pend_hi[1])
+		scan_convert(hw, 3);
+}
+
+static void raster_set(struct rdc_hw *hw, uint32_t *p, uint32_t val)
+{
+	if (*p == val)
+		return;
+	raster_settle(hw);
+	*p = val;
+}
+
+/* A bad list: stop it for good (EN cleared) and raise the error. */
+static void raster_fail(struct rdc_hw *hw, uint64_t addr)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	c->rl_wait = RDC_NEVER_LINE;
+	c->rl_error = 1;
+	c->raster_ctrl &= ~RDC_RASTER_CTRL_EN;
+	c->cur_raster_ctrl &= ~RDC_RASTER_CTRL_EN;
+	rdc_port_error(hw, RDC_ERR_RASTER, (uint32_t)addr);
+}
+
+/* One REG entry: the whitelist; false for a register it may not touch. */
+static bool raster_reg(struct rdc_hw *hw, uint32_t reg, uint32_t val)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	switch (reg) {
+	case RDC_REG_FB_BASE:
+		raster_set(hw, &c->cur_base, val);
+		return true;
+	case RDC_REG_FB_STRIDE:
+		raster_set(hw, &c->cur_stride, val);
+		return true;
+	case RDC_REG_CURSOR_POS:
+		raster_set(hw, &c->cursor_pos, val);
+		return true;
+	case RDC_REG_CURSOR_FG:
+		raster_set(hw, &c->cursor_fg, val & RGB_MASK);
+		return true;
+	case RDC_REG_CURSOR_BG:
+		raster_set(hw, &c->cursor_bg, val & RGB_MASK);
+		return true;
+	default:
+		return false;
+	}
+}
+
+/*
+ * Line n starts at `when`, the list waiting for it: fetch and run entries
+ * until a WAIT for a later line, the END, or a bad entry.  Each entry is
+ * an 8-byte read in the fetch window, ahead of the line's own read.
+ */
+static void raster_run(struct rdc_hw *hw, uint32_t n, uint64_t when)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	while (c->rl_wait <= n) {
+		uint64_t a = c->rl_addr, start;
+		uint32_t w0, w1, y, x;
+
+		if (!rdc_crtc_raster_fetches(hw, a, c->rl_count)) {
+			raster_fail(hw, a);
+			return;
+		}
+		start = RDC_MAX(when, c->fetch_end);
+		c->fetch_end =
+			start + rdc_bus_read_cost(&hw->bus.open_row, a,
+						  RDC_RASTER_ENTRY_BYTES);
+		w0 = rdc_ld32(hw->vram + a);
+		w1 = rdc_ld32(hw->vram + a + 4);
+		c->rl_addr = a + RDC_RASTER_ENTRY_BYTES;
+		c->rl_count++;
+		switch (FIELD_GET(RDC_RL_OP, w0)) {
+		case RDC_RL_END:
+			c->rl_wait = RDC_NEVER_LINE;
+			return;
+		case RDC_RL_WAIT:
+			y = FIELD_GET(RDC_RL_Y, w1);
+			x = FIELD_GET(RDC_RL_X, w1);
+			if (y >= c->cur.v_total)
+				c->rl_wait = RDC_NEVER_LINE;
+			else if (y > n || (y == n && x))
+				c->rl_wait = x ? y + 1 : y;
+			break;
+		case RDC_RL_REG:
+			if (!raster_reg(hw, FIELD_GET(RDC_RL_ARG, w0), w1)) {
+				raster_fail(hw, a);
+				return;
+			}
+			break;
+		case RDC_RL_CLUT:
+			raster_set(hw,
+				   &hw->clut[FIELD_GET(RDC_RL_ARG, w0) %
+					     RDC_CLUT_ENTRIES],
+				   w1 & RGB_MASK);
+			break;
+		default:
+			raster_fail(hw, a);
+			return;
+		}
+	}
+}
+
+/* Line n starts: the list restarts at line 0 and runs if its WAIT is met. */
+static inline void raster_line(struct rdc_hw *hw, uint32_t n, uint64_t when)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	if (n == 0) {
+		c->rl_count = 0;
+		c->rl_wait = RDC_NEVER_LINE;
+		if (!(c->cur_raster_ctrl & RDC_RASTER_CTRL_EN))
+			return;
+		c->rl_addr = c->cur_raster_base & RDC_RASTER_BASE_MASK;
+		c->rl_wait = 0;
+	}
+	if (c->rl_wait <= n)
+		raster_run(hw, n, when);
+}
+
+uint32_t rdc_crtc_raster_status(struct rdc_hw *hw)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	uint32_t s = FIELD_PREP(RDC_RASTER_STATUS_COUNT,
+				RDC_MIN(c->rl_count, 0xffffu));
+
+	if (c->running && c->rl_wait != RDC_NEVER_LINE)
+		s |= RDC_RASTER_STATUS_RUN;
+	if (c->rl_error)
+		s |= RDC_RASTER_STATUS_ERROR;
+	return s;
+}
+
 /*
  * Start of active line n: the CRTC reads it (and the ARGB8888 cursor's
  * row on it, in the same window) and converts it at once.  The bus sees
@@ -712,9 +879,20 @@ static void crtc_vblank(struct rdc_hw *hw, uint64_t when)
 	c->frame_count++;
 	rdc_trace(hw, RDC_TRACE_VBLANK, (uint32_t)number, 0);
 	scan_new_frame(hw, hw->frame_back);
-	if (hw->pend_lo[hw->frame_back ^ 1] != hw->pend_hi[hw->frame_back ^ 1] &&
-	    crtc_latch_changes(hw))
-		scan_drop(hw, 1u << (hw->frame_back ^ 1));
+	/*
+	 * A raster list that changed the base, stride, cursor or CLUT this
+	 * frame changes them at every vblank: what waits is converted, as
+	 * raster_settle does, rather than the frame lost each time.
+	 */
+	if (hw->pend_lo[hw->frame_back ^ 1] !=
+		    hw->pend_hi[hw->frame_back ^ 1] &&
+	    crtc_latch_changes(hw)) {
+		if (c->rl_touched)
+			scan_convert(hw, 1u << (hw->frame_back ^ 1));
+		else
+			scan_drop(hw, 1u << (hw->frame_back ^ 1));
+	}
+	c->rl_touched = 0;
 	crtc_latch(hw, true);
 	rdc_stream_fence(); /* the frame whole before anyone reads it */
 	if (hw->frame_fn && hw->frame_ok[hw->frame_back ^ 1])
@@ -815,6 +993,8 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 			hw->now = when;
 		if (hw->trace_fn || n == 0)
 			crtc_line_signals(hw, n, when);
+		if (n == 0 || c->rl_wait <= n)
+			raster_line(hw, n, when);
 		if (n < c->cur.v_display)
 			crtc_fetch(hw, n, when,
 				   !hw->frame_fn && t >= shown_until);
@@ -875,6 +1055,7 @@ void rdc_crtc_reset(struct rdc_hw *hw)
 	c->cursor_bg = RDC_CURSOR_BG_RESET;
 	c->next_line_time = RDC_NEVER;
 	c->shadow_dirty = 1;
+	c->rl_wait = RDC_NEVER_LINE;
 }
 
 /* Beam at hw->now; scanout must have caught up. */

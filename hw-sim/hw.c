@@ -433,6 +433,13 @@ static uint32_t reg_read(struct rdc_hw *hw, uint32_t reg)
 		return (uint32_t)c->frame_count;
 	case RDC_REG_MODE_PRESET:
 		return c->preset;
+	case RDC_REG_RASTER_BASE:
+		return c->raster_base;
+	case RDC_REG_RASTER_CTRL:
+		return c->raster_ctrl;
+	case RDC_REG_RASTER_STATUS:
+		rdc_crtc_catch_up(hw, hw->now);
+		return rdc_crtc_raster_status(hw);
 	case RDC_REG_CLUT_INDEX:
 		return hw->clut_index;
 	case RDC_REG_CLUT_DATA:
@@ -595,6 +602,13 @@ static bool crtc_side_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
 		return true;
 	case RDC_REG_MODE_PRESET:
 		preset_write(hw, val);
+		return true;
+	case RDC_REG_RASTER_BASE:
+		c->raster_base = val & RDC_RASTER_BASE_MASK;
+		return true;
+	case RDC_REG_RASTER_CTRL:
+		c->raster_ctrl = val & RDC_RASTER_CTRL_MASK;
+		c->rl_error = 0;
 		return true;
 	case RDC_REG_CLUT_INDEX:
 		hw->clut_index = val % RDC_CLUT_ENTRIES;

@@ -118,6 +118,17 @@ struct rdc_crtc {
 	 * rather than divided out (crtc.c's line_offset, exactly).
 	 */
 	uint64_t line_q, line_r, step_q, step_r, line_den;
+	/*
+	 * Raster list: the registers, their latched copies, the next entry,
+	 * entries fetched this frame, the line the list waits for
+	 * (RDC_NEVER_LINE: done for this frame), RASTER_STATUS.ERROR, and
+	 * whether it changed what converting a line reads this frame.
+	 */
+	uint32_t raster_base, raster_ctrl;
+	uint32_t cur_raster_base, cur_raster_ctrl;
+	uint64_t rl_addr;
+	uint32_t rl_count, rl_wait;
+	int rl_error, rl_touched;
 };
 
 /* The DRAM bus's state for the cost model (see bus.h). */

@@ -168,6 +168,28 @@ void rdc_crtc_stop(struct rdc_hw *hw);
 /* Does the next scanout event open a fetch window (an active line)? */
 int rdc_crtc_next_fetches(const struct rdc_hw *hw);
 uint32_t rdc_crtc_status(struct rdc_hw *hw);
+uint32_t rdc_crtc_raster_status(struct rdc_hw *hw);
+
+/* Entries a frame's raster list may fetch: RASTER_CTRL.LEN, 0 the most. */
+static inline uint32_t rdc_crtc_raster_len(const struct rdc_hw *hw)
+{
+	uint32_t len = FIELD_GET(RDC_RASTER_CTRL_LEN, hw->crtc.cur_raster_ctrl);
+
+	return !len || len > RDC_RASTER_MAX_ENTRIES ? RDC_RASTER_MAX_ENTRIES :
+						      len;
+}
+
+/*
+ * Would the raster list fetch its entry at `addr`, the frame's `count`th?
+ * (Not when the entry leaves VRAM or the frame's entries are used up:
+ * that stops the list with no bus time.)
+ */
+static inline bool rdc_crtc_raster_fetches(const struct rdc_hw *hw,
+					   uint64_t addr, uint32_t count)
+{
+	return count < rdc_crtc_raster_len(hw) &&
+	       addr + RDC_RASTER_ENTRY_BYTES <= hw->vram_size;
+}
 
 /* clut.c */
 void rdc_clut_reset(struct rdc_hw *hw);

@@ -28,9 +28,10 @@
 /*
  * 1.1 added the ARGB8888 cursor (CURSOR_CTRL) and the gamma of direct
  * colour (CONTROL.GAMMA_EN); on 1.0 CURSOR_CTRL is a hole in the map and
- * CONTROL bit 6 reads 0
+ * CONTROL bit 6 reads 0.  1.2 added the raster list (RASTER_*), holes in
+ * the map before it.
  */
-#define RDC_VERSION_VALUE 0x00010001u
+#define RDC_VERSION_VALUE 0x00010002u
 #define RDC_REG_WINDOW 0x400u
 
 /* ---- Identification and control ------------------------------------- */
@@ -129,6 +130,56 @@
  * for the current FB_FORMAT); read: the last preset loaded
  */
 #define RDC_REG_MODE_PRESET 0x140
+
+/*
+ * Raster list: entries of two words in VRAM (RDC_RL_*) that the CRTC runs
+ * every frame, restarting at RASTER_BASE at the start of line 0, before
+ * the line's fetch.  RASTER_BASE and RASTER_CTRL are latched at vblank;
+ * the CRTC fetches an entry only when the beam has reached the WAIT
+ * before it, each one an 8-byte read in the line's fetch window.  A bad
+ * entry, an entry leaving VRAM or more entries in a frame than
+ * RASTER_CTRL.LEN stop the list: RDC_ERR_RASTER with ERR_INFO the entry's
+ * VRAM address, RASTER_STATUS.ERROR set and RASTER_CTRL.EN cleared.
+ */
+#define RDC_REG_RASTER_BASE 0x144 /* RW latched  VRAM byte address, [2:0] 0 */
+#define   RDC_RASTER_BASE_MASK GENMASK(31, 3)
+#define RDC_REG_RASTER_CTRL 0x148 /* RW latched */
+#define   RDC_RASTER_CTRL_EN BIT(0) /* run the list every frame */
+/* entries a frame may fetch, 1..RDC_RASTER_MAX_ENTRIES; 0 = the maximum */
+#define   RDC_RASTER_CTRL_LEN GENMASK(28, 16)
+#define   RDC_RASTER_CTRL_MASK (RDC_RASTER_CTRL_EN | RDC_RASTER_CTRL_LEN)
+#define RDC_REG_RASTER_STATUS 0x14c /* R */
+#define   RDC_RASTER_STATUS_RUN BIT(0) /* this frame's list has not ended */
+/* a bad list stopped; cleared by a write of RASTER_CTRL */
+#define   RDC_RASTER_STATUS_ERROR BIT(1)
+#define   RDC_RASTER_STATUS_COUNT GENMASK(31, 16) /* entries this frame */
+#define RDC_RASTER_MAX_ENTRIES 4096u
+#define RDC_RASTER_ENTRY_BYTES 8u
+/*
+ * An entry: word 0 [31:28] the op, [11:0] its argument; word 1 the value.
+ *  END   the list is done for this frame (zeroed VRAM ends a list)
+ *  WAIT  word 1 [15:0] x, [31:16] y (as BEAM): hold until the beam is at
+ *        or past line y, column x; lines are fetched whole at their start,
+ *        so a WAIT with x > 0 is met at the start of line y + 1; y >=
+ *        V_TOTAL is never met
+ *  REG   word 0 [11:0] a register offset: FB_BASE and FB_STRIDE (the
+ *        latched copies, in force from the next line fetched until the
+ *        next vblank latch), CURSOR_POS, CURSOR_FG, CURSOR_BG; any other
+ *        offset is a bad entry
+ *  CLUT  word 0 [7:0] a CLUT entry, word 1 0x00RRGGBB: written to the
+ *        CLUT in force (not to the CLUT_DATA read-back)
+ */
+#define RDC_RL_OP GENMASK(31, 28)
+#define RDC_RL_ARG GENMASK(11, 0)
+#define RDC_RL_X GENMASK(15, 0)
+#define RDC_RL_Y GENMASK(31, 16)
+enum rdc_rl_op {
+	RDC_RL_END = 0,
+	RDC_RL_WAIT = 1,
+	RDC_RL_REG = 2,
+	RDC_RL_CLUT = 3,
+	RDC_RL_OP_COUNT
+};
 
 #define RDC_CRTC_MAX_TOTAL 4096
 #define RDC_CRTC_MAX_DISPLAY 2048
@@ -315,6 +366,8 @@ enum rdc_err {
 	 * past the image, bytes left over); nothing is drawn
 	 */
 	RDC_ERR_DATA = 11,
+	/* a raster list stopped: bad op or register, out of VRAM, too long */
+	RDC_ERR_RASTER = 12,
 	RDC_ERR_COUNT
 };
 

@@ -94,6 +94,7 @@ static const char *const rdc_dev_error_str[RDC_ERR_COUNT] = {
 	[RDC_ERR_MODE] = "MODE",
 	[RDC_ERR_STACK] = "STACK",
 	[RDC_ERR_DATA] = "DATA",
+	[RDC_ERR_RASTER] = "RASTER",
 };
 
 const char *rdc_dev_strerror(uint32_t code)
