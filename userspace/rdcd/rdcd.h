@@ -29,6 +29,9 @@
  */
 #define RDCD_MAX_PENDING 8
 #define RDCD_HELLO_MS	 5000
+/* ...but one that has sent nothing for less than this is not evicted:
+ * the newcomer goes instead (a HELLO may be on its way). */
+#define RDCD_HELLO_GRACE_MS 200
 /* Failed tokens: after RDC_AUTH_FREE_FAILS from one address, that address
  * is refused for a second, doubling at each further failure up to a minute
  * (rdc_auth_*, rdc_server.h); failed-token log lines are kept to one a

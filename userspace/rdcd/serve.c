@@ -475,24 +475,66 @@ static unsigned int rdcd_count_lis(const struct rdcd *d, int lis, bool hello,
 	return n;
 }
 
+static bool rdcd_have_request(const struct rdcd_client *c);
+
+/* A connection accepted from a socket listener (not ffs:, udl:). */
+static bool rdcd_lis_socket(const struct rdcd *d, int lis)
+{
+	return lis >= 0 && !d->lis[lis].ffs && !d->lis[lis].udl;
+}
+
+/*
+ * Silent connections never lock anyone out.  Beyond RDCD_MAX_PENDING on a
+ * listener, what the others have sent is read first (it may be their
+ * HELLO); then the oldest that has been silent past RDCD_HELLO_GRACE_MS
+ * goes, or else the newcomer `c`, which has nothing waiting either: a
+ * client whose HELLO is on its way is not thrown out by a flood.
+ */
+static void rdcd_admit(struct rdcd *d, struct rdcd_client *c)
+{
+	const uint64_t grace = (uint64_t)RDCD_HELLO_GRACE_MS * 1000000ull;
+	uint64_t now = rdcd_wall_ns();
+	struct rdcd_client *victim = NULL;
+	const struct rdcd_client *oldest = NULL;
+
+	if (rdcd_count_lis(d, c->lis, false, NULL) <= RDCD_MAX_PENDING)
+		return;
+	if (rdcd_lis_socket(d, c->lis))
+		for (struct rdcd_client *o = d->clients; o; o = o->next)
+			if (o != c && !o->dead && !o->hello && o->lis == c->lis)
+				rdcd_client_read(d, o);
+	if (rdcd_count_lis(d, c->lis, false, &oldest) <= RDCD_MAX_PENDING)
+		return;
+	for (struct rdcd_client *o = d->clients; o; o = o->next)
+		if (o != c && !o->dead && !o->hello && o->lis == c->lis &&
+		    !rdcd_have_request(o) && now - o->conn_ns >= grace &&
+		    (!victim || o->conn_ns < victim->conn_ns))
+			victim = o;
+	if (victim) {
+		rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
+				 "%u connections without HELLO on one "
+				 "listener: closing the oldest silent one, "
+				 "client %u (%s)",
+				 RDCD_MAX_PENDING, victim->id, victim->peer);
+	} else {
+		victim = !c->hello && !c->dead && !rdcd_have_request(c) ?
+				 c :
+				 (struct rdcd_client *)oldest;
+		rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
+				 "%u connections without HELLO on one "
+				 "listener, none silent for %u ms: closing "
+				 "client %u (%s)",
+				 RDCD_MAX_PENDING, RDCD_HELLO_GRACE_MS,
+				 victim->id, victim->peer);
+	}
+	victim->dead = true;
+}
+
 struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
 				    const char *peer)
 {
-	const struct rdcd_client *oldest = NULL;
 	struct rdcd_client *c;
 
-	/* Silent connections never lock anyone out: the oldest one goes. */
-	if (rdcd_count_lis(d, d->accept_lis, false, &oldest) >=
-	    RDCD_MAX_PENDING) {
-		struct rdcd_client *o = (struct rdcd_client *)oldest;
-
-		rdcd_log_limited(
-			d, &d->connlog, RDCD_LOG_WARN,
-			"%u connections without HELLO on one listener: "
-			"closing the oldest, client %u (%s)",
-			RDCD_MAX_PENDING, o->id, o->peer);
-		o->dead = true;
-	}
 	c = calloc(1, sizeof(*c));
 	if (!c)
 		return NULL;
@@ -505,6 +547,10 @@ struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
 	c->next = d->clients;
 	d->clients = c;
 	rdcd_log(d, RDCD_LOG_DEBUG, "client %u connected (%s)", c->id, c->peer);
+	/* a HELLO already waiting (it queued behind others) is served now */
+	if (rdcd_lis_socket(d, c->lis))
+		rdcd_client_read(d, c);
+	rdcd_admit(d, c);
 	return c;
 }
 
