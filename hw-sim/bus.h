@@ -43,7 +43,10 @@
  * the line, the window goes on with the cursor row's S * 4 bytes at
  * CURSOR_BASE + (line - y) * S * 4, read by the same formula from the row
  * the line's read left open (a row leaving VRAM is not read); the 2 bpp
- * cursor's image, copied at vblank, is not charged.
+ * cursor's image, copied at vblank, is not charged.  Raster-list entries
+ * (RASTER_BASE) are 8-byte reads by the same formula, in the window of the
+ * line on which the list reaches them, ahead of the line's read; a blank
+ * line whose list runs opens a window of its entries alone.
  *
  * Command fetch: a FIFO word costs RDC_T_FIFO_WORD; ring words are VRAM
  * reads by the formula.  Each command costs RDC_T_DECODE once it is fetched.
