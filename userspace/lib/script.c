@@ -1368,6 +1368,11 @@ static const struct rdl_stmt {
 	{ "vertices", rdl_st_vertices, 0, 1, RDL_ANY },
 	{ "indices", rdl_st_indices, 0, 1, RDL_ANY },
 	{ "spin", rdl_st_spin, 0, 1, 1 },
+	{ "raster", rdl_st_raster, 0, 1, 1 },
+	{ "raster-wait", rdl_st_raster_wait, 0, 1, 2 },
+	{ "raster-reg", rdl_st_raster_reg, 0, 2, 2 },
+	{ "raster-clut", rdl_st_raster_clut, 0, 2, RDC_CLUT_ENTRIES + 1 },
+	{ "raster-end", rdl_st_raster_end, 0, 0, 0 },
 };
 
 const char *rdl_stmt_info(size_t i, uint32_t *min, uint32_t *max)

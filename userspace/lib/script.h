@@ -44,6 +44,9 @@ struct rdl {
 	uint32_t list_addr, list_line;
 	uint32_t *list_w;
 	size_t list_n, list_cap;
+	/* `raster ADDR` ... `raster-end`: the raster list being written */
+	bool raster_on;
+	uint32_t raster_base, raster_addr, raster_n;
 };
 
 /* script_run.c: errors, and running a statement's batch */
@@ -94,4 +97,11 @@ int rdl_rop_by_name(const char *s);
 int rdl_fixed(struct rdl *r, size_t i, int64_t scale, int64_t lo, int64_t hi,
 	      int64_t *out);
 int rdl_angle(struct rdl *r, size_t i, uint32_t *out);
+/* script_raster.c: the raster list's statements */
+int rdl_st_raster(struct rdl *r, uint32_t op);
+int rdl_st_raster_wait(struct rdl *r, uint32_t op);
+int rdl_st_raster_reg(struct rdl *r, uint32_t op);
+int rdl_st_raster_clut(struct rdl *r, uint32_t op);
+int rdl_st_raster_end(struct rdl *r, uint32_t op);
+
 #endif /* RDC_SCRIPT_H */
