@@ -652,7 +652,7 @@ static void scan_defer(struct rdc_hw *hw, uint32_t n)
 
 /* ---- raster list ---------------------------------------------------------- */
 
-#define RDC_NEVER_LINE UINT32_MAX
+#define RDC_NEVER_LINE 0xffffffffu
 
 /*
  * A raster-list write is about to change what converting a line reads:
