@@ -29,6 +29,8 @@
 #define SCR_H	   200u
 #define STRIDE	   (SCR_W * 4)
 #define CURSOR_AT  (1u << 20) /* the ARGB8888 cursor image */
+#define RASTER_AT  (2u << 20) /* the raster list, RL_ENTRIES long */
+#define RL_ENTRIES 24u
 #define MAX_FRAMES 64u
 #define CHIPS	   3u
 
@@ -85,6 +87,16 @@ static struct tdp *od_chip_new(void)
 	rdc_hw_write(hw, RDC_REG_CURSOR_CTRL,
 		     FIELD_PREP(RDC_CURSOR_CTRL_FMT, RDC_CURSOR_FMT_ARGB8888));
 	rdc_hw_write(hw, RDC_REG_CURSOR_POS, RDC_XY(20, 30));
+	/* a list that moves the base every 16 lines (random_step runs it) */
+	for (i = 0; i + 1 < RL_ENTRIES; i += 2) {
+		uint32_t *e = (uint32_t *)(t->vram + RASTER_AT + 8 * i);
+
+		e[0] = FIELD_PREP(RDC_RL_OP, RDC_RL_WAIT);
+		e[1] = FIELD_PREP(RDC_RL_Y, 8 * i);
+		e[2] = FIELD_PREP(RDC_RL_OP, RDC_RL_REG) | RDC_REG_FB_BASE;
+		e[3] = i % 3 * STRIDE * 2;
+	}
+	rdc_hw_write(hw, RDC_REG_RASTER_BASE, RASTER_AT); /* off: random_step */
 	rdc_hw_write(hw, RDC_REG_CONTROL,
 		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN |
 			     RDC_CONTROL_CURSOR_EN);
@@ -181,6 +193,47 @@ static bool look_same(struct od *o, unsigned int i)
 	return true;
 }
 
+/*
+ * Raster-list entry k, random, on every chip: a WAIT, a CLUT entry (seen
+ * through gamma), the base or stride of the lines after it, the cursor;
+ * the list's last entry stays END.
+ */
+static void raster_entry(struct od *o, uint32_t k)
+{
+	uint32_t e[2], i, op = tdp_range(&o->seed, 0, 5);
+
+	e[1] = tdp_rand(&o->seed);
+	switch (op) {
+	case 0:
+	case 1:
+		e[0] = FIELD_PREP(RDC_RL_OP, RDC_RL_WAIT);
+		e[1] = FIELD_PREP(RDC_RL_Y,
+				  tdp_range(&o->seed, 0, SCR_H + 30)) |
+		       FIELD_PREP(RDC_RL_X, tdp_range(&o->seed, 0, 2));
+		break;
+	case 2:
+		e[0] = FIELD_PREP(RDC_RL_OP, RDC_RL_CLUT) |
+		       FIELD_PREP(RDC_RL_ARG, e[1] >> 24);
+		break;
+	case 3:
+		e[0] = FIELD_PREP(RDC_RL_OP, RDC_RL_REG) | RDC_REG_FB_BASE;
+		e[1] = (uint32_t)tdp_range(&o->seed, 0, SCR_H) * STRIDE;
+		break;
+	case 4:
+		e[0] = FIELD_PREP(RDC_RL_OP, RDC_RL_REG) | RDC_REG_FB_STRIDE;
+		e[1] = e[1] & 1 ? STRIDE : 2 * STRIDE;
+		break;
+	default:
+		e[0] = FIELD_PREP(RDC_RL_OP, RDC_RL_REG) |
+		       (e[1] & 1 ? RDC_REG_CURSOR_POS : RDC_REG_CURSOR_FG);
+		break;
+	}
+	for (i = 0; i < CHIPS; i++)
+		assert_int_equal(rdc_hw_vram_write(&o->c[i].t->hw,
+						   RASTER_AT + 8 * k, e, 8),
+				 0);
+}
+
 /* One random change, the same on every chip, then some simulated time. */
 static void random_step(struct od *o)
 {
@@ -250,6 +303,16 @@ static void random_step(struct od *o)
 			  FIELD_PREP(RDC_CURSOR_CTRL_FMT,
 				     r & 0x100 ? RDC_CURSOR_FMT_2BPP :
 						 RDC_CURSOR_FMT_ARGB8888));
+		break;
+	case 12:
+	case 13:
+	case 14: /* a raster list entry rewritten, racing the beam */
+		raster_entry(o, tdp_range(&o->seed, 0, RL_ENTRIES - 2));
+		break;
+	case 15: /* the raster list on or off */
+		all_write(o, RDC_REG_RASTER_BASE, RASTER_AT);
+		all_write(o, RDC_REG_RASTER_CTRL,
+			  r & 0x300 ? RDC_RASTER_CTRL_EN : 0);
 		break;
 	default: /* nothing: frames that wait and are looked at later */
 		break;
