@@ -202,7 +202,12 @@ static void test_latch_and_off(void **state)
 	rdc_hw_write(hw, RDC_REG_CLUT_DATA, SKY);
 	grab(hw);
 	rdc_port_idle_until(hw, rdc_port_next_line(hw, 20));
-	enable(hw, RL_BASE, 0);
+	/* the DP's REG_WRITE reaches the list's registers as the host does */
+	assert_int_equal(rdc_port_reg_write(hw, RDC_REG_RASTER_BASE, RL_BASE),
+			 0);
+	assert_int_equal(rdc_port_reg_write(hw, RDC_REG_RASTER_CTRL,
+					    RDC_RASTER_CTRL_EN),
+			 0);
 	assert_split(grab(hw), SCR_H, col2); /* all sky: not latched yet */
 	assert_split(grab(hw), 40, col2);
 	/* ended at line 40 after 4 entries */
