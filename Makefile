@@ -644,7 +644,7 @@ $(FUZZ_DIR)/fuzz_trace: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_trace.o \
 		$(FUZZ_ALLOC) $(FUZZ_DIR)/librdc.a
 	$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_WRAP_ALLOC) \
 		-Wl,--wrap=rdc_hw_run_until,--wrap=rdc_hw_wait_begin \
-		$^ $(LIBS) -o $@
+		-Wl,--wrap=rdc_hw_set_frame_fn $^ $(LIBS) -o $@
 
 fuzz-bins: $(FUZZ_BINS)
 

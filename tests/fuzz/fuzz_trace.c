@@ -13,12 +13,17 @@
  * records counted do not exceed what the input could hold, and a history
  * comes back exactly when the replay succeeded.
  *
+ * Checked too: replay's own bound (record.c, docs/protocol.md "Traces"):
+ * no record makes the chip run, or a wait last, more than one simulated
+ * minute, and no replay makes more than 1 + 256 chips (POWER records) -
+ * seen through the stand-ins below.  Seeds bound-*.trace ask for more.
+ *
  * Bounded work per input: the header's VRAM size is at most 8 MiB here
  * (a larger one is cut down in the input, so the sizes the format allows
  * are still read), and the link replaces rdc_hw_run_until and
  * rdc_hw_wait_begin (-Wl,--wrap, see the Makefile) with stand-ins that
- * move time by at most FZ_MAX_STEP cycles and cut waits to FZ_MAX_WAIT:
- * a STEP, WAIT or END record may ask for any time at all.
+ * move time by at most FZ_MAX_STEP cycles and cut waits to FZ_MAX_WAIT,
+ * once they have checked the bound above.
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -35,6 +40,11 @@
 #define FZ_MAX_WAIT 4000000u
 #define FZ_MAX_VRAM (8u << 20)
 #define FZ_HDR_VRAM 12u /* "RDCTRACE", u32 version, u32 vram_size */
+/* replay's documented bounds: a record, the chips of one replay */
+#define FZ_DOC_CYCLES (60ull * 100000000ull)
+#define FZ_DOC_CHIPS  (1u + 256u)
+
+static unsigned int fz_chips; /* of the replay running */
 
 #define fz_assert(c) \
 	do { \
@@ -49,10 +59,21 @@ void __real_rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w);
 void __wrap_rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w);
 void __real_rdc_hw_run_until(struct rdc_hw *hw, uint64_t t);
 void __wrap_rdc_hw_run_until(struct rdc_hw *hw, uint64_t t);
+void __real_rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx);
+void __wrap_rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* replay watches each chip it makes (the first, and one a POWER) */
+void __wrap_rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx)
+{
+	if (fn)
+		fz_assert(++fz_chips <= FZ_DOC_CHIPS);
+	__real_rdc_hw_set_frame_fn(hw, fn, ctx);
+}
 
 void __wrap_rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w)
 {
+	fz_assert(w->budget <= FZ_DOC_CYCLES);
 	if (w->budget > FZ_MAX_WAIT || !w->budget)
 		w->budget = FZ_MAX_WAIT;
 	__real_rdc_hw_wait_begin(hw, w);
@@ -60,6 +81,7 @@ void __wrap_rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w)
 
 void __wrap_rdc_hw_run_until(struct rdc_hw *hw, uint64_t t)
 {
+	fz_assert(t <= hw->now || t - hw->now <= FZ_DOC_CYCLES);
 	if (t > hw->now + FZ_MAX_STEP)
 		t = hw->now + FZ_MAX_STEP;
 	__real_rdc_hw_run_until(hw, t);
@@ -101,6 +123,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	snprintf(path, sizeof(path), "/proc/self/fd/%d", fd);
 
 	memset(&res, 0, sizeof(res));
+	fz_chips = 0;
 	ret = rdc_replay_file(path, &res, NULL);
 	fz_assert(ret <= 0);
 	/* a record is at least its op and time: 9 bytes */
@@ -108,6 +131,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		fz_assert(res.records <= size / 9 + 1);
 
 	memset(&res, 0, sizeof(res));
+	fz_chips = 0;
 	ret = rdc_replay_history(path, 0, 0, 8, 8, 0, &h, &res, NULL);
 	fz_assert(ret <= 0);
 	fz_assert(!ret == (h != NULL));

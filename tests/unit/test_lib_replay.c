@@ -196,6 +196,112 @@ static void test_daemon_still_recording(void **state)
 	assert_int_equal(res.frame_crc, crc);
 }
 
+/* One record: op, time, then `n` bytes of body. */
+static void put_rec(FILE *f, uint8_t op, uint64_t t, const void *body, size_t n)
+{
+	uint8_t h[9];
+
+	h[0] = op;
+	rdc_proto_put64(h + 1, t);
+	assert_int_equal(fwrite(h, 1, 9, f), 9);
+	if (n)
+		assert_int_equal(fwrite(body, 1, n, f), n);
+}
+
+/* A version 2 trace of `vram` bytes of VRAM, its header only. */
+static FILE *trace_head(uint32_t vram)
+{
+	uint8_t h[16];
+	FILE *f = fopen(trace, "wb");
+
+	assert_non_null(f);
+	memcpy(h, "RDCTRACE", 8);
+	rdc_proto_put32(h + 8, 2);
+	rdc_proto_put32(h + 12, vram);
+	assert_int_equal(fwrite(h, 1, 16, f), 16);
+	return f;
+}
+
+/* Replayed both ways, the trace is refused naming `record`. */
+static void refused(const char *record)
+{
+	struct rdc_replay_result res;
+	rdc_history *h = NULL;
+
+	assert_int_equal(rdc_replay_file(trace, &res, NULL), RDC_E_RANGE);
+	if (!strstr(rdc_last_error_detail(RDC_E_RANGE), record))
+		fail_msg("%s", rdc_last_error_detail(RDC_E_RANGE));
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_RANGE),
+			       "more than a replay allows"));
+	assert_int_equal(rdc_replay_history(trace, 0, 0, 4, 4, 0, &h, &res,
+					    NULL),
+			 RDC_E_RANGE);
+	assert_null(h);
+}
+
+/*
+ * 3. Tiny traces that ask for endless work are refused, naming the
+ * record: a STEP of 2^64-1 cycles (42 bytes), an END timed 2^63, a WAIT
+ * with a budget of 2^64-1, 300 POWER records (before: each ran with no
+ * end, or 100,000 POWER records for minutes).  The same as the seeds
+ * tests/fuzz/seeds/trace/bound-*.trace.
+ */
+static void test_bounded(void **state)
+{
+	uint8_t b[RDC_PROTO_WAIT_SIZE + 4];
+	struct rdc_proto_wait pw = { .budget = UINT64_MAX };
+	struct stat st;
+	FILE *f;
+
+	(void)state;
+	f = trace_head(16u << 20);
+	rdc_proto_put64(b, UINT64_MAX);
+	put_rec(f, 5, 0, b, 8);
+	put_rec(f, 7, 0, NULL, 0);
+	fclose(f);
+	assert_int_equal(stat(trace, &st), 0);
+	assert_int_equal(st.st_size, 42);
+	refused("record 1 (STEP at byte 16)");
+
+	f = trace_head(16u << 20);
+	put_rec(f, 7, 1ull << 63, NULL, 0);
+	fclose(f);
+	refused("record 1 (END at byte 16)");
+
+	f = trace_head(16u << 20);
+	rdc_proto_wait_encode(b, &pw);
+	rdc_proto_put32(b + RDC_PROTO_WAIT_SIZE, (uint32_t)RDC_E_TIMEOUT);
+	put_rec(f, 4, 0, b, sizeof(b));
+	put_rec(f, 7, 0, NULL, 0);
+	fclose(f);
+	refused("record 1 (WAIT at byte 16)");
+
+	f = trace_head(64u << 10); /* small chips */
+	for (int i = 0; i < 300; i++)
+		put_rec(f, 6, 0, NULL, 0);
+	put_rec(f, 7, 0, NULL, 0);
+	fclose(f);
+	refused("record 257 (POWER at byte 2320)");
+}
+
+/* 4. The recorder writes a step longer than a minute in pieces that replay. */
+static void test_long_step_recorded(void **state)
+{
+	const uint64_t minute = 60ull * RDC_DEFAULT_CORE_HZ;
+	struct rdc_replay_result res;
+	rdc_dev *dev;
+
+	(void)state;
+	assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
+	assert_int_equal(rdc_record_start(dev, trace), 0);
+	assert_int_equal(rdc_sim_step(dev, minute + 5), 0);
+	rdc_close(dev);
+	assert_int_equal(rdc_replay_file(trace, &res, NULL), 0);
+	assert_int_equal(res.records, 2);
+	assert_int_equal(res.time, minute + 5);
+	assert_int_equal(res.mismatches, 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -203,6 +309,9 @@ int main(void)
 						teardown),
 		cmocka_unit_test_setup_teardown(test_daemon_still_recording,
 						setup, teardown),
+		cmocka_unit_test_setup_teardown(test_bounded, setup, teardown),
+		cmocka_unit_test_setup_teardown(test_long_step_recorded, setup,
+						teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

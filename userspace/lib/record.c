@@ -65,6 +65,16 @@
 #define REC_MAX_VRAM_WRITE (256u << 20)
 /* Words a SUBMIT record carries at most (a command is 4097 at most). */
 #define REC_SUBMIT_MAX 65536u
+/*
+ * What one record may ask of the replay, as rdcd bounds a client's wait or
+ * step: one simulated minute of the default core clock (a STEP's cycles, a
+ * WAIT's budget, the time to an END).  The recorder writes longer steps in
+ * pieces of at most this.  And at most REC_MAX_POWER power cycles, each a
+ * new chip.  A trace that asks for more is refused (RDC_E_RANGE), naming
+ * the record.
+ */
+#define REC_MAX_CYCLES (60ull * RDC_DEFAULT_CORE_HZ)
+#define REC_MAX_POWER  256u
 
 /* Header flags (version 3 on). */
 #define REC_F_UNTIMED 0x1u /* no time: every record's is 0 */
@@ -130,11 +140,24 @@ static void rec_step_put(struct rdc_rec *r, uint64_t t, uint64_t cycles)
 	rec_put(r, b, sizeof(b));
 }
 
+/* STEP records for `cycles` from `t`, none longer than a replay takes. */
+static void rec_steps_put(struct rdc_rec *r, uint64_t t, uint64_t cycles)
+{
+	while (cycles) {
+		uint64_t k = RDC_MIN(cycles, REC_MAX_CYCLES);
+
+		rec_step_put(r, t, k);
+		if (!r->untimed)
+			t += k;
+		cycles -= k;
+	}
+}
+
 /* Time that moved outside the handle, as a step, before the next record. */
 static void rec_flush_moved(struct rdc_rec *r)
 {
 	if (r->moved && r->hw && r->hw->now > r->moved_from)
-		rec_step_put(r, r->moved_from, r->hw->now - r->moved_from);
+		rec_steps_put(r, r->moved_from, r->hw->now - r->moved_from);
 	r->moved = false;
 }
 
@@ -440,20 +463,18 @@ static int rec_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 static int rec_step(rdc_dev *dev, uint64_t cycles)
 {
 	struct rdc_rec *r = dev->priv;
-	uint8_t b[8];
 	int ret;
 
-	rdc_proto_put64(b, cycles);
 	if (!r->untimed) {
-		rec_head(r, REC_STEP);
-		rec_put(r, b, sizeof(b));
+		rec_flush_moved(r);
+		rec_steps_put(r, rec_now(r), cycles);
 		return REC_INNER(dev, r, step(dev, cycles));
 	}
 	/* a paced device refuses to step (RDC_E_NOSYS): nothing moved */
 	ret = REC_INNER(dev, r, step(dev, cycles));
 	if (!ret) {
-		rec_head(r, REC_STEP);
-		rec_put(r, b, sizeof(b));
+		rec_flush_moved(r);
+		rec_steps_put(r, 0, cycles);
 	}
 	return ret;
 }
@@ -673,6 +694,8 @@ struct replay {
 	uint32_t *words; /* a SUBMIT record's, REC_SUBMIT_MAX */
 	uint64_t off;	 /* bytes read */
 	bool cut;	 /* the file ended inside a record */
+	uint64_t at;	 /* where the record replaying began */
+	uint32_t powers; /* POWER records so far */
 	/* rdc_replay_history: the history to keep across power cycles */
 	const uint32_t *watch; /* x, y, w, h, flags; NULL: none */
 	rdc_history *hist;
@@ -695,6 +718,18 @@ static int rp_bad(struct replay *p, const char *why, uint64_t at)
 {
 	return rdc_err_detail(RDC_E_PARSE, "%s: %s at byte %" PRIu64, p->path,
 			      why, at);
+}
+
+/* A record that asks for more than a replay gives one: say which. */
+static int rp_too_much(struct replay *p, const char *op, const char *what,
+		       uint64_t asked, uint64_t max)
+{
+	return rdc_err_detail(RDC_E_RANGE,
+			      "%s: record %" PRIu64 " (%s at byte %" PRIu64
+			      "): %s %" PRIu64 ", more than a replay allows "
+			      "(%" PRIu64 ")",
+			      p->path, p->res->records + 1, op, p->at, what,
+			      asked, max);
 }
 
 static void rp_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
@@ -779,6 +814,9 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 		if (rp_get(p, b, sizeof(b)) ||
 		    rdc_proto_wait_decode(b, RDC_PROTO_WAIT_SIZE, &pw))
 			return RDC_E_PARSE;
+		if (pw.budget > REC_MAX_CYCLES)
+			return rp_too_much(p, "WAIT", "budget", pw.budget,
+					   REC_MAX_CYCLES);
 		w.budget = pw.budget;
 		w.needs_dp = pw.needs_dp;
 		for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++) {
@@ -797,10 +835,16 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 	case REC_STEP:
 		if (rp_get(p, b, 8))
 			return RDC_E_PARSE;
+		if (rdc_proto_get64(b) > REC_MAX_CYCLES)
+			return rp_too_much(p, "STEP", "cycles",
+					   rdc_proto_get64(b), REC_MAX_CYCLES);
 		if (be->step(p->dev, rdc_proto_get64(b)))
 			p->res->mismatches++;
 		return 0;
 	case REC_POWER:
+		if (++p->powers > REC_MAX_POWER)
+			return rp_too_much(p, "POWER", "power cycle", p->powers,
+					   REC_MAX_POWER);
 		return rp_open(p);
 	case REC_SUBMIT: {
 		uint32_t n;
@@ -916,12 +960,19 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 			break;
 		}
 		t = rdc_proto_get64(rec + 1);
+		p.at = at;
 		if (rec[0] == REC_END) {
 			struct rdc_hw *hw = rdc_sim_hw(p.dev);
 
 			/* untimed: the replay ends where its operations do */
 			if (p.untimed)
 				break;
+			if (hw->now < t && t - hw->now > REC_MAX_CYCLES) {
+				ret = rp_too_much(&p, "END",
+						  "cycles to its time",
+						  t - hw->now, REC_MAX_CYCLES);
+				break;
+			}
 			if (hw->now < t)
 				rdc_hw_run_until(hw, t);
 			if (hw->now != t)
