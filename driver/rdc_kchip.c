@@ -39,8 +39,8 @@
 #define RDC_KCHIP_SYNC_TRIES 64u
 /* Pacing ticks per frame, and the tick's bounds. */
 #define RDC_KCHIP_PACE_TICKS_PER_FRAME 4u
-#define RDC_KCHIP_PACE_MIN_NS	   (1 * NSEC_PER_MSEC)
-#define RDC_KCHIP_PACE_MAX_NS	   (50 * NSEC_PER_MSEC)
+#define RDC_KCHIP_PACE_MIN_NS	       (1 * NSEC_PER_MSEC)
+#define RDC_KCHIP_PACE_MAX_NS	       (50 * NSEC_PER_MSEC)
 /*
  * A tick this long before each TE edge, so that the tick at the edge itself
  * has little simulation left to do before the edge reaches GPIO consumers;
@@ -52,7 +52,7 @@
 #define RDC_KCHIP_PACE_MAX_LAG_NS (100 * NSEC_PER_MSEC)
 /* WAIT defaults: 10 s of wall time, 10 simulated seconds. */
 #define RDC_KCHIP_WAIT_TIMEOUT_MS 10000u
-#define RDC_KCHIP_WAIT_BUDGET_S   10u
+#define RDC_KCHIP_WAIT_BUDGET_S	  10u
 /* FBIO_WAITFORVSYNC gives up after this (a blanked screen never has one). */
 #define RDC_KCHIP_VSYNC_TIMEOUT_MS 1000u
 /* Frame snapshot: bytes copied per lock hold, attempts before one hold. */
@@ -122,8 +122,9 @@ static void rdc_kchip_vblank_locked(struct rdc_kchip *chip, u64 time)
 	if (!chip->hooks || !chip->hooks->vblank)
 		return;
 	chip->hooks->vblank(chip, chip->frames, time,
-			    chip->stepped ? ktime_get() :
-					    rdc_kchip_wall_of_locked(chip, time));
+			    chip->stepped ?
+				    ktime_get() :
+				    rdc_kchip_wall_of_locked(chip, time));
 }
 
 /* Under chip->lock, inside the simulation. */
@@ -139,7 +140,8 @@ static void rdc_kchip_trace(void *ctx, u64 time, unsigned int event, u32 a,
 	else if (event == RDC_TRACE_PINS && chip->gpio)
 		rdc_kgpio_event_locked(
 			chip->gpio,
-			chip->stepped ? 0 : rdc_kchip_wall_of_locked(chip, time),
+			chip->stepped ? 0 :
+					rdc_kchip_wall_of_locked(chip, time),
 			a);
 }
 
@@ -175,8 +177,8 @@ static void rdc_kchip_update_period(struct rdc_kchip *chip)
 		ns = div_u64(mul_u64_u32_div(fc, NSEC_PER_SEC,
 					     chip->hw.core_hz),
 			     RDC_KCHIP_PACE_TICKS_PER_FRAME);
-	WRITE_ONCE(chip->period_ns,
-		   clamp_t(u64, ns, RDC_KCHIP_PACE_MIN_NS, RDC_KCHIP_PACE_MAX_NS));
+	WRITE_ONCE(chip->period_ns, clamp_t(u64, ns, RDC_KCHIP_PACE_MIN_NS,
+					    RDC_KCHIP_PACE_MAX_NS));
 }
 
 /* Simulated time of the next TE edge, or RDC_NEVER (lock held). */
@@ -205,7 +207,8 @@ static ktime_t rdc_kchip_next_tick_locked(struct rdc_kchip *chip)
 
 	if (edge != RDC_NEVER) {
 		at = rdc_kchip_wall_of_locked(chip, edge);
-		if (ktime_after(ktime_sub_ns(at, RDC_KCHIP_EDGE_LEAD_NS), soonest))
+		if (ktime_after(ktime_sub_ns(at, RDC_KCHIP_EDGE_LEAD_NS),
+				soonest))
 			at = ktime_sub_ns(at, RDC_KCHIP_EDGE_LEAD_NS);
 		if (ktime_before(at, next))
 			next = at;
@@ -218,7 +221,8 @@ static void rdc_kchip_pace_work(struct work_struct *work)
 	struct rdc_kchip *chip =
 		container_of(work, struct rdc_kchip, pace_work);
 	struct rdc_hw *hw = &chip->hw;
-	u64 target, lag = rdc_kchip_ns_to_cycles(chip, RDC_KCHIP_PACE_MAX_LAG_NS);
+	u64 target,
+		lag = rdc_kchip_ns_to_cycles(chip, RDC_KCHIP_PACE_MAX_LAG_NS);
 	ktime_t now = ktime_get();
 
 	rdc_kchip_lock(chip);
@@ -270,7 +274,7 @@ static enum hrtimer_restart rdc_kchip_tick(struct hrtimer *t)
 }
 
 int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev, u32 vram_size,
-		    bool stepped)
+		   bool stepped)
 {
 	struct rdc_hw_config cfg = { .vram_size = vram_size };
 
@@ -394,7 +398,7 @@ void rdc_kchip_reg_write(struct rdc_kchip *chip, u32 reg, u32 val)
 
 /* The ioctl's wait as the core's (hw-sim/wait.c) */
 static void rdc_kchip_wait_conv(const struct rdcfb_wait *w, u64 budget,
-			    struct rdc_hw_wait *hw_w)
+				struct rdc_hw_wait *hw_w)
 {
 	unsigned int i;
 
@@ -419,7 +423,7 @@ static void rdc_kchip_wait_conv(const struct rdcfb_wait *w, u64 budget,
  * 1 not yet.  The order is the core's (hw-sim/wait.c).
  */
 static int rdc_kchip_wait_check(struct rdc_kchip *chip,
-			    const struct rdc_hw_wait *w)
+				const struct rdc_hw_wait *w)
 {
 	switch (rdc_hw_wait_check(&chip->hw, w)) {
 	case RDC_HW_WAIT_DONE:
@@ -490,11 +494,12 @@ static int rdc_kchip_wait_stepped(struct rdc_kchip *chip, struct rdc_hw_wait *w)
  * twice.
  */
 static int rdc_kchip_wait_paced(struct rdc_kchip *chip, struct rdc_hw_wait *w,
-			    u32 timeout_ms, bool interruptible)
+				u32 timeout_ms, bool interruptible)
 {
 	unsigned long deadline =
-		jiffies + msecs_to_jiffies(timeout_ms ? timeout_ms :
-							RDC_KCHIP_WAIT_TIMEOUT_MS);
+		jiffies + msecs_to_jiffies(timeout_ms ?
+						   timeout_ms :
+						   RDC_KCHIP_WAIT_TIMEOUT_MS);
 	u64 seen;
 	long left;
 	int ret;
@@ -532,10 +537,11 @@ static int rdc_kchip_wait_paced(struct rdc_kchip *chip, struct rdc_hw_wait *w,
 }
 
 static int rdc_kchip_wait_sig(struct rdc_kchip *chip,
-			       const struct rdcfb_wait *w, bool interruptible)
+			      const struct rdcfb_wait *w, bool interruptible)
 {
-	u64 budget = w->budget ? w->budget :
-				 (u64)RDC_KCHIP_WAIT_BUDGET_S * chip->hw.core_hz;
+	u64 budget = w->budget ?
+			     w->budget :
+			     (u64)RDC_KCHIP_WAIT_BUDGET_S * chip->hw.core_hz;
 	struct rdc_hw_wait hw_w;
 	unsigned int i;
 
@@ -553,7 +559,7 @@ static int rdc_kchip_wait_sig(struct rdc_kchip *chip,
 	rdc_kchip_wait_conv(w, budget, &hw_w);
 	return chip->stepped ? rdc_kchip_wait_stepped(chip, &hw_w) :
 			       rdc_kchip_wait_paced(chip, &hw_w, w->timeout_ms,
-						interruptible);
+						    interruptible);
 }
 
 int rdc_kchip_wait(struct rdc_kchip *chip, const struct rdcfb_wait *w)
@@ -582,8 +588,8 @@ int rdc_kchip_step(struct rdc_kchip *chip, u64 cycles)
 	 * gives the same result run in pieces as in one go.
 	 */
 	while (hw->now < end) {
-		rdc_hw_run_until(hw,
-				 min_t(u64, end, hw->now + RDC_KCHIP_RUN_SLICE));
+		rdc_hw_run_until(hw, min_t(u64, end,
+					   hw->now + RDC_KCHIP_RUN_SLICE));
 		rdc_kchip_irq_check_locked(chip);
 		err = rdc_kchip_pause(chip);
 		if (err)
@@ -696,7 +702,8 @@ int rdc_kchip_push_locked(struct rdc_kchip *chip, const u32 *words, u32 n)
 			if (++tries > RDC_KCHIP_SYNC_TRIES ||
 			    (hw->dp_status & RDC_STATUS_DP_HALTED))
 				return -ETIMEDOUT;
-			rdc_hw_run_until_idle(hw, hw->now + RDC_KCHIP_SYNC_SLICE);
+			rdc_hw_run_until_idle(hw,
+					      hw->now + RDC_KCHIP_SYNC_SLICE);
 			rdc_kchip_irq_check_locked(chip);
 			cond_resched();
 			continue;
@@ -789,8 +796,8 @@ int rdc_kchip_snapshot(struct rdc_kchip *chip)
 		}
 		bytes = (size_t)w * h * sizeof(u32);
 		for (off = 0; off < bytes; off += RDC_KCHIP_SNAP_CHUNK) {
-			size_t len =
-				min_t(size_t, RDC_KCHIP_SNAP_CHUNK, bytes - off);
+			size_t len = min_t(size_t, RDC_KCHIP_SNAP_CHUNK,
+					   bytes - off);
 
 			memcpy((u8 *)chip->snap + off, (const u8 *)f + off,
 			       len);
@@ -809,7 +816,8 @@ int rdc_kchip_snapshot(struct rdc_kchip *chip)
 			chip->snap_seq = seq;
 			chip->snap_w = w;
 			chip->snap_h = h;
-			chip->snap_crc = rdc_kchip_crc(chip->snap, (size_t)w * h);
+			chip->snap_crc =
+				rdc_kchip_crc(chip->snap, (size_t)w * h);
 			return 0;
 		}
 		rdc_kchip_unlock(chip);

@@ -174,8 +174,7 @@ void rdc_kgpio_deliver_now(struct rdc_kgpio *g);
 void rdc_kgpio_stats(struct rdc_kgpio *g, struct rdc_kchip_pin_stats *s);
 void rdc_kgpio_module_exit(void);
 #else
-static inline int rdc_kgpio_register(struct rdc_kchip *chip,
-				     struct device *dev)
+static inline int rdc_kgpio_register(struct rdc_kchip *chip, struct device *dev)
 {
 	return -ENODEV;
 }

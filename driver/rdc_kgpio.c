@@ -54,7 +54,7 @@ enum {
 	RDC_KGPIO_LINES,
 };
 
-#define RDC_KGPIO_PINS_HOST_IN  (RDC_PIN_TE | RDC_PIN_IRQ)
+#define RDC_KGPIO_PINS_HOST_IN	(RDC_PIN_TE | RDC_PIN_IRQ)
 #define RDC_KGPIO_PINS_HOST_OUT (RDC_PIN_RESET_N | RDC_PIN_BL_EN)
 /* Pin changes waiting for delivery (a power of two). */
 #define RDC_KGPIO_PIN_QUEUE 256u
@@ -92,10 +92,10 @@ struct rdc_kgpio {
 	u64 late_max_ns, late_sum_ns, late_n; /* ev: delivery after the edge */
 
 	struct irq_domain *domain;
-	struct list_head kept;	   /* on rdc_kgpio_kept once unbound */
-	u8 irq_type[RDC_KGPIO_LINES];  /* IRQ_TYPE_EDGE_* a consumer asked for */
-	struct mutex deliver_lock; /* one deliverer at a time, in order */
-	bool gone;		   /* deliver_lock: the chip is being removed */
+	struct list_head kept;	      /* on rdc_kgpio_kept once unbound */
+	u8 irq_type[RDC_KGPIO_LINES]; /* IRQ_TYPE_EDGE_* a consumer asked for */
+	struct mutex deliver_lock;    /* one deliverer at a time, in order */
+	bool gone; /* deliver_lock: the chip is being removed */
 	struct work_struct deliver_work;
 };
 
@@ -103,7 +103,8 @@ struct rdc_kgpio {
 #define rdc_kgpio_ev_lock(g, flags) \
 	rdc_kchip_spin_lock(&(g)->ev_lock, flags, (g)->ev_t0)
 #define rdc_kgpio_ev_unlock(g, flags) \
-	rdc_kchip_spin_unlock(&(g)->ev_lock, flags, (g)->ev_t0, &(g)->chip->irqoff)
+	rdc_kchip_spin_unlock(&(g)->ev_lock, flags, (g)->ev_t0, \
+			      &(g)->chip->irqoff)
 
 /* ---- Delivery ------------------------------------------------------------ */
 
@@ -138,8 +139,7 @@ void rdc_kgpio_event_locked(struct rdc_kgpio *g, ktime_t wall, u32 levels)
 	queue_work(system_highpri_wq, &g->deliver_work);
 }
 
-static void rdc_kgpio_edge(struct rdc_kgpio *g, unsigned int line,
-			    bool rising)
+static void rdc_kgpio_edge(struct rdc_kgpio *g, unsigned int line, bool rising)
 {
 	u8 type = READ_ONCE(g->irq_type[line]);
 	unsigned int irq;
@@ -183,7 +183,8 @@ static void rdc_kgpio_deliver(struct rdc_kgpio *g)
 			g->late_n++;
 		}
 		rdc_kgpio_ev_unlock(g, flags);
-		for (line = RDC_KGPIO_LINE_TE; line <= RDC_KGPIO_LINE_IRQ; line++)
+		for (line = RDC_KGPIO_LINE_TE; line <= RDC_KGPIO_LINE_IRQ;
+		     line++)
 			if (changed & BIT(line))
 				rdc_kgpio_edge(g, line, e.levels & BIT(line));
 	}
@@ -207,7 +208,7 @@ void rdc_kgpio_deliver_now(struct rdc_kgpio *g)
 static int rdc_kgpio_get_direction(struct gpio_chip *gc, unsigned int off)
 {
 	return BIT(off) & RDC_KGPIO_PINS_HOST_IN ? GPIO_LINE_DIRECTION_IN :
-					       GPIO_LINE_DIRECTION_OUT;
+						   GPIO_LINE_DIRECTION_OUT;
 }
 
 /* The lines' directions are the chip's: TE and IRQ cannot be driven. */
@@ -239,7 +240,7 @@ static void rdc_kgpio_set(struct gpio_chip *gc, unsigned int off, int val)
 }
 
 static int rdc_kgpio_direction_output(struct gpio_chip *gc, unsigned int off,
-				       int val)
+				      int val)
 {
 	if (!(BIT(off) & RDC_KGPIO_PINS_HOST_OUT))
 		return -EPERM;
@@ -288,7 +289,7 @@ static const struct irq_chip rdc_kgpio_irqchip = {
 
 /* Consumers' handlers run nested, in the deliverer's context. */
 static int rdc_kgpio_irq_map(struct irq_domain *d, unsigned int irq,
-			      irq_hw_number_t hwirq)
+			     irq_hw_number_t hwirq)
 {
 	struct rdc_kgpio *g = d->host_data;
 

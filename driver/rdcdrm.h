@@ -55,23 +55,23 @@ struct rdcdrm_device {
 
 	/* vbl_lock: what DRM's vblank code reads with interrupts off */
 	spinlock_t vbl_lock;
-	u64 vbl_frames;	 /* frames since load, as the chip counted them */
+	u64 vbl_frames;	  /* frames since load, as the chip counted them */
 	ktime_t vbl_time; /* wall time of the last vblank */
 
 	/* lock: the KMS state as the chip has it */
 	struct drm_pending_vblank_event *event; /* sent at the next vblank */
 	bool crtc_on;
 	bool crc_on;
-	u32 front;	       /* the scanout buffer shown (0 or 1) */
-	u32 fmt, stride;       /* of the primary plane, in VRAM */
-	u32 width, height;     /* of the mode */
-	struct drm_rect prev;  /* the last commit's damage, screen coords */
+	u32 front;	      /* the scanout buffer shown (0 or 1) */
+	u32 fmt, stride;      /* of the primary plane, in VRAM */
+	u32 width, height;    /* of the mode */
+	struct drm_rect prev; /* the last commit's damage, screen coords */
 	bool prev_valid;
-	bool clut_dirty;	       /* the CLUT needs loading at the next flush */
-	u32 cursor_buf;	       /* the cursor image shown (0 or 1) */
-	u64 flips;	       /* flips latched at a vblank */
-	u64 damage_cycles;     /* DP cycles spent uploading damage */
-	u32 *stage;	       /* RDCDRM_STAGE_WORDS */
+	bool clut_dirty;   /* the CLUT needs loading at the next flush */
+	u32 cursor_buf;	   /* the cursor image shown (0 or 1) */
+	u64 flips;	   /* flips latched at a vblank */
+	u64 damage_cycles; /* DP cycles spent uploading damage */
+	u32 *stage;	   /* RDCDRM_STAGE_WORDS */
 };
 
 static inline struct rdcdrm_device *rdcdrm_of(struct drm_device *drm)

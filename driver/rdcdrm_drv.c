@@ -204,8 +204,8 @@ static int __init rdcdrm_init(void)
 	if (ret)
 		return ret;
 	for (i = 0; i < devices; i++) {
-		rdcdrm_pdev[i] = platform_device_register_simple(RDCDRM_NAME,
-								 i, NULL, 0);
+		rdcdrm_pdev[i] = platform_device_register_simple(RDCDRM_NAME, i,
+								 NULL, 0);
 		if (IS_ERR(rdcdrm_pdev[i])) {
 			ret = PTR_ERR(rdcdrm_pdev[i]);
 			rdcdrm_pdev[i] = NULL;

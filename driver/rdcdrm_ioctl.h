@@ -121,9 +121,9 @@ struct drm_rdc_counters {
 	__u32 cmds;
 	__u32 last_cycles;
 	__u32 last_opcode;
-	__u32 fence;  /* RDC_REG_FENCE */
-	__u64 frames; /* frames scanned out since load */
-	__u64 flips;  /* KMS flips latched at a vblank since load */
+	__u32 fence;	     /* RDC_REG_FENCE */
+	__u64 frames;	     /* frames scanned out since load */
+	__u64 flips;	     /* KMS flips latched at a vblank since load */
 	__u64 damage_cycles; /* bus cycles spent uploading damage since load */
 };
 
@@ -136,8 +136,8 @@ struct drm_rdc_frame {
 	__u32 cap;    /* in pixels */
 	__u32 width;  /* out */
 	__u32 height; /* out */
-	__u32 crc32;  /* out: zlib CRC-32 of the pixels as little-endian bytes */
-	__u64 seq;    /* out: frame number; 0 = none completed yet (EAGAIN) */
+	__u32 crc32; /* out: zlib CRC-32 of the pixels as little-endian bytes */
+	__u64 seq;   /* out: frame number; 0 = none completed yet (EAGAIN) */
 };
 
 /* Read or write VRAM through the host aperture (as bus traffic). */

@@ -42,8 +42,8 @@
 #include "rdcdrm.h"
 
 /* The argument words ahead of HOST_BLIT's pixels. */
-#define RDCDRM_BLIT_ARGS 2u
-#define RDCDRM_LUT_SIZE	 256u
+#define RDCDRM_BLIT_ARGS   2u
+#define RDCDRM_LUT_SIZE	   256u
 #define RDCDRM_PREFERRED_W 1024
 #define RDCDRM_PREFERRED_H 768
 
@@ -234,9 +234,9 @@ static void rdcdrm_upload_rect(struct rdcdrm_device *rd, bool by_dp, u32 base,
 	wpr = DIV_ROUND_UP(bytes, sizeof(u32));
 	if (!by_dp || wpr > RDC_CMD_MAX_ARGS - RDCDRM_BLIT_ARGS) {
 		for (i = 0; i < h; i++)
-			rdc_hw_vram_write(hw, base + (y + i) * rd->stride + x * cpp,
-					  src + (size_t)(y + i) * pitch + x * cpp,
-					  bytes);
+			rdc_hw_vram_write(
+				hw, base + (y + i) * rd->stride + x * cpp,
+				src + (size_t)(y + i) * pitch + x * cpp, bytes);
 		return;
 	}
 	max_rows = (RDC_CMD_MAX_ARGS - RDCDRM_BLIT_ARGS) / wpr;
@@ -268,8 +268,8 @@ static void rdcdrm_upload_rect(struct rdcdrm_device *rd, bool by_dp, u32 base,
 static int rdcdrm_plane_check(struct drm_plane *plane,
 			      struct drm_atomic_state *state, bool cursor)
 {
-	struct drm_plane_state *new = drm_atomic_get_new_plane_state(state,
-								      plane);
+	struct drm_plane_state *new =
+		drm_atomic_get_new_plane_state(state, plane);
 	struct drm_crtc_state *crtc_state;
 	int ret;
 
@@ -304,8 +304,8 @@ static int rdcdrm_primary_check(struct drm_plane *plane,
 static void rdcdrm_primary_update(struct drm_plane *plane,
 				  struct drm_atomic_state *state)
 {
-	struct drm_plane_state *new = drm_atomic_get_new_plane_state(state,
-								      plane);
+	struct drm_plane_state *new =
+		drm_atomic_get_new_plane_state(state, plane);
 	struct drm_shadow_plane_state *shadow = to_drm_shadow_plane_state(new);
 	struct rdcdrm_device *rd = rdcdrm_of(plane->dev);
 	struct drm_framebuffer *fb = new->fb;
@@ -353,9 +353,11 @@ static void rdcdrm_primary_update(struct drm_plane *plane,
 	} else {
 		/* the back buffer missed the last commit's damage too */
 		rdcdrm_upload_rect(rd, by_dp, base, src, pitch, cpp, rd->prev);
-		drm_atomic_helper_damage_iter_init(&iter,
-			drm_atomic_get_old_plane_state(state, plane), new);
-		drm_atomic_for_each_plane_damage(&iter, &clip) {
+		drm_atomic_helper_damage_iter_init(
+			&iter, drm_atomic_get_old_plane_state(state, plane),
+			new);
+		drm_atomic_for_each_plane_damage(&iter, &clip)
+		{
 			drm_rect_translate(&clip, -(new->src.x1 >> 16),
 					   -(new->src.y1 >> 16));
 			rdcdrm_upload_rect(rd, by_dp, base, src, pitch, cpp,
@@ -413,8 +415,9 @@ static void rdcdrm_cursor_show(struct rdcdrm_device *rd, bool on)
 	u32 ctl = rdc_hw_read(hw, RDC_REG_CONTROL) &
 		  ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
 
-	rdc_hw_write(hw, RDC_REG_CONTROL, on ? ctl | RDC_CONTROL_CURSOR_EN :
-					       ctl & ~RDC_CONTROL_CURSOR_EN);
+	rdc_hw_write(hw, RDC_REG_CONTROL,
+		     on ? ctl | RDC_CONTROL_CURSOR_EN :
+			  ctl & ~RDC_CONTROL_CURSOR_EN);
 }
 
 /*
@@ -425,10 +428,10 @@ static void rdcdrm_cursor_show(struct rdcdrm_device *rd, bool on)
 static void rdcdrm_cursor_update(struct drm_plane *plane,
 				 struct drm_atomic_state *state)
 {
-	struct drm_plane_state *new = drm_atomic_get_new_plane_state(state,
-								      plane);
-	struct drm_plane_state *old = drm_atomic_get_old_plane_state(state,
-								      plane);
+	struct drm_plane_state *new =
+		drm_atomic_get_new_plane_state(state, plane);
+	struct drm_plane_state *old =
+		drm_atomic_get_old_plane_state(state, plane);
 	struct drm_shadow_plane_state *shadow = to_drm_shadow_plane_state(new);
 	struct rdcdrm_device *rd = rdcdrm_of(plane->dev);
 	struct drm_framebuffer *fb = new->fb;
@@ -458,7 +461,8 @@ static void rdcdrm_cursor_update(struct drm_plane *plane,
 	    old->src_y != new->src_y || old->src_w != new->src_w ||
 	    old->src_h != new->src_h) {
 		rd->cursor_buf ^= 1;
-		base = RDCDRM_CURSOR_BASE + rd->cursor_buf * RDCDRM_CURSOR_BYTES;
+		base = RDCDRM_CURSOR_BASE +
+		       rd->cursor_buf * RDCDRM_CURSOR_BYTES;
 		for (y = 0; y < RDCDRM_CURSOR_SIZE; y++) {
 			memset(row, 0, sizeof(row));
 			if (y < h)
@@ -507,8 +511,8 @@ static const struct drm_plane_helper_funcs rdcdrm_cursor_helpers = {
 static void rdcdrm_load_clut(struct rdcdrm_device *rd,
 			     const struct drm_crtc_state *cs)
 {
-	const struct drm_color_lut *lut =
-		cs->gamma_lut ? cs->gamma_lut->data : NULL;
+	const struct drm_color_lut *lut = cs->gamma_lut ? cs->gamma_lut->data :
+							  NULL;
 	struct rdc_hw *hw = &rd->chip.hw;
 	u32 i, r, g, b, ctl;
 
@@ -645,12 +649,10 @@ static void rdcdrm_crtc_flush(struct drm_crtc *crtc,
 
 	cs->event = NULL;
 	rdc_kchip_lock(&rd->chip);
-	if (cs->active &&
-	    (rd->clut_dirty || cs->color_mgmt_changed ||
-	     drm_atomic_crtc_needs_modeset(cs)))
+	if (cs->active && (rd->clut_dirty || cs->color_mgmt_changed ||
+			   drm_atomic_crtc_needs_modeset(cs)))
 		rdcdrm_load_clut(rd, cs);
-	if (ev && rd->crtc_on && !rd->event &&
-	    !drm_crtc_vblank_get(crtc)) {
+	if (ev && rd->crtc_on && !rd->event && !drm_crtc_vblank_get(crtc)) {
 		rd->event = ev;
 		armed = true;
 		ev = NULL;
@@ -895,10 +897,11 @@ int rdcdrm_kms_init(struct rdcdrm_device *rd)
 	/* the counter is the chip's: 32 bits of its frame count */
 	drm->max_vblank_count = U32_MAX;
 
-	ret = drm_universal_plane_init(drm, &rd->primary, 1, &rdcdrm_plane_funcs,
+	ret = drm_universal_plane_init(drm, &rd->primary, 1,
+				       &rdcdrm_plane_funcs,
 				       rdcdrm_primary_formats,
-				       ARRAY_SIZE(rdcdrm_primary_formats),
-				       NULL, DRM_PLANE_TYPE_PRIMARY, NULL);
+				       ARRAY_SIZE(rdcdrm_primary_formats), NULL,
+				       DRM_PLANE_TYPE_PRIMARY, NULL);
 	if (ret)
 		return ret;
 	drm_plane_helper_add(&rd->primary, &rdcdrm_primary_helpers);
@@ -907,8 +910,8 @@ int rdcdrm_kms_init(struct rdcdrm_device *rd)
 #ifdef RDC_REG_CURSOR_CTRL
 	ret = drm_universal_plane_init(drm, &rd->cursor, 1, &rdcdrm_plane_funcs,
 				       rdcdrm_cursor_formats,
-				       ARRAY_SIZE(rdcdrm_cursor_formats),
-				       NULL, DRM_PLANE_TYPE_CURSOR, NULL);
+				       ARRAY_SIZE(rdcdrm_cursor_formats), NULL,
+				       DRM_PLANE_TYPE_CURSOR, NULL);
 	if (ret)
 		return ret;
 	drm_plane_helper_add(&rd->cursor, &rdcdrm_cursor_helpers);

@@ -78,14 +78,12 @@ static int rdcdrm_wait(struct rdcdrm_device *rd, const struct drm_rdc_wait *dw)
 	return rdc_kchip_wait(&rd->chip, &w);
 }
 
-int rdcdrm_ioctl_wait(struct drm_device *drm, void *data,
-		      struct drm_file *file)
+int rdcdrm_ioctl_wait(struct drm_device *drm, void *data, struct drm_file *file)
 {
 	return rdcdrm_wait(rdcdrm_of(drm), data);
 }
 
-int rdcdrm_ioctl_step(struct drm_device *drm, void *data,
-		      struct drm_file *file)
+int rdcdrm_ioctl_step(struct drm_device *drm, void *data, struct drm_file *file)
 {
 	struct drm_rdc_step *st = data;
 
@@ -150,8 +148,7 @@ int rdcdrm_ioctl_frame(struct drm_device *drm, void *data,
 	return ret;
 }
 
-int rdcdrm_ioctl_vram(struct drm_device *drm, void *data,
-		      struct drm_file *file)
+int rdcdrm_ioctl_vram(struct drm_device *drm, void *data, struct drm_file *file)
 {
 	struct rdcdrm_device *rd = rdcdrm_of(drm);
 	struct rdc_kchip *chip = &rd->chip;
@@ -205,8 +202,7 @@ static int rdcdrm_submit_gem(struct rdcdrm_device *rd, struct drm_file *file,
 	struct drm_rdc_wait idle = {
 		.term[0] = { .kind = DRM_RDC_WAIT_EQ,
 			     .reg = RDC_REG_STATUS,
-			     .mask = RDC_STATUS_DP_BUSY |
-				     RDC_STATUS_FIFO_EMPTY,
+			     .mask = RDC_STATUS_DP_BUSY | RDC_STATUS_FIFO_EMPTY,
 			     .value = RDC_STATUS_FIFO_EMPTY },
 		.flags = DRM_RDC_WAIT_NEEDS_DP,
 	};

@@ -304,13 +304,15 @@ static bool rdcfb_q_begin(struct rdc_kchip *chip, struct rdcfb_qw *q,
 		return false;
 	rdc_kchip_spin_lock(&oq->lock, q->flags, oq->t0);
 	if (RDCFB_OPQ_WORDS - oq->count < need && can_wait) {
-		rdc_kchip_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
+		rdc_kchip_spin_unlock(&oq->lock, q->flags, oq->t0,
+				      &chip->irqoff);
 		rdcfb_q_apply(chip);
 		rdc_kchip_spin_lock(&oq->lock, q->flags, oq->t0);
 	}
 	if (RDCFB_OPQ_WORDS - oq->count < need) {
 		oq->dropped++;
-		rdc_kchip_spin_unlock(&oq->lock, q->flags, oq->t0, &chip->irqoff);
+		rdc_kchip_spin_unlock(&oq->lock, q->flags, oq->t0,
+				      &chip->irqoff);
 		return false;
 	}
 	q->start = oq->head + oq->count;

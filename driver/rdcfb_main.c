@@ -180,8 +180,7 @@ static int rdcfb_probe(struct platform_device *pdev)
 	ret = rdcfb_opq_init(rd);
 	if (ret)
 		goto err_chip;
-	ret = rdc_kchip_init(chip, &pdev->dev, rdcfb_vram_bytes,
-			     rdcfb_stepped);
+	ret = rdc_kchip_init(chip, &pdev->dev, rdcfb_vram_bytes, rdcfb_stepped);
 	if (ret)
 		goto err_opq;
 	info = framebuffer_alloc(sizeof(*par), &pdev->dev);

@@ -473,7 +473,7 @@ struct rdc_port_window {
 	uint8_t *vram;
 	uint64_t t, lim;
 	uint32_t row;
-	bool open; /* false: a fetch window holds the bus now */
+	bool open;     /* false: a fetch window holds the bus now */
 	bool scan_hit; /* a write reached lines scanout has not converted */
 };
 

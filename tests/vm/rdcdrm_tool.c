@@ -60,17 +60,17 @@
 #include <drm_fourcc.h>
 #endif
 
-#define WAIT_MS	     10000
-#define POLL_MS	     20
-#define DAMAGE_X     100
-#define DAMAGE_Y     60
-#define DAMAGE_W     64
-#define DAMAGE_H     32
-#define VBLANKS	     30
-#define CURSOR_SIZE  64
-#define CURSOR_X     200
-#define CURSOR_Y     150
-#define BAD_REG	     0x401u
+#define WAIT_MS	    10000
+#define POLL_MS	    20
+#define DAMAGE_X    100
+#define DAMAGE_Y    60
+#define DAMAGE_W    64
+#define DAMAGE_H    32
+#define VBLANKS	    30
+#define CURSOR_SIZE 64
+#define CURSOR_X    200
+#define CURSOR_Y    150
+#define BAD_REG	    0x401u
 
 static int failures;
 
@@ -130,7 +130,8 @@ static int find_pipe(int fd, struct pipe_info *p, int w, int h)
 	if (!c)
 		return -1;
 	for (i = 0; i < c->count_modes; i++) {
-		if (w ? (c->modes[i].hdisplay == w && c->modes[i].vdisplay == h) :
+		if (w ? (c->modes[i].hdisplay == w &&
+			 c->modes[i].vdisplay == h) :
 			(c->modes[i].type & DRM_MODE_TYPE_PREFERRED)) {
 			p->mode = c->modes[i];
 			found = 1;
@@ -225,8 +226,8 @@ typedef uint32_t (*expect_fn)(uint32_t x, uint32_t y, void *ctx);
  * Wait until the frame is WxH and every pixel is what `want` says; print
  * the first difference on failure.
  */
-static int wait_frame(int fd, uint32_t w, uint32_t h, expect_fn want,
-		      void *ctx, const char *what)
+static int wait_frame(int fd, uint32_t w, uint32_t h, expect_fn want, void *ctx,
+		      const char *what)
 {
 	uint64_t end = now_ms() + WAIT_MS;
 	struct drm_rdc_frame f;
@@ -377,7 +378,8 @@ static void check_bad_input(int fd)
 	struct drm_rdc_wait w = { 0 };
 	uint32_t bad[] = { RDC_CMD(0xff, 0, 0) };
 	uint32_t fill[] = {
-		RDC_CMD(RDC_OP_FENCE, 0, 1), 0x5eed,
+		RDC_CMD(RDC_OP_FENCE, 0, 1),
+		0x5eed,
 	};
 
 	if (!drmIoctl(fd, DRM_IOCTL_RDC_REG_READ, &r) || errno != EINVAL)
@@ -450,9 +452,13 @@ static void check_submit_gem(int fd)
 {
 	struct dumb d;
 	uint32_t words[] = {
-		RDC_CMD(RDC_OP_SET_FG, 0, 1), 0x00123456,
-		RDC_CMD(RDC_OP_SET_ROP, 0, 1), RDC_ROP_COPY,
-		RDC_CMD(RDC_OP_FILL_RECT, 0, 2), RDC_XY(10, 20), RDC_WH(30, 40),
+		RDC_CMD(RDC_OP_SET_FG, 0, 1),
+		0x00123456,
+		RDC_CMD(RDC_OP_SET_ROP, 0, 1),
+		RDC_ROP_COPY,
+		RDC_CMD(RDC_OP_FILL_RECT, 0, 2),
+		RDC_XY(10, 20),
+		RDC_WH(30, 40),
 	};
 	struct drm_rdc_submit s = {
 		.words = (uintptr_t)words,
@@ -478,10 +484,10 @@ static void check_submit_gem(int fd)
 			for (x = 0; x < d.w; x++) {
 				v = ((uint32_t *)(d.map + y * d.pitch))[x] &
 				    0xffffff;
-				if (v != (x >= 10 && x < 40 && y >= 20 &&
-							  y < 60 ?
-						  0x123456u :
-						  0x111111u))
+				if (v !=
+				    (x >= 10 && x < 40 && y >= 20 && y < 60 ?
+					     0x123456u :
+					     0x111111u))
 					bad++;
 			}
 		if (bad)
@@ -515,8 +521,8 @@ static int cmd_kms(const char *dev)
 		FAIL("no connector with a preferred mode\n");
 		return 1;
 	}
-	printf("preferred mode %s %ux%u %u kHz\n", p.mode.name,
-	       p.mode.hdisplay, p.mode.vdisplay, p.mode.clock);
+	printf("preferred mode %s %ux%u %u kHz\n", p.mode.name, p.mode.hdisplay,
+	       p.mode.vdisplay, p.mode.clock);
 	if (p.mode.hdisplay != 1024 || p.mode.vdisplay != 768)
 		FAIL("1024x768 is not the preferred mode\n");
 	if (dumb_new(fd, &a, p.mode.hdisplay, p.mode.vdisplay,
@@ -754,8 +760,7 @@ static int cmd_formats(const char *dev)
 			continue;
 		}
 		fill_fmt(&d);
-		if (!set_crtc(fd, &p, d.fb) &&
-		    cases[i].format != DRM_FORMAT_C8)
+		if (!set_crtc(fd, &p, d.fb) && cases[i].format != DRM_FORMAT_C8)
 			gamma_identity(fd, p.crtc);
 		if (cases[i].format == DRM_FORMAT_C8) {
 			int k;
@@ -826,9 +831,9 @@ static uint32_t want_cursor(uint32_t x, uint32_t y, void *ctx)
 
 	if (x >= CURSOR_X && x < CURSOR_X + CURSOR_SIZE && y >= CURSOR_Y &&
 	    y < CURSOR_Y + CURSOR_SIZE)
-		return blend(c->img[(y - CURSOR_Y) * CURSOR_SIZE +
-				    (x - CURSOR_X)],
-			     bg);
+		return blend(
+			c->img[(y - CURSOR_Y) * CURSOR_SIZE + (x - CURSOR_X)],
+			bg);
 	return bg;
 }
 
@@ -918,8 +923,7 @@ static int cmd_crc(const char *dev, const char *dir)
 		/* a still picture: every frame's CRC is the FRAME ioctl's */
 		if (crc == f.crc32)
 			matched++;
-		printf("crc frame %u %08x (FRAME %08x)\n", frame, crc,
-		       f.crc32);
+		printf("crc frame %u %08x (FRAME %08x)\n", frame, crc, f.crc32);
 	}
 	close(dfd);
 	if (matched != 10)
@@ -944,7 +948,8 @@ static uint32_t rnd(void)
 static uint32_t rnd_word(void)
 {
 	static const uint32_t edge[] = {
-		0, 1, 3, 4, 0xff, 0x3ff, 0x400, 0xffff, 0x10000, 0x7fffffff,
+		0,	     1,		  3,	       4,	  0xff,
+		0x3ff,	     0x400,	  0xffff,      0x10000,	  0x7fffffff,
 		0x80000000u, 0xfffffffcu, 0xffffffffu, 32u << 20, 16u << 20,
 	};
 
@@ -1102,8 +1107,7 @@ static int cmd_stepped(const char *dev)
 	free(px);
 	printf("now %llu frames %llu flips %llu damage %llu busy %llu crc %08x\n",
 	       (unsigned long long)c.now, (unsigned long long)c.frames,
-	       (unsigned long long)c.flips,
-	       (unsigned long long)c.damage_cycles,
+	       (unsigned long long)c.flips, (unsigned long long)c.damage_cycles,
 	       (unsigned long long)c.busy, f.crc32);
 	close(fd);
 	return failures ? 1 : 0;
