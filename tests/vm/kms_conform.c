@@ -100,6 +100,7 @@ struct kms {
 	uint32_t *frame; /* w * h, the last grab */
 	uint64_t max_w, max_h;
 	bool has_c8;
+	bool stepped; /* rdcdrm's clock=stepped */
 };
 
 struct dumb {
@@ -248,6 +249,18 @@ static int kms_setup(struct kms *k)
 		return 1;
 	k->max_w = res->max_width;
 	k->max_h = res->max_height;
+	{
+		FILE *f = fopen("/sys/module/rdcdrm/parameters/clock", "r");
+		char clk[16] = "";
+
+		if (f) {
+			if (!fgets(clk, sizeof(clk), f))
+				clk[0] = 0;
+			fclose(f);
+		}
+		k->stepped = !strncmp(clk, "stepped", 7);
+		printf("# clock %s\n", k->stepped ? "stepped" : "paced");
+	}
 	for (int i = 0; i < res->count_connectors && !k->conn_id; i++) {
 		conn = drmModeGetConnector(k->fd, res->connectors[i]);
 		if (conn && conn->connection == DRM_MODE_CONNECTED &&
@@ -968,10 +981,22 @@ static int st_flip(struct kms *k, enum flip_kind kind)
 		       "for only after it (the paced clock catching up, or "
 		       "this program late), the others before it\n",
 		       late);
-	tap(!ret && missed == 0,
-	    "%s: 0 missed (each event's sequence the previous + 1): %u "
-	    "missed, sequences %u..%u",
-	    name, missed, first, prev);
+	/*
+	 * On the paced clock whether a flip makes its vblank depends on
+	 * how fast this machine simulates the upload against wall time
+	 * (under QEMU's TCG a whole 320x200 frame takes longer than a
+	 * frame): a figure, not a verdict.  On the stepped clock wall time
+	 * plays no part, and every flip must make the next vblank.
+	 */
+	if (k->stepped)
+		tap(!ret && missed == 0,
+		    "%s: 0 missed (each event's sequence the previous + "
+		    "1): %u missed, sequences %u..%u",
+		    name, missed, first, prev);
+	else
+		printf("#   %s: %u vblanks missed over %u flips on the paced "
+		       "clock (a figure), sequences %u..%u\n",
+		       name, missed, events, first, prev);
 	tap(!ret && torn == 0,
 	    "%s: 0 torn (every frame one buffer's picture): %u torn", name,
 	    torn);
@@ -979,11 +1004,12 @@ static int st_flip(struct kms *k, enum flip_kind kind)
 	    "%s: the chip latched one flip an event (COUNTERS.flips %" PRIu64
 	    " -> %" PRIu64 ")",
 	    name, flips_first, flips_last);
-	tap(!ret && off0 == off1 && prev - first + 1 == events,
-	    "%s: %u events, and the chip's frame counter advanced %" PRId64
-	    " frames over them (vblank offset %" PRId64 " -> %" PRId64 ")",
-	    name, events, (int64_t)(prev - first) + 1 + (off1 - off0), off0,
-	    off1);
+	tap(!ret && off0 == off1 && (!k->stepped || prev - first + 1 == events),
+	    "%s: %u events over %u vblanks, and the chip's frame counter "
+	    "advanced %" PRId64 " frames over them (vblank offset %" PRId64
+	    " -> %" PRId64 ")",
+	    name, events, prev - first + 1,
+	    (int64_t)(prev - first) + 1 + (off1 - off0), off0, off1);
 out:
 	if (damage)
 		drmModeDestroyPropertyBlob(k->fd, damage);
