@@ -486,9 +486,9 @@ static bool rdcd_lis_socket(const struct rdcd *d, int lis)
 /*
  * Silent connections never lock anyone out.  Beyond RDCD_MAX_PENDING on a
  * listener, what the others have sent is read first (it may be their
- * HELLO); then the oldest that has been silent past RDCD_HELLO_GRACE_MS
- * goes, or else the newcomer `c`, which has nothing waiting either: a
- * client whose HELLO is on its way is not thrown out by a flood.
+ * HELLO, and the newcomer's was read as it came); then the oldest that
+ * has been silent past RDCD_HELLO_GRACE_MS goes, or if all are younger
+ * the oldest with nothing waiting: never one whose HELLO has arrived.
  */
 static void rdcd_admit(struct rdcd *d, struct rdcd_client *c)
 {
@@ -517,13 +517,19 @@ static void rdcd_admit(struct rdcd *d, struct rdcd_client *c)
 				 "client %u (%s)",
 				 RDCD_MAX_PENDING, victim->id, victim->peer);
 	} else {
-		victim = !c->hello && !c->dead && !rdcd_have_request(c) ?
-				 c :
-				 (struct rdcd_client *)oldest;
+		/* all younger: the oldest with nothing waiting, so that the
+		 * newest, whose HELLO may be on its way, stays */
+		for (struct rdcd_client *o = d->clients; o; o = o->next)
+			if (o != c && !o->dead && !o->hello &&
+			    o->lis == c->lis && !rdcd_have_request(o) &&
+			    (!victim || o->conn_ns < victim->conn_ns))
+				victim = o;
+		if (!victim)
+			victim = (struct rdcd_client *)oldest;
 		rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
 				 "%u connections without HELLO on one "
 				 "listener, none silent for %u ms: closing "
-				 "client %u (%s)",
+				 "the oldest, client %u (%s)",
 				 RDCD_MAX_PENDING, RDCD_HELLO_GRACE_MS,
 				 victim->id, victim->peer);
 	}
