@@ -761,6 +761,29 @@ static void test_connect_flood(void **state)
 	assert_int_equal(netd_stop(&d), 0);
 }
 
+/*
+ * 8. --token takes a regular file only: a FIFO is refused at once (it
+ * blocked start-up forever), a directory by what it is (it was "empty").
+ */
+static void test_token_not_regular(void **state)
+{
+	char fifo[64], log[8192];
+	const char *a1[] = { "--listen", "unix:", "--token", fifo, NULL };
+	const char *a2[] = { "--listen", "unix:", "--token", "/tmp", NULL };
+
+	(void)state;
+	snprintf(fifo, sizeof(fifo), "/tmp/rdcd-hfifo-%d", (int)getpid());
+	unlink(fifo);
+	assert_int_equal(mkfifo(fifo, 0600), 0);
+	assert_int_equal(run_rdcd(a1, log, sizeof(log)), 1);
+	if (!strstr(log, "a FIFO, not a regular file"))
+		fail_msg("%s", log);
+	unlink(fifo);
+	assert_int_equal(run_rdcd(a2, log, sizeof(log)), 1);
+	if (!strstr(log, "--token /tmp: a directory, not a regular file"))
+		fail_msg("%s", log);
+}
+
 /* 5. unix:PATH replaces a stale socket only. */
 static void test_unix_path_kept(void **state)
 {
@@ -907,6 +930,7 @@ int main(void)
 		cmocka_unit_test(test_ipv6_text),
 		cmocka_unit_test(test_stalled_subscribers),
 		cmocka_unit_test(test_connect_flood),
+		cmocka_unit_test(test_token_not_regular),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -476,26 +476,63 @@ static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 	}
 }
 
+/* What a file that is not a regular one is, for a refusal. */
+static const char *rdcd_file_kind(mode_t m)
+{
+	return S_ISDIR(m)  ? "a directory" :
+	       S_ISFIFO(m) ? "a FIFO" :
+	       S_ISSOCK(m) ? "a socket" :
+	       S_ISCHR(m)  ? "a character device" :
+	       S_ISBLK(m)  ? "a block device" :
+			     "of another kind";
+}
+
 /*
  * The token: the file's contents without trailing newlines and spaces,
  * at most RDC_PROTO_MAX_TOKEN bytes.  A longer file is refused, not cut:
- * clients send the whole file.
+ * clients send the whole file.  Only a regular file: it is opened without
+ * blocking (a FIFO would wait for a writer forever) and anything else is
+ * refused by what it is.
  */
 static int rdcd_read_token(struct rdcd *d, const char *path)
 {
 	uint8_t buf[RDC_PROTO_MAX_TOKEN + 4096];
-	FILE *f = fopen(path, "rb");
+	int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+	struct stat st;
+	size_t n = 0;
 	bool more;
-	size_t n;
 
-	if (!f) {
+	if (fd < 0 || fstat(fd, &st)) {
 		rdcd_log(d, RDCD_LOG_ERR, "--token %s: %s", path,
 			 strerror(errno));
+		if (fd >= 0)
+			close(fd);
 		return -1;
 	}
-	n = fread(buf, 1, sizeof(buf), f);
-	more = n == sizeof(buf) && fgetc(f) != EOF;
-	fclose(f);
+	if (!S_ISREG(st.st_mode)) {
+		rdcd_log(d, RDCD_LOG_ERR,
+			 "--token %s: %s, not a regular file: refused", path,
+			 rdcd_file_kind(st.st_mode));
+		close(fd);
+		return -1;
+	}
+	for (;;) {
+		ssize_t k = read(fd, buf + n, sizeof(buf) - n);
+
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k < 0) {
+			rdcd_log(d, RDCD_LOG_ERR, "--token %s: %s", path,
+				 strerror(errno));
+			close(fd);
+			return -1;
+		}
+		n += (size_t)k;
+		if (!k || n == sizeof(buf))
+			break;
+	}
+	more = n == sizeof(buf) && read(fd, &(uint8_t){ 0 }, 1) > 0;
+	close(fd);
 	while (n &&
 	       (buf[n - 1] == '\n' || buf[n - 1] == '\r' || buf[n - 1] == ' '))
 		n--;
