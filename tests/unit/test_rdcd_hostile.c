@@ -121,7 +121,9 @@ static int run_rdcd(const char *const *args, char *log, size_t cap)
 		if (waitpid(pid, &st, WNOHANG) == pid)
 			break;
 		if (waited > NETD_START_MS) {
-			kill(pid, SIGTERM);
+			/* SIGKILL: one blocked before its handlers may hold
+			 * SIGTERM for ever */
+			kill(pid, SIGKILL);
 			waitpid(pid, &st, 0);
 			break;
 		}
