@@ -29,9 +29,6 @@
  */
 #define RDCD_MAX_PENDING 8
 #define RDCD_HELLO_MS	 5000
-/* ...but one that has sent nothing for less than this is not evicted:
- * the newcomer goes instead (a HELLO may be on its way). */
-#define RDCD_HELLO_GRACE_MS 200
 /* Failed tokens: after RDC_AUTH_FREE_FAILS from one address, that address
  * is refused for a second, doubling at each further failure up to a minute
  * (rdc_auth_*, rdc_server.h); failed-token log lines are kept to one a
@@ -75,21 +72,10 @@ enum rdcd_log_level {
 	RDCD_LOG_DEBUG
 };
 
-/* One encoding of one frame's pixels, shared by the subscribers that
- * asked for that encoding (serve.c): freed with its last reference. */
-struct rdcd_shared {
-	unsigned int refs;
-	uint32_t enc; /* what it holds (RLE may fall back to RAW) */
-	size_t len;
-	uint8_t data[];
-};
-
-/* A message queued for a client: data[0..hlen), then shared's bytes. */
 struct rdcd_obuf {
 	struct rdcd_obuf *next;
-	size_t len, off, hlen;
+	size_t len, off;
 	bool frame;
-	struct rdcd_shared *shared; /* or NULL: all of it is in data */
 	uint8_t data[];
 };
 
@@ -197,9 +183,6 @@ struct rdcd {
 	int log_level;
 	uint32_t last_irq;
 	uint64_t frames;
-	/* subscribers' frame encodings done, frames queued and dropped
-	 * (logged at exit) */
-	uint64_t frame_encodings, sub_queued, sub_dropped;
 	/* the chip converts frames: a client or a sink may look (rdcd_watch) */
 	bool watched;
 

@@ -22,7 +22,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/socket.h>
-#include <sys/uio.h>
 #include <unistd.h>
 
 #include "rdcd.h"
@@ -106,10 +105,8 @@ static struct rdcd_obuf *rdcd_obuf_new(size_t payload)
 
 	if (b) {
 		b->len = RDC_PROTO_HDR_SIZE + payload;
-		b->hlen = b->len;
 		b->off = 0;
 		b->frame = false;
-		b->shared = NULL;
 	}
 	return b;
 }
@@ -156,7 +153,6 @@ static struct rdcd_obuf *rdcd_frame_msg(const uint32_t *pix,
 	f->encoding = enc;
 	rdc_proto_frame_hdr_encode(b->data + RDC_PROTO_HDR_SIZE, f);
 	b->len = RDC_PROTO_HDR_SIZE + RDC_PROTO_FRAME_HDR + n;
-	b->hlen = b->len;
 	if (n < raw) {
 		struct rdcd_obuf *s = realloc(b, sizeof(*b) + b->len);
 
@@ -175,74 +171,13 @@ static void rdcd_prev_free(struct rdcd *d, struct rdcd_client *c)
 	c->prev_bytes = 0;
 }
 
-/* The header bytes of a frame message, its pixels apart. */
-#define RDCD_FRAME_HDRS (RDC_PROTO_HDR_SIZE + RDC_PROTO_FRAME_HDR)
-
-/*
- * The frame being handed out: each shared encoding (RAW, RLE) is made at
- * most once, for the first subscriber that can take it, and holds one
- * reference of its own until every subscriber has been served.
- */
-struct rdcd_frame_out {
-	const uint32_t *xrgb;
-	uint32_t w, h;
-	uint64_t number;
-	struct rdcd_shared *enc[RDC_ENC_DELTA];
-};
-
-static void rdcd_shared_put(struct rdcd_shared *s)
-{
-	if (s && !--s->refs)
-		free(s);
-}
-
-static void rdcd_obuf_free(struct rdcd_obuf *b)
-{
-	rdcd_shared_put(b->shared);
-	free(b);
-}
-
-/* The frame in `enc` (RAW or RLE), encoded now if nobody has asked yet. */
-static struct rdcd_shared *
-rdcd_shared_get(struct rdcd *d, struct rdcd_frame_out *o, uint32_t enc)
-{
-	size_t raw = (size_t)o->w * o->h * 4, n = 0;
-	struct rdcd_shared *s = o->enc[enc];
-
-	if (s)
-		return s;
-	s = malloc(sizeof(*s) + raw);
-	if (!s)
-		return NULL;
-	d->frame_encodings++;
-	s->enc = enc;
-	if (enc != RDC_ENC_RAW)
-		n = rdc_proto_frame_encode(s->data, raw, enc, o->xrgb, NULL,
-					   o->w, o->h);
-	if (!n) {
-		s->enc = RDC_ENC_RAW;
-		n = rdc_proto_frame_encode(s->data, raw, RDC_ENC_RAW, o->xrgb,
-					   NULL, o->w, o->h);
-	}
-	s->len = n;
-	s->refs = 1;
-	if (n < raw) {
-		struct rdcd_shared *t = realloc(s, sizeof(*s) + n);
-
-		if (t)
-			s = t;
-	}
-	o->enc[enc] = s;
-	return s;
-}
-
 static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
-				 struct rdcd_frame_out *o)
+				 const uint32_t *xrgb, uint32_t w, uint32_t h,
+				 uint64_t number)
 {
-	struct rdc_proto_frame f = { .number = o->number };
+	struct rdc_proto_frame f = { .number = number };
 	const uint32_t *prev = NULL;
 	struct rdcd_obuf *b;
-	uint32_t w = o->w, h = o->h;
 	size_t px = (size_t)w * h;
 	uint32_t enc = c->sub_enc;
 
@@ -253,13 +188,14 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 	/*
 	 * A slow reader loses frames, alone: the device never waits.  A
 	 * queue already holding its share of replies takes no frame either,
-	 * nor one that would take everyone's queues over their bound.  All
-	 * this is known before any work is done for this subscriber.
+	 * nor one that would take everyone's queues over their bound.
 	 */
 	if (c->out_frames >= RDCD_MAX_QUEUED_FRAMES ||
 	    (c->out_head && c->out_bytes >= RDCD_OUT_HIGH) ||
-	    d->out_total + RDCD_FRAME_HDRS > RDCD_OUT_TOTAL)
-		goto drop;
+	    d->out_total >= RDCD_OUT_TOTAL) {
+		c->frames_dropped++;
+		return;
+	}
 	if (enc == RDC_ENC_DELTA) {
 		if (c->prev && (c->prev_w != w || c->prev_h != h))
 			rdcd_prev_free(d, c);
@@ -270,54 +206,32 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 			enc = RDC_ENC_RLE;
 		} else {
 			c->prev = malloc(px * 4 + 4);
-			if (!c->prev)
-				goto drop;
+			if (!c->prev) {
+				c->frames_dropped++;
+				return;
+			}
 			c->prev_bytes = px * 4;
 			d->prev_total += c->prev_bytes;
 		}
 	}
 	f.dropped = (uint32_t)c->frames_dropped;
+	b = rdcd_frame_msg(xrgb, prev, w, h, enc, &f);
+	if (!b || d->out_total + b->len > RDCD_OUT_TOTAL) {
+		free(b);
+		c->frames_dropped++;
+		return;
+	}
 	if (enc == RDC_ENC_DELTA) {
-		/* a base of its own: an encoding of its own */
-		d->frame_encodings++;
-		b = rdcd_frame_msg(o->xrgb, prev, w, h, enc, &f);
-		if (!b || d->out_total + b->len > RDCD_OUT_TOTAL) {
-			free(b);
-			goto drop;
-		}
-		memcpy(c->prev, o->xrgb, px * 4);
+		memcpy(c->prev, xrgb, px * 4);
 		c->prev_w = w;
 		c->prev_h = h;
-	} else {
-		struct rdcd_shared *s = rdcd_shared_get(d, o, enc);
-
-		if (!s ||
-		    d->out_total + RDCD_FRAME_HDRS + s->len > RDCD_OUT_TOTAL)
-			goto drop;
-		b = malloc(sizeof(*b) + RDCD_FRAME_HDRS);
-		if (!b)
-			goto drop;
-		b->hlen = RDCD_FRAME_HDRS;
-		b->len = RDCD_FRAME_HDRS + s->len;
-		b->off = 0;
-		b->shared = s;
-		s->refs++;
-		f.width = w;
-		f.height = h;
-		f.encoding = s->enc;
-		rdc_proto_frame_hdr_encode(b->data + RDC_PROTO_HDR_SIZE, &f);
 	}
 	rdcd_obuf_hdr(b, RDC_MSG_EV_FRAME, RDC_MSGF_EVENT, 0, RDC_ST_OK);
 	b->frame = true;
 	rdcd_queue(d, c, b);
 	c->frames_sent++;
-	d->sub_queued++;
 	rdcd_log(d, RDCD_LOG_DEBUG, "client %u: frame %llu queued", c->id,
-		 (unsigned long long)o->number);
-	return;
-drop:
-	c->frames_dropped++;
-	d->sub_dropped++;
+		 (unsigned long long)number);
 }
 
 /* Sinks never stall the device: they drop what they cannot take. */
@@ -354,15 +268,10 @@ static void rdcd_on_frame(void *ctx, const uint32_t *xrgb, uint32_t w,
 			  uint32_t h, uint64_t number)
 {
 	struct rdcd *d = ctx;
-	struct rdcd_frame_out o = {
-		.xrgb = xrgb, .w = w, .h = h, .number = number
-	};
 
 	d->frames++;
 	for (struct rdcd_client *c = d->clients; c; c = c->next)
-		rdcd_frame_to_client(d, c, &o);
-	for (unsigned int i = 0; i < RDC_ENC_DELTA; i++)
-		rdcd_shared_put(o.enc[i]);
+		rdcd_frame_to_client(d, c, xrgb, w, h, number);
 	if (d->nsinks)
 		rdcd_frame_to_sinks(d, xrgb, w, h, number);
 }
@@ -475,72 +384,24 @@ static unsigned int rdcd_count_lis(const struct rdcd *d, int lis, bool hello,
 	return n;
 }
 
-static bool rdcd_have_request(const struct rdcd_client *c);
-
-/* A connection accepted from a socket listener (not ffs:, udl:). */
-static bool rdcd_lis_socket(const struct rdcd *d, int lis)
-{
-	return lis >= 0 && !d->lis[lis].ffs && !d->lis[lis].udl;
-}
-
-/*
- * Silent connections never lock anyone out.  Beyond RDCD_MAX_PENDING on a
- * listener, what the others have sent is read first (it may be their
- * HELLO, and the newcomer's was read as it came); then the oldest that
- * has been silent past RDCD_HELLO_GRACE_MS goes, or if all are younger
- * the oldest with nothing waiting: never one whose HELLO has arrived.
- */
-static void rdcd_admit(struct rdcd *d, struct rdcd_client *c)
-{
-	const uint64_t grace = (uint64_t)RDCD_HELLO_GRACE_MS * 1000000ull;
-	uint64_t now = rdcd_wall_ns();
-	struct rdcd_client *victim = NULL;
-	const struct rdcd_client *oldest = NULL;
-
-	if (rdcd_count_lis(d, c->lis, false, NULL) <= RDCD_MAX_PENDING)
-		return;
-	if (rdcd_lis_socket(d, c->lis))
-		for (struct rdcd_client *o = d->clients; o; o = o->next)
-			if (o != c && !o->dead && !o->hello && o->lis == c->lis)
-				rdcd_client_read(d, o);
-	if (rdcd_count_lis(d, c->lis, false, &oldest) <= RDCD_MAX_PENDING)
-		return;
-	for (struct rdcd_client *o = d->clients; o; o = o->next)
-		if (o != c && !o->dead && !o->hello && o->lis == c->lis &&
-		    !rdcd_have_request(o) && now - o->conn_ns >= grace &&
-		    (!victim || o->conn_ns < victim->conn_ns))
-			victim = o;
-	if (victim) {
-		rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
-				 "%u connections without HELLO on one "
-				 "listener: closing the oldest silent one, "
-				 "client %u (%s)",
-				 RDCD_MAX_PENDING, victim->id, victim->peer);
-	} else {
-		/* all younger: the oldest with nothing waiting, so that the
-		 * newest, whose HELLO may be on its way, stays */
-		for (struct rdcd_client *o = d->clients; o; o = o->next)
-			if (o != c && !o->dead && !o->hello &&
-			    o->lis == c->lis && !rdcd_have_request(o) &&
-			    (!victim || o->conn_ns < victim->conn_ns))
-				victim = o;
-		if (!victim)
-			victim = (struct rdcd_client *)oldest;
-		rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
-				 "%u connections without HELLO on one "
-				 "listener, none silent for %u ms: closing "
-				 "the oldest, client %u (%s)",
-				 RDCD_MAX_PENDING, RDCD_HELLO_GRACE_MS,
-				 victim->id, victim->peer);
-	}
-	victim->dead = true;
-}
-
 struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
 				    const char *peer)
 {
+	const struct rdcd_client *oldest = NULL;
 	struct rdcd_client *c;
 
+	/* Silent connections never lock anyone out: the oldest one goes. */
+	if (rdcd_count_lis(d, d->accept_lis, false, &oldest) >=
+	    RDCD_MAX_PENDING) {
+		struct rdcd_client *o = (struct rdcd_client *)oldest;
+
+		rdcd_log_limited(
+			d, &d->connlog, RDCD_LOG_WARN,
+			"%u connections without HELLO on one listener: "
+			"closing the oldest, client %u (%s)",
+			RDCD_MAX_PENDING, o->id, o->peer);
+		o->dead = true;
+	}
 	c = calloc(1, sizeof(*c));
 	if (!c)
 		return NULL;
@@ -553,10 +414,6 @@ struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
 	c->next = d->clients;
 	d->clients = c;
 	rdcd_log(d, RDCD_LOG_DEBUG, "client %u connected (%s)", c->id, c->peer);
-	/* a HELLO already waiting (it queued behind others) is served now */
-	if (rdcd_lis_socket(d, c->lis))
-		rdcd_client_read(d, c);
-	rdcd_admit(d, c);
 	return c;
 }
 
@@ -611,7 +468,7 @@ static void rdcd_client_drop_output(struct rdcd *d, struct rdcd_client *c)
 
 		c->out_head = b->next;
 		d->out_total -= b->len;
-		rdcd_obuf_free(b);
+		free(b);
 	}
 	c->out_tail = NULL;
 	c->out_bytes = 0;
@@ -677,23 +534,8 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c)
 {
 	while (c->out_head && !c->dead) {
 		struct rdcd_obuf *b = c->out_head;
-		struct iovec iov[2];
-		struct msghdr m = { .msg_iov = iov };
-		ssize_t k;
-
-		if (b->off < b->hlen) {
-			iov[m.msg_iovlen++] =
-				(struct iovec){ b->data + b->off,
-						b->hlen - b->off };
-		}
-		if (b->shared) {
-			size_t at = b->off > b->hlen ? b->off - b->hlen : 0;
-
-			iov[m.msg_iovlen++] =
-				(struct iovec){ b->shared->data + at,
-						b->shared->len - at };
-		}
-		k = sendmsg(c->fd, &m, MSG_NOSIGNAL | MSG_DONTWAIT);
+		ssize_t k = send(c->fd, b->data + b->off, b->len - b->off,
+				 MSG_NOSIGNAL | MSG_DONTWAIT);
 
 		if (k < 0) {
 			if (errno == EINTR)
@@ -718,7 +560,7 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c)
 			c->out_frames--;
 			c->out_frame_bytes -= b->len;
 		}
-		rdcd_obuf_free(b);
+		free(b);
 	}
 	if (!c->out_head && c->closing)
 		c->dead = true;
