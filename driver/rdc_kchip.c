@@ -26,8 +26,10 @@
 #include <linux/delay.h>
 #include <linux/jiffies.h>
 #include <linux/math64.h>
+#include <linux/mm.h>
 #include <linux/sched/signal.h>
 #include <linux/slab.h>
+#include <linux/string.h>
 #include <linux/vmalloc.h>
 
 #include "rdc_kchip.h"
@@ -58,6 +60,37 @@
 /* Frame snapshot: bytes copied per lock hold, attempts before one hold. */
 #define RDC_KCHIP_SNAP_CHUNK (64u << 10)
 #define RDC_KCHIP_SNAP_TRIES 4u
+
+int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
+			   u32 vram_max, const char *clock,
+			   unsigned int devices, unsigned int max_devices,
+			   struct rdc_kchip_params *out)
+{
+	unsigned long long size;
+	char *end;
+
+	size = memparse(vram, &end);
+	if (*end || size < vram_min || size > vram_max) {
+		pr_err("%s: vram=%s: want %u..%u bytes\n", name, vram, vram_min,
+		       vram_max);
+		return -EINVAL;
+	}
+	out->vram_bytes = PAGE_ALIGN(size);
+	if (!strcmp(clock, "stepped")) {
+		out->stepped = true;
+	} else if (!strcmp(clock, "paced")) {
+		out->stepped = false;
+	} else {
+		pr_err("%s: clock=%s: want paced or stepped\n", name, clock);
+		return -EINVAL;
+	}
+	if (!devices || devices > max_devices) {
+		pr_err("%s: devices=%u: want 1..%u\n", name, devices,
+		       max_devices);
+		return -EINVAL;
+	}
+	return 0;
+}
 
 /*
  * Take the chip.  The module's before_use hook runs first (what rdcfb's

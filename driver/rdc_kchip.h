@@ -140,6 +140,22 @@ struct rdc_kchip {
 };
 
 /* rdc_kchip.c */
+/*
+ * The module parameters both drivers take, checked the one way:
+ * vram=SIZE (memparse, within [vram_min, vram_max], rounded up to whole
+ * pages: mapped pages are handed out whole), clock=paced|stepped and
+ * devices=1..max_devices.  -EINVAL, logged under `name`, otherwise.
+ */
+struct rdc_kchip_params {
+	u32 vram_bytes;
+	bool stepped;
+};
+
+int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
+			   u32 vram_max, const char *clock,
+			   unsigned int devices, unsigned int max_devices,
+			   struct rdc_kchip_params *out);
+
 void rdc_kchip_lock(struct rdc_kchip *chip);
 void rdc_kchip_unlock(struct rdc_kchip *chip);
 int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev, u32 vram_size,

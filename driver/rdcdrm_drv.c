@@ -177,29 +177,17 @@ static void rdcdrm_unregister_devices(void)
 
 static int __init rdcdrm_init(void)
 {
-	unsigned long long size;
+	struct rdc_kchip_params par;
 	unsigned int i;
-	char *end;
 	int ret;
 
-	size = memparse(vram, &end);
-	if (*end || size < RDCDRM_VRAM_MIN || size > RDCDRM_VRAM_MAX) {
-		pr_err("rdcdrm: vram=%s: want %u..%u bytes\n", vram,
-		       RDCDRM_VRAM_MIN, RDCDRM_VRAM_MAX);
-		return -EINVAL;
-	}
-	rdcdrm_vram_bytes = PAGE_ALIGN(size);
-	if (!strcmp(clock, "stepped")) {
-		rdcdrm_stepped = true;
-	} else if (strcmp(clock, "paced")) {
-		pr_err("rdcdrm: clock=%s: want paced or stepped\n", clock);
-		return -EINVAL;
-	}
-	if (!devices || devices > RDCDRM_MAX_DEVICES) {
-		pr_err("rdcdrm: devices=%u: want 1..%u\n", devices,
-		       RDCDRM_MAX_DEVICES);
-		return -EINVAL;
-	}
+	ret = rdc_kchip_params_parse("rdcdrm", vram, RDCDRM_VRAM_MIN,
+				     RDCDRM_VRAM_MAX, clock, devices,
+				     RDCDRM_MAX_DEVICES, &par);
+	if (ret)
+		return ret;
+	rdcdrm_vram_bytes = par.vram_bytes;
+	rdcdrm_stepped = par.stepped;
 	ret = platform_driver_register(&rdcdrm_platform_driver);
 	if (ret)
 		return ret;

@@ -266,30 +266,17 @@ static void rdcfb_unregister_devices(void)
 
 static int __init rdcfb_init(void)
 {
-	unsigned long long size;
-	char *end;
+	struct rdc_kchip_params par;
 	unsigned int i;
 	int ret;
 
-	size = memparse(vram, &end);
-	if (*end || size < RDCFB_VRAM_MIN || size > RDCFB_VRAM_MAX) {
-		pr_err("rdcfb: vram=%s: want %u..%u bytes\n", vram,
-		       RDCFB_VRAM_MIN, RDCFB_VRAM_MAX);
-		return -EINVAL;
-	}
-	/* mmap hands out whole pages of it */
-	rdcfb_vram_bytes = PAGE_ALIGN(size);
-	if (!strcmp(clock, "stepped")) {
-		rdcfb_stepped = true;
-	} else if (strcmp(clock, "paced")) {
-		pr_err("rdcfb: clock=%s: want paced or stepped\n", clock);
-		return -EINVAL;
-	}
-	if (!devices || devices > RDCFB_MAX_DEVICES) {
-		pr_err("rdcfb: devices=%u: want 1..%u\n", devices,
-		       RDCFB_MAX_DEVICES);
-		return -EINVAL;
-	}
+	ret = rdc_kchip_params_parse("rdcfb", vram, RDCFB_VRAM_MIN,
+				     RDCFB_VRAM_MAX, clock, devices,
+				     RDCFB_MAX_DEVICES, &par);
+	if (ret)
+		return ret;
+	rdcfb_vram_bytes = par.vram_bytes;
+	rdcfb_stepped = par.stepped;
 	rdcfb_bench_module_init();
 	ret = platform_driver_register(&rdcfb_driver);
 	if (ret) {
