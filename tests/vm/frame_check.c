@@ -91,7 +91,7 @@ static int xwd_load(const char *path, struct img *im)
 {
 	FILE *f = fopen(path, "rb");
 	uint8_t hdr[100], *row = NULL;
-	uint32_t hsize, fmt, depth, w, h, border, bpp, bpl, ncolors, order;
+	uint32_t hsize, fmt, depth, w, h, version, bpp, bpl, ncolors, order;
 	uint32_t rmask, gmask, bmask;
 	int ret = -1;
 
@@ -113,10 +113,10 @@ static int xwd_load(const char *path, struct img *im)
 	gmask = be32(hdr + 60);
 	bmask = be32(hdr + 64);
 	ncolors = be32(hdr + 76);
-	border = be32(hdr + 4); /* file version */
-	if (border != 7 || fmt != 2 || (bpp != 32 && bpp != 24) || depth < 15 ||
-	    !w || !h || w > 16384 || h > 16384 || bpl < w * (bpp / 8) ||
-	    hsize < sizeof(hdr) || ncolors > 65536)
+	version = be32(hdr + 4);
+	if (version != 7 || fmt != 2 || (bpp != 32 && bpp != 24) ||
+	    depth < 15 || !w || !h || w > 16384 || h > 16384 ||
+	    bpl < w * (bpp / 8) || hsize < sizeof(hdr) || ncolors > 65536)
 		goto bad;
 	if (fseek(f, (long)hsize + (long)ncolors * 12, SEEK_SET))
 		goto bad;
