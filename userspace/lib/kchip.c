@@ -410,46 +410,6 @@ static int kchip_gpio_take(rdc_dev *dev, struct rdc_kchip_pins *g,
 }
 
 /*
- * What the lines reported before the wait began: edges of the past, not
- * the next one.  Take every event already queued, and on the stepped
- * clock the ones still on their way for edges PINS already shows, into
- * the levels alone.
- */
-static int kchip_gpio_forget(rdc_dev *dev, struct rdc_kchip_pins *g)
-{
-	struct gpiod_edge_event *e;
-	uint32_t in;
-	int ret;
-
-	for (;;) {
-		e = NULL;
-		ret = kchip_gpio_next(g, 0, &e);
-		if (ret < 0)
-			return ret;
-		if (!ret)
-			break;
-		kchip_gpio_take(dev, g, e, 0, 0, NULL);
-	}
-	if (!g->stepped)
-		return 0;
-	ret = dev->be->reg_read(dev, RDC_REG_PINS, &in);
-	if (ret)
-		return ret;
-	while ((in ^ g->levels) & RDC_PINS_OUT) {
-		e = NULL;
-		ret = kchip_gpio_next(g, KCHIP_EDGE_LATE_NS, &e);
-		if (ret < 0)
-			return ret;
-		if (!ret) { /* never came (a full queue): go by PINS */
-			g->levels = in & RDC_PINS_OUT;
-			break;
-		}
-		kchip_gpio_take(dev, g, e, 0, 0, NULL);
-	}
-	return 0;
-}
-
-/*
  * Paced, the chip runs by itself: wait for the lines' events in wall
  * time.  Stepped, nothing moves unless asked, so the wait moves simulated
  * time as waits on sim: do, a slice at a time up to the budget; when PINS
@@ -468,9 +428,6 @@ int rdc_kchip_pins_wait(rdc_dev *dev, int fd, struct rdc_kchip_pins **p,
 	if (ret)
 		return ret;
 	g = *p;
-	ret = kchip_gpio_forget(dev, g);
-	if (ret)
-		return ret;
 	if (!timeout_us)
 		timeout_us = RDC_WAIT_BUDGET_DEFAULT /
 			     (RDC_DEFAULT_CORE_HZ / 1000000u);
