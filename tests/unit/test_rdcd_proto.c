@@ -338,6 +338,31 @@ static void test_token(void **state)
 	assert_int_equal(rdc_open(d.tcp_uri, &dev), 0);
 	rdc_close(dev);
 	unsetenv("RDC_TOKEN_FILE");
+	/* tcp::PORT is 127.0.0.1:PORT, as rdcd's --listen has it */
+	snprintf(uri, sizeof(uri), "tcp:%s?token=%s", strrchr(d.tcp_uri, ':'),
+		 tokfile);
+	assert_int_equal(rdc_open(uri, &dev), 0);
+	rdc_close(dev);
+	/*
+	 * The token file's rule is rdcd's: a file longer than a HELLO's
+	 * token is refused, naming it (it was cut to its first 256 bytes,
+	 * which rdcd then refused as a wrong token), and so is a directory
+	 * (it was read as no token).
+	 */
+	f = fopen(badfile, "w");
+	assert_non_null(f);
+	for (int i = 0; i < 300; i++)
+		fputc('a', f);
+	fclose(f);
+	snprintf(uri, sizeof(uri), "%s?token=%s", d.tcp_uri, badfile);
+	assert_int_equal(rdc_open(uri, &dev), RDC_E_FILE);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE), badfile));
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "longer than 256 bytes"));
+	snprintf(uri, sizeof(uri), "%s?token=/tmp", d.tcp_uri);
+	assert_int_equal(rdc_open(uri, &dev), RDC_E_FILE);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "/tmp: a directory, not a regular file"));
 	/* the UNIX socket is guarded by its file mode instead */
 	fd = hello_fd(&d, 0);
 	assert_true(fd >= 0);
@@ -365,6 +390,34 @@ static void test_token_required(void **state)
 	assert_int_equal(d.pid, 0); /* it exited by itself */
 	assert_true(netd_log_has(&d, "--token FILE is required"));
 	netd_stop(&d); /* cleans up */
+}
+
+/*
+ * :PORT is 127.0.0.1 for --web as for --listen tcp: (the web sink
+ * refused it, so rdcd did not start).
+ */
+static void test_listen_rule(void **state)
+{
+	const char *args[] = { "--stepped", "--listen", "tcp::0",
+			       "--web",	    ":0",	NULL };
+	char line[160];
+	int tcp = 0;
+	struct netd d;
+	FILE *f;
+
+	(void)state;
+	if (netd_start(&d, args)) {
+		netd_dump_log(&d);
+		fail_msg("rdcd --listen tcp::0 --web :0 did not start");
+	}
+	f = fopen(d.ready, "r");
+	assert_non_null(f);
+	while (fgets(line, sizeof(line), f))
+		tcp += !strncmp(line, "tcp:127.0.0.1:", 14);
+	fclose(f);
+	assert_int_equal(tcp, 2);
+	assert_true(netd_log_has(&d, "web page at http://127.0.0.1:"));
+	assert_int_equal(netd_stop(&d), 0);
 }
 
 #define LOAD_CLIENTS 64
@@ -1186,6 +1239,7 @@ int main(void)
 		cmocka_unit_test(test_control),
 		cmocka_unit_test(test_token),
 		cmocka_unit_test(test_token_required),
+		cmocka_unit_test(test_listen_rule),
 		cmocka_unit_test(test_many_clients),
 		cmocka_unit_test(test_subscribe),
 		cmocka_unit_test(test_irq_event_after_ack),

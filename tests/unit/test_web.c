@@ -21,6 +21,7 @@
 #include <string.h>
 #include <setjmp.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
 
@@ -744,9 +745,11 @@ static void test_specs(void **state)
 {
 	static const char *const bad[] = {
 		"web:",	       "web:x",	       "web:70000", "web:1.2.3.4.5:80",
-		"web:0,foo=1", "web:0,token=", "web::80",
+		"web:0,foo=1", "web:0,token=", "web::x",
 	};
+	char path[64], fifo[64], spec[128];
 	rdc_sink *s;
+	FILE *f;
 
 	(void)state;
 	for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++)
@@ -754,6 +757,38 @@ static void test_specs(void **state)
 	assert_int_equal(rdc_sink_open("web:0,token=/nonexistent/rdc-token",
 				       &s),
 			 RDC_E_FILE);
+
+	/* :PORT is 127.0.0.1, as rdcd's tcp::PORT (it was refused) */
+	assert_int_equal(rdc_sink_open("web::0", &s), 0);
+	web_port(s);
+	rdc_sink_close(s);
+
+	/*
+	 * The token file's rule is rdcd's: a directory is refused by what
+	 * it is (it was "empty"), a FIFO at once (it waited for a writer),
+	 * a file too long naming it.
+	 */
+	assert_int_equal(rdc_sink_open("web:0,token=/tmp", &s), RDC_E_FILE);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "token /tmp: a directory, not a regular file"));
+	snprintf(fifo, sizeof(fifo), "/tmp/rdc-web-fifo-%d", (int)getpid());
+	unlink(fifo);
+	assert_int_equal(mkfifo(fifo, 0600), 0);
+	snprintf(spec, sizeof(spec), "web:0,token=%s", fifo);
+	assert_int_equal(rdc_sink_open(spec, &s), RDC_E_FILE);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE),
+			       "a FIFO, not a regular file"));
+	unlink(fifo);
+	snprintf(path, sizeof(path), "/tmp/rdc-web-long-%d", (int)getpid());
+	f = fopen(path, "w");
+	assert_non_null(f);
+	for (int i = 0; i < 257; i++)
+		fputc('a', f);
+	fclose(f);
+	snprintf(spec, sizeof(spec), "web:0,token=%s", path);
+	assert_int_equal(rdc_sink_open(spec, &s), RDC_E_FILE);
+	assert_non_null(strstr(rdc_last_error_detail(RDC_E_FILE), path));
+	unlink(path);
 }
 
 int main(void)

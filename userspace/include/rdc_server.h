@@ -4,8 +4,9 @@
  * librdc's interface for a program that serves the simulated RDC-1 itself,
  * as rdcd does: the chip behind a sim: handle (rdc_chip.h: time, register
  * reads, the run loop, host waits, pins, the last frame and the frame,
- * trace and poll hooks), trace recording (rdcd --record), and VCD dumps
- * of a chip the program hooks itself (rdcd --vcd).
+ * trace and poll hooks), trace recording (rdcd --record), VCD dumps of
+ * a chip the program hooks itself (rdcd --vcd), and what a server on the
+ * network needs: token checks, TCP addresses and token files.
  *
  * Internal: these functions are exported under the symbol version
  * RDC_PRIVATE_<version> of the exact release (scripts/librdc-map.sh), so
@@ -20,9 +21,11 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <sys/socket.h>
 
 #include "rdc.h"
 #include "rdc_chip.h"
+#include "rdc_proto.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -129,6 +132,49 @@ bool rdc_auth_locked(const struct rdc_auth *a, const char *peer,
 void rdc_auth_failed(struct rdc_auth *a, const char *peer, uint64_t now_ns);
 /* The right token from `peer`: its failures are forgotten. */
 void rdc_auth_passed(struct rdc_auth *a, const char *peer);
+
+/*
+ * TCP addresses and token files (tcp.c): one rule for rdcd's tcp: and
+ * --token, the web sink's [ADDR:]PORT and token=FILE, and the client's
+ * tcp:HOST:PORT?token=FILE (docs/protocol.md, "Addresses and tokens").
+ *
+ * An address is HOST:PORT, [IPV6]:PORT, or :PORT, which is
+ * 127.0.0.1:PORT.  A token file is a regular file (opened without
+ * blocking, so a FIFO is refused, not waited on) whose contents without
+ * trailing newlines, carriage returns and spaces are 1 to
+ * RDC_PROTO_MAX_TOKEN bytes; anything else is refused, never cut.
+ * Failures return a negative enum rdc_error with a detail
+ * (rdc_last_error_detail) that names the address or the file.
+ */
+#define RDC_TCP_HOST_MAX 256 /* a host name's bytes, its NUL included */
+#define RDC_TCP_NAME_MAX 64  /* "[IPV6]:PORT" of a bound address, and NUL */
+
+/*
+ * Split `hostport` into `host` (a string of at most RDC_TCP_HOST_MAX
+ * bytes: "127.0.0.1" for :PORT, an IPv6 address without its brackets)
+ * and *port, which points into hostport: 0 or RDC_E_URI.
+ */
+int rdc_tcp_split(const char *hostport, char host[RDC_TCP_HOST_MAX],
+		  const char **port);
+/*
+ * A listening TCP socket on `hostport` (PORT 0: the kernel picks one),
+ * non-blocking and close-on-exec, with SO_REUSEADDR: its descriptor and
+ * *bound, the address it has; or RDC_E_URI (the address) or RDC_E_IO.
+ */
+int rdc_tcp_listen(const char *hostport, int backlog,
+		   struct sockaddr_storage *bound);
+/* Whether `ss` is a loopback address (127/8, ::1, ::ffff:127/104). */
+bool rdc_tcp_is_loopback(const struct sockaddr_storage *ss);
+/* "ADDR:PORT", or "[IPV6]:PORT", of `ss` (numeric) into name. */
+void rdc_tcp_name(const struct sockaddr_storage *ss,
+		  char name[RDC_TCP_NAME_MAX]);
+/*
+ * Read the token in the file `path` into tok (RDC_PROTO_MAX_TOKEN bytes)
+ * and *len: 0 or RDC_E_FILE, whose detail starts with `what` and the
+ * path ("--token /tmp: a directory, not a regular file: refused").
+ */
+int rdc_token_read(const char *what, const char *path,
+		   uint8_t tok[RDC_PROTO_MAX_TOKEN], uint32_t *len);
 
 #ifdef __cplusplus
 }

@@ -336,24 +336,11 @@ int rdc_client_parse_opts(const char *q, struct rdc_client_opts *o)
 	return 0;
 }
 
+/* No file: no token (a UNIX socket's clients need none). */
 static int net_read_token(const char *path, uint8_t *tok, uint32_t *len)
 {
-	FILE *f;
-	size_t n;
-
 	*len = 0;
-	if (!*path)
-		return 0;
-	f = fopen(path, "rb");
-	if (!f)
-		return RDC_E_FILE;
-	n = fread(tok, 1, RDC_PROTO_MAX_TOKEN, f);
-	fclose(f);
-	while (n &&
-	       (tok[n - 1] == '\n' || tok[n - 1] == '\r' || tok[n - 1] == ' '))
-		n--;
-	*len = (uint32_t)n;
-	return 0;
+	return *path ? rdc_token_read("token", path, tok, len) : 0;
 }
 
 int rdc_client_open(rdc_dev *dev, struct rdc_xport *x,
@@ -956,28 +943,17 @@ static int net_connect_unix(const char *path)
 
 static int net_connect_tcp(const char *hostport)
 {
-	char host[256];
-	const char *colon = strrchr(hostport, ':'), *port;
+	char host[RDC_TCP_HOST_MAX];
 	struct addrinfo hints = { .ai_socktype = SOCK_STREAM }, *res, *ai;
-	const char *whole = hostport;
+	const char *whole = hostport, *port;
 	char uri[300]; /* "tcp:" and up to 255 bytes */
-	size_t hlen;
 	int fd = RDC_E_IO, ret;
 
-	if (!colon || !colon[1])
-		return rdc_err_detail(
-			RDC_E_URI, "tcp:%.200s: HOST:PORT expected", hostport);
-	port = colon + 1;
-	hlen = (size_t)(colon - hostport);
-	/* [::1]:7000 */
-	if (hlen >= 2 && hostport[0] == '[' && hostport[hlen - 1] == ']') {
-		hostport++;
-		hlen -= 2;
+	ret = rdc_tcp_split(hostport, host, &port);
+	if (ret) {
+		snprintf(uri, sizeof(uri), "%s", rdc_last_error_detail(ret));
+		return rdc_err_detail(ret, "tcp:%s", uri);
 	}
-	if (!hlen || hlen >= sizeof(host))
-		return RDC_E_URI;
-	memcpy(host, hostport, hlen);
-	host[hlen] = 0;
 	ret = getaddrinfo(host, port, &hints, &res);
 	if (ret)
 		return rdc_err_detail(RDC_E_URI, "tcp:%.200s: %s", whole,

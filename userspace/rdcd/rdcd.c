@@ -10,7 +10,6 @@
 #include <arpa/inet.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <netdb.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
@@ -282,98 +281,30 @@ static int rdcd_listen_unix(struct rdcd *d, struct rdcd_listener *l,
 	return 0;
 }
 
-bool rdcd_is_loopback(const struct sockaddr_storage *ss)
-{
-	if (ss->ss_family == AF_INET) {
-		const struct sockaddr_in *in = (const void *)ss;
-
-		return (ntohl(in->sin_addr.s_addr) >> 24) == 127;
-	}
-	if (ss->ss_family == AF_INET6) {
-		const struct sockaddr_in6 *in6 = (const void *)ss;
-
-		return IN6_IS_ADDR_LOOPBACK(&in6->sin6_addr) ||
-		       (IN6_IS_ADDR_V4MAPPED(&in6->sin6_addr) &&
-			in6->sin6_addr.s6_addr[12] == 127);
-	}
-	return false;
-}
-
 static int rdcd_listen_tcp(struct rdcd *d, struct rdcd_listener *l,
 			   const char *hostport)
 {
-	struct addrinfo hints = { .ai_socktype = SOCK_STREAM,
-				  .ai_flags = AI_PASSIVE | AI_NUMERICSERV };
-	const char *colon = strrchr(hostport, ':');
-	const char *spec = hostport; /* as given, for messages */
 	struct sockaddr_storage ss;
-	socklen_t sl = sizeof(ss);
-	struct addrinfo *res;
-	char host[128], addr[INET6_ADDRSTRLEN];
-	size_t hlen;
-	int fd, one = 1, port;
+	char name[RDC_TCP_NAME_MAX];
+	int fd = rdc_tcp_listen(hostport, 64, &ss);
 
-	if (!colon) {
-		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: want tcp:HOST:PORT",
-			 hostport);
-		return -1;
-	}
-	hlen = (size_t)(colon - hostport);
-	if (hlen >= 2 && hostport[0] == '[' && hostport[hlen - 1] == ']') {
-		hostport++;
-		hlen -= 2;
-	}
-	if (hlen >= sizeof(host)) {
-		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: host too long", spec);
-		return -1;
-	}
-	memcpy(host, hostport, hlen);
-	host[hlen] = 0;
-	if (!hlen)
-		strcpy(host, "127.0.0.1");
-	if (getaddrinfo(host, colon + 1, &hints, &res)) {
-		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: cannot resolve", spec);
-		return -1;
-	}
-	fd = socket(res->ai_family,
-		    res->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC,
-		    res->ai_protocol);
 	if (fd < 0) {
-		freeaddrinfo(res);
+		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s", rdc_last_error_detail(fd));
 		return -1;
 	}
-	setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
-	if (bind(fd, res->ai_addr, res->ai_addrlen) || listen(fd, 64)) {
-		rdcd_log(d, RDCD_LOG_ERR, "tcp:%s: %s", spec, strerror(errno));
-		freeaddrinfo(res);
-		close(fd);
-		return -1;
-	}
-	freeaddrinfo(res);
-	getsockname(fd, (struct sockaddr *)&ss, &sl);
 	l->fd = fd;
 	l->tcp = true;
-	l->need_token = !rdcd_is_loopback(&ss);
+	l->need_token = !rdc_tcp_is_loopback(&ss);
 	if (l->need_token && !d->have_token) {
 		rdcd_log(d, RDCD_LOG_ERR,
 			 "tcp:%s is not loopback: --token FILE is required",
-			 spec);
+			 hostport);
 		close(fd);
+		l->fd = -1;
 		return -1;
 	}
-	if (ss.ss_family == AF_INET6) {
-		const struct sockaddr_in6 *in6 = (const void *)&ss;
-
-		inet_ntop(AF_INET6, &in6->sin6_addr, addr, sizeof(addr));
-		port = ntohs(in6->sin6_port);
-		snprintf(l->uri, sizeof(l->uri), "tcp:[%s]:%d", addr, port);
-	} else {
-		const struct sockaddr_in *in = (const void *)&ss;
-
-		inet_ntop(AF_INET, &in->sin_addr, addr, sizeof(addr));
-		port = ntohs(in->sin_port);
-		snprintf(l->uri, sizeof(l->uri), "tcp:%s:%d", addr, port);
-	}
+	rdc_tcp_name(&ss, name);
+	snprintf(l->uri, sizeof(l->uri), "tcp:%s", name);
 	return 0;
 }
 
@@ -476,79 +407,15 @@ static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 	}
 }
 
-/* What a file that is not a regular one is, for a refusal. */
-static const char *rdcd_file_kind(mode_t m)
-{
-	return S_ISDIR(m)  ? "a directory" :
-	       S_ISFIFO(m) ? "a FIFO" :
-	       S_ISSOCK(m) ? "a socket" :
-	       S_ISCHR(m)  ? "a character device" :
-	       S_ISBLK(m)  ? "a block device" :
-			     "of another kind";
-}
-
-/*
- * The token: the file's contents without trailing newlines and spaces,
- * at most RDC_PROTO_MAX_TOKEN bytes.  A longer file is refused, not cut:
- * clients send the whole file.  Only a regular file: it is opened without
- * blocking (a FIFO would wait for a writer forever) and anything else is
- * refused by what it is.
- */
+/* The token: rdc_token_read's rule (rdc_server.h), the client's too. */
 static int rdcd_read_token(struct rdcd *d, const char *path)
 {
-	uint8_t buf[RDC_PROTO_MAX_TOKEN + 4096];
-	int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-	struct stat st;
-	size_t n = 0;
-	bool more;
+	int ret = rdc_token_read("--token", path, d->token, &d->token_len);
 
-	if (fd < 0 || fstat(fd, &st)) {
-		rdcd_log(d, RDCD_LOG_ERR, "--token %s: %s", path,
-			 strerror(errno));
-		if (fd >= 0)
-			close(fd);
+	if (ret) {
+		rdcd_log(d, RDCD_LOG_ERR, "%s", rdc_last_error_detail(ret));
 		return -1;
 	}
-	if (!S_ISREG(st.st_mode)) {
-		rdcd_log(d, RDCD_LOG_ERR,
-			 "--token %s: %s, not a regular file: refused", path,
-			 rdcd_file_kind(st.st_mode));
-		close(fd);
-		return -1;
-	}
-	for (;;) {
-		ssize_t k = read(fd, buf + n, sizeof(buf) - n);
-
-		if (k < 0 && errno == EINTR)
-			continue;
-		if (k < 0) {
-			rdcd_log(d, RDCD_LOG_ERR, "--token %s: %s", path,
-				 strerror(errno));
-			close(fd);
-			return -1;
-		}
-		n += (size_t)k;
-		if (!k || n == sizeof(buf))
-			break;
-	}
-	more = n == sizeof(buf) && read(fd, &(uint8_t){ 0 }, 1) > 0;
-	close(fd);
-	while (n &&
-	       (buf[n - 1] == '\n' || buf[n - 1] == '\r' || buf[n - 1] == ' '))
-		n--;
-	if (!n) {
-		rdcd_log(d, RDCD_LOG_ERR, "--token %s: empty", path);
-		return -1;
-	}
-	if (more || n > RDC_PROTO_MAX_TOKEN) {
-		rdcd_log(d, RDCD_LOG_ERR,
-			 "--token %s: longer than %u bytes (a client could "
-			 "not send it whole)",
-			 path, RDC_PROTO_MAX_TOKEN);
-		return -1;
-	}
-	memcpy(d->token, buf, n);
-	d->token_len = (uint32_t)n;
 	d->have_token = true;
 	return 0;
 }

@@ -212,8 +212,6 @@ struct rdcd {
 void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 uint64_t rdcd_wall_ns(void);
-/* A loopback address (127/8, ::1, ::ffff:127/104)? */
-bool rdcd_is_loopback(const struct sockaddr_storage *ss);
 
 /*
  * systemd.c: socket activation and readiness (docs/protocol.md, "Under

@@ -188,7 +188,7 @@ static int sd_take(struct rdcd *d, struct rdcd_listener *l, int fd,
 		snprintf(l->uri, sizeof(l->uri), "unix:%s", path);
 	} else {
 		l->tcp = true;
-		l->need_token = !rdcd_is_loopback(&ss);
+		l->need_token = !rdc_tcp_is_loopback(&ss);
 		if (l->need_token && !d->have_token) {
 			rdcd_log(d, RDCD_LOG_ERR,
 				 "systemd: fd %d (%s) is not loopback: "

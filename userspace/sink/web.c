@@ -14,7 +14,8 @@
  *
  * Safe by default: loopback unless an address is given; with a token
  * (token=FILE) every viewer must present it, and an address other than
- * loopback needs one (rdcd's rule for tcp:).  Failed tokens from one
+ * loopback needs one (rdcd's rule for tcp:; the address and the file
+ * read as rdc_tcp_listen and rdc_token_read, rdc_server.h, read them).  Failed tokens from one
  * address are refused for a while, as rdcd does.  A loopback server only
  * answers requests whose Host names loopback, and a WebSocket only from
  * its own page's origin, so another web site (or a DNS name rebound to
@@ -23,7 +24,6 @@
 #include <arpa/inet.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <netdb.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
@@ -58,7 +58,6 @@
 /* Status alone (the frame counter moving on an unchanged picture) goes
  * at most this often. */
 #define WEB_STATUS_NS (250ull * 1000000ull)
-#define WEB_TOKEN_MAX 256u
 /* The binary message: type, x, y, w, h (u32 little-endian), then the
  * rectangle's RGBA rows through zlib. */
 #define WEB_RECT_TYPE 1u
@@ -99,8 +98,8 @@ struct web_sink {
 	bool thr_started;
 	bool loopback;
 	char url[96];
-	uint8_t token[WEB_TOKEN_MAX];
-	size_t token_len;
+	uint8_t token[RDC_PROTO_MAX_TOKEN];
+	uint32_t token_len;
 	bool have_token;
 	struct rdc_auth auth; /* failed tokens, by peer address */
 	uint8_t *rgba; /* the server thread's: one band (WEB_BAND_BYTES) */
@@ -951,122 +950,32 @@ static void web_close(rdc_sink *s)
 	s->priv = NULL;
 }
 
-/* The token file: rdcd's rule (trailing newlines and spaces dropped, at
- * most WEB_TOKEN_MAX bytes, not empty). */
-static int web_read_token(struct web_sink *w, const char *path)
+/* Listen on [ADDR:]PORT: PORT alone, as :PORT, is 127.0.0.1's. */
+static int web_listen(struct web_sink *w, const char *spec)
 {
-	uint8_t buf[WEB_TOKEN_MAX + 2];
-	FILE *f = fopen(path, "rb");
-	size_t n;
-	bool more;
-
-	if (!f)
-		return rdc_err_detail(RDC_E_FILE, "web sink: token %s: %s",
-				      path, strerror(errno));
-	n = fread(buf, 1, sizeof(buf), f);
-	more = n == sizeof(buf) && fgetc(f) != EOF;
-	fclose(f);
-	while (n &&
-	       (buf[n - 1] == '\n' || buf[n - 1] == '\r' || buf[n - 1] == ' '))
-		n--;
-	if (!n || more || n > WEB_TOKEN_MAX)
-		return rdc_err_detail(RDC_E_FILE,
-				      "web sink: token %s: empty or longer "
-				      "than %u bytes",
-				      path, WEB_TOKEN_MAX);
-	memcpy(w->token, buf, n);
-	w->token_len = n;
-	w->have_token = true;
-	return 0;
-}
-
-static bool web_is_loopback(const struct sockaddr_storage *ss)
-{
-	if (ss->ss_family == AF_INET)
-		return (ntohl(((const struct sockaddr_in *)ss)
-				      ->sin_addr.s_addr) >>
-			24) == 127;
-	if (ss->ss_family == AF_INET6) {
-		const struct in6_addr *a =
-			&((const struct sockaddr_in6 *)ss)->sin6_addr;
-
-		return IN6_IS_ADDR_LOOPBACK(a) ||
-		       (IN6_IS_ADDR_V4MAPPED(a) && a->s6_addr[12] == 127);
-	}
-	return false;
-}
-
-/* Listen on [ADDR:]PORT ("[v6]:PORT" too); 127.0.0.1 without ADDR. */
-static int web_listen(struct web_sink *w, const char *hostport)
-{
-	struct addrinfo hints = { .ai_socktype = SOCK_STREAM,
-				  .ai_flags = AI_PASSIVE | AI_NUMERICSERV };
-	const char *colon = strrchr(hostport, ':'), *port = hostport;
-	char host[128] = "127.0.0.1", addr[INET6_ADDRSTRLEN];
+	char hostport[RDC_TCP_HOST_MAX + 8], why[320], name[RDC_TCP_NAME_MAX];
 	struct sockaddr_storage ss;
-	socklen_t sl = sizeof(ss);
-	struct addrinfo *res;
-	int one = 1, fd;
-	uint32_t pn;
+	int fd;
 
-	if (colon) {
-		size_t hl = (size_t)(colon - hostport);
-		const char *h = hostport;
-
-		if (hl >= 2 && h[0] == '[' && h[hl - 1] == ']') {
-			h++;
-			hl -= 2;
-		}
-		if (!hl || hl >= sizeof(host))
-			return RDC_E_URI;
-		memcpy(host, h, hl);
-		host[hl] = '\0';
-		port = colon + 1;
-	}
-	if (rdc_sink_opt_u32(port, 0, 65535, &pn))
-		return RDC_E_URI;
-	if (getaddrinfo(host, port, &hints, &res))
-		return rdc_err_detail(RDC_E_URI, "web sink: cannot resolve %s",
-				      host);
-	fd = socket(res->ai_family,
-		    res->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC,
-		    res->ai_protocol);
+	if ((size_t)snprintf(hostport, sizeof(hostport), "%s%s",
+			     strchr(spec, ':') ? "" : ":",
+			     spec) >= sizeof(hostport))
+		return rdc_err_detail(RDC_E_URI, "web sink: %.200s: too long",
+				      spec);
+	fd = rdc_tcp_listen(hostport, 16, &ss);
 	if (fd < 0) {
-		freeaddrinfo(res);
-		return rdc_err_detail(RDC_E_IO, "web sink: socket: %s",
-				      strerror(errno));
+		snprintf(why, sizeof(why), "%s", rdc_last_error_detail(fd));
+		return rdc_err_detail(fd, "web sink: %s", why);
 	}
-	setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
-	if (bind(fd, res->ai_addr, res->ai_addrlen) || listen(fd, 16)) {
-		int e = errno;
-
-		freeaddrinfo(res);
-		close(fd);
-		return rdc_err_detail(RDC_E_IO, "web sink: %s: %s", hostport,
-				      strerror(e));
-	}
-	freeaddrinfo(res);
 	w->lfd = fd;
-	getsockname(fd, (struct sockaddr *)&ss, &sl);
-	w->loopback = web_is_loopback(&ss);
+	w->loopback = rdc_tcp_is_loopback(&ss);
 	if (!w->loopback && !w->have_token)
 		return rdc_err_detail(RDC_E_AUTH,
 				      "web sink: %s is not loopback: a token "
 				      "is required (token=FILE; rdcd --token)",
-				      hostport);
-	if (ss.ss_family == AF_INET6) {
-		const struct sockaddr_in6 *in6 = (const void *)&ss;
-
-		inet_ntop(AF_INET6, &in6->sin6_addr, addr, sizeof(addr));
-		snprintf(w->url, sizeof(w->url), "http://[%s]:%u/", addr,
-			 ntohs(in6->sin6_port));
-	} else {
-		const struct sockaddr_in *in = (const void *)&ss;
-
-		inet_ntop(AF_INET, &in->sin_addr, addr, sizeof(addr));
-		snprintf(w->url, sizeof(w->url), "http://%s:%u/", addr,
-			 ntohs(in->sin_port));
-	}
+				      spec);
+	rdc_tcp_name(&ss, name);
+	snprintf(w->url, sizeof(w->url), "http://%s/", name);
 	return 0;
 }
 
@@ -1095,8 +1004,11 @@ static int web_open(rdc_sink *s, const char *args)
 		else
 			ret = RDC_E_URI;
 	}
-	if (!ret && token)
-		ret = web_read_token(w, token);
+	if (!ret && token) {
+		ret = rdc_token_read("web sink: token", token, w->token,
+				     &w->token_len);
+		w->have_token = !ret;
+	}
 	if (!ret) {
 		w->rgba = malloc(WEB_BAND_BYTES);
 		if (!w->rgba)
