@@ -53,6 +53,7 @@
 #include <zlib.h>
 
 #include "hw.h"
+#include "kchip.h"
 #include "rdc_priv.h"
 #include "rdc_proto.h"
 
@@ -481,34 +482,17 @@ static int rec_step(rdc_dev *dev, uint64_t cycles)
 
 /*
  * Words to a device that takes them in bulk (untimed traces only), in
- * records of at most REC_SUBMIT_MAX words cut at command boundaries (as
- * fbdev.c cuts them for rdcfb, which checks each piece command by
- * command), each submitted in turn with its result.
+ * records of at most REC_SUBMIT_MAX words cut at command boundaries as
+ * the fbdev: and drm: backends cut theirs (rdc_kchip_piece), each
+ * submitted in turn with its result.
  */
-static size_t rec_piece(const uint32_t *w, size_t n)
-{
-	size_t i = 0;
-
-	if (n <= REC_SUBMIT_MAX)
-		return n;
-	for (;;) {
-		size_t len = RDC_CMD_LEN(w[i]);
-		size_t next = i + 1 + (len > RDC_CMD_MAX_ARGS ? 0 : len);
-
-		if (next > REC_SUBMIT_MAX)
-			break;
-		i = next;
-	}
-	return i ? i : REC_SUBMIT_MAX;
-}
-
 static int rec_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 {
 	struct rdc_rec *r = dev->priv;
 	int ret = 0;
 
 	while (n && !ret) {
-		size_t k = rec_piece(words, n);
+		size_t k = rdc_kchip_piece(words, n, REC_SUBMIT_MAX);
 		uint8_t b[4];
 
 		rec_head(r, REC_SUBMIT);
