@@ -32,7 +32,7 @@
 struct hist_rec {
 	struct rdc_history_entry e;
 	uint32_t addr; /* the byte holding the pixel (the first, if several) */
-	uint8_t shift; /* sub-byte pixels: bit position in that byte */
+	uint8_t bit;   /* sub-byte pixels: bit offset in that byte (MSB 0) */
 	uint8_t bpp;   /* bits per pixel */
 	uint8_t partial; /* sub-byte pixel in a run's first or last byte */
 };
@@ -63,24 +63,7 @@ struct rdc_history {
 
 static uint32_t px_get(const uint8_t *vram, const struct hist_rec *r)
 {
-	const uint8_t *p = vram + r->addr;
-
-	switch (r->bpp) {
-	case 1:
-	case 2:
-	case 4:
-		return (uint32_t)(*p >> r->shift) & ((1u << r->bpp) - 1);
-	case 8:
-		return p[0];
-	case 16:
-		return (uint32_t)p[0] | (uint32_t)p[1] << 8;
-	case 24:
-		return (uint32_t)p[0] | (uint32_t)p[1] << 8 |
-		       (uint32_t)p[2] << 16;
-	default:
-		return (uint32_t)p[0] | (uint32_t)p[1] << 8 |
-		       (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-	}
+	return rdc_px_get(vram + r->addr, r->bpp, r->bit);
 }
 
 /* FNV-1a over the bytes of a write access, as they are now. */
@@ -237,7 +220,7 @@ static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 			r->e.format = c->fb_format;
 			r->addr = (uint32_t)at;
 			r->bpp = (uint8_t)bpp;
-			r->shift = bpp < 8 ? (uint8_t)(8 - bpp - bit % 8) : 0;
+			r->bit = (uint8_t)(bit % 8);
 			r->partial = bpp < 8 && (at == a || at == end - 1);
 			r->e.fetched = !c->running	? -1 :
 				       c->next_line > y ? 1 :

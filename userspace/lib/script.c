@@ -297,31 +297,9 @@ static int st_blit(struct rdl *r, uint32_t op)
 /* Store pixel x of a packed row in format fmt (leftmost in the MSBs). */
 static void rdl_put_pixel(uint8_t *row, uint32_t fmt, uint32_t x, uint32_t v)
 {
-	uint32_t bpp = rdc_format_bpp(fmt);
+	unsigned int bpp = rdc_format_bpp(fmt);
 
-	if (bpp < 8) {
-		uint32_t bit = x * bpp;
-		uint32_t shift = 8 - bpp - (bit & 7);
-		uint32_t mask = ((1u << bpp) - 1) << shift;
-
-		row[bit / 8] = (uint8_t)((row[bit / 8] & ~mask) |
-					 ((v << shift) & mask));
-		return;
-	}
-	switch (bpp) {
-	case 8:
-		row[x] = (uint8_t)v;
-		break;
-	case 16:
-		rdc_st16(row + 2 * x, v);
-		break;
-	case 24:
-		rdc_st24(row + 3 * x, v);
-		break;
-	default:
-		rdc_st32(row + 4 * x, v);
-		break;
-	}
+	rdc_px_put(row, bpp, (uint64_t)x * bpp, v);
 }
 
 /*
