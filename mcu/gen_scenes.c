@@ -29,23 +29,11 @@
 
 #include "rdc_priv.h"
 #include "rdc_proto.h"
+#include "record.h"
 #include "scene.h"
 
-#define REC_MAGIC	"RDCTRACE"
-#define REC_HEAD	16u /* magic, version, VRAM size */
 #define VRAM_LADDER_MIN (256u << 10)
 #define OP_MAX_ARGS	0xffffffu
-
-enum {
-	REC_REG_WRITE = 1,
-	REC_REG_READ,
-	REC_VRAM_WRITE,
-	REC_WAIT,
-	REC_STEP,
-	REC_POWER,
-	REC_END,
-	REC_PINS
-};
 
 struct words {
 	uint32_t *w;
@@ -61,7 +49,7 @@ struct gen {
 };
 
 /* "gen_scenes: WHAT: WHY" and exit */
-static void die(const char *what, const char *why)
+__attribute__((noreturn)) static void die(const char *what, const char *why)
 {
 	fprintf(stderr, "gen_scenes: %s: %s\n", what, why);
 	exit(1);
@@ -173,11 +161,14 @@ static void op_vram_write(struct gen *g, uint64_t t, uint32_t addr,
 static void convert(struct gen *g, const uint8_t *buf, size_t n, size_t mark,
 		    uint64_t total)
 {
-	size_t off = REC_HEAD;
+	size_t off = REC_HEAD_LEN;
 	bool marked = false;
 
-	if (n < REC_HEAD || memcmp(buf, REC_MAGIC, 8))
+	if (n < REC_HEAD_LEN || memcmp(buf, REC_MAGIC, REC_MAGIC_LEN))
 		die(g->name, "not a trace");
+	/* sim:'s recorder writes timed traces: no flags word, no SUBMIT */
+	if (rdc_proto_get32(buf + REC_MAGIC_LEN) != REC_VERSION)
+		die(g->name, "not a timed trace");
 	g->last_op = SIZE_MAX;
 	op_head(g, MCU_OP_POWER, 0, 0);
 	for (;;) {
@@ -189,7 +180,7 @@ static void convert(struct gen *g, const uint8_t *buf, size_t n, size_t mark,
 			op_head(g, MCU_OP_MARK, 0, total);
 			marked = true;
 		}
-		if (n - off < 9)
+		if (n - off < REC_RECORD_HEAD)
 			die(g->name, "trace without END");
 		t = rdc_proto_get64(r + 1);
 		switch (r[0]) {
@@ -207,14 +198,16 @@ static void convert(struct gen *g, const uint8_t *buf, size_t n, size_t mark,
 		case REC_END:
 			need = 0;
 			break;
+		case REC_SUBMIT:
+			die(g->name, "SUBMIT record in a timed trace");
 		default:
 			die(g->name, "unknown trace record");
 		}
-		if (n - off - 9 < need)
+		if (n - off - REC_RECORD_HEAD < need)
 			die(g->name, "trace cut short");
-		r += 9;
-		off += 9 + need;
-		switch (buf[off - 9 - need]) {
+		r += REC_RECORD_HEAD;
+		off += REC_RECORD_HEAD + need;
+		switch (buf[off - REC_RECORD_HEAD - need]) {
 		case REC_REG_WRITE:
 			op_reg_write(g, t, rdc_proto_get32(r),
 				     rdc_proto_get32(r + 4));

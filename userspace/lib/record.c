@@ -56,13 +56,8 @@
 #include "kchip.h"
 #include "rdc_priv.h"
 #include "rdc_proto.h"
+#include "record.h"
 
-#define REC_MAGIC	   "RDCTRACE"
-#define REC_MAGIC_LEN	   8u
-#define REC_VERSION	   2u /* a timed trace */
-#define REC_VERSION_FLAGS  3u /* the flags word and SUBMIT */
-#define REC_VERSION_MIN	   1u /* no PINS records */
-#define REC_VERSION_MAX	   REC_VERSION_FLAGS
 #define REC_MAX_VRAM_WRITE (256u << 20)
 /* Words a SUBMIT record carries at most (a command is 4097 at most). */
 #define REC_SUBMIT_MAX 65536u
@@ -76,22 +71,6 @@
  */
 #define REC_MAX_CYCLES (60ull * RDC_DEFAULT_CORE_HZ)
 #define REC_MAX_POWER  256u
-
-/* Header flags (version 3 on). */
-#define REC_F_UNTIMED 0x1u /* no time: every record's is 0 */
-#define REC_F_KNOWN   REC_F_UNTIMED
-
-enum rec_op {
-	REC_REG_WRITE = 1,
-	REC_REG_READ = 2,
-	REC_VRAM_WRITE = 3,
-	REC_WAIT = 4,
-	REC_STEP = 5,
-	REC_POWER = 6,
-	REC_END = 7,
-	REC_PINS = 8,
-	REC_SUBMIT = 9,
-};
 
 struct rdc_rec {
 	FILE *f;
