@@ -18,7 +18,13 @@ ifneq ($(WERROR),)
 WARN += -Werror
 endif
 
-INC := -Ihw-sim -Ifirmware-model -Iuserspace/include -Iuserspace/lib -Idriver
+# Every user-space target sees the public headers (and the register map
+# beside them); the private ones (librdc's rdc_priv.h, the display
+# processor's, the driver's ioctl headers) only what is given PRIV_INC
+# below: librdc itself and the programs that test or measure it from
+# inside, so a private header cannot leak into rdcd or rdcctl unseen.
+INC := -Ihw-sim -Iuserspace/include
+PRIV_INC := -Ifirmware-model -Iuserspace/lib -Idriver
 BASE_CFLAGS := -std=gnu11 $(WARN) $(INC) -D_GNU_SOURCE
 REL_CFLAGS := $(BASE_CFLAGS) -O2 -g
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all \
@@ -141,6 +147,16 @@ $(O)/rel/%.o: %.c
 $(O)/san/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(SAN_CFLAGS) -MMD -MP -c $< -o $@
+
+# Who may include private headers (see INC).
+PRIV_DIRS := userspace/lib userspace/sink tests/unit tests/vm bench
+$(foreach d,$(PRIV_DIRS),$(O)/rel/$(d)/%.o $(O)/san/$(d)/%.o): \
+	REL_CFLAGS += $(PRIV_INC)
+$(foreach d,$(PRIV_DIRS),$(O)/rel/$(d)/%.o $(O)/san/$(d)/%.o): \
+	SAN_CFLAGS += $(PRIV_INC)
+$(O)/pic/userspace/lib/%.o $(O)/pic/userspace/sink/%.o: \
+	REL_CFLAGS += $(PRIV_INC)
+$(O)/rel/rdc-bench-peers: REL_CFLAGS += $(PRIV_INC)
 
 $(O)/rel/librdc.a: $(REL_OBJS)
 	@rm -f $@
@@ -577,7 +593,7 @@ FUZZ_CC ?= clang
 FUZZ_DIR ?= $(O)/fuzz
 FUZZ_INSTR ?= -fsanitize=address,undefined -fno-sanitize-recover=all
 FUZZ_CFLAGS := -std=gnu11 -g -O1 -fsanitize=fuzzer $(FUZZ_INSTR) $(INC) \
-	-D_GNU_SOURCE
+	$(PRIV_INC) -D_GNU_SOURCE
 FUZZ_RUNS ?= 1000000
 FUZZ_TIME ?= 15
 FUZZ_LONG_TIME ?= 150
@@ -612,7 +628,8 @@ $(FUZZ_DIR)/fuzz_usb: tests/fuzz/fuzz_usb.c userspace/lib/usb_host.c \
 # (waits in the simulator, `step`) and to keep `screenshot` from writing
 # files: the targets' comments say which and why.
 FUZZ_LIB_CFLAGS := -std=gnu11 -g -O1 -fsanitize=fuzzer-no-link $(FUZZ_INSTR) \
-	$(INC) -D_GNU_SOURCE $(VNC_CFLAGS) $(USB_CFLAGS) $(GPIOD_CFLAGS)
+	$(INC) $(PRIV_INC) -D_GNU_SOURCE $(VNC_CFLAGS) $(USB_CFLAGS) \
+	$(GPIOD_CFLAGS)
 FUZZ_LIB_OBJS := $(patsubst %.c,$(FUZZ_DIR)/obj/%.o,$(CORE_SRCS) $(LIB_SRCS))
 FUZZ_RDCD_OBJS := $(patsubst %.c,$(FUZZ_DIR)/obj/%.o,\
 	$(filter-out userspace/rdcd/rdcd.c,$(RDCD_SRCS)))
@@ -859,6 +876,10 @@ $(MCU_DIR)/%.o: %.c
 # its loops must not become calls to itself
 $(MCU_DIR)/mcu/string.o: MCU_CFLAGS += -fno-tree-loop-distribute-patterns
 
+# gen_scenes reads traces through librdc's private headers; the host
+# replay the core's (scene.h).
+$(O)/rel/mcu/%.o $(O)/rel/mcu_scenes.o: REL_CFLAGS += -Ifirmware-model
+$(O)/rel/mcu/gen_scenes.o: REL_CFLAGS += -Iuserspace/lib
 $(O)/rel/gen_scenes: $(O)/rel/mcu/gen_scenes.o $(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 # the scenes as C (and "name vram" lines for mcu/check.sh)
