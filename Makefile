@@ -494,7 +494,12 @@ check test: deps
 	tests/install/run.sh $(O) || vm=1; \
 	tests/run.sh $(O)/san && exit $$vm
 
-$(O)/rel/rdc-bench: $(O)/rel/bench/rdc_bench.o $(O)/rel/librdc.a
+# rdc-bench's parts: bench/rdc_bench.h lists what each one does.
+RDC_BENCH_SRCS := bench/rdc_bench.c bench/input.c bench/pixels.c \
+	bench/draw.c bench/limits.c bench/measure.c bench/report.c \
+	bench/targets.c bench/growth.c
+$(O)/rel/rdc-bench: $(patsubst %.c,$(O)/rel/%.o,$(RDC_BENCH_SRCS)) \
+		$(O)/rel/librdc.a
 	$(CC) $(REL_CFLAGS) $^ $(LIBS) -o $@
 
 # The workloads defined in bench/README.md, then rdcd's and the
@@ -523,8 +528,8 @@ bench: $(O)/rel/rdc-bench $(if $(BENCH_ARGS),,$(BENCH_REST))
 # pkg-config files are found; scripts/deps.sh --peers installs them.
 BENCH_PEERS := pixman-1:PIXMAN:pixman cairo:CAIRO:cairo \
 	SDL2_gfx:SDL2_GFX:sdl2_gfx
-$(O)/rel/rdc-bench-peers: bench/rdc_bench.c bench/bench.h bench/peer_*.c \
-		$(O)/rel/librdc.a
+$(O)/rel/rdc-bench-peers: $(RDC_BENCH_SRCS) bench/rdc_bench.h bench/bench.h \
+		bench/peer_*.c $(O)/rel/librdc.a
 	@set -e; defs=; srcs=; pkgs=; \
 	for p in $(BENCH_PEERS); do \
 		pc=$${p%%:*}; rest=$${p#*:}; \
@@ -536,7 +541,7 @@ $(O)/rel/rdc-bench-peers: bench/rdc_bench.c bench/bench.h bench/peer_*.c \
 	cflags=; libs=; if [ -n "$$pkgs" ]; then \
 		cflags=$$($(PKG_CONFIG) --cflags $$pkgs); \
 		libs=$$($(PKG_CONFIG) --libs $$pkgs); fi; \
-	cmd="$(CC) $(REL_CFLAGS) $$defs $$cflags bench/rdc_bench.c $$srcs"; \
+	cmd="$(CC) $(REL_CFLAGS) $$defs $$cflags $(RDC_BENCH_SRCS) $$srcs"; \
 	cmd="$$cmd $(O)/rel/librdc.a $(LIBS) $$libs -lm -o $@"; \
 	echo "$$cmd"; $$cmd
 
