@@ -718,7 +718,9 @@ LLVM_PROFDATA ?= llvm-profdata-14
 LLVM_COV ?= llvm-cov-14
 FUZZ_COV_DIR := $(O)/fuzz-cov
 FUZZ_COV_FILES := userspace/lib/proto.c userspace/lib/usb_host.c \
-	userspace/rdcd/serve.c userspace/lib/record.c \
+	userspace/rdcd/serve.c userspace/rdcd/dispatch.c \
+	userspace/rdcd/pending.c userspace/rdcd/frames.c \
+	userspace/rdcd/hist.c userspace/rdcd/out.c userspace/lib/record.c \
 	$(sort $(wildcard userspace/lib/script*.c))
 fuzz-cov:
 	@command -v $(LLVM_COV) >/dev/null && command -v $(LLVM_PROFDATA) \

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-only
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /*
- * libFuzzer target for rdcd's request handling (userspace/rdcd/serve.c),
- * in process: the daemon's own objects except rdcd.c (its main and poll
- * loop), a sim: device with small VRAM, and up to FZ_CLIENTS clients on
- * socketpairs.  The input is a list of records: connect, disconnect, raw
+ * libFuzzer target for rdcd's request handling (userspace/rdcd/serve.c
+ * and the parts serve.h lists), in process: the daemon's own objects
+ * except rdcd.c (its main and poll loop), a sim: device with small VRAM,
+ * and up to FZ_CLIENTS clients on socketpairs.  The input is a list of records: connect, disconnect, raw
  * bytes from a client, a well-formed message of any type with any
  * payload, a HELLO, time moved by a bounded amount, a few turns of the
  * loop.  Between records the harness turns the loop as rdcd_loop does

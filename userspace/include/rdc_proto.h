@@ -77,7 +77,7 @@ enum rdc_msg_type {
 
 /*
  * Status codes.  The daemon turns its errors into these in one place
- * (rdcd_status_from_error in userspace/rdcd/serve.c); librdc turns them
+ * (rdcd_status_from_error in userspace/rdcd/out.c); librdc turns them
  * back in one place (net_status_to_error in userspace/lib/net.c), where
  * codes past the last known one read as RDC_E_PROTO.  Which of them close
  * the connection: rdc_proto_reply_closes.

@@ -2,7 +2,8 @@
 /* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
  * rdcd internals: the daemon state, its clients, and the functions the
- * event loop (rdcd.c) and the request handlers (serve.c) share.
+ * event loop (rdcd.c) and the request handlers (serve.c and the parts
+ * serve.h lists) share.
  */
 #ifndef RDCD_H
 #define RDCD_H
@@ -92,7 +93,7 @@ struct rdcd_client {
 	uint32_t id;
 	bool tcp, hello, dead, closing;
 	/* this client's *_HI snapshot: the HI register its last *_LO read
-	 * belongs to (0: none) and that HI's value then (serve.c) */
+	 * belongs to (0: none) and that HI's value then (dispatch.c) */
 	uint32_t snap_reg, snap_val;
 	/* a complete request waits in hdr/body until the chip is between
 	 * commands (it changes the device) */
@@ -228,7 +229,7 @@ int rdcd_systemd_add(struct rdcd *d, const char *name);
 void rdcd_systemd_done(struct rdcd *d);
 void rdcd_systemd_notify(const struct rdcd *d, const char *state);
 
-/* serve.c */
+/* serve.c and its parts (serve.h) */
 int rdcd_device_open(struct rdcd *d);
 void rdcd_device_close(struct rdcd *d);
 struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
