@@ -15,6 +15,7 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 #include "bus.h"
 
 #define VRAM_SIZE (2u << 20)
@@ -23,12 +24,6 @@
 #define ROW	  RDC_DRAM_ROW_BYTES
 #define MISS	  RDC_T_ROW_MISS
 #define TURN	  RDC_T_TURN
-
-struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
-};
 
 /*
  * A small mode: 64 pixels a line at 6.4 MHz is 1000 core cycles at
@@ -77,22 +72,14 @@ static void set_mode(struct rdc_hw *hw, const struct rdc_timing *t,
 
 static int setup(void **state)
 {
-	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
+	struct hw_fx *f;
 
-	if (!f)
+	if (hw_fx_setup(state, VRAM_SIZE, FRAME_CAP))
 		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
+	f = *state;
 	/* no scanout: the DP has the bus to itself */
 	rdc_hw_write(&f->hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
 	rdc_hw_write(&f->hw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
-	*state = f;
-	return 0;
-}
-
-static int teardown(void **state)
-{
-	free(*state);
 	return 0;
 }
 
@@ -118,7 +105,7 @@ static uint64_t column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 /* Worked cases, each from the formula by hand. */
 static void test_span_costs(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 
 	/* aligned burst, first access (no open row): 16 beats + miss */
@@ -177,7 +164,7 @@ static void test_span_costs(void **state)
 
 static void test_column_costs(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 
 	/* 4 pixels of 4 bytes, one row apart: each its own row (miss) and
@@ -254,7 +241,7 @@ static void test_random_spans_match_reference(void **state)
 		RDC_BUS_WRITE | RDC_BUS_TAIL_PARTIAL,
 		RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL | RDC_BUS_TAIL_PARTIAL,
 	};
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint32_t seed = 12345, row = ~0u;
 	int i;
@@ -276,7 +263,7 @@ static void test_random_spans_match_reference(void **state)
 
 static void test_out_of_range(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint64_t t0 = hw->now;
 
@@ -306,7 +293,7 @@ static void test_out_of_range(void **state)
 
 static void test_compute_and_idle(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 
 	rdc_port_compute(hw, 17);
@@ -328,7 +315,7 @@ static uint64_t line_time(const struct rdc_hw *hw, uint32_t line)
 
 static void test_burst_waits_for_fetch_window(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint64_t lt;
 
@@ -376,7 +363,7 @@ static void test_burst_waits_for_fetch_window(void **state)
 
 static void test_column_waits_for_fetch_window(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint64_t lt;
 
@@ -393,7 +380,7 @@ static void test_column_waits_for_fetch_window(void **state)
 
 static void test_vblank_faster_than_active(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t len = 64 * 1024, addr = 256 * ROW;
 	uint64_t blank, active, stall, base, lines;
@@ -424,7 +411,7 @@ static void test_vblank_faster_than_active(void **state)
 /* Scanout off: no fetch windows, no contention. */
 static void test_no_contention_when_scanout_off(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 
 	set_mode(hw, &small_mode, 0, ROW, RDC_FMT_XRGB8888);
@@ -439,23 +426,27 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test_setup_teardown(test_span_costs, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_column_costs, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(
-			test_random_spans_match_reference, setup, teardown),
+			test_random_spans_match_reference, setup,
+			hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_out_of_range, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_compute_and_idle, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(
-			test_burst_waits_for_fetch_window, setup, teardown),
+			test_burst_waits_for_fetch_window, setup,
+			hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(
-			test_column_waits_for_fetch_window, setup, teardown),
+			test_column_waits_for_fetch_window, setup,
+			hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_vblank_faster_than_active,
-						setup, teardown),
+						setup, hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(
-			test_no_contention_when_scanout_off, setup, teardown),
+			test_no_contention_when_scanout_off, setup,
+			hw_fx_teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -14,41 +14,28 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 #include "bus.h"
 
 #define VRAM_SIZE (2u << 20)
 #define FRAME_CAP (64u * 64u)
 
-struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
-};
-
 static int setup(void **state)
 {
-	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
+	struct hw_fx *f;
 
-	if (!f)
+	if (hw_fx_setup(state, VRAM_SIZE, FRAME_CAP))
 		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
+	f = *state;
 	/* no scanout: fetch costs are the bare formulas */
 	rdc_hw_write(&f->hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
 	rdc_hw_write(&f->hw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
-	*state = f;
-	return 0;
-}
-
-static int teardown(void **state)
-{
-	free(*state);
 	return 0;
 }
 
 static void test_fifo_overflow(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint32_t i, w[RDC_FIFO_DEPTH];
 
@@ -78,7 +65,7 @@ static void test_fifo_overflow(void **state)
 
 static void test_fifo_fetch_cost_and_order(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint32_t w[8], i, t0;
 
@@ -108,7 +95,7 @@ static void test_fifo_fetch_cost_and_order(void **state)
 
 static void test_fifo_lowwater(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint32_t w[16], i;
 
@@ -158,7 +145,7 @@ static void expect_ring_error(struct rdc_hw *hw)
 
 static void test_ring_validation(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint32_t w[4];
 
@@ -205,7 +192,8 @@ static void test_ring_validation(void **state)
 	assert_false(rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_RING_EMPTY);
 }
 
-static void put_words(struct fx *f, uint32_t addr, uint32_t first, uint32_t n)
+static void put_words(struct hw_fx *f, uint32_t addr, uint32_t first,
+		      uint32_t n)
 {
 	uint32_t i;
 
@@ -221,7 +209,7 @@ static void put_words(struct fx *f, uint32_t addr, uint32_t first, uint32_t n)
 
 static void test_ring_wrap_and_cost(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t base = 3 * RDC_DRAM_ROW_BYTES, size = 64;
 	uint32_t w[16];
@@ -266,7 +254,7 @@ static void test_ring_wrap_and_cost(void **state)
 
 static void test_rdata(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	static uint32_t words[RDC_RDATA_DEPTH + 10];
 	uint32_t i;
@@ -300,16 +288,17 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test_setup_teardown(test_fifo_overflow, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_fifo_fetch_cost_and_order,
-						setup, teardown),
+						setup, hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_fifo_lowwater, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_ring_validation, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_ring_wrap_and_cost, setup,
-						teardown),
-		cmocka_unit_test_setup_teardown(test_rdata, setup, teardown),
+						hw_fx_teardown),
+		cmocka_unit_test_setup_teardown(test_rdata, setup,
+						hw_fx_teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

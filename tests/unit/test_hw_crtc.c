@@ -15,15 +15,14 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 
 #define VRAM_SIZE (2u << 20)
 #define FRAME_CAP (64u * 64u)
 #define CORE_HZ	  100000000ull
 
 struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
+	struct hw_fx sim;
 	/* frame listener */
 	int frames;
 	uint32_t fw, fh;
@@ -88,14 +87,15 @@ static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 
 	assert_non_null(xrgb);
 	/* the chip is consistent from inside the listener */
-	assert_int_equal(
-		FIELD_GET(RDC_BEAM_Y, rdc_hw_read(&f->hw, RDC_REG_BEAM)), h);
-	assert_int_equal(rdc_hw_read(&f->hw, RDC_REG_FRAME_COUNT), n + 1);
-	assert_true(rdc_hw_pins(&f->hw) & RDC_PIN_TE);
-	assert_ptr_equal(rdc_hw_frame(&f->hw, NULL, NULL), xrgb);
+	assert_int_equal(FIELD_GET(RDC_BEAM_Y,
+				   rdc_hw_read(&f->sim.hw, RDC_REG_BEAM)),
+			 h);
+	assert_int_equal(rdc_hw_read(&f->sim.hw, RDC_REG_FRAME_COUNT), n + 1);
+	assert_true(rdc_hw_pins(&f->sim.hw) & RDC_PIN_TE);
+	assert_ptr_equal(rdc_hw_frame(&f->sim.hw, NULL, NULL), xrgb);
 	if (f->frames < 8) {
 		f->fnum[f->frames] = n;
-		f->ftime[f->frames] = f->hw.now;
+		f->ftime[f->frames] = f->sim.hw.now;
 	}
 	f->frames++;
 	f->fw = w;
@@ -105,20 +105,23 @@ static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
-	if (!f)
+	if (!f || hw_fx_init(&f->sim, VRAM_SIZE, FRAME_CAP)) {
+		free(f);
 		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
-	rdc_hw_set_frame_fn(&f->hw, on_frame, f);
-	set_mode(&f->hw, &small_mode);
+	}
+	rdc_hw_set_frame_fn(&f->sim.hw, on_frame, f);
+	set_mode(&f->sim.hw, &small_mode);
 	*state = f;
 	return 0;
 }
 
 static int teardown(void **state)
 {
-	free(*state);
+	struct fx *f = *state;
+
+	hw_fx_fini(&f->sim);
+	free(f);
 	return 0;
 }
 
@@ -137,19 +140,14 @@ static void test_preset_periods(void **state)
 		{ RDC_PRESET_1920x1080_60, 1920, 1080, 2200, 1125, 148500,
 		  60000 },
 	};
-	const uint32_t cap = 1920 * 1080;
-	struct rdc_hw_config cfg = { .vram_size = 1u << 20 };
-	struct rdc_hw *hw = calloc(1, sizeof(*hw));
-	uint8_t *vram = calloc(1, cfg.vram_size);
-	uint32_t *f0 = calloc(cap, 4), *f1 = calloc(cap, 4);
+	struct hw_fx *x = calloc(1, sizeof(*x));
+	struct rdc_hw *hw;
 	size_t i;
 
 	(void)state;
-	assert_non_null(hw);
-	assert_non_null(vram);
-	assert_non_null(f0);
-	assert_non_null(f1);
-	rdc_hw_init(hw, &cfg, vram, f0, f1, cap);
+	assert_non_null(x);
+	assert_int_equal(hw_fx_init(x, 1u << 20, 1920 * 1080), 0);
+	hw = &x->hw;
 	for (i = 0; i < sizeof(p) / sizeof(p[0]); i++) {
 		uint64_t frame = (uint64_t)p[i].htotal * p[i].vtotal * CORE_HZ /
 				 ((uint64_t)p[i].khz * 1000);
@@ -188,10 +186,8 @@ static void test_preset_periods(void **state)
 		assert_int_equal(w, p[i].w);
 		assert_int_equal(h, p[i].h);
 	}
-	free(f0);
-	free(f1);
-	free(vram);
-	free(hw);
+	hw_fx_fini(x);
+	free(x);
 }
 
 static void test_line_times(void **state)
@@ -204,7 +200,7 @@ static void test_line_times(void **state)
 		.v_sync_start = 7, .v_sync_end = 8, .pixclk_khz = 3000,
 	};
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t fs;
 	uint32_t n;
 
@@ -227,7 +223,7 @@ static void test_line_times(void **state)
 static void test_beam(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t fs = hw->now;
 	uint32_t x, y, v;
 
@@ -270,7 +266,7 @@ static void test_beam(void **state)
 static void test_vblank_and_line_irqs(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t fs = hw->now;
 
 	rdc_hw_write(hw, RDC_REG_LINE_COMPARE, 7);
@@ -307,7 +303,7 @@ static void test_vblank_and_line_irqs(void **state)
 static void test_frame_listener(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t fs = hw->now;
 	uint32_t w, h;
 	int i;
@@ -335,7 +331,7 @@ static void test_frame_listener(void **state)
 static void test_invalid_timing_refused(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t vb, fs = hw->now;
 
 	/* display wider than total */
@@ -411,7 +407,7 @@ static void test_invalid_timing_refused(void **state)
 static void test_mode_change_at_next_frame(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t fs = hw->now;
 
 	rdc_hw_run_until(hw, fs + 10 * LINE_CYCLES);
@@ -441,7 +437,7 @@ static void test_mode_change_at_next_frame(void **state)
 static void test_scanout_off_and_on(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t t;
 
 	rdc_hw_run_until(hw, hw->now + 5 * LINE_CYCLES + 5);
@@ -472,7 +468,7 @@ static void test_scanout_off_and_on(void **state)
 static uint64_t fake_run(void *dp, uint64_t until)
 {
 	struct fx *f = dp;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	if (f->runs < 8)
 		f->run_until[f->runs] = until;
@@ -492,7 +488,7 @@ static const struct rdc_dp_ops fake_ops = { fake_reset, fake_run };
 static void test_run_loop(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t t0 = hw->now;
 
 	rdc_hw_set_dp(hw, &fake_ops, f);
@@ -526,9 +522,9 @@ static uint64_t sleepy_run(void *dp, uint64_t until)
 
 	(void)until;
 	if (f->runs < 8)
-		f->run_until[f->runs] = f->hw.now;
+		f->run_until[f->runs] = f->sim.hw.now;
 	f->runs++;
-	return f->runs < 3 ? f->hw.now + 700 : RDC_NEVER;
+	return f->runs < 3 ? f->sim.hw.now + 700 : RDC_NEVER;
 }
 
 static const struct rdc_dp_ops sleepy_ops = { fake_reset, sleepy_run };
@@ -536,7 +532,7 @@ static const struct rdc_dp_ops sleepy_ops = { fake_reset, sleepy_run };
 static void test_run_loop_wakes(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t t0 = hw->now;
 
 	rdc_hw_set_dp(hw, &sleepy_ops, f);

@@ -20,6 +20,7 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 
 #define VRAM_SIZE (1u << 20)
 #define SCR_W	  80u
@@ -29,20 +30,18 @@
 #define CUR2_BASE 0x60000u /* the 2 bpp image */
 
 struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
+	struct hw_fx sim;
 	uint32_t seed;
 };
 
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
-	if (!f)
+	if (!f || hw_fx_init(&f->sim, VRAM_SIZE, FRAME_CAP)) {
+		free(f);
 		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
+	}
 	f->seed = 0x2545f491u;
 	*state = f;
 	return 0;
@@ -50,7 +49,10 @@ static int setup(void **state)
 
 static int teardown(void **state)
 {
-	free(*state);
+	struct fx *f = *state;
+
+	hw_fx_fini(&f->sim);
+	free(f);
 	return 0;
 }
 
@@ -125,7 +127,7 @@ static const uint32_t *grab_settled(struct rdc_hw *hw)
 static void random_screen(struct fx *f)
 {
 	for (uint32_t i = 0; i < SCR_W * SCR_H; i++)
-		put32(f->vram + 4 * i, rnd(f));
+		put32(f->sim.vram + 4 * i, rnd(f));
 }
 
 /*
@@ -143,16 +145,16 @@ static void random_cursor(struct fx *f, uint32_t size)
 		else
 			for (int k = 0; k < 3; k++)
 				v |= (rnd(f) % (a + 1)) << (8 * k);
-		put32(f->vram + CUR_BASE + 4 * i, v);
+		put32(f->sim.vram + CUR_BASE + 4 * i, v);
 	}
 	/* shuffle so the alpha ramp is not all on the first rows */
 	for (uint32_t i = size * size - 1; i > 0; i--) {
 		uint32_t j = rnd(f) % (i + 1);
-		uint32_t a = get32(f->vram + CUR_BASE + 4 * i);
+		uint32_t a = get32(f->sim.vram + CUR_BASE + 4 * i);
 
-		put32(f->vram + CUR_BASE + 4 * i,
-		      get32(f->vram + CUR_BASE + 4 * j));
-		put32(f->vram + CUR_BASE + 4 * j, a);
+		put32(f->sim.vram + CUR_BASE + 4 * i,
+		      get32(f->sim.vram + CUR_BASE + 4 * j));
+		put32(f->sim.vram + CUR_BASE + 4 * j, a);
 	}
 }
 
@@ -180,8 +182,9 @@ static void check_frame(const struct fx *f, const uint32_t *p, uint32_t size,
 	for (uint32_t y = 0; y < SCR_H; y++) {
 		for (uint32_t x = 0; x < SCR_W; x++) {
 			int32_t cx = (int32_t)x - px, cy = (int32_t)y - py;
-			uint32_t want = get32(f->vram + 4 * (y * SCR_W + x)) &
-					0xffffff;
+			uint32_t want =
+				get32(f->sim.vram + 4 * (y * SCR_W + x)) &
+				0xffffff;
 
 			if (lut)
 				want = (lut[want >> 16] & 0xff0000) |
@@ -189,7 +192,7 @@ static void check_frame(const struct fx *f, const uint32_t *p, uint32_t size,
 				       (lut[want & 0xff] & 0xff);
 			if (cx >= 0 && cx < (int32_t)size && cy >= 0 &&
 			    cy < (int32_t)size)
-				want = over(get32(f->vram + CUR_BASE +
+				want = over(get32(f->sim.vram + CUR_BASE +
 						  4 * ((uint32_t)cy * size +
 						       (uint32_t)cx)),
 					    want);
@@ -234,7 +237,7 @@ static void test_composite(void **state)
 	};
 	static const uint32_t sizes[] = { 32, 64 };
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	random_screen(f);
 	start_mode(hw);
@@ -263,7 +266,7 @@ static void test_composite(void **state)
 static void test_over_gamma(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint32_t lut[RDC_CLUT_ENTRIES];
 
 	random_screen(f);
@@ -291,7 +294,7 @@ static void test_over_gamma(void **state)
 static void test_latch(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint32_t *p;
 
 	random_screen(f);
@@ -311,13 +314,15 @@ static void test_latch(void **state)
 	check_frame(f, grab(hw), 64, 4, 4, NULL);
 
 	/* so does the base: a second image at CUR_BASE + 0x10000 */
-	memcpy(f->vram + CUR_BASE + 0x10000, f->vram + CUR_BASE, 64 * 64 * 4);
-	memset(f->vram + CUR_BASE, 0, 64 * 64 * 4); /* wholly transparent */
+	memcpy(f->sim.vram + CUR_BASE + 0x10000, f->sim.vram + CUR_BASE,
+	       64 * 64 * 4);
+	memset(f->sim.vram + CUR_BASE, 0, 64 * 64 * 4); /* wholly transparent */
 	rdc_hw_write(hw, RDC_REG_CURSOR_BASE, CUR_BASE + 0x10000);
 	p = grab(hw); /* the old base's transparent image */
 	check_frame(f, p, 64, -1000, -1000, NULL);
 	p = grab(hw);
-	memmove(f->vram + CUR_BASE, f->vram + CUR_BASE + 0x10000, 64 * 64 * 4);
+	memmove(f->sim.vram + CUR_BASE, f->sim.vram + CUR_BASE + 0x10000,
+		64 * 64 * 4);
 	check_frame(f, p, 64, 4, 4, NULL);
 
 	/* the image: a row changed after its line's fetch shows a frame on */
@@ -350,13 +355,13 @@ static void test_latch(void **state)
 static void test_rows_leaving_vram(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint32_t base = VRAM_SIZE - 10 * 256 + 4; /* rows 0..8 fit */
 	const uint32_t *p;
 
 	random_screen(f);
 	for (uint32_t i = 0; i < 9 * 64; i++)
-		put32(f->vram + base + 4 * i,
+		put32(f->sim.vram + base + 4 * i,
 		      0xff000000u | ((i * 0x10101u) & 0xffffff));
 	start_mode(hw);
 	rdc_hw_write(hw, RDC_REG_CURSOR_BASE, base);
@@ -367,8 +372,9 @@ static void test_rows_leaving_vram(void **state)
 	p = grab_settled(hw);
 	for (uint32_t y = 0; y < SCR_H; y++)
 		for (uint32_t x = 0; x < SCR_W; x++) {
-			uint32_t want = get32(f->vram + 4 * (y * SCR_W + x)) &
-					0xffffff;
+			uint32_t want =
+				get32(f->sim.vram + 4 * (y * SCR_W + x)) &
+				0xffffff;
 
 			if (y < 9 && x < 64)
 				want = ((y * 64 + x) * 0x10101u) & 0xffffff;
@@ -472,7 +478,7 @@ static void test_fetch_cycles(void **state)
 		FIELD_PREP(RDC_CURSOR_CTRL_FMT, RDC_CURSOR_FMT_2BPP),
 	};
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	int cursor_lines = 0;
 
 	random_screen(f);
@@ -525,7 +531,7 @@ static void test_fetch_cycles(void **state)
 static void test_over_missing_lines(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const int32_t px = 10, py = 5;
 	const uint32_t *p;
 
@@ -544,7 +550,7 @@ static void test_over_missing_lines(void **state)
 			uint32_t want = 0;
 
 			if (cx >= 0 && cx < 32 && cy >= 0 && cy < 32)
-				want = over(get32(f->vram + CUR_BASE +
+				want = over(get32(f->sim.vram + CUR_BASE +
 						  4 * (uint32_t)(cy * 32 + cx)),
 					    0);
 			assert_int_equal(p[y * SCR_W + x], want);
@@ -567,12 +573,12 @@ static void test_over_missing_lines(void **state)
 static void test_2bpp_unchanged(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint32_t *p;
 
 	random_screen(f);
 	for (uint32_t i = 0; i < RDC_CURSOR_BYTES; i++)
-		f->vram[CUR2_BASE + i] = (uint8_t)rnd(f);
+		f->sim.vram[CUR2_BASE + i] = (uint8_t)rnd(f);
 	start_mode(hw);
 	rdc_hw_write(hw, RDC_REG_CURSOR_BASE, CUR2_BASE);
 	rdc_hw_write(hw, RDC_REG_CURSOR_FG, 0x123456);
@@ -589,12 +595,13 @@ static void test_2bpp_unchanged(void **state)
 		for (uint32_t x = 0; x < SCR_W; x++) {
 			int32_t cx = (int32_t)x + 9;
 			int32_t cy = (int32_t)y - (int32_t)(SCR_H - 20);
-			uint32_t want = get32(f->vram + 4 * (y * SCR_W + x)) &
-					0xffffff;
+			uint32_t want =
+				get32(f->sim.vram + 4 * (y * SCR_W + x)) &
+				0xffffff;
 
 			if (cx >= 0 && cx < 32 && cy >= 0 && cy < 32) {
 				uint32_t b =
-					f->vram[CUR2_BASE + cy * 8 + cx / 4];
+					f->sim.vram[CUR2_BASE + cy * 8 + cx / 4];
 
 				switch ((b >> (6 - 2 * (cx % 4))) & 3) {
 				case 1:

@@ -15,14 +15,13 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 
 #define VRAM_SIZE (1u << 20)	/* 640x480 XRGB8888 leaves it: black lines */
 #define FRAME_CAP (640u * 480u) /* the reset mode fits */
 
 struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
+	struct hw_fx sim;
 	uint32_t seed;
 	uint64_t frames;
 };
@@ -86,7 +85,7 @@ static void on_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 
 static void one_op(struct fx *f)
 {
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint32_t op = rnd(f) % 16, reg, w[8];
 	uint8_t buf[64];
 
@@ -177,20 +176,20 @@ static void one_op(struct fx *f)
 static void test_random_programming(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 	struct rdc_hw *hw;
 	uint32_t seed;
 
 	(void)state;
 	assert_non_null(f);
-	hw = &f->hw;
+	assert_int_equal(hw_fx_init(&f->sim, VRAM_SIZE, FRAME_CAP), 0);
+	hw = &f->sim.hw;
 	for (seed = 1; seed <= 12; seed++) {
 		uint64_t last = 0;
 		int i;
 
 		f->seed = seed;
 		f->frames = 0;
-		rdc_hw_init(hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
+		hw_fx_reinit(&f->sim);
 		rdc_hw_set_frame_fn(hw, seed % 2 ? on_frame : NULL, f);
 		for (i = 0; i < 3000; i++) {
 			const uint32_t *p;
@@ -211,6 +210,7 @@ static void test_random_programming(void **state)
 			f->frames = hw->crtc.frame_count;
 		}
 	}
+	hw_fx_fini(&f->sim);
 	free(f);
 }
 

@@ -19,6 +19,7 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 
 #define VRAM_SIZE (1u << 20)
 #define SCR_W	  56u
@@ -26,9 +27,7 @@
 #define FRAME_CAP (SCR_W * SCR_H)
 
 struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
+	struct hw_fx sim;
 	uint32_t lut[RDC_CLUT_ENTRIES];
 	uint32_t seed;
 };
@@ -36,11 +35,11 @@ struct fx {
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
-	if (!f)
+	if (!f || hw_fx_init(&f->sim, VRAM_SIZE, FRAME_CAP)) {
+		free(f);
 		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
+	}
 	f->seed = 0x9e3779b9u;
 	*state = f;
 	return 0;
@@ -48,7 +47,10 @@ static int setup(void **state)
 
 static int teardown(void **state)
 {
-	free(*state);
+	struct fx *f = *state;
+
+	hw_fx_fini(&f->sim);
+	free(f);
 	return 0;
 }
 
@@ -110,17 +112,17 @@ static const uint32_t *grab_settled(struct rdc_hw *hw)
 
 static void random_clut(struct fx *f)
 {
-	rdc_hw_write(&f->hw, RDC_REG_CLUT_INDEX, 0);
+	rdc_hw_write(&f->sim.hw, RDC_REG_CLUT_INDEX, 0);
 	for (uint32_t i = 0; i < RDC_CLUT_ENTRIES; i++) {
 		f->lut[i] = rnd(f) & 0xffffff;
-		rdc_hw_write(&f->hw, RDC_REG_CLUT_DATA, f->lut[i]);
+		rdc_hw_write(&f->sim.hw, RDC_REG_CLUT_DATA, f->lut[i]);
 	}
 }
 
 static void random_vram(struct fx *f, uint32_t base, uint32_t bytes)
 {
 	for (uint32_t i = 0; i < bytes; i++)
-		f->vram[base + i] = (uint8_t)rnd(f);
+		f->sim.vram[base + i] = (uint8_t)rnd(f);
 }
 
 /*
@@ -131,7 +133,7 @@ static void random_vram(struct fx *f, uint32_t base, uint32_t bytes)
 static uint32_t decode(const struct fx *f, uint32_t base, uint32_t fmt,
 		       uint32_t x, uint32_t y)
 {
-	const uint8_t *l = f->vram + base + y * stride_of(fmt);
+	const uint8_t *l = f->sim.vram + base + y * stride_of(fmt);
 	uint32_t v, r, g, b;
 
 	switch (fmt) {
@@ -193,7 +195,7 @@ static void test_formats(void **state)
 		RDC_FMT_ARGB8888, RDC_FMT_I8,	  RDC_FMT_I4,
 	};
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint32_t base = 0x1000;
 
 	for (size_t i = 0; i < sizeof(fmts) / sizeof(fmts[0]); i++) {
@@ -222,7 +224,7 @@ static void test_formats(void **state)
 static void test_latch_and_clut_writes(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint32_t fmt = RDC_FMT_RGB888, on = RDC_CONTROL_GAMMA_EN;
 	const uint32_t *p;
 	uint32_t old;
@@ -244,7 +246,7 @@ static void test_latch_and_clut_writes(void **state)
 	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_RESET_VALUE | on);
 	for (uint32_t y = 0; y < SCR_H; y++)
 		for (uint32_t x = 0; x < SCR_W; x++)
-			f->vram[y * stride_of(fmt) + 3 * x + 2] = 0x40;
+			f->sim.vram[y * stride_of(fmt) + 3 * x + 2] = 0x40;
 	grab_settled(hw);
 	old = f->lut[0x40];
 	rdc_hw_run_until(hw, rdc_port_next_line(hw, 25));
@@ -272,7 +274,7 @@ static void test_latch_and_clut_writes(void **state)
 static void test_black(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint32_t fmt = RDC_FMT_XRGB8888;
 	const uint32_t base = VRAM_SIZE - 10 * stride_of(fmt);
 	const uint32_t *p;
@@ -329,7 +331,7 @@ static void test_no_bus_time(void **state)
 	static const uint32_t fmts[] = { RDC_FMT_RGB565, RDC_FMT_RGB888,
 					 RDC_FMT_XRGB8888 };
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint32_t base = 0x700;
 
 	for (size_t i = 0; i < 3; i++) {

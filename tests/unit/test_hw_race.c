@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 #include "bus.h"
 
 #define VRAM_SIZE (2u << 20)
@@ -37,9 +38,7 @@
 #define NEW 0x00eeddccu
 
 struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
+	struct hw_fx sim;
 	/* the fake DP's fill */
 	int active;
 	uint32_t row, compute;
@@ -48,7 +47,7 @@ struct fx {
 static uint64_t fill_run(void *dp, uint64_t until)
 {
 	struct fx *f = dp;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	while (f->active && f->row < H && hw->now < until) {
 		uint8_t *p;
@@ -78,19 +77,19 @@ static void fill_vram(struct fx *f, uint32_t base, uint32_t v)
 
 	for (y = 0; y < H; y++)
 		for (x = 0; x < W; x++)
-			memcpy(f->vram + base + y * STRIDE + 4 * x, &v, 4);
+			memcpy(f->sim.vram + base + y * STRIDE + 4 * x, &v, 4);
 }
 
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 	struct rdc_hw *hw;
 
-	if (!f)
+	if (!f || hw_fx_init(&f->sim, VRAM_SIZE, FRAME_CAP)) {
+		free(f);
 		return -1;
-	hw = &f->hw;
-	rdc_hw_init(hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
+	}
+	hw = &f->sim.hw;
 	rdc_hw_set_dp(hw, &fill_ops, f);
 	fill_vram(f, 0, OLD);
 	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
@@ -117,7 +116,10 @@ static int setup(void **state)
 
 static int teardown(void **state)
 {
-	free(*state);
+	struct fx *f = *state;
+
+	hw_fx_fini(&f->sim);
+	free(f);
 	return 0;
 }
 
@@ -199,7 +201,7 @@ static void predict_fill(uint64_t fs, uint64_t t0, uint32_t compute,
 static void check_tear(struct fx *f, uint32_t start_line, uint32_t offset,
 		       uint32_t compute, uint32_t *tear)
 {
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t fs = hw->crtc.frame_start;
 	uint64_t t0 = fs + start_line * LINE_CYCLES + offset;
 	uint64_t done[H];
@@ -243,7 +245,7 @@ static void test_fill_tears_where_predicted(void **state)
 	 * line L at L * 1000: rows 11 and 12 come too late, 13 in time */
 	assert_int_equal(tear, 13);
 	/* the fill waited for fetch windows at least once */
-	assert_true(f->hw.perf.stall > 0);
+	assert_true(f->sim.hw.perf.stall > 0);
 }
 
 /* A slower DP: the tear moves down accordingly. */
@@ -271,7 +273,7 @@ static void test_fill_from_line_start(void **state)
 static void test_page_flip_never_tears(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint64_t fs = hw->crtc.frame_start;
 	const uint32_t back = 0x40000;
 	const uint32_t *p;
@@ -300,11 +302,11 @@ static void test_page_flip_never_tears(void **state)
 
 static void set_i8(struct fx *f)
 {
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint32_t y;
 
 	for (y = 0; y < H; y++)
-		memset(f->vram + y * STRIDE, 5, W);
+		memset(f->sim.vram + y * STRIDE, 5, W);
 	rdc_hw_write(hw, RDC_REG_FB_FORMAT, RDC_FMT_I8);
 	rdc_hw_write(hw, RDC_REG_CLUT_INDEX, 5);
 	rdc_hw_write(hw, RDC_REG_CLUT_DATA, OLD);
@@ -316,7 +318,7 @@ static void set_i8(struct fx *f)
 static void test_clut_mid_frame(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint32_t *p;
 	uint64_t fs;
 	uint32_t y;
@@ -344,7 +346,7 @@ static void test_clut_mid_frame(void **state)
 static void test_host_write_races_beam(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	const uint64_t fs = hw->crtc.frame_start;
 	const uint32_t *p;
 	uint32_t y, x;

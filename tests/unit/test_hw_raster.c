@@ -20,6 +20,7 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 
 #define VRAM_SIZE (1u << 20)
 #define SCR_W	  80u
@@ -32,28 +33,9 @@
 #define SKY	0x2050c0u
 #define GROUND	0xe07020u
 
-struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
-};
-
 static int setup(void **state)
 {
-	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
-
-	if (!f)
-		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
-	*state = f;
-	return 0;
-}
-
-static int teardown(void **state)
-{
-	free(*state);
-	return 0;
+	return hw_fx_setup(state, VRAM_SIZE, FRAME_CAP);
 }
 
 static void put32(uint8_t *p, uint32_t v)
@@ -100,7 +82,7 @@ static const uint32_t *grab(struct rdc_hw *hw)
 }
 
 /* Entry k of a list at `base`: op, argument, value. */
-static void entry(struct fx *f, uint32_t base, uint32_t k, uint32_t op,
+static void entry(struct hw_fx *f, uint32_t base, uint32_t k, uint32_t op,
 		  uint32_t arg, uint32_t val)
 {
 	put32(f->vram + base + 8 * k,
@@ -121,7 +103,7 @@ static void enable(struct rdc_hw *hw, uint32_t base, uint32_t len)
 }
 
 /* Index 1 everywhere but a column of index 2 at x = 7. */
-static void fill_screen(struct fx *f, uint32_t base)
+static void fill_screen(struct hw_fx *f, uint32_t base)
 {
 	memset(f->vram + base, 1, SCR_W * SCR_H);
 	for (uint32_t y = 0; y < SCR_H; y++)
@@ -129,7 +111,7 @@ static void fill_screen(struct fx *f, uint32_t base)
 }
 
 /* The sky/ground list: entry 1 SKY at the top, GROUND from line `split`. */
-static void split_list(struct fx *f, uint32_t split)
+static void split_list(struct hw_fx *f, uint32_t split)
 {
 	entry(f, RL_BASE, 0, RDC_RL_CLUT, 1, SKY);
 	entry(f, RL_BASE, 1, RDC_RL_WAIT, 0, wait_at(split, 0));
@@ -154,7 +136,7 @@ static void assert_split(const uint32_t *p, uint32_t split, uint32_t col2)
  */
 static void test_split_every_frame(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t col2 = 0x00aa00; /* VGA green, reset CLUT entry 2 */
 
@@ -189,7 +171,7 @@ static void test_split_every_frame(void **state)
  */
 static void test_latch_and_off(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t col2 = 0x00aa00;
 	const uint32_t *p;
@@ -255,7 +237,7 @@ static void test_latch_and_off(void **state)
  */
 static void test_split_screen(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t stride2 = 128, scroll = FB2 + 3 * stride2 + 5;
 	const uint32_t *p;
@@ -308,7 +290,7 @@ static void test_split_screen(void **state)
 }
 
 /* The list at `base` stops with error RASTER at `info`; frames go on. */
-static void assert_stops(struct fx *f, uint32_t base, uint32_t len,
+static void assert_stops(struct hw_fx *f, uint32_t base, uint32_t len,
 			 uint32_t info)
 {
 	struct rdc_hw *hw = &f->hw;
@@ -347,7 +329,7 @@ static void assert_stops(struct fx *f, uint32_t base, uint32_t len,
 
 static void test_bad_lists(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t far = VRAM_SIZE - 16;
 
@@ -456,7 +438,7 @@ static void test_fetch_cycles(void **state)
 		{ 21, 7, 4 }, /* FB_STRIDE, 2 x CLUT, END */
 		{ 40, 11, 0 },
 	};
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	uint64_t without[6];
 
@@ -508,15 +490,15 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test_setup_teardown(test_split_every_frame, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_latch_and_off, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_split_screen, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_bad_lists, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_fetch_cycles, setup,
-						teardown),
+						hw_fx_teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

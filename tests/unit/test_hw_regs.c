@@ -14,14 +14,13 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 
 #define VRAM_SIZE (2u << 20)
 #define FRAME_CAP (640u * 480u) /* the reset mode fits */
 
 struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
+	struct hw_fx sim;
 	int dp_resets;
 };
 
@@ -42,26 +41,29 @@ static const struct rdc_dp_ops fake_ops = { fake_reset, fake_run };
 static int setup(void **state)
 {
 	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 
-	if (!f)
+	if (!f || hw_fx_init(&f->sim, VRAM_SIZE, FRAME_CAP)) {
+		free(f);
 		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
-	rdc_hw_set_dp(&f->hw, &fake_ops, f);
+	}
+	rdc_hw_set_dp(&f->sim.hw, &fake_ops, f);
 	*state = f;
 	return 0;
 }
 
 static int teardown(void **state)
 {
-	free(*state);
+	struct fx *f = *state;
+
+	hw_fx_fini(&f->sim);
+	free(f);
 	return 0;
 }
 
 static void test_reset_values(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	struct rdc_timing t;
 
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_ID), RDC_ID_VALUE);
@@ -112,7 +114,7 @@ static void test_reset_values(void **state)
 static void test_default_palette(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	rdc_hw_write(hw, RDC_REG_CLUT_INDEX, 0);
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_CLUT_DATA), 0x000000);
@@ -138,7 +140,7 @@ static void test_default_palette(void **state)
 static void test_clut_port(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	rdc_hw_write(hw, RDC_REG_CLUT_INDEX, 254);
 	rdc_hw_write(hw, RDC_REG_CLUT_DATA, 0xff123456); /* X byte dropped */
@@ -182,7 +184,7 @@ static void test_bad_offsets(void **state)
 		0xfffffffc,	/* far outside */
 	};
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	size_t i;
 
 	for (i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
@@ -211,7 +213,7 @@ static void test_read_only(void **state)
 		RDC_REG_PERF_CMDS,   RDC_REG_PERF_LAST_OPCODE,
 	};
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	size_t i;
 
 	for (i = 0; i < sizeof(ro) / sizeof(ro[0]); i++) {
@@ -233,7 +235,7 @@ static void test_read_only(void **state)
 static void test_write_only_read_zero(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	rdc_hw_write(hw, RDC_REG_FIFO_DATA, 0x12345678);
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_FIFO_DATA), 0);
@@ -246,7 +248,7 @@ static void test_write_only_read_zero(void **state)
 static void test_irq_w1c_and_pin(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	rdc_port_irq(hw, RDC_IRQ_FENCE | RDC_IRQ_LINE | 0xffffff00u);
 	/* only defined bits latch */
@@ -276,7 +278,7 @@ static void test_irq_w1c_and_pin(void **state)
 static void test_errors_and_fence(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	rdc_port_fence(hw, 0xfeed);
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_FENCE), 0xfeed);
@@ -306,7 +308,7 @@ static void test_rw_registers(void **state)
 		RDC_REG_RING_TAIL,
 	};
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	size_t i;
 
 	for (i = 0; i < sizeof(rw) / sizeof(rw[0]); i++) {
@@ -337,7 +339,7 @@ static void test_rw_registers(void **state)
 static void test_mode_preset(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	rdc_hw_write(hw, RDC_REG_FB_FORMAT, RDC_FMT_RGB888);
 	rdc_hw_write(hw, RDC_REG_MODE_PRESET, RDC_PRESET_1024x768_60);
@@ -377,7 +379,7 @@ static void test_mode_preset(void **state)
 static void test_time_and_counters(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t t = (5ull << 32) | 0xfffffff0u;
 
 	/* no scanout, so running that far is cheap; the idle DP lets the
@@ -422,7 +424,7 @@ static void test_time_and_counters(void **state)
 static void test_soft_reset(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	int resets = f->dp_resets;
 
 	rdc_hw_run_until(hw, 1000);
@@ -452,7 +454,7 @@ static void test_soft_reset(void **state)
 static void test_pins_and_reset_n(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	int resets = f->dp_resets;
 	uint32_t p;
 
@@ -488,7 +490,7 @@ static void test_pins_and_reset_n(void **state)
 static void test_te_pin(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	uint64_t vb = rdc_port_next_vblank(hw);
 
 	assert_int_not_equal(vb, RDC_NEVER);
@@ -529,7 +531,7 @@ static void test_port_reg_write(void **state)
 		RDC_REG_WINDOW,
 	};
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	size_t i;
 
 	for (i = 0; i < sizeof(refused) / sizeof(refused[0]); i++)
@@ -569,7 +571,7 @@ static void test_cursor_ctrl_and_gamma_bit(void **state)
 		FIELD_PREP(RDC_CURSOR_CTRL_FMT, RDC_CURSOR_FMT_ARGB8888) |
 		RDC_CURSOR_CTRL_SIZE64;
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 
 	assert_true(rdc_hw_read(hw, RDC_REG_VERSION) >= 0x00010001); /* 1.1+ */
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_CURSOR_CTRL), 0);
@@ -636,7 +638,7 @@ static void on_trace(void *ctx, uint64_t t, unsigned int ev, uint32_t a,
 static void test_trace(void **state)
 {
 	struct fx *f = *state;
-	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw *hw = &f->sim.hw;
 	struct trace_log log = { 0 };
 	uint64_t vb = rdc_port_next_vblank(hw);
 

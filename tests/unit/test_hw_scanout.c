@@ -15,32 +15,14 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 
 #define VRAM_SIZE (2u << 20)
 #define FRAME_CAP (64u * 64u)
 
-struct fx {
-	struct rdc_hw hw;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
-};
-
 static int setup(void **state)
 {
-	struct fx *f = calloc(1, sizeof(*f));
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
-
-	if (!f)
-		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
-	*state = f;
-	return 0;
-}
-
-static int teardown(void **state)
-{
-	free(*state);
-	return 0;
+	return hw_fx_setup(state, VRAM_SIZE, FRAME_CAP);
 }
 
 /* A w x h mode with blanking around it at 10 core cycles a pixel. */
@@ -135,7 +117,7 @@ static uint32_t expect_pixel(const uint8_t *b, uint32_t x, uint32_t fmt)
 static void test_all_formats(void **state)
 {
 	static const uint32_t widths[] = { 24, 13 }; /* whole bytes, or not */
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t h = 5, stride = 100, base = 0x1234;
 	uint32_t fmt, i;
@@ -189,7 +171,7 @@ static void test_known_pixels(void **state)
 		{ RDC_FMT_I4, { 0xf8 }, { 0xffffff, 0x555555 } },
 		{ RDC_FMT_I8, { 9, 12 }, { 0x5555ff, 0xff5555 } },
 	};
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	size_t i;
 
@@ -207,7 +189,7 @@ static void test_known_pixels(void **state)
 
 static void test_clut_immediate_and_latched(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t *p;
 	uint32_t i;
@@ -315,7 +297,7 @@ static void test_cursor(void **state)
 		{ -31, 20 },  { SCR_W - 1, -31 }, { -40, 0 },
 		{ 0, SCR_H },
 	};
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t *p;
 	uint32_t x, y;
@@ -371,7 +353,7 @@ static void test_cursor(void **state)
 
 static void test_fb_leaving_vram_scans_black(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t w = 16, h = 6, stride = 64;
 	const uint32_t *p;
@@ -407,7 +389,7 @@ static void test_fb_leaving_vram_scans_black(void **state)
 /* The framebuffer registers are latched: a new base shows a frame later. */
 static void test_fb_latched(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t *p;
 
@@ -438,7 +420,7 @@ static void test_fb_latched(void **state)
  */
 static void test_run_far_ahead(void **state)
 {
-	struct fx *f = *state;
+	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
 	const uint32_t *p;
 	uint32_t w, h, i;
@@ -474,18 +456,19 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test_setup_teardown(test_all_formats, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_known_pixels, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_clut_immediate_and_latched,
-						setup, teardown),
-		cmocka_unit_test_setup_teardown(test_cursor, setup, teardown),
-		cmocka_unit_test_setup_teardown(
-			test_fb_leaving_vram_scans_black, setup, teardown),
+						setup, hw_fx_teardown),
+		cmocka_unit_test_setup_teardown(test_cursor, setup,
+						hw_fx_teardown),
+		cmocka_unit_test_setup_teardown(test_fb_leaving_vram_scans_black,
+						setup, hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_fb_latched, setup,
-						teardown),
+						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_run_far_ahead, setup,
-						teardown),
+						hw_fx_teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -17,6 +17,7 @@
 #include <cmocka.h>
 
 #include "hw.h"
+#include "hw_fx.h"
 #include "dp.h"
 
 #define VRAM_SIZE (1u << 20)
@@ -32,10 +33,8 @@ struct ev {
 };
 
 struct fx {
-	struct rdc_hw hw;
+	struct hw_fx sim;
 	struct rdc_dp dp;
-	uint8_t vram[VRAM_SIZE];
-	uint32_t f0[FRAME_CAP], f1[FRAME_CAP];
 	struct ev *ev;
 	size_t n, cap;
 	uint64_t last_t;
@@ -64,18 +63,18 @@ static void on_trace(void *ctx, uint64_t time, unsigned int event, uint32_t a,
 		f->ev = realloc(f->ev, f->cap * sizeof(*f->ev));
 		assert_non_null(f->ev);
 	}
-	f->ev[f->n++] = (struct ev){ time, event, a, b, f->hw.fifo_count };
+	f->ev[f->n++] = (struct ev){ time, event, a, b, f->sim.hw.fifo_count };
 }
 
 static int setup(void **state)
 {
-	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
 	struct fx *f = calloc(1, sizeof(*f));
 
-	if (!f)
+	if (!f || hw_fx_init(&f->sim, VRAM_SIZE, FRAME_CAP)) {
+		free(f);
 		return -1;
-	rdc_hw_init(&f->hw, &cfg, f->vram, f->f0, f->f1, FRAME_CAP);
-	rdc_dp_init(&f->dp, &f->hw);
+	}
+	rdc_dp_init(&f->dp, &f->sim.hw);
 	*state = f;
 	return 0;
 }
@@ -85,6 +84,7 @@ static int teardown(void **state)
 	struct fx *f = *state;
 
 	free(f->ev);
+	hw_fx_fini(&f->sim);
 	free(f);
 	return 0;
 }
@@ -92,16 +92,17 @@ static int teardown(void **state)
 /* Start scanout in a preset at hw->now, then trace from there. */
 static void start_preset(struct fx *f, uint32_t preset)
 {
-	rdc_hw_write(&f->hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
-	rdc_hw_write(&f->hw, RDC_REG_MODE_PRESET, preset);
-	rdc_hw_write(&f->hw, RDC_REG_FB_STRIDE, 0);
-	rdc_hw_write(&f->hw, RDC_REG_FB_FORMAT, RDC_FMT_I8);
+	rdc_hw_write(&f->sim.hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
+	rdc_hw_write(&f->sim.hw, RDC_REG_MODE_PRESET, preset);
+	rdc_hw_write(&f->sim.hw, RDC_REG_FB_STRIDE, 0);
+	rdc_hw_write(&f->sim.hw, RDC_REG_FB_FORMAT, RDC_FMT_I8);
 	/* power-on's 640x480 does not fit FRAME_CAP: forget that refusal */
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
-	rdc_hw_write(&f->hw, RDC_REG_CONTROL,
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
+	rdc_hw_write(&f->sim.hw, RDC_REG_CONTROL,
 		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
-	assert_int_equal(rdc_hw_read(&f->hw, RDC_REG_ERR_CODE), RDC_ERR_NONE);
-	rdc_hw_set_trace(&f->hw, on_trace, f);
+	assert_int_equal(rdc_hw_read(&f->sim.hw, RDC_REG_ERR_CODE),
+			 RDC_ERR_NONE);
+	rdc_hw_set_trace(&f->sim.hw, on_trace, f);
 }
 
 /* Line n's start within a frame: the mode's arithmetic, written out here. */
@@ -144,17 +145,17 @@ static void run_te(struct fx *f, bool listener, uint64_t slice)
 
 	assert_int_equal(rdc_preset_timing(RDC_PRESET_320x200_70, &t), 0);
 	start_preset(f, RDC_PRESET_320x200_70);
-	t0 = f->hw.now;
-	pins0 = rdc_hw_pins(&f->hw);
+	t0 = f->sim.hw.now;
+	pins0 = rdc_hw_pins(&f->sim.hw);
 	assert_int_equal(pins0 & RDC_PIN_TE, 0);
 	frame = line_at(&t, t.v_total);
 	end = t0 + FRAMES * frame + frame / 2;
 	if (slice == RDC_NEVER) {
-		rdc_hw_run_until(&f->hw, end);
+		rdc_hw_run_until(&f->sim.hw, end);
 	} else {
-		while (f->hw.now < end)
-			rdc_hw_run_until(&f->hw,
-					 RDC_MIN(f->hw.now + slice, end));
+		while (f->sim.hw.now < end)
+			rdc_hw_run_until(&f->sim.hw,
+					 RDC_MIN(f->sim.hw.now + slice, end));
 	}
 	check_pins_chain(f, pins0);
 	for (i = 0; i < f->n; i++) {
@@ -194,7 +195,7 @@ static void test_te_with_listener(void **state)
 {
 	struct fx *f = *state;
 
-	rdc_hw_set_frame_fn(&f->hw, on_frame, f);
+	rdc_hw_set_frame_fn(&f->sim.hw, on_frame, f);
 	run_te(f, true, RDC_NEVER);
 }
 
@@ -215,9 +216,9 @@ static void test_line_events(void **state)
 
 	assert_int_equal(rdc_preset_timing(RDC_PRESET_320x200_70, &t), 0);
 	start_preset(f, RDC_PRESET_320x200_70);
-	t0 = f->hw.now;
+	t0 = f->sim.hw.now;
 	frame = line_at(&t, t.v_total);
-	rdc_hw_run_until(&f->hw, t0 + 5 * frame - 1);
+	rdc_hw_run_until(&f->sim.hw, t0 + 5 * frame - 1);
 	for (i = 0; i < f->n; i++) {
 		const struct ev *e = &f->ev[i];
 
@@ -267,25 +268,26 @@ static void test_irq_edges(void **state)
 
 	assert_int_equal(rdc_preset_timing(RDC_PRESET_320x200_70, &t), 0);
 	start_preset(f, RDC_PRESET_320x200_70);
-	t0 = f->hw.now;
-	pins0 = rdc_hw_pins(&f->hw);
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_VBLANK);
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_VBLANK); /* again */
+	t0 = f->sim.hw.now;
+	pins0 = rdc_hw_pins(&f->sim.hw);
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_VBLANK);
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_ENABLE,
+		     RDC_IRQ_VBLANK); /* again */
 	assert_int_equal(count_pins(f), 0);
 
 	/* the vblank raises TE and IRQ at the same step: one event */
 	vb = t0 + line_at(&t, t.v_display);
-	rdc_hw_run_until(&f->hw, vb + 1000);
+	rdc_hw_run_until(&f->sim.hw, vb + 1000);
 	e = next_pins(f, &i);
 	assert_non_null(e);
 	assert_int_equal(e->t, vb);
 	assert_int_equal(e->b, RDC_PIN_TE | RDC_PIN_IRQ);
 
 	/* W1C of a bit not set: nothing; of VBLANK: IRQ falls now */
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_STATUS, RDC_IRQ_FENCE);
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_STATUS, RDC_IRQ_FENCE);
 	assert_null(next_pins(f, &i));
-	tw = f->hw.now;
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_STATUS, RDC_IRQ_VBLANK);
+	tw = f->sim.hw.now;
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_STATUS, RDC_IRQ_VBLANK);
 	e = next_pins(f, &i);
 	assert_non_null(e);
 	assert_int_equal(e->t, tw);
@@ -293,30 +295,31 @@ static void test_irq_edges(void **state)
 	assert_int_equal(e->a & RDC_PIN_IRQ, 0);
 
 	/* a pending but masked source: the enable write raises the pin */
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_ENABLE, 0);
-	rdc_hw_write(&f->hw, RDC_REG_LINE_COMPARE, 210);
-	rdc_hw_run_until(&f->hw, t0 + line_at(&t, 211));
-	assert_true(rdc_hw_read(&f->hw, RDC_REG_IRQ_STATUS) & RDC_IRQ_LINE);
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_ENABLE, 0);
+	rdc_hw_write(&f->sim.hw, RDC_REG_LINE_COMPARE, 210);
+	rdc_hw_run_until(&f->sim.hw, t0 + line_at(&t, 211));
+	assert_true(rdc_hw_read(&f->sim.hw, RDC_REG_IRQ_STATUS) & RDC_IRQ_LINE);
 	assert_null(next_pins(f, &i));
-	f->hw.now += 7;
-	te = f->hw.now;
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_LINE);
+	f->sim.hw.now += 7;
+	te = f->sim.hw.now;
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_LINE);
 	e = next_pins(f, &i);
 	assert_non_null(e);
 	assert_int_equal(e->t, te);
 	assert_int_equal(e->b, RDC_PIN_IRQ);
 	assert_true(e->a & RDC_PIN_IRQ);
 	/* enabling more while it is high moves nothing */
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_LINE | RDC_IRQ_FENCE);
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_ENABLE,
+		     RDC_IRQ_LINE | RDC_IRQ_FENCE);
 	assert_null(next_pins(f, &i));
 
 	/* the raster IRQ of the next frame comes at its line's start */
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
 	e = next_pins(f, &i);
 	assert_non_null(e);
 	assert_int_equal(e->b, RDC_PIN_IRQ);
-	rdc_hw_write(&f->hw, RDC_REG_LINE_COMPARE, 17);
-	rdc_hw_run_until(&f->hw, t0 + 2 * line_at(&t, t.v_total));
+	rdc_hw_write(&f->sim.hw, RDC_REG_LINE_COMPARE, 17);
+	rdc_hw_run_until(&f->sim.hw, t0 + 2 * line_at(&t, t.v_total));
 	e = next_pins(f, &i); /* TE falls at the frame start */
 	assert_non_null(e);
 	assert_int_equal(e->t, t0 + line_at(&t, t.v_total));
@@ -337,9 +340,9 @@ static void test_irq_edges(void **state)
 	assert_int_equal(e->b, RDC_PIN_TE);
 
 	/* a soft reset drops IRQ (status and enable) and starts a frame */
-	f->hw.now += 3;
-	td = f->hw.now;
-	rdc_hw_write(&f->hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
+	f->sim.hw.now += 3;
+	td = f->sim.hw.now;
+	rdc_hw_write(&f->sim.hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
 	e = next_pins(f, &i);
 	assert_non_null(e);
 	assert_int_equal(e->t, td);
@@ -357,35 +360,35 @@ static void test_input_pins(void **state)
 	size_t i = 0;
 
 	start_preset(f, RDC_PRESET_320x200_70);
-	pins0 = rdc_hw_pins(&f->hw);
+	pins0 = rdc_hw_pins(&f->sim.hw);
 	assert_int_equal(pins0, all_in);
-	rdc_hw_set_pins(&f->hw, all_in); /* no change */
+	rdc_hw_set_pins(&f->sim.hw, all_in); /* no change */
 	assert_int_equal(count_pins(f), 0);
 
-	f->hw.now += 100;
-	rdc_hw_set_pins(&f->hw, RDC_PIN_RESET_N);
+	f->sim.hw.now += 100;
+	rdc_hw_set_pins(&f->sim.hw, RDC_PIN_RESET_N);
 	e = next_pins(f, &i);
 	assert_non_null(e);
-	assert_int_equal(e->t, f->hw.now);
+	assert_int_equal(e->t, f->sim.hw.now);
 	assert_int_equal(e->b, RDC_PIN_BL_EN);
 	assert_int_equal(e->a, RDC_PIN_RESET_N);
-	rdc_hw_set_pins(&f->hw, RDC_PIN_RESET_N);
+	rdc_hw_set_pins(&f->sim.hw, RDC_PIN_RESET_N);
 	assert_null(next_pins(f, &i));
 
 	/* into reset during vblank: RESET_N and TE fall together */
-	rdc_hw_run_until(&f->hw, rdc_port_next_vblank(&f->hw) + 10);
+	rdc_hw_run_until(&f->sim.hw, rdc_port_next_vblank(&f->sim.hw) + 10);
 	e = next_pins(f, &i);
 	assert_non_null(e);
 	assert_int_equal(e->b, RDC_PIN_TE);
-	rdc_hw_set_pins(&f->hw, 0);
+	rdc_hw_set_pins(&f->sim.hw, 0);
 	e = next_pins(f, &i);
 	assert_non_null(e);
 	assert_int_equal(e->b, RDC_PIN_RESET_N | RDC_PIN_TE);
 	assert_int_equal(e->a, 0);
 	/* held in reset, time passes with no edge */
-	rdc_hw_run_until(&f->hw, f->hw.now + 10000000);
+	rdc_hw_run_until(&f->sim.hw, f->sim.hw.now + 10000000);
 	assert_null(next_pins(f, &i));
-	rdc_hw_set_pins(&f->hw, all_in);
+	rdc_hw_set_pins(&f->sim.hw, all_in);
 	e = next_pins(f, &i);
 	assert_non_null(e);
 	assert_int_equal(e->b, all_in);
@@ -396,7 +399,7 @@ static void test_input_pins(void **state)
 
 static void push(struct fx *f, uint32_t w)
 {
-	rdc_hw_write(&f->hw, RDC_REG_FIFO_DATA, w);
+	rdc_hw_write(&f->sim.hw, RDC_REG_FIFO_DATA, w);
 }
 
 static void push_fill(struct fx *f, int x, int y, uint32_t w, uint32_t h)
@@ -428,9 +431,9 @@ static int check_dp_fifo(const struct fx *f, uint32_t fifo0, int dp0)
 			dp = (int)e->a;
 		}
 	}
-	assert_int_equal(level,
-			 RDC_FIFO_DEPTH - rdc_hw_read((struct rdc_hw *)&f->hw,
-						      RDC_REG_FIFO_FREE));
+	assert_int_equal(level, RDC_FIFO_DEPTH -
+					rdc_hw_read((struct rdc_hw *)&f->sim.hw,
+						    RDC_REG_FIFO_FREE));
 	return dp;
 }
 
@@ -458,12 +461,12 @@ static void test_dp_fifo(void **state)
 	for (i = 0; i < f->n; i++) {
 		assert_int_equal(f->ev[i].e, RDC_TRACE_FIFO);
 		assert_int_equal(f->ev[i].a, i + 1);
-		assert_int_equal(f->ev[i].t, f->hw.now);
+		assert_int_equal(f->ev[i].t, f->sim.hw.now);
 	}
 	assert_int_equal(f->n, 8);
-	tp = f->hw.now;
-	busy0 = f->hw.perf.busy;
-	assert_true(rdc_hw_run_until_idle(&f->hw, tp + 10000000));
+	tp = f->sim.hw.now;
+	busy0 = f->sim.hw.perf.busy;
+	assert_true(rdc_hw_run_until_idle(&f->sim.hw, tp + 10000000));
 	assert_int_equal(check_dp_fifo(f, 0, 0), 0);
 
 	/* the DP starts at the first pop, at once, and ends when idle */
@@ -481,11 +484,12 @@ static void test_dp_fifo(void **state)
 	e = find(f, (size_t)(e - f->ev) + 1, RDC_TRACE_DP);
 	assert_non_null(e);
 	assert_int_equal(e->a, 0);
-	assert_int_equal(e->t, f->hw.now);
+	assert_int_equal(e->t, f->sim.hw.now);
 	/* busy from start to end: every command cycle inside the span */
-	assert_int_equal(f->hw.perf.busy - busy0, f->hw.now - tp);
-	assert_int_equal(
-		rdc_hw_read(&f->hw, RDC_REG_STATUS) & RDC_STATUS_DP_BUSY, 0);
+	assert_int_equal(f->sim.hw.perf.busy - busy0, f->sim.hw.now - tp);
+	assert_int_equal(rdc_hw_read(&f->sim.hw, RDC_REG_STATUS) &
+				 RDC_STATUS_DP_BUSY,
+			 0);
 	assert_null(find(f, (size_t)(e - f->ev) + 1, RDC_TRACE_DP));
 }
 
@@ -502,11 +506,11 @@ static void test_dp_wait_and_slices(void **state)
 		push_fill(f, (int)i, (int)i, 100, 20);
 	push(f, RDC_CMD(RDC_OP_WAIT_VBLANK, 0, 0));
 	push_fill(f, 0, 0, 8, 8);
-	tp = f->hw.now;
-	vb = rdc_port_next_vblank(&f->hw);
-	while (!rdc_hw_run_until_idle(&f->hw, f->hw.now + 997))
+	tp = f->sim.hw.now;
+	vb = rdc_port_next_vblank(&f->sim.hw);
+	while (!rdc_hw_run_until_idle(&f->sim.hw, f->sim.hw.now + 997))
 		;
-	assert_true(f->hw.now > vb);
+	assert_true(f->sim.hw.now > vb);
 	assert_int_equal(check_dp_fifo(f, 0, 0), 0);
 	for (i = 0; i < f->n; i++)
 		dp_events += f->ev[i].e == RDC_TRACE_DP;
@@ -515,7 +519,7 @@ static void test_dp_wait_and_slices(void **state)
 	assert_int_equal(e->t, tp);
 	e = find(f, (size_t)(e - f->ev) + 1, RDC_TRACE_DP);
 	assert_int_equal(e->a, 0);
-	assert_int_equal(e->t, f->hw.now);
+	assert_int_equal(e->t, f->sim.hw.now);
 }
 
 /* A halt on error ends the DP span; a reset empties the FIFO. */
@@ -526,30 +530,31 @@ static void test_dp_halt_and_reset(void **state)
 	size_t i;
 
 	start_preset(f, RDC_PRESET_320x200_70);
-	rdc_hw_write(&f->hw, RDC_REG_CONTROL,
+	rdc_hw_write(&f->sim.hw, RDC_REG_CONTROL,
 		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN |
 			     RDC_CONTROL_HALT_ON_ERR);
 	push(f, RDC_CMD(RDC_OP_SET_ROP, 0, 1));
 	push(f, 0xff); /* out of range: halts */
 	push_fill(f, 0, 0, 8, 8);
-	rdc_hw_run_until_idle(&f->hw, f->hw.now + 1000000);
-	assert_true(rdc_hw_read(&f->hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED);
+	rdc_hw_run_until_idle(&f->sim.hw, f->sim.hw.now + 1000000);
+	assert_true(rdc_hw_read(&f->sim.hw, RDC_REG_STATUS) &
+		    RDC_STATUS_DP_HALTED);
 	assert_int_equal(check_dp_fifo(f, 0, 0), 0);
 	e = find(f, 0, RDC_TRACE_DP);
 	e = find(f, (size_t)(e - f->ev) + 1, RDC_TRACE_DP);
 	assert_non_null(e);
 	assert_int_equal(e->a, 0);
-	assert_int_equal(e->t, f->hw.now);
+	assert_int_equal(e->t, f->sim.hw.now);
 
 	/* the fill waits in the FIFO; a soft reset empties it */
 	assert_int_equal(
-		RDC_FIFO_DEPTH - rdc_hw_read(&f->hw, RDC_REG_FIFO_FREE), 3);
+		RDC_FIFO_DEPTH - rdc_hw_read(&f->sim.hw, RDC_REG_FIFO_FREE), 3);
 	i = f->n;
-	rdc_hw_write(&f->hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
+	rdc_hw_write(&f->sim.hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
 	e = find(f, i, RDC_TRACE_FIFO);
 	assert_non_null(e);
 	assert_int_equal(e->a, 0);
-	assert_int_equal(e->t, f->hw.now);
+	assert_int_equal(e->t, f->sim.hw.now);
 	assert_null(find(f, i, RDC_TRACE_DP));
 	assert_int_equal(check_dp_fifo(f, 0, 0), 0);
 }
@@ -564,22 +569,22 @@ static uint64_t workload(struct fx *f, bool traced, uint32_t *crc)
 
 	start_preset(f, RDC_PRESET_320x200_70);
 	if (!traced)
-		rdc_hw_set_trace(&f->hw, NULL, NULL);
-	rdc_hw_write(&f->hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_ALL);
+		rdc_hw_set_trace(&f->sim.hw, NULL, NULL);
+	rdc_hw_write(&f->sim.hw, RDC_REG_IRQ_ENABLE, RDC_IRQ_ALL);
 	for (i = 0; i < 60; i++) {
 		push(f, RDC_CMD(RDC_OP_SET_FG, 0, 1));
 		push(f, (uint32_t)i * 7);
 		push_fill(f, (int)(i * 5), (int)(i * 3), 64, 40);
 	}
-	while (!rdc_hw_run_until_idle(&f->hw, f->hw.now + 5000))
+	while (!rdc_hw_run_until_idle(&f->sim.hw, f->sim.hw.now + 5000))
 		;
-	rdc_hw_run_until(&f->hw, rdc_port_next_vblank(&f->hw));
-	px = rdc_hw_frame(&f->hw, &w, &h);
+	rdc_hw_run_until(&f->sim.hw, rdc_port_next_vblank(&f->sim.hw));
+	px = rdc_hw_frame(&f->sim.hw, &w, &h);
 	assert_non_null(px);
 	for (i = 0; i < (size_t)w * h; i++)
 		c = (c << 5 | c >> 27) ^ px[i];
 	*crc = c;
-	return f->hw.now;
+	return f->sim.hw.now;
 }
 
 static void test_trace_changes_nothing(void **state)
@@ -595,8 +600,8 @@ static void test_trace_changes_nothing(void **state)
 	assert_int_equal(b->n, 0);
 	assert_int_equal(ta, tb);
 	assert_int_equal(ca, cb);
-	assert_int_equal(a->hw.perf.busy, b->hw.perf.busy);
-	assert_int_equal(a->hw.perf.stall, b->hw.perf.stall);
+	assert_int_equal(a->sim.hw.perf.busy, b->sim.hw.perf.busy);
+	assert_int_equal(a->sim.hw.perf.stall, b->sim.hw.perf.stall);
 	check_pins_chain(a, RDC_PIN_RESET_N | RDC_PIN_BL_EN);
 	teardown((void **)&b);
 }
