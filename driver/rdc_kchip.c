@@ -30,6 +30,7 @@
 #include <linux/sched/signal.h>
 #include <linux/slab.h>
 #include <linux/string.h>
+#include <linux/sysfs.h>
 #include <linux/vmalloc.h>
 
 #include "rdc_kchip.h"
@@ -60,9 +61,11 @@
 /* Frame snapshot: bytes copied per lock hold, attempts before one hold. */
 #define RDC_KCHIP_SNAP_CHUNK (64u << 10)
 #define RDC_KCHIP_SNAP_TRIES 4u
+/* A frame grab keeps frames converted until this many frames pass without. */
+#define RDC_KCHIP_GRAB_HOLD_FRAMES 30u
 
 int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
-			   u32 vram_max, const char *clock,
+			   u32 vram_max, const char *clock, const char *scanout,
 			   unsigned int devices, unsigned int max_devices,
 			   struct rdc_kchip_params *out)
 {
@@ -84,6 +87,22 @@ int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
 		pr_err("%s: clock=%s: want paced or stepped\n", name, clock);
 		return -EINVAL;
 	}
+	/*
+	 * auto: on demand when paced, where idle frames cost wall time;
+	 * always when stepped, where time moves only in waits and a frame
+	 * grab could otherwise find none until the next one.
+	 */
+	if (!strcmp(scanout, "auto")) {
+		out->on_demand = !out->stepped;
+	} else if (!strcmp(scanout, "demand")) {
+		out->on_demand = true;
+	} else if (!strcmp(scanout, "always")) {
+		out->on_demand = false;
+	} else {
+		pr_err("%s: scanout=%s: want auto, demand or always\n", name,
+		       scanout);
+		return -EINVAL;
+	}
 	if (!devices || devices > max_devices) {
 		pr_err("%s: devices=%u: want 1..%u\n", name, devices,
 		       max_devices);
@@ -101,13 +120,26 @@ int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
 void rdc_kchip_lock(struct rdc_kchip *chip)
 {
 	mutex_lock(&chip->lock);
+	chip->held_at = ktime_get_ns();
 	if (chip->hooks && chip->hooks->before_use)
 		chip->hooks->before_use(chip);
 }
 
+/* The time held is the chip's cost to its host (sysfs host_busy_ns). */
 void rdc_kchip_unlock(struct rdc_kchip *chip)
 {
+	chip->busy_ns += ktime_get_ns() - chip->held_at;
 	mutex_unlock(&chip->lock);
+}
+
+void rdc_kchip_consumer(struct rdc_kchip *chip, bool attach)
+{
+	rdc_kchip_lock(chip);
+	if (attach)
+		rdc_hw_consumer_attach(&chip->hw);
+	else
+		rdc_hw_consumer_detach(&chip->hw);
+	rdc_kchip_unlock(chip);
 }
 
 /* A section with interrupts off ended at `at`: count it, keep the longest. */
@@ -152,6 +184,11 @@ ktime_t rdc_kchip_wall_of_locked(struct rdc_kchip *chip, u64 t)
 static void rdc_kchip_vblank_locked(struct rdc_kchip *chip, u64 time)
 {
 	chip->frames++;
+	if (chip->grab_watch &&
+	    chip->frames - chip->grab_at > RDC_KCHIP_GRAB_HOLD_FRAMES) {
+		rdc_hw_consumer_detach(&chip->hw);
+		chip->grab_watch = false;
+	}
 	if (!chip->hooks || !chip->hooks->vblank)
 		return;
 	chip->hooks->vblank(chip, chip->frames, time,
@@ -306,10 +343,11 @@ static enum hrtimer_restart rdc_kchip_tick(struct hrtimer *t)
 	return HRTIMER_NORESTART;
 }
 
-int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev, u32 vram_size,
-		   bool stepped)
+int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev,
+		   const struct rdc_kchip_params *p)
 {
-	struct rdc_hw_config cfg = { .vram_size = vram_size };
+	struct rdc_hw_config cfg = { .vram_size = p->vram_bytes };
+	u32 vram_size = p->vram_bytes;
 
 	mutex_init(&chip->lock);
 	init_waitqueue_head(&chip->waitq);
@@ -318,7 +356,9 @@ int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev, u32 vram_size,
 	hrtimer_init(&chip->timer, CLOCK_MONOTONIC, HRTIMER_MODE_REL);
 	chip->timer.function = rdc_kchip_tick;
 	chip->dev = dev;
-	chip->stepped = stepped;
+	chip->stepped = p->stepped;
+	chip->on_demand = p->on_demand;
+	chip->up_at = ktime_get_ns();
 
 	chip->vram = vmalloc_user(vram_size);
 	chip->dp = vzalloc(sizeof(*chip->dp));
@@ -333,6 +373,8 @@ int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev, u32 vram_size,
 	rdc_hw_init(&chip->hw, &cfg, chip->vram, chip->frame[0], chip->frame[1],
 		    RDC_KCHIP_FRAME_CAP);
 	rdc_dp_init(chip->dp, &chip->hw);
+	/* a frame is converted only while something looks (each module) */
+	rdc_hw_set_on_demand(&chip->hw, p->on_demand);
 	rdc_hw_set_trace(&chip->hw, rdc_kchip_trace, chip);
 	rdc_kchip_update_period(chip);
 	return 0;
@@ -762,6 +804,21 @@ void rdc_kchip_drain_locked(struct rdc_kchip *chip)
 	rdc_kchip_irq_check_locked(chip);
 }
 
+/* sysfs scanout: "always", or "demand" and whether anything looks now. */
+ssize_t rdc_kchip_scanout_show(struct rdc_kchip *chip, char *buf)
+{
+	bool on, watched;
+
+	rdc_kchip_lock(chip);
+	on = chip->on_demand;
+	watched = rdc_hw_scanout_watched(&chip->hw);
+	rdc_kchip_unlock(chip);
+	return sysfs_emit(buf, "%s\n",
+			  !on	  ? "always" :
+			  watched ? "demand watched" :
+				    "demand idle");
+}
+
 /* ---- Counters and frames ------------------------------------------------- */
 
 void rdc_kchip_counters(struct rdc_kchip *chip, struct rdc_kchip_counters *c)
@@ -778,6 +835,8 @@ void rdc_kchip_counters(struct rdc_kchip *chip, struct rdc_kchip_counters *c)
 	c->last_opcode = hw->perf.last_opcode;
 	c->fence = hw->fence;
 	c->frames = chip->frames;
+	c->host_busy_ns = chip->busy_ns + (ktime_get_ns() - chip->held_at);
+	c->host_up_ns = ktime_get_ns() - chip->up_at;
 	rdc_kchip_unlock(chip);
 }
 
@@ -801,8 +860,9 @@ u32 rdc_kchip_crc(const u32 *px, size_t count)
  * copied in pieces with the lock dropped between them; a frame completed
  * meanwhile (the buffers swap) means a retry, the last one in one hold of
  * the lock (which stops the simulation, not interrupts), giving way
- * between pieces all the same.  Returns 0, or -EAGAIN before the first
- * frame.
+ * between pieces all the same.  Returns 0, or -EAGAIN with no frame yet
+ * (before the first, or none kept by scanout on demand: then the next
+ * whole frame is).
  */
 int rdc_kchip_snapshot(struct rdc_kchip *chip)
 {
@@ -817,6 +877,18 @@ int rdc_kchip_snapshot(struct rdc_kchip *chip)
 		rdc_kchip_lock(chip);
 		f = rdc_hw_frame(&chip->hw, &w, &h);
 		seq = chip->frames;
+		/*
+		 * A look that finds no frame (scanout on demand kept none:
+		 * nobody looked while the picture changed) attaches a
+		 * consumer, so that the caller's retry after the next vblank
+		 * finds the frame scanned whole; it stays while grabs come,
+		 * and goes RDC_KCHIP_GRAB_HOLD_FRAMES frames after the last.
+		 */
+		chip->grab_at = chip->frames;
+		if (!f && !chip->grab_watch) {
+			rdc_hw_consumer_attach(&chip->hw);
+			chip->grab_watch = true;
+		}
 		if (!f) {
 			rdc_kchip_unlock(chip);
 			chip->snap_seq = 0;

@@ -99,6 +99,8 @@ struct rdc_kchip_counters {
 	u64 now, busy, stall, pixels;
 	u32 cmds, last_cycles, last_opcode, fence;
 	u64 frames;
+	/* wall time the host held the chip, and since init (sysfs host_*) */
+	u64 host_busy_ns, host_up_ns;
 };
 
 struct rdc_kchip {
@@ -112,6 +114,9 @@ struct rdc_kchip {
 	struct device *dev;
 
 	bool stepped;	 /* clock=stepped: time moves only in WAIT/STEP */
+	bool on_demand;	 /* scanout=demand */
+	bool grab_watch; /* lock: a snapshot found no frame, consumer held */
+	u64 grab_at;	 /* lock: chip->frames at the last snapshot */
 	bool dying;	 /* the device is going away: waits end with -ENODEV */
 	bool submitting; /* lock: a SUBMIT has words still to push */
 
@@ -133,6 +138,10 @@ struct rdc_kchip {
 	u32 state_gen;
 	struct rdc_kgpio *gpio; /* lock: the pins as GPIO lines, or NULL */
 
+	/* lock: wall time spent holding the lock, and when it was taken */
+	u64 busy_ns, held_at;
+	u64 up_at; /* when the chip was made (ktime_get_ns) */
+
 	struct mutex snap_lock;
 	u32 *snap; /* a copy of the latest frame, snap_lock */
 	u64 snap_seq;
@@ -143,23 +152,27 @@ struct rdc_kchip {
 /*
  * The module parameters both drivers take, checked the one way:
  * vram=SIZE (memparse, within [vram_min, vram_max], rounded up to whole
- * pages: mapped pages are handed out whole), clock=paced|stepped and
- * devices=1..max_devices.  -EINVAL, logged under `name`, otherwise.
+ * pages: mapped pages are handed out whole), clock=paced|stepped,
+ * scanout=auto|demand|always and devices=1..max_devices.  -EINVAL, logged
+ * under `name`, otherwise.
  */
 struct rdc_kchip_params {
 	u32 vram_bytes;
 	bool stepped;
+	bool on_demand; /* scanout=demand (rdc_hw_set_on_demand) */
 };
 
 int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
-			   u32 vram_max, const char *clock,
+			   u32 vram_max, const char *clock, const char *scanout,
 			   unsigned int devices, unsigned int max_devices,
 			   struct rdc_kchip_params *out);
 
 void rdc_kchip_lock(struct rdc_kchip *chip);
 void rdc_kchip_unlock(struct rdc_kchip *chip);
-int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev, u32 vram_size,
-		   bool stepped);
+int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev,
+		   const struct rdc_kchip_params *p);
+/* One more (or one fewer) frame consumer: see rdc_hw_set_on_demand. */
+void rdc_kchip_consumer(struct rdc_kchip *chip, bool attach);
 void rdc_kchip_start(struct rdc_kchip *chip);
 void rdc_kchip_stop(struct rdc_kchip *chip);
 void rdc_kchip_free(struct rdc_kchip *chip);
@@ -171,6 +184,7 @@ int rdc_kchip_submit(struct rdc_kchip *chip, const u32 *words, u32 n);
 int rdc_kchip_vsync(struct rdc_kchip *chip);
 void rdc_kchip_counters(struct rdc_kchip *chip, struct rdc_kchip_counters *c);
 int rdc_kchip_snapshot(struct rdc_kchip *chip);
+ssize_t rdc_kchip_scanout_show(struct rdc_kchip *chip, char *buf);
 u32 rdc_kchip_crc(const u32 *px, size_t count);
 /* With chip->lock held. */
 ktime_t rdc_kchip_wall_of_locked(struct rdc_kchip *chip, u64 t);

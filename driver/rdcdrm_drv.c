@@ -42,12 +42,16 @@ module_param(clock, charp, 0444);
 MODULE_PARM_DESC(clock,
 		 "paced (follows wall time) or stepped (moves only in waits)");
 
+static char *scanout = "auto";
+module_param(scanout, charp, 0444);
+MODULE_PARM_DESC(scanout, "demand (frames converted only while looked at), "
+			  "always, or auto: demand when paced (auto)");
+
 static bool fbdev = true;
 module_param(fbdev, bool, 0444);
 MODULE_PARM_DESC(fbdev, "Emulate an fbdev device on the DRM device (1)");
 
-static u32 rdcdrm_vram_bytes;
-static bool rdcdrm_stepped;
+static struct rdc_kchip_params rdcdrm_params;
 static struct platform_device *rdcdrm_pdev[RDCDRM_MAX_DEVICES];
 
 static const struct drm_ioctl_desc rdcdrm_ioctls[] = {
@@ -79,6 +83,45 @@ static const struct drm_driver rdcdrm_driver = {
 	.minor = 0,
 };
 
+/*
+ * sysfs of the platform device: the wall time the host spent holding the
+ * chip (simulating, uploading, answering ioctls) and the time since the
+ * chip was made; their ratio over an interval is the chip's CPU share.
+ */
+#define RDCDRM_HOST_ATTR(name) \
+	static ssize_t name##_show(struct device *dev, \
+				   struct device_attribute *attr, char *buf) \
+	{ \
+		struct rdcdrm_device *rd = dev_get_drvdata(dev); \
+		struct rdc_kchip_counters c; \
+\
+		if (!rd) \
+			return -ENODEV; \
+		rdc_kchip_counters(&rd->chip, &c); \
+		return sysfs_emit(buf, "%llu\n", (unsigned long long)c.name); \
+	} \
+	static DEVICE_ATTR_RO(name)
+
+RDCDRM_HOST_ATTR(host_busy_ns);
+RDCDRM_HOST_ATTR(host_up_ns);
+
+static ssize_t scanout_show(struct device *dev, struct device_attribute *attr,
+			    char *buf)
+{
+	struct rdcdrm_device *rd = dev_get_drvdata(dev);
+
+	return rd ? rdc_kchip_scanout_show(&rd->chip, buf) : -ENODEV;
+}
+static DEVICE_ATTR_RO(scanout);
+
+static struct attribute *rdcdrm_attrs[] = {
+	&dev_attr_host_busy_ns.attr,
+	&dev_attr_host_up_ns.attr,
+	&dev_attr_scanout.attr,
+	NULL,
+};
+ATTRIBUTE_GROUPS(rdcdrm);
+
 /* The last reference to the drm_device is gone: so is every user. */
 static void rdcdrm_release(struct drm_device *drm, void *data)
 {
@@ -108,8 +151,7 @@ static int rdcdrm_probe(struct platform_device *pdev)
 	if (!rd->stage)
 		return -ENOMEM;
 	rd->chip.hooks = &rdcdrm_hooks;
-	ret = rdc_kchip_init(&rd->chip, &pdev->dev, rdcdrm_vram_bytes,
-			     rdcdrm_stepped);
+	ret = rdc_kchip_init(&rd->chip, &pdev->dev, &rdcdrm_params);
 	if (ret)
 		return ret;
 	ret = drmm_add_action_or_reset(drm, rdcdrm_release, rd);
@@ -129,8 +171,10 @@ static int rdcdrm_probe(struct platform_device *pdev)
 		dev_warn(&pdev->dev, "no GPIO lines for the pins: %d\n", ret);
 	if (fbdev)
 		rdcdrm_fbdev_setup(drm, 32);
-	drm_info(drm, "%s: %u KiB VRAM, %s clock\n", dev_name(&pdev->dev),
-		 rdcdrm_vram_bytes >> 10, rdcdrm_stepped ? "stepped" : "paced");
+	drm_info(drm, "%s: %u KiB VRAM, %s clock, scanout %s\n",
+		 dev_name(&pdev->dev), rdcdrm_params.vram_bytes >> 10,
+		 rdcdrm_params.stepped ? "stepped" : "paced",
+		 rdcdrm_params.on_demand ? "on demand" : "always");
 	return 0;
 
 err_stop:
@@ -161,6 +205,7 @@ static struct platform_driver rdcdrm_platform_driver = {
 	.shutdown = rdcdrm_shutdown,
 	.driver = {
 		.name = RDCDRM_NAME,
+		.dev_groups = rdcdrm_groups,
 	},
 };
 
@@ -177,17 +222,14 @@ static void rdcdrm_unregister_devices(void)
 
 static int __init rdcdrm_init(void)
 {
-	struct rdc_kchip_params par;
 	unsigned int i;
 	int ret;
 
 	ret = rdc_kchip_params_parse("rdcdrm", vram, RDCDRM_VRAM_MIN,
-				     RDCDRM_VRAM_MAX, clock, devices,
-				     RDCDRM_MAX_DEVICES, &par);
+				     RDCDRM_VRAM_MAX, clock, scanout, devices,
+				     RDCDRM_MAX_DEVICES, &rdcdrm_params);
 	if (ret)
 		return ret;
-	rdcdrm_vram_bytes = par.vram_bytes;
-	rdcdrm_stepped = par.stepped;
 	ret = platform_driver_register(&rdcdrm_platform_driver);
 	if (ret)
 		return ret;

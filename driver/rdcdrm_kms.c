@@ -386,10 +386,78 @@ static void rdcdrm_primary_update(struct drm_plane *plane,
 	rdc_kchip_unlock(&rd->chip);
 }
 
+/*
+ * The primary plane goes off while the CRTC stays on: the screen shows
+ * black (the cursor, if on, over it), as a CRTC with no plane does.  The
+ * chip has no background colour, so the DP fills the back buffer with 0
+ * in XRGB8888 (black before gamma, whatever the plane's format was) and
+ * it is flipped to at the next vblank like any update.
+ */
+static void rdcdrm_primary_disable(struct drm_plane *plane,
+				   struct drm_atomic_state *state)
+{
+	struct drm_plane_state *old =
+		drm_atomic_get_old_plane_state(state, plane);
+	struct rdcdrm_device *rd = rdcdrm_of(plane->dev);
+	struct rdc_hw *hw = &rd->chip.hw;
+	struct drm_crtc_state *cs;
+	u32 base, w, h, y;
+
+	if (!old->crtc)
+		return;
+	cs = drm_atomic_get_new_crtc_state(state, old->crtc);
+	/* a CRTC going off goes dark by itself (rdcdrm_crtc_disable) */
+	if (!cs || !cs->active)
+		return;
+	w = cs->mode.hdisplay;
+	h = cs->mode.vdisplay;
+	rdc_kchip_lock(&rd->chip);
+	base = (rd->front ^ 1) * RDCDRM_SCANOUT_BYTES;
+	rd->fmt = RDC_FMT_XRGB8888;
+	rd->stride = w * 4;
+	rd->width = w;
+	rd->height = h;
+	if (rdc_kchip_dp_usable(&rd->chip) && !rdcdrm_upload_begin(rd, base)) {
+		u32 fill[] = {
+			RDC_CMD(RDC_OP_SET_FG, 0, 1),
+			0,
+			RDC_CMD(RDC_OP_FILL_RECT, 0, 2),
+			RDC_XY(0, 0),
+			RDC_WH(w, h),
+		};
+
+		if (!rdc_kchip_push_locked(&rd->chip, fill, ARRAY_SIZE(fill)))
+			rdc_kchip_drain_locked(&rd->chip);
+	} else {
+		/* the host clears it through the aperture, a row at a time */
+		memset(rd->stage, 0, RDCDRM_STAGE_WORDS * sizeof(u32));
+		for (y = 0; y < h; y++) {
+			u32 x, n;
+
+			for (x = 0; x < w; x += n) {
+				n = min(w - x, RDCDRM_STAGE_WORDS);
+				rdc_hw_vram_write(hw,
+						  base + y * rd->stride + x * 4,
+						  rd->stage, n * 4);
+			}
+		}
+	}
+	/* the next update finds no picture of its own to build on */
+	rd->prev_valid = false;
+	rdc_hw_write(hw, RDC_REG_FB_FORMAT, rd->fmt);
+	rdc_hw_write(hw, RDC_REG_FB_STRIDE, rd->stride);
+	rdc_hw_write(hw, RDC_REG_FB_BASE, base);
+	rd->front ^= 1;
+	rd->chip.state_gen++;
+	rdc_kchip_irq_check_locked(&rd->chip);
+	rdc_kchip_unlock(&rd->chip);
+}
+
 static const struct drm_plane_helper_funcs rdcdrm_primary_helpers = {
 	DRM_GEM_SHADOW_PLANE_HELPER_FUNCS,
 	.atomic_check = rdcdrm_primary_check,
 	.atomic_update = rdcdrm_primary_update,
+	.atomic_disable = rdcdrm_primary_disable,
 };
 
 static const struct drm_plane_funcs rdcdrm_plane_funcs = {

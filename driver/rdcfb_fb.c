@@ -507,6 +507,30 @@ static int rdcfb_blank(int blank, struct fb_info *info)
 	return 0;
 }
 
+/*
+ * An open by user space is a frame consumer (scanout on demand converts
+ * frames while one is open): it may read frames, and it may write VRAM
+ * through read/write or a mapping (which holds the file open) with no
+ * barrier.  fbcon's opens are not: its drawing goes through fb_ops.
+ */
+static int rdcfb_open(struct fb_info *info, int user)
+{
+	struct rdcfb_par *par = info->par;
+
+	if (user)
+		rdc_kchip_consumer(par->chip, true);
+	return 0;
+}
+
+static int rdcfb_release(struct fb_info *info, int user)
+{
+	struct rdcfb_par *par = info->par;
+
+	if (user)
+		rdc_kchip_consumer(par->chip, false);
+	return 0;
+}
+
 static int rdcfb_mmap(struct fb_info *info, struct vm_area_struct *vma)
 {
 	struct rdcfb_par *par = info->par;
@@ -739,6 +763,7 @@ static void rdcfb_op_run(struct rdcfb_par *par, const struct rdcfb_op *op,
 {
 	struct rdc_kchip *chip = par->chip;
 	struct rdc_hw *hw = &chip->hw;
+	u64 lo;
 	u32 i;
 
 	switch (op->kind) {
@@ -761,6 +786,11 @@ static void rdcfb_op_run(struct rdcfb_par *par, const struct rdcfb_op *op,
 	    !(hw->dp_status & RDC_STATUS_DP_HALTED))
 		rdc_kchip_drain_locked(chip);
 	rdcfb_cpu_draw(chip, op, data);
+	/* the CPU's writes pass no barrier: scanout on demand hears of them */
+	lo = min_t(u64, (u64)op->dy * op->stride, hw->vram_size);
+	rdc_hw_vram_touched(hw, lo,
+			    min_t(u64, (u64)op->h * op->stride,
+				  hw->vram_size - lo));
 }
 
 /* Apply every queued record, in order (rdc_kchip_lock does). */
@@ -1148,6 +1178,8 @@ static void rdcfb_destroy(struct fb_info *info)
 
 const struct fb_ops rdcfb_ops = {
 	.owner = THIS_MODULE,
+	.fb_open = rdcfb_open,
+	.fb_release = rdcfb_release,
 	.fb_read = fb_sys_read,
 	.fb_write = fb_sys_write,
 	.fb_check_var = rdcfb_check_var,

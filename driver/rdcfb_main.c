@@ -38,8 +38,12 @@ module_param(clock, charp, 0444);
 MODULE_PARM_DESC(clock,
 		 "paced (follows wall time) or stepped (moves only in waits)");
 
-static u32 rdcfb_vram_bytes;
-static bool rdcfb_stepped;
+static char *scanout = "auto";
+module_param(scanout, charp, 0444);
+MODULE_PARM_DESC(scanout, "demand (frames converted only while looked at), "
+			  "always, or auto: demand when paced (auto)");
+
+static struct rdc_kchip_params rdcfb_params;
 static struct platform_device *rdcfb_pdev[RDCFB_MAX_DEVICES];
 
 /* ---- sysfs: the counters ------------------------------------------------- */
@@ -68,6 +72,8 @@ RDCFB_COUNTER_ATTR(pixels, c.pixels);
 RDCFB_COUNTER_ATTR(cmds, c.cmds);
 RDCFB_COUNTER_ATTR(frames, c.frames);
 RDCFB_COUNTER_ATTR(now, c.now);
+RDCFB_COUNTER_ATTR(host_busy_ns, c.host_busy_ns);
+RDCFB_COUNTER_ATTR(host_up_ns, c.host_up_ns);
 
 #define RDCFB_PIN_ATTR(name, field) \
 	static ssize_t name##_show(struct device *dev, \
@@ -143,22 +149,23 @@ static ssize_t fb_dropped_show(struct device *dev,
 }
 static DEVICE_ATTR_RO(fb_dropped);
 
+static ssize_t scanout_show(struct device *dev, struct device_attribute *attr,
+			    char *buf)
+{
+	return rdc_kchip_scanout_show(rdc_kchip_of(dev), buf);
+}
+static DEVICE_ATTR_RO(scanout);
+
 static struct attribute *rdcfb_attrs[] = {
-	&dev_attr_busy_cycles.attr,
-	&dev_attr_stall_cycles.attr,
-	&dev_attr_pixels.attr,
-	&dev_attr_cmds.attr,
-	&dev_attr_frames.attr,
-	&dev_attr_now.attr,
-	&dev_attr_frame_crc.attr,
-	&dev_attr_pin_edges.attr,
-	&dev_attr_pin_lost.attr,
-	&dev_attr_pin_late_max_ns.attr,
-	&dev_attr_pin_late_avg_ns.attr,
-	&dev_attr_irqs_off_max_ns.attr,
-	&dev_attr_irqs_off_max_at.attr,
-	&dev_attr_fb_dropped.attr,
-	NULL,
+	&dev_attr_busy_cycles.attr,	&dev_attr_stall_cycles.attr,
+	&dev_attr_pixels.attr,		&dev_attr_cmds.attr,
+	&dev_attr_frames.attr,		&dev_attr_now.attr,
+	&dev_attr_host_busy_ns.attr,	&dev_attr_host_up_ns.attr,
+	&dev_attr_frame_crc.attr,	&dev_attr_pin_edges.attr,
+	&dev_attr_pin_lost.attr,	&dev_attr_pin_late_max_ns.attr,
+	&dev_attr_pin_late_avg_ns.attr, &dev_attr_irqs_off_max_ns.attr,
+	&dev_attr_irqs_off_max_at.attr, &dev_attr_fb_dropped.attr,
+	&dev_attr_scanout.attr,		NULL,
 };
 ATTRIBUTE_GROUPS(rdcfb);
 
@@ -180,7 +187,7 @@ static int rdcfb_probe(struct platform_device *pdev)
 	ret = rdcfb_opq_init(rd);
 	if (ret)
 		goto err_chip;
-	ret = rdc_kchip_init(chip, &pdev->dev, rdcfb_vram_bytes, rdcfb_stepped);
+	ret = rdc_kchip_init(chip, &pdev->dev, &rdcfb_params);
 	if (ret)
 		goto err_opq;
 	info = framebuffer_alloc(sizeof(*par), &pdev->dev);
@@ -207,9 +214,11 @@ static int rdcfb_probe(struct platform_device *pdev)
 	ret = rdc_kgpio_register(chip, &pdev->dev);
 	if (ret)
 		dev_warn(&pdev->dev, "no GPIO lines for the pins: %d\n", ret);
-	fb_info(info, "%s: %ux%u, %u KiB VRAM, %s clock\n", info->fix.id,
-		info->var.xres, info->var.yres, rdcfb_vram_bytes >> 10,
-		rdcfb_stepped ? "stepped" : "paced");
+	fb_info(info, "%s: %ux%u, %u KiB VRAM, %s clock, scanout %s\n",
+		info->fix.id, info->var.xres, info->var.yres,
+		rdcfb_params.vram_bytes >> 10,
+		rdcfb_params.stepped ? "stepped" : "paced",
+		rdcfb_params.on_demand ? "on demand" : "always");
 	return 0;
 
 err_stop:
@@ -266,17 +275,14 @@ static void rdcfb_unregister_devices(void)
 
 static int __init rdcfb_init(void)
 {
-	struct rdc_kchip_params par;
 	unsigned int i;
 	int ret;
 
 	ret = rdc_kchip_params_parse("rdcfb", vram, RDCFB_VRAM_MIN,
-				     RDCFB_VRAM_MAX, clock, devices,
-				     RDCFB_MAX_DEVICES, &par);
+				     RDCFB_VRAM_MAX, clock, scanout, devices,
+				     RDCFB_MAX_DEVICES, &rdcfb_params);
 	if (ret)
 		return ret;
-	rdcfb_vram_bytes = par.vram_bytes;
-	rdcfb_stepped = par.stepped;
 	rdcfb_bench_module_init();
 	ret = platform_driver_register(&rdcfb_driver);
 	if (ret) {

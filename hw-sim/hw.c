@@ -161,6 +161,11 @@ void rdc_hw_consumer_detach(struct rdc_hw *hw)
 	rdc_scan_update(hw);
 }
 
+bool rdc_hw_scanout_watched(const struct rdc_hw *hw)
+{
+	return !hw->lazy;
+}
+
 void rdc_hw_vram_touched(struct rdc_hw *hw, uint32_t addr, uint32_t len)
 {
 	rdc_crtc_catch_up(hw, hw->now);

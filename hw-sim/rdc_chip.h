@@ -198,6 +198,8 @@ int rdc_preset_timing(uint32_t preset, struct rdc_timing *t);
 void rdc_hw_set_on_demand(struct rdc_hw *hw, bool on);
 void rdc_hw_consumer_attach(struct rdc_hw *hw);
 void rdc_hw_consumer_detach(struct rdc_hw *hw);
+/* Fetched lines are converted as they are fetched (always, when off). */
+bool rdc_hw_scanout_watched(const struct rdc_hw *hw);
 /* Bytes [addr, addr + len) of VRAM changed outside rdc_hw_vram_write. */
 void rdc_hw_vram_touched(struct rdc_hw *hw, uint32_t addr, uint32_t len);
 

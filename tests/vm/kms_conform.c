@@ -48,6 +48,13 @@
  *   bad-input         framebuffers of bad format, pitch, size, handle and
  *                     flags, dumb buffers, flips and vblank requests
  *                     refused cleanly; the card still shows a picture
+ *   primary-off       the primary plane off with the CRTC on: the frame is
+ *                     black and frames go on; back on, its picture whole
+ *   host-cost         (paced clock) the chip's share of a CPU at
+ *                     1024x768@60 idle, with the CRC looking, and flipping
+ *                     every frame, with flips a second: figures; checked:
+ *                     the counters move with time, scanout on demand is
+ *                     idle exactly while nothing looks
  *
  * Frames are checked at the smallest mode the connector offers (the
  * chip's scanout is simulated, and smaller is faster under emulation).
@@ -73,6 +80,7 @@
 #include <xf86drmMode.h>
 #include <zlib.h>
 
+#include "rdc_regs.h"
 #include "rdcdrm_ioctl.h"
 #include "tap.h"
 
@@ -100,7 +108,8 @@ struct kms {
 	uint32_t *frame; /* w * h, the last grab */
 	uint64_t max_w, max_h;
 	bool has_c8;
-	bool stepped; /* rdcdrm's clock=stepped */
+	bool stepped;	 /* rdcdrm's clock=stepped */
+	char sysdev[64]; /* /sys/class/drm/cardN/device */
 };
 
 struct dumb {
@@ -235,6 +244,8 @@ static int kms_setup(struct kms *k)
 		return 77;
 	}
 	printf("# %s\n", path);
+	snprintf(k->sysdev, sizeof(k->sysdev), "/sys/class/drm/%s/device",
+		 strrchr(path, '/') + 1);
 	if (drmSetMaster(k->fd) && !drmIsMaster(k->fd)) {
 		printf("# cannot become DRM master: %s\n", strerror(errno));
 		return 1;
@@ -494,6 +505,39 @@ static int wait_vblank_rel(struct kms *k, unsigned int n, drmVBlank *out)
 	return 0;
 }
 
+static int rdc_reg_read(struct kms *k, uint32_t reg, uint32_t *val)
+{
+	struct drm_rdc_reg r = { .reg = reg };
+
+	if (drmIoctl(k->fd, DRM_IOCTL_RDC_REG_READ, &r))
+		return -errno;
+	*val = r.val;
+	return 0;
+}
+
+/*
+ * Until the chip's next vblank: a DRM vblank wait on the paced clock; on
+ * the stepped one, where only the chip's own waits move time, a WAIT for
+ * FRAME_COUNT to pass its value now.
+ */
+static int next_frame(struct kms *k)
+{
+	struct drm_rdc_wait w = { 0 };
+	uint32_t n = 0;
+	int ret;
+
+	if (!k->stepped)
+		return wait_vblank_rel(k, 1, NULL);
+	ret = rdc_reg_read(k, RDC_REG_FRAME_COUNT, &n);
+	if (ret)
+		return ret;
+	w.term[0].kind = DRM_RDC_WAIT_WRAP_GE;
+	w.term[0].reg = RDC_REG_FRAME_COUNT;
+	w.term[0].mask = ~0u;
+	w.term[0].value = n + 1;
+	return drmIoctl(k->fd, DRM_IOCTL_RDC_WAIT, &w) ? -errno : 0;
+}
+
 /*
  * The chip's frame once SETTLE_FRAMES whole frames have been scanned out
  * after now, into k->frame: what a commit that has returned shows.
@@ -510,7 +554,7 @@ static int settle(struct kms *k, struct drm_rdc_frame *fr)
 		ret = rdc_frame(k, NULL, fr);
 		if (!ret && fr->seq >= want)
 			break;
-		if (wait_vblank_rel(k, 1, NULL))
+		if (next_frame(k))
 			usleep(5000); /* the CRTC is off: no vblank to wait for */
 	}
 	ret = rdc_frame(k, k->frame, fr);
@@ -1836,6 +1880,302 @@ static int st_bad_input(struct kms *k)
 	return 0;
 }
 
+/* ---- primary-off ------------------------------------------------------------ */
+
+/*
+ * The primary plane off with the CRTC on: the screen is black (as a CRTC
+ * with no plane shows, and vkms composes), the vblanks go on; turned on
+ * again, the plane's picture is back whole.
+ */
+static int st_primary_off(struct kms *k)
+{
+	uint32_t *want = want_new(k);
+	drmModeAtomicReqPtr r;
+	struct drm_rdc_frame fr;
+	struct dumb d;
+	uint64_t seq0;
+	int ret;
+
+	if (dumb_new(k, k->w, k->h, DRM_FORMAT_XRGB8888, &d)) {
+		free(want);
+		return tap(0, "primary-off: buffer"), 1;
+	}
+	paint(&d, 31);
+	expect_xrgb(k, &d, want);
+	ret = show(k, &d);
+	if (!ret)
+		ret = settle(k, &fr);
+	tap(!ret && !frame_diff(k, want, "shown"),
+	    "primary-off: a picture shown is in the frame");
+	seq0 = fr.seq;
+	r = drmModeAtomicAlloc();
+	add(r, k->primary_id, k->pp.fb_id, 0);
+	add(r, k->primary_id, k->pp.crtc_id, 0);
+	if (k->cursor_id) {
+		add(r, k->cursor_id, k->cp.fb_id, 0);
+		add(r, k->cursor_id, k->cp.crtc_id, 0);
+	}
+	ret = commit(k, r, 0);
+	if (!ret)
+		ret = settle(k, &fr);
+	memset(want, 0, (size_t)k->w * k->h * sizeof(*want));
+	tap(!ret && !frame_diff(k, want, "plane off") && fr.seq > seq0,
+	    "primary-off: the plane off, the CRTC on: the frame is black and "
+	    "frames go on (%s, frame %" PRIu64 " after %" PRIu64 ")",
+	    ret ? strerror(-ret) : "committed", (uint64_t)fr.seq, seq0);
+	expect_xrgb(k, &d, want);
+	ret = show(k, &d);
+	if (!ret)
+		ret = settle(k, &fr);
+	tap(!ret && !frame_diff(k, want, "plane on"),
+	    "primary-off: the plane on again: its picture whole");
+	dumb_free(k, &d);
+	free(want);
+	return 0;
+}
+
+/* ---- host-cost ---------------------------------------------------------------- */
+
+#define COST_S	   3 /* seconds each figure is measured over */
+#define COST_PATCH 64
+
+static int sys_read(struct kms *k, const char *name, char *buf, size_t cap)
+{
+	char path[128];
+	FILE *f;
+	int ok;
+
+	snprintf(path, sizeof(path), "%s/%s", k->sysdev, name);
+	f = fopen(path, "r");
+	if (!f)
+		return -errno;
+	ok = fgets(buf, (int)cap, f) != NULL;
+	fclose(f);
+	if (!ok)
+		return -EIO;
+	buf[strcspn(buf, "\n")] = 0;
+	return 0;
+}
+
+/* The chip host's busy and up time (sysfs host_busy_ns, host_up_ns). */
+struct cost {
+	uint64_t busy, up, wall;
+};
+
+static int cost_read(struct kms *k, struct cost *c)
+{
+	char b[32], u[32];
+	int ret = sys_read(k, "host_busy_ns", b, sizeof(b));
+
+	if (!ret)
+		ret = sys_read(k, "host_up_ns", u, sizeof(u));
+	if (ret)
+		return ret;
+	c->busy = strtoull(b, NULL, 10);
+	c->up = strtoull(u, NULL, 10);
+	c->wall = now_ns();
+	return 0;
+}
+
+/* busy over up between a and b, in per cent; -1 when they make no sense */
+static double cost_share(const struct cost *a, const struct cost *b)
+{
+	if (b->up <= a->up || b->busy < a->busy ||
+	    b->busy - a->busy > b->up - a->up)
+		return -1;
+	return 100.0 * (double)(b->busy - a->busy) / (double)(b->up - a->up);
+}
+
+static bool scanout_is(struct kms *k, const char *want, char *got, size_t cap)
+{
+	return !sys_read(k, "scanout", got, cap) && !strcmp(got, want);
+}
+
+/* Flips to d[0], d[1], ... for COST_S seconds: how many, 0 on an error. */
+static unsigned int cost_flips(struct kms *k, struct dumb *d,
+			       enum flip_kind kind, uint32_t damage)
+{
+	uint64_t end = now_ns() + COST_S * 1000000000ull;
+	unsigned int n = 0;
+
+	while (now_ns() < end) {
+		if (flip_to(k, &d[n % 2], kind, damage) ||
+		    wait_event(k, &ev.flips))
+			return 0;
+		n++;
+	}
+	return n;
+}
+
+/*
+ * What the chip costs the machine it runs on, at 1024x768@60 on the
+ * paced clock, as figures (they depend on this machine): the share of a
+ * CPU that the host held the chip for (sysfs host_busy_ns over
+ * host_up_ns), idle with nothing looking at frames, idle with the CRC
+ * looking, and flipping every frame (a 64x64 damaged patch, and whole
+ * frames), with the flips reached per second.  The checks: the counters
+ * move as time does, and scanout on demand is idle exactly while
+ * nothing looks.
+ */
+static int st_host_cost(struct kms *k)
+{
+	struct kms big;
+	drmModeConnectorPtr conn;
+	struct dumb d[2];
+	struct cost c0, c1;
+	char got[32], ctl[192], data[192], mode[16] = "";
+	struct drm_mode_rect patch = { 0, 0, COST_PATCH, COST_PATCH };
+	uint32_t damage = 0;
+	double idle, watched = -1, fdmg = -1, ffull = -1;
+	unsigned int ndmg = 0, nfull = 0;
+	bool demand, found = false;
+	FILE *f;
+	int fd, ret;
+
+	if (k->stepped) {
+		tap_skip("host-cost: figures of the paced clock");
+		return 77;
+	}
+	if (sys_read(k, "host_busy_ns", got, sizeof(got))) {
+		tap_skip("host-cost: no sysfs host_busy_ns");
+		return 77;
+	}
+	if (sys_read(k, "scanout", mode, sizeof(mode)))
+		mode[0] = 0;
+	demand = !strncmp(mode, "demand", 6);
+	mode[strcspn(mode, " ")] = 0;
+	conn = drmModeGetConnector(k->fd, k->conn_id);
+	big = *k;
+	for (int i = 0; conn && i < conn->count_modes; i++)
+		if (conn->modes[i].hdisplay == 1024 &&
+		    conn->modes[i].vdisplay == 768 &&
+		    conn->modes[i].vrefresh == 60) {
+			big.mode = conn->modes[i];
+			found = true;
+		}
+	drmModeFreeConnector(conn);
+	if (!found) {
+		tap(0, "host-cost: the connector offers 1024x768@60");
+		return 1;
+	}
+	big.w = 1024;
+	big.h = 768;
+	big.frame = NULL;
+	if (drmModeCreatePropertyBlob(k->fd, &big.mode, sizeof(big.mode),
+				      &big.mode_blob) ||
+	    dumb_new(&big, big.w, big.h, DRM_FORMAT_XRGB8888, &d[0]) ||
+	    dumb_new(&big, big.w, big.h, DRM_FORMAT_XRGB8888, &d[1]))
+		return tap(0, "host-cost: 1024x768 buffers"), 1;
+	paint(&d[0], 41);
+	paint(&d[1], 42);
+	ret = show(&big, &d[0]);
+	tap(!ret, "host-cost: 1024x768@60 set (%s)",
+	    ret ? strerror(-ret) : "committed");
+	if (ret)
+		goto out;
+	sleep(1); /* the modeset's upload done, the clock steady */
+
+	/* idle, nothing looking */
+	if (demand)
+		tap(scanout_is(k, "demand idle", got, sizeof(got)),
+		    "host-cost: nothing looks at frames: scanout is \"%s\"",
+		    got);
+	ret = cost_read(k, &c0);
+	sleep(COST_S);
+	ret = ret ? ret : cost_read(k, &c1);
+	idle = ret ? -1 : cost_share(&c0, &c1);
+	tap(!ret && idle >= 0 && c1.up - c0.up >= (c1.wall - c0.wall) / 2,
+	    "host-cost: host_busy_ns and host_up_ns move with time "
+	    "(up %.2f s over %.2f s wall)",
+	    (double)(c1.up - c0.up) / 1e9, (double)(c1.wall - c0.wall) / 1e9);
+
+	/* idle, the CRC looking at every frame */
+	if (k->debugfs[0]) {
+		snprintf(ctl, sizeof(ctl), "%s/crtc-%u/crc/control", k->debugfs,
+			 k->crtc_idx);
+		snprintf(data, sizeof(data), "%s/crtc-%u/crc/data", k->debugfs,
+			 k->crtc_idx);
+		f = fopen(ctl, "w");
+		if (f && fputs("auto", f) >= 0 && !fclose(f) &&
+		    (fd = open(data, O_RDONLY | O_CLOEXEC | O_NONBLOCK)) >= 0) {
+			if (demand)
+				tap(scanout_is(k, "demand watched", got,
+					       sizeof(got)),
+				    "host-cost: with the CRC on, scanout is "
+				    "\"%s\"",
+				    got);
+			if (!cost_read(k, &c0)) {
+				char line[256];
+				uint64_t end =
+					now_ns() + COST_S * 1000000000ull;
+
+				/* read the entries as a CRC client does */
+				while (now_ns() < end) {
+					struct pollfd p = { fd, POLLIN, 0 };
+
+					if (poll(&p, 1, 100) > 0 &&
+					    read(fd, line, sizeof(line)) < 0 &&
+					    errno != EAGAIN)
+						break;
+				}
+				if (!cost_read(k, &c1))
+					watched = cost_share(&c0, &c1);
+			}
+			close(fd);
+			if (demand)
+				tap(scanout_is(k, "demand idle", got,
+					       sizeof(got)),
+				    "host-cost: the CRC off, scanout is \"%s\" "
+				    "again",
+				    got);
+		}
+	}
+
+	/* flipping every frame: a damaged patch, then whole frames */
+	if (k->pp.damage &&
+	    !drmModeCreatePropertyBlob(k->fd, &patch, sizeof(patch), &damage) &&
+	    !cost_read(k, &c0)) {
+		ndmg = cost_flips(&big, d, FLIP_DAMAGE, damage);
+		if (!cost_read(k, &c1))
+			fdmg = cost_share(&c0, &c1);
+	}
+	if (damage)
+		drmModeDestroyPropertyBlob(k->fd, damage);
+	if (!cost_read(k, &c0)) {
+		nfull = cost_flips(&big, d, FLIP_ATOMIC, 0);
+		if (!cost_read(k, &c1))
+			ffull = cost_share(&c0, &c1);
+	}
+	tap(ndmg > 0 && nfull > 0,
+	    "host-cost: flips of a 64x64 patch and of whole frames went "
+	    "through (%u and %u)",
+	    ndmg, nfull);
+	printf("# host-cost: the chip's share of a CPU at 1024x768@60, paced, "
+	       "scanout %s, over %d s each (sysfs host_busy_ns / "
+	       "host_up_ns):\n"
+	       "#   idle, nothing looking: %.3f%%\n"
+	       "#   idle, the CRC looking: %.3f%%\n"
+	       "#   flipping a 64x64 damaged patch: %.3f%%, %.1f flips/s\n"
+	       "#   flipping whole frames: %.3f%%, %.1f flips/s\n",
+	       mode[0] ? mode : "?", COST_S, idle, watched, fdmg,
+	       (double)ndmg / COST_S, ffull, (double)nfull / COST_S);
+out:
+	/* back to the subtests' mode before the buffers shown go */
+	{
+		struct dumb b;
+
+		if (!dumb_new(k, k->w, k->h, DRM_FORMAT_XRGB8888, &b)) {
+			fill(&b, 0);
+			show(k, &b);
+			dumb_free(k, &b);
+		}
+	}
+	dumb_free(&big, &d[0]);
+	dumb_free(&big, &d[1]);
+	drmModeDestroyPropertyBlob(k->fd, big.mode_blob);
+	return 0;
+}
+
 /* ---- main ------------------------------------------------------------------ */
 
 static const struct {
@@ -1853,6 +2193,8 @@ static const struct {
 	{ "crc", st_crc },
 	{ "damage", st_damage },
 	{ "bad-input", st_bad_input },
+	{ "primary-off", st_primary_off },
+	{ "host-cost", st_host_cost },
 };
 
 #define NSUB (sizeof(subtests) / sizeof(subtests[0]))
