@@ -182,46 +182,91 @@ struct hv {
 	double c[4];
 };
 
-static double ref_dist(const double *c, int k)
+/*
+ * The canonical view volume as the course states it: a box on the
+ * divided coordinates, x/w and y/w in [-1, 1] and z/w in [-1, 0] (0 the
+ * front plane), for W > 0.  Kept as the box's faces, tested on x/w, y/w
+ * and z/w, and not as the plane distances the display processor clips
+ * with, so that the two are not one formula written twice.
+ */
+static const struct ref_face {
+	int axis;     /* 0: x, 1: y, 2: z */
+	double bound; /* of the divided coordinate */
+	bool at_most; /* inside: <= bound (else >= bound) */
+} ref_box[6] = {
+	{ 0, -1, false }, { 0, 1, true }, { 1, -1, false },
+	{ 1, 1, true },	  { 2, 0, true }, { 2, -1, false },
+};
+
+/* No point of the box has W <= 0: the clip first keeps W >= this. */
+#define REF_W_MIN 1e-9
+
+/* Is c on the inside of face k (W > 0), or of W >= REF_W_MIN (k < 0)? */
+static bool ref_inside(const double *c, int k)
 {
-	switch (k) {
-	case 0:
-		return c[3] + c[0];
-	case 1:
-		return c[3] - c[0];
-	case 2:
-		return c[3] + c[1];
-	case 3:
-		return c[3] - c[1];
-	case 4:
-		return -c[2];
-	default:
-		return c[3] + c[2];
-	}
+	const struct ref_face *f = &ref_box[k < 0 ? 0 : k];
+	double q;
+
+	if (k < 0)
+		return c[3] >= REF_W_MIN;
+	q = c[f->axis] / c[3];
+	return f->at_most ? q <= f->bound : q >= f->bound;
 }
 
-/* Sutherland-Hodgman in homogeneous coordinates; returns the count */
+static void ref_lerp(const struct hv *a, const struct hv *b, double t,
+		     struct hv *o)
+{
+	for (int j = 0; j < 4; j++)
+		o->c[j] = a->c[j] + t * (b->c[j] - a->c[j]);
+}
+
+/*
+ * Where the edge from in (inside) to out (outside) leaves the half-space
+ * k.  W >= REF_W_MIN: where W is REF_W_MIN.  A face: by bisection on
+ * the divided coordinate, which is monotonic along an edge whose W stays
+ * positive (both ends passed the W clip), to well under 1e-12 of the edge.
+ */
+static void ref_cross(const struct hv *in, const struct hv *out, int k,
+		      struct hv *o)
+{
+	double lo = 0, hi = 1;
+
+	if (k < 0) {
+		ref_lerp(in, out,
+			 (in->c[3] - REF_W_MIN) / (in->c[3] - out->c[3]), o);
+		return;
+	}
+	for (int i = 0; i < 48; i++) {
+		double mid = (lo + hi) / 2;
+
+		ref_lerp(in, out, mid, o);
+		if (ref_inside(o->c, k))
+			lo = mid;
+		else
+			hi = mid;
+	}
+	ref_lerp(in, out, lo, o);
+}
+
+/*
+ * Sutherland-Hodgman against W >= REF_W_MIN, then the box's six faces;
+ * returns the count.  Every vertex it keeps or makes is in the box.
+ */
 static int ref_clip(struct hv *p, int n)
 {
 	struct hv o[16];
 
-	for (int k = 0; k < 6 && n; k++) {
+	for (int k = -1; k < 6 && n; k++) {
 		int m = 0;
 
 		for (int i = 0; i < n; i++) {
 			struct hv *a = &p[i], *b = &p[(i + 1) % n];
-			double da = ref_dist(a->c, k), db = ref_dist(b->c, k);
+			bool ia = ref_inside(a->c, k), ib = ref_inside(b->c, k);
 
-			if (da >= 0)
+			if (ia)
 				o[m++] = *a;
-			if ((da >= 0) != (db >= 0)) {
-				double t = da / (da - db);
-
-				for (int j = 0; j < 4; j++)
-					o[m].c[j] = a->c[j] +
-						    t * (b->c[j] - a->c[j]);
-				m++;
-			}
+			if (ia != ib)
+				ref_cross(ia ? a : b, ia ? b : a, k, &o[m++]);
 		}
 		memcpy(p, o, sizeof(struct hv) * m);
 		n = m;
