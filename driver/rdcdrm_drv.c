@@ -44,8 +44,7 @@ MODULE_PARM_DESC(clock,
 
 static char *scanout = "auto";
 module_param(scanout, charp, 0444);
-MODULE_PARM_DESC(scanout, "demand (frames converted only while looked at), "
-			  "always, or auto: demand when paced (auto)");
+MODULE_PARM_DESC(scanout, "demand, always, or auto: demand when paced");
 
 static bool fbdev = true;
 module_param(fbdev, bool, 0444);

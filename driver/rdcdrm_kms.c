@@ -356,8 +356,7 @@ static void rdcdrm_primary_update(struct drm_plane *plane,
 		drm_atomic_helper_damage_iter_init(
 			&iter, drm_atomic_get_old_plane_state(state, plane),
 			new);
-		drm_atomic_for_each_plane_damage(&iter, &clip)
-		{
+		drm_atomic_for_each_plane_damage(&iter, &clip) {
 			drm_rect_translate(&clip, -(new->src.x1 >> 16),
 					   -(new->src.y1 >> 16));
 			rdcdrm_upload_rect(rd, by_dp, base, src, pitch, cpp,

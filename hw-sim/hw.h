@@ -213,9 +213,11 @@ struct rdc_hw {
 	rdc_trace_fn trace_fn; /* optional */
 	void *trace_ctx;
 
-	/* the VRAM write watcher (rdc_hw_set_vram_hook), optional, and the
+	/*
+	 * the VRAM write watcher (rdc_hw_set_vram_hook), optional, and the
 	 * bytes [lo, hi) it watches (a CRTC register write or a reset widens
-	 * them to everything until the watcher narrows them again) */
+	 * them to everything until the watcher narrows them again)
+	 */
 	rdc_vram_hook_fn vram_hook;
 	void *vram_hook_ctx;
 	uint32_t vram_watch_lo, vram_watch_hi;
