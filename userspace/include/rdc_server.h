@@ -32,6 +32,26 @@ extern "C" {
 #endif
 
 /*
+ * A wait's result (hw-sim/wait.c) as the library's error, the one mapping
+ * every user-space host of the chip uses (sim:, rdcd): 0 a term holds,
+ * RDC_E_HALTED the DP halted on a needs-DP wait, RDC_E_TIMEOUT the budget
+ * ran out, 1 not yet (RDC_HW_WAIT_MORE).
+ */
+static inline int rdc_wait_result_error(enum rdc_hw_wait_result r)
+{
+	switch (r) {
+	case RDC_HW_WAIT_DONE:
+		return 0;
+	case RDC_HW_WAIT_MORE:
+		return 1;
+	case RDC_HW_WAIT_HALTED:
+		return RDC_E_HALTED;
+	default:
+		return RDC_E_TIMEOUT;
+	}
+}
+
+/*
  * The chip behind a "sim:" handle, NULL for any other backend: rdcd owns
  * its device through a sim: handle and hooks frames and time here.
  */

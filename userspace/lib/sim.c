@@ -255,14 +255,7 @@ static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 
 	rdc_wait_to_hw(w, &hw_w);
 	rdc_hw_wait_begin(hw, &hw_w);
-	switch (rdc_hw_wait_run(hw, &hw_w, RDC_NEVER)) {
-	case RDC_HW_WAIT_DONE:
-		return 0;
-	case RDC_HW_WAIT_HALTED:
-		return RDC_E_HALTED;
-	default:
-		return RDC_E_TIMEOUT;
-	}
+	return rdc_wait_result_error(rdc_hw_wait_run(hw, &hw_w, RDC_NEVER));
 }
 
 static int sim_step(rdc_dev *dev, uint64_t cycles)

@@ -62,17 +62,13 @@ static int rdcd_stepped_wait_run(struct rdcd *d, struct rdcd_client *c,
 				 struct rdc_hw_wait *w)
 {
 	for (;;) {
+		int ret;
+
 		rdc_rec_time_moved(d->rec, rdc_hw_now(d->hw));
-		switch (rdc_hw_wait_run(d->hw, w, RDCD_WAIT_PIECE)) {
-		case RDC_HW_WAIT_MORE:
-			break;
-		case RDC_HW_WAIT_DONE:
-			return 0;
-		case RDC_HW_WAIT_HALTED:
-			return RDC_E_HALTED;
-		default:
-			return RDC_E_TIMEOUT;
-		}
+		ret = rdc_wait_result_error(
+			rdc_hw_wait_run(d->hw, w, RDCD_WAIT_PIECE));
+		if (ret != 1)
+			return ret;
 		if (c->dead)
 			return RDC_E_IO;
 		rdcd_chip_yield_point(d);
@@ -243,18 +239,9 @@ bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 
 		/* time moves with the daemon's clock: only the checks here */
 		w.start = c->pend_start;
-		switch (rdc_hw_wait_check(d->hw, &w)) {
-		case RDC_HW_WAIT_DONE:
-			break;
-		case RDC_HW_WAIT_HALTED:
-			ret = RDC_E_HALTED;
-			break;
-		case RDC_HW_WAIT_TIMEOUT:
-			ret = RDC_E_TIMEOUT;
-			break;
-		default:
+		ret = rdc_wait_result_error(rdc_hw_wait_check(d->hw, &w));
+		if (ret == 1)
 			return false;
-		}
 		break;
 	}
 	case RDCD_PEND_STEP:
