@@ -493,23 +493,29 @@ static void rdc_kchip_wait_conv(const struct rdcfb_wait *w, u64 budget,
 }
 
 /*
- * One look at a paced wait's condition, with the lock held: 0 it holds,
- * -EIO the DP halted (a needs-DP wait), -ETIMEDOUT the budget is spent,
- * 1 not yet.  The order is the core's (hw-sim/wait.c).
+ * A wait's result (hw-sim/wait.c) as the ioctls' errno, the one mapping
+ * of both modules: 0 a term holds, -EIO the DP halted (a needs-DP wait),
+ * -ETIMEDOUT the budget is spent, 1 not yet.
  */
+static int rdc_kchip_wait_errno(enum rdc_hw_wait_result r)
+{
+	switch (r) {
+	case RDC_HW_WAIT_DONE:
+		return 0;
+	case RDC_HW_WAIT_MORE:
+		return 1;
+	case RDC_HW_WAIT_HALTED:
+		return -EIO;
+	default:
+		return -ETIMEDOUT;
+	}
+}
+
+/* One look at a paced wait's condition, with the lock held. */
 static int rdc_kchip_wait_check(struct rdc_kchip *chip,
 				const struct rdc_hw_wait *w)
 {
-	switch (rdc_hw_wait_check(&chip->hw, w)) {
-	case RDC_HW_WAIT_DONE:
-		return 0;
-	case RDC_HW_WAIT_HALTED:
-		return -EIO;
-	case RDC_HW_WAIT_TIMEOUT:
-		return -ETIMEDOUT;
-	default:
-		return 1;
-	}
+	return rdc_kchip_wait_errno(rdc_hw_wait_check(&chip->hw, w));
 }
 
 /*
@@ -552,14 +558,7 @@ static int rdc_kchip_wait_stepped(struct rdc_kchip *chip, struct rdc_hw_wait *w)
 	}
 	rdc_kchip_unlock(chip);
 	wake_up_all(&chip->waitq);
-	switch (res) {
-	case RDC_HW_WAIT_DONE:
-		return 0;
-	case RDC_HW_WAIT_HALTED:
-		return -EIO;
-	default:
-		return -ETIMEDOUT;
-	}
+	return rdc_kchip_wait_errno(res);
 }
 
 /*
