@@ -83,6 +83,11 @@ void rdcfb_fill(struct fb_info *info, const struct fb_fillrect *r);
 void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a);
 void rdcfb_blit(struct fb_info *info, const struct fb_image *img);
 int rdcfb_sync(struct fb_info *info);
+
+/* rdcfb_uapi.c: the private ioctls */
+int rdcfb_ioctl(struct fb_info *info, unsigned int cmd, unsigned long arg);
+int rdcfb_compat_ioctl(struct fb_info *info, unsigned int cmd,
+		       unsigned long arg);
 int rdcfb_opq_init(struct rdcfb_dev *rd);
 void rdcfb_opq_free(struct rdcfb_dev *rd);
 extern const struct rdc_kchip_hooks rdcfb_hooks;
