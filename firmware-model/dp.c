@@ -10,6 +10,7 @@
  * beam) and READBACK (waiting for RDATA space) suspend after they start.
  */
 #include "dp_int.h"
+#include "rdc_dp_view.h"
 #include "../hw-sim/bus.h"
 
 /* dp->src of a command fetched from a display list in VRAM */
@@ -701,6 +702,35 @@ static const struct rdc_dp_ops rdc_dp_ops = {
 	.reset = dp_reset,
 	.run = dp_run,
 };
+
+bool rdc_dp_view_get(const struct rdc_hw *hw, struct rdc_dp_view *s)
+{
+	const struct rdc_dp *dp = hw->dp;
+	uint32_t d;
+
+	rdc_memset(s, 0, sizeof(*s));
+	if (!dp)
+		return false;
+	s->opcode = RDC_CMD_OP(dp->cmd[0]);
+	s->rop = dp->st.rop;
+	s->alpha = dp->st.alpha;
+	s->colorkey = dp->st.colorkey;
+	s->colorkey_on = dp->st.colorkey_on;
+	s->pattern = dp->st.pat_mode;
+	s->fg = dp->st.fg;
+	s->bg = dp->st.bg;
+	s->depth = RDC_MIN(dp->list_depth, (uint32_t)RDC_CALL_DEPTH);
+	if (s->depth) {
+		s->src = RDC_DP_SRC_LIST;
+		s->cmd_addr = dp->list_pc - dp->cmd_len * 4u;
+		for (d = 0; d + 1 < s->depth; d++)
+			s->calls[d] = dp->list_ret[d];
+	} else {
+		s->src = dp->src == RDC_SRC_RING ? RDC_DP_SRC_RING :
+						   RDC_DP_SRC_FIFO;
+	}
+	return true;
+}
 
 void rdc_dp_init(struct rdc_dp *dp, struct rdc_hw *hw)
 {

@@ -20,8 +20,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "dp.h"
 #include "hw.h"
+#include "rdc_dp_view.h"
 #include "rdc_priv.h"
 #include "rdc_proto.h"
 
@@ -117,36 +117,33 @@ static void hist_context(const struct rdc_history *h,
 			 unsigned int who)
 {
 	const struct rdc_hw *hw = h->hw;
-	const struct rdc_dp *dp = hw->dp;
+	struct rdc_dp_view dp;
 
 	e->size = sizeof(*e);
 	e->cycle = time;
 	e->cmd_index = hw->perf.cmds;
 	e->line = h->line_set ? h->line : h->dev->src_line;
 	e->frame = hw->crtc.frame_count;
-	if (who == RDC_VRAM_BY_HOST || !dp) {
+	if (who == RDC_VRAM_BY_HOST || !rdc_dp_view_get(hw, &dp)) {
 		e->opcode = RDC_HISTORY_OP_HOST;
 		e->source = RDC_HISTORY_SRC_HOST;
 		return;
 	}
-	e->opcode = RDC_CMD_OP(dp->cmd[0]);
-	e->rop = dp->st.rop;
-	e->alpha = dp->st.alpha;
-	e->colorkey = dp->st.colorkey;
-	e->colorkey_on = dp->st.colorkey_on;
-	e->pattern = dp->st.pat_mode;
-	e->fg = dp->st.fg;
-	e->bg = dp->st.bg;
-	e->depth = RDC_MIN(dp->list_depth, (uint32_t)RDC_CALL_DEPTH);
-	if (e->depth) {
-		e->source = RDC_HISTORY_SRC_LIST;
-		e->cmd_addr = dp->list_pc - dp->cmd_len * 4u;
-		for (uint32_t d = 0; d + 1 < e->depth; d++)
-			e->calls[d] = dp->list_ret[d];
-	} else {
-		e->source = dp->src == RDC_SRC_RING ? RDC_HISTORY_SRC_RING :
-						      RDC_HISTORY_SRC_FIFO;
-	}
+	e->opcode = dp.opcode;
+	e->rop = dp.rop;
+	e->alpha = dp.alpha;
+	e->colorkey = dp.colorkey;
+	e->colorkey_on = dp.colorkey_on;
+	e->pattern = dp.pattern;
+	e->fg = dp.fg;
+	e->bg = dp.bg;
+	e->depth = dp.depth;
+	e->cmd_addr = dp.cmd_addr;
+	for (uint32_t d = 0; d + 1 < e->depth; d++)
+		e->calls[d] = dp.calls[d];
+	e->source = dp.src == RDC_DP_SRC_LIST ? RDC_HISTORY_SRC_LIST :
+		    dp.src == RDC_DP_SRC_RING ? RDC_HISTORY_SRC_RING :
+						RDC_HISTORY_SRC_FIFO;
 }
 
 static struct hist_rec *hist_add(struct rdc_history *h)
