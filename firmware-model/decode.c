@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /*
- * DECODE: an RLE, DPCM or BTC image stream in VRAM (rdc_image.h) decoded
- * into DST.
+ * DECODE: an RLE, DPCM, BTC or HUFF image stream in VRAM (rdc_image.h)
+ * decoded into DST.
  *
  * The stream is distrusted: every byte comes through a reader bounded by
  * the header's payload size, itself bounded by the command's size
- * argument, so nothing past the stream is read.  RLE and DPCM are decoded
+ * argument, so nothing past the stream is read.  All but BTC are decoded
  * twice: once to check the stream (nothing written), then to draw it, so
  * a corrupt stream is rejected with RDC_ERR_DATA before any pixel
  * changes, as every rejected command.  A BTC stream's size says whether
@@ -240,6 +240,80 @@ static uint32_t dec_btc(struct rdc_dp *dp, const struct dec *d,
 	return in_left(r) ? RDC_ERR_DATA : RDC_ERR_NONE;
 }
 
+/*
+ * A canonical code's table (rdc_image.h) into h, as JPEG's decoder
+ * tables: per length the first and last code and the index of the first
+ * one's symbol.  False for no symbols, more than 256, or codes that
+ * overflow their length.
+ */
+static bool huff_load(struct rdc_dp *dp, struct img_in *r,
+		      struct rdc_dp_huff *h)
+{
+	uint32_t n[RDC_IMG_HUFF_LENS + 1], l, i, code = 0, k = 0, b;
+
+	for (l = 1; l <= RDC_IMG_HUFF_LENS; l++) {
+		if (!in_byte(dp, r, &n[l]))
+			return false;
+		k += n[l];
+	}
+	if (!k || k > RDC_IMG_HUFF_SYMS)
+		return false;
+	for (i = 0; i < k; i++) {
+		if (!in_byte(dp, r, &b))
+			return false;
+		h->sym[i] = (uint8_t)b;
+	}
+	for (l = 1, k = 0; l <= RDC_IMG_HUFF_LENS; l++) {
+		h->mincode[l] = code;
+		h->valptr[l] = k;
+		code += n[l];
+		k += n[l];
+		if (code > 1u << l)
+			return false;
+		h->maxcode[l] = n[l] ? (int32_t)code - 1 : -1;
+		code <<= 1;
+	}
+	return true;
+}
+
+/* The next code's symbol, one bit at a time; false past the stream. */
+static bool huff_sym(struct rdc_dp *dp, struct img_in *r,
+		     const struct rdc_dp_huff *h, uint32_t *sym)
+{
+	uint32_t code = 0, l, bit;
+
+	for (l = 1; l <= RDC_IMG_HUFF_LENS; l++) {
+		if (!in_bits(dp, r, 1, &bit))
+			return false;
+		code = code << 1 | bit;
+		if (code >= h->mincode[l] && (int32_t)code <= h->maxcode[l]) {
+			*sym = h->sym[h->valptr[l] + code - h->mincode[l]];
+			return true;
+		}
+	}
+	return false; /* no code of 16 bits or fewer */
+}
+
+static uint32_t dec_huff(struct rdc_dp *dp, const struct dec *d,
+			 struct img_in *r)
+{
+	uint8_t *row = dp->img.u.huff.row;
+	struct rdc_dp_huff *h = &dp->img.u.huff.code;
+	uint32_t n = d->w * d->ch, y, i, v;
+
+	if (!huff_load(dp, r, h))
+		return RDC_ERR_DATA;
+	for (y = 0; y < d->h; y++) {
+		for (i = 0; i < n; i++) {
+			if (!huff_sym(dp, r, h, &v))
+				return RDC_ERR_DATA;
+			row[i] = (uint8_t)v;
+		}
+		emit_row(dp, d, y, row);
+	}
+	return in_left(r) ? RDC_ERR_DATA : RDC_ERR_NONE;
+}
+
 static uint32_t dec_run(struct rdc_dp *dp, const struct dec *d, uint32_t base)
 {
 	struct img_in r;
@@ -250,6 +324,8 @@ static uint32_t dec_run(struct rdc_dp *dp, const struct dec *d, uint32_t base)
 		return dec_rle(dp, d, &r);
 	case RDC_IMG_DPCM:
 		return dec_dpcm(dp, d, &r);
+	case RDC_IMG_HUFF:
+		return dec_huff(dp, d, &r);
 	default:
 		return dec_btc(dp, d, &r);
 	}

@@ -12,6 +12,14 @@
 #define RDC_DP_IMG_IN_CHUNK 256u /* stream bytes read per span */
 #define RDC_DP_HIST_BINS    256u
 
+/* A canonical Huffman code (rdc_image.h) as DECODE walks it. */
+struct rdc_dp_huff {
+	int32_t maxcode[RDC_IMG_HUFF_LENS + 1]; /* last code of a length, or -1 */
+	uint32_t mincode[RDC_IMG_HUFF_LENS + 1]; /* first code of a length */
+	uint32_t valptr[RDC_IMG_HUFF_LENS + 1];	 /* its symbol's index */
+	uint8_t sym[RDC_IMG_HUFF_SYMS];
+};
+
 struct rdc_dp_img {
 	/* DECODE's stream reader: bytes read, not yet used */
 	uint8_t in[RDC_DP_IMG_IN_CHUNK];
@@ -21,6 +29,11 @@ struct rdc_dp_img {
 	union {
 		/* DECODE: this row's and the last row's samples */
 		uint8_t dec[2][RDC_IMG_MAX_WIDTH * 3];
+		/* DECODE of HUFF: a row and the code */
+		struct {
+			uint8_t row[RDC_IMG_MAX_WIDTH * 3];
+			struct rdc_dp_huff code;
+		} huff;
 		/* CONVOLVE: three SRC rows, one pixel more at each end */
 		uint32_t conv[3][RDC_IMG_MAX_WIDTH + 2];
 	} u;

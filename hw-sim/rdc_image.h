@@ -42,6 +42,17 @@
  * not stored); per block and channel 4 bytes: low level, high level, a
  * 16-bit bitmap (bit 4 * row + column, 1 = high).  Payload: exactly
  * blocks * channels * 4 bytes.
+ *
+ * HUFF (canonical Huffman coding of the samples, lossless): a code table,
+ * then a bit stream, most significant bit of each byte first.  The table
+ * is RDC_IMG_HUFF_LENS bytes: n[l], the number of codes of length l for
+ * l = 1..16, then N = n[1] + ... + n[16] (1..256) symbol bytes in the
+ * order of their codes.  Codes are canonical (as JPEG's DHT): the first
+ * code of length 1 is 0; each next code of the same length is one more,
+ * and the first of length l + 1 is (last of length l + 1) << 1; a table
+ * whose codes would not fit their lengths is bad.  The bit stream holds a
+ * code per sample in raster order, the last byte zero-padded; a bit
+ * pattern that is no code, or bytes after the last sample, are bad.
  */
 #ifndef RDC_IMAGE_H
 #define RDC_IMAGE_H
@@ -57,11 +68,14 @@
 #define RDC_IMG_BTC_BYTES	4u /* per block and channel */
 #define RDC_IMG_RLE_LITERAL_MAX 128u
 #define RDC_IMG_RLE_RUN_MAX	129u
+#define RDC_IMG_HUFF_LENS	16u /* longest code; the table's counts */
+#define RDC_IMG_HUFF_SYMS	256u
 
 enum rdc_img_codec {
 	RDC_IMG_RLE = 1,
 	RDC_IMG_DPCM = 2,
 	RDC_IMG_BTC = 3,
+	RDC_IMG_HUFF = 4,
 	RDC_IMG_CODEC_END
 };
 

@@ -395,7 +395,7 @@ static void test_decode_corrupt(void **state)
 		b[4] = 0;
 		expect_bad(t, b, len, STREAM_BASE, (uint32_t)len, 0,
 			   RDC_ERR_DATA);
-		b[4] = 4;
+		b[4] = RDC_IMG_CODEC_END;
 		expect_bad(t, b, len, STREAM_BASE, (uint32_t)len, 0,
 			   RDC_ERR_DATA);
 		memcpy(b, st, len);
