@@ -704,7 +704,7 @@ int rdc_record_stop(rdc_dev *dev);
 /* ---- Compressed images (the DECODE command) ------------------------------ */
 /*
  * Streams in the formats of rdc_image.h (RDC_IMG_RLE, RDC_IMG_DPCM,
- * RDC_IMG_BTC), for the DP to decode from VRAM.  Samples are 8 bits, a
+ * RDC_IMG_BTC, RDC_IMG_HUFF), for the DP to decode from VRAM.  Samples are 8 bits, a
  * pixel is `channels` of them: 1 (grey or a CLUT index) or 3 (R, G, B);
  * w 1..RDC_IMG_MAX_WIDTH, h 1..RDC_IMG_MAX_HEIGHT.
  */
@@ -715,9 +715,10 @@ size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
  * Encode w x h pixels (rows `pitch` bytes apart) into out (cap bytes);
  * *len gets the stream's size, header included.  RDC_E_INVAL for a bad
  * codec, size or channel count; RDC_E_RANGE if cap is too small (*len
- * says how much was needed); RDC_E_NOMEM.  RLE and DPCM are lossless;
- * BTC keeps each 4x4 block's mean within 1/2 and every sample within
- * its block's range (max - min).
+ * says how much was needed); RDC_E_NOMEM.  RLE, DPCM and HUFF are
+ * lossless; BTC keeps each 4x4 block's mean within 1/2 and every sample
+ * within its block's range (max - min).  HUFF's code is built for the
+ * picture (code lengths at most 16 bits).
  */
 int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,

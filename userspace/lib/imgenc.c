@@ -3,7 +3,8 @@
 /*
  * Host-side image encoders for the DP's DECODE command: RLE (PackBits on
  * pixels), DPCM (median predictor, Rice codes with a parameter chosen
- * per row) and BTC (absolute-moment block truncation coding, 4x4).  The
+ * per row), BTC (absolute-moment block truncation coding, 4x4) and HUFF
+ * (a canonical Huffman code of the samples, built for each picture).  The
  * stream formats are rdc_image.h's; this file never calls the firmware.
  */
 #include <errno.h>
@@ -26,6 +27,8 @@ static void img_put32(uint8_t *p, uint32_t v)
 	img_put16(p, v);
 	img_put16(p + 2, v >> 16);
 }
+
+#define HUFF_TABLE_MAX (RDC_IMG_HUFF_LENS + RDC_IMG_HUFF_SYMS)
 
 static int img_args_ok(uint32_t w, uint32_t h, uint32_t channels)
 {
@@ -55,6 +58,9 @@ size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
 	case RDC_IMG_BTC:
 		p = (uint64_t)((w + 3) / 4) * ((h + 3) / 4) * channels *
 		    RDC_IMG_BTC_BYTES;
+		break;
+	case RDC_IMG_HUFF: /* the table, every code 16 bits */
+		p = HUFF_TABLE_MAX + n * channels * RDC_IMG_HUFF_LENS / 8;
 		break;
 	default:
 		return 0;
@@ -267,6 +273,124 @@ static size_t enc_btc(const struct img_src *s, uint8_t *o)
 	return k;
 }
 
+/*
+ * Huffman code lengths (at most RDC_IMG_HUFF_LENS) for freq[0..n), 0 for
+ * an unused symbol; a lone symbol gets length 1.  Lengths come from
+ * merging the two lightest trees until one is left; if a code is longer
+ * than 16 bits, the counts are halved (a used symbol keeps at least 1)
+ * and the code built again.
+ */
+static void huff_lengths(const uint64_t *freq, uint32_t n, uint8_t *len)
+{
+	uint64_t f[RDC_IMG_HUFF_SYMS], w[2 * RDC_IMG_HUFF_SYMS];
+	int32_t up[2 * RDC_IMG_HUFF_SYMS];
+	uint8_t live[2 * RDC_IMG_HUFF_SYMS];
+	uint32_t i, k, m, used, a, b, d, top;
+	int32_t j;
+
+	for (i = 0; i < n; i++)
+		f[i] = freq[i];
+	for (;;) {
+		m = 0;
+		used = 0;
+		for (i = 0; i < n; i++) {
+			w[i] = f[i];
+			live[i] = f[i] != 0;
+			up[i] = -1;
+			used += live[i];
+			len[i] = 0;
+		}
+		if (used <= 1) {
+			for (i = 0; i < n; i++)
+				len[i] = f[i] ? 1 : 0;
+			return;
+		}
+		m = n;
+		for (k = 1; k < used; k++) {
+			/* the two lightest live trees, a then b */
+			a = b = UINT32_MAX;
+			for (i = 0; i < m; i++) {
+				if (!live[i])
+					continue;
+				if (a == UINT32_MAX || w[i] < w[a]) {
+					b = a;
+					a = i;
+				} else if (b == UINT32_MAX || w[i] < w[b]) {
+					b = i;
+				}
+			}
+			w[m] = w[a] + w[b];
+			live[m] = 1;
+			up[m] = -1;
+			live[a] = live[b] = 0;
+			up[a] = up[b] = (int32_t)m;
+			m++;
+		}
+		top = 0;
+		for (i = 0; i < n; i++) {
+			if (!f[i])
+				continue;
+			for (d = 0, j = up[i]; j >= 0; j = up[j])
+				d++;
+			len[i] = (uint8_t)(d > 255 ? 255 : d);
+			top = d > top ? d : top;
+		}
+		if (top <= RDC_IMG_HUFF_LENS)
+			return;
+		for (i = 0; i < n; i++)
+			f[i] = f[i] ? (f[i] >> 1) | 1 : 0;
+	}
+}
+
+/*
+ * The canonical code of those lengths: the table (counts, then symbols
+ * by length and value) into o, each symbol's code into code[].  Returns
+ * the table's size.
+ */
+static size_t huff_table(const uint8_t *len, uint32_t n, uint16_t *code,
+			 uint8_t *o)
+{
+	uint32_t l, i, c = 0;
+	size_t k = RDC_IMG_HUFF_LENS;
+
+	memset(o, 0, RDC_IMG_HUFF_LENS);
+	for (l = 1; l <= RDC_IMG_HUFF_LENS; l++) {
+		for (i = 0; i < n; i++) {
+			if (len[i] != l)
+				continue;
+			o[l - 1]++;
+			o[k++] = (uint8_t)i;
+			code[i] = (uint16_t)c++;
+		}
+		c <<= 1;
+	}
+	return k;
+}
+
+static size_t enc_huff(const struct img_src *s, uint8_t *o)
+{
+	uint64_t freq[RDC_IMG_HUFF_SYMS] = { 0 };
+	uint8_t len[RDC_IMG_HUFF_SYMS];
+	uint16_t code[RDC_IMG_HUFF_SYMS];
+	uint32_t n = s->w * s->ch, x, y, v;
+	struct bitw b = { .o = o };
+
+	for (y = 0; y < s->h; y++)
+		for (x = 0; x < n; x++)
+			freq[s->px[(size_t)y * s->pitch + x]]++;
+	huff_lengths(freq, RDC_IMG_HUFF_SYMS, len);
+	b.k = huff_table(len, RDC_IMG_HUFF_SYMS, code, o);
+	for (y = 0; y < s->h; y++) {
+		for (x = 0; x < n; x++) {
+			v = s->px[(size_t)y * s->pitch + x];
+			bits_put(&b, code[v], len[v]);
+		}
+	}
+	if (b.n)
+		bits_put(&b, 0, 8 - b.n);
+	return b.k;
+}
+
 int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,
 		     size_t *len)
@@ -295,6 +419,9 @@ int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 		}
 		payload = enc_dpcm(&s, tmp + RDC_IMG_HDR_BYTES, res);
 		free(res);
+		break;
+	case RDC_IMG_HUFF:
+		payload = enc_huff(&s, tmp + RDC_IMG_HDR_BYTES);
 		break;
 	default:
 		payload = enc_btc(&s, tmp + RDC_IMG_HDR_BYTES);
