@@ -1,0 +1,513 @@
+// SPDX-License-Identifier: GPL-2.0-only
+// SPDX-FileCopyrightText: 2026 The rdc authors
+/*
+ * DECODE of the entropy and lossy codecs: HUFF, DPCMQ and DCT streams
+ * written by librdc's encoders and decoded by the DP, each against a
+ * decoder of this file written from rdc_image.h's description alone and
+ * in another way than the DP's: HUFF by a walk down an explicit code tree
+ * one bit at a time, DPCMQ by a sample-at-a-time loop over whole images,
+ * DCT with a floating-point IDCT.  Corrupt streams give RDC_ERR_DATA with
+ * nothing drawn; the cost is the documented one, to the cycle.
+ */
+#include <math.h>
+
+#include "test_dp_common.h"
+#include "rdc.h"
+
+#define DST_W	    320u
+#define DST_H	    240u
+#define STREAM_BASE 0x200000u
+#define SENTINEL    0x5au
+
+static uint32_t rng_next(uint32_t *s)
+{
+	*s ^= *s << 13;
+	*s ^= *s >> 17;
+	*s ^= *s << 5;
+	return *s;
+}
+
+/*
+ * Test pictures: 0 flat rectangles, 1 a smooth gradient with a little
+ * noise, 2 noise, 3 a checkerboard of 3-pixel cells, 4 one grey.
+ */
+static void gen_image(uint8_t *px, uint32_t w, uint32_t h, uint32_t ch,
+		      int kind, uint32_t seed)
+{
+	uint32_t x, y, c, s = seed | 1, v;
+
+	for (y = 0; y < h; y++) {
+		for (x = 0; x < w; x++) {
+			for (c = 0; c < ch; c++) {
+				if (kind == 0)
+					v = (x / 13) * 37 + (y / 9) * 71 +
+					    c * 50;
+				else if (kind == 1)
+					v = x * 255 / w + y * (c + 1) +
+					    (rng_next(&s) & 3);
+				else if (kind == 2)
+					v = rng_next(&s);
+				else if (kind == 3)
+					v = ((x / 3 + y / 3) & 1) ? 200 - c :
+								    20 + c;
+				else
+					v = 99;
+				px[((size_t)y * w + x) * ch + c] =
+					(uint8_t)(v & 0xff);
+			}
+		}
+	}
+}
+
+static struct rdc_surface dst_surface(uint32_t fmt)
+{
+	struct rdc_surface s = { 0, 0, DST_W, DST_H, fmt };
+
+	s.stride = (DST_W * tdp_bpp(fmt) + 7) / 8;
+	s.stride = (s.stride + 3) & ~3u;
+	return s;
+}
+
+/* The pixel a sample (or R, G, B) becomes in fmt, as rdc_image.h says. */
+static uint32_t want_px(uint32_t fmt, const uint8_t *p, uint32_t ch)
+{
+	uint32_t r = p[0], g = ch == 3 ? p[1] : p[0], b = ch == 3 ? p[2] : p[0];
+
+	if (fmt <= RDC_FMT_I8)
+		return p[0] & tdp_mask(fmt);
+	if (fmt == RDC_FMT_RGB565)
+		return (r >> 3) << 11 | (g >> 2) << 5 | (b >> 3);
+	return r << 16 | g << 8 | b;
+}
+
+static void prep_dst(struct tdp *t, const struct rdc_surface *s)
+{
+	memset(t->vram + s->base, SENTINEL, (size_t)s->stride * s->height);
+	tdp_set_surface(t, RDC_OP_SET_DST, s);
+}
+
+static uint8_t *encode(uint32_t codec, uint32_t level, const uint8_t *px,
+		       uint32_t w, uint32_t h, uint32_t ch, size_t *len)
+{
+	size_t cap = rdc_image_bound(codec, w, h, ch);
+	uint8_t *out = malloc(cap);
+
+	assert_non_null(out);
+	(void)level;
+	assert_int_equal(rdc_image_encode(codec, px, w, h, ch, (size_t)w * ch,
+					  out, cap, len),
+			 0);
+	assert_true(*len <= cap);
+	return out;
+}
+
+static void decode_at(struct tdp *t, const uint8_t *stream, size_t len,
+		      uint32_t size, int32_t x, int32_t y)
+{
+	memcpy(t->vram + STREAM_BASE, stream, len);
+	TDP_CMD(t, RDC_OP_DECODE, STREAM_BASE, size, RDC_XY(x, y));
+	tdp_drain(t);
+}
+
+/* The DST rectangle at (x0, y0) holds img (w x h, ch) exactly. */
+static void check_exact(struct tdp *t, const struct rdc_surface *s,
+			const uint8_t *img, uint32_t w, uint32_t h, uint32_t ch,
+			int32_t x0, int32_t y0)
+{
+	uint32_t x, y;
+
+	for (y = 0; y < h; y++)
+		for (x = 0; x < w; x++)
+			if (tdp_get(t->vram, s, x0 + x, y0 + y) !=
+			    want_px(s->format, img + ((size_t)y * w + x) * ch,
+				    ch))
+				fail_msg("pixel (%u, %u) of %ux%ux%u in format "
+					 "%u",
+					 x, y, w, h, ch, s->format);
+}
+
+/* Expect err from DECODE of stream, with DST untouched and the DP fine. */
+static void expect_bad(struct tdp *t, const uint8_t *stream, size_t len,
+		       uint32_t err)
+{
+	struct rdc_surface s = dst_surface(RDC_FMT_XRGB8888);
+	size_t i;
+
+	prep_dst(t, &s);
+	tdp_clear_err(t);
+	decode_at(t, stream, len, (uint32_t)len, 0, 0);
+	assert_int_equal(tdp_err(t), err);
+	for (i = 0; i < (size_t)s.stride * s.height; i++)
+		if (t->vram[i] != SENTINEL)
+			fail_msg("byte %zu written by a rejected DECODE", i);
+	tdp_clear_err(t);
+	TDP_CMD(t, RDC_OP_FENCE, 77);
+	tdp_drain(t);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_FENCE), 77);
+}
+
+static void put32(uint8_t *p, uint32_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+	p[2] = (uint8_t)(v >> 16);
+	p[3] = (uint8_t)(v >> 24);
+}
+
+/* A bit reader of this file's own: MSB first, false past the end. */
+struct rbits {
+	const uint8_t *p;
+	size_t n, bit;
+};
+
+static int rbit(struct rbits *b)
+{
+	int v;
+
+	if (b->bit >= 8 * b->n)
+		return -1;
+	v = b->p[b->bit / 8] >> (7 - b->bit % 8) & 1;
+	b->bit++;
+	return v;
+}
+
+/*
+ * A code tree: node 0 the root, kid[i][bit] the next node (0: none),
+ * leaf[i] the symbol + 1 of a leaf (0: inner node).
+ */
+struct rtree {
+	uint16_t kid[2 * 65536][2];
+	uint16_t leaf[2 * 65536];
+	uint32_t nodes;
+};
+
+/* The table at p into t, codes counted up as rdc_image.h says; its size. */
+static size_t rtree_load(struct rtree *t, const uint8_t *p, size_t n)
+{
+	uint32_t l, i, k = 0, code = 0, node, bit, d;
+
+	memset(t, 0, sizeof(*t));
+	t->nodes = 1;
+	assert_true(n >= RDC_IMG_HUFF_LENS);
+	for (l = 0; l < RDC_IMG_HUFF_LENS; l++)
+		k += p[l];
+	assert_true(k >= 1 && k <= 256 && n >= RDC_IMG_HUFF_LENS + k);
+	k = 0;
+	for (l = 1; l <= RDC_IMG_HUFF_LENS; l++) {
+		for (i = 0; i < p[l - 1]; i++, k++, code++) {
+			assert_true(code < 1u << l);
+			node = 0;
+			for (d = l; d--;) {
+				bit = code >> d & 1;
+				assert_int_equal(t->leaf[node], 0);
+				if (!t->kid[node][bit])
+					t->kid[node][bit] =
+						(uint16_t)t->nodes++;
+				node = t->kid[node][bit];
+			}
+			t->leaf[node] =
+				(uint16_t)(p[RDC_IMG_HUFF_LENS + k] + 1);
+		}
+		code <<= 1;
+	}
+	return RDC_IMG_HUFF_LENS + k;
+}
+
+/* One symbol by walking the tree; -1 at the end or off the tree. */
+static int rtree_sym(const struct rtree *t, struct rbits *b)
+{
+	uint32_t node = 0;
+	int bit;
+
+	while (!t->leaf[node]) {
+		bit = rbit(b);
+		if (bit < 0 || !t->kid[node][bit])
+			return -1;
+		node = t->kid[node][bit];
+	}
+	return t->leaf[node] - 1;
+}
+
+/*
+ * HUFF decoded by the tree walk: the samples into out; with rowend, the
+ * payload bytes the decoding has touched when each row is complete.
+ */
+static void ref_huff(const uint8_t *st, size_t len, uint8_t *out,
+		     uint32_t *rowend)
+{
+	static struct rtree tree;
+	uint32_t w = st[8] | st[9] << 8, h = st[10] | st[11] << 8, ch = st[5];
+	size_t i, n = (size_t)w * h * ch, tab;
+	struct rbits b;
+	int v;
+
+	assert_int_equal(st[4], RDC_IMG_HUFF);
+	tab = rtree_load(&tree, st + 16, len - 16);
+	b.p = st + 16 + tab;
+	b.n = len - 16 - tab;
+	b.bit = 0;
+	for (i = 0; i < n; i++) {
+		v = rtree_sym(&tree, &b);
+		assert_true(v >= 0);
+		out[i] = (uint8_t)v;
+		if (rowend && (i + 1) % ((size_t)w * ch) == 0)
+			rowend[i / ((size_t)w * ch)] =
+				(uint32_t)(tab + (b.bit + 7) / 8);
+	}
+	/* only the zero padding of the last byte is left */
+	assert_true(b.n * 8 - b.bit < 8);
+	while ((v = rbit(&b)) >= 0)
+		assert_int_equal(v, 0);
+}
+
+/* Any codec of this file by its reference: samples and row ends. */
+static void ref_rowends(const uint8_t *st, size_t len, uint8_t *out,
+			uint32_t *rowend)
+{
+	switch (st[4]) {
+	case RDC_IMG_HUFF:
+		ref_huff(st, len, out, rowend);
+		break;
+	default:
+		fail_msg("codec %u", st[4]);
+	}
+}
+
+static const uint32_t sizes[][2] = { { 1, 1 },	 { 7, 5 },   { 129, 3 },
+				     { 16, 16 }, { 300, 9 }, { 1, 40 } };
+
+/* HUFF is lossless: the DP gives the original, as does the tree walk. */
+static void test_huff_roundtrip(void **state)
+{
+	struct tdp *t = *state;
+	static const uint32_t fmts[][2] = {
+		{ RDC_FMT_I8, 1 },
+		{ RDC_FMT_XRGB8888, 3 },
+		{ RDC_FMT_RGB565, 3 },
+	};
+	uint32_t si, fi, w, h, ch;
+	int kind;
+
+	for (si = 0; si < RDC_ARRAY_SIZE(sizes); si++) {
+		for (fi = 0; fi < RDC_ARRAY_SIZE(fmts); fi++) {
+			for (kind = 0; kind < 5; kind++) {
+				struct rdc_surface s = dst_surface(fmts[fi][0]);
+				uint8_t *img, *ref, *st;
+				size_t len, n;
+
+				w = sizes[si][0];
+				h = sizes[si][1];
+				ch = fmts[fi][1];
+				n = (size_t)w * h * ch;
+				img = malloc(n);
+				ref = malloc(n);
+				assert_non_null(img);
+				assert_non_null(ref);
+				gen_image(img, w, h, ch, kind, si * 7 + fi);
+				st = encode(RDC_IMG_HUFF, 0, img, w, h, ch,
+					    &len);
+				ref_huff(st, len, ref, NULL);
+				assert_memory_equal(ref, img, n);
+				prep_dst(t, &s);
+				decode_at(t, st, len, (uint32_t)len, 5, 3);
+				assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+				check_exact(t, &s, img, RDC_MIN(w, DST_W - 5),
+					    h, ch, 5, 3);
+				free(st);
+				free(ref);
+				free(img);
+			}
+		}
+	}
+}
+
+/*
+ * Long codes: symbol v appearing 2^(20 - v) times would need codes of
+ * 1..19 bits; the encoder limits them to 16, and the tree walk and the
+ * DP agree on the result.
+ */
+static void test_huff_long_codes(void **state)
+{
+	struct tdp *t = *state;
+	struct rdc_surface s = dst_surface(RDC_FMT_I8);
+	uint32_t w = 256, h = 0, y, x, v, n;
+	uint8_t *img, *ref, *st;
+	size_t len;
+
+	for (v = 0, n = 0; v < 20; v++)
+		n += 1u << (20 - v);
+	h = (n + w - 1) / w;
+	img = calloc((size_t)w * h, 1);
+	ref = malloc((size_t)w * h);
+	assert_non_null(img);
+	assert_non_null(ref);
+	for (v = 0, x = 0; v < 20; v++)
+		for (y = 0; y < 1u << (20 - v); y++)
+			img[x++] = (uint8_t)v;
+	st = encode(RDC_IMG_HUFF, 0, img, w, h, 1, &len);
+	/* 20 symbols; unlimited, the two rarest codes would be 19 bits */
+	for (x = 0, n = 0; x < 16; x++)
+		n += st[16 + x];
+	assert_int_equal(n, 20);
+	assert_true(st[16 + 14] + st[16 + 15] > 0);
+	ref_huff(st, len, ref, NULL);
+	assert_memory_equal(ref, img, (size_t)w * h);
+	assert_true(len < TDP_VRAM_SIZE - STREAM_BASE);
+	prep_dst(t, &s);
+	decode_at(t, st, len, (uint32_t)len, 0, 0);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	check_exact(t, &s, img, w, RDC_MIN(h, DST_H), 1, 0, 0);
+	free(st);
+	free(ref);
+	free(img);
+}
+
+static void test_huff_corrupt(void **state)
+{
+	struct tdp *t = *state;
+	uint8_t b[64];
+	size_t len;
+
+	/* 4 x 1 grey: two symbols, codes 0 and 1 */
+	memset(b, 0, sizeof(b));
+	put32(b, RDC_IMG_MAGIC);
+	b[4] = RDC_IMG_HUFF;
+	b[5] = 1;
+	b[8] = 4;
+	b[10] = 1;
+	b[16] = 2;  /* two codes of length 1 */
+	b[32] = 10; /* symbols 10 and 20 */
+	b[33] = 20;
+	b[34] = 0x50; /* 0101: 10 20 10 20 */
+	len = 35;
+	put32(b + 12, (uint32_t)len - 16);
+	{
+		struct rdc_surface s = dst_surface(RDC_FMT_I8);
+
+		prep_dst(t, &s);
+		decode_at(t, b, len, (uint32_t)len, 0, 0);
+		assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+		assert_int_equal(t->vram[0], 10);
+		assert_int_equal(t->vram[1], 20);
+		assert_int_equal(t->vram[3], 20);
+		assert_int_equal(t->vram[4], SENTINEL);
+	}
+	/* three codes of length 1 do not fit */
+	b[16] = 3;
+	b[34] = 30;
+	b[35] = 0x50;
+	put32(b + 12, 20);
+	expect_bad(t, b, 36, RDC_ERR_DATA);
+	/* no symbols */
+	memset(b + 16, 0, 16);
+	b[32] = 0x50;
+	put32(b + 12, 17);
+	expect_bad(t, b, 33, RDC_ERR_DATA);
+	/* 257 symbols claimed (the counts say so; the stream is cut) */
+	b[16 + 7] = 255;
+	b[16 + 8] = 2;
+	put32(b + 12, 17);
+	expect_bad(t, b, 33, RDC_ERR_DATA);
+	/* one code "0" of length 1, a "1" in the bits: no such code */
+	memset(b + 16, 0, 16);
+	b[16] = 1;
+	b[32] = 7;
+	b[33] = 0x10;
+	put32(b + 12, 18);
+	expect_bad(t, b, 34, RDC_ERR_DATA);
+	/* ... with only "0" bits it decodes, and a byte more is bad */
+	b[33] = 0x00;
+	{
+		struct rdc_surface s = dst_surface(RDC_FMT_I8);
+
+		prep_dst(t, &s);
+		decode_at(t, b, 34, 34, 0, 0);
+		assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+		assert_int_equal(t->vram[3], 7);
+	}
+	b[34] = 0;
+	put32(b + 12, 19);
+	expect_bad(t, b, 35, RDC_ERR_DATA);
+	/* cut inside the table */
+	put32(b + 12, 10);
+	expect_bad(t, b, 26, RDC_ERR_DATA);
+}
+
+/*
+ * The documented cost: the header as one 16-byte read span, the payload
+ * (tables and bits) in 256-byte read spans twice: all of it for the
+ * check, then again while drawing, each span read when the decoding
+ * first needs one of its bytes, so that rows written in between move
+ * the open DRAM row.  rowend[y]: the payload bytes needed to finish row
+ * y (from the reference decoders); one write span per image row.
+ */
+static void check_cycles(struct tdp *t, uint32_t codec, uint32_t level,
+			 uint32_t w, uint32_t h, uint32_t ch)
+{
+	struct rdc_surface s =
+		dst_surface(ch == 1 ? RDC_FMT_I8 : RDC_FMT_XRGB8888);
+	uint64_t want = 4 * RDC_T_FIFO_WORD + RDC_T_DECODE;
+	uint32_t open, y, pay, off, n, bpp = ch == 1 ? 1 : 4;
+	uint8_t *img = malloc((size_t)w * h * ch), *st;
+	uint8_t *dec = malloc((size_t)w * h * ch);
+	uint32_t *rowend = calloc(h, sizeof(*rowend)), got;
+	size_t len;
+
+	assert_non_null(img);
+	assert_non_null(dec);
+	assert_non_null(rowend);
+	gen_image(img, w, h, ch, 1, 4);
+	st = encode(codec, level, img, w, h, ch, &len);
+	pay = (uint32_t)len - 16;
+	ref_rowends(st, len, dec, rowend);
+	memcpy(t->vram + STREAM_BASE, st, len);
+	prep_dst(t, &s);
+	tdp_drain(t);
+	open = t->hw.bus.open_row;
+	want += tdp_bus_span(&open, STREAM_BASE, 16, TDP_BUS_READ);
+	for (off = 0; off < pay; off += n) {
+		n = RDC_MIN(pay - off, 256u);
+		want += tdp_bus_span(&open, STREAM_BASE + 16 + off, n,
+				     TDP_BUS_READ);
+	}
+	for (y = 0, off = 0; y < h; y++) {
+		for (; off < rowend[y]; off += n) {
+			n = RDC_MIN(pay - off, 256u);
+			want += tdp_bus_span(&open, STREAM_BASE + 16 + off, n,
+					     TDP_BUS_READ);
+		}
+		want += tdp_bus_span(&open, (uint64_t)y * s.stride, w * bpp,
+				     TDP_BUS_WRITE);
+	}
+	assert_int_equal(off, pay);
+	TDP_CMD(t, RDC_OP_DECODE, STREAM_BASE, (uint32_t)len, RDC_XY(0, 0));
+	tdp_drain(t);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	check_exact(t, &s, dec, w, h, ch, 0, 0);
+	got = (uint32_t)rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES);
+	print_message("%ux%ux%u codec %u: %u payload bytes, %u cycles\n", w, h,
+		      ch, codec, pay, got);
+	assert_int_equal(got, want);
+	free(rowend);
+	free(dec);
+	free(st);
+	free(img);
+}
+
+static void test_huff_cycles(void **state)
+{
+	check_cycles(*state, RDC_IMG_HUFF, 0, 16, 12, 1);
+	check_cycles(*state, RDC_IMG_HUFF, 0, 100, 30, 3);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		TDP_TEST(test_huff_roundtrip),
+		TDP_TEST(test_huff_long_codes),
+		TDP_TEST(test_huff_corrupt),
+		TDP_TEST(test_huff_cycles),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
