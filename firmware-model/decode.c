@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /*
- * DECODE: an RLE, DPCM, BTC or HUFF image stream in VRAM (rdc_image.h)
- * decoded into DST.
+ * DECODE: an RLE, DPCM, BTC, HUFF or DPCMQ image stream in VRAM
+ * (rdc_image.h) decoded into DST.
  *
  * The stream is distrusted: every byte comes through a reader bounded by
  * the header's payload size, itself bounded by the command's size
@@ -166,10 +166,17 @@ static uint32_t med(uint32_t a, uint32_t b, uint32_t c)
 	return a + b - c;
 }
 
+/*
+ * DPCM (step 0: lossless, residuals mod 256) and DPCMQ (step 1..255:
+ * quantised residuals, the sum clamped) share the predictor and codes.
+ */
 static uint32_t dec_dpcm(struct rdc_dp *dp, const struct dec *d,
-			 struct img_in *r)
+			 struct img_in *r, uint32_t step)
 {
 	uint32_t x, y, k, q, m, bit, p, i, n = d->w * d->ch, ch = d->ch;
+	uint32_t ebits = step ? RDC_IMG_DPCMQ_MBITS : 8;
+	uint32_t mmax = step ? RDC_IMG_DPCMQ_MMAX : 255;
+	int32_t v;
 	uint8_t *cur, *prev;
 
 	for (y = 0; y < d->h; y++) {
@@ -192,17 +199,23 @@ static uint32_t dec_dpcm(struct rdc_dp *dp, const struct dec *d,
 					break;
 			}
 			if (q == RDC_IMG_DPCM_ESCAPE) {
-				if (!in_bits(dp, r, 8, &m))
+				if (!in_bits(dp, r, ebits, &m))
 					return RDC_ERR_DATA;
 			} else {
 				if (!in_bits(dp, r, k, &m))
 					return RDC_ERR_DATA;
 				m |= q << k;
-				if (m > 255) /* no encoder writes it */
+				if (m > mmax) /* no encoder writes it */
 					return RDC_ERR_DATA;
 			}
 			/* zigzag back: 0, -1, 1, -2, ... */
-			cur[i] = (uint8_t)(m & 1 ? p - (m + 1) / 2 : p + m / 2);
+			v = m & 1 ? -(int32_t)((m + 1) / 2) : (int32_t)(m / 2);
+			if (!step) {
+				cur[i] = (uint8_t)(p + (uint32_t)v);
+				continue;
+			}
+			v = (int32_t)p + v * (int32_t)step;
+			cur[i] = (uint8_t)RDC_MIN(RDC_MAX(v, 0), 255);
 		}
 		emit_row(dp, d, y, cur);
 	}
@@ -317,13 +330,18 @@ static uint32_t dec_huff(struct rdc_dp *dp, const struct dec *d,
 static uint32_t dec_run(struct rdc_dp *dp, const struct dec *d, uint32_t base)
 {
 	struct img_in r;
+	uint32_t step;
 
 	in_start(&r, base, d->payload);
 	switch (d->codec) {
 	case RDC_IMG_RLE:
 		return dec_rle(dp, d, &r);
 	case RDC_IMG_DPCM:
-		return dec_dpcm(dp, d, &r);
+		return dec_dpcm(dp, d, &r, 0);
+	case RDC_IMG_DPCMQ:
+		if (!in_byte(dp, &r, &step) || !step)
+			return RDC_ERR_DATA;
+		return dec_dpcm(dp, d, &r, step);
 	case RDC_IMG_HUFF:
 		return dec_huff(dp, d, &r);
 	default:

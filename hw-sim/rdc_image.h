@@ -53,6 +53,16 @@
  * whose codes would not fit their lengths is bad.  The bit stream holds a
  * code per sample in raster order, the last byte zero-padded; a bit
  * pattern that is no code, or bytes after the last sample, are bad.
+ *
+ * DPCMQ (lossy predictive coding: DPCM with a uniform quantiser): one
+ * byte, the step s (1..255), then a bit stream as DPCM's: per row k, per
+ * sample a code of m, the zigzag of a quantised residual q, in DPCM's
+ * Rice code but with RDC_IMG_DPCMQ_MBITS bits after an escape (m <=
+ * 511).  The prediction P is DPCM's median predictor on the decoded
+ * samples, and a sample decodes to v = min(max(P + q * s, 0), 255).
+ * librdc's encoder picks q = the residual v - P divided by s, rounded to
+ * nearest (halves away from 0): every sample within s / 2 of the
+ * original; s = 1 is lossless.
  */
 #ifndef RDC_IMAGE_H
 #define RDC_IMAGE_H
@@ -70,12 +80,15 @@
 #define RDC_IMG_RLE_RUN_MAX	129u
 #define RDC_IMG_HUFF_LENS	16u /* longest code; the table's counts */
 #define RDC_IMG_HUFF_SYMS	256u
+#define RDC_IMG_DPCMQ_MBITS	9u /* an escaped m of DPCMQ */
+#define RDC_IMG_DPCMQ_MMAX	511u
 
 enum rdc_img_codec {
 	RDC_IMG_RLE = 1,
 	RDC_IMG_DPCM = 2,
 	RDC_IMG_BTC = 3,
 	RDC_IMG_HUFF = 4,
+	RDC_IMG_DPCMQ = 5,
 	RDC_IMG_CODEC_END
 };
 
