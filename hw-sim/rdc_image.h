@@ -61,7 +61,7 @@
  * 511).  The prediction P is DPCM's median predictor on the decoded
  * samples, and a sample decodes to v = min(max(P + q * s, 0), 255).
  * librdc's encoder picks q = the residual v - P divided by s, rounded to
- * nearest (halves away from 0): every sample within s / 2 of the
+ * nearest (halves toward 0): every sample within s / 2 of the
  * original; s = 1 is lossless.
  */
 #ifndef RDC_IMAGE_H

@@ -704,7 +704,8 @@ int rdc_record_stop(rdc_dev *dev);
 /* ---- Compressed images (the DECODE command) ------------------------------ */
 /*
  * Streams in the formats of rdc_image.h (RDC_IMG_RLE, RDC_IMG_DPCM,
- * RDC_IMG_BTC, RDC_IMG_HUFF), for the DP to decode from VRAM.  Samples are 8 bits, a
+ * RDC_IMG_BTC, RDC_IMG_HUFF, RDC_IMG_DPCMQ), for the DP to decode from
+ * VRAM.  Samples are 8 bits, a
  * pixel is `channels` of them: 1 (grey or a CLUT index) or 3 (R, G, B);
  * w 1..RDC_IMG_MAX_WIDTH, h 1..RDC_IMG_MAX_HEIGHT.
  */
@@ -718,11 +719,23 @@ size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
  * says how much was needed); RDC_E_NOMEM.  RLE, DPCM and HUFF are
  * lossless; BTC keeps each 4x4 block's mean within 1/2 and every sample
  * within its block's range (max - min).  HUFF's code is built for the
- * picture (code lengths at most 16 bits).
+ * picture (code lengths at most 16 bits).  DPCMQ quantises with the step
+ * RDC_IMAGE_STEP_DEFAULT (rdc_image_encode_lossy chooses another).
  */
 int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,
 		     size_t *len);
+
+#define RDC_IMAGE_STEP_DEFAULT 4u /* DPCMQ: samples within 2 */
+/*
+ * rdc_image_encode for a lossy codec with its level: for RDC_IMG_DPCMQ
+ * the quantiser's step (1..255; every sample within step / 2 of the
+ * original, 1 is lossless).  RDC_E_INVAL for another codec or a level
+ * out of range.
+ */
+int rdc_image_encode_lossy(uint32_t codec, uint32_t level, const uint8_t *px,
+			   uint32_t w, uint32_t h, uint32_t channels,
+			   size_t pitch, uint8_t *out, size_t cap, size_t *len);
 /*
  * XRGB8888 pixels (rows `pitch` words apart) to w * h * channels samples:
  * channels 3 gives R, G, B; 1 the luma (77 R + 150 G + 29 B + 128) >> 8.

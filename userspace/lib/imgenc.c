@@ -3,8 +3,9 @@
 /*
  * Host-side image encoders for the DP's DECODE command: RLE (PackBits on
  * pixels), DPCM (median predictor, Rice codes with a parameter chosen
- * per row), BTC (absolute-moment block truncation coding, 4x4) and HUFF
- * (a canonical Huffman code of the samples, built for each picture).  The
+ * per row), BTC (absolute-moment block truncation coding, 4x4), HUFF
+ * (a canonical Huffman code of the samples, built for each picture) and
+ * DPCMQ (DPCM's predictor and codes on quantised residuals).  The
  * stream formats are rdc_image.h's; this file never calls the firmware.
  */
 #include <errno.h>
@@ -58,6 +59,13 @@ size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
 	case RDC_IMG_BTC:
 		p = (uint64_t)((w + 3) / 4) * ((h + 3) / 4) * channels *
 		    RDC_IMG_BTC_BYTES;
+		break;
+	case RDC_IMG_DPCMQ: /* the step, every sample escaped */
+		p = 1 + ((uint64_t)h * (RDC_IMG_DPCM_KBITS +
+					(uint64_t)w * channels *
+						(RDC_IMG_DPCM_ESCAPE +
+						 RDC_IMG_DPCMQ_MBITS)) +
+			 7) / 8;
 		break;
 	case RDC_IMG_HUFF: /* the table, every code 16 bits */
 		p = HUFF_TABLE_MAX + n * channels * RDC_IMG_HUFF_LENS / 8;
@@ -168,18 +176,51 @@ static uint32_t dpcm_pred(const struct img_src *s, uint32_t x, uint32_t y,
 	return a + b - d;
 }
 
-static uint32_t rice_bits(uint32_t m, uint32_t k)
+/* A Rice code's bits; `ebits` after an escape (8: DPCM, 9: DPCMQ). */
+static uint32_t rice_bits(uint32_t m, uint32_t k, uint32_t ebits)
 {
 	uint32_t q = m >> k;
 
-	return q < RDC_IMG_DPCM_ESCAPE ? q + 1 + k : RDC_IMG_DPCM_ESCAPE + 8;
+	return q < RDC_IMG_DPCM_ESCAPE ? q + 1 + k :
+					 RDC_IMG_DPCM_ESCAPE + ebits;
+}
+
+/* The row's residuals res[0..n) with the k that codes them shortest. */
+static void rice_row(struct bitw *b, const uint16_t *res, uint32_t n,
+		     uint32_t ebits)
+{
+	uint32_t k, i, bk = 0;
+	uint64_t cost, best = UINT64_MAX;
+
+	for (k = 0; k <= RDC_IMG_DPCM_KMAX; k++) {
+		cost = 0;
+		for (i = 0; i < n; i++)
+			cost += rice_bits(res[i], k, ebits);
+		if (cost < best) {
+			best = cost;
+			bk = k;
+		}
+	}
+	bits_put(b, bk, RDC_IMG_DPCM_KBITS);
+	for (i = 0; i < n; i++) {
+		uint32_t q = res[i] >> bk;
+
+		if (q < RDC_IMG_DPCM_ESCAPE) {
+			bits_put(b, (1u << q) - 1, q);
+			bits_put(b, 0, 1);
+			bits_put(b, res[i], bk);
+		} else {
+			bits_put(b, (1u << RDC_IMG_DPCM_ESCAPE) - 1,
+				 RDC_IMG_DPCM_ESCAPE);
+			bits_put(b, res[i], ebits);
+		}
+	}
 }
 
 static size_t enc_dpcm(const struct img_src *s, uint8_t *o, uint16_t *res)
 {
 	struct bitw b = { .o = o };
-	uint32_t n = s->w * s->ch, x, y, i, k, best, bk;
-	uint64_t cost;
+	uint32_t n = s->w * s->ch, x, y, i;
 
 	for (y = 0; y < s->h; y++) {
 		for (i = 0; i < n; i++) {
@@ -190,35 +231,44 @@ static size_t enc_dpcm(const struct img_src *s, uint8_t *o, uint16_t *res)
 
 			res[i] = (uint16_t)(se >= 0 ? 2 * se : -2 * se - 1);
 		}
-		best = UINT32_MAX;
-		bk = 0;
-		for (k = 0; k <= RDC_IMG_DPCM_KMAX; k++) {
-			cost = 0;
-			for (i = 0; i < n; i++)
-				cost += rice_bits(res[i], k);
-			if (cost < best) {
-				best = (uint32_t)cost;
-				bk = k;
-			}
-		}
-		bits_put(&b, bk, RDC_IMG_DPCM_KBITS);
-		for (i = 0; i < n; i++) {
-			uint32_t q = res[i] >> bk;
-
-			if (q < RDC_IMG_DPCM_ESCAPE) {
-				bits_put(&b, (1u << q) - 1, q);
-				bits_put(&b, 0, 1);
-				bits_put(&b, res[i], bk);
-			} else {
-				bits_put(&b, (1u << RDC_IMG_DPCM_ESCAPE) - 1,
-					 RDC_IMG_DPCM_ESCAPE);
-				bits_put(&b, res[i], 8);
-			}
-		}
+		rice_row(&b, res, n, 8);
 	}
 	if (b.n)
 		bits_put(&b, 0, 8 - b.n);
 	return b.k;
+}
+
+/*
+ * DPCMQ: the prediction from the decoded picture (rec, which the decoder
+ * will have), the residual quantised to nearest with halves toward 0.
+ */
+static size_t enc_dpcmq(const struct img_src *s, uint8_t *o, uint16_t *res,
+			uint8_t *rec, uint32_t step)
+{
+	struct img_src r = { rec, s->w, s->h, s->ch, (size_t)s->w * s->ch };
+	struct bitw b = { .o = o + 1 };
+	uint32_t n = s->w * s->ch, x, y, i, p;
+	int e, q, v;
+
+	o[0] = (uint8_t)step;
+	for (y = 0; y < s->h; y++) {
+		for (i = 0; i < n; i++) {
+			x = i / s->ch;
+			p = dpcm_pred(&r, x, y, i % s->ch);
+			e = (int)s->px[(size_t)y * s->pitch + i] - (int)p;
+			q = (abs(e) + ((int)step - 1) / 2) / (int)step;
+			q = e < 0 ? -q : q;
+			v = (int)p + q * (int)step;
+			rec[(size_t)y * n + i] = (uint8_t)(v < 0   ? 0 :
+							   v > 255 ? 255 :
+								     v);
+			res[i] = (uint16_t)(q >= 0 ? 2 * q : -2 * q - 1);
+		}
+		rice_row(&b, res, n, RDC_IMG_DPCMQ_MBITS);
+	}
+	if (b.n)
+		bits_put(&b, 0, 8 - b.n);
+	return 1 + b.k;
 }
 
 /*
@@ -391,13 +441,13 @@ static size_t enc_huff(const struct img_src *s, uint8_t *o)
 	return b.k;
 }
 
-int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
-		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,
-		     size_t *len)
+static int img_encode(uint32_t codec, uint32_t level, const uint8_t *px,
+		      uint32_t w, uint32_t h, uint32_t channels, size_t pitch,
+		      uint8_t *out, size_t cap, size_t *len)
 {
 	struct img_src s = { px, w, h, channels, pitch };
 	size_t bound = rdc_image_bound(codec, w, h, channels), payload;
-	uint8_t *tmp;
+	uint8_t *tmp, *rec = NULL;
 	uint16_t *res = NULL;
 
 	if (!bound || !px || !len || (!out && cap) ||
@@ -405,28 +455,38 @@ int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 		return RDC_E_INVAL;
 	/* encode into a buffer of the bound, then copy what fits */
 	tmp = malloc(bound);
-	if (!tmp)
+	if (codec == RDC_IMG_DPCM || codec == RDC_IMG_DPCMQ)
+		res = malloc((size_t)w * channels * sizeof(*res));
+	if (codec == RDC_IMG_DPCMQ)
+		rec = malloc((size_t)w * h * channels);
+	if (!tmp ||
+	    ((codec == RDC_IMG_DPCM || codec == RDC_IMG_DPCMQ) && !res) ||
+	    (codec == RDC_IMG_DPCMQ && !rec)) {
+		free(tmp);
+		free(res);
+		free(rec);
 		return RDC_E_NOMEM;
+	}
 	switch (codec) {
 	case RDC_IMG_RLE:
 		payload = enc_rle(&s, tmp + RDC_IMG_HDR_BYTES);
 		break;
 	case RDC_IMG_DPCM:
-		res = malloc((size_t)w * channels * sizeof(*res));
-		if (!res) {
-			free(tmp);
-			return RDC_E_NOMEM;
-		}
 		payload = enc_dpcm(&s, tmp + RDC_IMG_HDR_BYTES, res);
-		free(res);
 		break;
 	case RDC_IMG_HUFF:
 		payload = enc_huff(&s, tmp + RDC_IMG_HDR_BYTES);
+		break;
+	case RDC_IMG_DPCMQ:
+		payload =
+			enc_dpcmq(&s, tmp + RDC_IMG_HDR_BYTES, res, rec, level);
 		break;
 	default:
 		payload = enc_btc(&s, tmp + RDC_IMG_HDR_BYTES);
 		break;
 	}
+	free(res);
+	free(rec);
 	memset(tmp, 0, RDC_IMG_HDR_BYTES);
 	img_put32(tmp + RDC_IMG_OFF_MAGIC, RDC_IMG_MAGIC);
 	tmp[RDC_IMG_OFF_CODEC] = (uint8_t)codec;
@@ -442,6 +502,26 @@ int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 	memcpy(out, tmp, *len);
 	free(tmp);
 	return 0;
+}
+
+int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
+		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,
+		     size_t *len)
+{
+	uint32_t level = codec == RDC_IMG_DPCMQ ? RDC_IMAGE_STEP_DEFAULT : 0;
+
+	return img_encode(codec, level, px, w, h, channels, pitch, out, cap,
+			  len);
+}
+
+int rdc_image_encode_lossy(uint32_t codec, uint32_t level, const uint8_t *px,
+			   uint32_t w, uint32_t h, uint32_t channels,
+			   size_t pitch, uint8_t *out, size_t cap, size_t *len)
+{
+	if (codec != RDC_IMG_DPCMQ || level < 1 || level > 255)
+		return RDC_E_INVAL;
+	return img_encode(codec, level, px, w, h, channels, pitch, out, cap,
+			  len);
 }
 
 int rdc_image_samples(const uint32_t *xrgb, uint32_t w, uint32_t h,
