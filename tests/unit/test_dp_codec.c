@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-only
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /*
- * DECODE of the entropy and lossy codecs: HUFF, DPCMQ and DCT streams
+ * DECODE of the entropy and lossy codecs: HUFF and DPCMQ streams
  * written by librdc's encoders and decoded by the DP, each against a
  * decoder of this file written from rdc_image.h's description alone and
  * in another way than the DP's: HUFF by a walk down an explicit code tree
- * one bit at a time, DPCMQ by a sample-at-a-time loop over whole images,
- * DCT with a floating-point IDCT.  Corrupt streams give RDC_ERR_DATA with
+ * one bit at a time, DPCMQ over the whole image with the predictor as a
+ * median of three.  Corrupt streams give RDC_ERR_DATA with
  * nothing drawn; the cost is the documented one, to the cycle.
  */
 #include <math.h>
@@ -93,10 +93,16 @@ static uint8_t *encode(uint32_t codec, uint32_t level, const uint8_t *px,
 	uint8_t *out = malloc(cap);
 
 	assert_non_null(out);
-	(void)level;
-	assert_int_equal(rdc_image_encode(codec, px, w, h, ch, (size_t)w * ch,
-					  out, cap, len),
-			 0);
+	if (level)
+		assert_int_equal(rdc_image_encode_lossy(codec, level, px, w, h,
+							ch, (size_t)w * ch, out,
+							cap, len),
+				 0);
+	else
+		assert_int_equal(rdc_image_encode(codec, px, w, h, ch,
+						  (size_t)w * ch, out, cap,
+						  len),
+				 0);
 	assert_true(*len <= cap);
 	return out;
 }
@@ -169,6 +175,20 @@ static int rbit(struct rbits *b)
 	v = b->p[b->bit / 8] >> (7 - b->bit % 8) & 1;
 	b->bit++;
 	return v;
+}
+
+static int rbits_get(struct rbits *b, uint32_t n, uint32_t *v)
+{
+	int bit;
+
+	*v = 0;
+	while (n--) {
+		bit = rbit(b);
+		if (bit < 0)
+			return -1;
+		*v = *v << 1 | (uint32_t)bit;
+	}
+	return 0;
 }
 
 /*
@@ -260,6 +280,70 @@ static void ref_huff(const uint8_t *st, size_t len, uint8_t *out,
 		assert_int_equal(v, 0);
 }
 
+/* The median of three: LOCO-I's predictor is median(a, b, a + b - c). */
+static int median3(int a, int b, int c)
+{
+	if (a > b) {
+		int t = a;
+
+		a = b;
+		b = t;
+	}
+	return c < a ? a : c > b ? b : c;
+}
+
+/*
+ * DPCMQ decoded over the whole image at once: each sample's neighbours
+ * looked up in out[] by (x, y), the prediction as a median of three.
+ */
+static void ref_dpcmq(const uint8_t *st, size_t len, uint8_t *out,
+		      uint32_t *rowend)
+{
+	uint32_t w = st[8] | st[9] << 8, h = st[10] | st[11] << 8, ch = st[5];
+	uint32_t step = st[16], x, y, c, k, m, ones;
+	struct rbits b = { st + 17, len - 17, 0 };
+	int a, up, ul, p, e, v;
+
+	assert_int_equal(st[4], RDC_IMG_DPCMQ);
+	assert_true(step >= 1);
+#define S(x, y, c) out[((size_t)(y)*w + (x)) * ch + (c)]
+	for (y = 0; y < h; y++) {
+		assert_int_equal(rbits_get(&b, 3, &k), 0);
+		for (x = 0; x < w; x++) {
+			for (c = 0; c < ch; c++) {
+				for (ones = 0; ones < 16 && rbit(&b) == 1;)
+					ones++;
+				if (ones == 16) {
+					assert_int_equal(rbits_get(&b, 9, &m),
+							 0);
+				} else {
+					assert_int_equal(rbits_get(&b, k, &m),
+							 0);
+					m += ones << k;
+				}
+				e = m % 2 ? -(int)(m + 1) / 2 : (int)m / 2;
+				a = x ? S(x - 1, y, c) : 0;
+				up = y ? S(x, y - 1, c) : 0;
+				ul = x && y ? S(x - 1, y - 1, c) : 0;
+				if (!y)
+					p = x ? a : 128;
+				else if (!x)
+					p = up;
+				else
+					p = median3(a, up, a + up - ul);
+				v = p + e * (int)step;
+				S(x, y, c) = (uint8_t)(v < 0   ? 0 :
+						       v > 255 ? 255 :
+								 v);
+			}
+		}
+		if (rowend)
+			rowend[y] = (uint32_t)(1 + (b.bit + 7) / 8);
+	}
+#undef S
+	assert_true(b.n * 8 - b.bit < 8);
+}
+
 /* Any codec of this file by its reference: samples and row ends. */
 static void ref_rowends(const uint8_t *st, size_t len, uint8_t *out,
 			uint32_t *rowend)
@@ -267,6 +351,9 @@ static void ref_rowends(const uint8_t *st, size_t len, uint8_t *out,
 	switch (st[4]) {
 	case RDC_IMG_HUFF:
 		ref_huff(st, len, out, rowend);
+		break;
+	case RDC_IMG_DPCMQ:
+		ref_dpcmq(st, len, out, rowend);
 		break;
 	default:
 		fail_msg("codec %u", st[4]);
@@ -500,13 +587,147 @@ static void test_huff_cycles(void **state)
 	check_cycles(*state, RDC_IMG_HUFF, 0, 100, 30, 3);
 }
 
+/*
+ * DPCMQ: the DP gives what the reference decodes, every sample within
+ * step / 2 of the original (step 1: the original); a larger step gives
+ * a shorter stream on a picture with noise.
+ */
+static void test_dpcmq(void **state)
+{
+	struct tdp *t = *state;
+	static const uint32_t steps[] = { 1, 2, 3, 4, 9, 32, 255 };
+	uint32_t si, ti, ch, w, h;
+	size_t i, n;
+	int kind;
+
+	for (si = 0; si < RDC_ARRAY_SIZE(sizes); si++) {
+		for (ti = 0; ti < RDC_ARRAY_SIZE(steps); ti++) {
+			for (ch = 1; ch <= 3; ch += 2) {
+				for (kind = 0; kind < 5; kind++) {
+					struct rdc_surface s = dst_surface(
+						ch == 1 ? RDC_FMT_I8 :
+							  RDC_FMT_XRGB8888);
+					uint8_t *img, *ref, *st;
+					size_t len;
+
+					w = sizes[si][0];
+					h = sizes[si][1];
+					n = (size_t)w * h * ch;
+					img = malloc(n);
+					ref = malloc(n);
+					assert_non_null(img);
+					assert_non_null(ref);
+					gen_image(img, w, h, ch, kind, si + ti);
+					st = encode(RDC_IMG_DPCMQ, steps[ti],
+						    img, w, h, ch, &len);
+					ref_dpcmq(st, len, ref, NULL);
+					for (i = 0; i < n; i++)
+						assert_true(
+							2 * (uint32_t)abs(
+								    img[i] -
+								    ref[i]) <=
+							steps[ti]);
+					prep_dst(t, &s);
+					decode_at(t, st, len, (uint32_t)len, 5,
+						  3);
+					assert_int_equal(tdp_err(t),
+							 RDC_ERR_NONE);
+					check_exact(t, &s, ref,
+						    RDC_MIN(w, DST_W - 5), h,
+						    ch, 5, 3);
+					free(st);
+					free(ref);
+					free(img);
+				}
+			}
+		}
+	}
+}
+
+static void test_dpcmq_ratio(void **state)
+{
+	uint8_t img[64 * 64], *st;
+	size_t len, last = SIZE_MAX;
+	uint32_t step;
+
+	(void)state;
+	gen_image(img, 64, 64, 1, 2, 11);
+	for (step = 1; step <= 64; step *= 2) {
+		st = encode(RDC_IMG_DPCMQ, step, img, 64, 64, 1, &len);
+		assert_true(len < last);
+		last = len;
+		free(st);
+	}
+	/* the lossy levels are DPCMQ's alone */
+	assert_int_equal(rdc_image_encode_lossy(RDC_IMG_DPCMQ, 0, img, 64, 64,
+						1, 64, img, 0, &len),
+			 RDC_E_INVAL);
+	assert_int_equal(rdc_image_encode_lossy(RDC_IMG_DPCMQ, 256, img, 64, 64,
+						1, 64, img, 0, &len),
+			 RDC_E_INVAL);
+	assert_int_equal(rdc_image_encode_lossy(RDC_IMG_DPCM, 4, img, 64, 64, 1,
+						64, img, 0, &len),
+			 RDC_E_INVAL);
+}
+
+static void test_dpcmq_corrupt(void **state)
+{
+	struct tdp *t = *state;
+	uint8_t img[8 * 4], *st, b[256];
+	size_t len;
+
+	gen_image(img, 8, 4, 1, 1, 3);
+	st = encode(RDC_IMG_DPCMQ, 5, img, 8, 4, 1, &len);
+	assert_true(len + 1 <= sizeof(b));
+	/* step 0 */
+	memcpy(b, st, len);
+	b[16] = 0;
+	expect_bad(t, b, len, RDC_ERR_DATA);
+	/* cut short, a byte too many */
+	memcpy(b, st, len);
+	put32(b + 12, (uint32_t)len - 17);
+	expect_bad(t, b, len - 1, RDC_ERR_DATA);
+	memcpy(b, st, len);
+	b[len] = 0;
+	put32(b + 12, (uint32_t)len - 15);
+	expect_bad(t, b, len + 1, RDC_ERR_DATA);
+	/* 1 x 1: k = 7, 15 ones, a zero and 7 ones: m = 15 * 128 + 127 */
+	memset(b, 0, 32);
+	put32(b, RDC_IMG_MAGIC);
+	b[4] = RDC_IMG_DPCMQ;
+	b[5] = 1;
+	b[8] = 1;
+	b[10] = 1;
+	b[16] = 3;
+	b[17] = 0xff; /* 111 11111 */
+	b[18] = 0xff; /* 8 more ones: 13 */
+	b[19] = 0xcf; /* 11 0 01111: 15 ones, a zero, 4 of k's bits */
+	b[20] = 0xe0; /* 111 */
+	put32(b + 12, 5);
+	expect_bad(t, b, 21, RDC_ERR_DATA);
+	/* m = 511 after an escape is fine: q = -256, clamped to 0 */
+	b[17] = 0x1f; /* k = 0, then 5 ones */
+	b[18] = 0xff; /* 8 ones: 13 */
+	b[19] = 0xff; /* 3 ones (16), then 5 of m's 9 bits */
+	b[20] = 0xf0; /* 4 more of m, then padding */
+	decode_at(t, b, 21, 21, 0, 0);
+	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+	free(st);
+}
+
+static void test_dpcmq_cycles(void **state)
+{
+	check_cycles(*state, RDC_IMG_DPCMQ, 4, 16, 12, 1);
+	check_cycles(*state, RDC_IMG_DPCMQ, 2, 100, 30, 3);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_huff_roundtrip),
-		TDP_TEST(test_huff_long_codes),
-		TDP_TEST(test_huff_corrupt),
-		TDP_TEST(test_huff_cycles),
+		TDP_TEST(test_huff_roundtrip), TDP_TEST(test_huff_long_codes),
+		TDP_TEST(test_huff_corrupt),   TDP_TEST(test_huff_cycles),
+		TDP_TEST(test_dpcmq),	       TDP_TEST(test_dpcmq_ratio),
+		TDP_TEST(test_dpcmq_corrupt),  TDP_TEST(test_dpcmq_cycles),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -47,8 +47,8 @@ static void test_encode_args(void **state)
 	assert_int_equal(rdc_image_bound(RDC_IMG_RLE, 0, 5, 3), 0);
 	assert_int_equal(rdc_image_bound(RDC_IMG_RLE, 4097, 5, 3), 0);
 	assert_int_equal(rdc_image_bound(RDC_IMG_RLE, 12, 5, 2), 0);
-	assert_int_equal(rdc_image_encode(4, px, 12, 5, 3, 36, out, sizeof(out),
-					  &len),
+	assert_int_equal(rdc_image_encode(RDC_IMG_CODEC_END, px, 12, 5, 3, 36,
+					  out, sizeof(out), &len),
 			 RDC_E_INVAL);
 	assert_int_equal(rdc_image_encode(RDC_IMG_RLE, px, 12, 5, 3, 35, out,
 					  sizeof(out), &len),
@@ -61,7 +61,8 @@ static void test_encode_args(void **state)
 	assert_int_equal(rdc_image_encode(RDC_IMG_DPCM, px, 12, 5, 3, 36, out,
 					  len, &len),
 			 0);
-	for (uint32_t c = RDC_IMG_RLE; c <= RDC_IMG_BTC; c++) {
+	for (uint32_t c = RDC_IMG_RLE; c < RDC_IMG_CODEC_END; c++) {
+		assert_true(rdc_image_bound(c, 12, 5, 3) <= sizeof(out));
 		assert_int_equal(rdc_image_encode(c, px, 12, 5, 3, 36, out,
 						  sizeof(out), &len),
 				 0);
