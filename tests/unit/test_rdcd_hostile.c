@@ -23,7 +23,8 @@
 #include "test_net_common.h"
 
 /* The daemon's limits, as documented (rdcd.h). */
-#define DOC_MAX_PENDING 8
+#define DOC_MAX_PENDING	     8
+#define DOC_MAX_PER_LISTENER 96
 
 static int hello_fd(const struct netd *d, uint32_t flags)
 {
@@ -596,6 +597,112 @@ static void test_output_bounded(void **state)
 	assert_int_equal(netd_stop(&d), 0);
 }
 
+/* Stop the daemon and read its closing tally of subscribers' frames. */
+static void stop_tally(struct netd *d, unsigned long long *frames,
+		       unsigned long long *enc, unsigned long long *queued,
+		       unsigned long long *dropped)
+{
+	char line[512];
+	int st, found = 0;
+	FILE *f;
+
+	kill(d->pid, SIGTERM);
+	assert_int_equal(waitpid(d->pid, &st, 0), d->pid);
+	d->pid = 0;
+	f = fopen(d->log, "r");
+	assert_non_null(f);
+	while (fgets(line, sizeof(line), f))
+		if (strstr(line, "info: ") &&
+		    sscanf(strstr(line, "info: ") + 6,
+			   "%llu frames; for subscribers %llu "
+			   "encodings, %llu queued, %llu dropped",
+			   frames, enc, queued, dropped) == 4)
+			found = 1;
+	fclose(f);
+	if (!found)
+		netd_dump_log(d);
+	assert_true(found);
+	netd_stop(d);
+}
+
+/*
+ * 6. Subscribers that never read (a 4 KiB receive buffer) cost nothing
+ * once their queues are full, and the others share one encoding of each
+ * frame per encoding: at most one RAW and one RLE encoding a frame,
+ * however many subscribers (before: one each, every frame, and only then
+ * dropped).  The observer's worst round trip is printed, not judged:
+ * RDCD_STALLED="90 1920x1080" measures the case of docs/protocol.md.
+ */
+#define STALLED_SUBS 48
+
+static void test_stalled_subscribers(void **state)
+{
+	const char *args[] = { "--fast", "--mode", "640x480", NULL };
+	static char mode[32];
+	static int fds[DOC_MAX_PER_LISTENER];
+	unsigned long long frames, enc, queued, dropped;
+	const char *env = getenv("RDCD_STALLED");
+	int nsubs = STALLED_SUBS;
+	uint64_t worst = 0;
+	uint8_t p[12];
+	struct netd d;
+	int obs;
+
+	(void)state;
+	if (env && sscanf(env, "%d %31s", &nsubs, mode) == 2 && nsubs > 0 &&
+	    nsubs < DOC_MAX_PER_LISTENER)
+		args[2] = mode;
+	else
+		nsubs = STALLED_SUBS;
+	assert_int_equal(netd_start(&d, args), 0);
+	for (int i = 0; i < nsubs; i++) {
+		int rcv = 4096;
+
+		fds[i] = netd_connect(d.sock);
+		assert_true(fds[i] >= 0);
+		assert_int_equal(setsockopt(fds[i], SOL_SOCKET, SO_RCVBUF, &rcv,
+					    sizeof(rcv)),
+				 0);
+		assert_int_equal(netd_hello(fds[i], 0, NULL, NULL), RDC_ST_OK);
+		rdc_proto_put32(p, RDC_SUB_FRAMES);
+		rdc_proto_put32(p + 4, 1);
+		rdc_proto_put32(p + 8, i % 2 ? RDC_ENC_RLE : RDC_ENC_RAW);
+		assert_int_equal(netd_call(fds[i], RDC_MSG_SUBSCRIBE, 1, p, 12,
+					   NULL, 0),
+				 RDC_ST_OK);
+	}
+	obs = hello_fd(&d, 0);
+	assert_true(obs >= 0);
+	for (uint32_t k = 0; k < 200; k++) {
+		struct timespec a, b;
+		uint64_t ns;
+
+		clock_gettime(CLOCK_MONOTONIC, &a);
+		assert_int_equal(netd_call(obs, RDC_MSG_PING, k, NULL, 0, NULL,
+					   0),
+				 RDC_ST_OK);
+		clock_gettime(CLOCK_MONOTONIC, &b);
+		ns = (uint64_t)(b.tv_sec - a.tv_sec) * 1000000000ull +
+		     (uint64_t)b.tv_nsec - (uint64_t)a.tv_nsec;
+		if (ns > worst)
+			worst = ns;
+		netd_sleep_ms(2);
+	}
+	stop_tally(&d, &frames, &enc, &queued, &dropped);
+	fprintf(stderr,
+		"# %d stalled subscribers at %s: observer's worst round trip "
+		"%.1f ms; %llu frames, %llu encodings, %llu queued, %llu "
+		"dropped\n",
+		nsubs, args[2], (double)worst / 1e6, frames, enc, queued,
+		dropped);
+	assert_true(frames > 0);
+	assert_true(dropped > 0);
+	assert_true(enc <= 2 * frames);
+	for (int i = 0; i < nsubs; i++)
+		close(fds[i]);
+	close(obs);
+}
+
 /*
  * 8. --token takes a regular file only: a FIFO is refused at once (it
  * blocked start-up forever), a directory by what it is (it was "empty").
@@ -764,6 +871,7 @@ int main(void)
 		cmocka_unit_test(test_token_limits),
 		cmocka_unit_test(test_ipv6_text),
 		cmocka_unit_test(test_token_not_regular),
+		cmocka_unit_test(test_stalled_subscribers),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

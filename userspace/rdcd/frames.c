@@ -3,7 +3,8 @@
 /*
  * rdcd: frames and interrupts fanned out.  Every frame the chip completes
  * goes to each subscriber (raw, RLE or DELTA, at its own rate, dropped
- * for a slow reader alone) and to the frame sinks; FRAME_GRAB takes the
+ * for a slow reader alone; one RAW and one RLE encoding shared by all)
+ * and to the frame sinks; FRAME_GRAB takes the
  * last one; rising IRQ_STATUS bits become events.
  */
 #include <stdlib.h>
@@ -39,6 +40,7 @@ static struct rdcd_obuf *rdcd_frame_msg(const uint32_t *pix,
 	f->encoding = enc;
 	rdc_proto_frame_hdr_encode(b->data + RDC_PROTO_HDR_SIZE, f);
 	b->len = RDC_PROTO_HDR_SIZE + RDC_PROTO_FRAME_HDR + n;
+	b->hlen = b->len;
 	if (n < raw) {
 		struct rdcd_obuf *s = realloc(b, sizeof(*b) + b->len);
 
@@ -57,14 +59,81 @@ void rdcd_prev_free(struct rdcd *d, struct rdcd_client *c)
 	c->prev_bytes = 0;
 }
 
-static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
-				 const uint32_t *xrgb, uint32_t w, uint32_t h,
-				 uint64_t number)
+/* The bytes of a frame event before its pixels. */
+#define RDCD_FRAME_HDRS (RDC_PROTO_HDR_SIZE + RDC_PROTO_FRAME_HDR)
+
+/*
+ * The frame being handed out.  Its RAW and RLE encodings are made at
+ * most once, for the first subscriber that takes one, and shared by all
+ * the others; each holds a reference of its own until all are served.
+ */
+struct rdcd_frame_out {
+	const uint32_t *xrgb;
+	uint32_t w, h;
+	uint64_t number;
+	struct rdcd_shared *enc[RDC_ENC_DELTA];
+};
+
+/* The frame in `enc` (RAW or RLE), encoded now if nobody took it yet. */
+static struct rdcd_shared *
+rdcd_shared_get(struct rdcd *d, struct rdcd_frame_out *o, uint32_t enc)
 {
-	struct rdc_proto_frame f = { .number = number };
+	size_t raw = (size_t)o->w * o->h * 4, n = 0;
+	struct rdcd_shared *s = o->enc[enc];
+
+	if (s)
+		return s;
+	s = malloc(sizeof(*s) + raw);
+	if (!s)
+		return NULL;
+	d->sub_encodings++;
+	s->enc = enc;
+	if (enc != RDC_ENC_RAW)
+		n = rdc_proto_frame_encode(s->data, raw, enc, o->xrgb, NULL,
+					   o->w, o->h);
+	if (!n) {
+		s->enc = RDC_ENC_RAW;
+		n = rdc_proto_frame_encode(s->data, raw, RDC_ENC_RAW, o->xrgb,
+					   NULL, o->w, o->h);
+	}
+	s->len = n;
+	s->refs = 1;
+	s->queued = 0;
+	if (n < raw) {
+		struct rdcd_shared *t = realloc(s, sizeof(*s) + n);
+
+		if (t)
+			s = t;
+	}
+	o->enc[enc] = s;
+	return s;
+}
+
+/* A frame event whose pixels are s's, one more reference to them. */
+static struct rdcd_obuf *rdcd_frame_shared_msg(struct rdcd_shared *s,
+					       struct rdc_proto_frame *f)
+{
+	struct rdcd_obuf *b = rdcd_obuf_new(RDC_PROTO_FRAME_HDR);
+
+	if (!b)
+		return NULL;
+	f->encoding = s->enc;
+	rdc_proto_frame_hdr_encode(b->data + RDC_PROTO_HDR_SIZE, f);
+	b->len = b->hlen + s->len;
+	b->shared = s;
+	s->refs++;
+	return b;
+}
+
+static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
+				 struct rdcd_frame_out *o)
+{
+	struct rdc_proto_frame f = { .number = o->number,
+				     .width = o->w,
+				     .height = o->h };
 	const uint32_t *prev = NULL;
 	struct rdcd_obuf *b;
-	size_t px = (size_t)w * h;
+	size_t px = (size_t)o->w * o->h;
 	uint32_t enc = c->sub_enc;
 
 	if (c->dead || !(c->sub_events & RDC_SUB_FRAMES))
@@ -74,16 +143,15 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 	/*
 	 * A slow reader loses frames, alone: the device never waits.  A
 	 * queue already holding its share of replies takes no frame either,
-	 * nor one that would take everyone's queues over their bound.
+	 * nor one that would take everyone's queues over their bound.  All
+	 * this is known before any work is done for this subscriber.
 	 */
 	if (c->out_frames >= RDCD_MAX_QUEUED_FRAMES ||
 	    (c->out_head && c->out_bytes >= RDCD_OUT_HIGH) ||
-	    d->out_total >= RDCD_OUT_TOTAL) {
-		c->frames_dropped++;
-		return;
-	}
+	    d->out_total + RDCD_FRAME_HDRS > RDCD_OUT_TOTAL)
+		goto drop;
 	if (enc == RDC_ENC_DELTA) {
-		if (c->prev && (c->prev_w != w || c->prev_h != h))
+		if (c->prev && (c->prev_w != o->w || c->prev_h != o->h))
 			rdcd_prev_free(d, c);
 		if (c->prev) {
 			prev = c->prev;
@@ -92,32 +160,48 @@ static void rdcd_frame_to_client(struct rdcd *d, struct rdcd_client *c,
 			enc = RDC_ENC_RLE;
 		} else {
 			c->prev = malloc(px * 4 + 4);
-			if (!c->prev) {
-				c->frames_dropped++;
-				return;
-			}
+			if (!c->prev)
+				goto drop;
 			c->prev_bytes = px * 4;
 			d->prev_total += c->prev_bytes;
 		}
 	}
 	f.dropped = (uint32_t)c->frames_dropped;
-	b = rdcd_frame_msg(xrgb, prev, w, h, enc, &f);
-	if (!b || d->out_total + b->len > RDCD_OUT_TOTAL) {
-		free(b);
-		c->frames_dropped++;
-		return;
-	}
 	if (enc == RDC_ENC_DELTA) {
-		memcpy(c->prev, xrgb, px * 4);
-		c->prev_w = w;
-		c->prev_h = h;
+		/* a base of its own, so an encoding of its own */
+		d->sub_encodings++;
+		b = rdcd_frame_msg(o->xrgb, prev, o->w, o->h, enc, &f);
+		if (!b || d->out_total + b->len > RDCD_OUT_TOTAL) {
+			free(b);
+			goto drop;
+		}
+		memcpy(c->prev, o->xrgb, px * 4);
+		c->prev_w = o->w;
+		c->prev_h = o->h;
+	} else {
+		struct rdcd_shared *s = rdcd_shared_get(d, o, enc);
+
+		if (!s)
+			goto drop;
+		b = rdcd_frame_shared_msg(s, &f);
+		if (!b)
+			goto drop;
+		if (d->out_total + rdcd_obuf_cost(b) > RDCD_OUT_TOTAL) {
+			rdcd_obuf_free(b);
+			goto drop;
+		}
 	}
 	rdcd_obuf_hdr(b, RDC_MSG_EV_FRAME, RDC_MSGF_EVENT, 0, RDC_ST_OK);
 	b->frame = true;
 	rdcd_queue(d, c, b);
 	c->frames_sent++;
+	d->sub_queued++;
 	rdcd_log(d, RDCD_LOG_DEBUG, "client %u: frame %llu queued", c->id,
-		 (unsigned long long)number);
+		 (unsigned long long)o->number);
+	return;
+drop:
+	c->frames_dropped++;
+	d->sub_dropped++;
 }
 
 /* Sinks never stall the device: they drop what they cannot take. */
@@ -154,10 +238,16 @@ static void rdcd_on_frame(void *ctx, const uint32_t *xrgb, uint32_t w,
 			  uint32_t h, uint64_t number)
 {
 	struct rdcd *d = ctx;
+	struct rdcd_frame_out o = {
+		.xrgb = xrgb, .w = w, .h = h, .number = number
+	};
 
 	d->frames++;
 	for (struct rdcd_client *c = d->clients; c; c = c->next)
-		rdcd_frame_to_client(d, c, xrgb, w, h, number);
+		rdcd_frame_to_client(d, c, &o);
+	for (unsigned int i = 0; i < RDC_ENC_DELTA; i++)
+		if (o.enc[i] && !--o.enc[i]->refs)
+			free(o.enc[i]);
 	if (d->nsinks)
 		rdcd_frame_to_sinks(d, xrgb, w, h, number);
 }

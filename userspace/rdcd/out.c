@@ -3,13 +3,14 @@
 /*
  * rdcd: what goes out to a client.  Replies and events queue in each
  * client's buffers and leave as its socket takes them; every queue
- * counts against one bound for all (RDCD_OUT_TOTAL), which the slowest
- * reader pays for.  librdc errors become wire status codes here.
+ * counts against one bound for all (RDCD_OUT_TOTAL; a frame shared by
+ * several queues once), which the slowest reader pays for.  librdc errors become wire status codes here.
  */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/socket.h>
+#include <sys/uio.h>
 
 #include "serve.h"
 
@@ -65,8 +66,30 @@ static const char *rdcd_status_name(uint32_t st)
 	return st < RDC_ST_COUNT_ ? names[st] : "?";
 }
 
+size_t rdcd_obuf_cost(const struct rdcd_obuf *b)
+{
+	if (!b->shared)
+		return b->len;
+	return b->hlen + (b->shared->queued ? 0 : b->shared->len);
+}
+
+/* b leaves its queue: what it took of d->out_total, back. */
+static void rdcd_unqueue(struct rdcd *d, struct rdcd_obuf *b)
+{
+	if (!b->shared) {
+		d->out_total -= b->len;
+		return;
+	}
+	d->out_total -= b->hlen;
+	if (!--b->shared->queued)
+		d->out_total -= b->shared->len;
+}
+
 void rdcd_queue(struct rdcd *d, struct rdcd_client *c, struct rdcd_obuf *b)
 {
+	d->out_total += rdcd_obuf_cost(b);
+	if (b->shared)
+		b->shared->queued++;
 	b->next = NULL;
 	if (c->out_tail) {
 		c->out_tail->next = b;
@@ -76,7 +99,6 @@ void rdcd_queue(struct rdcd *d, struct rdcd_client *c, struct rdcd_obuf *b)
 	}
 	c->out_tail = b;
 	c->out_bytes += b->len;
-	d->out_total += b->len;
 	if (b->frame) {
 		c->out_frames++;
 		c->out_frame_bytes += b->len;
@@ -89,10 +111,19 @@ struct rdcd_obuf *rdcd_obuf_new(size_t payload)
 
 	if (b) {
 		b->len = RDC_PROTO_HDR_SIZE + payload;
+		b->hlen = b->len;
 		b->off = 0;
 		b->frame = false;
+		b->shared = NULL;
 	}
 	return b;
+}
+
+void rdcd_obuf_free(struct rdcd_obuf *b)
+{
+	if (b->shared && !--b->shared->refs)
+		free(b->shared);
+	free(b);
 }
 
 void rdcd_obuf_hdr(struct rdcd_obuf *b, uint16_t type, uint16_t flags,
@@ -116,8 +147,8 @@ void rdcd_client_drop_output(struct rdcd *d, struct rdcd_client *c)
 		struct rdcd_obuf *b = c->out_head;
 
 		c->out_head = b->next;
-		d->out_total -= b->len;
-		free(b);
+		rdcd_unqueue(d, b);
+		rdcd_obuf_free(b);
 	}
 	c->out_tail = NULL;
 	c->out_bytes = 0;
@@ -130,7 +161,18 @@ void rdcd_out_bound(struct rdcd *d)
 	while (d->out_total > RDCD_OUT_TOTAL) {
 		struct rdcd_client *slow = NULL;
 
+		/*
+		 * Frames alone never take the total over (they are dropped
+		 * first), replies do: the slowest reader holding some goes.
+		 * One holding frames only would free little, its frames
+		 * being shared.
+		 */
 		for (struct rdcd_client *c = d->clients; c; c = c->next)
+			if (!c->dead && c->out_bytes > c->out_frame_bytes &&
+			    (!slow || c->out_since_ns < slow->out_since_ns))
+				slow = c;
+		for (struct rdcd_client *c = slow ? NULL : d->clients; c;
+		     c = c->next)
 			if (!c->dead && c->out_head &&
 			    (!slow || c->out_since_ns < slow->out_since_ns))
 				slow = c;
@@ -150,8 +192,25 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c)
 {
 	while (c->out_head && !c->dead) {
 		struct rdcd_obuf *b = c->out_head;
-		ssize_t k = send(c->fd, b->data + b->off, b->len - b->off,
-				 MSG_NOSIGNAL | MSG_DONTWAIT);
+		struct iovec iov[2];
+		struct msghdr m = { .msg_iov = iov };
+		ssize_t k;
+
+		/* the message's own bytes, then the frame it shares */
+		if (b->off < b->hlen)
+			iov[m.msg_iovlen++] = (struct iovec){
+				.iov_base = b->data + b->off,
+				.iov_len = b->hlen - b->off,
+			};
+		if (b->shared) {
+			size_t at = b->off > b->hlen ? b->off - b->hlen : 0;
+
+			iov[m.msg_iovlen++] = (struct iovec){
+				.iov_base = b->shared->data + at,
+				.iov_len = b->shared->len - at,
+			};
+		}
+		k = sendmsg(c->fd, &m, MSG_NOSIGNAL | MSG_DONTWAIT);
 
 		if (k < 0) {
 			if (errno == EINTR)
@@ -171,12 +230,12 @@ void rdcd_client_flush(struct rdcd *d, struct rdcd_client *c)
 		if (!c->out_head)
 			c->out_tail = NULL;
 		c->out_bytes -= b->len;
-		d->out_total -= b->len;
+		rdcd_unqueue(d, b);
 		if (b->frame) {
 			c->out_frames--;
 			c->out_frame_bytes -= b->len;
 		}
-		free(b);
+		rdcd_obuf_free(b);
 	}
 	if (!c->out_head && c->closing)
 		c->dead = true;

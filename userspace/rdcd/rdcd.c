@@ -862,6 +862,13 @@ int main(int argc, char **argv)
 		 d.vram_size);
 	rdcd_systemd_notify(&d, "READY=1");
 	rdcd_loop(&d);
+	rdcd_log(&d, RDCD_LOG_INFO,
+		 "%llu frames; for subscribers %llu encodings, %llu queued, "
+		 "%llu dropped",
+		 (unsigned long long)d.frames,
+		 (unsigned long long)d.sub_encodings,
+		 (unsigned long long)d.sub_queued,
+		 (unsigned long long)d.sub_dropped);
 	if (rdcd_stop)
 		rdcd_log(&d, RDCD_LOG_INFO, "signal %d: shutting down",
 			 (int)rdcd_stop);

@@ -42,8 +42,9 @@
  * A frame is queued only into a queue under RDCD_OUT_HIGH, or an empty one. */
 #define RDCD_MAX_QUEUED_FRAMES 2u
 /*
- * Everything queued for every client together.  A frame that would take
- * the total over it is dropped; replies that do make the slowest reader
+ * Everything queued for every client together, a frame shared by several
+ * queues counted once.  A frame that would take the total over it is
+ * dropped; replies that do make the slowest reader with replies waiting
  * (the longest without taking anything) be disconnected until it fits.
  */
 #define RDCD_OUT_TOTAL (64u << 20)
@@ -73,10 +74,25 @@ enum rdcd_log_level {
 	RDCD_LOG_DEBUG
 };
 
+/*
+ * One encoding of one frame's pixels, made once and shared by every
+ * subscriber that takes that frame in that encoding (frames.c); freed
+ * with its last reference.
+ */
+struct rdcd_shared {
+	unsigned int refs;
+	unsigned int queued; /* queues holding it: counted once in out_total */
+	uint32_t enc;	     /* what it holds: RLE falls back to RAW */
+	size_t len;
+	uint8_t data[];
+};
+
+/* A message queued for a client: data[0..hlen), then shared's bytes. */
 struct rdcd_obuf {
 	struct rdcd_obuf *next;
-	size_t len, off;
+	size_t len, off, hlen;
 	bool frame;
+	struct rdcd_shared *shared; /* or NULL: all of it is in data */
 	uint8_t data[];
 };
 
@@ -159,7 +175,7 @@ struct rdcd {
 	struct rdcd_client *clients;
 	unsigned int nclients; /* that said HELLO */
 	int accept_lis;	   /* listener whose connection is being made, or -1 */
-	size_t out_total;  /* bytes queued for every client */
+	size_t out_total;  /* bytes queued for every client (RDCD_OUT_TOTAL) */
 	size_t prev_total; /* bytes of every client's DELTA base */
 	/* what runs on the chip's stack: the paced/fast loop's advance to
 	 * adv_target, or (stepped) chip_client's pending request */
@@ -184,6 +200,9 @@ struct rdcd {
 	int log_level;
 	uint32_t last_irq;
 	uint64_t frames;
+	/* for subscribers: frame encodings made, frames queued and dropped
+	 * (logged at exit) */
+	uint64_t sub_encodings, sub_queued, sub_dropped;
 	/* the chip converts frames: a client or a sink may look (rdcd_watch) */
 	bool watched;
 

@@ -57,6 +57,11 @@ void rdcd_hist(struct rdcd *d, struct rdcd_client *c,
 void rdcd_queue(struct rdcd *d, struct rdcd_client *c, struct rdcd_obuf *b);
 /* A message of `payload` bytes, its header to be written. */
 struct rdcd_obuf *rdcd_obuf_new(size_t payload);
+/* A message gone: its shared part with its last reference. */
+void rdcd_obuf_free(struct rdcd_obuf *b);
+/* What queueing b adds to d->out_total: a shared frame's pixels count
+ * only for the first queue that holds them. */
+size_t rdcd_obuf_cost(const struct rdcd_obuf *b);
 void rdcd_obuf_hdr(struct rdcd_obuf *b, uint16_t type, uint16_t flags,
 		   uint32_t seq, uint32_t status);
 /* Everything queued for c, gone (it is being disconnected). */
