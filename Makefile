@@ -157,6 +157,12 @@ $(foreach d,$(PRIV_DIRS),$(O)/rel/$(d)/%.o $(O)/san/$(d)/%.o): \
 $(O)/pic/userspace/lib/%.o $(O)/pic/userspace/sink/%.o: \
 	REL_CFLAGS += $(PRIV_INC)
 $(O)/rel/rdc-bench-peers: REL_CFLAGS += $(PRIV_INC)
+# The core's own structs (hw-sim/hw.h, firmware-model/dp.h) are open to
+# the core and its unit tests only; every other host sees rdc_chip.h.
+$(O)/rel/tests/unit/%.o $(O)/san/tests/unit/%.o: \
+	REL_CFLAGS += -DRDC_CORE_INTERNAL
+$(O)/rel/tests/unit/%.o $(O)/san/tests/unit/%.o: \
+	SAN_CFLAGS += -DRDC_CORE_INTERNAL
 
 $(O)/rel/librdc.a: $(REL_OBJS)
 	@rm -f $@

@@ -7,6 +7,7 @@
  * scanout through the frame listener; realtime (rdcd's pipeline
  * unpaced) and teapot3d (a display list, frame after frame).
  */
+#define RDC_CORE_INTERNAL /* the benchmark drives the core directly: hw.h, dp.h */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -136,9 +136,9 @@ void rdc_kchip_consumer(struct rdc_kchip *chip, bool attach)
 {
 	rdc_kchip_lock(chip);
 	if (attach)
-		rdc_hw_consumer_attach(&chip->hw);
+		rdc_hw_consumer_attach(chip->hw);
 	else
-		rdc_hw_consumer_detach(&chip->hw);
+		rdc_hw_consumer_detach(chip->hw);
 	rdc_kchip_unlock(chip);
 }
 
@@ -177,7 +177,7 @@ ktime_t rdc_kchip_wall_of_locked(struct rdc_kchip *chip, u64 t)
 		return chip->wall_base;
 	return ktime_add_ns(chip->wall_base,
 			    mul_u64_u32_div(t - chip->sim_base, NSEC_PER_SEC,
-					    chip->hw.core_hz));
+					    rdc_hw_core_hz(chip->hw)));
 }
 
 /* The vblank hook of the module, once per frame. */
@@ -186,7 +186,7 @@ static void rdc_kchip_vblank_locked(struct rdc_kchip *chip, u64 time)
 	chip->frames++;
 	if (chip->grab_watch &&
 	    chip->frames - chip->grab_at > RDC_KCHIP_GRAB_HOLD_FRAMES) {
-		rdc_hw_consumer_detach(&chip->hw);
+		rdc_hw_consumer_detach(chip->hw);
 		chip->grab_watch = false;
 	}
 	if (!chip->hooks || !chip->hooks->vblank)
@@ -223,29 +223,34 @@ static void rdc_kchip_trace(void *ctx, u64 time, unsigned int event, u32 a,
  */
 void rdc_kchip_irq_check_locked(struct rdc_kchip *chip)
 {
-	struct rdc_hw *hw = &chip->hw;
-	u32 pending = hw->irq_status & hw->irq_enable;
+	struct rdc_hw_state st;
+	u32 pending;
 
+	rdc_hw_state(chip->hw, &st);
+	pending = st.irq_status & st.irq_enable;
 	if (pending && !chip->irq_level) {
 		chip->irqs++;
-		dev_dbg(chip->dev, "irq %#x at %llu\n", pending, hw->now);
+		dev_dbg(chip->dev, "irq %#x at %llu\n", pending,
+			rdc_hw_now(chip->hw));
 	}
 	chip->irq_level = pending != 0;
 }
 
 static u64 rdc_kchip_ns_to_cycles(struct rdc_kchip *chip, u64 ns)
 {
-	return mul_u64_u32_div(ns, chip->hw.core_hz, NSEC_PER_SEC);
+	return mul_u64_u32_div(ns, rdc_hw_core_hz(chip->hw), NSEC_PER_SEC);
 }
 
 static void rdc_kchip_update_period(struct rdc_kchip *chip)
 {
-	u64 fc = chip->hw.crtc.running ? chip->hw.crtc.frame_cycles : 0;
-	u64 ns = RDC_KCHIP_PACE_MAX_NS;
+	u64 ns = RDC_KCHIP_PACE_MAX_NS, fc;
+	struct rdc_hw_state st;
 
+	rdc_hw_state(chip->hw, &st);
+	fc = st.scanning ? st.frame_cycles : 0;
 	if (fc)
 		ns = div_u64(mul_u64_u32_div(fc, NSEC_PER_SEC,
-					     chip->hw.core_hz),
+					     rdc_hw_core_hz(chip->hw)),
 			     RDC_KCHIP_PACE_TICKS_PER_FRAME);
 	WRITE_ONCE(chip->period_ns, clamp_t(u64, ns, RDC_KCHIP_PACE_MIN_NS,
 					    RDC_KCHIP_PACE_MAX_NS));
@@ -254,12 +259,13 @@ static void rdc_kchip_update_period(struct rdc_kchip *chip)
 /* Simulated time of the next TE edge, or RDC_NEVER (lock held). */
 static u64 rdc_kchip_next_te_locked(struct rdc_kchip *chip)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw_state st;
 
-	if (hw->in_reset || !hw->crtc.running)
+	rdc_hw_state(chip->hw, &st);
+	if (st.in_reset || !st.scanning)
 		return RDC_NEVER;
-	return hw->crtc.in_vblank ? rdc_port_next_line(hw, 0) :
-				    rdc_port_next_vblank(hw);
+	return st.in_vblank ? rdc_hw_next_line(chip->hw, 0) :
+			      rdc_hw_next_vblank(chip->hw);
 }
 
 /*
@@ -290,7 +296,7 @@ static void rdc_kchip_pace_work(struct work_struct *work)
 {
 	struct rdc_kchip *chip =
 		container_of(work, struct rdc_kchip, pace_work);
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
 	u64 target,
 		lag = rdc_kchip_ns_to_cycles(chip, RDC_KCHIP_PACE_MAX_LAG_NS);
 	ktime_t now = ktime_get();
@@ -303,17 +309,18 @@ static void rdc_kchip_pace_work(struct work_struct *work)
 	 * Too far behind (a slow host) or ahead (fb_ops ran the DP
 	 * at once when the FIFO filled): start pacing afresh from here.
 	 */
-	if (target > hw->now + lag || hw->now > target + lag) {
+	if (target > rdc_hw_now(hw) + lag || rdc_hw_now(hw) > target + lag) {
 		chip->wall_base = now;
-		chip->sim_base = hw->now;
-		target = hw->now;
+		chip->sim_base = rdc_hw_now(hw);
+		target = rdc_hw_now(hw);
 	}
-	while (hw->now < target && !chip->dying) {
-		u64 stop = min_t(u64, target, hw->now + RDC_KCHIP_RUN_SLICE);
+	while (rdc_hw_now(hw) < target && !chip->dying) {
+		u64 stop = min_t(u64, target,
+				 rdc_hw_now(hw) + RDC_KCHIP_RUN_SLICE);
 		u64 edge = rdc_kchip_next_te_locked(chip);
 
 		/* a TE edge goes out before the time after it is simulated */
-		if (edge > hw->now && edge < stop)
+		if (edge > rdc_hw_now(hw) && edge < stop)
 			stop = edge;
 		rdc_hw_run_until(hw, stop);
 		rdc_kchip_irq_check_locked(chip);
@@ -361,21 +368,22 @@ int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev,
 	chip->up_at = ktime_get_ns();
 
 	chip->vram = vmalloc_user(vram_size);
-	chip->dp = vzalloc(sizeof(*chip->dp));
+	chip->hw = vzalloc(rdc_hw_size());
+	chip->dp = vzalloc(rdc_dp_size());
 	chip->frame[0] = vzalloc(array_size(RDC_KCHIP_FRAME_CAP, sizeof(u32)));
 	chip->frame[1] = vzalloc(array_size(RDC_KCHIP_FRAME_CAP, sizeof(u32)));
 	chip->snap = vzalloc(array_size(RDC_KCHIP_FRAME_CAP, sizeof(u32)));
-	if (!chip->vram || !chip->dp || !chip->frame[0] || !chip->frame[1] ||
-	    !chip->snap) {
+	if (!chip->vram || !chip->hw || !chip->dp || !chip->frame[0] ||
+	    !chip->frame[1] || !chip->snap) {
 		rdc_kchip_free(chip);
 		return -ENOMEM;
 	}
-	rdc_hw_init(&chip->hw, &cfg, chip->vram, chip->frame[0], chip->frame[1],
+	rdc_hw_init(chip->hw, &cfg, chip->vram, chip->frame[0], chip->frame[1],
 		    RDC_KCHIP_FRAME_CAP);
-	rdc_dp_init(chip->dp, &chip->hw);
+	rdc_dp_init(chip->dp, chip->hw);
 	/* a frame is converted only while something looks (each module) */
-	rdc_hw_set_on_demand(&chip->hw, p->on_demand);
-	rdc_hw_set_trace(&chip->hw, rdc_kchip_trace, chip);
+	rdc_hw_set_on_demand(chip->hw, p->on_demand);
+	rdc_hw_set_trace(chip->hw, rdc_kchip_trace, chip);
 	rdc_kchip_update_period(chip);
 	return 0;
 }
@@ -385,7 +393,7 @@ void rdc_kchip_start(struct rdc_kchip *chip)
 	if (chip->stepped)
 		return;
 	chip->wall_base = ktime_get();
-	chip->sim_base = chip->hw.now;
+	chip->sim_base = rdc_hw_now(chip->hw);
 	hrtimer_start(&chip->timer, ns_to_ktime(chip->period_ns),
 		      HRTIMER_MODE_REL);
 }
@@ -408,34 +416,38 @@ void rdc_kchip_free(struct rdc_kchip *chip)
 	vfree(chip->frame[1]);
 	vfree(chip->frame[0]);
 	vfree(chip->dp);
+	vfree(chip->hw);
 	vfree(chip->vram);
 	chip->snap = NULL;
 	chip->frame[0] = NULL;
 	chip->frame[1] = NULL;
 	chip->dp = NULL;
+	chip->hw = NULL;
 	chip->vram = NULL;
 }
 
 /* RESET_N and BL_EN as the host drives them. */
 u32 rdc_kchip_pins_in(struct rdc_kchip *chip)
 {
-	u32 v;
+	struct rdc_hw_state st;
 
 	rdc_kchip_lock(chip);
-	v = chip->hw.pins_in;
+	rdc_hw_state(chip->hw, &st);
 	rdc_kchip_unlock(chip);
-	return v;
+	return st.pins_in;
 }
 
 /* Drive one of the chip's input pins (the GPIO lines RESET_N and BL_EN). */
 void rdc_kchip_set_pin(struct rdc_kchip *chip, u32 pin, bool high)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
+	struct rdc_hw_state st;
 	u32 pins;
 
 	rdc_kchip_lock(chip);
-	pins = high ? hw->pins_in | pin : hw->pins_in & ~pin;
-	if (pins != hw->pins_in) {
+	rdc_hw_state(hw, &st);
+	pins = high ? st.pins_in | pin : st.pins_in & ~pin;
+	if (pins != st.pins_in) {
 		rdc_hw_set_pins(hw, pins);
 		/* RESET_N resets the DP's state behind fb_ops' back */
 		chip->state_gen++;
@@ -452,7 +464,7 @@ u32 rdc_kchip_reg_read(struct rdc_kchip *chip, u32 reg)
 	u32 v;
 
 	rdc_kchip_lock(chip);
-	v = rdc_hw_read(&chip->hw, reg);
+	v = rdc_hw_read(chip->hw, reg);
 	rdc_kchip_unlock(chip);
 	return v;
 }
@@ -460,7 +472,7 @@ u32 rdc_kchip_reg_read(struct rdc_kchip *chip, u32 reg)
 void rdc_kchip_reg_write(struct rdc_kchip *chip, u32 reg, u32 val)
 {
 	rdc_kchip_lock(chip);
-	rdc_hw_write(&chip->hw, reg, val);
+	rdc_hw_write(chip->hw, reg, val);
 	/* CONTROL (reset), FIFO_DATA: the DP's state may no longer be ours */
 	chip->state_gen++;
 	rdc_kchip_irq_check_locked(chip);
@@ -515,7 +527,7 @@ static int rdc_kchip_wait_errno(enum rdc_hw_wait_result r)
 static int rdc_kchip_wait_check(struct rdc_kchip *chip,
 				const struct rdc_hw_wait *w)
 {
-	return rdc_kchip_wait_errno(rdc_hw_wait_check(&chip->hw, w));
+	return rdc_kchip_wait_errno(rdc_hw_wait_check(chip->hw, w));
 }
 
 /*
@@ -541,7 +553,7 @@ static int rdc_kchip_pause(struct rdc_kchip *chip)
  */
 static int rdc_kchip_wait_stepped(struct rdc_kchip *chip, struct rdc_hw_wait *w)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
 	enum rdc_hw_wait_result res;
 	int err;
 
@@ -579,11 +591,11 @@ static int rdc_kchip_wait_paced(struct rdc_kchip *chip, struct rdc_hw_wait *w,
 	int ret;
 
 	rdc_kchip_lock(chip);
-	rdc_hw_wait_begin(&chip->hw, w);
+	rdc_hw_wait_begin(chip->hw, w);
 	rdc_kchip_unlock(chip);
 	for (;;) {
 		rdc_kchip_lock(chip);
-		seen = chip->hw.now;
+		seen = rdc_hw_now(chip->hw);
 		ret = rdc_kchip_wait_check(chip, w);
 		rdc_kchip_unlock(chip);
 		if (ret <= 0)
@@ -594,13 +606,13 @@ static int rdc_kchip_wait_paced(struct rdc_kchip *chip, struct rdc_hw_wait *w,
 		if (interruptible)
 			left = wait_event_interruptible_timeout(
 				chip->waitq,
-				READ_ONCE(chip->hw.now) != seen ||
+				rdc_hw_now(chip->hw) != seen ||
 					READ_ONCE(chip->dying),
 				left);
 		else
 			left = wait_event_killable_timeout(
 				chip->waitq,
-				READ_ONCE(chip->hw.now) != seen ||
+				rdc_hw_now(chip->hw) != seen ||
 					READ_ONCE(chip->dying),
 				left);
 		if (left < 0)
@@ -613,9 +625,9 @@ static int rdc_kchip_wait_paced(struct rdc_kchip *chip, struct rdc_hw_wait *w,
 static int rdc_kchip_wait_sig(struct rdc_kchip *chip,
 			      const struct rdcfb_wait *w, bool interruptible)
 {
-	u64 budget = w->budget ?
-			     w->budget :
-			     (u64)RDC_KCHIP_WAIT_BUDGET_S * chip->hw.core_hz;
+	u64 budget = w->budget ? w->budget :
+				 (u64)RDC_KCHIP_WAIT_BUDGET_S *
+					 rdc_hw_core_hz(chip->hw);
 	struct rdc_hw_wait hw_w;
 	unsigned int i;
 
@@ -643,7 +655,7 @@ int rdc_kchip_wait(struct rdc_kchip *chip, const struct rdcfb_wait *w)
 
 int rdc_kchip_step(struct rdc_kchip *chip, u64 cycles)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
 	u64 end;
 	int err;
 
@@ -652,18 +664,19 @@ int rdc_kchip_step(struct rdc_kchip *chip, u64 cycles)
 	if (!chip->stepped)
 		return -EPERM;
 	rdc_kchip_lock(chip);
-	if (cycles > U64_MAX - hw->now) {
+	if (cycles > U64_MAX - rdc_hw_now(hw)) {
 		rdc_kchip_unlock(chip);
 		return -ERANGE;
 	}
-	end = hw->now + cycles;
+	end = rdc_hw_now(hw) + cycles;
 	/*
 	 * In pieces, so one STEP never holds the lock for long; the chip
 	 * gives the same result run in pieces as in one go.
 	 */
-	while (hw->now < end) {
-		rdc_hw_run_until(hw, min_t(u64, end,
-					   hw->now + RDC_KCHIP_RUN_SLICE));
+	while (rdc_hw_now(hw) < end) {
+		rdc_hw_run_until(hw,
+				 min_t(u64, end,
+				       rdc_hw_now(hw) + RDC_KCHIP_RUN_SLICE));
 		rdc_kchip_irq_check_locked(chip);
 		err = rdc_kchip_pause(chip);
 		if (err)
@@ -682,14 +695,14 @@ int rdc_kchip_vsync(struct rdc_kchip *chip)
 			     .mask = ~0u },
 		.timeout_ms = RDC_KCHIP_VSYNC_TIMEOUT_MS,
 	};
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
 	u64 next;
 
 	rdc_kchip_lock(chip);
-	next = rdc_port_next_vblank(hw);
+	next = rdc_hw_next_vblank(hw);
 	w.term[0].value = rdc_hw_read(hw, RDC_REG_FRAME_COUNT) + 1;
 	/* the budget reaches just past the next vblank */
-	w.budget = next - hw->now + 1;
+	w.budget = next - rdc_hw_now(hw) + 1;
 	rdc_kchip_unlock(chip);
 	if (next == RDC_NEVER)
 		return -ETIMEDOUT;
@@ -708,7 +721,7 @@ int rdc_kchip_vsync(struct rdc_kchip *chip)
  */
 int rdc_kchip_submit(struct rdc_kchip *chip, const u32 *words, u32 n)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
 	u32 free_words, taken;
 	int ret = 0;
 
@@ -749,13 +762,19 @@ int rdc_kchip_submit(struct rdc_kchip *chip, const u32 *words, u32 n)
  * Can the DP take fb_ops' commands: enabled, not halted, and no client's
  * command half in the FIFO?
  */
+bool rdc_kchip_dp_runs_locked(struct rdc_kchip *chip)
+{
+	struct rdc_hw_state st;
+
+	rdc_hw_state(chip->hw, &st);
+	return !st.in_reset && (st.control & RDC_CONTROL_DP_EN) &&
+	       !(st.dp_status & RDC_STATUS_DP_HALTED);
+}
+
 bool rdc_kchip_dp_usable(struct rdc_kchip *chip)
 {
-	struct rdc_hw *hw = &chip->hw;
-
-	return !chip->submitting && !hw->in_reset &&
-	       (hw->control & RDC_CONTROL_DP_EN) &&
-	       !(hw->dp_status & RDC_STATUS_DP_HALTED) && !chip->dying;
+	return !chip->submitting && !chip->dying &&
+	       rdc_kchip_dp_runs_locked(chip);
 }
 
 /*
@@ -766,7 +785,7 @@ bool rdc_kchip_dp_usable(struct rdc_kchip *chip)
  */
 int rdc_kchip_push_locked(struct rdc_kchip *chip, const u32 *words, u32 n)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
 	unsigned int tries = 0;
 	u32 free_words;
 
@@ -774,10 +793,10 @@ int rdc_kchip_push_locked(struct rdc_kchip *chip, const u32 *words, u32 n)
 		free_words = rdc_hw_read(hw, RDC_REG_FIFO_FREE);
 		if (!free_words) {
 			if (++tries > RDC_KCHIP_SYNC_TRIES ||
-			    (hw->dp_status & RDC_STATUS_DP_HALTED))
+			    !rdc_kchip_dp_runs_locked(chip))
 				return -ETIMEDOUT;
-			rdc_hw_run_until_idle(hw,
-					      hw->now + RDC_KCHIP_SYNC_SLICE);
+			rdc_hw_run_until_idle(hw, rdc_hw_now(hw) +
+							  RDC_KCHIP_SYNC_SLICE);
 			rdc_kchip_irq_check_locked(chip);
 			cond_resched();
 			continue;
@@ -792,11 +811,12 @@ int rdc_kchip_push_locked(struct rdc_kchip *chip, const u32 *words, u32 n)
 /* Run the DP until it has nothing left it can do (bounded). */
 void rdc_kchip_drain_locked(struct rdc_kchip *chip)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
 	unsigned int tries;
 
 	for (tries = 0; tries < RDC_KCHIP_SYNC_TRIES; tries++) {
-		if (rdc_hw_run_until_idle(hw, hw->now + RDC_KCHIP_SYNC_SLICE))
+		if (rdc_hw_run_until_idle(hw, rdc_hw_now(hw) +
+						      RDC_KCHIP_SYNC_SLICE))
 			break;
 		cond_resched();
 	}
@@ -810,7 +830,7 @@ ssize_t rdc_kchip_scanout_show(struct rdc_kchip *chip, char *buf)
 
 	rdc_kchip_lock(chip);
 	on = chip->on_demand;
-	watched = rdc_hw_scanout_watched(&chip->hw);
+	watched = rdc_hw_scanout_watched(chip->hw);
 	rdc_kchip_unlock(chip);
 	return sysfs_emit(buf, "%s\n",
 			  !on	  ? "always" :
@@ -822,17 +842,20 @@ ssize_t rdc_kchip_scanout_show(struct rdc_kchip *chip, char *buf)
 
 void rdc_kchip_counters(struct rdc_kchip *chip, struct rdc_kchip_counters *c)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw_state st;
+	struct rdc_perf perf;
 
 	rdc_kchip_lock(chip);
-	c->now = hw->now;
-	c->busy = hw->perf.busy;
-	c->stall = hw->perf.stall;
-	c->pixels = hw->perf.pixels;
-	c->cmds = hw->perf.cmds;
-	c->last_cycles = hw->perf.last_cycles;
-	c->last_opcode = hw->perf.last_opcode;
-	c->fence = hw->fence;
+	rdc_hw_perf(chip->hw, &perf);
+	rdc_hw_state(chip->hw, &st);
+	c->now = rdc_hw_now(chip->hw);
+	c->busy = perf.busy;
+	c->stall = perf.stall;
+	c->pixels = perf.pixels;
+	c->cmds = perf.cmds;
+	c->last_cycles = perf.last_cycles;
+	c->last_opcode = perf.last_opcode;
+	c->fence = st.fence;
 	c->frames = chip->frames;
 	c->host_busy_ns = chip->busy_ns + (ktime_get_ns() - chip->held_at);
 	c->host_up_ns = ktime_get_ns() - chip->up_at;
@@ -874,7 +897,7 @@ int rdc_kchip_snapshot(struct rdc_kchip *chip)
 	lockdep_assert_held(&chip->snap_lock);
 	for (tries = 0; tries < RDC_KCHIP_SNAP_TRIES; tries++) {
 		rdc_kchip_lock(chip);
-		f = rdc_hw_frame(&chip->hw, &w, &h);
+		f = rdc_hw_frame(chip->hw, &w, &h);
 		seq = chip->frames;
 		/*
 		 * A look that finds no frame (scanout on demand kept none:
@@ -885,7 +908,7 @@ int rdc_kchip_snapshot(struct rdc_kchip *chip)
 		 */
 		chip->grab_at = chip->frames;
 		if (!f && !chip->grab_watch) {
-			rdc_hw_consumer_attach(&chip->hw);
+			rdc_hw_consumer_attach(chip->hw);
 			chip->grab_watch = true;
 		}
 		if (!f) {

@@ -24,8 +24,10 @@
 #include <linux/wait.h>
 #include <linux/workqueue.h>
 
-#include "hw.h"
-#include "dp.h"
+#include "rdc_chip.h"
+#include "rdc_dp_host.h"
+#include "rdc_port.h"
+#include "rdc_regs.h"
 #include "rdcfb_ioctl.h"
 #include "rdcfb_validate.h"
 
@@ -107,8 +109,8 @@ struct rdc_kchip {
 	struct mutex lock;
 	struct rdc_kchip_irqoff irqoff;
 	const struct rdc_kchip_hooks *hooks;
-	struct rdc_hw hw;  /* lock */
-	struct rdc_dp *dp; /* lock; large, so vmalloc'ed */
+	struct rdc_hw *hw; /* lock; rdc_hw_size() bytes */
+	struct rdc_dp *dp; /* lock; rdc_dp_size() bytes, vmalloc'ed */
 	u8 *vram;	   /* vmalloc_user: mapped to user space as is */
 	u32 *frame[2];
 	struct device *dev;
@@ -189,6 +191,8 @@ u32 rdc_kchip_crc(const u32 *px, size_t count);
 /* With chip->lock held. */
 ktime_t rdc_kchip_wall_of_locked(struct rdc_kchip *chip, u64 t);
 bool rdc_kchip_dp_usable(struct rdc_kchip *chip);
+/* The DP is enabled and not halted. */
+bool rdc_kchip_dp_runs_locked(struct rdc_kchip *chip);
 int rdc_kchip_push_locked(struct rdc_kchip *chip, const u32 *words, u32 n);
 void rdc_kchip_drain_locked(struct rdc_kchip *chip);
 void rdc_kchip_irq_check_locked(struct rdc_kchip *chip);

@@ -392,7 +392,7 @@ int rdc_kgpio_register(struct rdc_kchip *chip, struct device *dev)
 		return ret;
 	}
 	rdc_kchip_lock(chip);
-	g->live = rdc_hw_pins(&chip->hw) & RDC_KGPIO_PINS_HOST_IN;
+	g->live = rdc_hw_pins(chip->hw) & RDC_KGPIO_PINS_HOST_IN;
 	g->shown = g->live;
 	chip->gpio = g;
 	rdc_kchip_unlock(chip);

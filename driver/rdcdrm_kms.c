@@ -177,6 +177,25 @@ static const struct drm_connector_funcs rdcdrm_connector_funcs = {
 	.atomic_destroy_state = drm_atomic_helper_connector_destroy_state,
 };
 
+/* The DP's busy cycles so far (lock held). */
+static u64 rdcdrm_busy(struct rdcdrm_device *rd)
+{
+	struct rdc_perf perf;
+
+	rdc_hw_perf(rd->chip.hw, &perf);
+	return perf.busy;
+}
+
+/* Drive BL_EN, the backlight, high or low (lock held). */
+static void rdcdrm_backlight(struct rdcdrm_device *rd, bool on)
+{
+	struct rdc_hw_state st;
+
+	rdc_hw_state(rd->chip.hw, &st);
+	rdc_hw_set_pins(rd->chip.hw, on ? st.pins_in | RDC_PIN_BL_EN :
+					  st.pins_in & ~RDC_PIN_BL_EN);
+}
+
 /* ---- Uploads: framebuffer rows to VRAM as HOST_BLIT --------------------- */
 
 /*
@@ -219,7 +238,7 @@ static void rdcdrm_upload_rect(struct rdcdrm_device *rd, bool by_dp, u32 base,
 			       const u8 *src, u32 pitch, u32 cpp,
 			       struct drm_rect r)
 {
-	struct rdc_hw *hw = &rd->chip.hw;
+	struct rdc_hw *hw = rd->chip.hw;
 	u32 x, y, w, h, bytes, wpr, rows, max_rows, i;
 	const u8 *row;
 
@@ -312,7 +331,7 @@ static void rdcdrm_primary_update(struct drm_plane *plane,
 	struct drm_crtc_state *crtc_state;
 	struct drm_atomic_helper_damage_iter iter;
 	struct drm_rect clip, cur = { 0 }, all;
-	struct rdc_hw *hw = &rd->chip.hw;
+	struct rdc_hw *hw = rd->chip.hw;
 	u32 fmt, stride, w, h, cpp, back, base, pitch;
 	bool full, by_dp, any = false;
 	const u8 *src;
@@ -344,7 +363,7 @@ static void rdcdrm_primary_update(struct drm_plane *plane,
 	rd->height = h;
 	back = rd->front ^ 1;
 	base = back * RDCDRM_SCANOUT_BYTES;
-	busy0 = hw->perf.busy;
+	busy0 = rdcdrm_busy(rd);
 	by_dp = rdc_kchip_dp_usable(&rd->chip) &&
 		!rdcdrm_upload_begin(rd, base);
 	if (full) {
@@ -372,7 +391,7 @@ static void rdcdrm_primary_update(struct drm_plane *plane,
 	}
 	if (by_dp)
 		rdc_kchip_drain_locked(&rd->chip);
-	rd->damage_cycles += hw->perf.busy - busy0;
+	rd->damage_cycles += rdcdrm_busy(rd) - busy0;
 	rd->prev = cur;
 	rd->prev_valid = true;
 	/* latched together at the next vblank */
@@ -398,7 +417,7 @@ static void rdcdrm_primary_disable(struct drm_plane *plane,
 	struct drm_plane_state *old =
 		drm_atomic_get_old_plane_state(state, plane);
 	struct rdcdrm_device *rd = rdcdrm_of(plane->dev);
-	struct rdc_hw *hw = &rd->chip.hw;
+	struct rdc_hw *hw = rd->chip.hw;
 	struct drm_crtc_state *cs;
 	u32 base, w, h, y;
 
@@ -478,7 +497,7 @@ static int rdcdrm_cursor_check(struct drm_plane *plane,
 
 static void rdcdrm_cursor_show(struct rdcdrm_device *rd, bool on)
 {
-	struct rdc_hw *hw = &rd->chip.hw;
+	struct rdc_hw *hw = rd->chip.hw;
 	u32 ctl = rdc_hw_read(hw, RDC_REG_CONTROL) &
 		  ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
 
@@ -502,7 +521,7 @@ static void rdcdrm_cursor_update(struct drm_plane *plane,
 	struct drm_shadow_plane_state *shadow = to_drm_shadow_plane_state(new);
 	struct rdcdrm_device *rd = rdcdrm_of(plane->dev);
 	struct drm_framebuffer *fb = new->fb;
-	struct rdc_hw *hw = &rd->chip.hw;
+	struct rdc_hw *hw = rd->chip.hw;
 	u32 row[RDCDRM_CURSOR_SIZE];
 	u32 w, h, y, base;
 	const u8 *src;
@@ -580,7 +599,7 @@ static void rdcdrm_load_clut(struct rdcdrm_device *rd,
 {
 	const struct drm_color_lut *lut = cs->gamma_lut ? cs->gamma_lut->data :
 							  NULL;
-	struct rdc_hw *hw = &rd->chip.hw;
+	struct rdc_hw *hw = rd->chip.hw;
 	u32 i, r, g, b, ctl;
 
 	rdc_hw_write(hw, RDC_REG_CLUT_INDEX, 0);
@@ -634,7 +653,7 @@ static void rdcdrm_crtc_enable(struct drm_crtc *crtc,
 {
 	struct rdcdrm_device *rd = rdcdrm_of(crtc->dev);
 	const struct drm_display_mode *m = &crtc->state->adjusted_mode;
-	struct rdc_hw *hw = &rd->chip.hw;
+	struct rdc_hw *hw = rd->chip.hw;
 	const u32 regs[][2] = {
 		{ RDC_REG_H_TOTAL, m->htotal },
 		{ RDC_REG_H_DISPLAY, m->hdisplay },
@@ -661,7 +680,7 @@ static void rdcdrm_crtc_enable(struct drm_crtc *crtc,
 	      ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
 	rdc_hw_write(hw, RDC_REG_CONTROL,
 		     ctl | RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_CLUT_LATCH);
-	rdc_hw_set_pins(hw, hw->pins_in | RDC_PIN_BL_EN);
+	rdcdrm_backlight(rd, true);
 	rd->prev_valid = false;
 	rd->clut_dirty = true;
 	rd->crtc_on = true;
@@ -674,7 +693,7 @@ static void rdcdrm_crtc_disable(struct drm_crtc *crtc,
 				struct drm_atomic_state *state)
 {
 	struct rdcdrm_device *rd = rdcdrm_of(crtc->dev);
-	struct rdc_hw *hw = &rd->chip.hw;
+	struct rdc_hw *hw = rd->chip.hw;
 	struct drm_pending_vblank_event *ev;
 	u32 ctl;
 
@@ -684,7 +703,7 @@ static void rdcdrm_crtc_disable(struct drm_crtc *crtc,
 	      ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
 	rdc_hw_write(hw, RDC_REG_CONTROL,
 		     ctl & ~(RDC_CONTROL_SCANOUT_EN | RDC_CONTROL_CURSOR_EN));
-	rdc_hw_set_pins(hw, hw->pins_in & ~RDC_PIN_BL_EN);
+	rdcdrm_backlight(rd, false);
 	rd->crtc_on = false;
 	ev = rd->event;
 	rd->event = NULL;
@@ -819,7 +838,7 @@ static int rdcdrm_set_crc_source(struct drm_crtc *crtc, const char *source)
 	}
 	rdc_kchip_lock(&rd->chip);
 	rd->crc_on = on;
-	rdc_hw_set_frame_fn(&rd->chip.hw, on ? rdcdrm_frame : NULL,
+	rdc_hw_set_frame_fn(rd->chip.hw, on ? rdcdrm_frame : NULL,
 			    on ? rd : NULL);
 	rdc_kchip_unlock(&rd->chip);
 	if (!on)
@@ -867,11 +886,11 @@ static const struct drm_crtc_funcs rdcdrm_crtc_funcs = {
 static ktime_t rdcdrm_scanout_start(struct rdc_kchip *chip, u64 sim,
 				    ktime_t wall)
 {
-	u32 hz = chip->hw.core_hz;
+	u32 hz = rdc_hw_core_hz(chip->hw);
 	struct rdc_timing t;
 	u64 cycles;
 
-	rdc_hw_timing(&chip->hw, &t);
+	rdc_hw_timing(chip->hw, &t);
 	if (!t.pixclk_khz || t.v_total <= t.v_display)
 		return wall;
 	cycles = div_u64((u64)(t.v_total - t.v_display) * t.h_total * hz,

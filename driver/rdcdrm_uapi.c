@@ -161,7 +161,7 @@ int rdcdrm_ioctl_vram(struct drm_device *drm, void *data, struct drm_file *file)
 		return -EINVAL;
 	if (v->len > DRM_RDC_VRAM_MAX_BYTES)
 		return -E2BIG;
-	if ((u64)v->addr + v->len > chip->hw.vram_size)
+	if ((u64)v->addr + v->len > rdc_hw_vram_size(chip->hw))
 		return -EINVAL;
 	if (!v->len)
 		return 0;
@@ -174,12 +174,12 @@ int rdcdrm_ioctl_vram(struct drm_device *drm, void *data, struct drm_file *file)
 			goto out;
 		}
 		rdc_kchip_lock(chip);
-		rdc_hw_vram_write(&chip->hw, v->addr, buf, v->len);
+		rdc_hw_vram_write(chip->hw, v->addr, buf, v->len);
 		chip->state_gen++;
 		rdc_kchip_unlock(chip);
 	} else {
 		rdc_kchip_lock(chip);
-		rdc_hw_vram_read(&chip->hw, v->addr, buf, v->len);
+		rdc_hw_vram_read(chip->hw, v->addr, buf, v->len);
 		rdc_kchip_unlock(chip);
 		if (copy_to_user(up, buf, v->len))
 			ret = -EFAULT;
@@ -221,7 +221,7 @@ static int rdcdrm_submit_gem(struct rdcdrm_device *rd, struct drm_file *file,
 		return -EINVAL;
 	stride = ALIGN(row, sizeof(u32));
 	bytes = (u64)stride * s->height;
-	if (bytes > chip->hw.vram_size - RDCDRM_STAGING_BASE)
+	if (bytes > rdc_hw_vram_size(chip->hw) - RDCDRM_STAGING_BASE)
 		return -ENOSPC;
 	obj = drm_gem_object_lookup(file, s->handle);
 	if (!obj)
@@ -245,7 +245,7 @@ static int rdcdrm_submit_gem(struct rdcdrm_device *rd, struct drm_file *file,
 	words[7] = RDC_WH(s->width, s->height);
 	rdc_kchip_lock(chip);
 	for (y = 0; y < s->height; y++)
-		rdc_hw_vram_write(&chip->hw, RDCDRM_STAGING_BASE + y * stride,
+		rdc_hw_vram_write(chip->hw, RDCDRM_STAGING_BASE + y * stride,
 				  px + (size_t)y * s->pitch, row);
 	rdc_kchip_unlock(chip);
 	ret = rdc_kchip_submit(chip, words, RDCDRM_GEM_PRE_WORDS + s->count);
@@ -254,7 +254,7 @@ static int rdcdrm_submit_gem(struct rdcdrm_device *rd, struct drm_file *file,
 	if (!ret) {
 		rdc_kchip_lock(chip);
 		for (y = 0; y < s->height; y++)
-			rdc_hw_vram_read(&chip->hw,
+			rdc_hw_vram_read(chip->hw,
 					 RDCDRM_STAGING_BASE + y * stride,
 					 px + (size_t)y * s->pitch, row);
 		rdc_kchip_unlock(chip);
@@ -291,7 +291,7 @@ int rdcdrm_ioctl_submit(struct drm_device *drm, void *data,
 		ret = -EFAULT;
 		goto out;
 	}
-	ret = rdcfb_validate(words + pre, s->count, chip->hw.vram_size,
+	ret = rdcfb_validate(words + pre, s->count, rdc_hw_vram_size(chip->hw),
 			     &s->bad_word);
 	if (ret) {
 		drm_dbg(drm, "submit refused at word %u of %u\n", s->bad_word,

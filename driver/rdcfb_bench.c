@@ -123,7 +123,8 @@ static void rdcfb_bench_print(struct seq_file *m, struct rdc_kchip *chip,
 			      const char *what, u32 ops,
 			      const struct rdcfb_bench_run *r)
 {
-	u64 chip_ns = mul_u64_u32_div(r->busy, NSEC_PER_SEC, chip->hw.core_hz);
+	u64 chip_ns = mul_u64_u32_div(r->busy, NSEC_PER_SEC,
+				      rdc_hw_core_hz(chip->hw));
 	u64 sys = max_t(u64, r->sys_ns, 1);
 	u64 wall_x100 = div64_u64(r->dp_ns * RDCFB_PERCENT, sys);
 	u64 chip_x100 = div64_u64(chip_ns * RDCFB_PERCENT, sys);

@@ -167,7 +167,7 @@ static int rdcfb_var_timing(const struct fb_var_screeninfo *var,
 static int rdcfb_check_var(struct fb_var_screeninfo *var, struct fb_info *info)
 {
 	struct rdcfb_par *par = info->par;
-	u32 vram = par->chip->hw.vram_size, fmt, stride;
+	u32 vram = rdc_hw_vram_size(par->chip->hw), fmt, stride;
 	struct rdc_timing t;
 
 	if ((var->vmode & FB_VMODE_MASK) != FB_VMODE_NONINTERLACED ||
@@ -698,7 +698,7 @@ static void rdcfb_cpu_draw(struct rdc_kchip *chip, const struct rdcfb_op *op,
 	u32 w = op->w, h = op->h, wpr, x, y, i;
 	u8 *row;
 
-	if (!bytes || (u64)op->stride * op->vh > chip->hw.vram_size ||
+	if (!bytes || (u64)op->stride * op->vh > rdc_hw_vram_size(chip->hw) ||
 	    (u64)op->vw * bytes > op->stride || op->dx >= op->vw ||
 	    op->dy >= op->vh)
 		return;
@@ -741,12 +741,14 @@ static void rdcfb_cpu_draw(struct rdc_kchip *chip, const struct rdcfb_op *op,
 
 static void rdcfb_blank_locked(struct rdc_kchip *chip, int blank)
 {
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
+	struct rdc_hw_state st;
 	u32 ctl, pins;
 
 	ctl = rdc_hw_read(hw, RDC_REG_CONTROL) &
 	      ~(RDC_CONTROL_RESUME | RDC_CONTROL_SOFT_RESET);
-	pins = hw->pins_in;
+	rdc_hw_state(hw, &st);
+	pins = st.pins_in;
 	if (blank == FB_BLANK_UNBLANK) {
 		ctl |= RDC_CONTROL_SCANOUT_EN;
 		pins |= RDC_PIN_BL_EN;
@@ -762,7 +764,7 @@ static void rdcfb_op_run(struct rdcfb_par *par, const struct rdcfb_op *op,
 			 const u32 *data)
 {
 	struct rdc_kchip *chip = par->chip;
-	struct rdc_hw *hw = &chip->hw;
+	struct rdc_hw *hw = chip->hw;
 	u64 lo;
 	u32 i;
 
@@ -782,15 +784,14 @@ static void rdcfb_op_run(struct rdcfb_par *par, const struct rdcfb_op *op,
 		return;
 	}
 	/* the CPU draws: after what the DP has queued */
-	if ((hw->control & RDC_CONTROL_DP_EN) &&
-	    !(hw->dp_status & RDC_STATUS_DP_HALTED))
+	if (rdc_kchip_dp_runs_locked(chip))
 		rdc_kchip_drain_locked(chip);
 	rdcfb_cpu_draw(chip, op, data);
 	/* the CPU's writes pass no barrier: scanout on demand hears of them */
-	lo = min_t(u64, (u64)op->dy * op->stride, hw->vram_size);
+	lo = min_t(u64, (u64)op->dy * op->stride, rdc_hw_vram_size(hw));
 	rdc_hw_vram_touched(hw, lo,
 			    min_t(u64, (u64)op->h * op->stride,
-				  hw->vram_size - lo));
+				  rdc_hw_vram_size(hw) - lo));
 }
 
 /* Apply every queued record, in order (rdc_kchip_lock does). */
@@ -1002,8 +1003,7 @@ int rdcfb_sync(struct fb_info *info)
 	if (!preemptible())
 		return 0;
 	rdc_kchip_lock(chip);
-	if ((chip->hw.control & RDC_CONTROL_DP_EN) &&
-	    !(chip->hw.dp_status & RDC_STATUS_DP_HALTED))
+	if (rdc_kchip_dp_runs_locked(chip))
 		rdc_kchip_drain_locked(chip);
 	rdc_kchip_unlock(chip);
 	return 0;
@@ -1060,7 +1060,7 @@ int rdcfb_fb_setup(struct fb_info *info, const char *mode)
 	rdcfb_dev_of(par->chip)->info = info;
 	info->fbops = &rdcfb_ops;
 	info->screen_buffer = par->chip->vram;
-	info->screen_size = par->chip->hw.vram_size;
+	info->screen_size = rdc_hw_vram_size(par->chip->hw);
 	info->pseudo_palette = par->pseudo_palette;
 	info->flags = FBINFO_VIRTFB | FBINFO_READS_FAST |
 		      FBINFO_HWACCEL_FILLRECT | FBINFO_HWACCEL_COPYAREA |
@@ -1069,7 +1069,7 @@ int rdcfb_fb_setup(struct fb_info *info, const char *mode)
 	info->fix.type = FB_TYPE_PACKED_PIXELS;
 	info->fix.ypanstep = 1;
 	info->fix.accel = FB_ACCEL_NONE;
-	info->fix.smem_len = par->chip->hw.vram_size;
+	info->fix.smem_len = rdc_hw_vram_size(par->chip->hw);
 	ret = fb_alloc_cmap(&info->cmap, RDC_CLUT_ENTRIES, 0);
 	if (ret)
 		return ret;

@@ -53,7 +53,8 @@ static int rdcfb_ioc_submit(struct rdc_kchip *chip, void __user *arg)
 		ret = -EFAULT;
 		goto out;
 	}
-	ret = rdcfb_validate(words, s.count, chip->hw.vram_size, &s.bad_word);
+	ret = rdcfb_validate(words, s.count, rdc_hw_vram_size(chip->hw),
+			     &s.bad_word);
 	if (ret) {
 		dev_dbg(chip->dev, "submit refused at word %u of %u\n",
 			s.bad_word, s.count);

@@ -16,6 +16,7 @@
  * charges whole bursts.  The tests hold per-pixel reference versions
  * (tests/unit/ref_aa.c).
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define RDC_AA_FULL 255u /* coverage of a pixel the shape covers fully */

@@ -14,6 +14,7 @@
  * on the arc's side of the line through the two end points (that line
  * included).  Everything is integer: sines from a quarter-wave table.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define ARC_TURN    65536u

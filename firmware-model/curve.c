@@ -13,6 +13,7 @@
  * their end points, and a B-spline segment exactly on its join
  * (q1 + 4 q2 + q3) / 6 rounded, whatever the rounding on the way.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define CV_FRAC 32

@@ -12,6 +12,7 @@
  * changes, as every rejected command.  A BTC stream's size says whether
  * it is whole, and any bytes are valid levels and bitmaps.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "img_int.h"
 
 /* A bounded byte and bit reader over the payload. */

@@ -9,8 +9,9 @@
  * decoder in RDC_DP_FETCH.  Only WAIT_VBLANK/WAIT_LINE (waiting for the
  * beam) and READBACK (waiting for RDATA space) suspend after they start.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
-#include "rdc_dp_view.h"
+#include "rdc_dp_host.h"
 #include "../hw-sim/bus.h"
 
 /* dp->src of a command fetched from a display list in VRAM */
@@ -702,6 +703,11 @@ static const struct rdc_dp_ops rdc_dp_ops = {
 	.reset = dp_reset,
 	.run = dp_run,
 };
+
+size_t rdc_dp_size(void)
+{
+	return sizeof(struct rdc_dp);
+}
 
 bool rdc_dp_view_get(const struct rdc_hw *hw, struct rdc_dp_view *s)
 {

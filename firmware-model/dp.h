@@ -9,6 +9,7 @@
 #define RDC_DP_H
 
 #include "../hw-sim/hw.h"
+#include "rdc_dp_host.h"
 #include "image.h"
 #include "geom3d.h"
 
@@ -193,11 +194,5 @@ struct rdc_dp {
 	uint16_t v3_idx[3 * RDC_MESH_MAX_TRIS];
 	uint32_t v3_edge[3 * RDC_MESH_MAX_TRIS];
 };
-
-/* Initialise and connect to the chip (rdc_hw_set_dp). */
-void rdc_dp_init(struct rdc_dp *dp, struct rdc_hw *hw);
-
-/* The built-in 8x16 font, code page 437 order, bit 7 leftmost. */
-extern const uint8_t rdc_font8x16[256 * 16];
 
 #endif /* RDC_DP_H */

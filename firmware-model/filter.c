@@ -11,6 +11,7 @@
  * the source (bottom up when it lies below), so an overlapping or
  * in-place filter reads only pixels it has not yet written.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "img_int.h"
 
 static const int32_t sobel_x[9] = { -1, 0, 1, -2, 0, 2, -1, 0, 1 };

@@ -26,6 +26,7 @@
  * were there before may also take in inside pixels next to them within
  * the box; without an overflow the fill is exact.)
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define FLOOD_READ  128u /* pixels read per span */

@@ -7,6 +7,7 @@
  * enjoy."), each glyph two rows down in its cell; box drawing and block
  * elements fill the cell so they join.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp.h"
 
 /* one glyph a line */

@@ -40,6 +40,7 @@
  * front plane, the eye included, has Z > 0 and is clipped, so nothing
  * behind the eye is drawn.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "geom3d_int.h"
 #include "../hw-sim/bus.h"
 

@@ -11,6 +11,7 @@
  * them, MAP_BUILD turns a histogram into a map, and the map is applied to
  * pixels (any format) or to the CLUT (indexed formats, grey images).
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 #include "img_int.h"
 

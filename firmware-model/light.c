@@ -18,6 +18,7 @@
  * power for every n <= 255); the sum is exact in 64 bits and rounded once
  * to 0..255, clamped.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "geom3d_int.h"
 
 #define L_FRAC	     16

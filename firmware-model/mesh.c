@@ -14,6 +14,7 @@
  * face.  Clipped vertices are computed from the inside end of each edge,
  * so triangles sharing an edge meet on the same pixels.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "geom3d_int.h"
 #include "../hw-sim/bus.h"
 

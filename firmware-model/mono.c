@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /* HOST_BLIT, MONO and TEXT: rows of pixels from command data. */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "raster.h"
 
 /* Byte k of a little-endian word stream. */

@@ -18,6 +18,7 @@
  * collapsed to a point, as at the poles of a lid) the nearest row's
  * normal at the same u is used.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "geom3d_int.h"
 #include "../hw-sim/bus.h"
 

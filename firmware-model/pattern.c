@@ -7,6 +7,7 @@
  * dp_fill_span: a solid span is one bus span, a patterned one a span per
  * RDC_DP_CHUNK pixels.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define PAT_SIZE	8

@@ -14,6 +14,7 @@
  * of more than RDC_DP_PEN_PIECES pieces is drawn in batches of that many;
  * only pieces of different batches may overlap.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define PEN_FRAC 8 /* fractional bits of the stroke geometry */

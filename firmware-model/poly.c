@@ -30,6 +30,7 @@
  * is scan-converted unclipped with rows and spans clipped instead, which
  * gives the same pixels.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define FX_SHIFT 16

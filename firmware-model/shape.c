@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /* RECT, FILL_RECT, CIRCLE, ELLIPSE and their fills (span.c's runs). */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "raster.h"
 
 /*

@@ -11,6 +11,7 @@
  * The tests hold the plain per-pixel versions these are checked against
  * (tests/unit/ref*.c).
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "raster.h"
 
 struct rdc_rect rdc_dp_eff_clip(const struct rdc_dp *dp)

@@ -26,6 +26,7 @@
  * WRITE, read-modify-write for both) and, if any pixel passes, one DST
  * span (read-modify-write when only some pass).
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define TRI_VERTS 3

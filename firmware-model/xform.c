@@ -10,6 +10,7 @@
  * quotient is in pixels.  Products of a 32-bit entry and a 16-bit
  * coordinate fit 48 bits; three of them summed fit 64 bits with room.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
 #define XF_ONE (1 << 16) /* 1.0 in 15.16 */

@@ -9,6 +9,7 @@
  * by burst.  That keeps a full-screen fill within a few microseconds of
  * host time beyond the memset the DP does itself.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "hw_priv.h"
 
 uint64_t rdc_bus_read_cost(uint32_t *row, uint64_t addr, uint64_t len)

@@ -7,6 +7,7 @@
  * to the shadow only and the whole shadow is copied in at vblank, so a
  * palette change made during a frame shows from the next frame on.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "hw_priv.h"
 
 #define RGB_MASK 0x00ffffffu

@@ -4,6 +4,7 @@
  * Command queues: the FIFO register port, the ring buffer in VRAM, and the
  * readback FIFO the DP fills for the host.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "hw_priv.h"
 
 #define WORD_BYTES     4u

@@ -12,6 +12,7 @@
  * CRTC catches up first, so the result is the same as a beam that runs
  * continuously.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "hw_priv.h"
 
 #define HZ_PER_KHZ	 1000u

@@ -4,6 +4,7 @@
  * The RDC-1 chip: creation and reset, the register file, interrupts, pins,
  * host VRAM access and the run loop.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "hw_priv.h"
 
 #define HZ_PER_KHZ 1000u
@@ -159,6 +160,77 @@ void rdc_hw_consumer_detach(struct rdc_hw *hw)
 	if (hw->consumers)
 		hw->consumers--;
 	rdc_scan_update(hw);
+}
+
+size_t rdc_hw_size(void)
+{
+	return sizeof(struct rdc_hw);
+}
+
+uint32_t rdc_hw_vram_size(const struct rdc_hw *hw)
+{
+	return hw->vram_size;
+}
+
+uint32_t rdc_hw_core_hz(const struct rdc_hw *hw)
+{
+	return hw->core_hz;
+}
+
+const uint8_t *rdc_hw_vram(const struct rdc_hw *hw)
+{
+	return hw->vram;
+}
+
+void rdc_hw_perf(const struct rdc_hw *hw, struct rdc_perf *p)
+{
+	*p = hw->perf;
+}
+
+void rdc_hw_state(const struct rdc_hw *hw, struct rdc_hw_state *s)
+{
+	s->control = hw->control;
+	s->irq_status = hw->irq_status;
+	s->irq_enable = hw->irq_enable;
+	s->dp_status = hw->dp_status;
+	s->fence = hw->fence;
+	s->pins_in = hw->pins_in;
+	s->pins_out = hw->pins_out;
+	s->fifo_count = hw->fifo_count;
+	s->in_reset = hw->in_reset;
+	s->dp_active = hw->dp_active;
+	s->scanning = hw->crtc.running;
+	s->in_vblank = hw->crtc.in_vblank;
+	s->frame_start = hw->crtc.frame_start;
+	s->frame_cycles = hw->crtc.frame_cycles;
+	s->frame_count = hw->crtc.frame_count;
+	s->fb_base = hw->crtc.fb_base;
+	s->fb_stride = hw->crtc.fb_stride;
+	s->fb_format = hw->crtc.fb_format;
+	s->width = hw->crtc.shadow.h_display;
+	s->height = hw->crtc.shadow.v_display;
+	s->next_line = hw->crtc.next_line;
+}
+
+void rdc_hw_get_trace(const struct rdc_hw *hw, rdc_trace_fn *fn, void **ctx)
+{
+	*fn = hw->trace_fn;
+	*ctx = hw->trace_ctx;
+}
+
+bool rdc_hw_vram_hooked(const struct rdc_hw *hw)
+{
+	return hw->vram_hook != NULL;
+}
+
+uint64_t rdc_hw_next_vblank(struct rdc_hw *hw)
+{
+	return rdc_port_next_vblank(hw);
+}
+
+uint64_t rdc_hw_next_line(struct rdc_hw *hw, uint32_t line)
+{
+	return rdc_port_next_line(hw, line);
 }
 
 bool rdc_hw_scanout_watched(const struct rdc_hw *hw)

@@ -19,36 +19,21 @@
 #ifndef RDC_HW_H
 #define RDC_HW_H
 
+/*
+ * struct rdc_hw and the DP port are the core's own: hosts see the chip
+ * through rdc_chip.h, where it is opaque.  The core's sources and its
+ * unit tests say so before they include this.
+ */
+#ifndef RDC_CORE_INTERNAL
+#error "hw.h is private to hw-sim/ and firmware-model/: include rdc_chip.h"
+#endif
+
 /* the types and host waits a server of the chip sees, and their documentation */
 #include "rdc_chip.h"
 #include "rdc_port.h"
 #include "rdc_regs.h"
 
-#define RDC_NEVER		UINT64_MAX /* "no such time" */
-#define RDC_FIFO_LOWWATER_RESET 64u	   /* FIFO_LOWWATER after reset */
-/* LINE_COMPARE after reset: beyond any V_TOTAL, so RDC_IRQ_LINE never fires */
-#define RDC_LINE_COMPARE_RESET RDC_CRTC_MAX_TOTAL
-#define RDC_CURSOR_FG_RESET    0x00ffffffu
-#define RDC_CURSOR_BG_RESET    0x00000000u
-
 struct rdc_hw;
-
-/*
- * A VRAM write is about to land (rdc_hw_set_vram_hook): `count` runs of
- * `len` bytes, `stride` bytes apart from `addr`, by the DP (who = 0) or the
- * host aperture (who = 1), whose bus access ended at `time`.  Called
- * before the bytes change: the DP writes them after the port call that
- * charged them returns and before its next port call; the host's are
- * copied right after the call.  RDC_VRAM_MORE in `who`: another run of
- * the same port call (rdc_port_runs), whose runs are all written after
- * it returns.  Nothing may be written from the hook.
- */
-#define RDC_VRAM_BY_DP	 0u
-#define RDC_VRAM_BY_HOST 1u
-#define RDC_VRAM_MORE	 2u
-typedef void (*rdc_vram_hook_fn)(void *ctx, uint64_t time, uint32_t addr,
-				 uint32_t len, uint32_t count, uint32_t stride,
-				 unsigned int who);
 
 /*
  * The display processor as the chip sees it (firmware-model/ fills this
@@ -66,25 +51,6 @@ struct rdc_dp_ops {
 	 * if it waits for the host (empty queues, full RDATA, halted).
 	 */
 	uint64_t (*run)(void *dp, uint64_t until);
-};
-
-struct rdc_hw_config {
-	uint32_t vram_size; /* bytes, multiple of 4 */
-	uint32_t core_hz;   /* 0 = RDC_DEFAULT_CORE_HZ */
-};
-
-/*
- * Performance counters (RDC_REG_PERF_*).  The chip's bus model counts
- * `stall`; the display processor maintains the others (it knows where a
- * command starts and ends and how many pixels it wrote).
- */
-struct rdc_perf {
-	uint64_t busy;	 /* cycles the DP spent executing commands */
-	uint64_t stall;	 /* of which, cycles waiting behind scanout fetches */
-	uint64_t pixels; /* pixels written by the DP */
-	uint32_t cmds;	 /* commands executed */
-	uint32_t last_cycles; /* cycles of the last command */
-	uint32_t last_opcode;
 };
 
 /* CRTC working state (what was latched at the last vblank). */
@@ -233,150 +199,6 @@ struct rdc_hw {
 	uint32_t pins_out; /* RDC_PIN_* */
 	int dp_active;	   /* the DP has work or is inside a command */
 };
-
-/* ---- Host side ----------------------------------------------------------- */
-
-/*
- * Sizes of the memory the caller hands to rdc_hw_init: VRAM of cfg->vram_size
- * bytes and two frame buffers of frame_cap pixels each; frame_cap must hold
- * the largest mode the host will set (RDC_CRTC_MAX_DISPLAY^2 covers any).
- */
-void rdc_hw_init(struct rdc_hw *hw, const struct rdc_hw_config *cfg,
-		 uint8_t *vram, uint32_t *frame0, uint32_t *frame1,
-		 uint32_t frame_cap);
-/*
- * Power-on reset: registers to their reset values, 640x480@60 XRGB8888 at
- * VRAM 0 (stride 2560) in force at once (the frame starts at hw->now),
- * queues empty, counters zero, time kept.  VRAM is not cleared.  Reset
- * values not in rdc_regs.h: FIFO_LOWWATER RDC_FIFO_LOWWATER_RESET,
- * LINE_COMPARE RDC_LINE_COMPARE_RESET (never matches), CURSOR_* 0 with
- * CURSOR_FG/BG RDC_CURSOR_FG/BG_RESET, ring registers 0.  The CLUT holds
- * the 16 VGA text colours (0-15), a 6x6x6 colour cube with levels 0x33
- * apart (16 + 36 r + 6 g + b), and a grey ramp 8, 18, ... 238 (232-255).
- * If frame_cap cannot hold 640x480 the reset raises RDC_ERR_MODE and
- * scanout waits for a valid mode: program one, then clear and set
- * CONTROL.SCANOUT_EN.  rdc_hw_init drives RESET_N and BL_EN high.
- */
-void rdc_hw_reset(struct rdc_hw *hw);
-
-/*
- * Register access at hw->now.  Bad offsets (outside the window, unaligned,
- * holes) and writes to R registers are logged as RDC_ERR_REG with the
- * offset in ERR_INFO, and otherwise ignored; such a read returns 0.  Where
- * rdc_regs.h is silent:
- *  - Timing validation at latch, beyond rdc_regs.h's ordering: DISPLAY >= 1
- *    (at most RDC_CRTC_MAX_DISPLAY), V_DISPLAY < V_TOTAL (there is a
- *    vertical blanking), PIXCLK_KHZ in [RDC_PIXCLK_MIN_KHZ,
- *    RDC_PIXCLK_MAX_KHZ], a line lasts at least one core cycle, and
- *    H_DISPLAY * V_DISPLAY fits frame_cap.  A refusal is RDC_ERR_MODE with
- *    ERR_INFO = RDC_REG_H_TOTAL, reported once per programming.  An
- *    unknown FB_FORMAT is refused at latch the same way with ERR_INFO =
- *    RDC_REG_FB_FORMAT (the old format stays).  An unknown MODE_PRESET is
- *    RDC_ERR_MODE with ERR_INFO = RDC_REG_MODE_PRESET.
- *  - A new timing latched at vblank goes in force at the next frame start
- *    (the rest of this frame's blanking keeps the old one).  Turning
- *    SCANOUT_EN on latches everything at once and starts a frame at
- *    hw->now; turning it off stops all scanout events (a fetch already on
- *    the bus completes).
- *  - CLUT_DATA reads return the last value written to the entry, also in
- *    latched mode before the vblank applies it.
- *  - The ring is checked when RING_EN is set and at every ring register
- *    write while it is set; a failure is RDC_ERR_RING with the offset of
- *    the register written in ERR_INFO.  A RING_HEAD write while RING_EN is
- *    set is refused with RDC_ERR_REG.  STATUS.RING_EMPTY is HEAD == TAIL.
- *  - FIFO_LOWWATER is clamped to RDC_FIFO_DEPTH.
- *  - A LO read snapshots its own HI register; a HI read returns the
- *    snapshot if its LO was the last LO read, else the live value.
- *  - CONTROL.RESUME sets dp_resume for the DP to find.
- *  - While RESET_N is low, writes are ignored and reads return the reset
- *    values; releasing RESET_N resets the chip again.
- * Scanout events that fall at the very time of an access (a register
- * write, a host VRAM write, a DP access) happen before it.
- */
-uint32_t rdc_hw_read(struct rdc_hw *hw, uint32_t reg);
-void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
-/*
- * Command words for FIFO_DATA in bulk: the same as rdc_hw_write of each
- * word in turn at hw->now (trace points included), except that it stops
- * at a full FIFO instead of overflowing.  Returns how many words were
- * taken (all of them while RESET_N holds the chip, which ignores writes).
- */
-uint32_t rdc_hw_fifo_push(struct rdc_hw *hw, const uint32_t *words, uint32_t n);
-
-/*
- * Host access to VRAM through the aperture, at hw->now (not charged to the DP).
- * Return 0, or -1 if the range leaves VRAM (nothing is copied).
- */
-int rdc_hw_vram_read(struct rdc_hw *hw, uint32_t addr, void *buf, uint32_t len);
-int rdc_hw_vram_write(struct rdc_hw *hw, uint32_t addr, const void *buf,
-		      uint32_t len);
-
-/*
- * Advance simulated time to at least t, running the DP and scanout
- * interleaved (see rdc_dp_ops.run for overshoot): the DP runs, then the
- * chip idles to min(its wake time, t), and so on.  A DP that returns a
- * wake time not after hw->now gets one idle cycle, so it cannot hang the
- * loop.
- */
-void rdc_hw_run_until(struct rdc_hw *hw, uint64_t t);
-/*
- * The same, but stop at the exact cycle the DP runs out of work it can do
- * without the host (queues empty, waiting for RDATA space, halted or
- * disabled): returns 1 then, 0 once t is reached.  A host that waits for
- * the DP to finish resumes at the cycle it finished.
- */
-int rdc_hw_run_until_idle(struct rdc_hw *hw, uint64_t t);
-
-/* Drive the input pins (RDC_PIN_RESET_N, RDC_PIN_BL_EN). */
-void rdc_hw_set_pins(struct rdc_hw *hw, uint32_t pins_in);
-uint32_t rdc_hw_pins(struct rdc_hw *hw);
-
-/* Connect the display processor, a frame listener and a tracer. */
-void rdc_hw_set_dp(struct rdc_hw *hw, const struct rdc_dp_ops *ops, void *dp);
-void rdc_hw_set_frame_fn(struct rdc_hw *hw, rdc_frame_fn fn, void *ctx);
-void rdc_hw_set_trace(struct rdc_hw *hw, rdc_trace_fn fn, void *ctx);
-/*
- * Watch VRAM writes (pixel history): fn sees every write the DP or the host
- * makes, once per span, column or run, never per pixel.  It changes no
- * cycle and no byte.  NULL (the default) turns it off; the write paths
- * then test one pointer.
- */
-void rdc_hw_set_vram_hook(struct rdc_hw *hw, rdc_vram_hook_fn fn, void *ctx);
-/*
- * From the hook: only writes that reach bytes [lo, hi) matter to it now
- * (0, 0: none).  Until a CRTC register write (FB_*, timing, preset) or a
- * reset, which widen it to all of VRAM, the chip calls it for no other.
- */
-void rdc_hw_set_vram_watch(struct rdc_hw *hw, uint32_t lo, uint32_t hi);
-
-/* Does a write to [addr, end) concern the watcher? */
-static inline bool rdc_vram_watched(const struct rdc_hw *hw, uint32_t addr,
-				    uint64_t end)
-{
-	return addr < hw->vram_watch_hi && end > hw->vram_watch_lo;
-}
-/*
- * A host that must not wait for a long command (a daemon serving others,
- * a kernel that must reschedule) gets fn(ctx) called every RDC_POLL_EVERY
- * VRAM accesses or compute steps of the DP, and at every turn of the run
- * loop: always where the DP holds no pointer into VRAM and hw->now is
- * current.  fn may suspend the caller (switch stacks) and resume it
- * later; the chip is then mid-command and nothing but reads may touch it
- * meanwhile.  It changes no cycle and no pixel.  NULL turns it off.
- */
-#define RDC_POLL_EVERY 64u
-void rdc_hw_set_poll(struct rdc_hw *hw, void (*fn)(void *ctx), void *ctx);
-
-/*
- * The last complete frame and its size: NULL before the first, and for
- * a frame that scanout on demand dropped (rdc_hw_set_on_demand).  Lines
- * of it that wait unconverted are converted first: a look.
- */
-const uint32_t *rdc_hw_frame(struct rdc_hw *hw, uint32_t *width,
-			     uint32_t *height);
-
-/* Beam position at hw->now (y >= V_DISPLAY in vertical blanking). */
-void rdc_hw_beam(struct rdc_hw *hw, uint32_t *x, uint32_t *y);
 
 /* The timing of a preset; 0, or -1 for an unknown preset. */
 int rdc_preset_timing(uint32_t preset, struct rdc_timing *t);
@@ -548,5 +370,15 @@ uint64_t rdc_port_next_line(struct rdc_hw *hw, uint32_t line);
 
 /* Move simulated time to t (>= now) with the DP idle; scanout catches up. */
 void rdc_port_idle_until(struct rdc_hw *hw, uint64_t t);
+
+/* Connect the display processor (rdc_dp_init does). */
+void rdc_hw_set_dp(struct rdc_hw *hw, const struct rdc_dp_ops *ops, void *dp);
+
+/* Does a write to [addr, end) concern the watcher? */
+static inline bool rdc_vram_watched(const struct rdc_hw *hw, uint32_t addr,
+				    uint64_t end)
+{
+	return addr < hw->vram_watch_hi && end > hw->vram_watch_lo;
+}
 
 #endif /* RDC_HW_H */

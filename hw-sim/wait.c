@@ -6,6 +6,7 @@
  * backend and the same script waiting through the kernel driver end their
  * waits at the same cycle and give the same frames and cycle counts.
  */
+#define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "hw_priv.h"
 
 /*

@@ -19,6 +19,7 @@
 #ifndef RDC_MCU_SCENE_H
 #define RDC_MCU_SCENE_H
 
+#define RDC_CORE_INTERNAL /* the MCU image holds the chip in static memory: hw.h, dp.h */
 #include "rdc_port.h"
 #include "dp.h"
 #include "hw.h"

@@ -31,6 +31,7 @@
  * daemon's host clock (rdcd_wall_ns) is the harness's: it moves with the
  * input.  Built and run by `make fuzz`.
  */
+#define RDC_CORE_INTERNAL /* the fuzz target reaches into the core: hw.h, dp.h */
 #include <errno.h>
 #include <stdarg.h>
 #include <stdbool.h>

@@ -27,6 +27,7 @@
  * default budget of ten simulated seconds: minutes of fuzzing time), and
  * fopen reads only regular files of at most FZ_MAX_FILE bytes.
  */
+#define RDC_CORE_INTERNAL /* the fuzz target reaches into the core: hw.h, dp.h */
 #include <errno.h>
 #include <stddef.h>
 #include <stdint.h>

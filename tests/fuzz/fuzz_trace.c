@@ -25,6 +25,7 @@
  * move time by at most FZ_MAX_STEP cycles and cut waits to FZ_MAX_WAIT,
  * once they have checked the bound above.
  */
+#define RDC_CORE_INTERNAL /* the fuzz target reaches into the core: hw.h, dp.h */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>

@@ -28,7 +28,8 @@
 #include <unistd.h>
 #include <zlib.h>
 
-#include "hw.h"
+#include "rdc_chip.h"
+#include "rdc_regs.h"
 #include "rdc.h"
 #include "rdcfb_ioctl.h"
 #include "tap.h"

@@ -40,7 +40,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "hw.h"
+#include "rdc_chip.h"
+#include "rdc_regs.h"
 #include "rdcfb_ioctl.h"
 #include "tap.h"
 

@@ -41,7 +41,8 @@
 #include <unistd.h>
 #include <zlib.h>
 
-#include "dp.h"
+#include "rdc_chip.h"
+#include "rdc_regs.h"
 #include "rdcfb_ioctl.h"
 
 #define GLYPH_W	       8

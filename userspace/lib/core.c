@@ -12,7 +12,6 @@
 #include <strings.h>
 #include <zlib.h>
 
-#include "hw.h"
 #include "rdc_priv.h"
 
 /*

@@ -20,8 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "hw.h"
-#include "rdc_dp_view.h"
+#include "rdc_dp_host.h"
 #include "rdc_priv.h"
 #include "rdc_proto.h"
 
@@ -86,7 +85,7 @@ static uint64_t bytes_hash(const uint8_t *vram,
 /* The writes of the last access have landed: complete what they opened. */
 static void hist_settle(struct rdc_history *h)
 {
-	const uint8_t *vram = h->hw->vram;
+	const uint8_t *vram = rdc_hw_vram(h->hw);
 	size_t i, k = h->open;
 
 	for (i = h->open; i < h->n; i++) {
@@ -118,12 +117,16 @@ static void hist_context(const struct rdc_history *h,
 {
 	const struct rdc_hw *hw = h->hw;
 	struct rdc_dp_view dp;
+	struct rdc_hw_state st;
+	struct rdc_perf perf;
 
 	e->size = sizeof(*e);
 	e->cycle = time;
-	e->cmd_index = hw->perf.cmds;
+	rdc_hw_perf(hw, &perf);
+	rdc_hw_state(hw, &st);
+	e->cmd_index = perf.cmds;
 	e->line = h->line_set ? h->line : h->dev->src_line;
-	e->frame = hw->crtc.frame_count;
+	e->frame = st.frame_count;
 	if (who == RDC_VRAM_BY_HOST || !rdc_dp_view_get(hw, &dp)) {
 		e->opcode = RDC_HISTORY_OP_HOST;
 		e->source = RDC_HISTORY_SRC_HOST;
@@ -173,12 +176,18 @@ static struct hist_rec *hist_add(struct rdc_history *h)
 static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 		     uint64_t a, uint64_t len)
 {
-	const struct rdc_crtc *c = &h->hw->crtc;
-	uint64_t base = c->fb_base, st = c->fb_stride, end = a + len;
-	uint32_t bpp = rdc_format_bpp(c->fb_format);
-	uint32_t x1 = RDC_MIN(h->x1, c->shadow.h_display);
-	uint32_t y1 = RDC_MIN(h->y1, c->shadow.v_display);
+	struct rdc_hw_state cs, *c = &cs;
+	uint64_t base, st, end = a + len;
+	uint32_t bpp, x1, y1, vram_size = rdc_hw_vram_size(h->hw);
+	const uint8_t *vram = rdc_hw_vram(h->hw);
 	uint64_t y, ylo, yhi;
+
+	rdc_hw_state(h->hw, c);
+	base = c->fb_base;
+	st = c->fb_stride;
+	bpp = rdc_format_bpp(c->fb_format);
+	x1 = RDC_MIN(h->x1, c->width);
+	y1 = RDC_MIN(h->y1, c->height);
 
 	if (!bpp || !st || end <= base || h->x0 >= x1 || h->y0 >= y1)
 		return;
@@ -206,7 +215,7 @@ static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 			uint64_t at = row + bit / 8;
 			struct hist_rec *r;
 
-			if (at + (bpp + 7) / 8 > h->hw->vram_size)
+			if (at + (bpp + 7) / 8 > vram_size)
 				break;
 			r = hist_add(h);
 			if (!r)
@@ -219,10 +228,10 @@ static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 			r->bpp = (uint8_t)bpp;
 			r->bit = (uint8_t)(bit % 8);
 			r->partial = bpp < 8 && (at == a || at == end - 1);
-			r->e.fetched = !c->running	? -1 :
+			r->e.fetched = !c->scanning	? -1 :
 				       c->next_line > y ? 1 :
 							  0;
-			r->e.before = px_get(h->hw->vram, r);
+			r->e.before = px_get(vram, r);
 			r->e.after = r->e.before;
 		}
 	}
@@ -231,11 +240,13 @@ static void hist_run(struct rdc_history *h, const struct rdc_history_entry *ctx,
 /* The bytes [lo, hi) the watched pixels of the screen occupy now. */
 static bool watch_bytes(const struct rdc_history *h, uint64_t *lo, uint64_t *hi)
 {
-	const struct rdc_crtc *c = &h->hw->crtc;
-	uint32_t bpp = rdc_format_bpp(c->fb_format);
-	uint32_t x1 = RDC_MIN(h->x1, c->shadow.h_display);
-	uint32_t y1 = RDC_MIN(h->y1, c->shadow.v_display);
+	struct rdc_hw_state cs, *c = &cs;
+	uint32_t bpp, x1, y1;
 
+	rdc_hw_state(h->hw, c);
+	bpp = rdc_format_bpp(c->fb_format);
+	x1 = RDC_MIN(h->x1, c->width);
+	y1 = RDC_MIN(h->y1, c->height);
 	if (!bpp || h->x0 >= x1 || h->y0 >= y1)
 		return false;
 	*lo = c->fb_base + (uint64_t)h->y0 * c->fb_stride +
@@ -365,7 +376,7 @@ int rdc_history_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
 				      "pixel history needs a sim: device (the "
 				      "writes are watched inside the "
 				      "simulator)");
-	if (dev->hist || hw->vram_hook)
+	if (dev->hist || rdc_hw_vram_hooked(hw))
 		return rdc_err_detail(RDC_E_BUSY,
 				      "a history is already open on this "
 				      "device");
@@ -392,7 +403,7 @@ int rdc_history_attach(rdc_history *h, rdc_dev *dev)
 
 	if (!h || h->dev || h->remote || !hw)
 		return RDC_E_INVAL;
-	if (dev->hist || hw->vram_hook)
+	if (dev->hist || rdc_hw_vram_hooked(hw))
 		return RDC_E_BUSY;
 	h->dev = dev;
 	h->hw = hw;

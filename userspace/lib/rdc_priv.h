@@ -14,7 +14,9 @@
 
 #include <stdbool.h>
 
-#include "hw.h"
+#include "rdc_chip.h"
+#include "rdc_port.h"
+#include "rdc_regs.h"
 #include "rdc.h"
 #include "rdc_server.h"
 

@@ -52,7 +52,6 @@
 #include <string.h>
 #include <zlib.h>
 
-#include "hw.h"
 #include "kchip.h"
 #include "rdc_priv.h"
 #include "rdc_proto.h"
@@ -93,7 +92,7 @@ static const struct rdc_backend rdc_backend_rec;
 
 static uint64_t rec_now(const struct rdc_rec *r)
 {
-	return r->hw ? r->hw->now : 0;
+	return r->hw ? rdc_hw_now(r->hw) : 0;
 }
 
 static void rec_put(struct rdc_rec *r, const void *p, size_t n)
@@ -136,8 +135,9 @@ static void rec_steps_put(struct rdc_rec *r, uint64_t t, uint64_t cycles)
 /* Time that moved outside the handle, as a step, before the next record. */
 static void rec_flush_moved(struct rdc_rec *r)
 {
-	if (r->moved && r->hw && r->hw->now > r->moved_from)
-		rec_steps_put(r, r->moved_from, r->hw->now - r->moved_from);
+	if (r->moved && r->hw && rdc_hw_now(r->hw) > r->moved_from)
+		rec_steps_put(r, r->moved_from,
+			      rdc_hw_now(r->hw) - r->moved_from);
 	r->moved = false;
 }
 
@@ -739,7 +739,7 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 	uint32_t v;
 	int ret;
 
-	if (op != REC_POWER && !p->untimed && hw->now != t)
+	if (op != REC_POWER && !p->untimed && rdc_hw_now(hw) != t)
 		p->res->mismatches++;
 	switch (op) {
 	case REC_REG_WRITE:
@@ -930,15 +930,17 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 			/* untimed: the replay ends where its operations do */
 			if (p.untimed)
 				break;
-			if (hw->now < t && t - hw->now > REC_MAX_CYCLES) {
+			if (rdc_hw_now(hw) < t &&
+			    t - rdc_hw_now(hw) > REC_MAX_CYCLES) {
 				ret = rp_too_much(&p, "END",
 						  "cycles to its time",
-						  t - hw->now, REC_MAX_CYCLES);
+						  t - rdc_hw_now(hw),
+						  REC_MAX_CYCLES);
 				break;
 			}
-			if (hw->now < t)
+			if (rdc_hw_now(hw) < t)
 				rdc_hw_run_until(hw, t);
-			if (hw->now != t)
+			if (rdc_hw_now(hw) != t)
 				p.res->mismatches++;
 			break;
 		}
@@ -957,7 +959,7 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 		p.res->records++;
 	}
 	if (p.dev)
-		p.res->time = rdc_sim_hw(p.dev)->now;
+		p.res->time = rdc_hw_now(rdc_sim_hw(p.dev));
 	fclose(p.f);
 	free(p.buf);
 	free(p.words);

@@ -9,8 +9,7 @@
 #include <string.h>
 #include <sys/mman.h>
 
-#include "dp.h"
-#include "hw.h"
+#include "rdc_dp_host.h"
 #include "rdc_priv.h"
 
 #define SIM_VRAM_DEFAULT (16u << 20)
@@ -29,8 +28,8 @@
  */
 
 struct sim {
-	struct rdc_hw hw;
-	struct rdc_dp dp;
+	struct rdc_hw *hw; /* rdc_hw_size() bytes */
+	struct rdc_dp *dp; /* rdc_dp_size() bytes */
 	uint8_t *vram;
 	uint32_t *frame[2];
 	size_t vram_len;
@@ -167,6 +166,8 @@ static void sim_free(struct sim *s)
 	sim_big_free(s->vram, s->vram_len);
 	sim_big_free(s->frame[0], SIM_FRAME_CAP * sizeof(uint32_t));
 	sim_big_free(s->frame[1], SIM_FRAME_CAP * sizeof(uint32_t));
+	free(s->dp);
+	free(s->hw);
 	free(s);
 }
 
@@ -187,14 +188,16 @@ static int sim_open(rdc_dev *dev, const char *opts)
 	s->vram = sim_big_alloc(cfg.vram_size);
 	s->frame[0] = sim_big_alloc(SIM_FRAME_CAP * sizeof(uint32_t));
 	s->frame[1] = sim_big_alloc(SIM_FRAME_CAP * sizeof(uint32_t));
-	if (!s->vram || !s->frame[0] || !s->frame[1]) {
+	s->hw = calloc(1, rdc_hw_size());
+	s->dp = calloc(1, rdc_dp_size());
+	if (!s->vram || !s->frame[0] || !s->frame[1] || !s->hw || !s->dp) {
 		sim_free(s);
 		return RDC_E_NOMEM;
 	}
-	rdc_hw_init(&s->hw, &cfg, s->vram, s->frame[0], s->frame[1],
+	rdc_hw_init(s->hw, &cfg, s->vram, s->frame[0], s->frame[1],
 		    SIM_FRAME_CAP);
-	rdc_dp_init(&s->dp, &s->hw);
-	rdc_hw_set_on_demand(&s->hw, on_demand);
+	rdc_dp_init(s->dp, s->hw);
+	rdc_hw_set_on_demand(s->hw, on_demand);
 	dev->priv = s;
 	return 0;
 }
@@ -207,21 +210,21 @@ static void sim_close(rdc_dev *dev)
 
 static int sim_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 {
-	*val = rdc_hw_read(&sim_of(dev)->hw, reg);
+	*val = rdc_hw_read(sim_of(dev)->hw, reg);
 	return 0;
 }
 
 static int sim_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
 {
-	rdc_hw_write(&sim_of(dev)->hw, reg, val);
+	rdc_hw_write(sim_of(dev)->hw, reg, val);
 	return 0;
 }
 
 static int sim_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
 {
-	struct rdc_hw *hw = &sim_of(dev)->hw;
+	struct rdc_hw *hw = sim_of(dev)->hw;
 
-	if (len > hw->vram_size || addr > hw->vram_size - len)
+	if (len > rdc_hw_vram_size(hw) || addr > rdc_hw_vram_size(hw) - len)
 		return RDC_E_RANGE;
 	return rdc_hw_vram_read(hw, addr, buf, (uint32_t)len) ? RDC_E_RANGE : 0;
 }
@@ -229,9 +232,9 @@ static int sim_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
 static int sim_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 			  size_t len)
 {
-	struct rdc_hw *hw = &sim_of(dev)->hw;
+	struct rdc_hw *hw = sim_of(dev)->hw;
 
-	if (len > hw->vram_size || addr > hw->vram_size - len)
+	if (len > rdc_hw_vram_size(hw) || addr > rdc_hw_vram_size(hw) - len)
 		return RDC_E_RANGE;
 	return rdc_hw_vram_write(hw, addr, buf, (uint32_t)len) ? RDC_E_RANGE :
 								 0;
@@ -240,7 +243,7 @@ static int sim_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 /* FIFO_DATA in bulk: the chip takes the words as rdc_hw_write would. */
 static int sim_fifo_push(rdc_dev *dev, const uint32_t *words, uint32_t n)
 {
-	return (int)rdc_hw_fifo_push(&sim_of(dev)->hw, words, n);
+	return (int)rdc_hw_fifo_push(sim_of(dev)->hw, words, n);
 }
 
 static int sim_submit(rdc_dev *dev, const uint32_t *words, size_t n)
@@ -250,7 +253,7 @@ static int sim_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 
 static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 {
-	struct rdc_hw *hw = &sim_of(dev)->hw;
+	struct rdc_hw *hw = sim_of(dev)->hw;
 	struct rdc_hw_wait hw_w;
 
 	rdc_wait_to_hw(w, &hw_w);
@@ -260,11 +263,11 @@ static int sim_wait(rdc_dev *dev, const struct rdc_wait *w)
 
 static int sim_step(rdc_dev *dev, uint64_t cycles)
 {
-	struct rdc_hw *hw = &sim_of(dev)->hw;
+	struct rdc_hw *hw = sim_of(dev)->hw;
 
-	if (cycles > UINT64_MAX - hw->now)
+	if (cycles > UINT64_MAX - rdc_hw_now(hw))
 		return RDC_E_RANGE;
-	rdc_hw_run_until(hw, hw->now + cycles);
+	rdc_hw_run_until(hw, rdc_hw_now(hw) + cycles);
 	return 0;
 }
 
@@ -279,16 +282,16 @@ static int sim_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 {
 	struct sim *s = sim_of(dev);
 	uint32_t w = 0, h = 0;
-	const uint32_t *f = rdc_hw_frame(&s->hw, &w, &h);
+	const uint32_t *f = rdc_hw_frame(s->hw, &w, &h);
 
 	if (!f) {
 		if (!s->grab_watch)
-			rdc_hw_consumer_attach(&s->hw);
+			rdc_hw_consumer_attach(s->hw);
 		s->grab_watch = true;
 		return 1;
 	}
 	if (s->grab_watch)
-		rdc_hw_consumer_detach(&s->hw);
+		rdc_hw_consumer_detach(s->hw);
 	s->grab_watch = false;
 	*width = w;
 	*height = h;
@@ -300,9 +303,11 @@ static int sim_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 
 static int sim_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 {
-	struct rdc_hw *hw = &sim_of(dev)->hw;
+	struct rdc_hw *hw = sim_of(dev)->hw;
+	struct rdc_hw_state st;
 
-	rdc_hw_set_pins(hw, (hw->pins_in & ~mask) | (levels & mask));
+	rdc_hw_state(hw, &st);
+	rdc_hw_set_pins(hw, (st.pins_in & ~mask) | (levels & mask));
 	return 0;
 }
 
@@ -338,15 +343,14 @@ static int sim_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 			 uint64_t budget_cycles, uint64_t timeout_us,
 			 struct rdc_pin_edge *ev)
 {
-	struct rdc_hw *hw = &sim_of(dev)->hw;
+	struct rdc_hw *hw = sim_of(dev)->hw;
 	struct sim_pins_watch w = {
-		.fn = hw->trace_fn,
-		.ctx = hw->trace_ctx,
 		.changed = { RDC_NEVER, RDC_NEVER },
 	};
 	uint64_t t = RDC_NEVER;
 	int ret;
 
+	rdc_hw_get_trace(hw, &w.fn, &w.ctx);
 	(void)timeout_us;
 	rdc_hw_set_trace(hw, sim_pins_trace, &w);
 	ret = rdc_pins_wait_regs(dev, pins, edges, budget_cycles, ev);
@@ -366,7 +370,7 @@ static int sim_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 
 struct rdc_hw *rdc_sim_hw(rdc_dev *dev)
 {
-	return dev && dev->be == &rdc_backend_sim ? &sim_of(dev)->hw : NULL;
+	return dev && dev->be == &rdc_backend_sim ? sim_of(dev)->hw : NULL;
 }
 
 const struct rdc_backend rdc_backend_sim = {

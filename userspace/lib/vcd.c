@@ -225,14 +225,15 @@ static void vcd_set(rdc_vcd *v, enum vcd_sig s, uint32_t x, uint64_t t)
  * Cycles from a line's start to hblank: the first cycle whose beam x
  * (cycles * pixel clock / core clock, rounded down) reaches H_DISPLAY.
  */
-static uint64_t vcd_hblank_offset(const struct rdc_hw *hw)
+static uint64_t vcd_hblank_offset(const struct rdc_hw *hw,
+				  const struct rdc_timing *tm)
 {
-	const struct rdc_timing *tm = &hw->crtc.cur;
 	uint64_t pix_hz = (uint64_t)tm->pixclk_khz * HZ_PER_KHZ;
 
 	if (!pix_hz)
 		return RDC_NEVER;
-	return ((uint64_t)tm->h_display * hw->core_hz + pix_hz - 1) / pix_hz;
+	return ((uint64_t)tm->h_display * rdc_hw_core_hz(hw) + pix_hz - 1) /
+	       pix_hz;
 }
 
 /*
@@ -242,8 +243,13 @@ static uint64_t vcd_hblank_offset(const struct rdc_hw *hw)
  */
 static void vcd_sync(rdc_vcd *v, const struct rdc_hw *hw, uint64_t t)
 {
-	const struct rdc_crtc *c = &hw->crtc;
-	uint32_t pins = hw->pins_out, line = 0;
+	struct rdc_hw_state cs, *c = &cs;
+	struct rdc_timing cur;
+	uint32_t pins, line = 0;
+
+	rdc_hw_state(hw, c);
+	rdc_hw_timing(hw, &cur);
+	pins = c->pins_out;
 
 	v->seen = hw;
 	v->hb_rise = RDC_NEVER;
@@ -251,19 +257,19 @@ static void vcd_sync(rdc_vcd *v, const struct rdc_hw *hw, uint64_t t)
 	vcd_set(v, SIG_IRQ, !!(pins & RDC_PIN_IRQ), t);
 	vcd_set(v, SIG_RESET_N, !!(pins & RDC_PIN_RESET_N), t);
 	vcd_set(v, SIG_BL_EN, !!(pins & RDC_PIN_BL_EN), t);
-	vcd_set(v, SIG_DP, !!hw->dp_active, t);
-	vcd_set(v, SIG_FIFO, hw->fifo_count, t);
+	vcd_set(v, SIG_DP, !!c->dp_active, t);
+	vcd_set(v, SIG_FIFO, c->fifo_count, t);
 	vcd_set(v, SIG_VBLANK, !!c->in_vblank, t);
-	if (c->running && c->next_line && c->cur.pixclk_khz) {
+	if (c->scanning && c->next_line && cur.pixclk_khz) {
 		/* line n starts n * h_total pixel clocks into the frame */
 		uint64_t start;
 
 		line = c->next_line - 1;
 		start = c->frame_start +
-			(uint64_t)line * c->cur.h_total * hw->core_hz /
-				((uint64_t)c->cur.pixclk_khz * HZ_PER_KHZ);
-		start += vcd_hblank_offset(hw);
-		if (start <= hw->now) {
+			(uint64_t)line * cur.h_total * rdc_hw_core_hz(hw) /
+				((uint64_t)cur.pixclk_khz * HZ_PER_KHZ);
+		start += vcd_hblank_offset(hw, &cur);
+		if (start <= rdc_hw_now(hw)) {
 			vcd_set(v, SIG_HBLANK, 1, t);
 		} else {
 			vcd_set(v, SIG_HBLANK, 0, t);
@@ -289,7 +295,7 @@ void rdc_vcd_trace(void *ctx, uint64_t time, unsigned int event, uint32_t a,
 		return;
 	if (hw && hw != v->seen) {
 		/* a new chip: its time goes on from the old one's */
-		v->base = v->last - hw->now;
+		v->base = v->last - rdc_hw_now(hw);
 		vcd_sync(v, hw, v->last);
 	}
 	t = time + v->base;
@@ -318,7 +324,11 @@ void rdc_vcd_trace(void *ctx, uint64_t time, unsigned int event, uint32_t a,
 		vcd_set(v, SIG_LINE, a & ((1u << LINE_BITS) - 1), t);
 		vcd_set(v, SIG_VBLANK, !!b, t);
 		if (hw) {
-			uint64_t off = vcd_hblank_offset(hw);
+			struct rdc_timing cur;
+			uint64_t off;
+
+			rdc_hw_timing(hw, &cur);
+			off = vcd_hblank_offset(hw, &cur);
 
 			if (off != RDC_NEVER)
 				v->hb_rise = t + off;
@@ -407,7 +417,7 @@ static void vcd_header(rdc_vcd *v, const struct rdc_hw *hw)
 	vcd_puts(v, "$upscope $end\n$enddefinitions $end\n");
 
 	/* every value once, at the chip's present time */
-	v->last = hw->now;
+	v->last = rdc_hw_now(hw);
 	vcd_time(v, v->last);
 	vcd_puts(v, "$dumpvars\n");
 	for (unsigned int s = 0; s < SIG_COUNT; s++)
@@ -433,7 +443,8 @@ int rdc_vcd_new(const char *path, struct rdc_hw *const *hw, rdc_vcd **out)
 				      strerror(errno));
 	}
 	v->hwp = hw;
-	v->core_hz = (*hw)->core_hz ? (*hw)->core_hz : RDC_DEFAULT_CORE_HZ;
+	v->core_hz = rdc_hw_core_hz(*hw) ? rdc_hw_core_hz(*hw) :
+					   RDC_DEFAULT_CORE_HZ;
 	vcd_header(v, *hw);
 	*out = v;
 	return 0;
@@ -466,8 +477,7 @@ int rdc_vcd_open(rdc_dev *dev, const char *path, rdc_vcd **out)
 	v->own = hw;
 	v->hwp = &v->own;
 	v->hooked = hw;
-	v->next_fn = hw->trace_fn;
-	v->next_ctx = hw->trace_ctx;
+	rdc_hw_get_trace(hw, &v->next_fn, &v->next_ctx);
 	rdc_hw_set_trace(hw, vcd_chain, v);
 	*out = v;
 	return 0;
@@ -481,12 +491,17 @@ int rdc_vcd_close(rdc_vcd *v)
 	if (!v)
 		return 0;
 	hw = v->hwp ? *v->hwp : NULL;
-	if (v->hooked && v->hooked->trace_fn == vcd_chain &&
-	    v->hooked->trace_ctx == v)
-		rdc_hw_set_trace(v->hooked, v->next_fn, v->next_ctx);
+	if (v->hooked) {
+		rdc_trace_fn fn;
+		void *ctx;
+
+		rdc_hw_get_trace(v->hooked, &fn, &ctx);
+		if (fn == vcd_chain && ctx == v)
+			rdc_hw_set_trace(v->hooked, v->next_fn, v->next_ctx);
+	}
 	/* the dump ends at the chip's present time */
 	if (hw && hw == v->seen) {
-		uint64_t t = hw->now + v->base;
+		uint64_t t = rdc_hw_now(hw) + v->base;
 
 		if (t > v->last) {
 			v->last = t;
