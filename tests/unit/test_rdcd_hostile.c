@@ -23,8 +23,9 @@
 #include "test_net_common.h"
 
 /* The daemon's limits, as documented (rdcd.h). */
-#define DOC_MAX_PENDING	     8
-#define DOC_MAX_PER_LISTENER 96
+#define DOC_MAX_PENDING	      8
+#define DOC_MAX_PENDING_YOUNG 32
+#define DOC_MAX_PER_LISTENER  96
 
 static int hello_fd(const struct netd *d, uint32_t flags)
 {
@@ -144,9 +145,10 @@ static int run_rdcd(const char *const *args, char *log, size_t cap)
 
 /*
  * 1. Connections that never say HELLO: at most DOC_MAX_PENDING per
- * listener are kept, a new one evicts the oldest, and each is closed at
- * its HELLO deadline; a client with the right token still gets in, on
- * TCP as on the UNIX socket.
+ * listener are kept (DOC_MAX_PENDING_YOUNG while they are new), a new one
+ * evicts the one silent longest, and each is closed at its HELLO
+ * deadline; a client with the right token still gets in, on TCP as on
+ * the UNIX socket.
  */
 static void test_silent_connections(void **state)
 {
@@ -180,7 +182,7 @@ static void test_silent_connections(void **state)
 	close(fd);
 	/* the oldest silent ones were closed to make room */
 	assert_true(netd_closed(fds[0]));
-	assert_true(netd_closed(fds[126 - DOC_MAX_PENDING]));
+	assert_true(netd_closed(fds[126 - DOC_MAX_PENDING_YOUNG]));
 	/* and the newest are closed at their HELLO deadline */
 	assert_true(netd_closed(fds[126]));
 	for (int i = 0; i < 127; i++)
@@ -704,6 +706,74 @@ static void test_stalled_subscribers(void **state)
 }
 
 /*
+ * 7. A connect/disconnect flood on the UNIX socket, keeping its newest 256
+ * connections open, does not lock real clients out: each of 20 gets its
+ * HELLO and a PING answered (before: 5 to 9 of 20).
+ */
+struct flood {
+	const char *sock;
+	volatile int stop;
+	unsigned long made;
+};
+
+static void *flood_run(void *arg)
+{
+	struct flood *f = arg;
+	static int ring[256];
+	unsigned int at = 0;
+
+	for (unsigned int i = 0; i < 256; i++)
+		ring[i] = -1;
+	while (!f->stop) {
+		int fd = netd_connect(f->sock);
+
+		if (ring[at] >= 0)
+			close(ring[at]);
+		ring[at] = fd;
+		at = (at + 1) % 256;
+		f->made++;
+	}
+	for (unsigned int i = 0; i < 256; i++)
+		if (ring[i] >= 0)
+			close(ring[i]);
+	return NULL;
+}
+
+static void test_connect_flood(void **state)
+{
+	static const char *const args[] = { "--fast", "-q", NULL };
+	struct flood f = { 0 };
+	struct netd d;
+	pthread_t t;
+	int ok = 0;
+
+	(void)state;
+	assert_int_equal(netd_start(&d, args), 0);
+	f.sock = d.sock;
+	assert_int_equal(pthread_create(&t, NULL, flood_run, &f), 0);
+	netd_sleep_ms(200);
+	for (uint32_t k = 0; k < 20; k++) {
+		int fd = netd_connect(d.sock);
+
+		if (fd >= 0 && netd_hello(fd, 0, NULL, NULL) == RDC_ST_OK &&
+		    netd_call(fd, RDC_MSG_PING, 1, NULL, 0, NULL, 0) ==
+			    RDC_ST_OK)
+			ok++;
+		if (fd >= 0)
+			close(fd);
+		netd_sleep_ms(20);
+	}
+	f.stop = 1;
+	pthread_join(t, NULL);
+	fprintf(stderr,
+		"# under a flood of %lu connections: %d of 20 real clients "
+		"served\n",
+		f.made, ok);
+	assert_int_equal(ok, 20);
+	assert_int_equal(netd_stop(&d), 0);
+}
+
+/*
  * 8. --token takes a regular file only: a FIFO is refused at once (it
  * blocked start-up forever), a directory by what it is (it was "empty").
  */
@@ -872,6 +942,7 @@ int main(void)
 		cmocka_unit_test(test_ipv6_text),
 		cmocka_unit_test(test_token_not_regular),
 		cmocka_unit_test(test_stalled_subscribers),
+		cmocka_unit_test(test_connect_flood),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

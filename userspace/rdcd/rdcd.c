@@ -350,11 +350,14 @@ static int rdcd_add_listener(struct rdcd *d, const char *uri, bool group)
 }
 
 /*
- * New connections.  Admission is rdcd_client_new's (at most
- * RDCD_MAX_PENDING without HELLO per listener, the oldest evicted) and
- * the HELLO's (RDCD_MAX_CLIENTS, RDCD_MAX_CLIENTS_PER_LISTENER); so a
- * connection is always accepted, and at most a listener's worth of
- * silent ones cost anything.
+ * New connections, at most RDCD_MAX_PENDING a turn: the loop reads them
+ * (a HELLO has usually come with them) before it takes more, so a flood
+ * waits in the backlog rather than pushing out those already taken.
+ * Admission is rdcd_client_new's (connections without HELLO per
+ * listener, the oldest silent one evicted) and the HELLO's
+ * (RDCD_MAX_CLIENTS, RDCD_MAX_CLIENTS_PER_LISTENER); so a connection is
+ * always accepted, and at most a few listeners' worth of silent ones cost
+ * anything.
  */
 static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 {
@@ -369,7 +372,7 @@ static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 		d->accept_lis = -1;
 		return;
 	}
-	for (;;) {
+	for (unsigned int n = 0; n < RDCD_MAX_PENDING; n++) {
 		struct sockaddr_storage ss;
 		socklen_t sl = sizeof(ss);
 		char peer[64] = "local", addr[INET6_ADDRSTRLEN] = "?";
@@ -405,6 +408,7 @@ static void rdcd_accept(struct rdcd *d, struct rdcd_listener *l)
 			close(fd);
 		}
 	}
+	d->accept_lis = -1;
 }
 
 /* The token: rdc_token_read's rule (rdc_server.h), the client's too. */
@@ -637,7 +641,8 @@ static int parse_args(struct rdcd *d, int argc, char **argv,
 }
 
 /* Connections at the top of a loop turn: HELLO'd and not yet. */
-#define RDCD_MAX_CONNS (RDCD_MAX_CLIENTS + RDCD_MAX_LISTEN * RDCD_MAX_PENDING)
+#define RDCD_MAX_CONNS \
+	(RDCD_MAX_CLIENTS + RDCD_MAX_LISTEN * RDCD_MAX_PENDING_YOUNG)
 
 static void rdcd_loop(struct rdcd *d)
 {

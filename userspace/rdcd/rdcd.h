@@ -25,11 +25,19 @@
 #define RDCD_MAX_CLIENTS_PER_LISTENER 96
 /*
  * Connections that have not said HELLO yet, per listener: a new one beyond
- * this evicts the oldest, so silent connections can never lock anyone out.
- * Each must say HELLO within RDCD_HELLO_MS and may send nothing larger.
+ * RDCD_MAX_PENDING closes the oldest that has sent nothing for
+ * RDCD_HELLO_GRACE_MS; if all are younger, up to RDCD_MAX_PENDING_YOUNG
+ * are kept (a HELLO may be on its way), and beyond that the oldest that
+ * has sent nothing goes.  So silent connections never lock anyone out, and
+ * a flood of them does not close a client whose HELLO is waiting.  A
+ * listener's backlog is taken RDCD_MAX_PENDING at a time, each then read
+ * before the next are let in.  Each must say HELLO within RDCD_HELLO_MS
+ * and may send nothing larger.
  */
-#define RDCD_MAX_PENDING 8
-#define RDCD_HELLO_MS	 5000
+#define RDCD_MAX_PENDING       8
+#define RDCD_MAX_PENDING_YOUNG 32
+#define RDCD_HELLO_GRACE_MS    200
+#define RDCD_HELLO_MS	       5000
 /* Failed tokens: after RDC_AUTH_FREE_FAILS from one address, that address
  * is refused for a second, doubling at each further failure up to a minute
  * (rdc_auth_*, rdc_server.h); failed-token log lines are kept to one a
@@ -116,6 +124,7 @@ struct rdcd_client {
 	bool held;
 	int lis;	  /* index of the listener it came from, -1: none */
 	uint64_t conn_ns; /* when it connected (HELLO deadline) */
+	uint64_t rx_ns;	  /* before HELLO: when something last arrived */
 	uint64_t out_since_ns; /* last progress sending, or when queued */
 	char peer[64];
 

@@ -122,24 +122,72 @@ unsigned int rdcd_count_lis(const struct rdcd *d, int lis, bool hello,
 	return n;
 }
 
+/*
+ * Is something waiting to be read from c (its HELLO, likely)?  A peer
+ * that hung up is closed here: its place is free.
+ */
+static bool rdcd_something_waiting(struct rdcd_client *c)
+{
+	uint8_t b;
+	ssize_t k = recv(c->fd, &b, 1, MSG_PEEK | MSG_DONTWAIT);
+
+	if (k == 0 || (k < 0 && errno != EAGAIN && errno != EWOULDBLOCK &&
+		       errno != EINTR))
+		c->dead = true;
+	return k > 0;
+}
+
+/*
+ * Room for a new connection without HELLO on listener `lis`.  Beyond
+ * RDCD_MAX_PENDING, the one silent longest (nothing waiting, nothing
+ * arrived) goes if that is RDCD_HELLO_GRACE_MS or more; if all are
+ * younger, they stay up to RDCD_MAX_PENDING_YOUNG, and beyond that the
+ * one silent longest goes all the same, or else the oldest.  What waits
+ * is looked at, not read: a HELLO is answered in its turn.
+ */
+static void rdcd_pending_room(struct rdcd *d, int lis)
+{
+	const uint64_t grace = (uint64_t)RDCD_HELLO_GRACE_MS * 1000000ull;
+	struct rdcd_client *silent = NULL, *any = NULL;
+	uint64_t now = rdcd_wall_ns();
+	unsigned int n = 0;
+
+	if (rdcd_count_lis(d, lis, false, NULL) < RDCD_MAX_PENDING)
+		return;
+	for (struct rdcd_client *c = d->clients; c; c = c->next) {
+		bool waiting;
+
+		if (c->dead || c->hello || c->lis != lis)
+			continue;
+		waiting = rdcd_something_waiting(c);
+		if (c->dead)
+			continue;
+		n++;
+		if (!any || c->conn_ns < any->conn_ns)
+			any = c;
+		if (!waiting && (!silent || c->rx_ns < silent->rx_ns))
+			silent = c;
+	}
+	if (n < RDCD_MAX_PENDING)
+		return; /* some had hung up */
+	if (n < RDCD_MAX_PENDING_YOUNG &&
+	    (!silent || now - silent->rx_ns < grace))
+		return;
+	if (!silent)
+		silent = any;
+	rdcd_log_limited(d, &d->connlog, RDCD_LOG_WARN,
+			 "%u connections without HELLO on one listener: "
+			 "closing the oldest silent one, client %u (%s)",
+			 n, silent->id, silent->peer);
+	silent->dead = true;
+}
+
 struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
 				    const char *peer)
 {
-	const struct rdcd_client *oldest = NULL;
 	struct rdcd_client *c;
 
-	/* Silent connections never lock anyone out: the oldest one goes. */
-	if (rdcd_count_lis(d, d->accept_lis, false, &oldest) >=
-	    RDCD_MAX_PENDING) {
-		struct rdcd_client *o = (struct rdcd_client *)oldest;
-
-		rdcd_log_limited(
-			d, &d->connlog, RDCD_LOG_WARN,
-			"%u connections without HELLO on one listener: "
-			"closing the oldest, client %u (%s)",
-			RDCD_MAX_PENDING, o->id, o->peer);
-		o->dead = true;
-	}
+	rdcd_pending_room(d, d->accept_lis);
 	c = calloc(1, sizeof(*c));
 	if (!c)
 		return NULL;
@@ -147,6 +195,7 @@ struct rdcd_client *rdcd_client_new(struct rdcd *d, int fd, bool tcp,
 	c->tcp = tcp;
 	c->lis = d->accept_lis;
 	c->conn_ns = rdcd_wall_ns();
+	c->rx_ns = c->conn_ns;
 	c->id = ++d->next_id;
 	snprintf(c->peer, sizeof(c->peer), "%s", peer);
 	c->next = d->clients;
@@ -331,6 +380,8 @@ void rdcd_client_read(struct rdcd *d, struct rdcd_client *c)
 			c->dead = true;
 			return;
 		}
+		if (!c->hello)
+			c->rx_ns = rdcd_wall_ns(); /* not silent (admission) */
 		if (c->hdr_got < RDC_PROTO_HDR_SIZE) {
 			c->hdr_got += (size_t)k;
 			if (c->hdr_got < RDC_PROTO_HDR_SIZE)
