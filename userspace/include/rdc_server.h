@@ -21,7 +21,6 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
-#include <sys/socket.h>
 
 #include "rdc.h"
 #include "rdc_chip.h"
@@ -166,6 +165,8 @@ void rdc_auth_passed(struct rdc_auth *a, const char *peer);
  * Failures return a negative enum rdc_error with a detail
  * (rdc_last_error_detail) that names the address or the file.
  */
+struct sockaddr_storage; /* <sys/socket.h>, which the caller includes */
+
 #define RDC_TCP_HOST_MAX 256 /* a host name's bytes, its NUL included */
 #define RDC_TCP_NAME_MAX 64  /* "[IPV6]:PORT" of a bound address, and NUL */
 
