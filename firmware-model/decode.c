@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /*
- * DECODE: an RLE, DPCM, BTC, HUFF or DPCMQ image stream in VRAM
+ * DECODE: an RLE, DPCM, BTC, HUFF, DPCMQ or DCT image stream in VRAM
  * (rdc_image.h) decoded into DST.
  *
  * The stream is distrusted: every byte comes through a reader bounded by
@@ -89,22 +89,25 @@ static bool in_bits(struct rdc_dp *dp, struct img_in *r, uint32_t n,
 	return true;
 }
 
-/* Row `row` of the image (samples s) into DST, clipped, through the ROP. */
-static void emit_row(struct rdc_dp *dp, const struct dec *d, uint32_t row,
-		     const uint8_t *s)
+/*
+ * Columns [col, col + n) of the image's row `row` (samples s, from col
+ * on) into DST, clipped, through the ROP.
+ */
+static void emit_seg(struct rdc_dp *dp, const struct dec *d, uint32_t row,
+		     uint32_t col, uint32_t n, const uint8_t *s)
 {
-	uint32_t fmt = dp->st.dst.format, n, i;
+	uint32_t fmt = dp->st.dst.format, i, k;
 	int32_t y = d->y + (int32_t)row, x0, x1, x;
 	const uint8_t *p;
 
 	if (!d->emit || y < d->clip.y0 || y >= d->clip.y1)
 		return;
-	x0 = RDC_MAX(d->x, d->clip.x0);
-	x1 = RDC_MIN(d->x + (int32_t)d->w, d->clip.x1);
-	for (x = x0; x < x1; x += (int32_t)n) {
-		n = (uint32_t)RDC_MIN(x1 - x, (int32_t)RDC_DP_CHUNK);
-		p = s + (uint32_t)(x - d->x) * d->ch;
-		for (i = 0; i < n; i++, p += d->ch) {
+	x0 = RDC_MAX(d->x + (int32_t)col, d->clip.x0);
+	x1 = RDC_MIN(d->x + (int32_t)(col + n), d->clip.x1);
+	for (x = x0; x < x1; x += (int32_t)k) {
+		k = (uint32_t)RDC_MIN(x1 - x, (int32_t)RDC_DP_CHUNK);
+		p = s + (uint32_t)(x - d->x - (int32_t)col) * d->ch;
+		for (i = 0; i < k; i++, p += d->ch) {
 			if (d->ch == 3)
 				dp->px[i] = img_pack_rgb(fmt, p[0], p[1], p[2]);
 			else if (rdc_format_indexed(fmt))
@@ -112,8 +115,15 @@ static void emit_row(struct rdc_dp *dp, const struct dec *d, uint32_t row,
 			else
 				dp->px[i] = img_pack_rgb(fmt, p[0], p[0], p[0]);
 		}
-		rdc_dp_span_px(dp, y, x, n, 0, dp->px, NULL);
+		rdc_dp_span_px(dp, y, x, k, 0, dp->px, NULL);
 	}
+}
+
+/* Row `row` of the image (samples s) into DST. */
+static void emit_row(struct rdc_dp *dp, const struct dec *d, uint32_t row,
+		     const uint8_t *s)
+{
+	emit_seg(dp, d, row, 0, d->w, s);
 }
 
 static uint32_t dec_rle(struct rdc_dp *dp, const struct dec *d,
@@ -328,6 +338,163 @@ static uint32_t dec_huff(struct rdc_dp *dp, const struct dec *d,
 	return in_left(r) ? RDC_ERR_DATA : RDC_ERR_NONE;
 }
 
+/* Natural (row-major) index of the zigzag order's k-th coefficient. */
+static const uint8_t dct_zigzag[RDC_IMG_DCT_QBYTES] = {
+	0,  1,	8,  16, 9,  2,	3,  10, 17, 24, 32, 25, 18, 11, 4,  5,
+	12, 19, 26, 33, 40, 48, 41, 34, 27, 20, 13, 6,	7,  14, 21, 28,
+	35, 42, 49, 56, 57, 50, 43, 36, 29, 22, 15, 23, 30, 37, 44, 51,
+	58, 59, 52, 45, 38, 31, 39, 46, 53, 60, 61, 54, 47, 55, 62, 63,
+};
+
+/*
+ * dct_cos[x][u] = round(2^13 * C(u) / 2 * cos((2x + 1) u pi / 16)): the
+ * 1D IDCT is g(x) = sum_u dct_cos[x][u] F(u) / 2^13.
+ */
+static const int16_t dct_cos[8][8] = {
+	{ 2896, 4017, 3784, 3406, 2896, 2276, 1567, 799 },
+	{ 2896, 3406, 1567, -799, -2896, -4017, -3784, -2276 },
+	{ 2896, 2276, -1567, -4017, -2896, 799, 3784, 3406 },
+	{ 2896, 799, -3784, -2276, 2896, 3406, -1567, -4017 },
+	{ 2896, -799, -3784, 2276, 2896, -3406, -1567, 4017 },
+	{ 2896, -2276, -1567, 4017, -2896, -799, 3784, -3406 },
+	{ 2896, -3406, 1567, 799, -2896, 4017, -3784, 2276 },
+	{ 2896, -4017, 3784, -3406, 2896, -2276, 1567, -799 },
+};
+
+/*
+ * The 8x8 IDCT of blk (row-major F(u, v) at [8v + u]) in 32-bit integers:
+ * rows, kept with 3 fraction bits, then columns.  With |F| <= 2048 and
+ * sum_u |dct_cos[x][u]| <= 21,641, the row pass stays within 43,282 * 8
+ * and the column sums within 2^30.  Samples level-shifted by 128 into
+ * out (stride `pitch` bytes, every `ch`-th byte).
+ */
+static void dct_idct(const int32_t *blk, uint8_t *out, uint32_t pitch,
+		     uint32_t ch)
+{
+	int32_t t[64], sum, v;
+	uint32_t x, y, u;
+
+	for (y = 0; y < 8; y++) {
+		for (x = 0; x < 8; x++) {
+			for (u = 0, sum = 0; u < 8; u++)
+				sum += dct_cos[x][u] * blk[8 * y + u];
+			t[8 * y + x] = (sum + (1 << 9)) >> 10;
+		}
+	}
+	for (x = 0; x < 8; x++) {
+		for (y = 0; y < 8; y++) {
+			for (u = 0, sum = 0; u < 8; u++)
+				sum += dct_cos[y][u] * t[8 * u + x];
+			v = ((sum + (1 << 15)) >> 16) + 128;
+			out[y * pitch + x * ch] =
+				(uint8_t)RDC_MIN(RDC_MAX(v, 0), 255);
+		}
+	}
+}
+
+/* s bits as a signed value (JPEG's EXTEND); false past the stream. */
+static bool dct_value(struct rdc_dp *dp, struct img_in *r, uint32_t s,
+		      int32_t *v)
+{
+	uint32_t b;
+
+	if (!in_bits(dp, r, s, &b))
+		return false;
+	*v = s && !(b >> (s - 1)) ? (int32_t)b - (int32_t)(1u << s) + 1 :
+				    (int32_t)b;
+	return true;
+}
+
+/* One block of channel c: its coefficients into blk, dequantised. */
+static uint32_t dct_block(struct rdc_dp *dp, struct img_in *r, uint32_t c)
+{
+	int32_t *blk = dp->img.u.dct.blk, v;
+	uint32_t k, sym, run, s;
+
+	if (!huff_sym(dp, r, &dp->img.u.dct.dc, &s) || s > 11 ||
+	    !dct_value(dp, r, s, &v))
+		return RDC_ERR_DATA;
+	v += dp->img.u.dct.pred[c];
+	if (v > (int32_t)RDC_IMG_DCT_DC_MAX || v < -(int32_t)RDC_IMG_DCT_DC_MAX)
+		return RDC_ERR_DATA;
+	dp->img.u.dct.pred[c] = v;
+	rdc_memset(blk, 0, sizeof(dp->img.u.dct.blk));
+	blk[0] = v;
+	for (k = 1; k < RDC_IMG_DCT_QBYTES; k++) {
+		if (!huff_sym(dp, r, &dp->img.u.dct.ac, &sym))
+			return RDC_ERR_DATA;
+		run = sym >> 4;
+		s = sym & 15;
+		if (sym == RDC_IMG_DCT_EOB)
+			break;
+		if (sym == RDC_IMG_DCT_ZRL) {
+			k += 15;
+			continue;
+		}
+		k += run;
+		if (!s || s > 10 || k >= RDC_IMG_DCT_QBYTES ||
+		    !dct_value(dp, r, s, &v))
+			return RDC_ERR_DATA;
+		blk[dct_zigzag[k]] = v;
+	}
+	if (k > RDC_IMG_DCT_QBYTES) /* a ZRL past the last coefficient */
+		return RDC_ERR_DATA;
+	for (k = 0; k < RDC_IMG_DCT_QBYTES; k++) {
+		v = blk[dct_zigzag[k]] * dp->img.u.dct.q[k];
+		blk[dct_zigzag[k]] =
+			RDC_MIN(RDC_MAX(v, -RDC_IMG_DCT_COEF_MAX - 1),
+				RDC_IMG_DCT_COEF_MAX);
+	}
+	return RDC_ERR_NONE;
+}
+
+/*
+ * Bands of 8 rows, each decoded into strips of RDC_DP_DCT_STRIP pixels
+ * (64 blocks) that are written as a row span each once complete.  The
+ * check pass parses the codes only.
+ */
+static uint32_t dec_dct(struct rdc_dp *dp, const struct dec *d,
+			struct img_in *r)
+{
+	uint32_t bw = (d->w + 7) / 8, bh = (d->h + 7) / 8, bx, by, c, k, b, y;
+	uint32_t pitch = RDC_DP_DCT_STRIP * 3, x0, err;
+	uint8_t *strip = &dp->img.u.dct.strip[0][0];
+
+	for (k = 0; k < RDC_IMG_DCT_QBYTES; k++) {
+		if (!in_byte(dp, r, &b) || !b)
+			return RDC_ERR_DATA;
+		dp->img.u.dct.q[k] = (uint8_t)b;
+	}
+	if (!huff_load(dp, r, &dp->img.u.dct.dc) ||
+	    !huff_load(dp, r, &dp->img.u.dct.ac))
+		return RDC_ERR_DATA;
+	for (c = 0; c < 3; c++)
+		dp->img.u.dct.pred[c] = 0;
+	for (by = 0; by < bh; by++) {
+		for (bx = 0; bx < bw; bx++) {
+			x0 = bx * 8 % RDC_DP_DCT_STRIP;
+			for (c = 0; c < d->ch; c++) {
+				err = dct_block(dp, r, c);
+				if (err)
+					return err;
+				if (d->emit)
+					dct_idct(dp->img.u.dct.blk,
+						 strip + x0 * d->ch + c, pitch,
+						 d->ch);
+			}
+			if (bx + 1 < bw && (x0 + 8) % RDC_DP_DCT_STRIP)
+				continue;
+			/* the strip is complete: its rows into DST */
+			x0 = bx * 8 / RDC_DP_DCT_STRIP * RDC_DP_DCT_STRIP;
+			for (y = 0; y < 8 && by * 8 + y < d->h; y++)
+				emit_seg(dp, d, by * 8 + y, x0,
+					 RDC_MIN(d->w - x0, RDC_DP_DCT_STRIP),
+					 strip + y * pitch);
+		}
+	}
+	return in_left(r) ? RDC_ERR_DATA : RDC_ERR_NONE;
+}
+
 static uint32_t dec_run(struct rdc_dp *dp, const struct dec *d, uint32_t base)
 {
 	struct img_in r;
@@ -345,6 +512,8 @@ static uint32_t dec_run(struct rdc_dp *dp, const struct dec *d, uint32_t base)
 		return dec_dpcm(dp, d, &r, step);
 	case RDC_IMG_HUFF:
 		return dec_huff(dp, d, &r);
+	case RDC_IMG_DCT:
+		return dec_dct(dp, d, &r);
 	default:
 		return dec_btc(dp, d, &r);
 	}

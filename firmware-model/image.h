@@ -11,6 +11,8 @@
 
 #define RDC_DP_IMG_IN_CHUNK 256u /* stream bytes read per span */
 #define RDC_DP_HIST_BINS    256u
+/* DCT's strip: pixels of a band of 8 rows decoded before they are written */
+#define RDC_DP_DCT_STRIP 512u
 
 /* A canonical Huffman code (rdc_image.h) as DECODE walks it. */
 struct rdc_dp_huff {
@@ -34,6 +36,14 @@ struct rdc_dp_img {
 			uint8_t row[RDC_IMG_MAX_WIDTH * 3];
 			struct rdc_dp_huff code;
 		} huff;
+		/* DECODE of DCT: a strip of 8 rows, the tables, a block */
+		struct {
+			uint8_t strip[RDC_IMG_DCT_BLOCK][RDC_DP_DCT_STRIP * 3];
+			struct rdc_dp_huff dc, ac;
+			int32_t blk[RDC_IMG_DCT_QBYTES];
+			uint8_t q[RDC_IMG_DCT_QBYTES];
+			int32_t pred[3];
+		} dct;
 		/* CONVOLVE: three SRC rows, one pixel more at each end */
 		uint32_t conv[3][RDC_IMG_MAX_WIDTH + 2];
 	} u;

@@ -63,6 +63,27 @@
  * librdc's encoder picks q = the residual v - P divided by s, rounded to
  * nearest (halves toward 0): every sample within s / 2 of the
  * original; s = 1 is lossless.
+ *
+ * DCT (transform coding, lossy, as JPEG's baseline): 8x8 blocks in
+ * raster order, ceil(w / 8) x ceil(h / 8) of them, each a block per
+ * channel in channel order (no colour transform: R, G, B as they are).
+ * The payload: a quantisation table of 64 bytes (1..255) in zigzag order,
+ * two Huffman tables as HUFF's (DC, then AC), then a bit stream (MSB
+ * first, the last byte zero-padded) with per block JPEG's codes: the DC
+ * difference from the channel's last block (0 at the start) as a
+ * category s (0..11, the DC table's symbol) and s bits, and AC
+ * coefficients 1..63 in zigzag order as symbols r << 4 | s (a run r of
+ * zeros, then a coefficient of s = 1..10 bits), 0xf0 for 16 zeros and
+ * 0x00 for "the rest are zero".  s bits v are the value v if its top bit
+ * is set, else v - 2^s + 1.  A quantised DC beyond +-RDC_IMG_DCT_DC_MAX,
+ * a symbol of another form, coefficients past 63 or bytes after the last
+ * block are bad.  A coefficient is its value times its table entry,
+ * limited to -RDC_IMG_DCT_COEF_MAX - 1..RDC_IMG_DCT_COEF_MAX; the
+ * samples are the 2D inverse DCT
+ *   f(x, y) = 1/4 sum_u sum_v C(u) C(v) F(u, v) cos((2x + 1) u pi / 16)
+ *             cos((2y + 1) v pi / 16),  C(0) = 1 / sqrt(2), else 1,
+ * plus 128, rounded and limited to 0..255.  The DP computes it in
+ * integers (docs/commands.md says how and how close it comes).
  */
 #ifndef RDC_IMAGE_H
 #define RDC_IMAGE_H
@@ -82,6 +103,12 @@
 #define RDC_IMG_HUFF_SYMS	256u
 #define RDC_IMG_DPCMQ_MBITS	9u /* an escaped m of DPCMQ */
 #define RDC_IMG_DPCMQ_MMAX	511u
+#define RDC_IMG_DCT_BLOCK	8u
+#define RDC_IMG_DCT_QBYTES	64u /* the quantisation table */
+#define RDC_IMG_DCT_DC_MAX	2047u
+#define RDC_IMG_DCT_COEF_MAX	2047 /* a coefficient after quantisation */
+#define RDC_IMG_DCT_EOB		0x00u
+#define RDC_IMG_DCT_ZRL		0xf0u
 
 enum rdc_img_codec {
 	RDC_IMG_RLE = 1,
@@ -89,6 +116,7 @@ enum rdc_img_codec {
 	RDC_IMG_BTC = 3,
 	RDC_IMG_HUFF = 4,
 	RDC_IMG_DPCMQ = 5,
+	RDC_IMG_DCT = 6,
 	RDC_IMG_CODEC_END
 };
 
