@@ -704,8 +704,8 @@ int rdc_record_stop(rdc_dev *dev);
 /* ---- Compressed images (the DECODE command) ------------------------------ */
 /*
  * Streams in the formats of rdc_image.h (RDC_IMG_RLE, RDC_IMG_DPCM,
- * RDC_IMG_BTC, RDC_IMG_HUFF, RDC_IMG_DPCMQ), for the DP to decode from
- * VRAM.  Samples are 8 bits, a
+ * RDC_IMG_BTC, RDC_IMG_HUFF, RDC_IMG_DPCMQ, RDC_IMG_DCT), for the DP to
+ * decode from VRAM.  Samples are 8 bits, a
  * pixel is `channels` of them: 1 (grey or a CLUT index) or 3 (R, G, B);
  * w 1..RDC_IMG_MAX_WIDTH, h 1..RDC_IMG_MAX_HEIGHT.
  */
@@ -720,18 +720,22 @@ size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
  * lossless; BTC keeps each 4x4 block's mean within 1/2 and every sample
  * within its block's range (max - min).  HUFF's code is built for the
  * picture (code lengths at most 16 bits).  DPCMQ quantises with the step
- * RDC_IMAGE_STEP_DEFAULT (rdc_image_encode_lossy chooses another).
+ * RDC_IMAGE_STEP_DEFAULT, DCT at the quality RDC_IMAGE_QUALITY_DEFAULT
+ * (rdc_image_encode_lossy chooses another).
  */
 int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,
 		     size_t *len);
 
-#define RDC_IMAGE_STEP_DEFAULT 4u /* DPCMQ: samples within 2 */
+#define RDC_IMAGE_STEP_DEFAULT	  4u  /* DPCMQ: samples within 2 */
+#define RDC_IMAGE_QUALITY_DEFAULT 75u /* DCT: as IJG's cjpeg */
 /*
  * rdc_image_encode for a lossy codec with its level: for RDC_IMG_DPCMQ
  * the quantiser's step (1..255; every sample within step / 2 of the
- * original, 1 is lossless).  RDC_E_INVAL for another codec or a level
- * out of range.
+ * original, 1 is lossless); for RDC_IMG_DCT the quality 1..100, which
+ * scales JPEG's luminance quantisation table as IJG's libjpeg does (50:
+ * the table itself, 100: all ones).  RDC_E_INVAL for another codec or a
+ * level out of range.
  */
 int rdc_image_encode_lossy(uint32_t codec, uint32_t level, const uint8_t *px,
 			   uint32_t w, uint32_t h, uint32_t channels,

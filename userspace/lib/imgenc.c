@@ -4,8 +4,10 @@
  * Host-side image encoders for the DP's DECODE command: RLE (PackBits on
  * pixels), DPCM (median predictor, Rice codes with a parameter chosen
  * per row), BTC (absolute-moment block truncation coding, 4x4), HUFF
- * (a canonical Huffman code of the samples, built for each picture) and
- * DPCMQ (DPCM's predictor and codes on quantised residuals).  The
+ * (a canonical Huffman code of the samples, built for each picture),
+ * DPCMQ (DPCM's predictor and codes on quantised residuals) and DCT (as
+ * JPEG's baseline: 8x8 DCT, quantisation, Huffman codes built for each
+ * picture).  The
  * stream formats are rdc_image.h's; this file never calls the firmware.
  */
 #include <errno.h>
@@ -30,6 +32,9 @@ static void img_put32(uint8_t *p, uint32_t v)
 }
 
 #define HUFF_TABLE_MAX (RDC_IMG_HUFF_LENS + RDC_IMG_HUFF_SYMS)
+
+/* DC: 16 + 11 bits; 63 AC codes of 16 + 10 bits; an EOB or ZRL's 16 */
+#define DCT_BLOCK_BITS (27u + 63u * 26u + 16u)
 
 static int img_args_ok(uint32_t w, uint32_t h, uint32_t channels)
 {
@@ -66,6 +71,12 @@ size_t rdc_image_bound(uint32_t codec, uint32_t w, uint32_t h,
 						(RDC_IMG_DPCM_ESCAPE +
 						 RDC_IMG_DPCMQ_MBITS)) +
 			 7) / 8;
+		break;
+	case RDC_IMG_DCT: /* tables; per block 64 codes of 16 + 11 bits */
+		p = RDC_IMG_DCT_QBYTES + 2 * HUFF_TABLE_MAX +
+		    ((uint64_t)((w + 7) / 8) * ((h + 7) / 8) * channels *
+			     DCT_BLOCK_BITS +
+		     7) / 8;
 		break;
 	case RDC_IMG_HUFF: /* the table, every code 16 bits */
 		p = HUFF_TABLE_MAX + n * channels * RDC_IMG_HUFF_LENS / 8;
@@ -441,6 +452,188 @@ static size_t enc_huff(const struct img_src *s, uint8_t *o)
 	return b.k;
 }
 
+/* C(u) / 2 * cos((2x + 1) u pi / 16) at [x][u], C(0) = 1 / sqrt(2) */
+static const double dct_k[8][8] = {
+	{ 0.35355339059327379, 0.49039264020161522, 0.46193976625564337,
+	  0.41573480615127262, 0.35355339059327379, 0.27778511650980114,
+	  0.19134171618254492, 0.09754516100806417 },
+	{ 0.35355339059327379, 0.41573480615127262, 0.19134171618254492,
+	  -0.09754516100806410, -0.35355339059327373, -0.49039264020161522,
+	  -0.46193976625564342, -0.27778511650980109 },
+	{ 0.35355339059327379, 0.27778511650980114, -0.19134171618254486,
+	  -0.49039264020161522, -0.35355339059327384, 0.09754516100806415,
+	  0.46193976625564326, 0.41573480615127273 },
+	{ 0.35355339059327379, 0.09754516100806417, -0.46193976625564337,
+	  -0.27778511650980109, 0.35355339059327368, 0.41573480615127273,
+	  -0.19134171618254495, -0.49039264020161533 },
+	{ 0.35355339059327379, -0.09754516100806410, -0.46193976625564342,
+	  0.27778511650980092, 0.35355339059327384, -0.41573480615127256,
+	  -0.19134171618254528, 0.49039264020161522 },
+	{ 0.35355339059327379, -0.27778511650980098, -0.19134171618254517,
+	  0.49039264020161522, -0.35355339059327334, -0.09754516100806401,
+	  0.46193976625564337, -0.41573480615127251 },
+	{ 0.35355339059327379, -0.41573480615127267, 0.19134171618254500,
+	  0.09754516100806439, -0.35355339059327356, 0.49039264020161533,
+	  -0.46193976625564320, 0.27778511650980076 },
+	{ 0.35355339059327379, -0.49039264020161522, 0.46193976625564326,
+	  -0.41573480615127256, 0.35355339059327329, -0.27778511650980076,
+	  0.19134171618254478, -0.09754516100806429 },
+};
+
+/* JPEG's luminance table (ITU T.81 K.1), natural order */
+static const uint8_t dct_base[64] = {
+	16, 11, 10, 16, 24,  40,  51,  61,  12, 12, 14, 19, 26,	 58,  60,  55,
+	14, 13, 16, 24, 40,  57,  69,  56,  14, 17, 22, 29, 51,	 87,  80,  62,
+	18, 22, 37, 56, 68,  109, 103, 77,  24, 35, 55, 64, 81,	 104, 113, 92,
+	49, 64, 78, 87, 103, 121, 120, 101, 72, 92, 95, 98, 112, 100, 103, 99,
+};
+
+/* Natural index of the zigzag order's k-th coefficient. */
+static const uint8_t dct_zz[64] = {
+	0,  1,	8,  16, 9,  2,	3,  10, 17, 24, 32, 25, 18, 11, 4,  5,
+	12, 19, 26, 33, 40, 48, 41, 34, 27, 20, 13, 6,	7,  14, 21, 28,
+	35, 42, 49, 56, 57, 50, 43, 36, 29, 22, 15, 23, 30, 37, 44, 51,
+	58, 59, 52, 45, 38, 31, 39, 46, 53, 60, 61, 54, 47, 55, 62, 63,
+};
+
+/* Bits of |v| (JPEG's category). */
+static uint32_t dct_cat(int v)
+{
+	uint32_t s = 0, a = (uint32_t)abs(v);
+
+	while (a) {
+		s++;
+		a >>= 1;
+	}
+	return s;
+}
+
+/* JPEG's bits of v in its category s: v, or v + 2^s - 1 if negative. */
+static uint32_t dct_bits(int v, uint32_t s)
+{
+	return (uint32_t)(v < 0 ? v + (1 << s) - 1 : v);
+}
+
+/*
+ * DCT: the quantisation table from IJG's quality scaling of JPEG's
+ * luminance table, every block's FDCT quantised (pixels past the edge
+ * repeat the last column and row), then two passes over the quantised
+ * blocks: count the DC and AC symbols, build their codes, write.
+ */
+static size_t enc_dct(const struct img_src *s, uint8_t *o, int16_t *qc,
+		      uint32_t quality)
+{
+	uint32_t bw = (s->w + 7) / 8, bh = (s->h + 7) / 8, nb, b, c, k, q[64];
+	uint32_t scale = quality < 50 ? 5000 / quality : 200 - 2 * quality;
+	uint32_t x, y, u, v, run, sym, cat, pass;
+	uint64_t fdc[RDC_IMG_HUFF_SYMS], fac[RDC_IMG_HUFF_SYMS];
+	uint8_t ldc[RDC_IMG_HUFF_SYMS], lac[RDC_IMG_HUFF_SYMS];
+	uint16_t cdc[RDC_IMG_HUFF_SYMS], cac[RDC_IMG_HUFF_SYMS];
+	struct bitw bits = { .o = o };
+	double f[64], F;
+	int pred[3], d, val;
+
+	for (k = 0; k < 64; k++) {
+		q[k] = (dct_base[dct_zz[k]] * scale + 50) / 100;
+		q[k] = q[k] < 1 ? 1 : q[k] > 255 ? 255 : q[k];
+		o[k] = (uint8_t)q[k];
+	}
+	nb = bw * bh * s->ch;
+	for (b = 0; b < nb; b++) {
+		uint32_t bx = b / s->ch % bw, by = b / s->ch / bw;
+
+		c = b % s->ch;
+		for (y = 0; y < 8; y++) {
+			uint32_t py = by * 8 + y < s->h ? by * 8 + y : s->h - 1;
+
+			for (x = 0; x < 8; x++) {
+				uint32_t px = bx * 8 + x < s->w ? bx * 8 + x :
+								  s->w - 1;
+
+				f[8 * y + x] = s->px[(size_t)py * s->pitch +
+						     (size_t)px * s->ch + c] -
+					       128.0;
+			}
+		}
+		for (k = 0; k < 64; k++) {
+			u = dct_zz[k] % 8;
+			v = dct_zz[k] / 8;
+			F = 0;
+			for (y = 0; y < 8; y++)
+				for (x = 0; x < 8; x++)
+					F += f[8 * y + x] * dct_k[x][u] *
+					     dct_k[y][v];
+			F /= q[k];
+			val = (int)(F < 0 ? F - 0.5 : F + 0.5);
+			val = val > 1023 ? 1023 : val < -1023 ? -1023 : val;
+			qc[(size_t)b * 64 + k] = (int16_t)val;
+		}
+	}
+	for (pass = 0; pass < 2; pass++) {
+		if (pass) {
+			huff_lengths(fdc, RDC_IMG_HUFF_SYMS, ldc);
+			huff_lengths(fac, RDC_IMG_HUFF_SYMS, lac);
+			bits.k = RDC_IMG_DCT_QBYTES;
+			bits.k += huff_table(ldc, RDC_IMG_HUFF_SYMS, cdc,
+					     o + bits.k);
+			bits.k += huff_table(lac, RDC_IMG_HUFF_SYMS, cac,
+					     o + bits.k);
+		} else {
+			memset(fdc, 0, sizeof(fdc));
+			memset(fac, 0, sizeof(fac));
+		}
+		pred[0] = pred[1] = pred[2] = 0;
+		for (b = 0; b < nb; b++) {
+			const int16_t *z = qc + (size_t)b * 64;
+
+			c = b % s->ch;
+			d = z[0] - pred[c];
+			pred[c] = z[0];
+			cat = dct_cat(d);
+			if (pass) {
+				bits_put(&bits, cdc[cat], ldc[cat]);
+				bits_put(&bits, dct_bits(d, cat), cat);
+			} else {
+				fdc[cat]++;
+			}
+			for (k = 1, run = 0; k < 64; k++) {
+				if (!z[k]) {
+					run++;
+					continue;
+				}
+				for (; run >= 16; run -= 16) {
+					if (pass)
+						bits_put(&bits,
+							 cac[RDC_IMG_DCT_ZRL],
+							 lac[RDC_IMG_DCT_ZRL]);
+					else
+						fac[RDC_IMG_DCT_ZRL]++;
+				}
+				cat = dct_cat(z[k]);
+				sym = run << 4 | cat;
+				run = 0;
+				if (pass) {
+					bits_put(&bits, cac[sym], lac[sym]);
+					bits_put(&bits, dct_bits(z[k], cat),
+						 cat);
+				} else {
+					fac[sym]++;
+				}
+			}
+			if (run) {
+				if (pass)
+					bits_put(&bits, cac[RDC_IMG_DCT_EOB],
+						 lac[RDC_IMG_DCT_EOB]);
+				else
+					fac[RDC_IMG_DCT_EOB]++;
+			}
+		}
+	}
+	if (bits.n)
+		bits_put(&bits, 0, 8 - bits.n);
+	return bits.k;
+}
+
 static int img_encode(uint32_t codec, uint32_t level, const uint8_t *px,
 		      uint32_t w, uint32_t h, uint32_t channels, size_t pitch,
 		      uint8_t *out, size_t cap, size_t *len)
@@ -459,9 +652,12 @@ static int img_encode(uint32_t codec, uint32_t level, const uint8_t *px,
 		res = malloc((size_t)w * channels * sizeof(*res));
 	if (codec == RDC_IMG_DPCMQ)
 		rec = malloc((size_t)w * h * channels);
+	if (codec == RDC_IMG_DCT) /* the quantised blocks */
+		rec = malloc((size_t)((w + 7) / 8) * ((h + 7) / 8) * channels *
+			     64 * sizeof(int16_t));
 	if (!tmp ||
 	    ((codec == RDC_IMG_DPCM || codec == RDC_IMG_DPCMQ) && !res) ||
-	    (codec == RDC_IMG_DPCMQ && !rec)) {
+	    ((codec == RDC_IMG_DPCMQ || codec == RDC_IMG_DCT) && !rec)) {
 		free(tmp);
 		free(res);
 		free(rec);
@@ -480,6 +676,10 @@ static int img_encode(uint32_t codec, uint32_t level, const uint8_t *px,
 	case RDC_IMG_DPCMQ:
 		payload =
 			enc_dpcmq(&s, tmp + RDC_IMG_HDR_BYTES, res, rec, level);
+		break;
+	case RDC_IMG_DCT:
+		payload = enc_dct(&s, tmp + RDC_IMG_HDR_BYTES, (int16_t *)rec,
+				  level);
 		break;
 	default:
 		payload = enc_btc(&s, tmp + RDC_IMG_HDR_BYTES);
@@ -508,7 +708,9 @@ int rdc_image_encode(uint32_t codec, const uint8_t *px, uint32_t w, uint32_t h,
 		     uint32_t channels, size_t pitch, uint8_t *out, size_t cap,
 		     size_t *len)
 {
-	uint32_t level = codec == RDC_IMG_DPCMQ ? RDC_IMAGE_STEP_DEFAULT : 0;
+	uint32_t level = codec == RDC_IMG_DPCMQ ? RDC_IMAGE_STEP_DEFAULT :
+			 codec == RDC_IMG_DCT	? RDC_IMAGE_QUALITY_DEFAULT :
+						  0;
 
 	return img_encode(codec, level, px, w, h, channels, pitch, out, cap,
 			  len);
@@ -518,7 +720,8 @@ int rdc_image_encode_lossy(uint32_t codec, uint32_t level, const uint8_t *px,
 			   uint32_t w, uint32_t h, uint32_t channels,
 			   size_t pitch, uint8_t *out, size_t cap, size_t *len)
 {
-	if (codec != RDC_IMG_DPCMQ || level < 1 || level > 255)
+	if ((codec != RDC_IMG_DPCMQ && codec != RDC_IMG_DCT) || level < 1 ||
+	    level > (codec == RDC_IMG_DCT ? 100u : 255u))
 		return RDC_E_INVAL;
 	return img_encode(codec, level, px, w, h, channels, pitch, out, cap,
 			  len);

@@ -308,14 +308,14 @@ int rdl_st_vram_load(struct rdl *r, uint32_t op)
 }
 
 /*
- * encode rle|dpcm|btc|huff|dpcmq ADDR X Y W H [grey]: the rectangle of the picture
+ * encode rle|dpcm|btc|huff|dpcmq|dct ADDR X Y W H [grey]: the rectangle of the picture
  * on screen (the next complete frame), encoded on the host and written
  * to VRAM at ADDR.
  */
 int rdl_st_encode(struct rdl *r, uint32_t op)
 {
-	static const char *const codecs[] = { "rle", "dpcm", "btc", "huff",
-					      "dpcmq" };
+	static const char *const codecs[] = { "rle",  "dpcm",  "btc",
+					      "huff", "dpcmq", "dct" };
 	uint32_t codec = 0, addr, xy, wh, fw, fh, w, h, ch = 3, *pix = NULL;
 	uint8_t *smp = NULL, *out = NULL;
 	size_t cap, len;
@@ -329,7 +329,7 @@ int rdl_st_encode(struct rdl *r, uint32_t op)
 	if (!codec)
 		return rdl_err(r, RDC_E_PARSE,
 			       "encode: '%.40s' is not rle, "
-			       "dpcm, btc, huff or dpcmq",
+			       "dpcm, btc, huff, dpcmq or dct",
 			       r->tok[1].s);
 	ret = rdl_u32(r, 2, &addr);
 	if (!ret)
