@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-only
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /*
- * DECODE of the entropy and lossy codecs: HUFF and DPCMQ streams
+ * DECODE of the entropy and lossy codecs: HUFF, DPCMQ and DCT streams
  * written by librdc's encoders and decoded by the DP, each against a
  * decoder of this file written from rdc_image.h's description alone and
  * in another way than the DP's: HUFF by a walk down an explicit code tree
  * one bit at a time, DPCMQ over the whole image with the predictor as a
- * median of three.  Corrupt streams give RDC_ERR_DATA with
+ * median of three, DCT with a floating-point IDCT (the DP's integer IDCT
+ * within 1 of it).  Corrupt streams give RDC_ERR_DATA with
  * nothing drawn; the cost is the documented one, to the cycle.
  */
 #include <math.h>
@@ -344,10 +345,143 @@ static void ref_dpcmq(const uint8_t *st, size_t len, uint8_t *out,
 	assert_true(b.n * 8 - b.bit < 8);
 }
 
-/* Any codec of this file by its reference: samples and row ends. */
-static void ref_rowends(const uint8_t *st, size_t len, uint8_t *out,
-			uint32_t *rowend)
+/*
+ * DCT decoded with a floating-point IDCT: the zigzag order walked along
+ * the diagonals, the tables as code trees, each block's samples the
+ * IDCT's formula in doubles, rounded.  With ev, the writes: per band of
+ * 8 rows and strip of 512 columns, the payload bytes touched when the
+ * strip's last block is parsed.
+ */
+struct ev {
+	uint32_t end, y, rows, x, n;
+};
+
+static uint32_t ref_dct(const uint8_t *st, size_t len, uint8_t *out,
+			struct ev *ev)
 {
+	static struct rtree dc, ac;
+	uint32_t w = st[8] | st[9] << 8, h = st[10] | st[11] << 8, ch = st[5];
+	uint32_t bw = (w + 7) / 8, bh = (h + 7) / 8, bx, by, c, k, i, s, r;
+	uint32_t zz[64], nev = 0, bits;
+	const uint8_t *q = st + 16;
+	struct rbits b;
+	double F[64], cu[8][8];
+	size_t off = 16 + 64;
+	int pred[3] = { 0 }, v, sym;
+
+	assert_int_equal(st[4], RDC_IMG_DCT);
+	/* zigzag: diagonal d = u + v, odd ones downwards, even upwards */
+	for (k = 0, i = 0; i < 15; i++)
+		for (r = 0; r < 8; r++) {
+			uint32_t row = i % 2 ? r : i - r, col = i - row;
+
+			if (i % 2 == 0 && r > i)
+				continue;
+			if (i % 2 == 0) {
+				row = i - r;
+				col = r;
+			}
+			if (row > 7 || col > 7 || row + col != i)
+				continue;
+			zz[k++] = row * 8 + col;
+		}
+	assert_int_equal(k, 64);
+	for (k = 0; k < 8; k++)
+		for (i = 0; i < 8; i++)
+			cu[k][i] = (i ? 1.0 : sqrt(0.5)) *
+				   cos((2.0 * k + 1) * i * M_PI / 16);
+	off += rtree_load(&dc, st + off, len - off);
+	off += rtree_load(&ac, st + off, len - off);
+	b.p = st + off;
+	b.n = len - off;
+	b.bit = 0;
+	for (by = 0; by < bh; by++) {
+		for (bx = 0; bx < bw; bx++) {
+			for (c = 0; c < ch; c++) {
+				int32_t z[64] = { 0 };
+
+				sym = rtree_sym(&dc, &b);
+				assert_true(sym >= 0 && sym <= 11);
+				assert_int_equal(
+					rbits_get(&b, (uint32_t)sym, &bits), 0);
+				v = sym && bits < 1u << (sym - 1) ?
+					    (int)bits - (1 << sym) + 1 :
+					    (int)bits;
+				pred[c] += v;
+				z[0] = pred[c];
+				for (k = 1; k < 64; k++) {
+					sym = rtree_sym(&ac, &b);
+					assert_true(sym >= 0);
+					if (sym == 0)
+						break;
+					r = (uint32_t)sym >> 4;
+					s = (uint32_t)sym & 15;
+					if (sym == 0xf0) {
+						k += 15;
+						continue;
+					}
+					k += r;
+					assert_true(s >= 1 && s <= 10 &&
+						    k < 64);
+					assert_int_equal(
+						rbits_get(&b, s, &bits), 0);
+					z[k] = bits < 1u << (s - 1) ?
+						       (int)bits - (1 << s) +
+							       1 :
+						       (int)bits;
+				}
+				for (k = 0; k < 64; k++) {
+					v = z[k] * q[k];
+					v = v > 2047  ? 2047 :
+					    v < -2048 ? -2048 :
+							v;
+					F[zz[k]] = v;
+				}
+				for (i = 0; i < 64; i++) {
+					uint32_t x = i % 8, y = i / 8, u, vv;
+					double f = 0;
+
+					for (vv = 0; vv < 8; vv++)
+						for (u = 0; u < 8; u++)
+							f += cu[x][u] *
+							     cu[y][vv] *
+							     F[vv * 8 + u];
+					f = floor(f / 4 + 128 + 0.5);
+					f = f < 0 ? 0 : f > 255 ? 255 : f;
+					if (bx * 8 + x < w && by * 8 + y < h)
+						out[((size_t)(by * 8 + y) * w +
+						     bx * 8 + x) *
+							    ch +
+						    c] = (uint8_t)f;
+				}
+			}
+			if (ev && (bx + 1 == bw || (bx + 1) % 64 == 0)) {
+				ev[nev].end =
+					(uint32_t)(off - 16 + (b.bit + 7) / 8);
+				ev[nev].y = by * 8;
+				ev[nev].rows = RDC_MIN(8, h - by * 8);
+				ev[nev].x = bx / 64 * 512;
+				ev[nev].n = RDC_MIN(512, w - ev[nev].x);
+				nev++;
+			}
+		}
+	}
+	assert_true(b.n * 8 - b.bit < 8);
+	return nev;
+}
+
+/*
+ * Any codec of this file by its reference: the samples, and the writes
+ * (a row each for HUFF and DPCMQ) with the payload bytes touched before
+ * each.
+ */
+static uint32_t ref_events(const uint8_t *st, size_t len, uint8_t *out,
+			   struct ev *ev)
+{
+	uint32_t w = st[8] | st[9] << 8, h = st[10] | st[11] << 8, y;
+	uint32_t *rowend = calloc(h, sizeof(*rowend));
+
+	assert_non_null(rowend);
 	switch (st[4]) {
 	case RDC_IMG_HUFF:
 		ref_huff(st, len, out, rowend);
@@ -356,8 +490,18 @@ static void ref_rowends(const uint8_t *st, size_t len, uint8_t *out,
 		ref_dpcmq(st, len, out, rowend);
 		break;
 	default:
-		fail_msg("codec %u", st[4]);
+		free(rowend);
+		return ref_dct(st, len, out, ev);
 	}
+	for (y = 0; y < h; y++) {
+		ev[y].end = rowend[y];
+		ev[y].y = y;
+		ev[y].rows = 1;
+		ev[y].x = 0;
+		ev[y].n = w;
+	}
+	free(rowend);
+	return h;
 }
 
 static const uint32_t sizes[][2] = { { 1, 1 },	 { 7, 5 },   { 129, 3 },
@@ -525,8 +669,9 @@ static void test_huff_corrupt(void **state)
  * (tables and bits) in 256-byte read spans twice: all of it for the
  * check, then again while drawing, each span read when the decoding
  * first needs one of its bytes, so that rows written in between move
- * the open DRAM row.  rowend[y]: the payload bytes needed to finish row
- * y (from the reference decoders); one write span per image row.
+ * the open DRAM row; one write span per image row (DCT: per row of a
+ * strip of 512 columns once the strip's blocks are decoded).  When the
+ * reads happen comes from the reference decoders.
  */
 static void check_cycles(struct tdp *t, uint32_t codec, uint32_t level,
 			 uint32_t w, uint32_t h, uint32_t ch)
@@ -534,19 +679,23 @@ static void check_cycles(struct tdp *t, uint32_t codec, uint32_t level,
 	struct rdc_surface s =
 		dst_surface(ch == 1 ? RDC_FMT_I8 : RDC_FMT_XRGB8888);
 	uint64_t want = 4 * RDC_T_FIFO_WORD + RDC_T_DECODE;
-	uint32_t open, y, pay, off, n, bpp = ch == 1 ? 1 : 4;
+	uint32_t open, y, pay, off, n, bpp = ch == 1 ? 1 : 4, nev, e;
 	uint8_t *img = malloc((size_t)w * h * ch), *st;
 	uint8_t *dec = malloc((size_t)w * h * ch);
-	uint32_t *rowend = calloc(h, sizeof(*rowend)), got;
+	struct ev *ev = calloc(h + 64 * ((w + 511) / 512), sizeof(*ev));
+	uint32_t got;
 	size_t len;
 
 	assert_non_null(img);
 	assert_non_null(dec);
-	assert_non_null(rowend);
+	assert_non_null(ev);
+	/* as wide as the image: nothing clipped */
+	s.width = RDC_MAX(w, DST_W);
+	s.stride = (s.width * tdp_bpp(s.format) / 8 + 3) & ~3u;
 	gen_image(img, w, h, ch, 1, 4);
 	st = encode(codec, level, img, w, h, ch, &len);
 	pay = (uint32_t)len - 16;
-	ref_rowends(st, len, dec, rowend);
+	nev = ref_events(st, len, dec, ev);
 	memcpy(t->vram + STREAM_BASE, st, len);
 	prep_dst(t, &s);
 	tdp_drain(t);
@@ -557,25 +706,28 @@ static void check_cycles(struct tdp *t, uint32_t codec, uint32_t level,
 		want += tdp_bus_span(&open, STREAM_BASE + 16 + off, n,
 				     TDP_BUS_READ);
 	}
-	for (y = 0, off = 0; y < h; y++) {
-		for (; off < rowend[y]; off += n) {
+	for (e = 0, off = 0; e < nev; e++) {
+		for (; off < ev[e].end; off += n) {
 			n = RDC_MIN(pay - off, 256u);
 			want += tdp_bus_span(&open, STREAM_BASE + 16 + off, n,
 					     TDP_BUS_READ);
 		}
-		want += tdp_bus_span(&open, (uint64_t)y * s.stride, w * bpp,
-				     TDP_BUS_WRITE);
+		for (y = ev[e].y; y < ev[e].y + ev[e].rows; y++)
+			want += tdp_bus_span(
+				&open, (uint64_t)y * s.stride + ev[e].x * bpp,
+				ev[e].n * bpp, TDP_BUS_WRITE);
 	}
 	assert_int_equal(off, pay);
 	TDP_CMD(t, RDC_OP_DECODE, STREAM_BASE, (uint32_t)len, RDC_XY(0, 0));
 	tdp_drain(t);
 	assert_int_equal(tdp_err(t), RDC_ERR_NONE);
-	check_exact(t, &s, dec, w, h, ch, 0, 0);
+	if (codec != RDC_IMG_DCT)
+		check_exact(t, &s, dec, w, h, ch, 0, 0);
 	got = (uint32_t)rdc_hw_read(&t->hw, RDC_REG_PERF_LAST_CYCLES);
 	print_message("%ux%ux%u codec %u: %u payload bytes, %u cycles\n", w, h,
 		      ch, codec, pay, got);
 	assert_int_equal(got, want);
-	free(rowend);
+	free(ev);
 	free(dec);
 	free(st);
 	free(img);
@@ -721,13 +873,284 @@ static void test_dpcmq_cycles(void **state)
 	check_cycles(*state, RDC_IMG_DPCMQ, 2, 100, 30, 3);
 }
 
+/*
+ * The largest difference of DST's rectangle at (0, 0) from ref (w x h,
+ * ch samples), per sample; *off counts the samples that differ.
+ */
+static uint32_t max_diff(struct tdp *t, const struct rdc_surface *s,
+			 const uint8_t *ref, uint32_t w, uint32_t h,
+			 uint32_t ch, uint64_t *off)
+{
+	uint32_t x, y, c, px, v, m = 0, d;
+
+	for (y = 0; y < h; y++) {
+		for (x = 0; x < w; x++) {
+			px = tdp_get(t->vram, s, x, y);
+			for (c = 0; c < ch; c++) {
+				v = ch == 1 ? px & 0xff :
+					      px >> (16 - 8 * c) & 0xff;
+				d = (uint32_t)abs(
+					(int)v -
+					ref[((size_t)y * w + x) * ch + c]);
+				m = RDC_MAX(m, d);
+				*off += d != 0;
+			}
+		}
+	}
+	return m;
+}
+
+/*
+ * DCT against the floating-point IDCT: the DP's integer IDCT is within
+ * 1 of it, sample by sample (the stated tolerance), and off at all for
+ * at most 1 sample in 25 (1.6% here: a truncating IDCT is off for 45%),
+ * at qualities 10..100; against the original, quality 100 on a smooth
+ * picture is within 2.
+ */
+static void test_dct(void **state)
+{
+	struct tdp *t = *state;
+	static const uint32_t qs[] = { 10, 50, 75, 90, 100 };
+	static const uint32_t whs[][2] = { { 8, 8 },   { 1, 1 },    { 13, 9 },
+					   { 64, 40 }, { 300, 17 }, { 7, 33 } };
+	uint32_t qi, si, ch, w, h, m;
+	uint64_t off = 0, all = 0;
+	size_t i, n;
+	int kind;
+
+	for (si = 0; si < RDC_ARRAY_SIZE(whs); si++) {
+		for (qi = 0; qi < RDC_ARRAY_SIZE(qs); qi++) {
+			for (ch = 1; ch <= 3; ch += 2) {
+				for (kind = 0; kind < 5; kind++) {
+					struct rdc_surface s = dst_surface(
+						ch == 1 ? RDC_FMT_I8 :
+							  RDC_FMT_XRGB8888);
+					uint8_t *img, *ref, *st;
+					size_t len;
+
+					w = whs[si][0];
+					h = whs[si][1];
+					n = (size_t)w * h * ch;
+					img = malloc(n);
+					ref = malloc(n);
+					assert_non_null(img);
+					assert_non_null(ref);
+					gen_image(img, w, h, ch, kind, si + qi);
+					st = encode(RDC_IMG_DCT, qs[qi], img, w,
+						    h, ch, &len);
+					ref_dct(st, len, ref, NULL);
+					prep_dst(t, &s);
+					decode_at(t, st, len, (uint32_t)len, 0,
+						  0);
+					assert_int_equal(tdp_err(t),
+							 RDC_ERR_NONE);
+					m = max_diff(t, &s, ref, w, h, ch,
+						     &off);
+					all += n;
+					if (m > 1)
+						fail_msg("%ux%ux%u q %u kind "
+							 "%d: %u from the "
+							 "float IDCT",
+							 w, h, ch, qs[qi], kind,
+							 m);
+					if (qs[qi] == 100 && kind == 1)
+						for (i = 0; i < n; i++)
+							assert_true(
+								abs(img[i] -
+								    ref[i]) <=
+								2);
+					/* right of the image: untouched */
+					if (w < DST_W)
+						assert_int_equal(
+							tdp_get(t->vram, &s, w,
+								0),
+							ch == 1 ? SENTINEL :
+								  0x5a5a5a5au);
+					free(st);
+					free(ref);
+					free(img);
+				}
+			}
+		}
+	}
+	print_message("dct: %llu of %llu samples 1 off the float IDCT\n",
+		      (unsigned long long)off, (unsigned long long)all);
+	/* and rounds as the float IDCT does nearly always (1.6% off) */
+	assert_true(off * 25 <= all);
+}
+
+/* A lower quality gives a shorter stream; levels out of 1..100 are bad. */
+static void test_dct_quality(void **state)
+{
+	uint8_t img[64 * 48 * 3], *st;
+	size_t len, last = SIZE_MAX;
+	static const uint32_t qs[] = { 100, 90, 75, 50, 25, 5 };
+	uint32_t i;
+
+	(void)state;
+	gen_image(img, 64, 48, 3, 1, 5);
+	for (i = 0; i < RDC_ARRAY_SIZE(qs); i++) {
+		st = encode(RDC_IMG_DCT, qs[i], img, 64, 48, 3, &len);
+		assert_true(len < last);
+		last = len;
+		free(st);
+	}
+	assert_int_equal(rdc_image_encode_lossy(RDC_IMG_DCT, 101, img, 64, 48,
+						3, 192, img, 0, &len),
+			 RDC_E_INVAL);
+}
+
+/* A DCT stream of one grey 8x8 block by hand: tables, codes, bits. */
+static size_t dct_one(uint8_t *b, uint32_t dcsym, uint32_t dcbits, uint32_t dcn,
+		      const uint8_t *acsyms, uint32_t nac, const uint8_t *bits,
+		      uint32_t nbits)
+{
+	size_t k = 16, i;
+
+	memset(b, 0, 512);
+	put32(b, RDC_IMG_MAGIC);
+	b[4] = RDC_IMG_DCT;
+	b[5] = 1;
+	b[8] = 8;
+	b[10] = 8;
+	for (i = 0; i < 64; i++)
+		b[k++] = 1;
+	/* DC: one code "0" (length 1) for dcsym */
+	b[k] = 1;
+	k += 16;
+	b[k++] = (uint8_t)dcsym;
+	/* AC: nac codes of length 8, in order */
+	b[k + 7] = (uint8_t)nac;
+	k += 16;
+	for (i = 0; i < nac; i++)
+		b[k++] = acsyms[i];
+	(void)dcbits;
+	(void)dcn;
+	for (i = 0; i < (nbits + 7) / 8; i++)
+		b[k++] = bits[i];
+	put32(b + 12, (uint32_t)k - 16);
+	return k;
+}
+
+static void test_dct_corrupt(void **state)
+{
+	struct tdp *t = *state;
+	uint8_t b[512], img[16 * 16], *st;
+	/* AC symbols: EOB, ZRL, 0x01, 0x0b (s = 11), 0x30 (r 3, s 0) */
+	static const uint8_t ac[] = { 0x00, 0xf0, 0x01, 0x0b, 0x30 };
+	uint8_t bits[16];
+	size_t len;
+
+	/* DC category 0 ("0"), EOB (00000000): a flat grey block of 128 */
+	memset(bits, 0, sizeof(bits));
+	len = dct_one(b, 0, 0, 0, ac, 5, bits, 9);
+	{
+		struct rdc_surface s = dst_surface(RDC_FMT_I8);
+
+		prep_dst(t, &s);
+		decode_at(t, b, len, (uint32_t)len, 0, 0);
+		assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+		assert_int_equal(t->vram[0], 128);
+		assert_int_equal(t->vram[7 * s.stride + 7], 128);
+		assert_int_equal(t->vram[8], SENTINEL);
+	}
+	/* a DC category of 12 */
+	len = dct_one(b, 12, 0, 0, ac, 5, bits, 9);
+	expect_bad(t, b, len, RDC_ERR_DATA);
+	/* an AC symbol of 11 bits: "0" then code 3 (00000011) */
+	bits[0] = 0x01;
+	bits[1] = 0x80;
+	len = dct_one(b, 0, 0, 0, ac, 5, bits, 9);
+	expect_bad(t, b, len, RDC_ERR_DATA);
+	/* r 3, s 0: neither EOB nor ZRL (code 4: 00000100) */
+	bits[0] = 0x02;
+	bits[1] = 0x00;
+	expect_bad(t, b, dct_one(b, 0, 0, 0, ac, 5, bits, 9), RDC_ERR_DATA);
+	/* four ZRLs run past coefficient 63 (code 1: 00000001) */
+	memset(bits, 0, sizeof(bits));
+	bits[0] = 0x00; /* "0" DC, then 7 bits of the first ZRL */
+	bits[1] = 0x80; /* its last bit; the next ZRL starts */
+	bits[2] = 0x80;
+	bits[3] = 0x80;
+	bits[4] = 0x80;
+	len = dct_one(b, 0, 0, 0, ac, 5, bits, 33);
+	expect_bad(t, b, len, RDC_ERR_DATA);
+	/* a quantisation entry of 0 */
+	memset(bits, 0, sizeof(bits));
+	len = dct_one(b, 0, 0, 0, ac, 5, bits, 9);
+	b[16 + 5] = 0;
+	expect_bad(t, b, len, RDC_ERR_DATA);
+	/* a DC that steps past 2047: category 11, all ones, in each block */
+	gen_image(img, 16, 16, 1, 1, 2);
+	st = encode(RDC_IMG_DCT, 90, img, 16, 16, 1, &len);
+	memcpy(b, st, len);
+	put32(b + 12, (uint32_t)len - 17);
+	expect_bad(t, b, len - 1, RDC_ERR_DATA);
+	memcpy(b, st, len);
+	b[len] = 0;
+	put32(b + 12, (uint32_t)len - 15);
+	expect_bad(t, b, len + 1, RDC_ERR_DATA);
+	free(st);
+}
+
+static void test_dct_dc_limit(void **state)
+{
+	struct tdp *t = *state;
+	uint8_t b[600], bits[64];
+	static const uint8_t ac[] = { 0x00 };
+	size_t len;
+	uint32_t i, bit = 0;
+
+	/*
+	 * 16 x 8 grey: two blocks, DC category 11 each ("0" then 11 ones:
+	 * +2047), then EOB ("0" of the AC table's one 8-bit code
+	 * 00000000): 2047, then 4094 is past the limit.
+	 */
+	memset(bits, 0, sizeof(bits));
+	for (i = 0; i < 2; i++) {
+		bit++; /* the DC code "0" */
+		for (uint32_t j = 0; j < 11; j++, bit++)
+			bits[bit / 8] |= (uint8_t)(0x80 >> (bit % 8));
+		bit += 8; /* EOB */
+	}
+	len = dct_one(b, 11, 0, 0, ac, 1, bits, bit);
+	b[8] = 16;
+	expect_bad(t, b, len, RDC_ERR_DATA);
+	/* one block of +2047 decodes (white) */
+	len = dct_one(b, 11, 0, 0, ac, 1, bits, 20);
+	{
+		struct rdc_surface s = dst_surface(RDC_FMT_I8);
+
+		prep_dst(t, &s);
+		decode_at(t, b, len, (uint32_t)len, 0, 0);
+		assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+		assert_int_equal(t->vram[0], 255);
+	}
+}
+
+static void test_dct_cycles(void **state)
+{
+	check_cycles(*state, RDC_IMG_DCT, 75, 16, 12, 1);
+	check_cycles(*state, RDC_IMG_DCT, 90, 100, 30, 3);
+	check_cycles(*state, RDC_IMG_DCT, 50, 600, 20, 1);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		TDP_TEST(test_huff_roundtrip), TDP_TEST(test_huff_long_codes),
-		TDP_TEST(test_huff_corrupt),   TDP_TEST(test_huff_cycles),
-		TDP_TEST(test_dpcmq),	       TDP_TEST(test_dpcmq_ratio),
-		TDP_TEST(test_dpcmq_corrupt),  TDP_TEST(test_dpcmq_cycles),
+		TDP_TEST(test_huff_roundtrip),
+		TDP_TEST(test_huff_long_codes),
+		TDP_TEST(test_huff_corrupt),
+		TDP_TEST(test_huff_cycles),
+		TDP_TEST(test_dpcmq),
+		TDP_TEST(test_dpcmq_ratio),
+		TDP_TEST(test_dpcmq_corrupt),
+		TDP_TEST(test_dpcmq_cycles),
+		TDP_TEST(test_dct),
+		TDP_TEST(test_dct_quality),
+		TDP_TEST(test_dct_corrupt),
+		TDP_TEST(test_dct_dc_limit),
+		TDP_TEST(test_dct_cycles),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -35,7 +35,7 @@ static int run(rdc_dev *dev, const char *text, struct rdc_script_result *res)
 
 static void test_encode_args(void **state)
 {
-	uint8_t px[12 * 5 * 3], out[1024];
+	uint8_t px[12 * 5 * 3], out[4096];
 	size_t len = 0;
 
 	(void)state;
