@@ -701,6 +701,45 @@ static void test_hostile(void **state)
 	rdc_sink_close(s);
 }
 
+/*
+ * 200 viewers watch, and the 201st still gets in and gets the picture;
+ * a change then reaches every one of them (before: 16 viewers took every
+ * place, and the 17th was closed before its upgrade).
+ */
+#define MANY_VIEWERS 200
+
+static void test_many_viewers(void **state)
+{
+	static uint32_t a[FW * FH], b[FW * FH];
+	static int fds[MANY_VIEWERS + 1];
+	static struct view v;
+	rdc_sink *s;
+	int port;
+
+	(void)state;
+	assert_int_equal(rdc_sink_open("web:0", &s), 0);
+	port = web_port(s);
+	frame_init(a, 7);
+	feed(s, a, 1);
+	for (int i = 0; i <= MANY_VIEWERS; i++) {
+		fds[i] = ws_open(port, "");
+		memset(v.px, 0, sizeof(v.px));
+		view_sync(&v, fds[i], 1);
+		assert_memory_equal(v.px, a, sizeof(a));
+	}
+	memcpy(b, a, sizeof(b));
+	for (int x = 3; x < 9; x++)
+		a[20 * FW + x] ^= 0xffffff;
+	feed(s, a, 2);
+	for (int i = 0; i <= MANY_VIEWERS; i++) {
+		memcpy(v.px, b, sizeof(v.px));
+		view_sync(&v, fds[i], 2);
+		assert_memory_equal(v.px, a, sizeof(a));
+		close(fds[i]);
+	}
+	rdc_sink_close(s);
+}
+
 static void test_token(void **state)
 {
 	static uint32_t a[FW * FH];
@@ -803,6 +842,7 @@ int main(void)
 		cmocka_unit_test(test_live),
 		cmocka_unit_test(test_http),
 		cmocka_unit_test(test_hostile),
+		cmocka_unit_test(test_many_viewers),
 		cmocka_unit_test(test_token),
 		cmocka_unit_test(test_specs),
 	};

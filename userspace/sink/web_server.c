@@ -67,6 +67,11 @@ static bool conn_queue(struct web_conn *c, const void *p, size_t n)
 	return true;
 }
 
+bool rdc_web_conn_send_raw(struct web_conn *c, const void *p, size_t n)
+{
+	return conn_queue(c, p, n);
+}
+
 bool rdc_web_conn_send(struct web_conn *c, uint8_t op, const void *p, size_t n)
 {
 	uint8_t hdr[WEB_WS_HDR_MAX];
@@ -261,11 +266,11 @@ static void web_message(struct web_sink *w, struct web_conn *c)
 	pthread_mutex_lock(&w->mu);
 	c->authed = true;
 	w->nviewers++;
-	if (rdc_web_damage_size(w, c))
-		rdc_web_damage_all(w, c);
-	else
-		c->dead = true;
 	pthread_mutex_unlock(&w->mu);
+	/* the whole picture first, then the log */
+	c->snap = true;
+	c->snap_gen = 0;
+	c->since_ns = rdc_web_now_ns();
 }
 
 /* Frames from a viewer, as many as are whole in c->in. */
@@ -397,8 +402,6 @@ static void conn_free(struct web_sink *w, struct web_conn *c)
 	pthread_mutex_unlock(&w->mu);
 	close(c->fd);
 	free(c->out);
-	free(c->dx0);
-	free(c->dx1);
 	free(c);
 }
 
@@ -414,24 +417,32 @@ static void web_accept(struct web_sink *w)
 
 		if (fd < 0)
 			return;
-		if (w->nconns >= WEB_MAX_CONNS) {
-			/* the oldest that is not watching yet makes room;
-			 * else the viewer stuck longest on a full socket */
+		if (w->nconns - w->nviewers >= WEB_MAX_PENDING) {
+			/* the oldest that is not watching yet makes room */
 			for (c = w->conns; c; c = c->next)
 				if (!c->authed)
 					victim = c;
-			for (c = victim ? NULL : w->conns; c; c = c->next)
-				if (c->out_off < c->out_len &&
-				    rdc_web_now_ns() >
-					    c->sent_ns + WEB_DEADLINE_NS &&
+		} else if (w->nconns >= WEB_MAX_CONNS) {
+			/*
+			 * Every viewer's place is taken: a person opening the
+			 * page still gets in.  The viewer stuck longest on a
+			 * full socket makes room, else the one that has
+			 * watched longest.
+			 */
+			uint64_t now = rdc_web_now_ns();
+
+			for (c = w->conns; c; c = c->next)
+				if (c->authed && c->out_off < c->out_len &&
+				    now > c->sent_ns + WEB_DEADLINE_NS &&
 				    (!victim || c->sent_ns < victim->sent_ns))
 					victim = c;
-			if (!victim) {
-				close(fd);
-				continue;
-			}
-			conn_free(w, victim);
+			for (c = victim ? NULL : w->conns; c; c = c->next)
+				if (c->authed &&
+				    (!victim || c->since_ns < victim->since_ns))
+					victim = c;
 		}
+		if (victim)
+			conn_free(w, victim);
 		c = calloc(1, sizeof(*c));
 		if (!c) {
 			close(fd);
@@ -492,12 +503,9 @@ void *rdc_web_serve(void *arg)
 		for (struct web_conn *c = w->conns; c; c = c->next) {
 			if (!c->authed && !c->closing)
 				next = RDC_MIN(next, c->deadline_ns);
-			pthread_mutex_lock(&w->mu);
-			if (c->authed && c->status_due && !c->dirty &&
-			    !c->sync_due)
-				next = RDC_MIN(next,
-					       c->status_ns + WEB_STATUS_NS);
-			pthread_mutex_unlock(&w->mu);
+			if (c->authed && !c->closing &&
+			    c->out_off == c->out_len)
+				next = RDC_MIN(next, rdc_web_next(w, c));
 			if (nc == WEB_MAX_CONNS)
 				continue;
 			cl[nc++] = c;
@@ -514,14 +522,6 @@ void *rdc_web_serve(void *arg)
 				      0 :
 				      (int)RDC_MIN((next - now) / 1000000u + 1,
 						   (uint64_t)1000);
-		for (unsigned int i = 0; i < nc; i++)
-			if (cl[i]->authed && !cl[i]->closing &&
-			    cl[i]->out_off == cl[i]->out_len) {
-				pthread_mutex_lock(&w->mu);
-				if (cl[i]->dirty || cl[i]->sync_due)
-					tmo = 0; /* more to send at once */
-				pthread_mutex_unlock(&w->mu);
-			}
 		if (poll(pfd, n, tmo) < 0 && errno != EINTR)
 			break;
 		if (pfd[0].revents & POLLIN) {
