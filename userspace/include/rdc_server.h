@@ -51,6 +51,21 @@ static inline int rdc_wait_result_error(enum rdc_hw_wait_result r)
 }
 
 /*
+ * The host's FIFO feed, one step, as every host of the chip feeds it
+ * (rdc_submit, rdcd's SUBMIT), so that the same words give the same
+ * register reads, waits and cycles everywhere: read FIFO_FREE; with room,
+ * `push` hands over up to that many of the `n` words (NULL: FIFO_DATA
+ * writes, a word each) and the step returns how many went in; without,
+ * it returns 0 and sets *room to the wait that comes next, FIFO_FREE at
+ * least half a FIFO (or the words left, if fewer), which needs the DP.
+ * Negative: an error.  `push` returns the words taken or an error.
+ */
+typedef int (*rdc_fifo_push_fn)(rdc_dev *dev, const uint32_t *words,
+				uint32_t n);
+int rdc_fifo_feed_step(rdc_dev *dev, const uint32_t *words, size_t n,
+		       rdc_fifo_push_fn push, struct rdc_wait_cond *room);
+
+/*
  * The chip behind a "sim:" handle, NULL for any other backend: rdcd owns
  * its device through a sim: handle and hooks frames and time here.
  */

@@ -448,35 +448,48 @@ static int fifo_push_words(rdc_dev *dev, const uint32_t *words, uint32_t n)
 	return (int)n;
 }
 
-int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
-		  rdc_fifo_push_fn push)
+int rdc_fifo_feed_step(rdc_dev *dev, const uint32_t *words, size_t n,
+		       rdc_fifo_push_fn push, struct rdc_wait_cond *room)
 {
+	uint32_t free_words;
 	int ret;
 
 	if (!push)
 		push = fifo_push_words;
+	ret = rdc_reg_read(dev, RDC_REG_FIFO_FREE, &free_words);
+	if (ret)
+		return ret;
+	if (!free_words) {
+		/* Wait for half a FIFO, not one word: fewer checks. */
+		*room = (struct rdc_wait_cond){
+			.test = RDC_WAIT_TEST_GE,
+			.reg = RDC_REG_FIFO_FREE,
+			.mask = ~0u,
+			.value = n < RDC_FIFO_DEPTH / 2 ? (uint32_t)n :
+							  RDC_FIFO_DEPTH / 2,
+		};
+		return 0;
+	}
+	return push(dev, words, (uint32_t)RDC_MIN(n, (size_t)free_words));
+}
+
+int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
+		  rdc_fifo_push_fn push)
+{
+	struct rdc_wait_cond room = { 0 };
+	int ret;
+
 	while (n) {
-		uint32_t free_words;
-
-		ret = rdc_reg_read(dev, RDC_REG_FIFO_FREE, &free_words);
-		if (ret)
+		ret = rdc_fifo_feed_step(dev, words, n, push, &room);
+		if (ret < 0)
 			return ret;
-		if (!free_words) {
-			/* Wait for half a FIFO, not one word: fewer checks. */
-			uint32_t want = n < RDC_FIFO_DEPTH / 2 ?
-						(uint32_t)n :
-						RDC_FIFO_DEPTH / 2;
-
-			ret = rdc_wait_one(dev, RDC_WAIT_TEST_GE,
-					   RDC_REG_FIFO_FREE, ~0u, want, true);
+		if (!ret) {
+			ret = rdc_wait_one(dev, room.test, room.reg, room.mask,
+					   room.value, true);
 			if (ret)
 				return ret;
 			continue;
 		}
-		ret = push(dev, words,
-			   (uint32_t)RDC_MIN(n, (size_t)free_words));
-		if (ret < 0)
-			return ret;
 		words += ret;
 		n -= (size_t)ret;
 	}

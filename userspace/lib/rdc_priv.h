@@ -249,14 +249,11 @@ void rdc_history_detach(rdc_dev *dev);
 int rdc_wait_one(rdc_dev *dev, enum rdc_wait_test kind, uint32_t reg,
 		 uint32_t mask, uint32_t value, bool needs_dp);
 /*
- * The FIFO_DATA loop (core.c): words go in as FIFO_FREE allows; on a full
- * FIFO it waits, in the device's own time, for half a FIFO.  `push` hands
- * over up to `n` words and returns how many were taken or a negative
- * error; NULL writes FIFO_DATA a word at a time.  A backend whose device
- * takes words in bulk gives its own push and keeps the same waits.
+ * The FIFO_DATA loop (core.c): rdc_fifo_feed_step (rdc_server.h) until
+ * every word is in, waiting in the device's own time for the room each
+ * step asks for.  A backend whose device takes words in bulk gives its
+ * own push and keeps the same waits.
  */
-typedef int (*rdc_fifo_push_fn)(rdc_dev *dev, const uint32_t *words,
-				uint32_t n);
 int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
 		  rdc_fifo_push_fn push);
 /*

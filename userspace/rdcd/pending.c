@@ -75,12 +75,41 @@ static int rdcd_stepped_wait_run(struct rdcd *d, struct rdcd_client *c,
 	}
 }
 
+/* Words of a SUBMIT go in through rdc_submit, so a recording sees them. */
+static int rdcd_push(rdc_dev *dev, const uint32_t *words, uint32_t n)
+{
+	int ret = rdc_submit(dev, words, n);
+
+	return ret ? ret : (int)n;
+}
+
+/*
+ * One step of the library's FIFO feed (rdc_fifo_feed_step) with the next
+ * words of the client's SUBMIT: how many went in, 0 with *room the wait
+ * for room that comes next, or an error.
+ */
+static int rdcd_submit_step(struct rdcd *d, struct rdcd_client *c,
+			    struct rdc_wait_cond *room)
+{
+	uint32_t w[RDC_FIFO_DEPTH];
+	size_t k = RDC_MIN(c->pend_n - c->pend_done, (size_t)RDC_FIFO_DEPTH);
+	int ret;
+
+	for (size_t i = 0; i < k; i++)
+		w[i] = rdc_proto_get32(c->pend_words + 4 * (c->pend_done + i));
+	ret = rdc_fifo_feed_step(d->dev, w, k, rdcd_push, room);
+	if (ret > 0)
+		c->pend_done += (size_t)ret;
+	return ret;
+}
+
 /*
  * Stepped mode: a SUBMIT feeds the FIFO as sim:'s rdc_submit does (the
- * same reads of FIFO_FREE, the same waits for half a FIFO of room, so the
- * same cycles), except that the waits of one SUBMIT share one budget of
- * RDCD_SUBMIT_BUDGET_S simulated seconds: then TIMEOUT, the words not yet
- * taken dropped.  Each wait gets sim:'s default budget or what is left.
+ * library's feed, rdc_fifo_feed_step: the same reads of FIFO_FREE, the
+ * same waits for room, so the same cycles), except that the waits of one
+ * SUBMIT share one budget of RDCD_SUBMIT_BUDGET_S simulated seconds: then
+ * TIMEOUT, the words not yet taken dropped.  Each wait gets sim:'s
+ * default budget or what is left.
  */
 static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 {
@@ -89,25 +118,16 @@ static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 	uint64_t start = rdc_hw_now(d->hw);
 
 	while (c->pend_done < c->pend_n) {
-		size_t left = c->pend_n - c->pend_done, k;
-		uint32_t room, w[RDC_FIFO_DEPTH];
+		struct rdc_wait_cond room_cond;
 		int ret;
 
 		if (c->dead)
 			return RDC_E_IO;
-		ret = rdc_reg_read(d->dev, RDC_REG_FIFO_FREE, &room);
-		if (ret)
+		ret = rdcd_submit_step(d, c, &room_cond);
+		if (ret < 0)
 			return ret;
-		if (!room) {
+		if (!ret) {
 			struct rdc_hw_wait *rw = &c->pend_hw;
-			const struct rdc_wait_cond room_cond = {
-				.test = RDC_WAIT_TEST_GE,
-				.reg = RDC_REG_FIFO_FREE,
-				.mask = ~0u,
-				.value = left < RDC_FIFO_DEPTH / 2 ?
-						 (uint32_t)left :
-						 RDC_FIFO_DEPTH / 2,
-			};
 			uint64_t used = rdc_hw_now(d->hw) - start;
 
 			if (used >= total)
@@ -122,17 +142,7 @@ static int rdcd_stepped_submit(struct rdcd *d, struct rdcd_client *c)
 			ret = rdcd_stepped_wait_run(d, c, &c->pend_hw);
 			if (ret)
 				return ret;
-			continue;
 		}
-		k = RDC_MIN(RDC_MIN((size_t)room, (size_t)RDC_FIFO_DEPTH),
-			    left);
-		for (size_t i = 0; i < k; i++)
-			w[i] = rdc_proto_get32(c->pend_words +
-					       4 * (c->pend_done + i));
-		ret = rdc_submit(d->dev, w, k);
-		if (ret)
-			return ret;
-		c->pend_done += k;
 	}
 	return 0;
 }
@@ -202,22 +212,14 @@ bool rdcd_pending_step(struct rdcd *d, struct rdcd_client *c)
 
 	switch (c->pend) {
 	case RDCD_PEND_SUBMIT:
+		/* the feed's waits are the daemon's clock here */
 		while (c->pend_done < c->pend_n) {
-			uint32_t room, w[RDC_FIFO_DEPTH];
-			size_t k;
+			struct rdc_wait_cond room;
 
-			ret = rdc_reg_read(d->dev, RDC_REG_FIFO_FREE, &room);
-			if (ret || !room)
+			ret = rdcd_submit_step(d, c, &room);
+			if (ret <= 0)
 				break;
-			k = RDC_MIN(RDC_MIN((size_t)room, RDC_FIFO_DEPTH),
-				    c->pend_n - c->pend_done);
-			for (size_t i = 0; i < k; i++)
-				w[i] = rdc_proto_get32(c->pend_words +
-						       4 * (c->pend_done + i));
-			ret = rdc_submit(d->dev, w, k);
-			if (ret)
-				break;
-			c->pend_done += k;
+			ret = 0;
 		}
 		if (!ret && c->pend_done < c->pend_n) {
 			uint64_t sim = (uint64_t)RDCD_SUBMIT_BUDGET_S *
