@@ -72,12 +72,13 @@ void dp_blit_span(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n)
 
 		if (st->colorkey_on && !dp->on[i])
 			continue;
-		d = px_ld(p, bpp, bit);
-		px_st(p, bpp, bit,
-		      rdc_dp_blend(fmt,
-				   rdc_rop_apply(st->rop, dp->px[i], d) & mask,
-				   d, st->alpha) &
-			      mask);
+		d = rdc_px_get(p, bpp, bit);
+		rdc_px_put(p, bpp, bit,
+			   rdc_dp_blend(fmt,
+					rdc_rop_apply(st->rop, dp->px[i], d) &
+						mask,
+					d, st->alpha) &
+				   mask);
 		cnt++;
 	}
 	dp->hw->perf.pixels += cnt;
@@ -340,8 +341,8 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 			if (!p)
 				continue;
 			for (i = 0; i < n; i++)
-				dp->px[i] = px_ld(p, bpp,
-						  (uint32_t)(b0 & 7) + i * bpp);
+				dp->px[i] = rdc_px_get(
+					p, bpp, (uint32_t)(b0 & 7) + i * bpp);
 			dp_blit_span(dp, (int32_t)(dy + row),
 				     (int32_t)(dx + off), n);
 		}
@@ -381,8 +382,8 @@ void rdc_dp_readback_pack(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 	if (!p)
 		return;
 	for (k = va; k < vb; k++) {
-		uint32_t v =
-			px_ld(p, bpp, (uint32_t)((pbit0 & 7) + (k - va) * bpp));
+		uint32_t v = rdc_px_get(
+			p, bpp, (uint32_t)((pbit0 & 7) + (k - va) * bpp));
 		uint64_t kb = (uint64_t)k * bpp;
 		unsigned int i;
 

@@ -15,49 +15,6 @@ static inline uint32_t fmt_mask(unsigned int bpp)
 	return bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
 }
 
-/* Pixel at bit offset `bit` from p (sub-byte pixels MSB first). */
-static inline uint32_t px_ld(const uint8_t *p, unsigned int bpp, uint32_t bit)
-{
-	switch (bpp) {
-	case 32:
-		return rdc_ld32(p + bit / 8);
-	case 24:
-		return rdc_ld24(p + bit / 8);
-	case 16:
-		return rdc_ld16(p + bit / 8);
-	case 8:
-		return p[bit / 8];
-	default:
-		return (p[bit / 8] >> (8 - bpp - (bit & 7))) & fmt_mask(bpp);
-	}
-}
-
-static inline void px_st(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v)
-{
-	unsigned int sh;
-	uint32_t m;
-
-	switch (bpp) {
-	case 32:
-		rdc_st32(p + bit / 8, v);
-		break;
-	case 24:
-		rdc_st24(p + bit / 8, v);
-		break;
-	case 16:
-		rdc_st16(p + bit / 8, v);
-		break;
-	case 8:
-		p[bit / 8] = (uint8_t)v;
-		break;
-	default:
-		sh = 8 - bpp - (bit & 7);
-		m = fmt_mask(bpp) << sh;
-		p[bit / 8] = (uint8_t)((p[bit / 8] & ~m) | ((v << sh) & m));
-		break;
-	}
-}
-
 #define FILL_BLOCK 64 /* bytes of pattern copied at a time */
 #define FILL_STORE 32 /* bytes of pattern one store of dp_fill32 writes */
 

@@ -117,8 +117,8 @@ static void span_emit(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 			continue;
 		}
 		s_px = vals ? vals[i] : solid;
-		d_px = rdc_rop_reads_dst(rop) ? px_ld(p, bpp, bit) : 0;
-		px_st(p, bpp, bit, rdc_rop_apply(rop, s_px, d_px) & mask);
+		d_px = rdc_rop_reads_dst(rop) ? rdc_px_get(p, bpp, bit) : 0;
+		rdc_px_put(p, bpp, bit, rdc_rop_apply(rop, s_px, d_px) & mask);
 	}
 	hw->perf.pixels += cnt;
 }
@@ -173,8 +173,10 @@ void dp_run_write(struct rdc_dp *dp, uint8_t *p, const struct rdc_port_run *r,
 		}
 	} else {
 		for (k = 0; k < n; k++, p += step)
-			px_st(p, bpp, 0,
-			      rdc_rop_apply(rop, fg, px_ld(p, bpp, 0)) & mask);
+			rdc_px_put(p, bpp, 0,
+				   rdc_rop_apply(rop, fg,
+						 rdc_px_get(p, bpp, 0)) &
+					   mask);
 	}
 	dp->hw->perf.pixels += n;
 }
@@ -337,9 +339,10 @@ void dp_col_fill(struct rdc_dp *dp, const struct rdc_rect *c, int32_t x,
 		uint32_t d = 0;
 
 		if (rdc_rop_reads_dst(rop))
-			d = px_ld(q, bpp, bit & 7);
+			d = rdc_px_get(q, bpp, bit & 7);
 
-		px_st(q, bpp, bit & 7, rdc_rop_apply(rop, colour, d) & mask);
+		rdc_px_put(q, bpp, bit & 7,
+			   rdc_rop_apply(rop, colour, d) & mask);
 	}
 	hw->perf.pixels += count;
 }
@@ -381,7 +384,7 @@ bool rdc_dp_read_row(struct rdc_dp *dp, const struct rdc_surface *s, int32_t y,
 	if (!p)
 		return false;
 	for (i = 0; i < n; i++)
-		out[i] = px_ld(p, bpp, (uint32_t)(bit0 & 7) + i * bpp);
+		out[i] = rdc_px_get(p, bpp, (uint32_t)(bit0 & 7) + i * bpp);
 	return true;
 }
 
@@ -393,10 +396,10 @@ bool rdc_dp_read_px(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 
 uint32_t rdc_dp_px_load(const uint8_t *p, unsigned int bpp, uint32_t bit)
 {
-	return px_ld(p, bpp, bit);
+	return rdc_px_get(p, bpp, bit);
 }
 
 void rdc_dp_px_store(uint8_t *p, unsigned int bpp, uint32_t bit, uint32_t v)
 {
-	px_st(p, bpp, bit, v & fmt_mask(bpp));
+	rdc_px_put(p, bpp, bit, v & fmt_mask(bpp));
 }

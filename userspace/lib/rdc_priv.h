@@ -62,60 +62,6 @@ static inline void rdc_wait_to_hw(const struct rdc_wait *w,
 	out->budget = w->budget ? w->budget : RDC_WAIT_BUDGET_DEFAULT;
 }
 
-/*
- * The pixel of `bpp` bits (1, 2, 4, 8, 16, 24 or 32) at bit offset `bit`
- * of p, laid out as the RDC-1's VRAM holds it: sub-byte pixels leftmost
- * in the most significant bits, wider ones little-endian.  Every host
- * side reader and writer of packed pixels (script.c, history.c) goes
- * through these; the display processor's own are firmware-model's.
- */
-static inline uint32_t rdc_px_get(const uint8_t *p, unsigned int bpp,
-				  uint64_t bit)
-{
-	p += bit / 8;
-	switch (bpp) {
-	case 32:
-		return rdc_ld32(p);
-	case 24:
-		return rdc_ld24(p);
-	case 16:
-		return rdc_ld16(p);
-	case 8:
-		return *p;
-	default:
-		return (uint32_t)(*p >> (8 - bpp - bit % 8)) &
-		       ((1u << bpp) - 1);
-	}
-}
-
-static inline void rdc_px_put(uint8_t *p, unsigned int bpp, uint64_t bit,
-			      uint32_t v)
-{
-	unsigned int sh;
-	uint32_t m;
-
-	p += bit / 8;
-	switch (bpp) {
-	case 32:
-		rdc_st32(p, v);
-		break;
-	case 24:
-		rdc_st24(p, v);
-		break;
-	case 16:
-		rdc_st16(p, v);
-		break;
-	case 8:
-		*p = (uint8_t)v;
-		break;
-	default:
-		sh = 8 - bpp - (unsigned int)(bit % 8);
-		m = ((1u << bpp) - 1) << sh;
-		*p = (uint8_t)((*p & ~m) | ((v << sh) & m));
-		break;
-	}
-}
-
 struct rdc_backend {
 	/* URI scheme without the colon, e.g. "sim". */
 	const char *scheme;
