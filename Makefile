@@ -593,8 +593,10 @@ bench-stream-vm: $(O)/rel/stream-bench $(O)/rel/rdcctl $(O)/rel/v4l2_read
 #   fuzz_script  the .rdl interpreter on a sim: device (lib/script*.c)
 #   fuzz_web     the web sink's HTTP and WebSocket parsers (sink/web_proto.c)
 #   fuzz_trace   trace replay (lib/record.c: rdcctl replay, why, diff)
+#   fuzz_decode  DECODE's image streams, every codec (firmware-model/decode.c)
 # `make fuzz` is the short run `make check` does (fuzz_proto, fuzz_usb and
-# fuzz_web a million inputs each, fuzz_rdcd, fuzz_script and fuzz_trace FUZZ_TIME
+# fuzz_web a million inputs each, fuzz_rdcd, fuzz_script, fuzz_trace and
+# fuzz_decode FUZZ_TIME
 # seconds each from their
 # seeds in tests/fuzz/seeds/); `make fuzz-long` gives each target
 # FUZZ_LONG_TIME seconds (150: ten minutes in all) and keeps its corpus in
@@ -608,7 +610,7 @@ FUZZ_CFLAGS := -std=gnu11 -g -O1 -fsanitize=fuzzer $(FUZZ_INSTR) $(INC) \
 FUZZ_RUNS ?= 1000000
 FUZZ_TIME ?= 15
 FUZZ_LONG_TIME ?= 150
-FUZZ_TARGETS := proto usb rdcd script web trace
+FUZZ_TARGETS := proto usb rdcd script web trace decode
 FUZZ_BINS := $(patsubst %,$(FUZZ_DIR)/fuzz_%,$(FUZZ_TARGETS))
 $(FUZZ_DIR)/fuzz_proto: tests/fuzz/fuzz_proto.c userspace/lib/proto.c \
 		userspace/include/rdc_proto.h
@@ -674,6 +676,11 @@ $(FUZZ_DIR)/fuzz_trace: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_trace.o \
 		-Wl,--wrap=rdc_hw_run_until,--wrap=rdc_hw_wait_begin \
 		-Wl,--wrap=rdc_hw_set_frame_fn $^ $(LIBS) -o $@
 
+# fuzz_decode: DECODE on the chip core alone (hw-sim and the DP).
+$(FUZZ_DIR)/fuzz_decode: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_decode.o \
+		$(FUZZ_DIR)/librdc.a
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $^ $(LIBS) -o $@
+
 fuzz-bins: $(FUZZ_BINS)
 
 # A target's seed directories, in the shell variable seeds (t: the target):
@@ -683,6 +690,7 @@ FUZZ_SEEDS = case $$t in \
 	rdcd) seeds=tests/fuzz/seeds/rdcd;; \
 	script) seeds="tests/fuzz/seeds/script examples tests/golden/scenes";; \
 	trace) seeds=tests/fuzz/seeds/trace;; \
+	decode) seeds=tests/fuzz/seeds/decode;; \
 	*) seeds=;; esac
 
 # fuzz_rdcd, fuzz_script and fuzz_trace start from their seeds each time (a fresh
@@ -692,7 +700,7 @@ fuzz: $(FUZZ_BINS)
 	$(FUZZ_DIR)/fuzz_usb -runs=$(FUZZ_RUNS) -max_len=65536 -seed=1
 	$(FUZZ_DIR)/fuzz_web -runs=$(FUZZ_RUNS) -max_len=16384 -seed=1 \
 		-dict=tests/fuzz/web.dict
-	@for t in rdcd script trace; do \
+	@for t in rdcd script trace decode; do \
 		rm -rf $(FUZZ_DIR)/short-$$t && mkdir -p $(FUZZ_DIR)/short-$$t; \
 		dict=; [ -f tests/fuzz/$$t.dict ] && dict=-dict=tests/fuzz/$$t.dict; \
 		cmd="$(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_TIME) -seed=1"; \

@@ -1036,14 +1036,14 @@ static void test_dct_corrupt(void **state)
 {
 	struct tdp *t = *state;
 	uint8_t b[512], img[16 * 16], *st;
-	/* AC symbols: EOB, ZRL, 0x01, 0x0b (s = 11), 0x30 (r 3, s 0) */
-	static const uint8_t ac[] = { 0x00, 0xf0, 0x01, 0x0b, 0x30 };
+	/* AC symbols: EOB, ZRL, 0x01, 0x0b (s = 11), 0x30 (r 3, s 0), 0xf1 */
+	static const uint8_t ac[] = { 0x00, 0xf0, 0x01, 0x0b, 0x30, 0xf1 };
 	uint8_t bits[16];
 	size_t len;
 
 	/* DC category 0 ("0"), EOB (00000000): a flat grey block of 128 */
 	memset(bits, 0, sizeof(bits));
-	len = dct_one(b, 0, 0, 0, ac, 5, bits, 9);
+	len = dct_one(b, 0, 0, 0, ac, 6, bits, 9);
 	{
 		struct rdc_surface s = dst_surface(RDC_FMT_I8);
 
@@ -1055,17 +1055,17 @@ static void test_dct_corrupt(void **state)
 		assert_int_equal(t->vram[8], SENTINEL);
 	}
 	/* a DC category of 12 */
-	len = dct_one(b, 12, 0, 0, ac, 5, bits, 9);
+	len = dct_one(b, 12, 0, 0, ac, 6, bits, 9);
 	expect_bad(t, b, len, RDC_ERR_DATA);
 	/* an AC symbol of 11 bits: "0" then code 3 (00000011) */
 	bits[0] = 0x01;
 	bits[1] = 0x80;
-	len = dct_one(b, 0, 0, 0, ac, 5, bits, 9);
+	len = dct_one(b, 0, 0, 0, ac, 6, bits, 9);
 	expect_bad(t, b, len, RDC_ERR_DATA);
 	/* r 3, s 0: neither EOB nor ZRL (code 4: 00000100) */
 	bits[0] = 0x02;
 	bits[1] = 0x00;
-	expect_bad(t, b, dct_one(b, 0, 0, 0, ac, 5, bits, 9), RDC_ERR_DATA);
+	expect_bad(t, b, dct_one(b, 0, 0, 0, ac, 6, bits, 9), RDC_ERR_DATA);
 	/* four ZRLs run past coefficient 63 (code 1: 00000001) */
 	memset(bits, 0, sizeof(bits));
 	bits[0] = 0x00; /* "0" DC, then 7 bits of the first ZRL */
@@ -1073,11 +1073,20 @@ static void test_dct_corrupt(void **state)
 	bits[2] = 0x80;
 	bits[3] = 0x80;
 	bits[4] = 0x80;
-	len = dct_one(b, 0, 0, 0, ac, 5, bits, 33);
+	len = dct_one(b, 0, 0, 0, ac, 6, bits, 33);
+	expect_bad(t, b, len, RDC_ERR_DATA);
+	/* three ZRLs (to 49), then 15 zeros and a 1 would be coefficient 64 */
+	memset(bits, 0, sizeof(bits));
+	bits[0] = 0x00; /* "0" DC, 7 bits of ZRL */
+	bits[1] = 0x80; /* ZRL ends, 7 bits of ZRL */
+	bits[2] = 0x80;
+	bits[3] = 0x82; /* ZRL ends, 0000010 of code 5 */
+	bits[4] = 0xc0; /* 1 ends code 5, then its bit 1 */
+	len = dct_one(b, 0, 0, 0, ac, 6, bits, 34);
 	expect_bad(t, b, len, RDC_ERR_DATA);
 	/* a quantisation entry of 0 */
 	memset(bits, 0, sizeof(bits));
-	len = dct_one(b, 0, 0, 0, ac, 5, bits, 9);
+	len = dct_one(b, 0, 0, 0, ac, 6, bits, 9);
 	b[16 + 5] = 0;
 	expect_bad(t, b, len, RDC_ERR_DATA);
 	/* a DC that steps past 2047: category 11, all ones, in each block */
