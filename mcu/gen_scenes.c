@@ -264,7 +264,7 @@ static int run(const char *path, uint32_t vram, const char *trace,
 	       struct outcome *o, size_t *mark)
 {
 	struct rdc_script_result *res = calloc(1, sizeof(*res));
-	struct rdc_rec *rec = NULL;
+	struct rdc_server_rec *rec = NULL;
 	rdc_dev *dev = NULL;
 	char uri[48] = "sim:";
 	struct stat st;
@@ -276,9 +276,9 @@ static int run(const char *path, uint32_t vram, const char *trace,
 		snprintf(uri, sizeof(uri), "sim:vram=%u", vram);
 	ret = rdc_open(uri, &dev);
 	if (!ret && trace) {
-		rec = rdc_rec_open(trace, vram);
+		rec = rdc_server_rec_open(trace, vram);
 		if (rec)
-			rdc_rec_attach(rec, dev);
+			rdc_server_rec_attach(rec, dev);
 		else
 			ret = RDC_E_FILE;
 	}
@@ -287,7 +287,7 @@ static int run(const char *path, uint32_t vram, const char *trace,
 	if (!ret)
 		ret = rdc_sim_time(dev, &o->total);
 	if (!ret && rec) {
-		rdc_rec_sync(rec);
+		rdc_server_rec_sync(rec);
 		ret = stat(trace, &st) ? RDC_E_FILE : 0;
 		*mark = (size_t)st.st_size;
 	}
@@ -300,7 +300,7 @@ static int run(const char *path, uint32_t vram, const char *trace,
 	if (!ret)
 		ret = rdc_frame_crc(dev, &o->crc);
 	if (rec) {
-		int err = rdc_rec_close(rec, dev);
+		int err = rdc_server_rec_close(rec, dev);
 
 		if (!ret)
 			ret = err;

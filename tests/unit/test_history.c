@@ -20,7 +20,7 @@
 
 #include "dp.h"
 #include "rdc.h"
-#include "rdc_priv.h" /* rdc_rec_*: what rdcd --record does */
+#include "rdc_priv.h" /* rdc_server_rec_*: what rdcd --record does */
 #include "test_history_common.h"
 
 #define GOLDEN_LIST "tests/golden/golden.txt"
@@ -130,7 +130,7 @@ static void test_history_trace(void **state)
 	struct rdc_history_entry es[3], et;
 	struct rdc_replay_result rr;
 	rdc_history *hs = NULL, *ht = NULL, *ws = NULL, *wt = NULL;
-	struct rdc_rec *rec;
+	struct rdc_server_rec *rec;
 	rdc_dev *dev, *rdev = NULL;
 	size_t i = 0;
 	int fd;
@@ -142,11 +142,11 @@ static void test_history_trace(void **state)
 	/* the script, recorded, with both kinds of history */
 	assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
 	assert_int_equal(rdc_history_open(dev, 14, 12, 1, 1, 0, &hs), 0);
-	rec = rdc_rec_open(path, 4u << 20);
+	rec = rdc_server_rec_open(path, 4u << 20);
 	assert_non_null(rec);
-	rdc_rec_attach(rec, dev);
+	rdc_server_rec_attach(rec, dev);
 	run_text(dev, scene);
-	assert_int_equal(rdc_rec_close(rec, dev), 0);
+	assert_int_equal(rdc_server_rec_close(rec, dev), 0);
 	rdc_close(dev);
 	assert_int_equal(rdc_history_count(hs), 3);
 	for (i = 0; i < 3; i++)
@@ -222,20 +222,20 @@ static void test_history_recorder_order(void **state)
 	for (int order = 0; order < 2; order++) {
 		char path[] = "/tmp/rdc-history-XXXXXX";
 		struct rdc_replay_result rr;
-		struct rdc_rec *rec;
+		struct rdc_server_rec *rec;
 		int fd = mkstemp(path);
 
 		assert_true(fd >= 0);
 		close(fd);
 		assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
-		rec = rdc_rec_open(path, 4u << 20);
+		rec = rdc_server_rec_open(path, 4u << 20);
 		assert_non_null(rec);
 		if (order == 0) {
 			assert_int_equal(
 				rdc_history_open(dev, 10, 10, 4, 4, 0, &h), 0);
-			rdc_rec_attach(rec, dev);
+			rdc_server_rec_attach(rec, dev);
 		} else {
-			rdc_rec_attach(rec, dev);
+			rdc_server_rec_attach(rec, dev);
 			assert_int_equal(
 				rdc_history_open(dev, 10, 10, 4, 4, 0, &h), 0);
 		}
@@ -255,7 +255,7 @@ static void test_history_recorder_order(void **state)
 		}
 		/* the recorder goes first: the history goes on, and after
 		 * the device too */
-		assert_int_equal(rdc_rec_close(rec, dev), 0);
+		assert_int_equal(rdc_server_rec_close(rec, dev), 0);
 		run_text(dev, "fill 10 10 1 1\n");
 		assert_int_equal(rdc_history_count(h), n + 1);
 		rdc_close(dev);

@@ -20,7 +20,7 @@
 
 #include "hw.h"
 #include "rdc.h"
-#include "rdc_priv.h" /* rdc_rec_*: what rdcd --record does */
+#include "rdc_priv.h" /* rdc_server_rec_*: what rdcd --record does */
 #include "test_net_common.h"
 
 #define VRAM (4u << 20)
@@ -85,7 +85,7 @@ static long file_size(const char *path)
 static void test_live_and_cut(void **state)
 {
 	struct rdc_replay_result res;
-	struct rdc_rec *rec;
+	struct rdc_server_rec *rec;
 	struct rdc_hw *hw;
 	rdc_dev *dev;
 	uint32_t crc = 0;
@@ -96,9 +96,9 @@ static void test_live_and_cut(void **state)
 	assert_int_equal(rdc_open("sim:vram=4M", &dev), 0);
 	hw = rdc_sim_hw(dev);
 	assert_non_null(hw);
-	rec = rdc_rec_open(trace, VRAM);
+	rec = rdc_server_rec_open(trace, VRAM);
 	assert_non_null(rec);
-	rdc_rec_attach(rec, dev);
+	rdc_server_rec_attach(rec, dev);
 	assert_int_equal(rdc_script_run(dev, scene, strlen(scene), NULL), 0);
 	assert_int_equal(rdc_frame_wait(dev), 0);
 	assert_int_equal(rdc_frame_crc(dev, &crc), 0);
@@ -115,16 +115,16 @@ static void test_live_and_cut(void **state)
 
 	/* time moved on the chip itself (as rdcd's waits do) is in the
 	 * file once synced */
-	rdc_rec_time_moved(rec, hw->now);
+	rdc_server_rec_time_moved(rec, hw->now);
 	rdc_hw_run_until(hw, t + 100000);
-	rdc_rec_sync(rec);
+	rdc_server_rec_sync(rec);
 	assert_int_equal(rdc_replay_file(trace, &res, NULL), 0);
 	assert_int_equal(res.truncated, 1);
 	assert_int_equal(res.time, t + 100000);
 	size = file_size(trace);
 
 	/* closed: END is there, the trace is whole */
-	assert_int_equal(rdc_rec_close(rec, dev), 0);
+	assert_int_equal(rdc_server_rec_close(rec, dev), 0);
 	rdc_close(dev);
 	assert_true(file_size(trace) > size);
 	assert_int_equal(rdc_replay_file(trace, &res, NULL), 0);

@@ -72,25 +72,28 @@ int rdc_fifo_feed_step(rdc_dev *dev, const uint32_t *words, size_t n,
 struct rdc_hw *rdc_sim_hw(rdc_dev *dev);
 
 /*
- * Trace recording (record.c): wrap a sim: handle so that every operation
- * that can change the device is appended to a file with its simulated
- * time; rdc_replay_file (rdc.h) plays such a file back.
+ * The server's trace recorder (record.c; rdcd --record): wrap the sim:
+ * handle a server owns so that every operation that can change the
+ * device, whoever asked for it, is appended to a file with its simulated
+ * time; rdc_replay_file (rdc.h) plays such a file back.  A client records
+ * only its own calls, untimed, with rdc_record_start (rdc.h).
  */
-struct rdc_rec;
-struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size);
+struct rdc_server_rec;
+struct rdc_server_rec *rdc_server_rec_open(const char *path,
+					   uint32_t vram_size);
 /* Wrap `dev` (a sim: handle); the wrapper stays until rdc_close(dev). */
-void rdc_rec_attach(struct rdc_rec *rec, rdc_dev *dev);
+void rdc_server_rec_attach(struct rdc_server_rec *rec, rdc_dev *dev);
 /* Note a power cycle: the handle is closed and a fresh one attached. */
-void rdc_rec_power(struct rdc_rec *rec);
+void rdc_server_rec_power(struct rdc_server_rec *rec);
 /* Write the end record (`dev` attached, or NULL), flush and free. */
-int rdc_rec_close(struct rdc_rec *rec, rdc_dev *dev);
+int rdc_server_rec_close(struct rdc_server_rec *rec, rdc_dev *dev);
 /*
  * Time moved on the chip directly, not through the wrapped handle, from
  * simulated time `from` on (rdcd runs long waits in pieces): the trace
  * writes it as a step, in its place, before its next record.  NULL rec:
  * nothing.
  */
-void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from);
+void rdc_server_rec_time_moved(struct rdc_server_rec *rec, uint64_t from);
 /*
  * A client is about to get an answer that depends on time moved outside
  * the handle (a wait rdcd ran on the chip): write that time as its step
@@ -98,7 +101,7 @@ void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from);
  * The recorder does this itself after REG_READ and WAIT records.  NULL
  * rec: nothing.
  */
-void rdc_rec_sync(struct rdc_rec *rec);
+void rdc_server_rec_sync(struct rdc_server_rec *rec);
 
 /*
  * Pixel history in a program that serves the device (rdcd): the entries

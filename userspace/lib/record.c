@@ -71,7 +71,7 @@
 #define REC_MAX_CYCLES (60ull * RDC_DEFAULT_CORE_HZ)
 #define REC_MAX_POWER  256u
 
-struct rdc_rec {
+struct rdc_server_rec {
 	FILE *f;
 	int err;
 	const struct rdc_backend *inner;
@@ -83,33 +83,33 @@ struct rdc_rec {
 	/* the wrapper's table: the inner backend's optional operations that
 	 * it has, passed through or recorded */
 	struct rdc_backend be;
-	/* time moved on the chip directly since moved_from (rdc_rec_time_moved) */
+	/* time moved on the chip directly since moved_from (rdc_server_rec_time_moved) */
 	bool moved;
 	uint64_t moved_from;
 };
 
 static const struct rdc_backend rdc_backend_rec;
 
-static uint64_t rec_now(const struct rdc_rec *r)
+static uint64_t rec_now(const struct rdc_server_rec *r)
 {
 	return r->hw ? rdc_hw_now(r->hw) : 0;
 }
 
-static void rec_put(struct rdc_rec *r, const void *p, size_t n)
+static void rec_put(struct rdc_server_rec *r, const void *p, size_t n)
 {
 	if (n && fwrite(p, 1, n, r->f) != n)
 		r->err = RDC_E_FILE;
 }
 
 /* A client is about to see an answer: what led to it goes to the file. */
-static void rec_sync(struct rdc_rec *r)
+static void rec_sync(struct rdc_server_rec *r)
 {
 	if (fflush(r->f))
 		r->err = RDC_E_FILE;
 }
 
 /* A STEP record for time that moved at `t`, outside the handle. */
-static void rec_step_put(struct rdc_rec *r, uint64_t t, uint64_t cycles)
+static void rec_step_put(struct rdc_server_rec *r, uint64_t t, uint64_t cycles)
 {
 	uint8_t b[17];
 
@@ -120,7 +120,7 @@ static void rec_step_put(struct rdc_rec *r, uint64_t t, uint64_t cycles)
 }
 
 /* STEP records for `cycles` from `t`, none longer than a replay takes. */
-static void rec_steps_put(struct rdc_rec *r, uint64_t t, uint64_t cycles)
+static void rec_steps_put(struct rdc_server_rec *r, uint64_t t, uint64_t cycles)
 {
 	while (cycles) {
 		uint64_t k = RDC_MIN(cycles, REC_MAX_CYCLES);
@@ -133,7 +133,7 @@ static void rec_steps_put(struct rdc_rec *r, uint64_t t, uint64_t cycles)
 }
 
 /* Time that moved outside the handle, as a step, before the next record. */
-static void rec_flush_moved(struct rdc_rec *r)
+static void rec_flush_moved(struct rdc_server_rec *r)
 {
 	if (r->moved && r->hw && rdc_hw_now(r->hw) > r->moved_from)
 		rec_steps_put(r, r->moved_from,
@@ -141,7 +141,7 @@ static void rec_flush_moved(struct rdc_rec *r)
 	r->moved = false;
 }
 
-static void rec_head(struct rdc_rec *r, uint8_t op)
+static void rec_head(struct rdc_server_rec *r, uint8_t op)
 {
 	uint8_t b[9];
 
@@ -151,7 +151,8 @@ static void rec_head(struct rdc_rec *r, uint8_t op)
 	rec_put(r, b, sizeof(b));
 }
 
-static void rec_u32x2(struct rdc_rec *r, uint8_t op, uint32_t a, uint32_t v)
+static void rec_u32x2(struct rdc_server_rec *r, uint8_t op, uint32_t a,
+		      uint32_t v)
 {
 	uint8_t b[8];
 
@@ -161,10 +162,10 @@ static void rec_u32x2(struct rdc_rec *r, uint8_t op, uint32_t a, uint32_t v)
 	rec_put(r, b, sizeof(b));
 }
 
-static struct rdc_rec *rec_open(const char *path, uint32_t vram_size,
-				uint32_t flags, int *err)
+static struct rdc_server_rec *rec_open(const char *path, uint32_t vram_size,
+				       uint32_t flags, int *err)
 {
-	struct rdc_rec *r = calloc(1, sizeof(*r));
+	struct rdc_server_rec *r = calloc(1, sizeof(*r));
 	uint8_t b[12];
 
 	if (!r) {
@@ -188,7 +189,7 @@ static struct rdc_rec *rec_open(const char *path, uint32_t vram_size,
 	return r;
 }
 
-struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size)
+struct rdc_server_rec *rdc_server_rec_open(const char *path, uint32_t vram_size)
 {
 	int err;
 
@@ -196,7 +197,7 @@ struct rdc_rec *rdc_rec_open(const char *path, uint32_t vram_size)
 }
 
 /* The wrapper's table for `inner`: what it lacks, the wrapper lacks. */
-static void rec_table(struct rdc_rec *r, const struct rdc_backend *inner)
+static void rec_table(struct rdc_server_rec *r, const struct rdc_backend *inner)
 {
 	r->be = rdc_backend_rec;
 	r->be.scheme = inner->scheme;
@@ -231,7 +232,7 @@ static void rec_table(struct rdc_rec *r, const struct rdc_backend *inner)
 		r->be.frame_grab = NULL;
 }
 
-void rdc_rec_attach(struct rdc_rec *r, rdc_dev *dev)
+void rdc_server_rec_attach(struct rdc_server_rec *r, rdc_dev *dev)
 {
 	r->inner = dev->be;
 	r->inner_priv = dev->priv;
@@ -242,7 +243,7 @@ void rdc_rec_attach(struct rdc_rec *r, rdc_dev *dev)
 }
 
 /* Is `dev` wrapped by a recorder? */
-static struct rdc_rec *rec_of(rdc_dev *dev)
+static struct rdc_server_rec *rec_of(rdc_dev *dev)
 {
 	if (dev && dev->be && dev->be->close == rdc_backend_rec.close)
 		return dev->priv;
@@ -251,19 +252,19 @@ static struct rdc_rec *rec_of(rdc_dev *dev)
 
 struct rdc_hw *rdc_dev_chip(rdc_dev *dev)
 {
-	struct rdc_rec *r = rec_of(dev);
+	struct rdc_server_rec *r = rec_of(dev);
 
 	return r ? r->hw : rdc_sim_hw(dev);
 }
 
-void rdc_rec_power(struct rdc_rec *r)
+void rdc_server_rec_power(struct rdc_server_rec *r)
 {
 	rec_head(r, REC_POWER);
 	rec_sync(r);
 	r->hw = NULL;
 }
 
-int rdc_rec_close(struct rdc_rec *r, rdc_dev *dev)
+int rdc_server_rec_close(struct rdc_server_rec *r, rdc_dev *dev)
 {
 	int ret;
 
@@ -295,7 +296,7 @@ int rdc_rec_close(struct rdc_rec *r, rdc_dev *dev)
 
 static void rec_be_close(rdc_dev *dev)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	/* rdc_record_start's recorder ends with the handle: END first,
 	 * with the time the chip is at */
@@ -313,7 +314,7 @@ static void rec_be_close(rdc_dev *dev)
 
 static int rec_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 	uint8_t b[17];
 	uint64_t t;
 	int ret;
@@ -333,7 +334,7 @@ static int rec_reg_read(rdc_dev *dev, uint32_t reg, uint32_t *val)
 
 static int rec_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 	int ret;
 
 	if (!r->untimed) {
@@ -350,7 +351,7 @@ static int rec_reg_write(rdc_dev *dev, uint32_t reg, uint32_t val)
 
 static int rec_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r, vram_read(dev, addr, buf, len));
 }
@@ -358,7 +359,7 @@ static int rec_vram_read(rdc_dev *dev, uint32_t addr, void *buf, size_t len)
 static int rec_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 			  size_t len)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 	int ret = REC_INNER(dev, r, vram_write(dev, addr, buf, len));
 
 	/* Only writes that happened: a refused one changed nothing. */
@@ -371,7 +372,7 @@ static int rec_vram_write(rdc_dev *dev, uint32_t addr, const void *buf,
 
 static int rec_wait(rdc_dev *dev, const struct rdc_wait *w)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 	struct rdc_proto_wait pw = { .budget = w->budget,
 				     .needs_dp = w->needs_dp };
 	uint8_t b[RDC_PROTO_WAIT_SIZE + 4];
@@ -399,7 +400,7 @@ static int rec_wait(rdc_dev *dev, const struct rdc_wait *w)
  */
 static int rec_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 	uint64_t t;
 	int ret;
 
@@ -424,7 +425,7 @@ static int rec_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels)
  */
 static int rec_pins_get(rdc_dev *dev, uint32_t *levels)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r, pins_get(dev, levels));
 }
@@ -433,7 +434,7 @@ static int rec_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 			 uint64_t budget_cycles, uint64_t timeout_us,
 			 struct rdc_pin_edge *ev)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r,
 			 pins_wait(dev, pins, edges, budget_cycles, timeout_us,
@@ -442,7 +443,7 @@ static int rec_pins_wait(rdc_dev *dev, uint32_t pins, uint32_t edges,
 
 static int rec_step(rdc_dev *dev, uint64_t cycles)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 	int ret;
 
 	if (!r->untimed) {
@@ -467,7 +468,7 @@ static int rec_step(rdc_dev *dev, uint64_t cycles)
  */
 static int rec_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 	int ret = 0;
 
 	while (n && !ret) {
@@ -491,7 +492,7 @@ static int rec_submit(rdc_dev *dev, const uint32_t *words, size_t n)
 	return ret;
 }
 
-void rdc_rec_sync(struct rdc_rec *rec)
+void rdc_server_rec_sync(struct rdc_server_rec *rec)
 {
 	if (!rec)
 		return;
@@ -499,7 +500,7 @@ void rdc_rec_sync(struct rdc_rec *rec)
 	rec_sync(rec);
 }
 
-void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from)
+void rdc_server_rec_time_moved(struct rdc_server_rec *rec, uint64_t from)
 {
 	if (rec && !rec->moved) {
 		rec->moved = true;
@@ -510,7 +511,7 @@ void rdc_rec_time_moved(struct rdc_rec *rec, uint64_t from)
 static int rec_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 			  uint32_t *width, uint32_t *height)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r, frame_grab(dev, buf, cap, width, height));
 }
@@ -519,7 +520,7 @@ static int rec_frame_grab(rdc_dev *dev, uint32_t *buf, size_t cap,
 static int rec_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
 			 uint32_t encoding)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r, subscribe(dev, events, every, encoding));
 }
@@ -527,7 +528,7 @@ static int rec_subscribe(rdc_dev *dev, uint32_t events, uint32_t every,
 static int rec_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
 			  size_t cap, int timeout_ms)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r, event_next(dev, ev, buf, cap, timeout_ms));
 }
@@ -535,7 +536,7 @@ static int rec_event_next(rdc_dev *dev, struct rdc_event *ev, uint32_t *buf,
 static int rec_hist_open(rdc_dev *dev, uint32_t x, uint32_t y, uint32_t w,
 			 uint32_t h, uint32_t flags)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r, hist_open(dev, x, y, w, h, flags));
 }
@@ -544,7 +545,7 @@ static int rec_hist_read(rdc_dev *dev, uint64_t first, uint32_t max,
 			 struct rdc_history_entry *e, uint32_t *n,
 			 uint64_t *count, uint64_t *dropped)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r,
 			 hist_read(dev, first, max, e, n, count, dropped));
@@ -552,14 +553,14 @@ static int rec_hist_read(rdc_dev *dev, uint64_t first, uint32_t max,
 
 static int rec_hist_set(rdc_dev *dev, uint32_t what, uint32_t value)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r, hist_set(dev, what, value));
 }
 
 static int rec_hist_close(rdc_dev *dev)
 {
-	struct rdc_rec *r = dev->priv;
+	struct rdc_server_rec *r = dev->priv;
 
 	return REC_INNER(dev, r, hist_close(dev));
 }
@@ -597,7 +598,7 @@ static const struct rdc_backend rdc_backend_rec = {
 
 int rdc_record_start(rdc_dev *dev, const char *path)
 {
-	struct rdc_rec *r;
+	struct rdc_server_rec *r;
 	uint32_t vram = 0;
 	int ret;
 
@@ -624,23 +625,23 @@ int rdc_record_start(rdc_dev *dev, const char *path)
 		return ret;
 	if (r->err) {
 		ret = rdc_err_detail(r->err, "%s: %s", path, strerror(errno));
-		rdc_rec_close(r, NULL);
+		rdc_server_rec_close(r, NULL);
 		return ret;
 	}
 	r->owned = true;
-	rdc_rec_attach(r, dev);
+	rdc_server_rec_attach(r, dev);
 	return 0;
 }
 
 int rdc_record_stop(rdc_dev *dev)
 {
-	struct rdc_rec *r = rec_of(dev);
+	struct rdc_server_rec *r = rec_of(dev);
 
 	if (!r || !r->owned)
 		return rdc_err_detail(RDC_E_INVAL,
 				      "rdc_record_stop: the device is not "
 				      "recorded (rdc_record_start)");
-	return rdc_rec_close(r, dev);
+	return rdc_server_rec_close(r, dev);
 }
 
 /* ---- Replay -------------------------------------------------------------- */

@@ -64,7 +64,7 @@ static int rdcd_stepped_wait_run(struct rdcd *d, struct rdcd_client *c,
 	for (;;) {
 		int ret;
 
-		rdc_rec_time_moved(d->rec, rdc_hw_now(d->hw));
+		rdc_server_rec_time_moved(d->rec, rdc_hw_now(d->hw));
 		ret = rdc_wait_result_error(
 			rdc_hw_wait_run(d->hw, w, RDCD_WAIT_PIECE));
 		if (ret != 1)
@@ -172,7 +172,7 @@ static void rdcd_stepped_job(struct rdcd *d, void *arg)
 		break;
 	case RDCD_PEND_STEP:
 		while (rdc_hw_now(d->hw) < c->pend_target && !c->dead) {
-			rdc_rec_time_moved(d->rec, rdc_hw_now(d->hw));
+			rdc_server_rec_time_moved(d->rec, rdc_hw_now(d->hw));
 			rdc_hw_run_until(d->hw, RDC_MIN(rdc_hw_now(d->hw) +
 								RDCD_WAIT_PIECE,
 							c->pend_target));
@@ -183,7 +183,7 @@ static void rdcd_stepped_job(struct rdcd *d, void *arg)
 		break;
 	}
 	/* the answer depends on the time moved: a live trace has it first */
-	rdc_rec_sync(d->rec);
+	rdc_server_rec_sync(d->rec);
 	rdcd_pending_end(d, c, ret);
 	d->chip_client = NULL;
 }

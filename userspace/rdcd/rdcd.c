@@ -788,7 +788,7 @@ int main(int argc, char **argv)
 		return 1;
 
 	if (o.record) {
-		d.rec = rdc_rec_open(o.record, d.vram_size);
+		d.rec = rdc_server_rec_open(o.record, d.vram_size);
 		if (!d.rec) {
 			rdcd_log(&d, RDCD_LOG_ERR, "--record %s: %s", o.record,
 				 strerror(errno));
@@ -799,7 +799,7 @@ int main(int argc, char **argv)
 	if (ret) {
 		rdcd_log(&d, RDCD_LOG_ERR, "device: %s (vram %u bytes?)",
 			 rdc_strerror(ret), d.vram_size);
-		rdc_rec_close(d.rec, NULL);
+		rdc_server_rec_close(d.rec, NULL);
 		return 1;
 	}
 	ret = 1;

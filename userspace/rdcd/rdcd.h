@@ -175,7 +175,7 @@ struct rdcd {
 	/* the device: a sim: handle, maybe wrapped by a recorder */
 	rdc_dev *dev;
 	struct rdc_hw *hw;
-	struct rdc_rec *rec;
+	struct rdc_server_rec *rec;
 	uint32_t vram_size;
 	enum rdc_run_mode mode;
 

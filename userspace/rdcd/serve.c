@@ -39,7 +39,7 @@ int rdcd_device_open(struct rdcd *d)
 		return ret;
 	d->hw = rdc_sim_hw(d->dev);
 	if (d->rec)
-		rdc_rec_attach(d->rec, d->dev);
+		rdc_server_rec_attach(d->rec, d->dev);
 	rdc_hw_set_on_demand(d->hw, true);
 	d->watched = false;
 	rdcd_watch(d);
@@ -59,7 +59,7 @@ int rdcd_device_open(struct rdcd *d)
 
 void rdcd_device_close(struct rdcd *d)
 {
-	if (d->rec && rdc_rec_close(d->rec, d->dev))
+	if (d->rec && rdc_server_rec_close(d->rec, d->dev))
 		rdcd_log(d, RDCD_LOG_ERR, "trace: write error");
 	d->rec = NULL;
 	rdc_close(d->dev);
@@ -72,7 +72,7 @@ int rdcd_power_cycle(struct rdcd *d)
 	int ret;
 
 	if (d->rec)
-		rdc_rec_power(d->rec);
+		rdc_server_rec_power(d->rec);
 	rdc_close(d->dev);
 	d->dev = NULL;
 	ret = rdcd_device_open(d);
