@@ -84,14 +84,42 @@ void rdcfb_copy(struct fb_info *info, const struct fb_copyarea *a);
 void rdcfb_blit(struct fb_info *info, const struct fb_image *img);
 int rdcfb_sync(struct fb_info *info);
 
-/* rdcfb_uapi.c: the private ioctls */
-int rdcfb_ioctl(struct fb_info *info, unsigned int cmd, unsigned long arg);
-int rdcfb_compat_ioctl(struct fb_info *info, unsigned int cmd,
-		       unsigned long arg);
 int rdcfb_opq_init(struct rdcfb_dev *rd);
 void rdcfb_opq_free(struct rdcfb_dev *rd);
 extern const struct rdc_kchip_hooks rdcfb_hooks;
 u64 rdcfb_ops_dropped(struct rdc_kchip *chip);
+
+/*
+ * A record of the fb-op queue (rdcfb_fb.c): what an fb_op meant when it
+ * came, applied later in order under chip->lock.
+ */
+#define RDCFB_BITS_PER_WORD 32u
+
+enum rdcfb_op_kind {
+	RDCFB_OPK_FILL,
+	RDCFB_OPK_COPY,
+	RDCFB_OPK_IMAGE,
+	RDCFB_OPK_REGS, /* data: register, value pairs */
+	RDCFB_OPK_BLANK,
+};
+
+struct rdcfb_op {
+	u32 kind;		 /* enum rdcfb_op_kind */
+	u32 words;		 /* data words after the header */
+	u32 fmt, stride, vw, vh; /* draw ops: the virtual screen */
+	u32 rop, fg, bg;
+	u32 sx, sy, dx, dy, w, h;
+	u32 arg; /* IMAGE: 1 bpp rows (MONO), else pixels; BLANK: level */
+};
+
+/* rdcfb_cpu.c: a record drawn by the CPU (chip->lock held) */
+void rdcfb_cpu_draw(struct rdc_kchip *chip, const struct rdcfb_op *op,
+		    const u32 *data);
+
+/* rdcfb_uapi.c: the private ioctls */
+int rdcfb_ioctl(struct fb_info *info, unsigned int cmd, unsigned long arg);
+int rdcfb_compat_ioctl(struct fb_info *info, unsigned int cmd,
+		       unsigned long arg);
 
 /* rdcfb_bench.c */
 void rdcfb_bench_init(struct fb_info *info);

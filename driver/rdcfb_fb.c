@@ -25,8 +25,7 @@
 /* Command words staged on the stack before they go to the FIFO. */
 #define RDCFB_STAGE_WORDS 32u
 /* The argument words ahead of the data of MONO / HOST_BLIT. */
-#define RDCFB_DATA_ARGS	    2u
-#define RDCFB_BITS_PER_WORD 32u
+#define RDCFB_DATA_ARGS 2u
 
 static u32 rdcfb_fmt_of(const struct fb_var_screeninfo *var)
 {
@@ -221,23 +220,6 @@ static u32 rdcfb_base(const struct rdcfb_par *par,
  * caller may sleep; in atomic context the record is dropped and counted
  * (fb_dropped in sysfs).
  */
-enum rdcfb_op_kind {
-	RDCFB_OPK_FILL,
-	RDCFB_OPK_COPY,
-	RDCFB_OPK_IMAGE,
-	RDCFB_OPK_REGS, /* data: register, value pairs */
-	RDCFB_OPK_BLANK,
-};
-
-struct rdcfb_op {
-	u32 kind;		 /* enum rdcfb_op_kind */
-	u32 words;		 /* data words after the header */
-	u32 fmt, stride, vw, vh; /* draw ops: the virtual screen */
-	u32 rop, fg, bg;
-	u32 sx, sy, dx, dy, w, h;
-	u32 arg; /* IMAGE: 1 bpp rows (MONO), else pixels; BLANK: level */
-};
-
 /* An image record holds about this many data words, one row at least. */
 #define RDCFB_OP_BAND_WORDS 512u
 
@@ -654,87 +636,6 @@ static void rdcfb_dp_draw(struct rdcfb_par *par, const struct rdcfb_op *op,
 		break;
 	}
 	rdcfb_end(par, &s);
-}
-
-/* ---- Drawing: records by the CPU, when the DP cannot take them ---------- */
-
-static void rdcfb_cpu_pixel(u8 *p, u32 bytes, u32 v, bool do_xor)
-{
-	switch (bytes) {
-	case 1:
-		*p = do_xor ? *p ^ v : v;
-		break;
-	case 2:
-		*(u16 *)p = do_xor ? *(u16 *)p ^ v : v;
-		break;
-	default:
-		*(u32 *)p = do_xor ? *(u32 *)p ^ v : v;
-		break;
-	}
-}
-
-/* A pixel of an image record's row: a 1 bpp bit (MSB first) or a pixel. */
-static u32 rdcfb_cpu_src(const struct rdcfb_op *op, const u32 *row, u32 x,
-			 u32 bpp)
-{
-	u32 bit;
-
-	if (op->arg) {
-		bit = (row[x / 32] >> ((x / 8 % 4) * 8 + 7 - x % 8)) & 1;
-		return bit ? op->fg : op->bg;
-	}
-	bit = x * bpp;
-	return (row[bit / 32] >> (bit % 32)) & GENMASK(bpp - 1, 0);
-}
-
-/*
- * Draw a record with the CPU, as the DP would have: inside the op's
- * screen, which lies inside VRAM (check_var saw to it; checked again).
- */
-static void rdcfb_cpu_draw(struct rdc_kchip *chip, const struct rdcfb_op *op,
-			   const u32 *data)
-{
-	u32 bpp = rdc_format_bpp(op->fmt), bytes = bpp / 8;
-	u32 w = op->w, h = op->h, wpr, x, y, i;
-	u8 *row;
-
-	if (!bytes || (u64)op->stride * op->vh > rdc_hw_vram_size(chip->hw) ||
-	    (u64)op->vw * bytes > op->stride || op->dx >= op->vw ||
-	    op->dy >= op->vh)
-		return;
-	w = min(w, op->vw - op->dx);
-	h = min(h, op->vh - op->dy);
-	if (op->kind == RDCFB_OPK_COPY) {
-		if (op->sx >= op->vw || op->sy >= op->vh)
-			return;
-		w = min(w, op->vw - op->sx);
-		h = min(h, op->vh - op->sy);
-		for (i = 0; i < h; i++) {
-			/* rows in the order that never reads one written */
-			y = op->dy <= op->sy ? i : h - 1 - i;
-			memmove(chip->vram + (size_t)(op->dy + y) * op->stride +
-					op->dx * bytes,
-				chip->vram + (size_t)(op->sy + y) * op->stride +
-					op->sx * bytes,
-				(size_t)w * bytes);
-		}
-		return;
-	}
-	wpr = DIV_ROUND_UP(op->w * (op->arg ? 1 : bpp), RDCFB_BITS_PER_WORD);
-	if (op->kind == RDCFB_OPK_IMAGE && (u64)wpr * op->h > op->words)
-		return;
-	for (y = 0; y < h; y++) {
-		row = chip->vram + (size_t)(op->dy + y) * op->stride +
-		      op->dx * bytes;
-		for (x = 0; x < w; x++)
-			rdcfb_cpu_pixel(row + x * bytes, bytes,
-					op->kind == RDCFB_OPK_FILL ?
-						op->fg :
-						rdcfb_cpu_src(op,
-							      data + y * wpr, x,
-							      bpp),
-					op->rop == RDC_ROP_XOR);
-	}
 }
 
 /* ---- Applying the queue (chip->lock held) -------------------------------- */
