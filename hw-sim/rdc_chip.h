@@ -154,6 +154,23 @@ enum rdc_hw_wait_result rdc_hw_wait_check(struct rdc_hw *hw,
 enum rdc_hw_wait_result rdc_hw_wait_run(struct rdc_hw *hw,
 					struct rdc_hw_wait *w, uint64_t work);
 
+/*
+ * The paced clock, as every host that paces the chip runs it (rdcd, the
+ * kernel chip host): simulated time follows wall time at `hz` cycles a
+ * second from the pair (wall0_ns, sim0).  rdc_pace_target gives the time
+ * the chip should have reached at wall time `wall_ns`; a chip at `now`
+ * that is more than `lag` cycles behind (a host too slow to keep up) or
+ * ahead (work that ran the chip at once) starts the mapping afresh from
+ * (wall_ns, now): it keeps the rate and drops the debt, and the target is
+ * `now`.  wall0_ns == 0 is a clock not started yet: it starts there.
+ */
+struct rdc_pace {
+	uint64_t wall0_ns, sim0;
+};
+
+uint64_t rdc_pace_target(struct rdc_pace *p, uint64_t wall_ns, uint64_t now,
+			 uint32_t hz, uint64_t lag);
+
 /* Simulated time: core cycles since power-on. */
 uint64_t rdc_hw_now(const struct rdc_hw *hw);
 /* The CRTC timing in force (what the last vblank latched). */

@@ -109,3 +109,26 @@ enum rdc_hw_wait_result rdc_hw_wait_run(struct rdc_hw *hw,
 			return RDC_HW_WAIT_MORE;
 	}
 }
+
+#define RDC_PACE_NS_PER_S 1000000000ull
+
+uint64_t rdc_pace_target(struct rdc_pace *p, uint64_t wall_ns, uint64_t now,
+			 uint32_t hz, uint64_t lag)
+{
+	uint64_t target, d;
+
+	if (!p->wall0_ns || wall_ns < p->wall0_ns) {
+		p->wall0_ns = wall_ns;
+		p->sim0 = now;
+	}
+	/* in two parts, so that no product passes 64 bits however long */
+	d = wall_ns - p->wall0_ns;
+	target = p->sim0 + d / RDC_PACE_NS_PER_S * hz +
+		 d % RDC_PACE_NS_PER_S * hz / RDC_PACE_NS_PER_S;
+	if (target > now + lag || now > target + lag) {
+		p->wall0_ns = wall_ns;
+		p->sim0 = now;
+		target = now;
+	}
+	return target;
+}

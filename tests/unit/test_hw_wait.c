@@ -164,6 +164,46 @@ static void test_wait_terms(void **state)
 	assert_false(rdc_hw_cond_holds(&t->hw, &wrap));
 }
 
+/*
+ * The paced clock (rdc_pace_target): wall time maps to simulated time at
+ * the core clock, exactly, however long it runs (a 64-bit product of
+ * nanoseconds and hertz passes 2^64 after 184 s at 100 MHz), and a chip
+ * more than `lag` behind or ahead starts afresh from where it is.
+ */
+static void test_pace(void **state)
+{
+	const uint64_t hz = RDC_DEFAULT_CORE_HZ, s = 1000000000ull;
+	const uint64_t lag = hz / 10;
+	struct rdc_pace p = { 0 };
+	uint64_t t;
+
+	(void)state;
+	assert_int_equal(rdc_pace_target(&p, 5 * s, 1000, hz, lag), 1000);
+	assert_int_equal(rdc_pace_target(&p, 6 * s, 1000 + hz - 7, hz, lag),
+			 1000 + hz);
+	/* 3,600 s on, the chip keeping up: no product overflows */
+	t = rdc_pace_target(&p, 3605 * s + 5, 1000 + 3600 * hz, hz, lag);
+	assert_int_equal(t, 1000 + 3600 * hz + 0);
+	/* 250 ms of wall more than the chip did: it is behind, start afresh */
+	t = rdc_pace_target(&p, 3605 * s + 250000000ull, 1000 + 3600 * hz, hz,
+			    lag);
+	assert_int_equal(t, 1000 + 3600 * hz);
+	assert_int_equal(p.wall0_ns, 3605 * s + 250000000ull);
+	assert_int_equal(p.sim0, 1000 + 3600 * hz);
+	/* then it follows wall time again from there */
+	t = rdc_pace_target(&p, 3605 * s + 260000000ull, 1000 + 3600 * hz, hz,
+			    lag);
+	assert_int_equal(t, 1000 + 3600 * hz + hz / 100);
+	/* a chip run 200 ms ahead of its mapping starts afresh too */
+	t = rdc_pace_target(&p, 3605 * s + 270000000ull,
+			    1000 + 3600 * hz + hz / 5 + hz / 100, hz, lag);
+	assert_int_equal(t, 1000 + 3600 * hz + hz / 5 + hz / 100);
+	/* within the lag either way, the mapping holds */
+	t = rdc_pace_target(&p, 3605 * s + 280000000ull,
+			    1000 + 3600 * hz + hz / 5, hz, lag);
+	assert_int_equal(t, 1000 + 3600 * hz + hz / 5 + hz / 50);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -172,6 +212,7 @@ int main(void)
 		TDP_TEST(test_wait_budget),
 		TDP_TEST(test_wait_halted),
 		TDP_TEST(test_wait_terms),
+		cmocka_unit_test(test_pace),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -352,8 +352,7 @@ static void rdcd_req_reset(struct rdcd *d, struct rdcd_client *c,
 			rdcd_reply_err(d, c, h, ret);
 			return;
 		}
-		d->pace_sim0 = 0;
-		d->pace_wall0_ns = 0;
+		d->pace = (struct rdc_pace){ 0 }; /* starts afresh */
 	}
 	rdcd_log(d, RDCD_LOG_INFO, "client %u: reset (%s)", c->id,
 		 v == RDC_RESET_POWER ? "power" : "soft");

@@ -476,23 +476,11 @@ static bool rdcd_advance(struct rdcd *d)
 	case RDC_RUN_FAST:
 		target = now + RDCD_FAST_SLICE;
 		break;
-	case RDC_RUN_PACED: {
-		uint64_t wall = rdcd_wall_ns();
-
-		if (!d->pace_wall0_ns) {
-			d->pace_wall0_ns = wall;
-			d->pace_sim0 = now;
-		}
-		target = d->pace_sim0 + (wall - d->pace_wall0_ns) *
-						RDC_DEFAULT_CORE_HZ / NS_PER_S;
-		if (target > now + RDCD_PACE_SLACK) {
-			/* the host fell behind: keep the rate, drop the debt */
-			d->pace_wall0_ns = wall;
-			d->pace_sim0 = now + RDCD_PACE_SLACK;
-			target = d->pace_sim0;
-		}
+	case RDC_RUN_PACED:
+		/* a host that fell behind keeps the rate and drops the debt */
+		target = rdc_pace_target(&d->pace, rdcd_wall_ns(), now,
+					 RDC_DEFAULT_CORE_HZ, RDCD_PACE_SLACK);
 		break;
-	}
 	default:
 		/* stepped: time moves only in the controller's request */
 		return rdcd_stepped_start(d) == 0;

@@ -234,8 +234,7 @@ struct rdcd {
 	rdc_history *hist;
 	struct rdcd_client *hist_client;
 
-	/* pacing: simulated time pace_sim0 was wall time pace_wall0 */
-	uint64_t pace_wall0_ns, pace_sim0;
+	struct rdc_pace pace; /* the paced clock (rdc_pace_target) */
 };
 
 void rdcd_log(const struct rdcd *d, int level, const char *fmt, ...)
