@@ -66,7 +66,8 @@
 
 int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
 			   u32 vram_max, const char *clock, const char *scanout,
-			   unsigned int devices, unsigned int max_devices,
+			   unsigned int cpu_budget, unsigned int devices,
+			   unsigned int max_devices,
 			   struct rdc_kchip_params *out)
 {
 	unsigned long long size;
@@ -103,6 +104,12 @@ int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
 		       scanout);
 		return -EINVAL;
 	}
+	if (!cpu_budget || cpu_budget > 100) {
+		pr_err("%s: cpu_budget=%u: want 1..100 (per cent)\n", name,
+		       cpu_budget);
+		return -EINVAL;
+	}
+	out->cpu_budget = cpu_budget;
 	if (!devices || devices > max_devices) {
 		pr_err("%s: devices=%u: want 1..%u\n", name, devices,
 		       max_devices);
@@ -173,10 +180,12 @@ void rdc_kchip_irqoff_reset(struct rdc_kchip_irqoff *st)
 /* The wall time the paced clock maps simulated time t to (lock held). */
 ktime_t rdc_kchip_wall_of_locked(struct rdc_kchip *chip, u64 t)
 {
-	if (t <= chip->sim_base)
-		return chip->wall_base;
-	return ktime_add_ns(chip->wall_base,
-			    mul_u64_u32_div(t - chip->sim_base, NSEC_PER_SEC,
+	ktime_t wall0 = ns_to_ktime(chip->pace.wall0_ns);
+
+	if (t <= chip->pace.sim0)
+		return wall0;
+	return ktime_add_ns(wall0,
+			    mul_u64_u32_div(t - chip->pace.sim0, NSEC_PER_SEC,
 					    rdc_hw_core_hz(chip->hw)));
 }
 
@@ -297,23 +306,18 @@ static void rdc_kchip_pace_work(struct work_struct *work)
 	struct rdc_kchip *chip =
 		container_of(work, struct rdc_kchip, pace_work);
 	struct rdc_hw *hw = chip->hw;
-	u64 target,
+	u64 target, spent,
 		lag = rdc_kchip_ns_to_cycles(chip, RDC_KCHIP_PACE_MAX_LAG_NS);
-	ktime_t now = ktime_get();
+	ktime_t t0 = ktime_get(), next, rest;
 
 	rdc_kchip_lock(chip);
-	target = chip->sim_base +
-		 rdc_kchip_ns_to_cycles(
-			 chip, ktime_to_ns(ktime_sub(now, chip->wall_base)));
 	/*
-	 * Too far behind (a slow host) or ahead (fb_ops ran the DP
-	 * at once when the FIFO filled): start pacing afresh from here.
+	 * Too far behind (a slow host, or one the budget holds back) or
+	 * ahead (fb_ops ran the DP at once when the FIFO filled): the
+	 * core's paced clock starts afresh from here.
 	 */
-	if (target > rdc_hw_now(hw) + lag || rdc_hw_now(hw) > target + lag) {
-		chip->wall_base = now;
-		chip->sim_base = rdc_hw_now(hw);
-		target = rdc_hw_now(hw);
-	}
+	target = rdc_pace_target(&chip->pace, ktime_to_ns(t0), rdc_hw_now(hw),
+				 rdc_hw_core_hz(hw), lag);
 	while (rdc_hw_now(hw) < target && !chip->dying) {
 		u64 stop = min_t(u64, target,
 				 rdc_hw_now(hw) + RDC_KCHIP_RUN_SLICE);
@@ -332,10 +336,24 @@ static void rdc_kchip_pace_work(struct work_struct *work)
 		rdc_kchip_lock(chip);
 	}
 	rdc_kchip_update_period(chip);
+	/*
+	 * The CPU budget: after work that took `work`, the next tick waits
+	 * at least work * (100 - budget) / budget, so that pacing never
+	 * runs back to back and takes at most cpu_budget per cent of a CPU;
+	 * a host that cannot keep up lets simulated time fall behind.
+	 */
+	spent = ktime_to_ns(ktime_sub(ktime_get(), t0));
+	rest = ktime_add_ns(ktime_get(),
+			    div_u64(spent * (100 - chip->cpu_budget),
+				    chip->cpu_budget));
+	next = rdc_kchip_next_tick_locked(chip);
+	if (ktime_before(next, rest)) {
+		next = rest;
+		chip->throttled++;
+	}
 	/* rdc_kchip_stop sets dying under the lock, then cancels the timer */
 	if (!chip->dying)
-		hrtimer_start(&chip->timer, rdc_kchip_next_tick_locked(chip),
-			      HRTIMER_MODE_ABS);
+		hrtimer_start(&chip->timer, next, HRTIMER_MODE_ABS);
 	rdc_kchip_unlock(chip);
 	wake_up_all(&chip->waitq);
 }
@@ -365,6 +383,7 @@ int rdc_kchip_init(struct rdc_kchip *chip, struct device *dev,
 	chip->dev = dev;
 	chip->stepped = p->stepped;
 	chip->on_demand = p->on_demand;
+	chip->cpu_budget = p->cpu_budget ? p->cpu_budget : 100;
 	chip->up_at = ktime_get_ns();
 
 	chip->vram = vmalloc_user(vram_size);
@@ -392,8 +411,8 @@ void rdc_kchip_start(struct rdc_kchip *chip)
 {
 	if (chip->stepped)
 		return;
-	chip->wall_base = ktime_get();
-	chip->sim_base = rdc_hw_now(chip->hw);
+	chip->pace = (struct rdc_pace){ .wall0_ns = ktime_get_ns(),
+					.sim0 = rdc_hw_now(chip->hw) };
 	hrtimer_start(&chip->timer, ns_to_ktime(chip->period_ns),
 		      HRTIMER_MODE_REL);
 }
@@ -859,6 +878,7 @@ void rdc_kchip_counters(struct rdc_kchip *chip, struct rdc_kchip_counters *c)
 	c->frames = chip->frames;
 	c->host_busy_ns = chip->busy_ns + (ktime_get_ns() - chip->held_at);
 	c->host_up_ns = ktime_get_ns() - chip->up_at;
+	c->throttled = chip->throttled;
 	rdc_kchip_unlock(chip);
 }
 

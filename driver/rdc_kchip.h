@@ -103,6 +103,7 @@ struct rdc_kchip_counters {
 	u64 frames;
 	/* wall time the host held the chip, and since init (sysfs host_*) */
 	u64 host_busy_ns, host_up_ns;
+	u64 throttled; /* pacing ticks the CPU budget put off */
 };
 
 struct rdc_kchip {
@@ -125,8 +126,9 @@ struct rdc_kchip {
 	/* paced clock: hw.now follows wall time from these */
 	struct hrtimer timer;
 	struct work_struct pace_work;
-	ktime_t wall_base; /* lock */
-	u64 sim_base;	   /* lock */
+	struct rdc_pace pace; /* lock: simulated time against wall time */
+	u32 cpu_budget;	      /* per cent of a CPU the pacing work may take */
+	u64 throttled;	      /* lock: ticks the budget put off */
 	u64 period_ns;
 
 	wait_queue_head_t waitq; /* woken whenever simulated time moved */
@@ -155,18 +157,20 @@ struct rdc_kchip {
  * The module parameters both drivers take, checked the one way:
  * vram=SIZE (memparse, within [vram_min, vram_max], rounded up to whole
  * pages: mapped pages are handed out whole), clock=paced|stepped,
- * scanout=auto|demand|always and devices=1..max_devices.  -EINVAL, logged
+ * scanout=auto|demand|always, cpu_budget=1..100 and devices=1..max_devices.  -EINVAL, logged
  * under `name`, otherwise.
  */
 struct rdc_kchip_params {
 	u32 vram_bytes;
 	bool stepped;
 	bool on_demand; /* scanout=demand (rdc_hw_set_on_demand) */
+	u32 cpu_budget; /* cpu_budget=1..100, per cent of a CPU */
 };
 
 int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
 			   u32 vram_max, const char *clock, const char *scanout,
-			   unsigned int devices, unsigned int max_devices,
+			   unsigned int cpu_budget, unsigned int devices,
+			   unsigned int max_devices,
 			   struct rdc_kchip_params *out);
 
 void rdc_kchip_lock(struct rdc_kchip *chip);

@@ -46,6 +46,10 @@ static char *scanout = "auto";
 module_param(scanout, charp, 0444);
 MODULE_PARM_DESC(scanout, "demand, always, or auto: demand when paced");
 
+static unsigned int cpu_budget = 50;
+module_param(cpu_budget, uint, 0444);
+MODULE_PARM_DESC(cpu_budget, "Per cent of a CPU the paced clock may take (50)");
+
 static bool fbdev = true;
 module_param(fbdev, bool, 0444);
 MODULE_PARM_DESC(fbdev, "Emulate an fbdev device on the DRM device (1)");
@@ -103,6 +107,7 @@ static const struct drm_driver rdcdrm_driver = {
 
 RDCDRM_HOST_ATTR(host_busy_ns);
 RDCDRM_HOST_ATTR(host_up_ns);
+RDCDRM_HOST_ATTR(throttled);
 
 static ssize_t scanout_show(struct device *dev, struct device_attribute *attr,
 			    char *buf)
@@ -116,6 +121,7 @@ static DEVICE_ATTR_RO(scanout);
 static struct attribute *rdcdrm_attrs[] = {
 	&dev_attr_host_busy_ns.attr,
 	&dev_attr_host_up_ns.attr,
+	&dev_attr_throttled.attr,
 	&dev_attr_scanout.attr,
 	NULL,
 };
@@ -225,8 +231,9 @@ static int __init rdcdrm_init(void)
 	int ret;
 
 	ret = rdc_kchip_params_parse("rdcdrm", vram, RDCDRM_VRAM_MIN,
-				     RDCDRM_VRAM_MAX, clock, scanout, devices,
-				     RDCDRM_MAX_DEVICES, &rdcdrm_params);
+				     RDCDRM_VRAM_MAX, clock, scanout,
+				     cpu_budget, devices, RDCDRM_MAX_DEVICES,
+				     &rdcdrm_params);
 	if (ret)
 		return ret;
 	ret = platform_driver_register(&rdcdrm_platform_driver);

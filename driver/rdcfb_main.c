@@ -42,6 +42,10 @@ static char *scanout = "auto";
 module_param(scanout, charp, 0444);
 MODULE_PARM_DESC(scanout, "demand, always, or auto: demand when paced");
 
+static unsigned int cpu_budget = 50;
+module_param(cpu_budget, uint, 0444);
+MODULE_PARM_DESC(cpu_budget, "Per cent of a CPU the paced clock may take (50)");
+
 static struct rdc_kchip_params rdcfb_params;
 static struct platform_device *rdcfb_pdev[RDCFB_MAX_DEVICES];
 
@@ -73,6 +77,7 @@ RDCFB_COUNTER_ATTR(frames, c.frames);
 RDCFB_COUNTER_ATTR(now, c.now);
 RDCFB_COUNTER_ATTR(host_busy_ns, c.host_busy_ns);
 RDCFB_COUNTER_ATTR(host_up_ns, c.host_up_ns);
+RDCFB_COUNTER_ATTR(pace_throttled, c.throttled);
 
 #define RDCFB_PIN_ATTR(name, field) \
 	static ssize_t name##_show(struct device *dev, \
@@ -156,15 +161,25 @@ static ssize_t scanout_show(struct device *dev, struct device_attribute *attr,
 static DEVICE_ATTR_RO(scanout);
 
 static struct attribute *rdcfb_attrs[] = {
-	&dev_attr_busy_cycles.attr,	&dev_attr_stall_cycles.attr,
-	&dev_attr_pixels.attr,		&dev_attr_cmds.attr,
-	&dev_attr_frames.attr,		&dev_attr_now.attr,
-	&dev_attr_host_busy_ns.attr,	&dev_attr_host_up_ns.attr,
-	&dev_attr_frame_crc.attr,	&dev_attr_pin_edges.attr,
-	&dev_attr_pin_lost.attr,	&dev_attr_pin_late_max_ns.attr,
-	&dev_attr_pin_late_avg_ns.attr, &dev_attr_irqs_off_max_ns.attr,
-	&dev_attr_irqs_off_max_at.attr, &dev_attr_fb_dropped.attr,
-	&dev_attr_scanout.attr,		NULL,
+	&dev_attr_busy_cycles.attr,
+	&dev_attr_stall_cycles.attr,
+	&dev_attr_pixels.attr,
+	&dev_attr_cmds.attr,
+	&dev_attr_frames.attr,
+	&dev_attr_now.attr,
+	&dev_attr_host_busy_ns.attr,
+	&dev_attr_host_up_ns.attr,
+	&dev_attr_pace_throttled.attr,
+	&dev_attr_frame_crc.attr,
+	&dev_attr_pin_edges.attr,
+	&dev_attr_pin_lost.attr,
+	&dev_attr_pin_late_max_ns.attr,
+	&dev_attr_pin_late_avg_ns.attr,
+	&dev_attr_irqs_off_max_ns.attr,
+	&dev_attr_irqs_off_max_at.attr,
+	&dev_attr_fb_dropped.attr,
+	&dev_attr_scanout.attr,
+	NULL,
 };
 ATTRIBUTE_GROUPS(rdcfb);
 
@@ -278,8 +293,8 @@ static int __init rdcfb_init(void)
 	int ret;
 
 	ret = rdc_kchip_params_parse("rdcfb", vram, RDCFB_VRAM_MIN,
-				     RDCFB_VRAM_MAX, clock, scanout, devices,
-				     RDCFB_MAX_DEVICES, &rdcfb_params);
+				     RDCFB_VRAM_MAX, clock, scanout, cpu_budget,
+				     devices, RDCFB_MAX_DEVICES, &rdcfb_params);
 	if (ret)
 		return ret;
 	rdcfb_bench_module_init();

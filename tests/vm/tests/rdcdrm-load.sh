@@ -138,7 +138,8 @@ check "load, use, unload $LOOPS times" loop
 # bad module parameters: refused (the kernel chip host's one check, which
 # rdcfb takes too), each named in the log, nothing loaded
 bad_params() {
-	for args in vram=4K vram=1G vram=16Q clock=fast devices=0 devices=9; do
+	for args in vram=4K vram=1G vram=16Q clock=fast scanout=lazy \
+		cpu_budget=0 cpu_budget=101 devices=0 devices=9; do
 		dmesg -C
 		if insmod "$KO" $args 2>/dev/null; then
 			echo "$args: loaded"
@@ -150,7 +151,7 @@ bad_params() {
 		[ ! -d /sys/module/rdcdrm ] || { echo "$args: module left"; return 1; }
 	done
 }
-check "bad vram, clock and devices parameters are refused and named" bad_params
+check "bad vram, clock, scanout, cpu_budget and devices parameters are refused and named" bad_params
 
 # the stepped clock without fbdev emulation (whose console draws when it
 # will): the same commits give the same cycles and frame on every load
