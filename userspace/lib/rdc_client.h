@@ -3,7 +3,7 @@
 /*
  * The message-level client of the rdcd protocol (rdc_proto.h), in net.c,
  * and the byte transports it runs over: a stream socket (unix:, tcp:, in
- * net.c) and a USB interface's bulk endpoints (usb:, in usb.c).  The
+ * net_sock.c) and a USB interface's bulk endpoints (usb:, in usb.c).  The
  * client does HELLO, requests and replies, events, frame decoding and the
  * status mapping; a transport only moves bytes.
  */

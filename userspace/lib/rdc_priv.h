@@ -162,8 +162,8 @@ struct rdc_backend {
 
 /* Backends (one file each). */
 extern const struct rdc_backend rdc_backend_sim;
-extern const struct rdc_backend rdc_backend_unix;  /* net.c */
-extern const struct rdc_backend rdc_backend_tcp;   /* net.c */
+extern const struct rdc_backend rdc_backend_unix;  /* net_sock.c */
+extern const struct rdc_backend rdc_backend_tcp;   /* net_sock.c */
 extern const struct rdc_backend rdc_backend_fbdev; /* fbdev.c, rdcfb.ko */
 extern const struct rdc_backend rdc_backend_usb;   /* usb.c, libusb */
 extern const struct rdc_backend rdc_backend_drm;   /* drm.c, rdcdrm.ko */
