@@ -500,8 +500,8 @@ check test: deps
 	tests/install/run.sh $(O) || vm=1; \
 	tests/run.sh $(O)/san && exit $$vm
 
-# rdc-bench's parts: bench/rdc_bench.h lists what each one does.
-RDC_BENCH_SRCS := bench/rdc_bench.c bench/input.c bench/pixels.c \
+# rdc-bench's parts: bench/parts.h lists what each one does.
+RDC_BENCH_SRCS := bench/rdc_bench.c bench/common.c bench/input.c bench/pixels.c \
 	bench/draw.c bench/limits.c bench/measure.c bench/report.c \
 	bench/targets.c bench/growth.c
 $(O)/rel/rdc-bench: $(patsubst %.c,$(O)/rel/%.o,$(RDC_BENCH_SRCS)) \
@@ -534,7 +534,7 @@ bench: $(O)/rel/rdc-bench $(if $(BENCH_ARGS),,$(BENCH_REST))
 # pkg-config files are found; scripts/deps.sh --peers installs them.
 BENCH_PEERS := pixman-1:PIXMAN:pixman cairo:CAIRO:cairo \
 	SDL2_gfx:SDL2_GFX:sdl2_gfx
-$(O)/rel/rdc-bench-peers: $(RDC_BENCH_SRCS) bench/rdc_bench.h bench/bench.h \
+$(O)/rel/rdc-bench-peers: $(RDC_BENCH_SRCS) bench/parts.h bench/bench.h \
 		bench/peer_*.c $(O)/rel/librdc.a
 	@set -e; defs=; srcs=; pkgs=; \
 	for p in $(BENCH_PEERS); do \

@@ -14,7 +14,7 @@
 #include <zlib.h>
 
 #include "hw.h"
-#include "rdc_bench.h"
+#include "parts.h"
 #include "rdc_priv.h"
 #include "rdc_sink.h"
 
@@ -44,35 +44,35 @@
 
 /* ---- rdc: the workloads through librdc sim: ------------------------------ */
 
-static void run_open(struct run *r, uint32_t preset, uint32_t format,
+static void run_open(struct bench_run *r, uint32_t preset, uint32_t format,
 		     size_t bytes)
 {
-	uint8_t *zero = xcalloc(bytes, 1);
+	uint8_t *zero = bench_xcalloc(bytes, 1);
 	int err = rdc_open("sim:", &r->dev);
 
 	if (err)
-		die("open", err);
+		bench_die("open", err);
 	r->b = rdc_batch_new();
 	if (!r->b)
-		die("batch", RDC_E_NOMEM);
+		bench_die("batch", RDC_E_NOMEM);
 	err = rdc_mode_set(r->dev, preset, format, 0);
 	if (!err)
 		err = rdc_vram_write(r->dev, 0, zero, bytes);
 	if (!err)
 		err = rdc_finish(r->dev);
 	if (err)
-		die("setup", err);
+		bench_die("setup", err);
 	free(zero);
 }
 
-static void run_close(struct run *r)
+static void run_close(struct bench_run *r)
 {
 	rdc_batch_free(r->b);
 	rdc_close(r->dev);
 }
 
 /* Submit what the batch holds once it is big enough (or when forced). */
-void run_flush(struct run *r, bool force)
+void bench_run_flush(struct bench_run *r, bool force)
 {
 	size_t n;
 	int err;
@@ -82,45 +82,45 @@ void run_flush(struct run *r, bool force)
 		return;
 	err = rdc_batch_submit(r->dev, r->b);
 	if (err)
-		die("submit", err);
+		bench_die("submit", err);
 }
 
-void run_finish(struct run *r)
+void bench_run_finish(struct bench_run *r)
 {
 	int err;
 
-	run_flush(r, true);
+	bench_run_flush(r, true);
 	err = rdc_finish(r->dev);
 	if (err)
-		die("finish", err);
+		bench_die("finish", err);
 }
 
-static uint32_t run_crc(struct run *r)
+static uint32_t run_crc(struct bench_run *r)
 {
-	uint8_t *buf = xcalloc(BENCH_W * BENCH_H, 4);
+	uint8_t *buf = bench_xcalloc(BENCH_W * BENCH_H, 4);
 	uint32_t crc;
 	int err;
 
 	err = rdc_vram_read(r->dev, 0, buf, BENCH_W * BENCH_H * 4);
 	if (err)
-		die("vram read", err);
+		bench_die("vram read", err);
 	crc = bench_surface_crc(buf, BENCH_W * 4);
 	free(buf);
 	return crc;
 }
 
-static void rdc_fills(struct run *r, const uint32_t *a, uint32_t ops)
+static void rdc_fills(struct bench_run *r, const uint32_t *a, uint32_t ops)
 {
 	uint32_t i;
 
 	for (i = 0; i < ops; i++, a += BENCH_RECORD) {
 		rdc_batch_fg(r->b, a[4]);
 		rdc_batch_fill_rect(r->b, (int)a[0], (int)a[1], a[2], a[3]);
-		run_flush(r, false);
+		bench_run_flush(r, false);
 	}
 }
 
-static void rdc_draw(struct run *r, const struct bench_input *in)
+static void rdc_draw(struct bench_run *r, const struct bench_input *in)
 {
 	const uint32_t *a = in->arg;
 	uint32_t i;
@@ -172,7 +172,7 @@ static void rdc_draw(struct run *r, const struct bench_input *in)
 		default:
 			return;
 		}
-		run_flush(r, false);
+		bench_run_flush(r, false);
 	}
 }
 
@@ -206,7 +206,7 @@ static void frames_fn(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 }
 
 /* CONTROL.SCANOUT_EN = 0: the CRTC stops, and with it its bus traffic. */
-void scanout_off(rdc_dev *dev)
+void bench_scanout_off(rdc_dev *dev)
 {
 	uint32_t ctl;
 
@@ -215,17 +215,17 @@ void scanout_off(rdc_dev *dev)
 			  ctl & ~(uint32_t)RDC_CONTROL_SCANOUT_EN) ||
 	    rdc_reg_read(dev, RDC_REG_CONTROL, &ctl) ||
 	    (ctl & RDC_CONTROL_SCANOUT_EN))
-		die("scanout off", RDC_E_IO);
+		bench_die("scanout off", RDC_E_IO);
 }
 
 /*
  * scanout: every frame the CRTC converts through the CLUT is handed to
  * the frame listener, as in rdcd; 600 of them are timed.
  */
-static void rdc_scanout(const struct bench_input *in, struct rdc_res *res)
+static void rdc_scanout(const struct bench_input *in, struct bench_rdc_res *res)
 {
 	struct frames f = { 0 };
-	struct run r;
+	struct bench_run r;
 	struct rdc_hw *hw;
 	uint64_t c0, c1;
 	double t0;
@@ -233,23 +233,23 @@ static void rdc_scanout(const struct bench_input *in, struct rdc_res *res)
 	run_open(&r, RDC_PRESET_1024x768_60, RDC_FMT_I8, BENCH_W * BENCH_H);
 	rdc_batch_load_clut(r.b, 0, in->clut, BENCH_CLUT_SIZE);
 	rdc_fills(&r, in->prefill, BENCH_FILL_OPS);
-	run_finish(&r);
+	bench_run_finish(&r);
 	/* the mode is latched at a vblank: let it be in force first */
 	if (rdc_frame_wait(r.dev))
-		die("frame wait", RDC_E_TIMEOUT);
+		bench_die("frame wait", RDC_E_TIMEOUT);
 	hw = rdc_sim_hw(r.dev);
 	if (!hw)
-		die("sim hw", RDC_E_NOSYS);
+		bench_die("sim hw", RDC_E_NOSYS);
 	rdc_hw_set_frame_fn(hw, frames_fn, &f);
 	rdc_sim_time(r.dev, &c0);
 	t0 = bench_tic();
 	while (f.seen < in->ops - 1)
 		if (rdc_vblank_wait(r.dev))
-			die("vblank", RDC_E_TIMEOUT);
+			bench_die("vblank", RDC_E_TIMEOUT);
 	f.want_crc = true; /* outside the drawing proper, but cheap */
 	while (f.seen < in->ops)
 		if (rdc_vblank_wait(r.dev))
-			die("vblank", RDC_E_TIMEOUT);
+			bench_die("vblank", RDC_E_TIMEOUT);
 	res->wall = bench_toc(t0);
 	rdc_sim_time(r.dev, &c1);
 	res->cycles = c1 - c0;
@@ -273,14 +273,14 @@ static void rdc_scanout(const struct bench_input *in, struct rdc_res *res)
  * and cycles, no frame converted; the frames are counted by FRAME_COUNT,
  * and the frame after the drawing is taken with a consumer attached.
  */
-void rdc_run(const struct bench_input *in, struct rdc_res *res, bool scan,
-	     bool lazy)
+void bench_rdc_run(const struct bench_input *in, struct bench_rdc_res *res,
+		   bool scan, bool lazy)
 {
 	uint32_t fc0 = 0, fc1 = 0;
 	struct rdc_stats st0 = { 0 }, st1 = { 0 };
 	struct frames f = { 0 };
 	struct rdc_hw *hw;
-	struct run r;
+	struct bench_run r;
 	uint64_t c0, c1;
 	double t0;
 
@@ -292,30 +292,30 @@ void rdc_run(const struct bench_input *in, struct rdc_res *res, bool scan,
 		 BENCH_W * BENCH_H * 4);
 	hw = rdc_sim_hw(r.dev);
 	if (!hw)
-		die("sim hw", RDC_E_NOSYS);
+		bench_die("sim hw", RDC_E_NOSYS);
 	if (!scan)
-		scanout_off(r.dev);
+		bench_scanout_off(r.dev);
 	if (lazy)
 		rdc_hw_set_on_demand(hw, true);
 	if (in->prefill) {
 		rdc_fills(&r, in->prefill, BENCH_FILL_OPS);
 		if (in->kind == BENCH_BLIT_XOR)
 			rdc_batch_rop(r.b, RDC_ROP_XOR);
-		run_finish(&r);
+		bench_run_finish(&r);
 	}
 	rdc_stats_get(r.dev, &st0);
 	if (scan && !lazy)
 		rdc_hw_set_frame_fn(hw, frames_fn, &f);
 	if (lazy && rdc_reg_read(r.dev, RDC_REG_FRAME_COUNT, &fc0))
-		die("frame count", RDC_E_IO);
+		bench_die("frame count", RDC_E_IO);
 	rdc_sim_time(r.dev, &c0);
 	t0 = bench_tic();
 	rdc_draw(&r, in);
-	run_finish(&r);
+	bench_run_finish(&r);
 	res->wall = bench_toc(t0);
 	rdc_sim_time(r.dev, &c1);
 	if (lazy && rdc_reg_read(r.dev, RDC_REG_FRAME_COUNT, &fc1))
-		die("frame count", RDC_E_IO);
+		bench_die("frame count", RDC_E_IO);
 	rdc_hw_set_frame_fn(hw, NULL, NULL);
 	rdc_stats_get(r.dev, &st1);
 	res->cycles = c1 - c0;
@@ -326,7 +326,7 @@ void rdc_run(const struct bench_input *in, struct rdc_res *res, bool scan,
 		rdc_hw_consumer_attach(hw);
 	if (scan &&
 	    (rdc_frame_wait(r.dev) || rdc_frame_crc(r.dev, &res->frame_crc)))
-		die("frame crc", RDC_E_IO);
+		bench_die("frame crc", RDC_E_IO);
 	if (lazy)
 		rdc_hw_consumer_detach(hw);
 	res->crc = run_crc(&r);
@@ -350,35 +350,40 @@ const struct rt_mode *rt_mode_of(enum bench_kind k)
 	return k == BENCH_REALTIME_1080 ? &rt_1080 : &rt_vga;
 }
 
-static void rt_frame(struct run *r, struct rng *g, const struct rt_mode *m)
+static void rt_frame(struct bench_run *r, struct bench_rng *g,
+		     const struct rt_mode *m)
 {
 	char text[RT_MAX_COLS];
 	uint32_t i, k, cols = m->w / BENCH_GLYPH_W, rows = m->h / BENCH_GLYPH_H;
 
 	for (i = 0; i < RT_LINES; i++) {
-		int x0 = (int)(r32(g) % m->w), y0 = (int)(r32(g) % m->h);
-		int x1 = (int)(r32(g) % m->w), y1 = (int)(r32(g) % m->h);
+		int x0 = (int)(bench_r32(g) % m->w),
+		    y0 = (int)(bench_r32(g) % m->h);
+		int x1 = (int)(bench_r32(g) % m->w),
+		    y1 = (int)(bench_r32(g) % m->h);
 
-		rdc_batch_fg(r->b, r32(g) | BENCH_OPAQUE);
+		rdc_batch_fg(r->b, bench_r32(g) | BENCH_OPAQUE);
 		rdc_batch_line(r->b, x0, y0, x1, y1);
 	}
 	for (i = 0; i < RT_FILLS; i++) {
-		int x = (int)(r32(g) % m->w), y = (int)(r32(g) % m->h);
-		uint32_t w = 1 + r32(g) % RT_FILL_MAX;
-		uint32_t h = 1 + r32(g) % RT_FILL_MAX;
+		int x = (int)(bench_r32(g) % m->w),
+		    y = (int)(bench_r32(g) % m->h);
+		uint32_t w = 1 + bench_r32(g) % RT_FILL_MAX;
+		uint32_t h = 1 + bench_r32(g) % RT_FILL_MAX;
 
-		rdc_batch_fg(r->b, r32(g) | BENCH_OPAQUE);
+		rdc_batch_fg(r->b, bench_r32(g) | BENCH_OPAQUE);
 		rdc_batch_fill_rect(r->b, x, y, w, h);
 	}
 	for (i = 0; i < RT_TEXT_ROWS; i++) {
 		for (k = 0; k < cols; k++)
-			text[k] = (char)(RT_FIRST_CHAR + r32(g) % RT_CHARS);
-		rdc_batch_fg(r->b, r32(g) | BENCH_OPAQUE);
-		rdc_batch_bg(r->b, r32(g) | BENCH_OPAQUE);
+			text[k] =
+				(char)(RT_FIRST_CHAR + bench_r32(g) % RT_CHARS);
+		rdc_batch_fg(r->b, bench_r32(g) | BENCH_OPAQUE);
+		rdc_batch_bg(r->b, bench_r32(g) | BENCH_OPAQUE);
 		rdc_batch_text(r->b, 0, (int)(i % rows * BENCH_GLYPH_H), text,
 			       cols, 0);
 	}
-	run_flush(r, true);
+	bench_run_flush(r, true);
 }
 
 static uint64_t t3_busy(rdc_dev *dev)
@@ -388,14 +393,14 @@ static uint64_t t3_busy(rdc_dev *dev)
 	/* reading LO snapshots HI */
 	if (rdc_reg_read(dev, RDC_REG_PERF_BUSY_LO, &lo) ||
 	    rdc_reg_read(dev, RDC_REG_PERF_BUSY_HI, &hi))
-		die("perf read", RDC_E_IO);
+		bench_die("perf read", RDC_E_IO);
 	return (uint64_t)hi << 32 | lo;
 }
 
-void rdc_teapot3d(struct rt_res *res)
+void bench_teapot3d(struct rt_res *res)
 {
 	struct rdc_script_result sres;
-	struct run r;
+	struct bench_run r;
 	uint64_t b0, b1;
 	double t0;
 	uint32_t i;
@@ -412,7 +417,7 @@ void rdc_teapot3d(struct rt_res *res)
 		exit(1);
 	}
 	if (rdc_reg_read(r.dev, RDC_REG_CORE_KHZ, &res->khz))
-		die("core clock", RDC_E_IO);
+		bench_die("core clock", RDC_E_IO);
 	b0 = t3_busy(r.dev);
 	t0 = bench_now();
 	for (i = 0; i < T3_FRAMES; i++) {
@@ -422,7 +427,7 @@ void rdc_teapot3d(struct rt_res *res)
 		rdc_batch_call(r.b, T3_DRAW);
 		rdc_batch_reg_write(r.b, RDC_REG_FB_BASE, buf);
 		rdc_batch_cmd(r.b, RDC_OP_ROTATE, RDC_AXIS_Z, &turn, 1);
-		run_finish(&r);
+		bench_run_finish(&r);
 	}
 	res->wall = bench_now() - t0;
 	b1 = t3_busy(r.dev);
@@ -440,7 +445,7 @@ static uint64_t rt_frame_count(rdc_dev *dev)
 	uint32_t fc;
 
 	if (rdc_reg_read(dev, RDC_REG_FRAME_COUNT, &fc))
-		die("frame count", RDC_E_IO);
+		bench_die("frame count", RDC_E_IO);
 	return fc;
 }
 
@@ -449,28 +454,28 @@ static uint64_t rt_frame_count(rdc_dev *dev)
  * sink, no listener; scanout on demand): the bus is charged the same, no
  * frame is converted.  The frames are counted by FRAME_COUNT.
  */
-void rdc_realtime(struct rt_res *res, const struct rt_mode *m, bool lazy)
+void bench_realtime(struct rt_res *res, const struct rt_mode *m, bool lazy)
 {
 	struct frames f = { 0 };
-	struct rng g = { BENCH_SEED };
+	struct bench_rng g = { BENCH_SEED };
 	struct rdc_hw *hw;
-	struct run r;
+	struct bench_run r;
 	uint64_t c0, c1, f0, seen;
 	double t0;
 	int err;
 
 	run_open(&r, m->preset, RDC_FMT_XRGB8888, (size_t)m->w * m->h * 4);
 	if (rdc_frame_wait(r.dev))
-		die("frame wait", RDC_E_TIMEOUT);
+		bench_die("frame wait", RDC_E_TIMEOUT);
 	hw = rdc_sim_hw(r.dev);
 	if (!hw)
-		die("sim hw", RDC_E_NOSYS);
+		bench_die("sim hw", RDC_E_NOSYS);
 	if (lazy) {
 		rdc_hw_set_on_demand(hw, true);
 	} else {
 		err = rdc_sink_open(RT_SINK, &f.sink);
 		if (err)
-			die("sink", err);
+			bench_die("sink", err);
 		if (rdc_sink_interval(r.dev, &f.num, &f.den))
 			f.num = f.den = 0;
 		rdc_hw_set_frame_fn(hw, frames_fn, &f);
@@ -479,16 +484,16 @@ void rdc_realtime(struct rt_res *res, const struct rt_mode *m, bool lazy)
 	rdc_sim_time(r.dev, &c0);
 	f0 = lazy ? rt_frame_count(r.dev) : f.seen;
 	t0 = bench_now();
-	res->cpu = cpu_now();
+	res->cpu = bench_cpu_now();
 	do {
 		rt_frame(&r, &g, m);
 		res->drawn++;
 		if (rdc_vblank_wait(r.dev))
-			die("vblank", RDC_E_TIMEOUT);
+			bench_die("vblank", RDC_E_TIMEOUT);
 		res->wall = bench_now() - t0;
 		seen = lazy ? rt_frame_count(r.dev) : f.seen;
 	} while (seen - f0 < m->frames && res->wall < RT_MAX_S);
-	res->cpu = cpu_now() - res->cpu;
+	res->cpu = bench_cpu_now() - res->cpu;
 	rdc_sim_time(r.dev, &c1);
 	res->frames = seen - f0;
 	res->cycles = c1 - c0;

@@ -10,7 +10,7 @@
 #include <wchar.h>
 #include <zlib.h>
 
-#include "rdc_bench.h"
+#include "parts.h"
 
 /*
  * Fill and blit of squares from 8x8 to the whole 4096x4096 XRGB8888
@@ -53,13 +53,13 @@ static uint32_t g_ops(uint32_t what, uint32_t side)
 
 static uint32_t g_vram_crc(rdc_dev *dev)
 {
-	uint8_t *buf = xcalloc(G_SIDE, 4);
+	uint8_t *buf = bench_xcalloc(G_SIDE, 4);
 	uLong crc = crc32(0, NULL, 0);
 	uint32_t y;
 
 	for (y = 0; y < G_SIDE; y++) {
 		if (rdc_vram_read(dev, y * G_SIDE * 4, buf, G_SIDE * 4))
-			die("vram read", RDC_E_IO);
+			bench_die("vram read", RDC_E_IO);
 		crc = crc32(crc, buf, G_SIDE * 4);
 	}
 	free(buf);
@@ -74,15 +74,16 @@ static uint32_t g_buf_crc(const uint32_t *s)
 /* Inputs of one size: fill x, y, colour; blit sx, sy, dx, dy. */
 static uint32_t *g_input(uint32_t what, uint32_t side, uint32_t ops)
 {
-	uint32_t *a = xcalloc((size_t)ops * 4, 4), i, span = G_SIDE - side + 1;
-	struct rng g = { BENCH_SEED ^ side };
+	uint32_t *a = bench_xcalloc((size_t)ops * 4, 4), i,
+		 span = G_SIDE - side + 1;
+	struct bench_rng g = { BENCH_SEED ^ side };
 
 	for (i = 0; i < ops; i++) {
-		a[4 * i] = r32(&g) % span;
-		a[4 * i + 1] = r32(&g) % span;
-		a[4 * i + 2] = what == G_FILL ? r32(&g) | BENCH_OPAQUE :
-						r32(&g) % span;
-		a[4 * i + 3] = r32(&g) % span;
+		a[4 * i] = bench_r32(&g) % span;
+		a[4 * i + 1] = bench_r32(&g) % span;
+		a[4 * i + 2] = what == G_FILL ? bench_r32(&g) | BENCH_OPAQUE :
+						bench_r32(&g) % span;
+		a[4 * i + 3] = bench_r32(&g) % span;
 	}
 	return a;
 }
@@ -93,7 +94,7 @@ static uint32_t g_other(uint32_t c)
 }
 
 /* flood: cur is the region's colour; each op turns it to the other one. */
-static void g_rdc(struct run *r, uint32_t what, uint32_t side,
+static void g_rdc(struct bench_run *r, uint32_t what, uint32_t side,
 		  const uint32_t *a, uint32_t ops, uint32_t cur)
 {
 	uint32_t i;
@@ -111,7 +112,7 @@ static void g_rdc(struct run *r, uint32_t what, uint32_t side,
 			rdc_batch_flood(r->b, (int)(a[0] + side / 2),
 					(int)(a[1] + side / 2), 0, 0);
 		}
-		run_flush(r, false);
+		bench_run_flush(r, false);
 	}
 }
 
@@ -139,28 +140,29 @@ static void g_limit(uint32_t *s, uint32_t what, uint32_t side,
 }
 
 /* The blits' source: random pixels, in VRAM and in the limit's copy. */
-static void g_source(struct run *r, uint32_t *src)
+static void g_source(struct bench_run *r, uint32_t *src)
 {
-	struct rng g = { BENCH_PREFILL_SEED };
+	struct bench_rng g = { BENCH_PREFILL_SEED };
 	size_t i;
 
 	for (i = 0; i < (size_t)G_SIDE * G_SIDE; i++)
-		src[i] = r32(&g);
+		src[i] = bench_r32(&g);
 	if (rdc_vram_write(r->dev, G_SRC, src, (size_t)G_SIDE * G_SIDE * 4))
-		die("vram write", RDC_E_IO);
+		bench_die("vram write", RDC_E_IO);
 }
 
 /* Fill the whole surface with c (setup, untimed), and the limit's too. */
-static void g_clear(struct run *r, uint32_t *s, uint32_t c)
+static void g_clear(struct bench_run *r, uint32_t *s, uint32_t c)
 {
 	rdc_batch_fg(r->b, c);
 	rdc_batch_fill_rect(r->b, 0, 0, G_SIDE, G_SIDE);
-	run_finish(r);
+	bench_run_finish(r);
 	wmemset((wchar_t *)s, (wchar_t)c, (size_t)G_SIDE * G_SIDE);
 }
 
-static void g_measure(struct run *r, uint32_t *s, uint32_t what, uint32_t side,
-		      const struct opts *o, struct g_row *row)
+static void g_measure(struct bench_run *r, uint32_t *s, uint32_t what,
+		      uint32_t side, const struct bench_opts *o,
+		      struct g_row *row)
 {
 	uint32_t ops = g_ops(what, side), *a = g_input(what, side, ops);
 	double wall[MAX_REPEAT] = { 0 }, cpu[MAX_REPEAT] = { 0 },
@@ -179,7 +181,7 @@ static void g_measure(struct run *r, uint32_t *s, uint32_t what, uint32_t side,
 		g_clear(r, s, G_BACK);
 		rdc_batch_fg(r->b, G_REGION_A);
 		rdc_batch_fill_rect(r->b, (int)a[0], (int)a[1], side, side);
-		run_finish(r);
+		bench_run_finish(r);
 		for (k = 0; k < (int)side; k++)
 			wmemset((wchar_t *)(s + (size_t)(a[1] + k) * G_SIDE +
 					    a[0]),
@@ -191,7 +193,7 @@ static void g_measure(struct run *r, uint32_t *s, uint32_t what, uint32_t side,
 
 		if (what == G_FLOOD) {
 			/* every op at the one region's centre */
-			aa = xcalloc((size_t)ops * 4, 4);
+			aa = bench_xcalloc((size_t)ops * 4, 4);
 			for (i = 0; i < ops; i++)
 				memcpy(aa + 4 * i, a, 16);
 		}
@@ -199,7 +201,7 @@ static void g_measure(struct run *r, uint32_t *s, uint32_t what, uint32_t side,
 		rdc_sim_time(r->dev, &c0);
 		t0 = bench_tic();
 		g_rdc(r, what, side, aa, ops, cur);
-		run_finish(r);
+		bench_run_finish(r);
 		wall[k] = bench_toc(t0);
 		cpu[k] = bench_cpu();
 		rdc_sim_time(r->dev, &c1);
@@ -238,9 +240,9 @@ static void g_measure(struct run *r, uint32_t *s, uint32_t what, uint32_t side,
 	 * fill take about 30 ms), and what a shared machine adds to one
 	 * of them is an outlier a median of three still keeps.
 	 */
-	row->wall = least(wall, o->repeat);
-	row->cpu = least(cpu, o->repeat);
-	row->lim_cpu = least(lim, o->repeat);
+	row->wall = bench_least(wall, o->repeat);
+	row->cpu = bench_least(cpu, o->repeat);
+	row->lim_cpu = bench_least(lim, o->repeat);
 	free(a);
 }
 
@@ -323,21 +325,22 @@ static void g_fit(const struct g_row *row, uint32_t n, struct g_fit *fit)
 	}
 }
 
-void run_growth(const struct opts *o)
+void bench_growth(const struct bench_opts *o)
 {
 	static struct g_row rows[G_WHATS][G_SIZES];
 	struct g_fit fit[G_WHATS];
-	uint32_t *s = xcalloc((size_t)G_SIDE * G_SIDE * 2, 4); /* dst, src */
+	uint32_t *s =
+		bench_xcalloc((size_t)G_SIDE * G_SIDE * 2, 4); /* dst, src */
 	uint32_t w, i, n = 0, side;
-	struct run r;
+	struct bench_run r;
 	int err = rdc_open(G_URI, &r.dev);
 
 	if (err)
-		die("open " G_URI, err);
+		bench_die("open " G_URI, err);
 	r.b = rdc_batch_new();
 	if (!r.b)
-		die("batch", RDC_E_NOMEM);
-	scanout_off(r.dev);
+		bench_die("batch", RDC_E_NOMEM);
+	bench_scanout_off(r.dev);
 	rdc_batch_dst(r.b, 0, G_SIDE * 4, G_SIDE, G_SIDE, RDC_FMT_XRGB8888);
 	rdc_batch_src(r.b, G_SRC, G_SIDE * 4, G_SIDE, G_SIDE, RDC_FMT_XRGB8888);
 	rdc_batch_clip(r.b, 0, 0, G_SIDE, G_SIDE);

@@ -10,7 +10,7 @@
 #include <wchar.h>
 #include <zlib.h>
 
-#include "rdc_bench.h"
+#include "parts.h"
 
 /* ---- plain-C limits of the byte-moving workloads ------------------------- */
 
@@ -164,7 +164,7 @@ const struct limit limits[BENCH_KIND_COUNT][MAX_LIMITS] = {
 double scan_frames(const uint32_t *s, uint64_t frames, double *cpu,
 		   uint32_t *crc)
 {
-	uint32_t *fb = xcalloc((size_t)BENCH_W * BENCH_H, 4);
+	uint32_t *fb = bench_xcalloc((size_t)BENCH_W * BENCH_H, 4);
 	uint64_t f;
 	double t0 = bench_tic(), t;
 	uint32_t i;

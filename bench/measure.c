@@ -9,7 +9,7 @@
 #include <time.h>
 #include <zlib.h>
 
-#include "rdc_bench.h"
+#include "parts.h"
 
 /*
  * A peer whose whole workload would take longer than this (estimated from
@@ -33,7 +33,7 @@ double bench_now(void)
  * a shared machine wall time also counts the time other processes had the
  * CPU, which moves each figure by its own amount.
  */
-double cpu_now(void)
+double bench_cpu_now(void)
 {
 	struct timespec ts;
 
@@ -45,13 +45,13 @@ static double tic_cpu, toc_cpu;
 
 double bench_tic(void)
 {
-	tic_cpu = cpu_now();
+	tic_cpu = bench_cpu_now();
 	return bench_now();
 }
 
 double bench_toc(double t0)
 {
-	toc_cpu = cpu_now() - tic_cpu;
+	toc_cpu = bench_cpu_now() - tic_cpu;
 	return bench_now() - t0;
 }
 
@@ -80,7 +80,7 @@ static int cmp_double(const void *a, const void *b)
 
 /* ---- measuring ----------------------------------------------------------- */
 
-double least(const double *v, int n)
+double bench_least(const double *v, int n)
 {
 	double m = v[0];
 	int i;
@@ -90,7 +90,7 @@ double least(const double *v, int n)
 	return m;
 }
 
-double median(double *v, int n)
+double bench_median(double *v, int n)
 {
 	qsort(v, (size_t)n, sizeof(double), cmp_double);
 	return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
@@ -103,7 +103,7 @@ double median(double *v, int n)
  * and their ratios hold.  An entrant whose first run was slow (SLOW_S)
  * sits out the later rounds.
  */
-void measure(struct entrant *e, size_t n, const struct opts *o)
+void bench_measure(struct entrant *e, size_t n, const struct bench_opts *o)
 {
 	size_t i;
 	int k;
@@ -133,8 +133,8 @@ void measure(struct entrant *e, size_t n, const struct opts *o)
 		struct figure *f = e[i].fig;
 
 		if (f->runs) {
-			f->wall = median(e[i].wall, f->runs);
-			f->cpu = median(e[i].cpu, f->runs);
+			f->wall = bench_median(e[i].wall, f->runs);
+			f->cpu = bench_median(e[i].cpu, f->runs);
 			f->done = true;
 		}
 	}
@@ -151,13 +151,13 @@ void figure_init(struct figure *f, const char *name,
 	f->crc_same = true;
 }
 
-double rdc_one(void *ctx, uint32_t ops, uint32_t *crc)
+double bench_rdc_one(void *ctx, uint32_t ops, uint32_t *crc)
 {
-	struct rdc_ctx *c = ctx;
-	struct rdc_res res = { 0 };
+	struct bench_rdc_ctx *c = ctx;
+	struct bench_rdc_res res = { 0 };
 
 	(void)ops; /* always all of it */
-	rdc_run(c->in, &res, c->scan, c->lazy);
+	bench_rdc_run(c->in, &res, c->scan, c->lazy);
 	*crc = res.crc;
 	if (c->cycles && (c->cycles != res.cycles || c->frames != res.frames ||
 			  c->frame_crc != res.frame_crc))
@@ -172,7 +172,7 @@ double rdc_one(void *ctx, uint32_t ops, uint32_t *crc)
 double limit_one(void *ctx, uint32_t ops, uint32_t *crc)
 {
 	struct limit_ctx *c = ctx;
-	uint32_t *s = xcalloc((size_t)BENCH_W * BENCH_H, 4);
+	uint32_t *s = bench_xcalloc((size_t)BENCH_W * BENCH_H, 4);
 	double t = c->lim->run(c->in, s);
 
 	(void)ops; /* always all of it */
@@ -212,7 +212,7 @@ double peer_scan_one(void *ctx, uint32_t ops, uint32_t *crc)
 		(uint64_t)((double)c->scan->frames * (double)c->fig->pixels /
 				   (double)c->in->pixels +
 			   0.5);
-	s = xcalloc((size_t)BENCH_W * BENCH_H, 4);
+	s = bench_xcalloc((size_t)BENCH_W * BENCH_H, 4);
 	memset(s, 0x5a, (size_t)BENCH_W * BENCH_H * 4);
 	t += scan_frames(s, c->fig->frames, &cpu2, &fcrc);
 	toc_cpu = cpu + cpu2;
@@ -222,7 +222,7 @@ double peer_scan_one(void *ctx, uint32_t ops, uint32_t *crc)
 
 /* How much of the workload a peer draws: see PEER_BUDGET_S. */
 uint32_t peer_ops(const struct bench_input *in, const struct bench_peer *peer,
-		  const struct opts *o)
+		  const struct bench_opts *o)
 {
 	uint32_t probe = in->ops / PEER_PROBE ? in->ops / PEER_PROBE : 1;
 	uint32_t crc, ops;

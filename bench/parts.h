@@ -5,6 +5,7 @@
  * see bench.h only):
  *
  *   rdc_bench.c  options, each workload's contenders in turn, main
+ *   common.c     the workloads' names, the peers built in, dying on errors
  *   input.c      the workloads' inputs, drawn from their random streams
  *   pixels.c     a second geometry: the pixels a circle or polygon covers
  *   draw.c       the workloads through librdc sim:, realtime, teapot3d
@@ -77,21 +78,21 @@ static inline bool realtime(enum bench_kind k)
 	return k == BENCH_REALTIME || k == BENCH_REALTIME_1080;
 }
 
-static inline uint32_t umin(uint32_t a, uint32_t b)
+static inline uint32_t bench_umin(uint32_t a, uint32_t b)
 {
 	return a < b ? a : b;
 }
 
-void die(const char *what, int err);
-void *xcalloc(size_t n, size_t size);
+void bench_die(const char *what, int err);
+void *bench_xcalloc(size_t n, size_t size);
 
 /* ---- inputs (input.c, pixels.c) ------------------------------------------ */
 
-struct rng {
+struct bench_rng {
 	uint32_t x;
 };
 
-static inline uint32_t r32(struct rng *g)
+static inline uint32_t bench_r32(struct bench_rng *g)
 {
 	uint32_t x = g->x;
 
@@ -108,12 +109,12 @@ uint64_t polygon_pixels(const int *xy, uint32_t n);
 
 /* ---- rdc: the workloads through librdc sim: (draw.c) --------------------- */
 
-struct run {
+struct bench_run {
 	rdc_dev *dev;
 	rdc_batch *b;
 };
 
-struct rdc_res {
+struct bench_rdc_res {
 	double wall;
 	uint64_t cycles;
 	uint64_t sim_pixels; /* pixels the DP wrote, by its own count */
@@ -137,14 +138,14 @@ struct rt_mode {
 	uint32_t frames;     /* run this many frames or RT_MAX_S */
 };
 
-void run_flush(struct run *r, bool force);
-void run_finish(struct run *r);
-void scanout_off(rdc_dev *dev);
-void rdc_run(const struct bench_input *in, struct rdc_res *res, bool scan,
-	     bool lazy);
+void bench_run_flush(struct bench_run *r, bool force);
+void bench_run_finish(struct bench_run *r);
+void bench_scanout_off(rdc_dev *dev);
+void bench_rdc_run(const struct bench_input *in, struct bench_rdc_res *res,
+		   bool scan, bool lazy);
 const struct rt_mode *rt_mode_of(enum bench_kind k);
-void rdc_realtime(struct rt_res *res, const struct rt_mode *m, bool lazy);
-void rdc_teapot3d(struct rt_res *res);
+void bench_realtime(struct rt_res *res, const struct rt_mode *m, bool lazy);
+void bench_teapot3d(struct rt_res *res);
 
 /* ---- plain-C limits (limits.c) ------------------------------------------- */
 
@@ -179,7 +180,7 @@ struct figure {
 	uint64_t frames;    /* a peer with scanout: the frames it converts */
 };
 
-struct opts {
+struct bench_opts {
 	int repeat;
 	bool json, full, peers;
 };
@@ -193,7 +194,7 @@ struct entrant {
 	bool failed;
 };
 
-struct rdc_ctx {
+struct bench_rdc_ctx {
 	const struct bench_input *in;
 	bool scan; /* scanout on */
 	bool lazy; /* and no frame consumer */
@@ -205,9 +206,9 @@ struct rdc_ctx {
 struct limit_ctx {
 	const struct bench_input *in;
 	const struct limit *lim;
-	const struct rdc_ctx *scan; /* with scanout: rdc's frame count */
-	uint32_t frame_crc;	    /* of the last frame converted */
-	bool frame_crc_same;	    /* every run's was the same */
+	const struct bench_rdc_ctx *scan; /* with scanout: rdc's frame count */
+	uint32_t frame_crc;		  /* of the last frame converted */
+	bool frame_crc_same;		  /* every run's was the same */
 	int runs;
 };
 
@@ -226,22 +227,22 @@ struct peer_ctx {
 struct peer_scan_ctx {
 	const struct bench_input *in;
 	const struct bench_peer *peer;
-	const struct rdc_ctx *scan; /* rdc's frame count */
+	const struct bench_rdc_ctx *scan; /* rdc's frame count */
 	struct figure *fig;
 };
 
-double cpu_now(void);
-double least(const double *v, int n);
-double median(double *v, int n);
-void measure(struct entrant *e, size_t n, const struct opts *o);
+double bench_cpu_now(void);
+double bench_least(const double *v, int n);
+double bench_median(double *v, int n);
+void bench_measure(struct entrant *e, size_t n, const struct bench_opts *o);
 void figure_init(struct figure *f, const char *name,
 		 const struct bench_input *in, uint32_t ops);
-double rdc_one(void *ctx, uint32_t ops, uint32_t *crc);
+double bench_rdc_one(void *ctx, uint32_t ops, uint32_t *crc);
 double limit_one(void *ctx, uint32_t ops, uint32_t *crc);
 double peer_one(void *ctx, uint32_t ops, uint32_t *crc);
 double peer_scan_one(void *ctx, uint32_t ops, uint32_t *crc);
 uint32_t peer_ops(const struct bench_input *in, const struct bench_peer *peer,
-		  const struct opts *o);
+		  const struct bench_opts *o);
 
 /* ---- results, targets and reporting (targets.c, report.c) ---------------- */
 
@@ -305,6 +306,6 @@ void print_table(const struct result *res, size_t n, bool peers_on);
 
 /* ---- growth (growth.c) --------------------------------------------------- */
 
-void run_growth(const struct opts *o);
+void bench_growth(const struct bench_opts *o);
 
 #endif /* RDC_BENCH_PARTS_H */

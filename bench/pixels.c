@@ -6,7 +6,7 @@
  * circle's distinct points and rows, and a polygon's pixel centres by the
  * even-odd rule.  A figure's Mpix/s is these pixels over its time.
  */
-#include "rdc_bench.h"
+#include "parts.h"
 
 /*
  * The classic incremental midpoint circle, octant x <= y from (0, r).

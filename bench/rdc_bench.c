@@ -26,57 +26,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "rdc_bench.h"
-
-const char *const kind_name[BENCH_KIND_COUNT] = {
-	[BENCH_FILL] = "fill",
-	[BENCH_BLIT] = "blit",
-	[BENCH_BLIT_XOR] = "blit_xor",
-	[BENCH_LINE] = "line",
-	[BENCH_AALINE] = "aaline",
-	[BENCH_CIRCLE] = "circle",
-	[BENCH_FILL_CIRCLE] = "fill_circle",
-	[BENCH_POLYGON] = "polygon",
-	[BENCH_TEXT] = "text",
-	[BENCH_SCANOUT] = "scanout",
-	[BENCH_REALTIME] = "realtime",
-	[BENCH_REALTIME_1080] = "realtime1080",
-	[BENCH_TEAPOT3D] = "teapot3d",
-	[BENCH_GROWTH] = "growth",
-};
-
-const struct bench_peer *const peers[NPEERS + 1] = {
-#ifdef BENCH_HAVE_PIXMAN
-	&bench_peer_pixman,
-#endif
-#ifdef BENCH_HAVE_CAIRO
-	&bench_peer_cairo,
-#endif
-#ifdef BENCH_HAVE_SDL2_GFX
-	&bench_peer_sdl2_gfx,
-#endif
-	NULL,
-};
-
-void die(const char *what, int err)
-{
-	fprintf(stderr, "rdc-bench: %s: %s\n", what, rdc_strerror(err));
-	exit(1);
-}
-
-void *xcalloc(size_t n, size_t size)
-{
-	void *p = calloc(n, size);
-
-	if (!p)
-		die("memory", RDC_E_NOMEM);
-	return p;
-}
+#include "parts.h"
 
 /* ---- driver -------------------------------------------------------------- */
 
 static void run_rt(struct result *res, enum bench_kind kind,
-		   const struct opts *o)
+		   const struct bench_opts *o)
 {
 	double fps[MAX_REPEAT], fps_lazy[MAX_REPEAT];
 	double cfps[MAX_REPEAT], cfps_lazy[MAX_REPEAT];
@@ -86,21 +41,21 @@ static void run_rt(struct result *res, enum bench_kind kind,
 	/* realtime: with its sink and with no frame consumer, by turns */
 	for (runs = 0; runs < o->repeat; runs++) {
 		if (kind == BENCH_TEAPOT3D) {
-			rdc_teapot3d(&rt);
+			bench_teapot3d(&rt);
 		} else {
-			rdc_realtime(&rt_lazy, rt_mode_of(kind), true);
+			bench_realtime(&rt_lazy, rt_mode_of(kind), true);
 			fps_lazy[runs] = (double)rt_lazy.frames / rt_lazy.wall;
 			cfps_lazy[runs] = (double)rt_lazy.frames / rt_lazy.cpu;
-			rdc_realtime(&rt, rt_mode_of(kind), false);
+			bench_realtime(&rt, rt_mode_of(kind), false);
 			cfps[runs] = (double)rt.frames / rt.cpu;
 		}
 		fps[runs] = (double)rt.frames / rt.wall;
 	}
-	res->fps = median(fps, runs);
+	res->fps = bench_median(fps, runs);
 	if (kind != BENCH_TEAPOT3D) {
-		res->fps_lazy = median(fps_lazy, runs);
-		res->cpu_fps = median(cfps, runs);
-		res->cpu_fps_lazy = median(cfps_lazy, runs);
+		res->fps_lazy = bench_median(fps_lazy, runs);
+		res->cpu_fps = bench_median(cfps, runs);
+		res->cpu_fps_lazy = bench_median(cfps_lazy, runs);
 	}
 	res->ops = rt.frames;
 	res->rt_drawn = rt.drawn;
@@ -127,7 +82,7 @@ static void run_rt(struct result *res, enum bench_kind kind,
 }
 
 static void run_kind(struct result *res, enum bench_kind kind,
-		     const struct opts *o)
+		     const struct bench_opts *o)
 {
 	struct entrant e[3 + 2 * MAX_LIMITS + 2 * NPEERS];
 	struct limit_ctx lc[MAX_LIMITS], ls[MAX_LIMITS];
@@ -135,7 +90,7 @@ static void run_kind(struct result *res, enum bench_kind kind,
 	struct peer_scan_ctx psc[NPEERS + 1];
 	static char scan_name[NPEERS + 1][48];
 	struct bench_input in;
-	struct rdc_ctx rc, rc_off, rc_lazy;
+	struct bench_rdc_ctx rc, rc_off, rc_lazy;
 	size_t k, n = 0;
 
 	memset(res, 0, sizeof(*res));
@@ -154,20 +109,21 @@ static void run_kind(struct result *res, enum bench_kind kind,
 	memset(&rc, 0, sizeof(rc));
 	rc.in = &in;
 	rc.scan = true;
-	rc_off = (struct rdc_ctx){ .in = &in };
-	rc_lazy = (struct rdc_ctx){ .in = &in, .scan = true, .lazy = true };
+	rc_off = (struct bench_rdc_ctx){ .in = &in };
+	rc_lazy =
+		(struct bench_rdc_ctx){ .in = &in, .scan = true, .lazy = true };
 	figure_init(&res->rdc, "rdc", &in, in.ops);
 	e[n++] = (struct entrant){ .fig = &res->rdc,
-				   .one = rdc_one,
+				   .one = bench_rdc_one,
 				   .ctx = &rc };
 	if (drawing(kind)) {
 		figure_init(&res->rdc_off, "rdc-noscan", &in, in.ops);
 		e[n++] = (struct entrant){ .fig = &res->rdc_off,
-					   .one = rdc_one,
+					   .one = bench_rdc_one,
 					   .ctx = &rc_off };
 		figure_init(&res->rdc_lazy, "rdc-lazy", &in, in.ops);
 		e[n++] = (struct entrant){ .fig = &res->rdc_lazy,
-					   .one = rdc_one,
+					   .one = bench_rdc_one,
 					   .ctx = &rc_lazy };
 	}
 	for (k = 0; k < MAX_LIMITS && limits[kind][k].name; k++) {
@@ -211,7 +167,7 @@ static void run_kind(struct result *res, enum bench_kind kind,
 					   .one = peer_scan_one,
 					   .ctx = &psc[k] };
 	}
-	measure(e, n, o);
+	bench_measure(e, n, o);
 	res->frames = rc.frames;
 	res->frame_crc = rc.frame_crc;
 	res->frame_crc_ok = true;
@@ -316,7 +272,7 @@ int main(int argc, char **argv)
 		{ NULL, 0, NULL, 0 },
 	};
 	static struct result res[BENCH_KIND_COUNT];
-	struct opts o = { .repeat = 3 };
+	struct bench_opts o = { .repeat = 3 };
 	bool only[BENCH_KIND_COUNT] = { false }, any = false, growth = false;
 	size_t n = 0;
 	int c, k;
@@ -374,6 +330,6 @@ int main(int argc, char **argv)
 	if (!o.json && n)
 		print_table(res, n, o.peers && NPEERS);
 	if (growth)
-		run_growth(&o);
+		bench_growth(&o);
 	return check_failures(res, n) ? 1 : 0;
 }

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "rdc_bench.h"
+#include "parts.h"
 
 static double mpix(uint64_t pixels, double wall)
 {

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "rdc_bench.h"
+#include "parts.h"
 
 /*
  * Targets (bench/README.md, "Reading the output").  Scanout on: fill,
