@@ -592,7 +592,7 @@ bench-stream-vm: $(O)/rel/stream-bench $(O)/rel/rdcctl $(O)/rel/v4l2_read
 #   fuzz_rdcd    rdcd's request handling, several clients (rdcd/serve.c)
 #   fuzz_script  the .rdl interpreter on a sim: device (lib/script*.c)
 #   fuzz_web     the web sink's HTTP and WebSocket parsers (sink/web_proto.c)
-#   fuzz_trace   trace replay (lib/record.c: rdcctl replay, why, diff)
+#   fuzz_trace   trace replay (lib/replay.c: rdcctl replay, why, diff)
 #   fuzz_decode  DECODE's image streams, every codec (firmware-model/decode.c)
 # `make fuzz` is the short run `make check` does (fuzz_proto, fuzz_usb and
 # fuzz_web a million inputs each, fuzz_rdcd, fuzz_script, fuzz_trace and
@@ -735,6 +735,7 @@ FUZZ_COV_FILES := userspace/lib/proto.c userspace/lib/usb_host.c \
 	userspace/rdcd/serve.c userspace/rdcd/dispatch.c \
 	userspace/rdcd/pending.c userspace/rdcd/frames.c \
 	userspace/rdcd/hist.c userspace/rdcd/out.c userspace/lib/record.c \
+	userspace/lib/replay.c \
 	$(sort $(wildcard userspace/lib/script*.c))
 fuzz-cov:
 	@command -v $(LLVM_COV) >/dev/null && command -v $(LLVM_PROFDATA) \
