@@ -421,14 +421,17 @@ static inline uint32_t cursor_over(uint32_t c, uint32_t d, uint32_t a)
 	return v > 255 ? 255 : v;
 }
 
-/* The ARGB8888 cursor's row at VRAM `addr` over line `out`, clipped. */
-static void cursor_argb_line(const struct rdc_hw *hw, uint32_t *out, uint32_t w,
-			     uint64_t addr)
+/*
+ * The ARGB8888 cursor's row at VRAM `addr` over pixels [x0, x0 + w) of a
+ * line, out[0] being pixel x0, clipped.
+ */
+static void cursor_argb_line(const struct rdc_hw *hw, uint32_t *out, int32_t x0,
+			     uint32_t w, uint64_t addr)
 {
 	const struct rdc_crtc *c = &hw->crtc;
 	const uint8_t *row = hw->vram + addr;
 	int32_t size = (int32_t)rdc_cursor_size(c->cur_cursor_ctrl);
-	int32_t cx = (int16_t)(c->cursor_pos & 0xffff);
+	int32_t cx = (int16_t)(c->cursor_pos & 0xffff) - x0;
 	int32_t i = cx < 0 ? -cx : 0;
 	int32_t end = RDC_MIN(size, (int32_t)w - cx);
 
@@ -454,11 +457,12 @@ static void cursor_argb_fetch(struct rdc_hw *hw, uint64_t when, uint64_t addr)
 		start + rdc_bus_read_cost(&hw->bus.open_row, addr, bytes);
 }
 
+/* The 2 bpp cursor over pixels [x0, x0 + w) of line n, out[0] pixel x0. */
 static void cursor_line(const struct rdc_hw *hw, uint32_t *out, uint32_t n,
-			uint32_t w)
+			int32_t x0, uint32_t w)
 {
 	const struct rdc_crtc *c = &hw->crtc;
-	int32_t cx = (int16_t)(c->cursor_pos & 0xffff);
+	int32_t cx = (int16_t)(c->cursor_pos & 0xffff) - x0;
 	int32_t cy = (int16_t)(c->cursor_pos >> 16);
 	int32_t dy = (int32_t)n - cy;
 	const uint8_t *row;
@@ -510,11 +514,87 @@ static void crtc_convert(struct rdc_hw *hw, unsigned int buf, uint32_t n)
 	if (lit && (hw->control & RDC_CONTROL_CURSOR_EN)) {
 		rdc_stream_fence(); /* the cursor's stores after the line's */
 		if (argb)
-			cursor_argb_line(hw, out, w, cursor_addr);
+			cursor_argb_line(hw, out, 0, w, cursor_addr);
 		else if (FIELD_GET(RDC_CURSOR_CTRL_FMT, c->cur_cursor_ctrl) ==
 			 RDC_CURSOR_FMT_2BPP)
-			cursor_line(hw, out, n, w);
+			cursor_line(hw, out, n, 0, w);
 	}
+}
+
+/* ---- light pen ------------------------------------------------------------ */
+
+/*
+ * Pixel x of active line n as crtc_convert makes it, at the line's fetch:
+ * the one pixel through the same conversion, gamma and cursor.
+ */
+static uint32_t crtc_pixel(const struct rdc_hw *hw, uint32_t n, uint32_t x)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	uint32_t fmt = c->cur_format, bpp = rdc_format_bpp(fmt), bytes, v = 0;
+	uint64_t addr, cursor_addr = 0;
+	bool argb = cursor_argb_row(hw, &c->cur, n, &cursor_addr);
+
+	if (!(hw->pins_in & RDC_PIN_BL_EN))
+		return 0;
+	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
+		const uint8_t *p = hw->vram + addr + (uint64_t)x * bpp / 8;
+
+		if (rdc_format_indexed(fmt)) {
+			unsigned int k = x % (8 / bpp);
+
+			v = hw->clut[(*p >> (8 - bpp * (k + 1))) &
+				     ((1u << bpp) - 1)];
+		} else {
+			convert_line(hw, &v, p, 1, fmt);
+			if (c->cur_gamma)
+				gamma_line(hw->clut, &v, 1);
+		}
+	}
+	if (hw->control & RDC_CONTROL_CURSOR_EN) {
+		if (argb)
+			cursor_argb_line(hw, &v, (int32_t)x, 1, cursor_addr);
+		else if (FIELD_GET(RDC_CURSOR_CTRL_FMT, c->cur_cursor_ctrl) ==
+			 RDC_CURSOR_FMT_2BPP)
+			cursor_line(hw, &v, n, (int32_t)x, 1);
+	}
+	return v;
+}
+
+/*
+ * Line n, the pen's, starts at `when`: is the pen's pixel lit?  Then the
+ * strobe comes when the beam reaches its column.
+ */
+static rdc_noinline void crtc_lpen_line(struct rdc_hw *hw, uint32_t n,
+					uint64_t when)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t x = FIELD_GET(RDC_LPEN_X, c->lpen_pos), v, luma;
+	uint64_t pix_hz = (uint64_t)c->cur.pixclk_khz * HZ_PER_KHZ;
+
+	if (n >= c->cur.v_display || x >= c->cur.h_display || !pix_hz)
+		return;
+	v = crtc_pixel(hw, n, x);
+	luma = (77 * ((v >> 16) & 0xff) + 150 * ((v >> 8) & 0xff) +
+		29 * (v & 0xff) + 128) >>
+	       8;
+	if (luma <= FIELD_GET(RDC_LPEN_CTRL_THRESHOLD, c->lpen_ctrl))
+		return;
+	c->lpen_time = when + ((uint64_t)x * hw->core_hz + pix_hz - 1) / pix_hz;
+}
+
+/* The strobe: the latch takes the beam, at its own time. */
+static rdc_noinline void crtc_lpen_strobe(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint64_t when = c->lpen_time;
+
+	c->lpen_time = RDC_NEVER;
+	if (hw->now < when)
+		hw->now = when;
+	c->lpen_latch = c->lpen_pos;
+	c->lpen_hit = 1;
+	rdc_irq_raise(hw, RDC_IRQ_LPEN);
+	rdc_pins_update(hw, when);
 }
 
 /* ---- scanout on demand (rdc_hw_set_on_demand) ---------------------------- */
@@ -965,6 +1045,8 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 	 */
 	if (c->running && c->next_line_time <= t && !hw->frame_fn)
 		shown_until = crtc_shown_until(hw, t);
+	if (c->lpen_time <= t) /* before the next line start */
+		crtc_lpen_strobe(hw);
 	while (c->running && c->next_line_time <= t) {
 		uint32_t n = c->next_line;
 		uint64_t when = c->next_line_time;
@@ -1003,7 +1085,28 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 			crtc_vblank(hw, when);
 		if (n == c->line_compare)
 			crtc_line_compare(hw, when);
+		if (n == c->lpen_line) {
+			crtc_lpen_line(hw, n, when);
+			if (c->lpen_time <= t)
+				crtc_lpen_strobe(hw);
+		}
 	}
+}
+
+void rdc_crtc_lpen_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	if (reg == RDC_REG_LPEN_POS) {
+		c->lpen_pos = val;
+	} else {
+		c->lpen_ctrl = val & RDC_LPEN_CTRL_MASK;
+		c->lpen_hit = 0;
+	}
+	c->lpen_time = RDC_NEVER;
+	c->lpen_line = (c->lpen_ctrl & RDC_LPEN_CTRL_EN) ?
+			       FIELD_GET(RDC_LPEN_Y, c->lpen_pos) :
+			       RDC_NEVER_LINE;
 }
 
 void rdc_crtc_start(struct rdc_hw *hw)
@@ -1020,6 +1123,7 @@ void rdc_crtc_start(struct rdc_hw *hw)
 	crtc_latch(hw, false);
 	c->running = c->mode_valid;
 	c->in_vblank = 0;
+	c->lpen_time = RDC_NEVER;
 	rdc_pins_update(hw, hw->now);
 	c->next_line = 0;
 	if (!c->running) {
@@ -1039,6 +1143,7 @@ void rdc_crtc_stop(struct rdc_hw *hw)
 	c->running = 0;
 	c->in_vblank = 0;
 	c->next_line_time = RDC_NEVER;
+	c->lpen_time = RDC_NEVER;
 	rdc_pins_update(hw, hw->now);
 }
 
@@ -1057,6 +1162,8 @@ void rdc_crtc_reset(struct rdc_hw *hw)
 	c->next_line_time = RDC_NEVER;
 	c->shadow_dirty = 1;
 	c->rl_wait = RDC_NEVER_LINE;
+	c->lpen_line = RDC_NEVER_LINE;
+	c->lpen_time = RDC_NEVER;
 }
 
 /* Beam at hw->now; scanout must have caught up. */

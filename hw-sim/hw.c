@@ -461,6 +461,8 @@ static uint32_t status_reg(struct rdc_hw *hw)
 	s |= rdc_crtc_status(hw);
 	if (irq_line(hw))
 		s |= RDC_STATUS_IRQ;
+	if (hw->crtc.lpen_hit)
+		s |= RDC_STATUS_LPEN;
 	return s;
 }
 
@@ -517,6 +519,12 @@ static uint32_t reg_read(struct rdc_hw *hw, uint32_t reg)
 	case RDC_REG_RASTER_STATUS:
 		rdc_crtc_catch_up(hw, hw->now);
 		return rdc_crtc_raster_status(hw);
+	case RDC_REG_LPEN_POS:
+		return c->lpen_pos;
+	case RDC_REG_LPEN_CTRL:
+		return c->lpen_ctrl;
+	case RDC_REG_LPEN_LATCH:
+		return c->lpen_latch;
 	case RDC_REG_CLUT_INDEX:
 		return hw->clut_index;
 	case RDC_REG_CLUT_DATA:
@@ -741,6 +749,10 @@ void rdc_hw_write(struct rdc_hw *hw, uint32_t reg, uint32_t val)
 		return;
 	case RDC_REG_FIFO_LOWWATER:
 		hw->fifo_lowwater = RDC_MIN(val, RDC_FIFO_DEPTH);
+		return;
+	case RDC_REG_LPEN_POS:
+	case RDC_REG_LPEN_CTRL: /* an input of the host's, not of the DP's */
+		rdc_crtc_lpen_write(hw, reg, val);
 		return;
 	case RDC_REG_RING_BASE:
 		hw->ring_base = val;

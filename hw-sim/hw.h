@@ -95,6 +95,14 @@ struct rdc_crtc {
 	uint64_t rl_addr;
 	uint32_t rl_count, rl_wait;
 	int rl_error, rl_touched;
+	/*
+	 * Light pen: LPEN_POS, LPEN_CTRL, LPEN_LATCH, STATUS.LPEN, the line
+	 * whose fetch looks at the pen's pixel (RDC_NEVER_LINE: off) and the
+	 * strobe to come on the current line (RDC_NEVER: none).
+	 */
+	uint32_t lpen_pos, lpen_ctrl, lpen_latch, lpen_line;
+	int lpen_hit;
+	uint64_t lpen_time;
 };
 
 /* The DRAM bus's state for the cost model (see bus.h). */

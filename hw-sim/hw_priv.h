@@ -100,12 +100,14 @@ void rdc_crtc_reset(struct rdc_hw *hw);
 void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t);
 
 /*
- * Does a scanout event fall at or before t?  If not, rdc_crtc_catch_up(hw,
- * t) does nothing, and callers on hot paths skip the call.
+ * Does a scanout event (a line start, a light-pen strobe) fall at or
+ * before t?  If not, rdc_crtc_catch_up(hw, t) does nothing, and callers
+ * on hot paths skip the call.
  */
 static inline bool rdc_crtc_due(const struct rdc_hw *hw, uint64_t t)
 {
-	return hw->crtc.running && hw->crtc.next_line_time <= t;
+	return hw->crtc.running &&
+	       (hw->crtc.next_line_time <= t || hw->crtc.lpen_time <= t);
 }
 
 /*
@@ -169,6 +171,8 @@ void rdc_crtc_stop(struct rdc_hw *hw);
 int rdc_crtc_next_fetches(const struct rdc_hw *hw);
 uint32_t rdc_crtc_status(struct rdc_hw *hw);
 uint32_t rdc_crtc_raster_status(struct rdc_hw *hw);
+/* A host write of LPEN_POS or LPEN_CTRL. */
+void rdc_crtc_lpen_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
 
 /* Entries a frame's raster list may fetch: RASTER_CTRL.LEN, 0 the most. */
 static inline uint32_t rdc_crtc_raster_len(const struct rdc_hw *hw)

@@ -29,9 +29,10 @@
  * 1.1 added the ARGB8888 cursor (CURSOR_CTRL) and the gamma of direct
  * colour (CONTROL.GAMMA_EN); on 1.0 CURSOR_CTRL is a hole in the map and
  * CONTROL bit 6 reads 0.  1.2 added the raster list (RASTER_*), holes in
- * the map before it.
+ * the map before it.  1.3 added the light pen (LPEN_*, RDC_IRQ_LPEN,
+ * STATUS.LPEN), holes in the map and IRQ bit 5 reading 0 before it.
  */
-#define RDC_VERSION_VALUE 0x00010002u
+#define RDC_VERSION_VALUE 0x00010003u
 #define RDC_REG_WINDOW 0x400u
 
 /* ---- Identification and control ------------------------------------- */
@@ -68,6 +69,7 @@
 #define   RDC_STATUS_VBLANK BIT(6) /* beam in vertical blanking */
 #define   RDC_STATUS_HBLANK BIT(7) /* beam in horizontal blanking */
 #define   RDC_STATUS_IRQ BIT(8) /* level of the IRQ pin */
+#define   RDC_STATUS_LPEN BIT(9) /* the light pen latched (LPEN_CTRL clears) */
 #define   RDC_STATUS_IDLE_MASK \
 	(RDC_STATUS_DP_BUSY | RDC_STATUS_DP_WAIT) /* 0 and queues empty = idle */
 
@@ -78,7 +80,8 @@
 #define   RDC_IRQ_FENCE BIT(2) /* FENCE command executed */
 #define   RDC_IRQ_FIFO_LOW BIT(3) /* FIFO level fell to FIFO_LOWWATER */
 #define   RDC_IRQ_ERROR BIT(4) /* ERR_CODE was set */
-#define   RDC_IRQ_ALL GENMASK(4, 0)
+#define   RDC_IRQ_LPEN BIT(5) /* the light pen latched the beam */
+#define   RDC_IRQ_ALL GENMASK(5, 0)
 
 /*
  * R   last error (enum rdc_err); cleared by writing RDC_IRQ_ERROR to IRQ_STATUS
@@ -180,6 +183,30 @@ enum rdc_rl_op {
 	RDC_RL_CLUT = 3,
 	RDC_RL_OP_COUNT
 };
+
+/*
+ * Light pen, as the uPD7220's: the host says where the pen is held
+ * (LPEN_POS) and puts it on the screen (LPEN_CTRL.EN).  At the start of
+ * active line LPEN_POS.y the CRTC takes the pen's pixel from the line it
+ * fetches, through the line's own conversion (format, CLUT, gamma, the
+ * cursor, BL_EN low: black); it is lit when its luma (77 R + 150 G + 29 B
+ * + 128) >> 8 is above LPEN_CTRL.THRESHOLD.  A lit pixel strobes the latch
+ * at the first core cycle BEAM reads the pen's column on that line, line
+ * start + ceil(x * core clock / pixel clock): LPEN_LATCH takes the beam's
+ * position, STATUS.LPEN sets and RDC_IRQ_LPEN is raised, once a frame.
+ * A pen off the active area never strobes.  A write of LPEN_POS or
+ * LPEN_CTRL applies from the next line start and cancels a strobe still to
+ * come on the current line; a write of LPEN_CTRL clears STATUS.LPEN.
+ */
+#define RDC_REG_LPEN_POS 0x150 /* RW  where the pen is held */
+#define   RDC_LPEN_X GENMASK(15, 0)
+#define   RDC_LPEN_Y GENMASK(31, 16)
+#define RDC_REG_LPEN_CTRL 0x154 /* RW */
+#define   RDC_LPEN_CTRL_EN BIT(0) /* the pen is on the screen */
+#define   RDC_LPEN_CTRL_THRESHOLD GENMASK(15, 8) /* lit: luma above this */
+#define   RDC_LPEN_CTRL_MASK (RDC_LPEN_CTRL_EN | RDC_LPEN_CTRL_THRESHOLD)
+/* R   the beam at the last strobe, as BEAM: [15:0] x, [31:16] y */
+#define RDC_REG_LPEN_LATCH 0x158
 
 #define RDC_CRTC_MAX_TOTAL 4096
 #define RDC_CRTC_MAX_DISPLAY 2048

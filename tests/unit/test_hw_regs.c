@@ -176,7 +176,7 @@ static void test_bad_offsets(void **state)
 		0x002,		/* unaligned */
 		0x011,		/* unaligned CONTROL */
 		0x02c,		/* hole after PINS */
-		0x150,		/* hole after RASTER_STATUS */
+		0x15c,		/* hole after LPEN_LATCH */
 		0x188,		/* hole after CLUT_DATA */
 		0x228,		/* hole after RDATA_COUNT */
 		0x330,		/* after PERF_CTRL */
