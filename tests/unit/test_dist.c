@@ -467,6 +467,7 @@ static void test_bash_completion(void **state)
 	expect_completion(dir, "rdcctl image encode --format b", "btc ");
 	expect_completion(dir, "rdcctl pins --set B", "BL_EN=0 BL_EN=1 ");
 	expect_completion(dir, "rdcctl pins --edges f", "falling ");
+	expect_completion(dir, "rdcctl pen o", "off ");
 
 	/* everything --help lists is offered somewhere */
 	sibling("rdcctl", bin, sizeof(bin));
@@ -480,18 +481,20 @@ static void test_bash_completion(void **state)
 		char *r = complete(dir, "rdcctl run scene.rdl -");
 		char *t = complete(dir, "rdcctl -");
 		char *e = complete(dir, "rdcctl image encode --");
+		char *l = complete(dir, "rdcctl pen 1 2 --");
 		size_t len = strlen(c) + strlen(s) + strlen(p) + strlen(r) +
-			     strlen(t) + strlen(e) + 8;
+			     strlen(t) + strlen(e) + strlen(l) + 8;
 
 		all = malloc(len);
 		assert_non_null(all);
-		snprintf(all, len, "%s %s %s %s %s %s", c, s, p, r, t, e);
+		snprintf(all, len, "%s %s %s %s %s %s %s", c, s, p, r, t, e, l);
 		free(c);
 		free(s);
 		free(p);
 		free(r);
 		free(t);
 		free(e);
+		free(l);
 	}
 	n = options_of(help, opts, 64);
 	for (int i = 0; i < n; i++)

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "history.h"
+#include "pen.h"
 #include "pins.h"
 #include "image.h"
 #include "rdc.h"
@@ -42,7 +43,7 @@ static void usage(FILE *f)
 		"                             directory, rdcfb.ko, rdcdrm.ko):\n"
 		"                             one line each, the URI for\n"
 		"                             --connect first\n"
-		"%s%s%s%s"
+		"%s%s%s%s%s"
 		"\n"
 		"options:\n"
 		"  --connect URI  device to use (default " RDCCTL_DEFAULT_URI
@@ -58,8 +59,8 @@ static void usage(FILE *f)
 		"\n"
 		"The script format is described in rdl(5), the commands in "
 		"rdcctl(1).\n",
-		rdcctl_stream_usage, rdcctl_pins_usage, rdcctl_image_usage,
-		rdcctl_history_usage);
+		rdcctl_stream_usage, rdcctl_pins_usage, rdcctl_pen_usage,
+		rdcctl_image_usage, rdcctl_history_usage);
 }
 
 /* The release rdcctl was built as, and the librdc it runs on. */
@@ -445,6 +446,9 @@ int main(int argc, char **argv)
 	if (ret >= 0)
 		return ret;
 	ret = rdcctl_pins_main(argc, argv);
+	if (ret >= 0)
+		return ret;
+	ret = rdcctl_pen_main(argc, argv);
 	if (ret >= 0)
 		return ret;
 	ret = rdcctl_image_main(argc, argv);
