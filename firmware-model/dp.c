@@ -67,6 +67,7 @@ static void dp_reset(void *opaque)
 	dp->phase = RDC_DP_IDLE;
 	dp->list_depth = 0;
 	dp->list_pc = 0;
+	dp->meshes_culled = 0;
 	dp->cmd_len = 0;
 	dp->cmd_have = 0;
 	dp->rb_pos = 0;
@@ -725,6 +726,7 @@ bool rdc_dp_view_get(const struct rdc_hw *hw, struct rdc_dp_view *s)
 	s->pattern = dp->st.pat_mode;
 	s->fg = dp->st.fg;
 	s->bg = dp->st.bg;
+	s->meshes_culled = dp->meshes_culled;
 	s->depth = RDC_MIN(dp->list_depth, (uint32_t)RDC_CALL_DEPTH);
 	if (s->depth) {
 		s->src = RDC_DP_SRC_LIST;

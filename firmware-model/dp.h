@@ -193,6 +193,8 @@ struct rdc_dp {
 	struct rdc_dp_v3 v3[RDC_MESH_MAX_VERTS];
 	uint16_t v3_idx[3 * RDC_MESH_MAX_TRIS];
 	uint32_t v3_edge[3 * RDC_MESH_MAX_TRIS];
+	/* MESHes culled whole by RDC_MESH_BOUNDS since the last reset */
+	uint32_t meshes_culled;
 };
 
 #endif /* RDC_DP_H */

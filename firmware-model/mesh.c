@@ -286,15 +286,47 @@ void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 	}
 }
 
+/*
+ * RDC_MESH_BOUNDS: true when the model box's eight corners, through the
+ * CTM and the view, all lie outside one clip plane.  The clip planes are
+ * linear in homogeneous coordinates and the corners' images span the
+ * image of the box, so the whole mesh is then outside.
+ */
+static uint32_t bounds_cull(struct rdc_dp *dp, const uint8_t *p, bool *out)
+{
+	int32_t b[RDC_MESH_BOUNDS_WORDS], pos[3];
+	struct rdc_dp_v3 v;
+	uint8_t all = 0xff;
+	uint32_t i, k;
+
+	for (i = 0; i < RDC_MESH_BOUNDS_WORDS; i++)
+		b[i] = (int32_t)rdc_ld32(p + i * sizeof(uint32_t));
+	rdc_port_compute(dp->hw, 8 * RDC_T_VERTEX3);
+	for (i = 0; i < 8; i++) {
+		for (k = 0; k < 3; k++)
+			pos[k] = b[k + (i >> k & 1 ? 3 : 0)];
+		if (!g3_vertex(dp, pos, NULL, NULL, false, false, &v))
+			return RDC_ERR_RANGE;
+		all &= v.out;
+	}
+	*out = all != 0;
+	return RDC_ERR_NONE;
+}
+
 uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 {
 	struct rdc_hw *hw = dp->hw;
-	uint32_t vbase = a[0], vcount = a[1], ibase = a[2], tcount = a[3];
+	uint32_t vbase = a[0], vcount = a[1] & ~RDC_MESH_BOUNDS, ibase = a[2];
+	uint32_t tcount = a[3];
 	uint32_t words = fl & RDC_MESH_NORMALS ? 6 : 3, i, j;
 	bool lit = fl & RDC_MESH_LIT;
 	bool vlit = lit && (fl & RDC_MESH_GOURAUD);
 	struct g3_nmat nm;
 	const uint8_t *p;
+
+	uint32_t vskip = a[1] & RDC_MESH_BOUNDS ?
+				 RDC_MESH_BOUNDS_WORDS * sizeof(uint32_t) :
+				 0;
 
 	if (fl & ~RDC_MESH_FLAGS)
 		return RDC_ERR_ARG;
@@ -303,12 +335,29 @@ uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 		return RDC_ERR_ARG;
 	if (vcount < 1 || vcount > RDC_MESH_MAX_VERTS ||
 	    tcount > RDC_MESH_MAX_TRIS || vbase % sizeof(uint32_t) ||
-	    (uint64_t)vbase + (uint64_t)vcount * words * sizeof(uint32_t) >
+	    (uint64_t)vbase + vskip +
+			    (uint64_t)vcount * words * sizeof(uint32_t) >
 		    hw->vram_size ||
 	    (uint64_t)ibase + (uint64_t)tcount * 3 * IDX_BYTES > hw->vram_size)
 		return RDC_ERR_RANGE;
 	if (!(fl & RDC_MESH_WIRE) && !dp_zbuf_ready(dp))
 		return RDC_ERR_SURFACE;
+	if (vskip) {
+		uint32_t err;
+		bool out;
+
+		p = rdc_port_span(hw, vbase, vskip, RDC_BUS_READ);
+		if (!p)
+			return RDC_ERR_RANGE;
+		err = bounds_cull(dp, p, &out);
+		if (err != RDC_ERR_NONE)
+			return err;
+		if (out) {
+			dp->meshes_culled++;
+			return RDC_ERR_NONE;
+		}
+		vbase += vskip;
+	}
 	/* the indices, all checked before anything is drawn */
 	if (tcount) {
 		p = rdc_port_span(hw, ibase, tcount * 3 * IDX_BYTES,

@@ -29,6 +29,8 @@ struct rdc_dp_view {
 	uint32_t cmd_addr; /* RDC_DP_SRC_LIST: the command's VRAM address */
 	/* RDC_DP_SRC_LIST: where each outer list resumes, outermost first */
 	uint32_t calls[RDC_CALL_DEPTH];
+	/* MESHes culled whole by RDC_MESH_BOUNDS since the last reset */
+	uint32_t meshes_culled;
 };
 
 struct rdc_dp;

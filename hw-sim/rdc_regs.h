@@ -812,6 +812,14 @@ enum rdc_axis { RDC_AXIS_X = 0, RDC_AXIS_Y = 1, RDC_AXIS_Z = 2 };
 #define RDC_MESH_FLAGS GENMASK(6, 0)
 #define RDC_PATCH_STEPS GENMASK(15, 8) /* PATCH mode word: 1..32 */
 /*
+ * MESH's vcount word, bit 31 (BOUNDS): the RDC_MESH_BOUNDS_WORDS words at
+ * vbase are the model's box xmin ymin zmin xmax ymax zmax (15.16), the
+ * vertices follow; a box outside the view volume culls the mesh before a
+ * vertex is read.
+ */
+#define RDC_MESH_BOUNDS BIT(31)
+#define RDC_MESH_BOUNDS_WORDS 6u
+/*
  * Geometry engine cycles (one multiply-accumulate a cycle): a vertex
  * through the CTM and the view (21 MACs and the checks), its lighting
  * (normal through the cofactor matrix and normalised, then per light

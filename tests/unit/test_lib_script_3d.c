@@ -282,6 +282,41 @@ static void test_device_errors(void **state)
 	assert_int_equal(res.error_line, 1);
 }
 
+/*
+ * mesh ... bounds: the box before the vertices, the mesh drawn as
+ * without it, and a box outside culled.
+ */
+static void test_mesh_bounds(void **state)
+{
+	rdc_dev *dev = *state;
+	static const char model[] =
+		"view parallel vrp 0 0 0 vpn 0 0 1 vup 0 1 0 prp 0 0 5 "
+		"window -2 2 -1.25 1.25 front 2 back -2\n"
+		"viewport3 0 0 319 199\n"
+		"matrix identity\n"
+		"vertices 0x180000 -1.5 -1 -1 1.5 1 1 "
+		"-1.5 -1 0  1 -0.5 0  0 1 0 "
+		"-1 0.8 1  1.5 -1 -1  0.5 1 -1\n"
+		"indices 0x181000 0 1 2 3 4 5\n"
+		"fg #ffffff\n";
+	uint32_t empty, hz, hc;
+
+	assert_int_equal(run(dev, scene_setup), 0);
+	empty = screen_hash(dev);
+	assert_int_equal(run(dev, model), 0);
+	assert_int_equal(run(dev, "mesh 0x180018 6 0x181000 2\n"), 0);
+	hz = screen_hash(dev);
+	assert_int_not_equal(hz, empty);
+	assert_int_equal(run(dev, scene_setup), 0);
+	assert_int_equal(run(dev, model), 0);
+	assert_int_equal(run(dev, "translate 9 0 0\n"
+				  "mesh 0x180000 6 0x181000 2 bounds\n"),
+			 0);
+	assert_int_equal(reg(dev, RDC_REG_ERR_CODE), 0);
+	hc = screen_hash(dev);
+	assert_int_equal(hc, empty);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -292,6 +327,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_statement_errors,
 						dev_setup, dev_teardown),
 		cmocka_unit_test_setup_teardown(test_device_errors, dev_setup,
+						dev_teardown),
+		cmocka_unit_test_setup_teardown(test_mesh_bounds, dev_setup,
 						dev_teardown),
 	};
 

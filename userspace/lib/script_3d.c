@@ -196,8 +196,11 @@ int rdl_st_material(struct rdl *r, uint32_t op)
 	return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, 0, a, 4));
 }
 
-/* The RDC_MESH_* words from token i while they are flags; *next after. */
-static int rdl_mesh_flags(struct rdl *r, size_t i, bool normals, uint32_t *fl,
+/*
+ * The RDC_MESH_* words from token i while they are flags; *next after.
+ * mesh: MESH's own words too (normals, bounds), else PATCH's.
+ */
+static int rdl_mesh_flags(struct rdl *r, size_t i, bool mesh, uint32_t *fl,
 			  size_t *next)
 {
 	static const struct {
@@ -209,16 +212,18 @@ static int rdl_mesh_flags(struct rdl *r, size_t i, bool normals, uint32_t *fl,
 		  { "lit", RDC_MESH_LIT },
 		  { "gouraud", RDC_MESH_GOURAUD },
 		  { "two-sided", RDC_MESH_TWO_SIDED },
-		  { "sort", RDC_MESH_SORT } };
+		  { "sort", RDC_MESH_SORT },
+		  { "bounds", RDC_MESH_BOUNDS } };
+	size_t end = RDC_ARRAY_SIZE(f) - (mesh ? 0 : 1);
 
 	*fl = 0;
 	for (; i < r->ntok; i++) {
 		size_t k;
 
-		for (k = normals ? 0 : 1; k < RDC_ARRAY_SIZE(f); k++)
+		for (k = mesh ? 0 : 1; k < end; k++)
 			if (rdl_word(r, i, f[k].name))
 				break;
-		if (k == RDC_ARRAY_SIZE(f))
+		if (k == end)
 			break;
 		*fl |= f[k].bit;
 	}
@@ -228,7 +233,7 @@ static int rdl_mesh_flags(struct rdl *r, size_t i, bool normals, uint32_t *fl,
 
 /*
  * mesh VBASE VCOUNT IBASE TCOUNT [normals] [wire] [cull] [lit] [gouraud]
- *      [two-sided] [sort]
+ *      [two-sided] [sort] [bounds]
  */
 int rdl_st_mesh(struct rdl *r, uint32_t op)
 {
@@ -244,9 +249,12 @@ int rdl_st_mesh(struct rdl *r, uint32_t op)
 		return ret;
 	if (next != r->ntok)
 		return rdl_err(r, RDC_E_PARSE,
-			       "mesh: '%.40s' is not normals, "
-			       "wire, cull, lit, gouraud, two-sided or sort",
+			       "mesh: '%.40s' is not normals, wire, cull, lit, "
+			       "gouraud, two-sided, sort or bounds",
 			       r->tok[next].s);
+	/* bounds is a bit of the vcount word, not a flag */
+	a[1] |= fl & RDC_MESH_BOUNDS;
+	fl &= ~RDC_MESH_BOUNDS;
 	return rdl_encoded(r, op, rdc_batch_cmd(r->b, op, fl, a, 4));
 }
 
