@@ -86,8 +86,19 @@ static inline struct rdcdrm_device *rdcdrm_of_chip(struct rdc_kchip *chip)
 
 /* rdcdrm_kms.c */
 int rdcdrm_kms_init(struct rdcdrm_device *rd);
-extern const struct rdc_kchip_hooks rdcdrm_hooks;
 u32 rdcdrm_format_of(u32 fourcc);
+
+/* rdcdrm_vblank.c: vblank, events and CRCs from the simulated beam */
+extern const struct rdc_kchip_hooks rdcdrm_hooks;
+int rdcdrm_enable_vblank(struct drm_crtc *crtc);
+void rdcdrm_disable_vblank(struct drm_crtc *crtc);
+u32 rdcdrm_get_vblank_counter(struct drm_crtc *crtc);
+bool rdcdrm_get_vblank_timestamp(struct drm_crtc *crtc, int *max_error,
+				 ktime_t *vblank_time, bool in_vblank_irq);
+int rdcdrm_verify_crc_source(struct drm_crtc *crtc, const char *source,
+			     size_t *values_cnt);
+int rdcdrm_set_crc_source(struct drm_crtc *crtc, const char *source);
+const char *const *rdcdrm_get_crc_sources(struct drm_crtc *crtc, size_t *count);
 
 /* rdcdrm_uapi.c: the private ioctls */
 struct drm_file;

@@ -14,13 +14,8 @@
  * so it gets this commit's damage and the previous commit's (buffer age
  * two); a modeset or a new format uploads everything.
  *
- * vblank: the chip host calls rdcdrm_vblank at every simulated vblank,
- * once per frame even when pacing catches up several frames at once; it
- * hands DRM the vblank (drm_crtc_handle_vblank) and sends the pending
- * flip event, whose registers the chip latches at that same vblank.
- * DRM's counter follows the chip's frame count (get_vblank_counter) and
- * its timestamps are the wall times the paced clock maps the simulated
- * end of each vblank to (the next frame's first line).
+ * vblank, flip events and CRCs come from the simulated beam:
+ * rdcdrm_vblank.c.
  */
 #include <drm/drm_atomic.h>
 #include <drm/drm_atomic_helper.h>
@@ -55,8 +50,6 @@ static const u32 rdcdrm_primary_formats[] = {
 static const u32 rdcdrm_cursor_formats[] = {
 	DRM_FORMAT_ARGB8888,
 };
-
-static const char *const rdcdrm_crc_sources[] = { "auto" };
 
 /* The chip's format of a DRM fourcc, or RDC_FMT_COUNT: none. */
 u32 rdcdrm_format_of(u32 fourcc)
@@ -753,106 +746,6 @@ static void rdcdrm_crtc_flush(struct drm_crtc *crtc,
 		rdc_kchip_vsync(&rd->chip);
 }
 
-static int rdcdrm_enable_vblank(struct drm_crtc *crtc)
-{
-	return 0;
-}
-
-static void rdcdrm_disable_vblank(struct drm_crtc *crtc)
-{
-}
-
-/* The chip's frame count (DRM counts the difference). */
-static u32 rdcdrm_get_vblank_counter(struct drm_crtc *crtc)
-{
-	struct rdcdrm_device *rd = rdcdrm_of(crtc->dev);
-	unsigned long flags;
-	u32 n;
-
-	spin_lock_irqsave(&rd->vbl_lock, flags);
-	n = (u32)rd->vbl_frames;
-	spin_unlock_irqrestore(&rd->vbl_lock, flags);
-	return n;
-}
-
-/* When the frame after the last simulated vblank starts (wall time). */
-static bool rdcdrm_get_vblank_timestamp(struct drm_crtc *crtc, int *max_error,
-					ktime_t *vblank_time,
-					bool in_vblank_irq)
-{
-	struct rdcdrm_device *rd = rdcdrm_of(crtc->dev);
-	unsigned long flags;
-
-	spin_lock_irqsave(&rd->vbl_lock, flags);
-	*vblank_time = rd->vbl_time;
-	spin_unlock_irqrestore(&rd->vbl_lock, flags);
-	*max_error = 0;
-	return *vblank_time != 0;
-}
-
-/* ---- CRC: of every frame the chip scans out ------------------------------ */
-
-/* The chip's frame listener, chip lock held, after the vblank hook. */
-static void rdcdrm_frame(void *ctx, const u32 *xrgb, u32 width, u32 height,
-			 u64 frame_number)
-{
-	struct rdcdrm_device *rd = ctx;
-	u32 crc = rdc_kchip_crc(xrgb, (size_t)width * height);
-
-	if (rd->crtc_on)
-		drm_crtc_add_crc_entry(&rd->crtc, true,
-				       (u32)drm_crtc_vblank_count(&rd->crtc),
-				       &crc);
-}
-
-static int rdcdrm_verify_crc_source(struct drm_crtc *crtc, const char *source,
-				    size_t *values_cnt)
-{
-	if (source && *source && strcmp(source, "auto"))
-		return -EINVAL;
-	*values_cnt = 1;
-	return 0;
-}
-
-static int rdcdrm_set_crc_source(struct drm_crtc *crtc, const char *source)
-{
-	struct rdcdrm_device *rd = rdcdrm_of(crtc->dev);
-	bool on = source && *source;
-	size_t n;
-	int ret;
-
-	ret = rdcdrm_verify_crc_source(crtc, source, &n);
-	if (ret)
-		return ret;
-	rdc_kchip_lock(&rd->chip);
-	if (on == rd->crc_on) {
-		rdc_kchip_unlock(&rd->chip);
-		return 0;
-	}
-	rdc_kchip_unlock(&rd->chip);
-	/* the frames carry vblank numbers: vblanks on while CRCs are */
-	if (on) {
-		ret = drm_crtc_vblank_get(crtc);
-		if (ret)
-			return ret;
-	}
-	rdc_kchip_lock(&rd->chip);
-	rd->crc_on = on;
-	rdc_hw_set_frame_fn(rd->chip.hw, on ? rdcdrm_frame : NULL,
-			    on ? rd : NULL);
-	rdc_kchip_unlock(&rd->chip);
-	if (!on)
-		drm_crtc_vblank_put(crtc);
-	return 0;
-}
-
-static const char *const *rdcdrm_get_crc_sources(struct drm_crtc *crtc,
-						 size_t *count)
-{
-	*count = ARRAY_SIZE(rdcdrm_crc_sources);
-	return rdcdrm_crc_sources;
-}
-
 static const struct drm_crtc_helper_funcs rdcdrm_crtc_helpers = {
 	.mode_valid = rdcdrm_crtc_mode_valid,
 	.atomic_check = rdcdrm_crtc_check,
@@ -875,63 +768,6 @@ static const struct drm_crtc_funcs rdcdrm_crtc_funcs = {
 	.set_crc_source = rdcdrm_set_crc_source,
 	.verify_crc_source = rdcdrm_verify_crc_source,
 	.get_crc_sources = rdcdrm_get_crc_sources,
-};
-
-/* ---- The chip's vblank hook ---------------------------------------------- */
-
-/*
- * DRM's vblank timestamp is when the frame after the vblank starts to
- * scan out: the vblank's own time plus its lines, in the timing in force.
- */
-static ktime_t rdcdrm_scanout_start(struct rdc_kchip *chip, u64 sim,
-				    ktime_t wall)
-{
-	u32 hz = rdc_hw_core_hz(chip->hw);
-	struct rdc_timing t;
-	u64 cycles;
-
-	rdc_hw_timing(chip->hw, &t);
-	if (!t.pixclk_khz || t.v_total <= t.v_display)
-		return wall;
-	cycles = div_u64((u64)(t.v_total - t.v_display) * t.h_total * hz,
-			 t.pixclk_khz * 1000);
-	if (chip->stepped)
-		return ktime_add_ns(wall,
-				    mul_u64_u32_div(cycles, NSEC_PER_SEC, hz));
-	return rdc_kchip_wall_of_locked(chip, sim + cycles);
-}
-
-/*
- * Chip lock held, inside the simulation, once per frame.  The registers a
- * commit wrote before this vblank are latched at it: its event goes now.
- */
-static void rdcdrm_vblank(struct rdc_kchip *chip, u64 frame, u64 sim,
-			  ktime_t wall)
-{
-	struct rdcdrm_device *rd = rdcdrm_of_chip(chip);
-	struct drm_pending_vblank_event *ev = rd->event;
-	ktime_t ts = rdcdrm_scanout_start(chip, sim, wall);
-	unsigned long flags;
-
-	spin_lock_irqsave(&rd->vbl_lock, flags);
-	rd->vbl_frames = frame;
-	rd->vbl_time = ts;
-	spin_unlock_irqrestore(&rd->vbl_lock, flags);
-	if (!rd->crtc_on)
-		return;
-	drm_crtc_handle_vblank(&rd->crtc);
-	if (!ev)
-		return;
-	rd->event = NULL;
-	rd->flips++;
-	spin_lock_irqsave(&rd->drm.event_lock, flags);
-	drm_crtc_send_vblank_event(&rd->crtc, ev);
-	spin_unlock_irqrestore(&rd->drm.event_lock, flags);
-	drm_crtc_vblank_put(&rd->crtc);
-}
-
-const struct rdc_kchip_hooks rdcdrm_hooks = {
-	.vblank = rdcdrm_vblank,
 };
 
 /* ---- Mode config --------------------------------------------------------- */
