@@ -292,8 +292,7 @@ static void as_scanned(struct hw_fx *f, bool on_demand)
 						       127));
 				rdc_hw_write(hw, RDC_REG_IRQ_STATUS,
 					     RDC_IRQ_ALL);
-				rdc_hw_run_until(hw,
-						 rdc_port_next_vblank(hw));
+				rdc_hw_run_until(hw, rdc_port_next_vblank(hw));
 				fr = rdc_hw_frame(hw, &fw, &fh);
 				assert_non_null(fr);
 				assert_int_equal(strobed(hw),
