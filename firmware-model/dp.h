@@ -193,6 +193,19 @@ struct rdc_dp {
 	struct rdc_dp_v3 v3[RDC_MESH_MAX_VERTS];
 	uint16_t v3_idx[3 * RDC_MESH_MAX_TRIS];
 	uint32_t v3_edge[3 * RDC_MESH_MAX_TRIS];
+	/*
+	 * MESH with RDC_MESH_SCANLINE (mesh.c): the projected triangles in
+	 * drawing order, chained per first row (from poly_et), and the
+	 * active ones of the row being resolved
+	 */
+	struct rdc_dp_stri {
+		int32_t x[3], y[3];
+		uint32_t col[3];
+		uint16_t z[3];
+		uint16_t next;
+		int32_t yend; /* first row below it */
+	} v3_scan[RDC_MESH_SCAN_MAX_TRIS];
+	uint16_t v3_act[RDC_MESH_SCAN_MAX_TRIS];
 	/* MESHes culled whole by RDC_MESH_BOUNDS since the last reset */
 	uint32_t meshes_culled;
 };

@@ -252,6 +252,29 @@ void dp_3d_reset(struct rdc_dp *dp);
 void dp_tri_draw(struct rdc_dp *dp, const int32_t *x, const int32_t *y,
 		 const uint32_t *col, const uint32_t *z, bool gouraud);
 bool dp_zbuf_ready(const struct rdc_dp *dp);
+/*
+ * A triangle's interpolation as dp_tri_draw fills it: dp_tri_setup
+ * (false: zero area, no pixel), then the depth and the DST pixel value
+ * dp_tri_draw gives pixel (px, py) (MESH's scan-line mode, mesh.c).
+ */
+#define DP_TRI_VERTS  3
+#define DP_TRI_CH_MAX 4 /* colour channels + depth */
+struct dp_tri {
+	int32_t x[DP_TRI_VERTS], y[DP_TRI_VERTS];
+	int64_t area2;
+	unsigned int nch; /* channels interpolated: colour ones, then z */
+	unsigned int shift[DP_TRI_CH_MAX - 1], width[DP_TRI_CH_MAX - 1];
+	int64_t a0[DP_TRI_CH_MAX], d1[DP_TRI_CH_MAX], d2[DP_TRI_CH_MAX];
+	int64_t lo[DP_TRI_CH_MAX], hi[DP_TRI_CH_MAX];
+	bool gouraud, ztest, zwrite;
+	uint32_t flat;
+};
+
+bool dp_tri_setup(const struct rdc_dp *dp, const int32_t *x, const int32_t *y,
+		  const uint32_t *col, const uint32_t *z, bool gouraud,
+		  struct dp_tri *t);
+uint32_t dp_tri_depth(const struct dp_tri *t, int32_t px, int32_t py);
+uint32_t dp_tri_pixel(const struct dp_tri *t, int32_t px, int32_t py);
 
 /* Words a row of w pixels of `fmt` occupies, padded to a word. */
 static inline uint32_t rdc_dp_words_per_row(unsigned int fmt, uint32_t w)

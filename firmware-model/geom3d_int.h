@@ -80,9 +80,11 @@ uint32_t g3_light_cycles(const struct rdc_dp *dp);
 
 /*
  * Draw triangles dp->v3_idx[0 .. 3 * ntri) of the vertex cache
- * dp->v3[0 .. nvert) with the RDC_MESH_* flags fl (mesh.c).
+ * dp->v3[0 .. nvert) with the RDC_MESH_* flags fl (mesh.c); RDC_ERR_RANGE
+ * (nothing drawn) when RDC_MESH_SCANLINE gathers more than
+ * RDC_MESH_SCAN_MAX_TRIS triangles.
  */
-void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri);
+uint32_t g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri);
 /* The segment between two cached vertices in FG (mesh.c). */
 void g3_draw_segment(struct rdc_dp *dp, const struct rdc_dp_v3 *a,
 		     const struct rdc_dp_v3 *b, bool skip_first);

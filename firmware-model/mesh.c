@@ -13,6 +13,16 @@
  * fills: a triangle counter-clockwise on the screen (y up) is a front
  * face.  Clipped vertices are computed from the inside end of each edge,
  * so triangles sharing an edge meet on the same pixels.
+ *
+ * RDC_MESH_SCANLINE fills without a depth buffer (Foley, van Dam et al.,
+ * 15.6): the projected triangles go into an edge table by first row;
+ * each row keeps the active triangles, takes each one's span from its
+ * two edges crossing the row (the split points B of poly.c, so the
+ * coverage is TRIANGLE's), and resolves the row in an on-chip row of
+ * depths, a triangle's depth interpolated along its span exactly as
+ * TRIANGLE does, the nearest winning and the first drawn on a tie, as a
+ * depth buffer cleared to 0xffff with TEST and WRITE would.  Each pixel
+ * is then written once, a run of covered pixels a span.
  */
 #define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "geom3d_int.h"
@@ -212,19 +222,181 @@ static void depth_sort(struct rdc_dp *dp, uint32_t ntri)
 	rdc_port_compute(dp->hw, ntri * levels * RDC_T_SORT3);
 }
 
-void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
+#define SCAN_NONE 0xffffu
+#define SCAN_BACK 0xffffu /* the depth a pixel must be nearer than */
+
+/* Add one fan triangle to the scan-line set; false when it is full. */
+static bool scan_add(struct rdc_dp *dp, uint32_t *ns, const int32_t *x,
+		     const int32_t *y, const uint32_t *col, const uint32_t *z)
+{
+	struct rdc_dp_stri *s;
+	int i;
+
+	if (*ns >= RDC_MESH_SCAN_MAX_TRIS)
+		return false;
+	s = &dp->v3_scan[(*ns)++];
+	for (i = 0; i < 3; i++) {
+		s->x[i] = x[i];
+		s->y[i] = y[i];
+		s->col[i] = col[i];
+		s->z[i] = (uint16_t)z[i];
+	}
+	return true;
+}
+
+/*
+ * Pixels [*xa, *xb] of row py the triangle covers: TRIANGLE's rule, the
+ * split B(py) of each of the two edges crossing the row (poly.c); false
+ * when none.
+ */
+static bool scan_span(const struct rdc_dp_stri *s, int32_t py, int32_t *xa,
+		      int32_t *xb)
+{
+	int64_t b[2] = { 0, 0 };
+	int i, n = 0;
+
+	for (i = 0; i < 3 && n < 2; i++) {
+		int64_t x0 = s->x[i], y0 = s->y[i];
+		int64_t x1 = s->x[(i + 1) % 3], y1 = s->y[(i + 1) % 3], t;
+
+		if (y0 > y1) {
+			t = x0, x0 = x1, x1 = t;
+			t = y0, y0 = y1, y1 = t;
+		}
+		if (py < y0 || py >= y1)
+			continue;
+		b[n++] = dp_div_floor((2 * py + 1 - 2 * y0) * (x1 - x0) +
+					      (2 * x0 - 1) * (y1 - y0) +
+					      2 * (y1 - y0) - 1,
+				      2 * (y1 - y0));
+	}
+	if (n < 2 || b[0] == b[1])
+		return false;
+	*xa = (int32_t)RDC_MIN(b[0], b[1]);
+	*xb = (int32_t)RDC_MAX(b[0], b[1]) - 1;
+	return true;
+}
+
+/*
+ * Resolve row y, columns [cx0, cx1) (at most RDC_DP_CHUNK), among the
+ * na active triangles, and write its covered runs.
+ */
+static void scan_row(struct rdc_dp *dp, bool gouraud, int32_t y, int32_t cx0,
+		     int32_t cx1, uint32_t na)
+{
+	uint32_t *rz = dp->flood_row[1], *rid = dp->flood_row[2];
+	uint32_t n = (uint32_t)(cx1 - cx0), i, k;
+	struct dp_tri t;
+	int32_t x, xa, xb;
+
+	for (i = 0; i < n; i++) {
+		rz[i] = SCAN_BACK;
+		rid[i] = SCAN_NONE;
+	}
+	for (k = 0; k < na; k++) {
+		uint32_t id = dp->v3_act[k];
+		const struct rdc_dp_stri *s = &dp->v3_scan[id];
+		uint32_t z3[3] = { s->z[0], s->z[1], s->z[2] };
+
+		if (!scan_span(s, y, &xa, &xb))
+			continue;
+		xa = RDC_MAX(xa, cx0);
+		xb = RDC_MIN(xb, cx1 - 1);
+		if (xa > xb ||
+		    !dp_tri_setup(dp, s->x, s->y, s->col, z3, gouraud, &t))
+			continue;
+		for (x = xa; x <= xb; x++) {
+			uint32_t z = dp_tri_depth(&t, x, y),
+				 j = (uint32_t)(x - cx0);
+
+			if (z < rz[j] || (z == rz[j] && id < rid[j])) {
+				rz[j] = z;
+				rid[j] = id;
+			}
+		}
+	}
+	/* each maximal run of covered pixels is one DST span */
+	for (i = 0; i < n;) {
+		uint32_t r = i, last = SCAN_NONE;
+
+		if (rid[i] == SCAN_NONE) {
+			i++;
+			continue;
+		}
+		while (r < n && rid[r] != SCAN_NONE) {
+			if (rid[r] != last) {
+				const struct rdc_dp_stri *s =
+					&dp->v3_scan[rid[r]];
+				uint32_t z3[3] = { s->z[0], s->z[1], s->z[2] };
+
+				last = rid[r];
+				dp_tri_setup(dp, s->x, s->y, s->col, z3,
+					     gouraud, &t);
+			}
+			dp->px[r - i] = dp_tri_pixel(&t, cx0 + (int32_t)r, y);
+			r++;
+		}
+		rdc_dp_span_px(dp, y, cx0 + (int32_t)i, r - i, 0, dp->px, NULL);
+		i = r;
+	}
+}
+
+/* Draw the ns gathered triangles a scan line at a time. */
+static void scan_draw(struct rdc_dp *dp, bool gouraud, uint32_t ns)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	uint32_t i, k, j, na = 0;
+	int32_t y, cx;
+
+	if (c.x0 >= c.x1 || c.y0 >= c.y1 || !ns)
+		return;
+	for (i = 0; i < (uint32_t)(c.y1 - c.y0); i++)
+		dp->poly_et[i] = SCAN_NONE;
+	/* the edge table: each triangle in the bucket of its first row */
+	for (k = ns; k-- > 0;) {
+		struct rdc_dp_stri *s = &dp->v3_scan[k];
+		int32_t top = RDC_MIN(RDC_MIN(s->y[0], s->y[1]), s->y[2]);
+
+		s->yend = RDC_MAX(RDC_MAX(s->y[0], s->y[1]), s->y[2]);
+		top = RDC_MAX(top, c.y0);
+		if (top >= RDC_MIN(s->yend, c.y1))
+			continue;
+		s->next = dp->poly_et[top - c.y0];
+		dp->poly_et[top - c.y0] = (uint16_t)k;
+	}
+	for (y = c.y0; y < c.y1; y++) {
+		/* new triangles in, finished ones out */
+		for (k = dp->poly_et[y - c.y0]; k != SCAN_NONE;
+		     k = dp->v3_scan[k].next)
+			dp->v3_act[na++] = (uint16_t)k;
+		for (k = 0, j = 0; k < na; k++)
+			if (dp->v3_scan[dp->v3_act[k]].yend > y)
+				dp->v3_act[j++] = dp->v3_act[k];
+		na = j;
+		if (!na)
+			continue;
+		for (cx = c.x0; cx < c.x1; cx += (int32_t)RDC_DP_CHUNK)
+			scan_row(dp, gouraud, y, cx,
+				 (int32_t)RDC_MIN((int64_t)cx + RDC_DP_CHUNK,
+						  (int64_t)c.x1),
+				 na);
+	}
+}
+
+uint32_t g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 {
 	bool wire = fl & RDC_MESH_WIRE, cull = fl & RDC_MESH_CULL;
+	bool scan = !wire && (fl & RDC_MESH_SCANLINE);
 	bool lit = fl & RDC_MESH_LIT, gouraud = lit && (fl & RDC_MESH_GOURAUD);
 	bool two = fl & RDC_MESH_TWO_SIDED;
 	int32_t x[G3_POLY_MAX], y[G3_POLY_MAX];
 	uint32_t z[G3_POLY_MAX], rgb[G3_POLY_MAX], col[G3_POLY_MAX];
 	bool sort = !wire && (fl & RDC_MESH_SORT);
-	uint32_t k, t, i, n, nedge = 0;
+	uint32_t k, t, i, n, nedge = 0, ns = 0;
 
 	/* every vertex outside one clip plane: nothing to set up */
 	if (!g3_any_inside(dp, ntri))
-		return;
+		return RDC_ERR_NONE;
 	if (sort)
 		depth_sort(dp, ntri);
 	for (k = 0; k < ntri; k++) {
@@ -270,11 +442,16 @@ void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 			uint32_t tz[3] = { z[0], z[i], z[i + 1] };
 			uint32_t tc[3] = { col[0], col[i], col[i + 1] };
 
-			dp_tri_draw(dp, tx, ty, tc, tz, gouraud);
+			if (!scan)
+				dp_tri_draw(dp, tx, ty, tc, tz, gouraud);
+			else if (!scan_add(dp, &ns, tx, ty, tc, tz))
+				return RDC_ERR_RANGE;
 		}
 	}
+	if (scan)
+		scan_draw(dp, gouraud, ns);
 	if (!wire)
-		return;
+		return RDC_ERR_NONE;
 	edge_sort(dp->v3_edge, nedge);
 	for (i = 0; i < nedge; i++) {
 		uint32_t e = dp->v3_edge[i];
@@ -284,6 +461,7 @@ void g3_draw_tris(struct rdc_dp *dp, uint32_t fl, uint32_t ntri)
 		g3_draw_segment(dp, &dp->v3[e >> 16], &dp->v3[e & 0xffffu],
 				false);
 	}
+	return RDC_ERR_NONE;
 }
 
 /*
@@ -328,7 +506,8 @@ uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 				 RDC_MESH_BOUNDS_WORDS * sizeof(uint32_t) :
 				 0;
 
-	if (fl & ~RDC_MESH_FLAGS)
+	if (fl & ~RDC_MESH_CMD_FLAGS ||
+	    (fl & RDC_MESH_SCANLINE && fl & RDC_MESH_WIRE))
 		return RDC_ERR_ARG;
 	/* lighting per vertex needs the vertices' normals */
 	if (vlit && !(fl & RDC_MESH_NORMALS))
@@ -340,7 +519,7 @@ uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 		    hw->vram_size ||
 	    (uint64_t)ibase + (uint64_t)tcount * 3 * IDX_BYTES > hw->vram_size)
 		return RDC_ERR_RANGE;
-	if (!(fl & RDC_MESH_WIRE) && !dp_zbuf_ready(dp))
+	if (!(fl & (RDC_MESH_WIRE | RDC_MESH_SCANLINE)) && !dp_zbuf_ready(dp))
 		return RDC_ERR_SURFACE;
 	if (vskip) {
 		uint32_t err;
@@ -388,6 +567,5 @@ uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 	}
 	rdc_port_compute(hw, vcount * (RDC_T_VERTEX3 +
 				       (vlit ? g3_light_cycles(dp) : 0)));
-	g3_draw_tris(dp, fl, tcount);
-	return RDC_ERR_NONE;
+	return g3_draw_tris(dp, fl, tcount);
 }

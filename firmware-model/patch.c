@@ -204,8 +204,7 @@ uint32_t g3_cmd_patch(struct rdc_dp *dp, const uint32_t *a)
 			dp->v3_idx[k++] = k10;
 		}
 	}
-	g3_draw_tris(dp, fl | RDC_MESH_NORMALS, 2 * n * n);
-	return RDC_ERR_NONE;
+	return g3_draw_tris(dp, fl | RDC_MESH_NORMALS, 2 * n * n);
 }
 
 uint32_t g3_cmd_bezier3(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)

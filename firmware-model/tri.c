@@ -29,21 +29,11 @@
 #define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "dp_int.h"
 
-#define TRI_VERTS 3
+#define TRI_VERTS DP_TRI_VERTS
 #define TRI_WORDS 3 /* xy, colour, z */
 #define Z_MAX	  0xffffu
 #define Z_BYTES	  2u
-#define CH_MAX	  4 /* colour channels + depth */
-
-struct tri {
-	int32_t x[TRI_VERTS], y[TRI_VERTS];
-	int64_t area2;
-	unsigned int nch; /* channels interpolated: colour ones, then z */
-	unsigned int shift[CH_MAX - 1], width[CH_MAX - 1];
-	int64_t a0[CH_MAX], d1[CH_MAX], d2[CH_MAX], lo[CH_MAX], hi[CH_MAX];
-	bool gouraud, ztest, zwrite;
-	uint32_t flat;
-};
+#define CH_MAX	  DP_TRI_CH_MAX
 
 static bool zbuf_fits(const struct rdc_dp *dp, uint32_t base, uint32_t stride)
 {
@@ -127,7 +117,7 @@ static unsigned int channels(unsigned int fmt, unsigned int *shift,
 }
 
 /* Channel k's plane numerator at the centre of pixel (px, py). */
-static int64_t plane_num(const struct tri *t, unsigned int k, int32_t px,
+static int64_t plane_num(const struct dp_tri *t, unsigned int k, int32_t px,
 			 int32_t py)
 {
 	int64_t X = 2 * (int64_t)px + 1 - 2 * (int64_t)t->x[0];
@@ -140,7 +130,7 @@ static int64_t plane_num(const struct tri *t, unsigned int k, int32_t px,
 	return t->d1[k] * (X * ey2 - ex2 * Y) + t->d2[k] * (ex1 * Y - X * ey1);
 }
 
-static int64_t plane_step(const struct tri *t, unsigned int k)
+static int64_t plane_step(const struct dp_tri *t, unsigned int k)
 {
 	int64_t ey1 = (int64_t)t->y[1] - t->y[0];
 	int64_t ey2 = (int64_t)t->y[2] - t->y[0];
@@ -151,7 +141,7 @@ static int64_t plane_step(const struct tri *t, unsigned int k)
 static void tri_span(struct rdc_dp *dp, int32_t y, int32_t xa, int32_t xb,
 		     void *ctx)
 {
-	const struct tri *t = ctx;
+	const struct dp_tri *t = ctx;
 	const struct rdc_dp_state *st = &dp->st;
 	uint32_t *zv = dp->flood_row[0];
 	int64_t num[CH_MAX], step[CH_MAX];
@@ -229,40 +219,84 @@ bool dp_zbuf_ready(const struct rdc_dp *dp)
 void dp_tri_draw(struct rdc_dp *dp, const int32_t *x, const int32_t *y,
 		 const uint32_t *col, const uint32_t *z, bool gouraud)
 {
-	const struct rdc_dp_state *st = &dp->st;
-	struct tri t = { .gouraud = gouraud };
 	int32_t *xy = dp->poly_xy;
+	struct dp_tri t;
+	unsigned int i;
+
+	if (!dp_tri_setup(dp, x, y, col, z, gouraud, &t))
+		return; /* no pixel centre inside */
+	for (i = 0; i < TRI_VERTS; i++) {
+		xy[2 * i] = x[i];
+		xy[2 * i + 1] = y[i];
+	}
+	dp_poly_scan(dp, xy, TRI_VERTS, false, tri_span, &t);
+}
+
+bool dp_tri_setup(const struct rdc_dp *dp, const int32_t *x, const int32_t *y,
+		  const uint32_t *col, const uint32_t *z, bool gouraud,
+		  struct dp_tri *t)
+{
+	const struct rdc_dp_state *st = &dp->st;
 	unsigned int k, i;
 
 	for (i = 0; i < TRI_VERTS; i++) {
-		t.x[i] = xy[2 * i] = x[i];
-		t.y[i] = xy[2 * i + 1] = y[i];
+		t->x[i] = x[i];
+		t->y[i] = y[i];
 	}
-	t.ztest = st->z_flags & RDC_Z_TEST;
-	t.zwrite = st->z_flags & RDC_Z_WRITE;
-	t.flat = col[0];
-	t.area2 = ((int64_t)t.x[1] - t.x[0]) * ((int64_t)t.y[2] - t.y[0]) -
-		  ((int64_t)t.x[2] - t.x[0]) * ((int64_t)t.y[1] - t.y[0]);
-	if (!t.area2)
-		return; /* no pixel centre inside */
-	t.nch = channels(st->dst.format, t.shift, t.width) + 1;
-	for (k = 0; k < t.nch; k++) {
+	t->gouraud = gouraud;
+	t->ztest = st->z_flags & RDC_Z_TEST;
+	t->zwrite = st->z_flags & RDC_Z_WRITE;
+	t->flat = col[0];
+	t->area2 = ((int64_t)t->x[1] - t->x[0]) * ((int64_t)t->y[2] - t->y[0]) -
+		   ((int64_t)t->x[2] - t->x[0]) * ((int64_t)t->y[1] - t->y[0]);
+	if (!t->area2)
+		return false;
+	t->nch = channels(st->dst.format, t->shift, t->width) + 1;
+	for (k = 0; k < t->nch; k++) {
 		int64_t v[TRI_VERTS];
 
 		for (i = 0; i < TRI_VERTS; i++) {
-			if (k + 1 == t.nch)
+			if (k + 1 == t->nch)
 				v[i] = z[i];
 			else
-				v[i] = (col[i] >> t.shift[k]) &
-				       ((1u << t.width[k]) - 1);
+				v[i] = (col[i] >> t->shift[k]) &
+				       ((1u << t->width[k]) - 1);
 		}
-		t.a0[k] = v[0];
-		t.d1[k] = v[1] - v[0];
-		t.d2[k] = v[2] - v[0];
-		t.lo[k] = RDC_MIN(RDC_MIN(v[0], v[1]), v[2]);
-		t.hi[k] = RDC_MAX(RDC_MAX(v[0], v[1]), v[2]);
+		t->a0[k] = v[0];
+		t->d1[k] = v[1] - v[0];
+		t->d2[k] = v[2] - v[0];
+		t->lo[k] = RDC_MIN(RDC_MIN(v[0], v[1]), v[2]);
+		t->hi[k] = RDC_MAX(RDC_MAX(v[0], v[1]), v[2]);
 	}
-	dp_poly_scan(dp, xy, TRI_VERTS, false, tri_span, &t);
+	return true;
+}
+
+/* The same values tri_span steps to, taken at one pixel. */
+static int64_t sample(const struct dp_tri *t, unsigned int k, int32_t px,
+		      int32_t py)
+{
+	int64_t v =
+		t->a0[k] + dp_div_round(plane_num(t, k, px, py), 2 * t->area2);
+
+	v = RDC_MAX(v, t->lo[k]);
+	return RDC_MIN(v, t->hi[k]);
+}
+
+uint32_t dp_tri_depth(const struct dp_tri *t, int32_t px, int32_t py)
+{
+	return (uint32_t)sample(t, t->nch - 1, px, py);
+}
+
+uint32_t dp_tri_pixel(const struct dp_tri *t, int32_t px, int32_t py)
+{
+	uint32_t c = 0;
+	unsigned int k;
+
+	if (!t->gouraud)
+		return t->flat;
+	for (k = 0; k + 1 < t->nch; k++)
+		c |= (uint32_t)sample(t, k, px, py) << t->shift[k];
+	return c;
 }
 
 uint32_t dp_cmd_triangle(struct rdc_dp *dp, uint32_t flags, const uint32_t *a)

@@ -820,6 +820,14 @@ enum rdc_axis { RDC_AXIS_X = 0, RDC_AXIS_Y = 1, RDC_AXIS_Z = 2 };
 #define RDC_MESH_BOUNDS BIT(31)
 #define RDC_MESH_BOUNDS_WORDS 6u
 /*
+ * MESH only (PATCH's mode word keeps RDC_MESH_FLAGS): filled, visibility
+ * resolved a scan line at a time, no depth buffer; at most
+ * RDC_MESH_SCAN_MAX_TRIS triangles after clipping.
+ */
+#define RDC_MESH_SCANLINE BIT(7)
+#define RDC_MESH_CMD_FLAGS GENMASK(7, 0)
+#define RDC_MESH_SCAN_MAX_TRIS 4096u
+/*
  * Geometry engine cycles (one multiply-accumulate a cycle): a vertex
  * through the CTM and the view (21 MACs and the checks), its lighting
  * (normal through the cofactor matrix and normalised, then per light

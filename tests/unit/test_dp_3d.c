@@ -1270,10 +1270,10 @@ static void test_bad_input(void **state)
 	tdp_cmd(t, RDC_OP_MESH, 0, 4,
 		(const uint32_t[]){ VBASE + 2, 3, IBASE, 1 });
 	expect_err(t, RDC_ERR_RANGE);
-	/* lit Gouraud without normals; unknown flags */
+	/* lit Gouraud without normals; the scan-line mode in a wireframe */
 	mesh(t, RDC_MESH_LIT | RDC_MESH_GOURAUD, 3, 1);
 	expect_err(t, RDC_ERR_ARG);
-	mesh(t, 0x80, 3, 1);
+	mesh(t, RDC_MESH_SCANLINE | RDC_MESH_WIRE, 3, 1);
 	expect_err(t, RDC_ERR_ARG);
 	/* a buffer exactly at the end of VRAM is fine */
 	memcpy(t->vram + TDP_VRAM_SIZE - 36, t->vram + VBASE, 36);

@@ -283,10 +283,10 @@ static void test_device_errors(void **state)
 }
 
 /*
- * mesh ... bounds: the box before the vertices, the mesh drawn as
- * without it, and a box outside culled.
+ * mesh ... scanline bounds: the box before the vertices, the scan-line
+ * mode giving the depth buffer's picture, and a box outside culled.
  */
-static void test_mesh_bounds(void **state)
+static void test_mesh_scanline_bounds(void **state)
 {
 	rdc_dev *dev = *state;
 	static const char model[] =
@@ -299,7 +299,7 @@ static void test_mesh_bounds(void **state)
 		"-1 0.8 1  1.5 -1 -1  0.5 1 -1\n"
 		"indices 0x181000 0 1 2 3 4 5\n"
 		"fg #ffffff\n";
-	uint32_t empty, hz, hc;
+	uint32_t empty, hz, hs, hc;
 
 	assert_int_equal(run(dev, scene_setup), 0);
 	empty = screen_hash(dev);
@@ -307,6 +307,15 @@ static void test_mesh_bounds(void **state)
 	assert_int_equal(run(dev, "mesh 0x180018 6 0x181000 2\n"), 0);
 	hz = screen_hash(dev);
 	assert_int_not_equal(hz, empty);
+	assert_int_equal(run(dev, scene_setup), 0);
+	assert_int_equal(run(dev, model), 0);
+	assert_int_equal(run(dev,
+			     "zbuf off\n"
+			     "mesh 0x180000 6 0x181000 2 scanline bounds\n"),
+			 0);
+	assert_int_equal(reg(dev, RDC_REG_ERR_CODE), 0);
+	hs = screen_hash(dev);
+	assert_int_equal(hs, hz);
 	assert_int_equal(run(dev, scene_setup), 0);
 	assert_int_equal(run(dev, model), 0);
 	assert_int_equal(run(dev, "translate 9 0 0\n"
@@ -328,8 +337,8 @@ int main(void)
 						dev_setup, dev_teardown),
 		cmocka_unit_test_setup_teardown(test_device_errors, dev_setup,
 						dev_teardown),
-		cmocka_unit_test_setup_teardown(test_mesh_bounds, dev_setup,
-						dev_teardown),
+		cmocka_unit_test_setup_teardown(test_mesh_scanline_bounds,
+						dev_setup, dev_teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

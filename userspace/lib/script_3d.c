@@ -198,7 +198,7 @@ int rdl_st_material(struct rdl *r, uint32_t op)
 
 /*
  * The RDC_MESH_* words from token i while they are flags; *next after.
- * mesh: MESH's own words too (normals, bounds), else PATCH's.
+ * mesh: MESH's own words too (normals, scanline, bounds), else PATCH's.
  */
 static int rdl_mesh_flags(struct rdl *r, size_t i, bool mesh, uint32_t *fl,
 			  size_t *next)
@@ -213,8 +213,9 @@ static int rdl_mesh_flags(struct rdl *r, size_t i, bool mesh, uint32_t *fl,
 		  { "gouraud", RDC_MESH_GOURAUD },
 		  { "two-sided", RDC_MESH_TWO_SIDED },
 		  { "sort", RDC_MESH_SORT },
+		  { "scanline", RDC_MESH_SCANLINE },
 		  { "bounds", RDC_MESH_BOUNDS } };
-	size_t end = RDC_ARRAY_SIZE(f) - (mesh ? 0 : 1);
+	size_t end = RDC_ARRAY_SIZE(f) - (mesh ? 0 : 2);
 
 	*fl = 0;
 	for (; i < r->ntok; i++) {
@@ -233,7 +234,7 @@ static int rdl_mesh_flags(struct rdl *r, size_t i, bool mesh, uint32_t *fl,
 
 /*
  * mesh VBASE VCOUNT IBASE TCOUNT [normals] [wire] [cull] [lit] [gouraud]
- *      [two-sided] [sort] [bounds]
+ *      [two-sided] [sort] [scanline] [bounds]
  */
 int rdl_st_mesh(struct rdl *r, uint32_t op)
 {
@@ -250,7 +251,7 @@ int rdl_st_mesh(struct rdl *r, uint32_t op)
 	if (next != r->ntok)
 		return rdl_err(r, RDC_E_PARSE,
 			       "mesh: '%.40s' is not normals, wire, cull, lit, "
-			       "gouraud, two-sided, sort or bounds",
+			       "gouraud, two-sided, sort, scanline or bounds",
 			       r->tok[next].s);
 	/* bounds is a bit of the vcount word, not a flag */
 	a[1] |= fl & RDC_MESH_BOUNDS;
