@@ -171,6 +171,12 @@ void rdc_crtc_stop(struct rdc_hw *hw);
 int rdc_crtc_next_fetches(const struct rdc_hw *hw);
 uint32_t rdc_crtc_status(struct rdc_hw *hw);
 uint32_t rdc_crtc_raster_status(struct rdc_hw *hw);
+/* raster.c: line n starts at `when` and the list waits for it: run it. */
+void rdc_raster_run(struct rdc_hw *hw, uint32_t n, uint64_t when);
+/* crtc.c: convert the lines of buffers `bufs` (bit 0, 1) that wait. */
+void rdc_scan_convert(struct rdc_hw *hw, unsigned int bufs);
+/* A line the raster list waits for that never comes (rl_wait). */
+#define RDC_NEVER_LINE 0xffffffffu
 /* A host write of LPEN_POS or LPEN_CTRL. */
 void rdc_crtc_lpen_write(struct rdc_hw *hw, uint32_t reg, uint32_t val);
 
