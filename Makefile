@@ -888,7 +888,7 @@ MCU_CORE_OBJS := $(patsubst %.c,$(MCU_DIR)/%.o,$(CORE_SRCS))
 MCU_OBJS := $(MCU_CORE_OBJS) $(MCU_DIR)/mcu_scenes.o \
 	$(patsubst %,$(MCU_DIR)/mcu/%.o,replay main startup string)
 # What the core may leave to the MCU's runtime: the string functions
-# rdc_port.h maps to, libgcc's integer division, shifts and bit counts.
+# rdc_base.h maps to, libgcc's integer division, shifts and bit counts.
 MCU_CORE_EXTERNS := memcpy|memmove|memset|__aeabi_(u?ldivmod|u?idiv|u?idivmod|llsl|llsr|lasr|lmul|u?lcmp)|__(clz|ctz|popcount|ffs|parity|bswap)[sd]i2
 MCU_NO_FLOAT := ^__aeabi_([fd]|u?[il]2[fd])|^__(fix|float|extend|trunc)|^__[a-z]+[sdtx]f[0-9]$$|^(malloc|calloc|realloc|free)$$
 
@@ -1001,7 +1001,7 @@ checkpatch:
 			'*/scripts/spelling.txt' '*/scripts/const_structs.checkpatch'; }
 	perl $(CHECKPATCH) --no-tree --terse --show-types -f Kbuild \
 		$(filter-out driver/rdcfb_compat.h driver/rdcdrm_compat.h,$(wildcard driver/*.[ch])) \
-		$(filter-out hw-sim/rdc_port.h,$(wildcard \
+		$(filter-out hw-sim/rdc_base.h,$(wildcard \
 		hw-sim/*.[ch] firmware-model/*.[ch]))
 	@# the kernel versions the module builds on are told apart here
 	perl $(CHECKPATCH) --no-tree --terse --show-types -f \
@@ -1010,7 +1010,7 @@ checkpatch:
 	@# the user-space branch spells out what the kernel's headers give
 	perl $(CHECKPATCH) --no-tree --terse --show-types -f \
 		--ignore PREFER_DEFINED_ATTRIBUTE_MACRO,COMPLEX_MACRO \
-		hw-sim/rdc_port.h
+		hw-sim/rdc_base.h
 
 # The layout of every C file is .clang-format's (see its comment).  Other
 # clang-format versions than Debian 12's 14 lay some constructs out

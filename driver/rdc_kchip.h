@@ -26,7 +26,7 @@
 
 #include "rdc_chip.h"
 #include "rdc_dp_host.h"
-#include "rdc_port.h"
+#include "rdc_base.h"
 #include "rdc_regs.h"
 #include "rdcfb_ioctl.h"
 #include "rdcfb_validate.h"

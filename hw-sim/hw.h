@@ -30,7 +30,7 @@
 
 /* the types and host waits a server of the chip sees, and their documentation */
 #include "rdc_chip.h"
-#include "rdc_port.h"
+#include "rdc_base.h"
 #include "rdc_regs.h"
 
 struct rdc_hw;

@@ -8,7 +8,7 @@
 #ifndef RDC_BITS_H
 #define RDC_BITS_H
 
-#include "rdc_port.h"
+#include "rdc_base.h"
 
 #ifndef __KERNEL__
 #ifndef BIT

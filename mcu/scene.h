@@ -20,7 +20,7 @@
 #define RDC_MCU_SCENE_H
 
 #define RDC_CORE_INTERNAL /* the MCU image holds the chip in static memory: hw.h, dp.h */
-#include "rdc_port.h"
+#include "rdc_base.h"
 #include "dp.h"
 #include "hw.h"
 

@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The three functions the core's rdc_memcpy/rdc_memmove/rdc_memset
- * (hw-sim/rdc_port.h) become when the compiler does not expand them
+ * (hw-sim/rdc_base.h) become when the compiler does not expand them
  * inline: the MCU's runtime, since the image has no C library.  Built
  * with -fno-tree-loop-distribute-patterns so that the loops do not turn
  * into calls to themselves.  Word copies where both ends are aligned.

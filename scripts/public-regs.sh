@@ -5,7 +5,7 @@
 # with the field helpers under RDC_ names, so that a program including
 # <rdc.h> gets no unprefixed macro (BIT, GENMASK, FIELD_PREP, FIELD_GET).
 # The helpers are defined here the way hw-sim/rdc_bits.h defines them
-# outside the kernel; the portable core's port header is not installed.
+# outside the kernel; the portable core's base header is not installed.
 #
 #   scripts/public-regs.sh hw-sim/rdc_regs.h > include/rdc/rdc_regs.h
 set -eu

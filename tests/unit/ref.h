@@ -10,7 +10,7 @@
 #ifndef RDC_REF_H
 #define RDC_REF_H
 
-#include "rdc_port.h"
+#include "rdc_base.h"
 
 typedef void (*rdc_ref_plot_fn)(void *ctx, int32_t x, int32_t y);
 

@@ -11,7 +11,7 @@
 #ifndef RDC_REF_AA_H
 #define RDC_REF_AA_H
 
-#include "rdc_port.h"
+#include "rdc_base.h"
 
 #define RDC_AA_FULL 255u /* coverage of a pixel the shape covers fully */
 

@@ -22,7 +22,7 @@
 #include <cmocka.h>
 
 #include "rdc.h"
-#include "rdc_port.h"
+#include "rdc_base.h"
 #include "test_history_common.h"
 #include "test_net_common.h"
 

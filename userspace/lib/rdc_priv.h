@@ -15,7 +15,7 @@
 #include <stdbool.h>
 
 #include "rdc_chip.h"
-#include "rdc_port.h"
+#include "rdc_base.h"
 #include "rdc_regs.h"
 #include "rdc.h"
 #include "rdc_server.h"

@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: GPL-2.0-only OR LGPL-2.1-or-later */
 /* SPDX-FileCopyrightText: 2026 The rdc authors */
 /*
- * The portable core's view of its host.  hw-sim/ and firmware-model/ build
+ * The portable core's base: its view of its host (called rdc_base.h, not
+ * a "port" header, since the DP port is the display processor's access to
+ * the chip, rdc_port_* in hw.h).  hw-sim/ and firmware-model/ build
  * in three places: user space, the Linux kernel (Kbuild) and freestanding
  * (an MCU, or `make freestanding`).  This header is the only place that
  * knows which; the core includes nothing else from its environment.
@@ -11,8 +13,8 @@
  * memcpy/memset/memmove map to the compiler builtins, which the kernel,
  * libc or an MCU's runtime resolve.
  */
-#ifndef RDC_PORT_H
-#define RDC_PORT_H
+#ifndef RDC_BASE_H
+#define RDC_BASE_H
 
 #ifdef __KERNEL__
 #include <linux/types.h>
@@ -182,4 +184,4 @@ static inline void rdc_px_put(uint8_t *p, unsigned int bpp, uint64_t bit,
 	}
 }
 
-#endif /* RDC_PORT_H */
+#endif /* RDC_BASE_H */
