@@ -306,11 +306,14 @@ static void rdc_kchip_pace_work(struct work_struct *work)
 	struct rdc_kchip *chip =
 		container_of(work, struct rdc_kchip, pace_work);
 	struct rdc_hw *hw = chip->hw;
-	u64 target, spent,
+	u64 target,
+		spent = 0,
 		lag = rdc_kchip_ns_to_cycles(chip, RDC_KCHIP_PACE_MAX_LAG_NS);
-	ktime_t t0 = ktime_get(), next, rest;
+	ktime_t t0, held, next, rest;
 
 	rdc_kchip_lock(chip);
+	/* the budget counts the time the work holds the chip, not waits */
+	held = t0 = ktime_get();
 	/*
 	 * Too far behind (a slow host, or one the budget holds back) or
 	 * ahead (fb_ops ran the DP at once when the FIFO filled): the
@@ -328,21 +331,25 @@ static void rdc_kchip_pace_work(struct work_struct *work)
 			stop = edge;
 		rdc_hw_run_until(hw, stop);
 		rdc_kchip_irq_check_locked(chip);
+		spent += ktime_to_ns(ktime_sub(ktime_get(), held));
 		rdc_kchip_unlock(chip);
 		wake_up_all(&chip->waitq);
 		/* no detour: cancel_work_sync in rdc_kchip_stop keeps gpio */
 		rdc_kgpio_deliver_now(chip->gpio);
 		cond_resched();
 		rdc_kchip_lock(chip);
+		held = ktime_get();
 	}
 	rdc_kchip_update_period(chip);
 	/*
-	 * The CPU budget: after work that took `work`, the next tick waits
-	 * at least work * (100 - budget) / budget, so that pacing never
+	 * The CPU budget: after work that held the chip for `spent`, the
+	 * next tick waits at least spent * (100 - budget) / budget (a wait
+	 * for the lock, an upload holding it, is not the work's), so that
+	 * pacing never
 	 * runs back to back and takes at most cpu_budget per cent of a CPU;
 	 * a host that cannot keep up lets simulated time fall behind.
 	 */
-	spent = ktime_to_ns(ktime_sub(ktime_get(), t0));
+	spent += ktime_to_ns(ktime_sub(ktime_get(), held));
 	rest = ktime_add_ns(ktime_get(),
 			    div_u64(spent * (100 - chip->cpu_budget),
 				    chip->cpu_budget));
