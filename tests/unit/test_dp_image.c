@@ -9,86 +9,8 @@
  * drawn, and seeded random mutations must give DATA or a picture, never
  * a write outside the image's rectangle or a read outside VRAM (ASan).
  */
-#include "test_dp_common.h"
+#include "tdp_image.h"
 #include "rdc.h"
-
-#define DST_W	    320u
-#define DST_H	    240u
-#define STREAM_BASE 0x200000u
-#define SENTINEL    0x5au
-
-static uint32_t rng_next(uint32_t *s)
-{
-	*s ^= *s << 13;
-	*s ^= *s >> 17;
-	*s ^= *s << 5;
-	return *s;
-}
-
-/*
- * Test pictures: 0 flat rectangles (long runs), 1 a smooth gradient with
- * a little noise, 2 noise, 3 a checkerboard of 3-pixel cells.
- */
-static void gen_image(uint8_t *px, uint32_t w, uint32_t h, uint32_t ch,
-		      int kind, uint32_t seed)
-{
-	uint32_t x, y, c, s = seed | 1, v;
-
-	for (y = 0; y < h; y++) {
-		for (x = 0; x < w; x++) {
-			for (c = 0; c < ch; c++) {
-				switch (kind) {
-				case 0:
-					v = ((x / 13) * 37 + (y / 9) * 71 +
-					     c * 50) &
-					    0xff;
-					break;
-				case 1:
-					v = (x * 255 / w + y * (c + 1) +
-					     (rng_next(&s) & 3)) &
-					    0xff;
-					break;
-				case 2:
-					v = rng_next(&s) & 0xff;
-					break;
-				default:
-					v = ((x / 3 + y / 3) & 1) ? 200 - c :
-								    20 + c;
-					break;
-				}
-				px[((size_t)y * w + x) * ch + c] = (uint8_t)v;
-			}
-		}
-	}
-}
-
-static struct rdc_surface dst_surface(uint32_t fmt)
-{
-	struct rdc_surface s = { 0, 0, DST_W, DST_H, fmt };
-
-	s.stride = (DST_W * tdp_bpp(fmt) + 7) / 8;
-	s.stride = (s.stride + 3) & ~3u;
-	return s;
-}
-
-/* The pixel a sample (or R, G, B) becomes in fmt, as rdc_image.h says. */
-static uint32_t want_px(uint32_t fmt, const uint8_t *p, uint32_t ch)
-{
-	uint32_t r = p[0], g = ch == 3 ? p[1] : p[0], b = ch == 3 ? p[2] : p[0];
-
-	if (fmt <= RDC_FMT_I8)
-		return p[0] & tdp_mask(fmt);
-	if (fmt == RDC_FMT_RGB565)
-		return (r >> 3) << 11 | (g >> 2) << 5 | (b >> 3);
-	return r << 16 | g << 8 | b;
-}
-
-/* Fill the DST area with the sentinel byte and select it. */
-static void prep_dst(struct tdp *t, const struct rdc_surface *s)
-{
-	memset(t->vram + s->base, SENTINEL, (size_t)s->stride * s->height);
-	tdp_set_surface(t, RDC_OP_SET_DST, s);
-}
 
 static uint8_t *encode(uint32_t codec, const uint8_t *px, uint32_t w,
 		       uint32_t h, uint32_t ch, size_t *len)
@@ -102,31 +24,6 @@ static uint8_t *encode(uint32_t codec, const uint8_t *px, uint32_t w,
 			 0);
 	assert_true(*len <= cap);
 	return out;
-}
-
-static void decode_at(struct tdp *t, const uint8_t *stream, size_t len,
-		      uint32_t size, int32_t x, int32_t y)
-{
-	memcpy(t->vram + STREAM_BASE, stream, len);
-	TDP_CMD(t, RDC_OP_DECODE, STREAM_BASE, size, RDC_XY(x, y));
-	tdp_drain(t);
-}
-
-/* The DST rectangle at (x, y) holds img (w x h, ch) exactly. */
-static void check_exact(struct tdp *t, const struct rdc_surface *s,
-			const uint8_t *img, uint32_t w, uint32_t h, uint32_t ch,
-			int32_t x0, int32_t y0)
-{
-	uint32_t x, y;
-
-	for (y = 0; y < h; y++)
-		for (x = 0; x < w; x++)
-			if (tdp_get(t->vram, s, x0 + x, y0 + y) !=
-			    want_px(s->format, img + ((size_t)y * w + x) * ch,
-				    ch))
-				fail_msg("pixel (%u, %u) of %ux%ux%u in format "
-					 "%u",
-					 x, y, w, h, ch, s->format);
 }
 
 static const uint32_t sizes[][2] = { { 1, 1 }, { 7, 5 },     { 129, 3 },
