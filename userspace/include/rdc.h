@@ -853,6 +853,51 @@ static inline int rdc_history_write_get(rdc_history *h, size_t i,
  * they made the same writes.
  */
 int rdc_history_first_diff(rdc_history *a, rdc_history *b, size_t *index);
+
+/* Which write set the CLUT entry an indexed pixel shows (struct below). */
+enum rdc_history_clut_source {
+	/* no entry of the raster list in force writes it: the host's
+	 * (CLUT_DATA, LOAD_CLUT) */
+	RDC_HISTORY_CLUT_HOST,
+	/* a raster-list entry, earlier in the frame than the pixel */
+	RDC_HISTORY_CLUT_LIST,
+	/* the list's last write of it, in the frame before (nothing in the
+	 * list before the pixel writes it, and nothing puts it back) */
+	RDC_HISTORY_CLUT_LIST_PREV,
+};
+
+struct rdc_history_clut {
+	uint32_t size;	 /* sizeof(struct), set by the call */
+	uint32_t x, y;	 /* the pixel, screen coordinates */
+	uint32_t format; /* the screen's RDC_FMT_* */
+	uint32_t index;	 /* the pixel's value: the CLUT entry it shows */
+	uint32_t source; /* enum rdc_history_clut_source */
+	/* LIST, LIST_PREV: the entry (0: the one at RASTER_BASE), its VRAM
+	 * address, the beam position it runs at, and the colour it writes */
+	uint32_t entry, addr;
+	uint32_t beam_x, beam_y;
+	uint32_t value; /* 0x00RRGGBB */
+};
+
+/*
+ * Where the colour of the indexed pixel x, y of h's device comes from now:
+ * the CLUT entry its VRAM holds, and the raster-list entry that wrote
+ * that CLUT entry before the beam reached the pixel, read from the list
+ * in force (RASTER_BASE, RASTER_CTRL) as the CRTC runs it every frame.
+ * sim: and rdcd (register and VRAM reads); the device must be open.
+ * RDC_HISTORY_CLUT_HOST does not say the host wrote it last: the history
+ * watches VRAM, not CLUT writes.  1 for a pixel in direct colour (no CLUT
+ * entry), RDC_E_RANGE off the screen.
+ */
+int rdc_history_clut_sized(rdc_history *h, uint32_t x, uint32_t y,
+			   struct rdc_history_clut *c);
+static inline int rdc_history_clut(rdc_history *h, uint32_t x, uint32_t y,
+				   struct rdc_history_clut *c)
+{
+	if (c)
+		c->size = sizeof(*c);
+	return rdc_history_clut_sized(h, x, y, c);
+}
 /*
  * rdc_replay_file with a history open (rdc_history_open's x, y, w, h and
  * flags) from the trace's first record to its last, power cycles

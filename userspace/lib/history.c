@@ -596,6 +596,153 @@ int rdc_history_first_diff(rdc_history *a, rdc_history *b, size_t *index)
 	return i < n || a->nw != b->nw ? 1 : 0;
 }
 
+/* ---- the CLUT entry a pixel shows ---------------------------------------- */
+
+/* A beam position, ordered as the beam passes them. */
+#define BEAM_POS(y, x) ((uint64_t)(y) << 32 | (uint32_t)(x))
+
+/*
+ * The position a WAIT for (y, x) is met at, the list having reached
+ * `at`: lines are fetched whole at their start, so x > 0 is the next
+ * line's start (docs/hardware.md, "Raster list"); a position passed
+ * already is met at once.
+ */
+static uint64_t wait_met(uint64_t at, uint32_t y, uint32_t x)
+{
+	uint64_t p = x ? BEAM_POS((uint64_t)y + 1, 0) : BEAM_POS(y, 0);
+
+	return p > at ? p : at;
+}
+
+static int reg_reads(rdc_dev *dev, const uint32_t *regs, uint32_t *vals,
+		     size_t n)
+{
+	for (size_t i = 0; i < n; i++) {
+		int ret = rdc_reg_read(dev, regs[i], &vals[i]);
+
+		if (ret)
+			return ret;
+	}
+	return 0;
+}
+
+/*
+ * Walk the list in force as the CRTC runs it from line 0: the last entry
+ * that writes CLUT entry c->index at or before the pixel's position, or
+ * failing one the last in the frame.  The walk stops where the chip's
+ * does (END, a WAIT never met, an unknown op, LEN entries, the end of
+ * VRAM); a list the chip found bad has RASTER_CTRL.EN cleared already.
+ */
+static int clut_walk(rdc_dev *dev, uint32_t rbase, uint32_t rctrl,
+		     uint32_t vram_size, uint32_t v_total,
+		     struct rdc_history_clut *c)
+{
+	uint32_t len = FIELD_GET(RDC_RASTER_CTRL_LEN, rctrl), n, k;
+	uint64_t at = 0, pixel = BEAM_POS(c->y, c->x);
+	uint8_t *list;
+	bool before = false, any = false;
+	int ret;
+
+	if (!len || len > RDC_RASTER_MAX_ENTRIES)
+		len = RDC_RASTER_MAX_ENTRIES;
+	rbase &= RDC_RASTER_BASE_MASK;
+	if (rbase >= vram_size)
+		return 0;
+	n = RDC_MIN(len, (vram_size - rbase) / RDC_RASTER_ENTRY_BYTES);
+	list = malloc((size_t)n * RDC_RASTER_ENTRY_BYTES + 1);
+	if (!list)
+		return RDC_E_NOMEM;
+	ret = rdc_vram_read(dev, rbase, list,
+			    (size_t)n * RDC_RASTER_ENTRY_BYTES);
+	for (k = 0; !ret && k < n; k++) {
+		const uint8_t *e = list + (size_t)k * RDC_RASTER_ENTRY_BYTES;
+		uint32_t w0 = rdc_ld32(e), w1 = rdc_ld32(e + 4);
+		uint32_t op = FIELD_GET(RDC_RL_OP, w0);
+
+		if (op == RDC_RL_WAIT) {
+			uint32_t wy = FIELD_GET(RDC_RL_Y, w1);
+
+			if (wy >= v_total)
+				break;
+			at = wait_met(at, wy, FIELD_GET(RDC_RL_X, w1));
+			if (at >= BEAM_POS(v_total, 0))
+				break;
+			continue;
+		}
+		if (op == RDC_RL_REG)
+			continue;
+		if (op != RDC_RL_CLUT)
+			break; /* END, or a bad entry */
+		if (FIELD_GET(RDC_RL_ARG, w0) % RDC_CLUT_ENTRIES != c->index)
+			continue;
+		/* the last write before the pixel wins; else the frame's last */
+		if (at > pixel && before)
+			continue;
+		any = true;
+		before = at <= pixel;
+		c->entry = k;
+		c->addr = rbase + k * RDC_RASTER_ENTRY_BYTES;
+		c->beam_x = (uint32_t)at;
+		c->beam_y = (uint32_t)(at >> 32);
+		c->value = w1 & 0x00ffffffu;
+	}
+	free(list);
+	if (!ret && any)
+		c->source = before ? RDC_HISTORY_CLUT_LIST :
+				     RDC_HISTORY_CLUT_LIST_PREV;
+	return ret;
+}
+
+int rdc_history_clut_sized(rdc_history *h, uint32_t x, uint32_t y,
+			   struct rdc_history_clut *out)
+{
+	enum { FMT, BASE, STRIDE, HDISP, VDISP, VTOTAL, RBASE, RCTRL, VSIZE };
+	static const uint32_t regs[] = {
+		[FMT] = RDC_REG_FB_FORMAT,     [BASE] = RDC_REG_FB_BASE,
+		[STRIDE] = RDC_REG_FB_STRIDE,  [HDISP] = RDC_REG_H_DISPLAY,
+		[VDISP] = RDC_REG_V_DISPLAY,   [VTOTAL] = RDC_REG_V_TOTAL,
+		[RBASE] = RDC_REG_RASTER_BASE, [RCTRL] = RDC_REG_RASTER_CTRL,
+		[VSIZE] = RDC_REG_VRAM_SIZE,
+	};
+	struct rdc_history_clut c = { 0 };
+	uint32_t v[RDC_ARRAY_SIZE(regs)], bpp;
+	uint64_t addr;
+	uint8_t b;
+	int ret;
+
+	if (!h || !out || out->size < sizeof(uint32_t) || !h->dev)
+		return RDC_E_INVAL;
+	ret = reg_reads(h->dev, regs, v, RDC_ARRAY_SIZE(regs));
+	if (ret)
+		return ret;
+	if (x >= v[HDISP] || y >= v[VDISP])
+		return RDC_E_RANGE;
+	if (!rdc_format_indexed(v[FMT]))
+		return 1;
+	bpp = rdc_format_bpp(v[FMT]);
+	addr = v[BASE] + (uint64_t)y * v[STRIDE] + (uint64_t)x * bpp / 8;
+	if (addr >= v[VSIZE])
+		return RDC_E_RANGE;
+	ret = rdc_vram_read(h->dev, (uint32_t)addr, &b, 1);
+	if (ret)
+		return ret;
+	c.x = x;
+	c.y = y;
+	c.format = v[FMT];
+	c.index = rdc_px_get(&b, bpp, (x * bpp) % 8);
+	c.source = RDC_HISTORY_CLUT_HOST;
+	if (v[RCTRL] & RDC_RASTER_CTRL_EN)
+		ret = clut_walk(h->dev, v[RBASE], v[RCTRL], v[VSIZE], v[VTOTAL],
+				&c);
+	if (ret)
+		return ret;
+	c.size = RDC_MIN(out->size, (uint32_t)sizeof(c));
+	memcpy(out, &c, c.size);
+	if (out->size > sizeof(c))
+		memset((char *)out + sizeof(c), 0, out->size - sizeof(c));
+	return 0;
+}
+
 /*
  * A daemon's history whose device closes: every entry comes over first
  * (what cannot, for want of memory or a connection, is counted dropped).

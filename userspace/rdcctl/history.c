@@ -178,6 +178,46 @@ static void json_entry(const struct hopts *o, const struct rdc_history_entry *e,
 }
 
 /*
+ * The CLUT entry an indexed pixel shows, and the raster-list entry that
+ * wrote it this frame (or the frame before), for one watched pixel.
+ */
+static void print_clut(const struct hopts *o, rdc_history *h)
+{
+	struct rdc_history_clut c;
+
+	if (rdc_history_clut(h, o->x, o->y, &c))
+		return;
+	printf("(%u,%u) shows CLUT entry %u", c.x, c.y, c.index);
+	if (c.source == RDC_HISTORY_CLUT_HOST) {
+		printf(" as the host wrote it (no raster-list entry writes "
+		       "it)\n");
+		return;
+	}
+	printf(" = 0x%06x: raster-list entry %u (VRAM 0x%08x) at line %u, column %u "
+	       "%s\n",
+	       c.value, c.entry, c.addr, c.beam_y, c.beam_x,
+	       c.source == RDC_HISTORY_CLUT_LIST ?
+		       "this frame" :
+		       "in the frame before (none earlier writes it)");
+}
+
+static void json_clut(const struct hopts *o, rdc_history *h)
+{
+	static const char *const names[] = { "host", "list", "list-prev" };
+	struct rdc_history_clut c;
+
+	if (rdc_history_clut(h, o->x, o->y, &c))
+		return;
+	printf(", \"clut\": {\"index\": %u, \"source\": \"%s\"", c.index,
+	       names[c.source % 3]);
+	if (c.source != RDC_HISTORY_CLUT_HOST)
+		printf(", \"entry\": %u, \"addr\": %u, \"beam_x\": %u, "
+		       "\"beam_y\": %u, \"value\": %u",
+		       c.entry, c.addr, c.beam_x, c.beam_y, c.value);
+	printf("}");
+}
+
+/*
  * The frames scanout made while a script ran on sim: (diff): a CRC-32 of
  * each, size included, with the cycle it completed at.
  */
@@ -356,6 +396,8 @@ static int cmd_history(struct hopts *o)
 	const uint32_t spec[4] = { o->x, o->y, o->w, o->h };
 	rdc_history *h = NULL;
 	rdc_dev *dev = NULL;
+	/* one pixel: what its CLUT entry is, and who wrote it */
+	int one = o->w == 1 && o->h == 1;
 	size_t n;
 	int ret;
 
@@ -378,13 +420,18 @@ static int cmd_history(struct hopts *o)
 		else
 			print_entry(o, i, &e);
 	}
-	if (o->json)
-		printf("], \"dropped\": %" PRIu64 "}\n",
-		       rdc_history_dropped(h));
-	else if (!n)
+	if (o->json) {
+		printf("], \"dropped\": %" PRIu64, rdc_history_dropped(h));
+		if (one)
+			json_clut(o, h);
+		printf("}\n");
+	} else if (!n) {
 		printf("no write touched %u,%u (%ux%u)\n", o->x, o->y,
 		       o->w == RDC_HISTORY_SCREEN ? 0 : o->w,
 		       o->h == RDC_HISTORY_SCREEN ? 0 : o->h);
+	}
+	if (!o->json && one)
+		print_clut(o, h);
 	if (!o->json && rdc_history_dropped(h))
 		printf("%" PRIu64 " more entries not kept (--limit)\n",
 		       rdc_history_dropped(h));
