@@ -4,7 +4,9 @@
  * The v4l2 sink against a fake device that behaves as v4l2loopback 0.12.7
  * does: S_FMT answers with the format in force while the device is held,
  * sizeimage comes back page-aligned, write() can fail with EAGAIN or with
- * ENODEV once the device is gone.
+ * ENODEV once the device is gone.  With v013 set it behaves as 0.13: it
+ * counts writers by STREAMON less STREAMOFF, and S_FMT for another size
+ * fails with EBUSY while it counts one or a streaming reader holds it.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -25,11 +27,14 @@
 #define FAKE_PAGE 4096u
 
 static struct fake_dev {
-	bool present;	 /* the node exists */
-	bool output;	 /* announces VIDEO_OUTPUT */
-	bool held;	 /* a reader holds the format in force */
-	bool old_names;	 /* knows XRGB32 only as RGB32, as 0.12.7 */
-	bool loopback;	 /* driver "v4l2 loopback" */
+	bool present;	/* the node exists */
+	bool output;	/* announces VIDEO_OUTPUT */
+	bool held;	/* a reader holds the format in force */
+	bool old_names; /* knows XRGB32 only as RGB32, as 0.12.7 */
+	bool loopback;	/* driver "v4l2 loopback" */
+	bool v013;	/* 0.13: STREAMOFF frees, EBUSY while held */
+	int writers;	/* 0.13: STREAMON less STREAMOFF */
+	int streamoffs;
 	int write_errno; /* next write fails with this, once */
 	int opens, closes, s_fmts, s_parms, writes, streamons;
 	int parms_at_streamon; /* S_PARMs done when STREAMON came */
@@ -83,6 +88,13 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
 		if (fk.old_names &&
 		    f->fmt.pix.pixelformat == V4L2_PIX_FMT_XRGB32)
 			f->fmt.pix.pixelformat = V4L2_PIX_FMT_BGR32;
+		if (fk.v013 && (fk.writers || fk.held) &&
+		    (f->fmt.pix.width != fk.pix.width ||
+		     f->fmt.pix.height != fk.pix.height ||
+		     f->fmt.pix.pixelformat != fk.pix.pixelformat)) {
+			errno = EBUSY;
+			return -1;
+		}
 		if (!fk.held) {
 			fk.pix = f->fmt.pix;
 			fk.pix.bytesperline = 0;
@@ -104,7 +116,19 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
 	if (req == VIDIOC_STREAMON) {
 		assert_int_equal(*(int *)arg, V4L2_BUF_TYPE_VIDEO_OUTPUT);
 		fk.streamons++;
+		fk.writers++;
 		fk.parms_at_streamon = fk.s_parms;
+		return 0;
+	}
+	if (req == VIDIOC_STREAMOFF) {
+		assert_int_equal(*(int *)arg, V4L2_BUF_TYPE_VIDEO_OUTPUT);
+		fk.streamoffs++;
+		if (!fk.v013) {
+			errno = ENOTTY; /* 0.12.7: accepted, and nothing done */
+			return -1;
+		}
+		if (fk.writers)
+			fk.writers--;
 		return 0;
 	}
 	if (req == VIDIOC_S_PARM) {
@@ -329,16 +353,58 @@ static void test_v4l2_mode_change(void **state)
 	free(b.px);
 }
 
+/*
+ * 0.13: a new mode on the same descriptor (STREAMOFF, S_FMT, STREAMON),
+ * the new frame written at once; STREAMOFF again before close, so the
+ * device counts no writer after it.
+ */
+static void test_v4l2_mode_change_013(void **state)
+{
+	struct rdc_sink_stats st;
+	struct pic a, b;
+	rdc_sink *s;
+
+	(void)state;
+	fk.v013 = true;
+	pic_make(&a, 320, 200, 1);
+	pic_make(&b, 640, 480, 2);
+	assert_int_equal(rdc_sink_v4l2_open_io("/dev/video7", &fake_io, &s), 0);
+	assert_int_equal(rdc_sink_frame(s, &a.f), 0);
+	assert_int_equal(fk.writers, 1);
+	assert_int_equal(rdc_sink_frame(s, &b.f), 0);
+	assert_true(fk.open_now);
+	assert_int_equal(fk.opens, 1);
+	assert_int_equal(fk.streamoffs, 1);
+	assert_int_equal(fk.streamons, 2);
+	assert_int_equal(fk.writers, 1);
+	assert_int_equal(fk.pix.width, 640);
+	assert_int_equal(fk.last_len, 640u * 480u * 4u);
+	assert_int_equal(fk.last_crc, pic_crc(&b, RDC_SINK_FMT_BGR32));
+	assert_int_equal(rdc_sink_stats_get(s, &st), 0);
+	assert_int_equal(st.renegotiations, 2);
+	assert_int_equal(st.written, 2);
+	assert_int_equal(st.dropped, 0);
+	assert_int_equal(st.reopens, 0);
+	rdc_sink_close(s);
+	assert_false(fk.open_now);
+	assert_int_equal(fk.writers, 0);
+	assert_int_equal(fk.streamoffs, 2);
+	free(a.px);
+	free(b.px);
+}
+
 /* Held in the old size by a reader: the sink lets the device go, drops
- * frames without writing, and takes the new size once it is free. */
-static void test_v4l2_held_format(void **state)
+ * frames without writing, and takes the new size once it is free; 0.12.7
+ * answers S_FMT with the old format, 0.13 (a streaming reader) EBUSY. */
+static void held_format(bool v013)
 {
 	struct rdc_sink_stats st;
 	struct pic a, b;
 	rdc_sink *s;
 	int writes;
 
-	(void)state;
+	setup(NULL);
+	fk.v013 = v013;
 	pic_make(&a, 320, 200, 1);
 	pic_make(&b, 640, 480, 2);
 	assert_int_equal(rdc_sink_v4l2_open_io("/dev/video7", &fake_io, &s), 0);
@@ -369,8 +435,17 @@ static void test_v4l2_held_format(void **state)
 	assert_int_equal(st.dropped, 2 * RDC_V4L2_REOPEN_EVERY);
 	assert_int_equal(st.reopens, 2);
 	rdc_sink_close(s);
+	if (v013)
+		assert_int_equal(fk.writers, 0);
 	free(a.px);
 	free(b.px);
+}
+
+static void test_v4l2_held_format(void **state)
+{
+	(void)state;
+	held_format(false);
+	held_format(true);
 }
 
 /* EAGAIN drops one frame and keeps the device; ENODEV closes it, frames
@@ -506,6 +581,7 @@ int main(void)
 		cmocka_unit_test_setup(test_v4l2_open_errors, setup),
 		cmocka_unit_test_setup(test_v4l2_formats_and_size, setup),
 		cmocka_unit_test_setup(test_v4l2_mode_change, setup),
+		cmocka_unit_test_setup(test_v4l2_mode_change_013, setup),
 		cmocka_unit_test_setup(test_v4l2_held_format, setup),
 		cmocka_unit_test_setup(test_v4l2_eagain_and_gone, setup),
 		cmocka_unit_test_setup(test_v4l2_xrgb32_old_name, setup),

@@ -3,20 +3,28 @@
 /*
  * The v4l2 sink: frames to a V4L2 output device, in practice a
  * v4l2loopback device that cameras' readers (ffmpeg, OBS, browsers)
- * capture from.
- *
- * What v4l2loopback (0.12.7, Debian 12) does that shapes this file:
- * - The OUTPUT format can only change while nobody holds the device: once
- *   a writer has written, S_FMT quietly answers with the format in force
- *   until every opener, readers included, has closed.  So when the mode
- *   changes and S_FMT does not give the new size, the sink closes its own
- *   descriptor (so the device can come free when the readers let go) and
- *   tries again every RDC_V4L2_REOPEN_EVERY frames.
+ * capture from.  docs/v4l2.md says what readers see with each
+ * v4l2loopback; what shapes this file:
+ * - The sequence is OBS's virtual camera's: S_FMT, S_PARM, STREAMON,
+ *   write() each frame, STREAMOFF, close.  v4l2loopback counts an opener
+ *   as its writer only after STREAMON (0.12.7 announces OUTPUT again once
+ *   such a writer closes, which a later S_FMT needs), and 0.13 counts
+ *   writers by STREAMON less STREAMOFF: a writer gone without STREAMOFF
+ *   keeps the format fixed until every opener has closed.
+ * - A new mode: STREAMOFF, then S_FMT.  0.13 then takes the new size at
+ *   once, unless a streaming (mmap) reader or keep_format holds it
+ *   (EBUSY, or the old format back); 0.12.7 ignores STREAMOFF and answers
+ *   S_FMT with the format in force until every opener, readers included,
+ *   has closed.  When S_FMT does not give the new size, the sink closes
+ *   its own descriptor (so the device can come free when the readers let
+ *   go) and tries again every RDC_V4L2_REOPEN_EVERY frames.
+ * - 0.13 reallocates its buffers in S_FMT but keeps counting frames: a
+ *   reader a frame behind may be handed a buffer not yet rewritten until
+ *   the next write().  The new frame is converted before S_FMT, so that
+ *   write() follows S_FMT at once.
  * - sizeimage comes back page-aligned; readers (ffmpeg) expect exactly
  *   bytesperline * height bytes in a buffer, so that is what one write()
  *   carries, never sizeimage.
- * - It announces OUTPUT (and lets S_FMT through) only while it believes a
- *   writer may come, which it learns from STREAMON, not from write().
  * - write() takes the whole frame or fails; the descriptor is non-blocking
  *   so a device that cannot take a frame costs a dropped frame, not a
  *   stalled simulation.
@@ -37,8 +45,9 @@
 struct v4l2_sink {
 	struct rdc_v4l2_io io;
 	char *path;
-	int fmt; /* enum rdc_sink_fmt */
-	int fd;	 /* -1 while the device is away */
+	int fmt;	/* enum rdc_sink_fmt */
+	int fd;		/* -1 while the device is away */
+	bool streaming; /* STREAMON on fd, not yet undone */
 	uint32_t away_frames;
 	/* Negotiated: 0 x 0 until S_FMT gave what was asked. */
 	uint32_t width, height;
@@ -80,10 +89,23 @@ static const struct rdc_v4l2_io sys_io = {
 	.close = sys_close,
 };
 
+/* Undo our STREAMON: v4l2loopback 0.13 keeps the format fixed while it
+ * counts a writer. */
+static void v4l2_stream_off(struct v4l2_sink *v)
+{
+	int out_type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
+
+	if (v->streaming)
+		v->io.ioctl(v->fd, VIDIOC_STREAMOFF, &out_type);
+	v->streaming = false;
+}
+
 static void v4l2_drop_fd(struct v4l2_sink *v)
 {
-	if (v->fd >= 0)
+	if (v->fd >= 0) {
+		v4l2_stream_off(v);
 		v->io.close(v->fd);
+	}
 	v->fd = -1;
 	v->away_frames = 0;
 	v->width = v->height = 0;
@@ -130,6 +152,7 @@ static int v4l2_connect(struct v4l2_sink *v)
 				      v->path);
 	}
 	v->fd = fd;
+	v->streaming = false;
 	v->away_frames = 0;
 	v->width = v->height = 0;
 	v->ival_num = v->ival_den = 0;
@@ -175,10 +198,29 @@ static bool v4l2_try_fourcc(struct v4l2_sink *v, const struct rdc_frame *f,
 	       vf->fmt.pix.pixelformat == fourcc;
 }
 
+/* The frame buffer for rows of bpl bytes; rows padded by the device stay
+ * zero rather than stale. */
+static int v4l2_fit(struct v4l2_sink *v, size_t bpl, uint32_t height)
+{
+	if (bpl * height > v->buf_cap) {
+		uint8_t *nb = realloc(v->buf, bpl * height);
+
+		if (!nb)
+			return RDC_E_NOMEM;
+		v->buf = nb;
+		v->buf_cap = bpl * height;
+	}
+	memset(v->buf, 0, bpl * height);
+	v->bpl = bpl;
+	v->frame_bytes = bpl * height;
+	return 0;
+}
+
 /*
- * S_FMT for the frame's size.  Returns 0 when the device took it, 1 when
- * it did not (held in another format by readers of the previous mode, or
- * refused), a negative error otherwise.
+ * A new size: the frame converted first, then STREAMOFF, S_FMT, S_PARM,
+ * STREAMON.  Returns 0 when the device took it, 1 when it did not (held
+ * in another format by readers of the previous mode, or refused), a
+ * negative error otherwise.
  */
 static int v4l2_negotiate(rdc_sink *s, const struct rdc_frame *f)
 {
@@ -189,39 +231,36 @@ static int v4l2_negotiate(rdc_sink *s, const struct rdc_frame *f)
 	uint32_t alt = rdc_sink_fmt_fourcc_alt(v->fmt);
 	int out_type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
 	struct v4l2_format vf;
+	int ret;
 
+	v->width = v->height = 0;
+	ret = v4l2_fit(v, bpl, f->height);
+	if (!ret)
+		ret = rdc_sink_convert(v->fmt, v->buf, bpl, f);
+	if (ret)
+		return ret;
+	v4l2_stream_off(v);
 	if (!v4l2_try_fourcc(v, f, w, bpl, rdc_sink_fmt_fourcc(v->fmt), &vf) &&
 	    (!alt || !v4l2_try_fourcc(v, f, w, bpl, alt, &vf)))
 		return 1;
+	/* Keep the device's row pitch when it pads rows; never less. */
+	if (vf.fmt.pix.bytesperline > bpl &&
+	    vf.fmt.pix.bytesperline <= bpl + RDC_CRTC_MAX_DISPLAY) {
+		bpl = vf.fmt.pix.bytesperline;
+		ret = v4l2_fit(v, bpl, f->height);
+		if (!ret)
+			ret = rdc_sink_convert(v->fmt, v->buf, bpl, f);
+		if (ret)
+			return ret;
+	}
 	/* The interval before STREAMON: once that makes the device ready,
 	 * readers may ask for it. */
 	v->ival_num = v->ival_den = 0;
 	v4l2_set_interval(s, f);
-	/*
-	 * Frames still go by write(), but v4l2loopback only counts an opener
-	 * as its writer after STREAMON; only then does it announce OUTPUT
-	 * again once we close, which the next S_FMT (after a mode change, a
-	 * restart) needs.  Devices without streaming ignore it.
-	 */
-	v->io.ioctl(v->fd, VIDIOC_STREAMON, &out_type);
-	/* Keep the device's row pitch when it pads rows; never less. */
-	if (vf.fmt.pix.bytesperline > bpl &&
-	    vf.fmt.pix.bytesperline <= bpl + RDC_CRTC_MAX_DISPLAY)
-		bpl = vf.fmt.pix.bytesperline;
-	if (bpl * f->height > v->buf_cap) {
-		uint8_t *nb = realloc(v->buf, bpl * f->height);
-
-		if (!nb)
-			return RDC_E_NOMEM;
-		v->buf = nb;
-		v->buf_cap = bpl * f->height;
-	}
-	/* Rows padded by the device stay zero rather than stale. */
-	memset(v->buf, 0, bpl * f->height);
+	/* Frames still go by write(); devices without streaming ignore it. */
+	v->streaming = !v->io.ioctl(v->fd, VIDIOC_STREAMON, &out_type);
 	v->width = f->width;
 	v->height = f->height;
-	v->bpl = bpl;
-	v->frame_bytes = bpl * f->height;
 	s->st.renegotiations++;
 	return 0;
 }
@@ -264,11 +303,12 @@ static int v4l2_frame(rdc_sink *s, const struct rdc_frame *f)
 			s->st.dropped++;
 			return 0;
 		}
+	} else {
+		v4l2_set_interval(s, f);
+		ret = rdc_sink_convert(v->fmt, v->buf, v->bpl, f);
+		if (ret)
+			return ret;
 	}
-	v4l2_set_interval(s, f);
-	ret = rdc_sink_convert(v->fmt, v->buf, v->bpl, f);
-	if (ret)
-		return ret;
 	n = v->io.write(v->fd, v->buf, v->frame_bytes);
 	if (n == (ssize_t)v->frame_bytes) {
 		s->st.written++;
