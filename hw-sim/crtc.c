@@ -236,7 +236,7 @@ static bool raster_fetches_at(const struct rdc_hw *hw, uint32_t n)
 		       rdc_crtc_raster_fetches(
 			       hw, c->cur_raster_base & RDC_RASTER_BASE_MASK,
 			       0);
-	return c->rl_wait <= n &&
+	return (c->rl_wait < n || (c->rl_wait == n && !c->rl_wait_x)) &&
 	       rdc_crtc_raster_fetches(hw, c->rl_addr, c->rl_count);
 }
 
@@ -249,6 +249,8 @@ int rdc_crtc_next_fetches(const struct rdc_hw *hw)
 
 	if (!c->running)
 		return 0;
+	if (c->rl_mid) /* a raster-list WAIT's column */
+		return rdc_crtc_raster_fetches(hw, c->rl_addr, c->rl_count);
 	if (n >= tm->v_total) { /* line 0 of the next frame */
 		n = 0;
 		if (c->mode_pending)
@@ -733,21 +735,100 @@ static void scan_defer(struct rdc_hw *hw, uint32_t n)
 
 /* ---- raster list (run by raster.c) --------------------------------------- */
 
-/* Line n starts: the list restarts at line 0 and runs if its WAIT is met. */
+uint64_t rdc_crtc_column_time(const struct rdc_hw *hw, uint32_t x)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	uint64_t pix_hz = (uint64_t)c->cur.pixclk_khz * HZ_PER_KHZ;
+
+	return c->rl_line_start +
+	       ((uint64_t)x * hw->core_hz + pix_hz - 1) / pix_hz;
+}
+
+/*
+ * A raster-list CLUT write at column x of line n changed an entry: the
+ * line was converted with the CLUT it had before (eagerly at its fetch,
+ * or by raster_settle just now), so its pixels from x on are converted
+ * again from the bytes its fetch read (rl_line), through the new CLUT,
+ * gamma and the cursor as crtc_convert does.  Only when the frame is
+ * kept and the list waited for this column from the line's start.
+ */
+void rdc_crtc_raster_split(struct rdc_hw *hw, uint32_t n, uint32_t x)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t w = c->cur.h_display, fmt = c->cur_format;
+	uint32_t bpp = rdc_format_bpp(fmt), x0 = x, keep[8], i;
+	bool indexed = rdc_format_indexed(fmt);
+	uint64_t cursor_addr = 0;
+	uint32_t *out;
+
+	if (n >= c->cur.v_display || x >= w || c->rl_line_n != n ||
+	    !hw->frame_ok[hw->frame_back] || !(hw->pins_in & RDC_PIN_BL_EN) ||
+	    (!indexed && !c->cur_gamma))
+		return;
+	out = hw->frame[hw->frame_back] + (size_t)n * w;
+	if (bpp <
+	    8) /* from the byte that holds pixel x, the ones before kept */
+		x0 = x - x % (8 / bpp);
+	for (i = x0; i < x; i++)
+		keep[i - x0] = out[i];
+	convert_line(hw, out + x0, c->rl_line + (uint64_t)x0 * bpp / 8, w - x0,
+		     fmt);
+	for (i = x0; i < x; i++)
+		out[i] = keep[i - x0];
+	if (!indexed)
+		gamma_line(hw->clut, out + x, w - x);
+	if (!(hw->control & RDC_CONTROL_CURSOR_EN))
+		return;
+	if (cursor_argb_row(hw, &c->cur, n, &cursor_addr))
+		cursor_argb_line(hw, out + x, (int32_t)x, w - x, cursor_addr);
+	else if (FIELD_GET(RDC_CURSOR_CTRL_FMT, c->cur_cursor_ctrl) ==
+		 RDC_CURSOR_FMT_2BPP)
+		cursor_line(hw, out + x, n, (int32_t)x, w - x);
+}
+
+/*
+ * Line n starts: the list restarts at line 0 and runs if its WAIT is met.
+ * Left waiting for a column of an active line, it keeps the bytes the
+ * line's fetch reads, for rdc_crtc_raster_split.
+ */
 static inline void raster_line(struct rdc_hw *hw, uint32_t n, uint64_t when)
 {
 	struct rdc_crtc *c = &hw->crtc;
+	uint64_t addr;
+	uint32_t bytes;
 
 	if (n == 0) {
 		c->rl_count = 0;
 		c->rl_wait = RDC_NEVER_LINE;
+		c->rl_line_n = RDC_NEVER_LINE;
 		if (!(c->cur_raster_ctrl & RDC_RASTER_CTRL_EN))
 			return;
 		c->rl_addr = c->cur_raster_base & RDC_RASTER_BASE_MASK;
 		c->rl_wait = 0;
+		c->rl_wait_x = 0;
 	}
-	if (c->rl_wait <= n)
-		rdc_raster_run(hw, n, when);
+	if (c->rl_wait > n)
+		return;
+	c->rl_line_start = when;
+	rdc_raster_run(hw, n, 0, when);
+	if (c->rl_mid && n < c->cur.v_display &&
+	    line_range(hw, &c->cur, n, &addr, &bytes)) {
+		rdc_memcpy(c->rl_line, hw->vram + addr, bytes);
+		c->rl_line_n = n;
+	}
+}
+
+/* The beam reaches the column a WAIT of the list holds at, on this line. */
+static rdc_noinline void raster_column(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint64_t when = c->next_line_time;
+
+	c->rl_mid = 0;
+	c->next_line_time = c->rl_next_line;
+	if (hw->now < when)
+		hw->now = when;
+	rdc_raster_run(hw, c->next_line - 1, c->rl_wait_x, when);
 }
 
 /*
@@ -921,6 +1002,10 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 		uint32_t n = c->next_line;
 		uint64_t when = c->next_line_time;
 
+		if (c->rl_mid) {
+			raster_column(hw);
+			continue;
+		}
 		if (n >= c->cur.v_total) {
 			c->frame_start += c->frame_cycles;
 			if (c->mode_pending) {
@@ -994,6 +1079,7 @@ void rdc_crtc_start(struct rdc_hw *hw)
 	c->running = c->mode_valid;
 	c->in_vblank = 0;
 	c->lpen_time = RDC_NEVER;
+	c->rl_mid = 0;
 	rdc_pins_update(hw, hw->now);
 	c->next_line = 0;
 	if (!c->running) {
@@ -1013,6 +1099,7 @@ void rdc_crtc_stop(struct rdc_hw *hw)
 	c->running = 0;
 	c->in_vblank = 0;
 	c->next_line_time = RDC_NEVER;
+	c->rl_mid = 0;
 	c->lpen_time = RDC_NEVER;
 	rdc_pins_update(hw, hw->now);
 }
@@ -1032,6 +1119,7 @@ void rdc_crtc_reset(struct rdc_hw *hw)
 	c->next_line_time = RDC_NEVER;
 	c->shadow_dirty = 1;
 	c->rl_wait = RDC_NEVER_LINE;
+	c->rl_line_n = RDC_NEVER_LINE;
 	c->lpen_line = RDC_NEVER_LINE;
 	c->lpen_time = RDC_NEVER;
 }

@@ -70,8 +70,10 @@ struct rdc_crtc {
 	uint64_t frame_start;  /* time line 0 of this frame starts */
 	uint64_t frame_cycles; /* core cycles a frame lasts */
 	uint32_t next_line;    /* next line whose start is not yet processed */
-	uint64_t next_line_time; /* its start time (RDC_NEVER if stopped) */
-	uint64_t fetch_end;	 /* end of the current scanout fetch window */
+	/* its start time (RDC_NEVER if stopped), or a raster-list WAIT's
+	 * column before it (rl_mid): the next scanout event */
+	uint64_t next_line_time;
+	uint64_t fetch_end; /* end of the current scanout fetch window */
 	uint64_t frame_count;
 	int mode_valid;	  /* `cur` holds a mode that passed validation */
 	int in_vblank;	  /* beam in vertical blanking (TE pin level) */
@@ -86,15 +88,26 @@ struct rdc_crtc {
 	uint64_t line_q, line_r, step_q, step_r, line_den;
 	/*
 	 * Raster list: the registers, their latched copies, the next entry,
-	 * entries fetched this frame, the line the list waits for
-	 * (RDC_NEVER_LINE: done for this frame), RASTER_STATUS.ERROR, and
-	 * whether it changed what converting a line reads this frame.
+	 * entries fetched this frame, the line and column the list waits
+	 * for (RDC_NEVER_LINE: done for this frame), RASTER_STATUS.ERROR,
+	 * and whether it changed what converting a line reads this frame.
+	 * A WAIT for a column of the current line is the next scanout event
+	 * (rl_mid, in next_line_time; the line's start in rl_line_start),
+	 * and the line's bytes as fetched at its start are kept,
+	 * which the columns from there on are converted from again when a
+	 * CLUT entry changes (rl_line_n: the line they are of, or
+	 * RDC_NEVER_LINE).
 	 */
 	uint32_t raster_base, raster_ctrl;
 	uint32_t cur_raster_base, cur_raster_ctrl;
 	uint64_t rl_addr;
-	uint32_t rl_count, rl_wait;
+	uint32_t rl_count, rl_wait, rl_wait_x;
 	int rl_error, rl_touched;
+	int rl_mid; /* next_line_time is the column's, not a line's */
+	uint64_t rl_next_line; /* then: the next line's start */
+	uint64_t rl_line_start;
+	uint32_t rl_line_n;
+	uint8_t rl_line[RDC_CRTC_MAX_DISPLAY * 4];
 	/*
 	 * Light pen: LPEN_POS, LPEN_CTRL, LPEN_LATCH, STATUS.LPEN, the line
 	 * whose fetch looks at the pen's pixel (RDC_NEVER_LINE: off) and the

@@ -171,8 +171,15 @@ void rdc_crtc_stop(struct rdc_hw *hw);
 int rdc_crtc_next_fetches(const struct rdc_hw *hw);
 uint32_t rdc_crtc_status(struct rdc_hw *hw);
 uint32_t rdc_crtc_raster_status(struct rdc_hw *hw);
-/* raster.c: line n starts at `when` and the list waits for it: run it. */
-void rdc_raster_run(struct rdc_hw *hw, uint32_t n, uint64_t when);
+/*
+ * raster.c: the beam is at column x of line n (0: the line's start) at
+ * `when`, and the list waits for it: run it.
+ */
+void rdc_raster_run(struct rdc_hw *hw, uint32_t n, uint32_t x, uint64_t when);
+/* crtc.c: the core cycle the beam reaches column x of the current line */
+uint64_t rdc_crtc_column_time(const struct rdc_hw *hw, uint32_t x);
+/* crtc.c: a CLUT entry changed at column x of line n: x on converted again */
+void rdc_crtc_raster_split(struct rdc_hw *hw, uint32_t n, uint32_t x);
 /* crtc.c: convert the lines of buffers `bufs` (bit 0, 1) that wait. */
 void rdc_scan_convert(struct rdc_hw *hw, unsigned int bufs);
 /* A line the raster list waits for that never comes (rl_wait). */

@@ -4,8 +4,8 @@
  * The CRTC's raster list (RASTER_BASE, RASTER_CTRL, RASTER_STATUS;
  * docs/hardware.md): register and CLUT writes at beam positions, fetched
  * from VRAM entry by entry in the line's fetch window and run by the CRTC
- * every frame (crtc.c calls rdc_raster_run at the line starts the list
- * waits for).
+ * every frame (crtc.c calls rdc_raster_run at the line starts and
+ * columns the list waits for).
  */
 #define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "hw_priv.h"
@@ -26,12 +26,14 @@ static void raster_settle(struct rdc_hw *hw)
 		rdc_scan_convert(hw, 3);
 }
 
-static void raster_set(struct rdc_hw *hw, uint32_t *p, uint32_t val)
+/* Write *p; false if it held val already (nothing changes). */
+static bool raster_set(struct rdc_hw *hw, uint32_t *p, uint32_t val)
 {
 	if (*p == val)
-		return;
+		return false;
 	raster_settle(hw);
 	*p = val;
+	return true;
 }
 
 /* A bad list: stop it for good (EN cleared) and raise the error. */
@@ -72,18 +74,43 @@ static bool raster_reg(struct rdc_hw *hw, uint32_t reg, uint32_t val)
 	}
 }
 
+/* Has the beam, at column x of line n, reached the WAIT the list holds at? */
+static inline bool raster_met(const struct rdc_crtc *c, uint32_t n, uint32_t x)
+{
+	return c->rl_wait < n || (c->rl_wait == n && c->rl_wait_x <= x);
+}
+
 /*
- * Line n starts at `when`, the list waiting for it: fetch and run entries
- * until a WAIT for a later line, the END, or a bad entry.  Each entry is
- * an 8-byte read in the fetch window, ahead of the line's own read.
+ * A WAIT for line y, column x: a column past the line's end is the next
+ * line's start, and a line the frame does not have never comes.
  */
-void rdc_raster_run(struct rdc_hw *hw, uint32_t n, uint64_t when)
+static void raster_wait(struct rdc_crtc *c, uint32_t y, uint32_t x)
+{
+	if (x >= c->cur.h_total) {
+		y++;
+		x = 0;
+	}
+	c->rl_wait = y >= c->cur.v_total ? RDC_NEVER_LINE : y;
+	c->rl_wait_x = x;
+}
+
+/*
+ * The beam is at column x of line n at `when` (x 0: the line starts, its
+ * fetch to come), the list waiting for it: fetch and run entries until a
+ * WAIT for a later position, the END, or a bad entry.  Each entry is an
+ * 8-byte read in a fetch window at `when`: ahead of the line's own read
+ * at its start, a window of its own at a column.  A WAIT for a later
+ * column of this line makes that column the next scanout event, when it
+ * comes before the next line's start; a CLUT write there changes the
+ * line's pixels from that column on.
+ */
+void rdc_raster_run(struct rdc_hw *hw, uint32_t n, uint32_t x, uint64_t when)
 {
 	struct rdc_crtc *c = &hw->crtc;
 
-	while (c->rl_wait <= n) {
+	while (raster_met(c, n, x)) {
 		uint64_t a = c->rl_addr, start;
-		uint32_t w0, w1, y, x;
+		uint32_t w0, w1, k;
 
 		if (!rdc_crtc_raster_fetches(hw, a, c->rl_count)) {
 			raster_fail(hw, a);
@@ -102,12 +129,8 @@ void rdc_raster_run(struct rdc_hw *hw, uint32_t n, uint64_t when)
 			c->rl_wait = RDC_NEVER_LINE;
 			return;
 		case RDC_RL_WAIT:
-			y = FIELD_GET(RDC_RL_Y, w1);
-			x = FIELD_GET(RDC_RL_X, w1);
-			if (y >= c->cur.v_total)
-				c->rl_wait = RDC_NEVER_LINE;
-			else if (y > n || (y == n && x))
-				c->rl_wait = x ? y + 1 : y;
+			raster_wait(c, FIELD_GET(RDC_RL_Y, w1),
+				    FIELD_GET(RDC_RL_X, w1));
 			break;
 		case RDC_RL_REG:
 			if (!raster_reg(hw, FIELD_GET(RDC_RL_ARG, w0), w1)) {
@@ -116,15 +139,25 @@ void rdc_raster_run(struct rdc_hw *hw, uint32_t n, uint64_t when)
 			}
 			break;
 		case RDC_RL_CLUT:
-			raster_set(hw,
-				   &hw->clut[FIELD_GET(RDC_RL_ARG, w0) %
-					     RDC_CLUT_ENTRIES],
-				   w1 & RGB_MASK);
+			k = FIELD_GET(RDC_RL_ARG, w0) % RDC_CLUT_ENTRIES;
+			if (raster_set(hw, &hw->clut[k], w1 & RGB_MASK) && x)
+				rdc_crtc_raster_split(hw, n, x);
 			break;
 		default:
 			raster_fail(hw, a);
 			return;
 		}
+	}
+	if (c->rl_wait == n) {
+		uint64_t t = rdc_crtc_column_time(hw, c->rl_wait_x);
+		uint64_t next = c->rl_mid ? c->rl_next_line : c->next_line_time;
+
+		/* a column the next line's start reaches first: met there */
+		if (t >= next)
+			return;
+		c->rl_next_line = next;
+		c->next_line_time = t;
+		c->rl_mid = 1;
 	}
 }
 

@@ -139,7 +139,8 @@
  * every frame, restarting at RASTER_BASE at the start of line 0, before
  * the line's fetch.  RASTER_BASE and RASTER_CTRL are latched at vblank;
  * the CRTC fetches an entry only when the beam has reached the WAIT
- * before it, each one an 8-byte read in the line's fetch window.  A bad
+ * before it, each one an 8-byte read in the fetch window of the line's
+ * start or of the WAIT's column.  A bad
  * entry, an entry leaving VRAM or more entries in a frame than
  * RASTER_CTRL.LEN stop the list: RDC_ERR_RASTER with ERR_INFO the entry's
  * VRAM address, RASTER_STATUS.ERROR set and RASTER_CTRL.EN cleared.
@@ -162,9 +163,9 @@
  * An entry: word 0 [31:28] the op, [11:0] its argument; word 1 the value.
  *  END   the list is done for this frame (zeroed VRAM ends a list)
  *  WAIT  word 1 [15:0] x, [31:16] y (as BEAM): hold until the beam is at
- *        or past line y, column x; lines are fetched whole at their start,
- *        so a WAIT with x > 0 is met at the start of line y + 1; y >=
- *        V_TOTAL is never met
+ *        or past line y, column x: line start + ceil(x * core clock /
+ *        pixel clock), a CLUT write after it changing line y from column x
+ *        on; x >= H_TOTAL is line y + 1's start; y >= V_TOTAL is never met
  *  REG   word 0 [11:0] a register offset: FB_BASE and FB_STRIDE (the
  *        latched copies, in force from the next line fetched until the
  *        next vblank latch), CURSOR_POS, CURSOR_FG, CURSOR_BG; any other

@@ -19,27 +19,31 @@
 static const char *const args_stepped[] = { "--stepped", NULL };
 
 /*
- * Entry 5 is written by the host, then by the list at its top (entry 0)
- * and after WAIT 240 (entry 3); entry 6 only after WAIT 300 (entry 5), so
- * above line 300 it shows the frame before's; entry 7 by nobody on the
- * list.  Entry 6's WAIT 299 7 is met at the start of line 300.
+ * CLUT entry 5 is written by the host, then by the list at its top (list
+ * entry 0) and from line 240 (4); 6 at the top (1) and from column 400 of
+ * line 299 (7); 8 only from line 240 (5), so above it shows the frame
+ * before's; 7 by nobody on the list.
  */
 static const char split[] = "mode 640x480 i8\n"
-			    "load-clut 5 #101010 #202020 #303030\n"
+			    "load-clut 5 #101010 #202020 #303030 #404040\n"
 			    "fg 5\n"
 			    "fill 0 0 320 480\n"
 			    "fg 6\n"
 			    "fill 320 0 160 480\n"
 			    "fg 7\n"
-			    "fill 480 0 160 480\n"
+			    "fill 480 0 120 480\n"
+			    "fg 8\n"
+			    "fill 600 0 40 480\n"
 			    "raster 0x100000\n"
 			    "raster-clut 5 #0000ff\n" /* entry 0 */
-			    "raster-wait 240\n"	      /* 1 */
-			    "raster-reg FB_BASE 0\n"  /* 2 */
-			    "raster-clut 5 #ff0000\n" /* 3 */
-			    "raster-wait 299 7\n"     /* 4 */
-			    "raster-clut 6 #00ff00\n" /* 5 */
-			    "raster-end\n"	      /* 6 */
+			    "raster-clut 6 #ff00ff\n" /* 1 */
+			    "raster-wait 240\n"	      /* 2 */
+			    "raster-reg FB_BASE 0\n"  /* 3 */
+			    "raster-clut 5 #ff0000\n" /* 4 */
+			    "raster-clut 8 #abcdef\n" /* 5 */
+			    "raster-wait 299 400\n"   /* 6 */
+			    "raster-clut 6 #00ff00\n" /* 7 */
+			    "raster-end\n"	      /* 8 */
 			    "wait-vblank\nwait-vblank\n";
 
 struct probe {
@@ -49,10 +53,14 @@ struct probe {
 static const struct probe probes[] = {
 	{ 10, 10, 5, RDC_HISTORY_CLUT_LIST, 0, 0, 0, 0x0000ff },
 	{ 10, 239, 5, RDC_HISTORY_CLUT_LIST, 0, 0, 0, 0x0000ff },
-	{ 10, 240, 5, RDC_HISTORY_CLUT_LIST, 3, 0, 240, 0xff0000 },
-	{ 10, 479, 5, RDC_HISTORY_CLUT_LIST, 3, 0, 240, 0xff0000 },
-	{ 400, 299, 6, RDC_HISTORY_CLUT_LIST_PREV, 5, 0, 300, 0x00ff00 },
-	{ 400, 300, 6, RDC_HISTORY_CLUT_LIST, 5, 0, 300, 0x00ff00 },
+	{ 10, 240, 5, RDC_HISTORY_CLUT_LIST, 4, 0, 240, 0xff0000 },
+	{ 10, 479, 5, RDC_HISTORY_CLUT_LIST, 4, 0, 240, 0xff0000 },
+	{ 400, 298, 6, RDC_HISTORY_CLUT_LIST, 1, 0, 0, 0xff00ff },
+	{ 399, 299, 6, RDC_HISTORY_CLUT_LIST, 1, 0, 0, 0xff00ff },
+	{ 400, 299, 6, RDC_HISTORY_CLUT_LIST, 7, 400, 299, 0x00ff00 },
+	{ 320, 300, 6, RDC_HISTORY_CLUT_LIST, 7, 400, 299, 0x00ff00 },
+	{ 610, 100, 8, RDC_HISTORY_CLUT_LIST_PREV, 5, 0, 240, 0xabcdef },
+	{ 610, 300, 8, RDC_HISTORY_CLUT_LIST, 5, 0, 240, 0xabcdef },
 	{ 500, 100, 7, RDC_HISTORY_CLUT_HOST, 0, 0, 0, 0 },
 };
 

@@ -2,14 +2,16 @@
 // SPDX-FileCopyrightText: 2026 The rdc authors
 /*
  * The CRTC's raster list (RASTER_BASE, RASTER_CTRL, RASTER_STATUS): a
- * CLUT split that holds in every frame, eager and on demand; a split
+ * CLUT split that holds in every frame, eager and on demand; one at
+ * columns of a line, from the line as fetched; a split
  * screen by FB_BASE and FB_STRIDE that the vblank latch undoes; the
  * cursor moved and recoloured down the frame; the list latched at vblank
  * and turned off; bad lists (unknown op, a register off the whitelist,
  * leaving VRAM, running past RASTER_CTRL.LEN) stopped with error RASTER
  * while the beam runs on; and the bus time of each line's window, the
- * entries it fetches and the line's read, against docs/hardware.md's
- * formula worked out here from the bus model's words.
+ * entries it fetches and the line's read, and of a WAIT's column,
+ * against docs/hardware.md's formula worked out here from the bus
+ * model's words.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -119,13 +121,22 @@ static void split_list(struct hw_fx *f, uint32_t split)
 	entry(f, RL_BASE, 3, RDC_RL_END, 0, 0);
 }
 
-static void assert_split(const uint32_t *p, uint32_t split, uint32_t col2)
+/* Ground from column `at` of line `split` on, sky before. */
+static void assert_split_at(const uint32_t *p, uint32_t split, uint32_t at,
+			    uint32_t col2)
 {
 	for (uint32_t y = 0; y < SCR_H; y++)
 		for (uint32_t x = 0; x < SCR_W; x++)
-			assert_int_equal(p[y * SCR_W + x], x == 7    ? col2 :
-							   y < split ? SKY :
-								       GROUND);
+			assert_int_equal(p[y * SCR_W + x],
+					 x == 7 ? col2 :
+					 y < split || (y == split && x < at) ?
+						  SKY :
+						  GROUND);
+}
+
+static void assert_split(const uint32_t *p, uint32_t split, uint32_t col2)
+{
+	assert_split_at(p, split, 0, col2);
 }
 
 /*
@@ -165,9 +176,73 @@ static void test_split_every_frame(void **state)
 }
 
 /*
+ * Two WAITs for columns of line 40 (30 and 50), a CLUT write after each:
+ * the line in three parts, in every frame, eager and on demand.  A DP
+ * write to line 40 after its start shows in the next frame only, the
+ * columns after a split included (they come from the line as fetched).
+ */
+static void test_column_split(void **state)
+{
+	const uint32_t col2 = 0x00aa00, mid = 0x111111;
+	struct hw_fx *f = *state;
+	struct rdc_hw *hw = &f->hw;
+
+	for (int mode = 0; mode < 3; mode++) {
+		const uint32_t *p;
+
+		rdc_hw_reset(hw);
+		rdc_hw_set_on_demand(hw, mode != 0);
+		fill_screen(f, 0);
+		entry(f, RL_BASE, 0, RDC_RL_CLUT, 1, SKY);
+		entry(f, RL_BASE, 1, RDC_RL_WAIT, 0, wait_at(40, 30));
+		entry(f, RL_BASE, 2, RDC_RL_CLUT, 1, GROUND);
+		entry(f, RL_BASE, 3, RDC_RL_WAIT, 0, wait_at(40, 50));
+		entry(f, RL_BASE, 4, RDC_RL_CLUT, 1, mid);
+		entry(f, RL_BASE, 5, RDC_RL_WAIT, 0, wait_at(41, 0));
+		entry(f, RL_BASE, 6, RDC_RL_CLUT, 1, GROUND);
+		entry(f, RL_BASE, 7, RDC_RL_END, 0, 0);
+		start_mode(hw);
+		enable(hw, RL_BASE, 0);
+		grab(hw);
+		for (int k = 0; k <= 20; k++) {
+			if (mode == 2 && k % 7 != 0) {
+				rdc_hw_run_until(hw, rdc_port_next_vblank(hw));
+				continue;
+			}
+			p = grab(hw);
+			for (uint32_t y = 0; y < SCR_H; y++)
+				for (uint32_t x = 0; x < SCR_W; x++)
+					assert_int_equal(p[y * SCR_W + x],
+							 x == 7 ? col2 :
+							 y < 40 ? SKY :
+							 y > 40 ? GROUND :
+							 x < 30 ? SKY :
+							 x < 50 ? GROUND :
+								  mid);
+		}
+		/* index 2 at column 60 of line 40, after the line's fetch */
+		rdc_port_idle_until(hw, rdc_port_next_line(hw, 40) + 10);
+		memset(rdc_port_span(hw, 40 * LINE + 60, 1, RDC_BUS_WRITE), 2,
+		       1);
+		if (mode) { /* on demand, nobody looking: dropped */
+			rdc_hw_run_until(hw, rdc_port_next_vblank(hw));
+		} else {
+			p = grab(hw);
+			assert_int_equal(p[40 * SCR_W + 60], mid);
+			assert_int_equal(p[40 * SCR_W + 7], col2);
+		}
+		assert_int_equal(grab(hw)[40 * SCR_W + 60], col2);
+		assert_int_equal(rdc_hw_read(hw, RDC_REG_ERR_CODE),
+				 RDC_ERR_NONE);
+	}
+	rdc_hw_set_on_demand(hw, false);
+}
+
+/*
  * The list latched at vblank: turned on or off mid-frame, the frame in
- * progress keeps what it had; a WAIT at a column is met at the next line;
- * a WAIT at a line passed already is met at once.
+ * progress keeps what it had; a WAIT at a column is met at that column,
+ * one past the line's end at the next line; a WAIT at a position passed
+ * already is met at once.
  */
 static void test_latch_and_off(void **state)
 {
@@ -196,18 +271,34 @@ static void test_latch_and_off(void **state)
 	assert_int_equal(rdc_hw_read(hw, RDC_REG_RASTER_STATUS),
 			 FIELD_PREP(RDC_RASTER_STATUS_COUNT, 4));
 
-	/* column 5 of line 40: the split moves to line 41 */
+	/* column 5 of line 40: the split from there on */
 	entry(f, RL_BASE, 1, RDC_RL_WAIT, 0, wait_at(40, 5));
+	grab(hw);
+	assert_split_at(grab(hw), 40, 5, col2);
+	/* H_TOTAL (96) and past: the next line's start */
+	entry(f, RL_BASE, 1, RDC_RL_WAIT, 0, wait_at(40, SCR_W + 16));
+	grab(hw);
+	assert_split(grab(hw), 41, col2);
+	/* the last column of the line: in hblank, the line shows none */
+	entry(f, RL_BASE, 1, RDC_RL_WAIT, 0, wait_at(40, SCR_W + 15));
 	grab(hw);
 	assert_split(grab(hw), 41, col2);
 
-	/* a WAIT for a line passed: met at once, at line 41's start */
+	/* a WAIT for a position passed: met at once, at column 8 of 40 */
+	entry(f, RL_BASE, 1, RDC_RL_WAIT, 0, wait_at(40, 8));
 	entry(f, RL_BASE, 3, RDC_RL_WAIT, 0, wait_at(3, 0));
 	entry(f, RL_BASE, 4, RDC_RL_CLUT, 2, 0x123456);
 	entry(f, RL_BASE, 5, RDC_RL_WAIT, 0, wait_at(SCR_H + 4, 0));
 	p = grab(hw);
+	assert_int_equal(p[40 * SCR_W + 6], SKY);
 	assert_int_equal(p[40 * SCR_W + 7], col2);
+	assert_int_equal(p[40 * SCR_W + 8], GROUND);
 	assert_int_equal(p[41 * SCR_W + 7], 0x123456);
+	entry(f, RL_BASE, 1, RDC_RL_WAIT, 0, wait_at(40, 7));
+	p = grab(hw);
+	assert_int_equal(p[40 * SCR_W + 6], SKY);
+	assert_int_equal(p[40 * SCR_W + 7], 0x123456);
+	entry(f, RL_BASE, 1, RDC_RL_WAIT, 0, wait_at(41, 0));
 	/* never met (y >= V_TOTAL): done for the frame, no error */
 	assert_false(rdc_hw_read(hw, RDC_REG_RASTER_STATUS) &
 		     RDC_RASTER_STATUS_RUN);
@@ -431,12 +522,12 @@ static void test_fetch_cycles(void **state)
 {
 	/* line, first entry fetched on it, entries fetched */
 	static const uint32_t fetches[][3] = {
-		{ 0, 0, 2 },  /* CLUT, WAIT 5 */
-		{ 5, 2, 3 },  /* CLUT, CURSOR_FG, WAIT 9 (row 200 opens) */
-		{ 9, 5, 2 },  /* FB_STRIDE, WAIT (20, 3): met at 21 */
-		{ 12, 7, 0 }, /* nothing */
-		{ 21, 7, 4 }, /* FB_STRIDE, 2 x CLUT, END */
-		{ 40, 11, 0 },
+		{ 0, 0, 2 },   /* CLUT, WAIT 5 */
+		{ 5, 2, 3 },   /* CLUT, CURSOR_FG, WAIT 9 (row 200 opens) */
+		{ 9, 5, 2 },   /* FB_STRIDE, WAIT (20, 3) */
+		{ 12, 7, 0 },  /* nothing */
+		{ 20, 7, 0 },  /* nothing at the start: column 3's (below) */
+		{ 40, 11, 0 }, /* nothing */
 	};
 	struct hw_fx *f = *state;
 	struct rdc_hw *hw = &f->hw;
@@ -477,6 +568,25 @@ static void test_fetch_cycles(void **state)
 			11);
 	}
 	/*
+	 * Column 3 of line 20 fetches FB_STRIDE, 2 x CLUT and END in a
+	 * window of its own at the first core cycle BEAM reads 3 (30 cycles
+	 * into the line): a beat each and a miss into row 200, from the row
+	 * line 20's read left open.  A DP read there waits for all of it; one
+	 * a cycle before, which would still run into it, waits a cycle more.
+	 */
+	for (int before = 0; before < 2; before++) {
+		uint64_t t3 = rdc_port_next_line(hw, 20) + 30, stall;
+
+		rdc_port_idle_until(hw, t3 - (uint64_t)before);
+		stall = rdc_hw_read(hw, RDC_REG_PERF_STALL_LO);
+		assert_non_null(rdc_port_span(hw, 0x80000, 8, RDC_BUS_READ));
+		stall = rdc_hw_read(hw, RDC_REG_PERF_STALL_LO) - stall;
+		assert_int_equal(stall, 4 + 6 + (uint64_t)before);
+		assert_int_equal(rdc_hw_now(hw), t3 + 4 + 6 + 1 + 6);
+		grab(hw);
+	}
+
+	/*
 	 * the entries cost a beat each and a miss into their row, and the
 	 * line's read a miss back
 	 */
@@ -490,6 +600,8 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test_setup_teardown(test_split_every_frame, setup,
+						hw_fx_teardown),
+		cmocka_unit_test_setup_teardown(test_column_split, setup,
 						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_latch_and_off, setup,
 						hw_fx_teardown),

@@ -603,13 +603,14 @@ int rdc_history_first_diff(rdc_history *a, rdc_history *b, size_t *index)
 
 /*
  * The position a WAIT for (y, x) is met at, the list having reached
- * `at`: lines are fetched whole at their start, so x > 0 is the next
- * line's start (docs/hardware.md, "Raster list"); a position passed
- * already is met at once.
+ * `at`: that column of that line, a column past the line's end (h_total)
+ * the next line's start, a position passed already at once
+ * (docs/hardware.md, "Raster list").
  */
-static uint64_t wait_met(uint64_t at, uint32_t y, uint32_t x)
+static uint64_t wait_met(uint64_t at, uint32_t y, uint32_t x, uint32_t h_total)
 {
-	uint64_t p = x ? BEAM_POS((uint64_t)y + 1, 0) : BEAM_POS(y, 0);
+	uint64_t p = x >= h_total ? BEAM_POS((uint64_t)y + 1, 0) :
+				    BEAM_POS(y, x);
 
 	return p > at ? p : at;
 }
@@ -634,7 +635,7 @@ static int reg_reads(rdc_dev *dev, const uint32_t *regs, uint32_t *vals,
  * VRAM); a list the chip found bad has RASTER_CTRL.EN cleared already.
  */
 static int clut_walk(rdc_dev *dev, uint32_t rbase, uint32_t rctrl,
-		     uint32_t vram_size, uint32_t v_total,
+		     uint32_t vram_size, uint32_t h_total, uint32_t v_total,
 		     struct rdc_history_clut *c)
 {
 	uint32_t len = FIELD_GET(RDC_RASTER_CTRL_LEN, rctrl), n, k;
@@ -664,7 +665,7 @@ static int clut_walk(rdc_dev *dev, uint32_t rbase, uint32_t rctrl,
 
 			if (wy >= v_total)
 				break;
-			at = wait_met(at, wy, FIELD_GET(RDC_RL_X, w1));
+			at = wait_met(at, wy, FIELD_GET(RDC_RL_X, w1), h_total);
 			if (at >= BEAM_POS(v_total, 0))
 				break;
 			continue;
@@ -696,13 +697,24 @@ static int clut_walk(rdc_dev *dev, uint32_t rbase, uint32_t rctrl,
 int rdc_history_clut_sized(rdc_history *h, uint32_t x, uint32_t y,
 			   struct rdc_history_clut *out)
 {
-	enum { FMT, BASE, STRIDE, HDISP, VDISP, VTOTAL, RBASE, RCTRL, VSIZE };
+	enum {
+		FMT,
+		BASE,
+		STRIDE,
+		HDISP,
+		VDISP,
+		HTOTAL,
+		VTOTAL,
+		RBASE,
+		RCTRL,
+		VSIZE
+	};
 	static const uint32_t regs[] = {
 		[FMT] = RDC_REG_FB_FORMAT,     [BASE] = RDC_REG_FB_BASE,
 		[STRIDE] = RDC_REG_FB_STRIDE,  [HDISP] = RDC_REG_H_DISPLAY,
-		[VDISP] = RDC_REG_V_DISPLAY,   [VTOTAL] = RDC_REG_V_TOTAL,
-		[RBASE] = RDC_REG_RASTER_BASE, [RCTRL] = RDC_REG_RASTER_CTRL,
-		[VSIZE] = RDC_REG_VRAM_SIZE,
+		[VDISP] = RDC_REG_V_DISPLAY,   [HTOTAL] = RDC_REG_H_TOTAL,
+		[VTOTAL] = RDC_REG_V_TOTAL,    [RBASE] = RDC_REG_RASTER_BASE,
+		[RCTRL] = RDC_REG_RASTER_CTRL, [VSIZE] = RDC_REG_VRAM_SIZE,
 	};
 	struct rdc_history_clut c = { 0 };
 	uint32_t v[RDC_ARRAY_SIZE(regs)], bpp;
@@ -732,8 +744,8 @@ int rdc_history_clut_sized(rdc_history *h, uint32_t x, uint32_t y,
 	c.index = rdc_px_get(&b, bpp, (x * bpp) % 8);
 	c.source = RDC_HISTORY_CLUT_HOST;
 	if (v[RCTRL] & RDC_RASTER_CTRL_EN)
-		ret = clut_walk(h->dev, v[RBASE], v[RCTRL], v[VSIZE], v[VTOTAL],
-				&c);
+		ret = clut_walk(h->dev, v[RBASE], v[RCTRL], v[VSIZE], v[HTOTAL],
+				v[VTOTAL], &c);
 	if (ret)
 		return ret;
 	c.size = RDC_MIN(out->size, (uint32_t)sizeof(c));
