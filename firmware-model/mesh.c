@@ -533,6 +533,7 @@ uint32_t g3_cmd_mesh(struct rdc_dp *dp, uint32_t fl, const uint32_t *a)
 			return err;
 		if (out) {
 			dp->meshes_culled++;
+			hw->perf.culled++; /* PERF_CULLED */
 			return RDC_ERR_NONE;
 		}
 		vbase += vskip;

@@ -583,6 +583,8 @@ static uint32_t reg_read(struct rdc_hw *hw, uint32_t reg)
 		return hw->perf.last_cycles;
 	case RDC_REG_PERF_LAST_OPCODE:
 		return hw->perf.last_opcode;
+	case RDC_REG_PERF_CULLED:
+		return hw->perf.culled;
 	case RDC_REG_PERF_CTRL:
 		return 0;
 	default:

@@ -246,6 +246,7 @@ struct rdc_perf {
 	uint32_t cmds;	 /* commands executed */
 	uint32_t last_cycles; /* cycles of the last command */
 	uint32_t last_opcode;
+	uint32_t culled; /* meshes culled by their RDC_MESH_BOUNDS box */
 };
 
 /*

@@ -299,6 +299,8 @@ static inline uint32_t rdc_cursor_size(uint32_t ctrl)
 #define RDC_REG_PERF_LAST_OPCODE 0x328 /* R   opcode of the last command */
 #define RDC_REG_PERF_CTRL 0x32c /* W   write 1 to bit 0: zero the counters */
 #define   RDC_PERF_CTRL_CLEAR BIT(0)
+/* R   MESH commands whose RDC_MESH_BOUNDS box was outside the view volume */
+#define RDC_REG_PERF_CULLED 0x330
 
 /*
  * Registers a host read of which is not a plain read: RDATA pops a word,

@@ -91,12 +91,15 @@ static uint64_t fetch_cost(uint32_t args)
 	return (1 + args) * RDC_T_FIFO_WORD + RDC_T_DECODE;
 }
 
+/* Meshes culled: PERF_CULLED, which the DP's own count must equal. */
 static uint32_t culled(struct tdp *t)
 {
 	struct rdc_dp_view v;
+	uint32_t perf = rdc_hw_read(&t->hw, RDC_REG_PERF_CULLED);
 
 	assert_true(rdc_dp_view_get(&t->hw, &v));
-	return v.meshes_culled;
+	assert_int_equal(perf, v.meshes_culled);
+	return perf;
 }
 
 static uint32_t screen_hash(struct tdp *t)
@@ -640,6 +643,16 @@ static void test_bounds_cull(void **state)
 	assert_int_equal(tdp_err(t), 0);
 	assert_int_equal(screen_hash(t), h1);
 	assert_int_equal(culled(t), n0 + 2);
+	/* PERF_CTRL zeroes PERF_CULLED, read-only: a write is error REG */
+	rdc_hw_write(&t->hw, RDC_REG_PERF_CTRL, RDC_PERF_CTRL_CLEAR);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_CULLED), 0);
+	put_box(t, VBASE, out);
+	mesh(t, RDC_MESH_NORMALS | RDC_MESH_BOUNDS, VBASE, 24, 8);
+	tdp_drain(t);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_CULLED), 1);
+	rdc_hw_write(&t->hw, RDC_REG_PERF_CULLED, 7);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_PERF_CULLED), 1);
+	assert_int_equal(rdc_hw_read(&t->hw, RDC_REG_ERR_CODE), RDC_ERR_REG);
 	tdp_cmd(t, RDC_OP_SET_ZBUF, 0, 0, NULL);
 	tdp_drain(t);
 }

@@ -179,7 +179,7 @@ static void test_bad_offsets(void **state)
 		0x15c,		/* hole after LPEN_LATCH */
 		0x188,		/* hole after CLUT_DATA */
 		0x228,		/* hole after RDATA_COUNT */
-		0x330,		/* after PERF_CTRL */
+		0x334,		/* after PERF_CULLED */
 		RDC_REG_WINDOW, /* outside the window */
 		0xfffffffc,	/* far outside */
 	};
@@ -211,6 +211,7 @@ static void test_read_only(void **state)
 		RDC_REG_RDATA_COUNT, RDC_REG_TIME_LO,
 		RDC_REG_TIME_HI,     RDC_REG_PERF_BUSY_LO,
 		RDC_REG_PERF_CMDS,   RDC_REG_PERF_LAST_OPCODE,
+		RDC_REG_PERF_CULLED,
 	};
 	struct fx *f = *state;
 	struct rdc_hw *hw = &f->sim.hw;

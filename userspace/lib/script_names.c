@@ -160,6 +160,7 @@ static const struct {
 	RDL_REG(PERF_LAST_CYCLES),
 	RDL_REG(PERF_LAST_OPCODE),
 	RDL_REG(PERF_CTRL),
+	RDL_REG(PERF_CULLED),
 };
 
 size_t rdc_reg_count(void)
