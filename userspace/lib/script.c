@@ -343,7 +343,7 @@ static const struct rdl_stmt {
 	{ "reset", st_reset, 0, 0, 0 },
 	{ "screenshot", st_screenshot, 0, 1, 1 },
 	{ "vram-load", rdl_st_vram_load, 0, 2, 2 },
-	{ "encode", rdl_st_encode, 0, 6, 7 },
+	{ "encode", rdl_st_encode, 0, 6, 9 },
 	{ "histogram-plot", rdl_st_histogram_plot, RDC_OP_FILL_RECT, 5, 5 },
 	{ "vertices", rdl_st_vertices, 0, 1, RDL_ANY },
 	{ "indices", rdl_st_indices, 0, 1, RDL_ANY },
@@ -353,6 +353,8 @@ static const struct rdl_stmt {
 	{ "raster-reg", rdl_st_raster_reg, 0, 2, 2 },
 	{ "raster-clut", rdl_st_raster_clut, 0, 2, RDC_CLUT_ENTRIES + 1 },
 	{ "raster-end", rdl_st_raster_end, 0, 0, 0 },
+	{ "lpen", rdl_st_lpen, 0, 1, 3 },
+	{ "lpen-expect", rdl_st_lpen_expect, 0, 1, 2 },
 };
 
 const char *rdl_stmt_info(size_t i, uint32_t *min, uint32_t *max)

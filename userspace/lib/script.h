@@ -103,5 +103,8 @@ int rdl_st_raster_wait(struct rdl *r, uint32_t op);
 int rdl_st_raster_reg(struct rdl *r, uint32_t op);
 int rdl_st_raster_clut(struct rdl *r, uint32_t op);
 int rdl_st_raster_end(struct rdl *r, uint32_t op);
+/* script_pen.c: the light pen's statements */
+int rdl_st_lpen(struct rdl *r, uint32_t op);
+int rdl_st_lpen_expect(struct rdl *r, uint32_t op);
 
 #endif /* RDC_SCRIPT_H */

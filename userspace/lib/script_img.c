@@ -308,15 +308,52 @@ int rdl_st_vram_load(struct rdl *r, uint32_t op)
 }
 
 /*
- * encode rle|dpcm|btc|huff|dpcmq|dct ADDR X Y W H [grey]: the rectangle of the picture
- * on screen (the next complete frame), encoded on the host and written
- * to VRAM at ADDR.
+ * After encode's rectangle: [grey] and, for the lossy codecs, [step N]
+ * (DPCMQ's quantiser step, 1..255) or [quality N] (DCT's quality, 1..100:
+ * its quantisation table scaled); *level 0 when none is given.
+ */
+static int encode_opts(struct rdl *r, uint32_t codec, uint32_t *ch,
+		       uint32_t *level)
+{
+	const char *key = codec == RDC_IMG_DPCMQ ? "step" :
+			  codec == RDC_IMG_DCT	 ? "quality" :
+						   NULL;
+	uint32_t max = codec == RDC_IMG_DPCMQ ? 255 : 100;
+	size_t i = 7;
+	int ret;
+
+	if (i < r->ntok && (rdl_word(r, i, "grey") || rdl_word(r, i, "gray"))) {
+		*ch = 1;
+		i++;
+	}
+	if (i < r->ntok && key && rdl_word(r, i, key) && i + 1 < r->ntok) {
+		ret = rdl_u32(r, i + 1, level);
+		if (ret)
+			return ret;
+		if (!*level || *level > max)
+			return rdl_err(r, RDC_E_PARSE,
+				       "encode: %s %u is not 1..%u", key,
+				       *level, max);
+		i += 2;
+	}
+	if (i < r->ntok)
+		return rdl_err(r, RDC_E_PARSE,
+			       "encode: '%.40s' is not grey%s%s", r->tok[i].s,
+			       key ? " or " : "", key ? key : "");
+	return 0;
+}
+
+/*
+ * encode rle|dpcm|btc|huff|dpcmq|dct ADDR X Y W H [grey] [step|quality
+ * N]: the rectangle of the picture on screen (the next complete frame),
+ * encoded on the host and written to VRAM at ADDR.
  */
 int rdl_st_encode(struct rdl *r, uint32_t op)
 {
 	static const char *const codecs[] = { "rle",  "dpcm",  "btc",
 					      "huff", "dpcmq", "dct" };
 	uint32_t codec = 0, addr, xy, wh, fw, fh, w, h, ch = 3, *pix = NULL;
+	uint32_t level = 0;
 	uint8_t *smp = NULL, *out = NULL;
 	size_t cap, len;
 	int32_t x, y;
@@ -336,13 +373,9 @@ int rdl_st_encode(struct rdl *r, uint32_t op)
 		ret = rdl_rect(r, 3, &xy, &wh);
 	if (ret)
 		return ret;
-	if (r->ntok > 7) {
-		if (!rdl_word(r, 7, "grey") && !rdl_word(r, 7, "gray"))
-			return rdl_err(r, RDC_E_PARSE,
-				       "encode: '%.40s' is not grey",
-				       r->tok[7].s);
-		ch = 1;
-	}
+	ret = encode_opts(r, codec, &ch, &level);
+	if (ret)
+		return ret;
 	x = RDC_X(xy);
 	y = RDC_Y(xy);
 	w = RDC_W(wh);
@@ -369,8 +402,11 @@ int rdl_st_encode(struct rdl *r, uint32_t op)
 		ret = rdc_image_samples(pix + (size_t)y * fw + x, w, h, fw, ch,
 					smp);
 	if (!ret)
-		ret = rdc_image_encode(codec, smp, w, h, ch, (size_t)w * ch,
-				       out, cap, &len);
+		ret = level ? rdc_image_encode_lossy(codec, level, smp, w, h,
+						     ch, (size_t)w * ch, out,
+						     cap, &len) :
+			      rdc_image_encode(codec, smp, w, h, ch,
+					       (size_t)w * ch, out, cap, &len);
 	if (!ret)
 		ret = rdc_vram_write(r->dev, addr, out, len);
 	free(pix);
