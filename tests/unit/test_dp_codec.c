@@ -1005,6 +1005,101 @@ static void test_dct_corrupt(void **state)
 	free(st);
 }
 
+/* Bits most significant first into b, from bit *at on. */
+static void put_bits(uint8_t *b, uint32_t *at, uint32_t v, uint32_t n)
+{
+	while (n--) {
+		if ((v >> n) & 1)
+			b[*at / 8] |= (uint8_t)(0x80u >> (*at % 8));
+		(*at)++;
+	}
+}
+
+/*
+ * The run of an AC symbol past coefficient 63: three ZRLs (to 49), j
+ * coefficients of 1 (to 49 + j), then run 15 size 1, which would put a
+ * coefficient at 64 + j, for every j that one block allows.  Each is
+ * refused with DATA before the coefficient (-1) is stored: nothing
+ * drawn, the block's 64 coefficients as the symbols before left them
+ * (no -1 among them) and nothing of the DP's DCT state after them
+ * written (its table and predictors as the stream left them, the bytes
+ * after them untouched), wherever a store past the zigzag order's end
+ * would land: a missing check cannot go unnoticed, ASan or not.
+ */
+static void test_dct_past_63(void **state)
+{
+	struct tdp *t = *state;
+	static const uint8_t ac[] = { 0x00, 0xf0, 0x01, 0x0b, 0x30, 0xf1 };
+	uint8_t *dct = (uint8_t *)&t->dp.img.u.dct;
+	uint8_t *tail = (uint8_t *)&t->dp.img.u.dct.pred[3];
+	size_t tail_len = (size_t)(dct + sizeof(t->dp.img.u) - tail);
+	/* the zigzag order's natural indices (JPEG's) */
+	static const uint8_t zz[64] = {
+		0,  1,	8,  16, 9,  2,	3,  10, 17, 24, 32, 25, 18, 11, 4,  5,
+		12, 19, 26, 33, 40, 48, 41, 34, 27, 20, 13, 6,	7,  14, 21, 28,
+		35, 42, 49, 56, 57, 50, 43, 36, 29, 22, 15, 23, 30, 37, 44, 51,
+		58, 59, 52, 45, 38, 31, 39, 46, 53, 60, 61, 54, 47, 55, 62, 63,
+	};
+	uint8_t b[512], bits[32];
+
+	for (uint32_t j = 0; j <= 14; j++) {
+		uint32_t at = 0;
+		size_t len;
+
+		memset(bits, 0, sizeof(bits));
+		put_bits(bits, &at, 0, 1); /* DC category 0 */
+		for (int z = 0; z < 3; z++)
+			put_bits(bits, &at, 1, 8); /* ZRL */
+		for (uint32_t i = 0; i < j; i++) {
+			put_bits(bits, &at, 2, 8); /* 0x01 */
+			put_bits(bits, &at, 1, 1);
+		}
+		put_bits(bits, &at, 5, 8); /* 0xf1: run 15, -1 */
+		put_bits(bits, &at, 0, 1);
+		len = dct_one(b, 0, 0, 0, ac, 6, bits, at);
+		memset(tail, 0xa5, tail_len);
+		expect_bad(t, b, len, RDC_ERR_DATA);
+		/* the block as the refusal left it: no -1 anywhere */
+		for (uint32_t k = 0; k < RDC_IMG_DCT_QBYTES; k++) {
+			int32_t want = 0;
+
+			for (uint32_t i = 0; i < j; i++)
+				if (k == zz[49 + i])
+					want = 1;
+			assert_int_equal(t->dp.img.u.dct.blk[k], want);
+		}
+		for (uint32_t k = 0; k < RDC_IMG_DCT_QBYTES; k++)
+			assert_int_equal(t->dp.img.u.dct.q[k], 1);
+		for (uint32_t c = 0; c < 3; c++)
+			assert_int_equal(t->dp.img.u.dct.pred[c], 0);
+		for (size_t i = 0; i < tail_len; i++)
+			if (tail[i] != 0xa5)
+				fail_msg("j %u: byte %zu after the block's "
+					 "coefficients written",
+					 j, i);
+	}
+	/* two ZRLs (to 33), 15 coefficients, run 15: the last one, 63 */
+	{
+		uint32_t at = 0;
+		size_t len;
+
+		memset(bits, 0, sizeof(bits));
+		put_bits(bits, &at, 0, 1);
+		for (int z = 0; z < 2; z++)
+			put_bits(bits, &at, 1, 8);
+		for (uint32_t i = 0; i < 15; i++) {
+			put_bits(bits, &at, 2, 8);
+			put_bits(bits, &at, 1, 1);
+		}
+		put_bits(bits, &at, 5, 8);
+		put_bits(bits, &at, 1, 1);
+		len = dct_one(b, 0, 0, 0, ac, 6, bits, at);
+		decode_at(t, b, len, (uint32_t)len, 0, 0);
+		assert_int_equal(tdp_err(t), RDC_ERR_NONE);
+		tdp_clear_err(t);
+	}
+}
+
 static void test_dct_dc_limit(void **state)
 {
 	struct tdp *t = *state;
@@ -1061,6 +1156,7 @@ int main(void)
 		TDP_TEST(test_dct),
 		TDP_TEST(test_dct_quality),
 		TDP_TEST(test_dct_corrupt),
+		TDP_TEST(test_dct_past_63),
 		TDP_TEST(test_dct_dc_limit),
 		TDP_TEST(test_dct_cycles),
 	};
