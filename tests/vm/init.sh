@@ -4,7 +4,8 @@
 # /init of the VM tests' initramfs (tests/vm/run.sh builds it): mount the
 # host's root read-only over 9p at /host, then for each test load the
 # modules its "# vm-module:" lines name, run it chrooted into the host
-# root, unload them, and report on the console:
+# root, unload every module loaded since it began (see leftovers), and
+# report on the console:
 #   RDC-VM-BEGIN NAME
 #   (what the test printed)
 #   RDC-VM-RESULT NAME STATUS SECONDS
@@ -39,17 +40,71 @@ case "$RDC_TREE/ $RDC_BUILD/" in
 esac
 mount -t tmpfs tmp "/host$scratch"
 
+# leftovers: unload the modules loaded since /tmp/mods.before was taken
+# (those the test's "# vm-module:" lines named, their dependencies, and
+# any the test or the kernel loaded on the way), newest first as
+# /proc/modules lists them, so that a module goes before those it uses.
+# A module that stays loaded is a reference the test left behind (a
+# process still running, a file or mount still open, a device still
+# bound, a configfs directory not removed): print a "not ok" line naming
+# it, its reference count and holders, and what may hold it; false then.
+# /proc/modules decides, not modprobe's status: busybox's modprobe -r
+# NAME unloads NAME and then its dependencies, and exits 1 when one of
+# those is still used by a module loaded beside it (modprobe -r usb_f_fs
+# unloads usb_f_fs, libcomposite and configfs, and fails on udc_core,
+# which dummy_hcd uses).
+leftovers() {
+	cut -d' ' -f1 /proc/modules | grep -vxF -f /tmp/mods.before >/tmp/mods.new
+	# a reference can go a moment after its last holder exits (a
+	# work item, a deferred close): a few tries before blaming the test
+	i=0
+	while [ -s /tmp/mods.new ] && [ $i -lt 30 ]; do
+		[ $i = 0 ] || sleep 0.1
+		for m in $(cat /tmp/mods.new); do
+			grep -q "^$m " /proc/modules || continue
+			# rmmod for one outside the initramfs's modules.dep
+			modprobe -r "$m" 2>/dev/null || rmmod "$m" 2>/dev/null
+		done
+		cut -d' ' -f1 /proc/modules | grep -xF -f /tmp/mods.new >/tmp/mods.left
+		mv /tmp/mods.left /tmp/mods.new
+		i=$((i + 1))
+	done
+	[ -s /tmp/mods.new ] || return 0
+	for m in $(cat /tmp/mods.new); do
+		h=$(echo $(ls /sys/module/$m/holders 2>/dev/null))
+		echo "not ok - module $m left loaded: refcnt" \
+			"$(cat /sys/module/$m/refcnt 2>/dev/null), holders: ${h:-none}"
+	done
+	# what may hold them: processes and the device files they hold
+	# open, mounts, gadgets, consoles
+	left=""
+	for p in /proc/[0-9]*; do
+		cmd=$(tr '\0' ' ' <"$p/cmdline" 2>/dev/null)
+		# not this shell, nor a kernel thread (no command line)
+		[ "${p#/proc/}" != 1 ] && [ -n "$cmd" ] || continue
+		echo "    process ${p#/proc/}: $cmd"
+		ls -l "$p/fd" 2>/dev/null | sed -n 's|.* -> \(.*/dev/.*\)|      fd \1|p'
+		left="$left ${p#/proc/}"
+	done
+	grep -E ' (functionfs|configfs|usbfs|debugfs) ' /proc/mounts | sed 's/^/    mount: /'
+	ls -d /sys/kernel/config/usb_gadget/* 2>/dev/null | sed 's/^/    gadget: /'
+	for v in /sys/class/vtconsole/vtcon*; do
+		echo "    $(basename "$v"): $(cat "$v/name") bind $(cat "$v/bind")"
+	done 2>/dev/null
+	# the next test starts without this one's processes
+	[ -z "$left" ] || kill -KILL $left 2>/dev/null
+	return 1
+}
+
 for t in $RDC_TESTS; do
 	f=/host$RDC_TREE/tests/vm/tests/$t.sh
-	loaded=""
 	rc=0
 	t0=$(date +%s)
 	echo "RDC-VM-BEGIN $t"
+	cut -d' ' -f1 /proc/modules >/tmp/mods.before
 	sed -n 's/^# vm-module: *//p' "$f" >/tmp/mods
 	while read -r name args; do
-		if modprobe "$name" $args; then
-			loaded="$name $loaded"
-		else
+		if ! modprobe "$name" $args; then
 			echo "modprobe $name failed"
 			rc=1
 		fi
@@ -63,9 +118,7 @@ for t in $RDC_TESTS; do
 			</dev/null 2>&1
 		rc=$?
 	fi
-	for m in $loaded; do
-		modprobe -r "$m" || echo "cannot unload $m"
-	done
+	leftovers || rc=1
 	echo "RDC-VM-RESULT $t $rc $(($(date +%s) - t0))"
 done
 echo RDC-VM-DONE

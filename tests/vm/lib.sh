@@ -99,6 +99,10 @@ finish() {
 #   # vm-module: libcomposite
 #   # vm-module: usb_f_fs
 # usb_require exits 77 (skip) saying why when that cannot work here.
+# From usb_require on, a test that exits before taking its gadgets down
+# (a skip, a failure) has them taken down on its way out (usb_atexit):
+# the harness unloads the modules after each test and fails one that
+# leaves a module it loaded behind (tests/vm/README.md).
 GADGET=$RDC_TREE/scripts/rdc-gadget.sh
 USB_RDCD=${USB_RDCD:-$B/rdcd} # rdcd to run (a test may pick san/rdcd)
 USB_VID=1209
@@ -114,6 +118,7 @@ USB_DEVNUM=""
 export RDC_GADGET_STATE=$T/gadget
 
 usb_require() {
+	trap usb_atexit EXIT
 	if ! [ -x "$USB_RDCD" ] || ! "$USB_RDCD" --help | grep -q 'ffs:'; then
 		echo "rdcd is not built, or has no ffs: listener"
 		exit 77
@@ -130,6 +135,37 @@ usb_require() {
 		echo "no UDC (dummy_hcd not loaded?)"
 		exit 77
 	fi
+}
+
+# usb_atexit: the EXIT trap: stop what the test left running (rdcd, a
+# writer), take down every gadget rdc-gadget.sh still keeps state for,
+# and unmount configfs if usb_require mounted it; the exit status stays.
+# A skip's reason is the last line it printed: quiet then.
+usb_atexit() {
+	arc=$?
+	trap - EXIT
+	if [ $arc = 77 ]; then
+		usb_takedown >/dev/null 2>&1
+	else
+		usb_takedown
+	fi
+	exit $arc
+}
+
+usb_takedown() {
+	writer_stop
+	if [ -n "$USB_RDCD_PID" ]; then
+		echo "# on exit: rdcd $USB_RDCD_PID still runs: stopped"
+		timeout 30 "$GADGET" unbind >/dev/null 2>&1
+		usb_rdcd_stop
+	fi
+	for s in "$RDC_GADGET_STATE"/*; do
+		[ -d "$s" ] || continue
+		echo "# on exit: gadget $(basename "$s") still up: taken down"
+		"$GADGET" down --name "$(basename "$s")"
+	done
+	[ -z "${USB_CONFIGFS:-}" ] || ! grep -q " /sys/kernel/config configfs " \
+		/proc/mounts || umount /sys/kernel/config
 }
 
 # usb_find: set USB_SYSFS, USB_BUSNUM, USB_DEVNUM for our device (by
