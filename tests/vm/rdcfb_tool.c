@@ -86,22 +86,31 @@ static int open_fb(const char *dev, struct fb_fix_screeninfo *fix,
 	return fd;
 }
 
-/* The latest frame into *px (malloc'ed); 0 or -1. */
+/*
+ * The latest frame into *px (malloc'ed); 0 or -1.  Its size comes from a
+ * first call; a frame that grew before the second (another client set a
+ * bigger mode) answers E2BIG with the new size, and is asked for again.
+ */
 static int get_frame(int fd, struct rdcfb_frame *f, uint32_t **px)
 {
+	int tries;
+
 	memset(f, 0, sizeof(*f));
 	if (ioctl(fd, RDCFB_IOC_FRAME, f))
 		return -1;
-	*px = malloc((size_t)f->width * f->height * 4);
-	if (!*px)
-		return -1;
-	f->pixels = (uintptr_t)*px;
-	f->cap = f->width * f->height;
-	if (ioctl(fd, RDCFB_IOC_FRAME, f)) {
+	for (tries = 0; tries < 10; tries++) {
+		*px = malloc((size_t)f->width * f->height * 4);
+		if (!*px)
+			return -1;
+		f->pixels = (uintptr_t)*px;
+		f->cap = f->width * f->height;
+		if (!ioctl(fd, RDCFB_IOC_FRAME, f))
+			return 0;
 		free(*px);
-		return -1;
+		if (errno != E2BIG)
+			return -1;
 	}
-	return 0;
+	return -1;
 }
 
 static uint32_t crc_le(const uint32_t *px, size_t n)
