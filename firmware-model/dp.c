@@ -617,6 +617,18 @@ static bool cmd_begin(struct rdc_dp *dp)
 	else
 		return false;
 	dp->cmd_start = hw->now;
+	/* most commands are in the FIFO whole: one pop, not two */
+	if (src == RDC_SRC_FIFO) {
+		uint32_t got =
+			rdc_port_cmd_pop_whole(hw, dp->cmd, RDC_CMD_MAX_ARGS);
+
+		if (got) {
+			dp->src = src;
+			dp->cmd_have = dp->cmd_len = got;
+			dp->phase = RDC_DP_FETCH;
+			return true;
+		}
+	}
 	if (rdc_port_cmd_pop(hw, src, dp->cmd, 1) != 1)
 		return false;
 	dp->src = src;
@@ -665,10 +677,12 @@ static uint64_t dp_run(void *opaque, uint64_t until)
 			continue;
 		case RDC_DP_FETCH:
 			/* (a list command arrives whole: nothing to pop) */
-			got = rdc_port_cmd_pop(hw, dp->src,
-					       dp->cmd + dp->cmd_have,
-					       dp->cmd_len - dp->cmd_have);
-			dp->cmd_have += got;
+			if (dp->cmd_have < dp->cmd_len) {
+				got = rdc_port_cmd_pop(
+					hw, dp->src, dp->cmd + dp->cmd_have,
+					dp->cmd_len - dp->cmd_have);
+				dp->cmd_have += got;
+			}
 			if (dp->cmd_have < dp->cmd_len)
 				goto out; /* the host owes us words */
 			rdc_port_compute(hw, RDC_T_DECODE);

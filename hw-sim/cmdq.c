@@ -195,6 +195,26 @@ static uint32_t ring_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 	return got;
 }
 
+uint32_t rdc_port_cmd_pop_whole(struct rdc_hw *hw, uint32_t *dst,
+				uint32_t max_args)
+{
+	uint32_t n, before = hw->fifo_count;
+
+	if (!before || hw->trace_fn)
+		return 0;
+	n = 1 + RDC_CMD_LEN(hw->fifo[hw->fifo_head]);
+	/*
+	 * Popped apart, the header's pop could cross the low-water mark (an
+	 * IRQ n - 1 words earlier) or let scanout events in (a frame
+	 * listener reading FIFO_COUNT between the pops).
+	 */
+	if (n - 1 > max_args || n > before ||
+	    (before > hw->fifo_lowwater && before - 1 <= hw->fifo_lowwater) ||
+	    rdc_crtc_due(hw, hw->now + n * RDC_T_FIFO_WORD))
+		return 0;
+	return fifo_pop(hw, dst, n);
+}
+
 uint32_t rdc_port_cmd_pop(struct rdc_hw *hw, unsigned int src, uint32_t *dst,
 			  uint32_t n)
 {

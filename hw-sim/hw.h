@@ -362,6 +362,17 @@ uint32_t rdc_port_cmd_avail(struct rdc_hw *hw, unsigned int src);
  */
 uint32_t rdc_port_cmd_pop(struct rdc_hw *hw, unsigned int src, uint32_t *dst,
 			  uint32_t n);
+/*
+ * The FIFO's next command whole, header and arguments, when all its words
+ * are waiting, it announces no more than max_args and one pop of them all
+ * does what popping the header and then the rest does (the same cycles,
+ * interrupts and scanout events: not when the header alone would cross
+ * the low-water mark, a scanout event falls within the fetch, or the FIFO
+ * is traced).  Returns the words popped, or 0 (nothing popped): pop the
+ * header, then the rest.
+ */
+uint32_t rdc_port_cmd_pop_whole(struct rdc_hw *hw, uint32_t *dst,
+				uint32_t max_args);
 
 /* Readback FIFO: free words, and push up to n (returns words pushed). */
 uint32_t rdc_port_rdata_space(struct rdc_hw *hw);

@@ -124,6 +124,150 @@ static void test_fifo_lowwater(void **state)
 	assert_true(rdc_hw_pins(hw) & RDC_PIN_IRQ);
 }
 
+static void no_trace(void *ctx, uint64_t time, unsigned int event, uint32_t a,
+		     uint32_t b)
+{
+	(void)ctx;
+	(void)time;
+	(void)event;
+	(void)a;
+	(void)b;
+}
+
+/*
+ * A whole command in one pop against its header and then the rest in two
+ * (on a twin chip): the same words, cycles and low-water interrupt, or
+ * nothing popped where the two pops would differ from one.
+ */
+static void test_fifo_pop_whole(void **state)
+{
+	struct hw_fx *f = *state, twin;
+	struct rdc_hw *hw = &f->hw, *tw = &twin.hw;
+	uint32_t w[8], v[8], i;
+	const uint32_t cmd[] = { RDC_CMD(RDC_OP_FILL_RECT, 0, 2),
+				 11,
+				 22,
+				 RDC_CMD(RDC_OP_SET_FG, 0, 1),
+				 33,
+				 RDC_CMD(RDC_OP_FILL_RECT, 0, 2),
+				 44,
+				 55,
+				 RDC_CMD(RDC_OP_SET_FG, 0, 1),
+				 66 };
+
+	assert_int_equal(hw_fx_init(&twin, VRAM_SIZE, FRAME_CAP), 0);
+	rdc_hw_write(tw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
+	rdc_hw_write(tw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
+	/* 10 words; low-water 7: the second command's header crosses it */
+	for (i = 0; i < RDC_ARRAY_SIZE(cmd); i++) {
+		rdc_hw_write(hw, RDC_REG_FIFO_DATA, cmd[i]);
+		rdc_hw_write(tw, RDC_REG_FIFO_DATA, cmd[i]);
+	}
+	rdc_hw_write(hw, RDC_REG_FIFO_LOWWATER, 7);
+	rdc_hw_write(tw, RDC_REG_FIFO_LOWWATER, 7);
+
+	/* whole: 10 -> 7, the mark reached by the last argument word */
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 3);
+	assert_int_equal(rdc_port_cmd_pop(tw, RDC_SRC_FIFO, v, 1), 1);
+	assert_int_equal(rdc_port_cmd_pop(tw, RDC_SRC_FIFO, v + 1, 2), 2);
+	assert_memory_equal(w, cmd, 3 * sizeof(*w));
+	assert_memory_equal(v, cmd, 3 * sizeof(*v));
+	assert_int_equal(hw->now, tw->now);
+	assert_int_equal(hw->now, 3 * RDC_T_FIFO_WORD);
+	assert_int_equal(hw->irq_status, RDC_IRQ_FIFO_LOW);
+	assert_int_equal(tw->irq_status, RDC_IRQ_FIFO_LOW);
+	rdc_hw_write(hw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
+	rdc_hw_write(tw, RDC_REG_IRQ_STATUS, RDC_IRQ_ALL);
+
+	/* more than max_args: left to the header pop */
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 0), 0);
+	assert_int_equal(hw->fifo_count, 7);
+	/* traced: every pop is the tracer's event, so two of them */
+	rdc_hw_set_trace(hw, no_trace, NULL);
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 0);
+	rdc_hw_set_trace(hw, NULL, NULL);
+	assert_int_equal(hw->now, tw->now);
+	assert_int_equal(hw->fifo_count, 7);
+
+	/* 7 -> 5 below the mark already: no edge either way */
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 2);
+	assert_int_equal(rdc_port_cmd_pop(tw, RDC_SRC_FIFO, v, 2), 2);
+	assert_int_equal(w[1], 33);
+	assert_int_equal(hw->now, tw->now);
+	assert_int_equal(hw->irq_status, 0);
+
+	/* refill to 9 with the mark at 8: the header's pop would cross it */
+	rdc_hw_write(hw, RDC_REG_FIFO_DATA, cmd[3]);
+	rdc_hw_write(hw, RDC_REG_FIFO_DATA, cmd[4]);
+	rdc_hw_write(hw, RDC_REG_FIFO_DATA, cmd[0]);
+	rdc_hw_write(hw, RDC_REG_FIFO_DATA, cmd[1]);
+	rdc_hw_write(hw, RDC_REG_FIFO_LOWWATER, 8);
+	assert_int_equal(hw->fifo_count, 9);
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 0);
+	assert_int_equal(hw->fifo_count, 9);
+	assert_int_equal(hw->irq_status, 0);
+	rdc_hw_write(hw, RDC_REG_FIFO_LOWWATER, 4);
+	/* 9 -> 6 (FILL_RECT 44 55), 6 -> 4 (SET_FG 66) */
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 3);
+	assert_int_equal(w[1], 44);
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 2);
+	assert_int_equal(w[1], 66);
+	assert_int_equal(hw->irq_status, RDC_IRQ_FIFO_LOW);
+	/* 4 words: SET_FG 33, then a FILL_RECT short of its last word */
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 2);
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 0);
+	assert_int_equal(hw->fifo_count, 2);
+	rdc_port_cmd_pop(hw, RDC_SRC_FIFO, w, 2);
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 0);
+	hw_fx_fini(&twin);
+}
+
+#define SCAN_CAP (1024u * 768u) /* frames for any preset */
+
+/* With scanout on: not when a line starts during the fetch. */
+static void test_fifo_pop_whole_scanout(void **state)
+{
+	struct hw_fx *f = *state;
+	struct rdc_hw *hw = &f->hw;
+	struct rdc_hw_config cfg = { .vram_size = VRAM_SIZE };
+	uint32_t *f0 = calloc(SCAN_CAP, 4), *f1 = calloc(SCAN_CAP, 4);
+	uint32_t w[4];
+	uint64_t line;
+
+	assert_non_null(f0);
+	assert_non_null(f1);
+	/* the fixture's frames are too small for a preset: its own */
+	rdc_hw_init(hw, &cfg, f->vram, f0, f1, SCAN_CAP);
+	rdc_hw_write(hw, RDC_REG_MODE_PRESET, RDC_PRESET_320x200_70);
+	rdc_hw_write(hw, RDC_REG_FB_FORMAT, RDC_FMT_I8);
+	rdc_hw_write(hw, RDC_REG_FB_STRIDE, 320);
+	rdc_hw_write(hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
+	assert_true(hw->crtc.running);
+	/* past the first line's start, then up to two words' time before
+	 * the next one */
+	rdc_port_idle_until(hw, hw->now + 1);
+	line = hw->crtc.next_line_time;
+	assert_true(line > hw->now + 3 * RDC_T_FIFO_WORD);
+	rdc_port_idle_until(hw, line - 3 * RDC_T_FIFO_WORD);
+	assert_int_equal(hw->crtc.next_line_time, line);
+	/* two words end a word before the line start: whole */
+	rdc_hw_write(hw, RDC_REG_FIFO_DATA, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+	rdc_hw_write(hw, RDC_REG_FIFO_DATA, 7);
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 2);
+	assert_int_equal(w[1], 7);
+	assert_int_equal(hw->now, line - RDC_T_FIFO_WORD);
+	assert_int_equal(hw->crtc.next_line_time, line);
+	/* two more would end a word after it: left to the two pops */
+	rdc_hw_write(hw, RDC_REG_FIFO_DATA, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+	rdc_hw_write(hw, RDC_REG_FIFO_DATA, 8);
+	assert_int_equal(rdc_port_cmd_pop_whole(hw, w, 4), 0);
+	assert_int_equal(hw->fifo_count, 2);
+	assert_int_equal(hw->now, line - RDC_T_FIFO_WORD);
+	free(f0);
+	free(f1);
+}
+
 static void ring_program(struct rdc_hw *hw, uint32_t base, uint32_t size,
 			 uint32_t head, uint32_t tail)
 {
@@ -290,6 +434,10 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_fifo_overflow, setup,
 						hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_fifo_fetch_cost_and_order,
+						setup, hw_fx_teardown),
+		cmocka_unit_test_setup_teardown(test_fifo_pop_whole, setup,
+						hw_fx_teardown),
+		cmocka_unit_test_setup_teardown(test_fifo_pop_whole_scanout,
 						setup, hw_fx_teardown),
 		cmocka_unit_test_setup_teardown(test_fifo_lowwater, setup,
 						hw_fx_teardown),
