@@ -169,6 +169,7 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 {
 	uint64_t a = addr, t;
 	uint32_t i;
+	bool uniform;
 
 	rdc_port_poll(hw);
 	if (!count || !len ||
@@ -176,20 +177,44 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 		return NULL;
 	t = hw->now;
 	rdc_crtc_catch_up(hw, t);
+	/*
+	 * Elements of one beat each, a DRAM row or more apart: once one is
+	 * charged, every element after it opens a new row and costs what
+	 * the next one does, so those that end by the next scanout event
+	 * are charged together (a steep line's column that an event cuts
+	 * is hundreds of them).
+	 */
+	uniform = stride % RDC_BUS_BYTES == 0 && stride >= RDC_DRAM_ROW_BYTES &&
+		  a % RDC_BUS_BYTES + len <= RDC_BUS_BYTES;
 	for (i = 0; i < count; i++, a += stride) {
 		struct rdc_crtc *c = &hw->crtc;
 		uint32_t row = hw->bus.open_row;
-		uint64_t cost;
+		uint64_t cost, k;
 
 		/* bus_burst's first step, without the call */
 		if (t >= c->fetch_end &&
 		    (!c->running || c->next_line_time > t)) {
 			cost = rdc_bus_cost(&row, a, len, kind, 1);
-			if (bus_quiet(c, t, cost)) {
-				hw->bus.open_row = row;
-				t += cost;
+			if (!bus_quiet(c, t, cost)) {
+				bus_burst(hw, &t, a, len, kind);
 				continue;
 			}
+			k = 1;
+			if (uniform && i &&
+			    hw->bus.open_row ==
+				    (a - stride) / RDC_DRAM_ROW_BYTES) {
+				k = c->running ?
+					    (c->next_line_time - t) / cost :
+					    count - i;
+				k = RDC_MIN(k, (uint64_t)(count - i));
+				row = (uint32_t)((a + (k - 1) * stride) /
+						 RDC_DRAM_ROW_BYTES);
+			}
+			hw->bus.open_row = row;
+			t += k * cost;
+			i += (uint32_t)k - 1;
+			a += (k - 1) * stride;
+			continue;
 		}
 		bus_burst(hw, &t, a, len, kind);
 	}
