@@ -19,32 +19,22 @@ static inline uint32_t fmt_mask(unsigned int bpp)
 #define FILL_STORE 32 /* bytes of pattern one store of dp_fill32 writes */
 
 /*
- * n XRGB8888 pixels of v: memset when the bytes agree, else stores of a
- * pattern block of a fixed size, which the compiler keeps in registers
- * (wide stores, no reads): the first block where the pixels start, the
- * others from the first 16-byte boundary on, so that no store but the
- * first and the last splits a cache line, two blocks a pass (pixman's
- * fill does the same; rdc-bench's fill with scanout off about 3% less
- * CPU), the last one ending at the end (overlapping the one before:
- * every pixel is v).  Pixels not 4-byte aligned in memory keep their phase by
- * not being realigned.
+ * len bytes (FILL_STORE or more) of the pattern blk, one XRGB8888 pixel
+ * repeated, at p: stores of the whole block, which the compiler keeps in
+ * registers (wide stores, no reads): the first block where the pixels
+ * start, the others from the first 16-byte boundary on, so that no store
+ * but the first and the last splits a cache line, two blocks a pass
+ * (pixman's fill does the same; rdc-bench's fill with scanout off about
+ * 3% less CPU), the last one ending at the end (overlapping the one
+ * before: every pixel is the same).  Pixels not 4-byte aligned in memory
+ * keep their phase by not being realigned.  A caller filling many rows
+ * builds blk once, outside its loop, where it stays in registers.
  */
-static inline void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
+static rdc_always_inline void fill32_blocks(uint8_t *p, const uint8_t *blk,
+					    size_t len)
 {
-	size_t len = (size_t)n * 4, i;
-	uint8_t blk[FILL_STORE], *e = p + len;
+	uint8_t *e = p + len;
 
-	if ((v & 0xff) * 0x01010101u == v) {
-		rdc_memset(p, (int)(v & 0xff), len);
-		return;
-	}
-	if (len < FILL_STORE) {
-		for (i = 0; i < len; i += 4)
-			rdc_st32(p + i, v);
-		return;
-	}
-	for (i = 0; i < FILL_STORE; i += 4)
-		rdc_st32(blk + i, v);
 	rdc_memcpy(p, blk, FILL_STORE);
 	if (((uintptr_t)p & 3) == 0)
 		p = (uint8_t *)(((uintptr_t)p + 16) & ~(uintptr_t)15);
@@ -60,6 +50,26 @@ static inline void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
 	}
 	if (p < e)
 		rdc_memcpy(e - FILL_STORE, blk, FILL_STORE);
+}
+
+/* n XRGB8888 pixels of v: memset when its bytes agree, else the blocks. */
+static inline void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
+{
+	size_t len = (size_t)n * 4, i;
+	uint8_t blk[FILL_STORE];
+
+	if ((v & 0xff) * 0x01010101u == v) {
+		rdc_memset(p, (int)(v & 0xff), len);
+		return;
+	}
+	if (len < FILL_STORE) {
+		for (i = 0; i < len; i += 4)
+			rdc_st32(p + i, v);
+		return;
+	}
+	for (i = 0; i < FILL_STORE; i += 4)
+		rdc_st32(blk + i, v);
+	fill32_blocks(p, blk, len);
 }
 
 /*
