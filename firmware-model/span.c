@@ -187,9 +187,10 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	const struct rdc_port_run *r = dp->runs + first, *end = r + n;
-	uint32_t stride = s->stride, v;
+	uint32_t stride = s->stride, v, k;
 	uint64_t pixels = 0;
-	uint8_t pair[8];
+	uint8_t pair[8], blk[FILL_STORE];
+	bool same;
 
 	if (rdc_format_bpp(s->format) != 32 || rdc_rop_reads_dst(dp->st.rop)) {
 		for (; r < end; r++)
@@ -203,11 +204,18 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 	v = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
 	rdc_st32(pair, v);
 	rdc_st32(pair + 4, v);
+	/* dp_fill32's pattern built once for all runs (see rect_rows32) */
+	for (k = 0; k < FILL_STORE; k += 4)
+		rdc_st32(blk + k, v);
+	same = (v & 0xff) * 0x01010101u == v;
 	for (; r < end; r++) {
 		uint8_t *q = p + r->addr;
 
 		if (r->count == 1 && r->len >= FILL_BLOCK) {
-			dp_fill32(q, v, r->len / 4);
+			if (same)
+				rdc_memset(q, (int)(v & 0xff), r->len);
+			else
+				fill32_blocks(q, blk, r->len);
 			pixels += r->len / 4;
 			continue;
 		}
