@@ -48,10 +48,13 @@ writer_stop() {
 }
 
 # Wait until the device has a format (a writer wrote), at most $1 s.
+# v4l2loopback's sysfs "format" is empty until then; G_FMT is not a sign
+# (0.13 answers it with a default before any writer).
 wait_device() {
 	i=0
 	while [ $i -lt $(($1 * 10)) ]; do
-		v4l2-ctl -d "$DEV" --get-fmt-video >/dev/null 2>&1 && return 0
+		[ -n "$(cat "/sys/class/video4linux/${DEV#/dev/}/format" \
+			2>/dev/null)" ] && return 0
 		sleep 0.1
 		i=$((i + 1))
 	done
