@@ -31,8 +31,10 @@
  * CONTROL bit 6 reads 0.  1.2 added the raster list (RASTER_*), holes in
  * the map before it.  1.3 added the light pen (LPEN_*, RDC_IRQ_LPEN,
  * STATUS.LPEN), holes in the map and IRQ bit 5 reading 0 before it.
+ * 1.4 added PERF_CULLED (a hole before it) and raster-list WAITs for a
+ * column (before it, a WAIT for column x > 0 held until the next line).
  */
-#define RDC_VERSION_VALUE 0x00010003u
+#define RDC_VERSION_VALUE 0x00010004u
 #define RDC_REG_WINDOW 0x400u
 
 /* ---- Identification and control ------------------------------------- */
