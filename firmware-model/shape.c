@@ -37,6 +37,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	uint32_t n = (uint32_t)(xb - xa + 1), v, rows, done, k;
 	uint64_t pixels = 0;
 	uint8_t *p, blk[FILL_STORE];
+	bool fast;
 
 	if (s->format != RDC_FMT_XRGB8888 || rdc_rop_reads_dst(dp->st.rop))
 		return false;
@@ -45,6 +46,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	v = rdc_rop_apply(dp->st.rop, dp->st.fg, 0);
 	for (k = 0; k < FILL_STORE; k += 4)
 		rdc_st32(blk + k, v);
+	fast = n * 4 >= FILL_STORE && (v & 0xff) * 0x01010101u != v;
 	one.addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
 	one.len = n * 4;
 	one.count = 1;
@@ -56,7 +58,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 		for (k = 0; k < done && k < FILL_AHEAD; k++)
 			row_prefetch(w.vram + one.addr + k * s->stride,
 				     one.len);
-		if (n * 4 >= FILL_STORE && (v & 0xff) * 0x01010101u != v) {
+		if (fast) {
 			/*
 			 * dp_fill32's rows, the pattern built once for all
 			 * (in registers, not stored and reloaded a row:
@@ -88,8 +90,14 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 		hw->perf.pixels += pixels;
 		pixels = 0;
 		p = rdc_port_span(hw, one.addr, one.len, RDC_BUS_WRITE);
-		if (p)
-			dp_run_write(dp, p, &one, dp->st.fg);
+		if (p) {
+			/* dp_run_write's bytes for the row, the block built */
+			if (fast)
+				fill32_blocks(p, blk, one.len);
+			else
+				dp_fill32(p, v, n);
+			hw->perf.pixels += n;
+		}
 		rdc_port_window_open(hw, &w);
 		one.addr += s->stride;
 		rows--;
