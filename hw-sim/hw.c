@@ -212,6 +212,61 @@ void rdc_hw_state(const struct rdc_hw *hw, struct rdc_hw_state *s)
 	s->next_line = hw->crtc.next_line;
 }
 
+void rdc_hw_resume_get(const struct rdc_hw *hw, struct rdc_hw_resume *s)
+{
+	s->now = hw->now;
+	s->frame_start = hw->crtc.running ? hw->crtc.frame_start : hw->now;
+	s->frame_count = hw->crtc.frame_count;
+	s->perf = hw->perf;
+	s->fence = hw->fence;
+	s->irq_status = hw->irq_status;
+	s->err_code = hw->err_code;
+	s->err_info = hw->err_info;
+	s->open_row = hw->bus.open_row;
+	s->scanning = hw->crtc.running;
+	s->dp_active = hw->dp_active;
+	s->timing = hw->crtc.cur;
+	s->fb_base = hw->crtc.cur_base;
+	s->fb_stride = hw->crtc.cur_stride;
+	s->fb_format = hw->crtc.cur_format;
+	s->cursor_ctrl = hw->crtc.cur_cursor_ctrl;
+	s->cursor_base = hw->crtc.cur_cursor_base;
+	s->raster_base = hw->crtc.cur_raster_base;
+	s->raster_ctrl = hw->crtc.cur_raster_ctrl;
+	s->gamma = hw->crtc.cur_gamma;
+}
+
+/*
+ * The frame restarts at frame_start (a SCANOUT_EN turned on then, which
+ * latches what the host wrote) and runs to `now` as it ran there; what the
+ * run cannot know, the counters, comes from `s` at the end.
+ */
+int rdc_hw_resume(struct rdc_hw *hw, const struct rdc_hw_resume *s)
+{
+	if (s->now < hw->now || s->frame_start > s->now ||
+	    s->frame_start < hw->now || hw->dp_active || hw->in_reset)
+		return -1;
+	if (hw->crtc.running)
+		rdc_crtc_stop(hw);
+	/* no fetch of the fresh chip's holds the bus into the new frame */
+	hw->crtc.fetch_end = 0;
+	if (s->scanning && (hw->control & RDC_CONTROL_SCANOUT_EN)) {
+		hw->now = s->frame_start;
+		rdc_crtc_start(hw);
+		rdc_hw_run_until(hw, s->now);
+	}
+	hw->now = s->now;
+	hw->crtc.frame_count = s->frame_count;
+	hw->perf = s->perf;
+	hw->fence = s->fence;
+	hw->irq_status = s->irq_status & RDC_IRQ_ALL;
+	hw->err_code = s->err_code;
+	hw->err_info = s->err_info;
+	hw->bus.open_row = s->open_row;
+	rdc_pins_update(hw, hw->now);
+	return 0;
+}
+
 void rdc_hw_get_trace(const struct rdc_hw *hw, rdc_trace_fn *fn, void **ctx)
 {
 	*fn = hw->trace_fn;

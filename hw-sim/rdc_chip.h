@@ -436,6 +436,47 @@ struct rdc_hw_state {
 };
 
 void rdc_hw_state(const struct rdc_hw *hw, struct rdc_hw_state *s);
+/*
+ * Where a chip's run has got to beyond what its registers read back, for
+ * a trace that starts on a chip that has run (librdc's recorder on a
+ * device of the kernel's or a daemon's): replay starts a fresh chip there
+ * with rdc_hw_resume.  frame_start is when line 0 of the frame being
+ * scanned started (now while scanout is stopped).
+ */
+struct rdc_hw_resume {
+	uint64_t now, frame_start, frame_count;
+	struct rdc_perf perf;
+	uint32_t fence, irq_status, err_code, err_info;
+	uint32_t open_row; /* the DRAM row the bus has open (bus.h) */
+	bool scanning;	   /* a mode is in force and scanout runs */
+	bool dp_active;	   /* the DP has work or is inside a command */
+	/*
+	 * What the CRTC has in force, latched at the last vblank (its
+	 * registers read what was written for the next one): the timing,
+	 * FB_BASE/STRIDE/FORMAT, CURSOR_CTRL/BASE, RASTER_BASE/CTRL and
+	 * CONTROL.GAMMA_EN.
+	 */
+	struct rdc_timing timing;
+	uint32_t fb_base, fb_stride, fb_format;
+	uint32_t cursor_ctrl, cursor_base;
+	uint32_t raster_base, raster_ctrl;
+	bool gamma;
+};
+
+void rdc_hw_resume_get(const struct rdc_hw *hw, struct rdc_hw_resume *s);
+/*
+ * Move an idle chip (its DP without work, RESET_N high) whose registers,
+ * CLUT and VRAM the host has written as they were to `s` (the latched
+ * registers as s has them in force): with scanout on, the frame restarts
+ * at s->frame_start (everything written is latched, as turning
+ * SCANOUT_EN on does) and runs to s->now; the host then writes the
+ * latched registers' values for the next vblank.  After the run the
+ * counters, FENCE, IRQ_STATUS, ERR_* and the bus's open row are s's.
+ * Returns -1 (nothing changed) if s->frame_start is before hw->now or
+ * after s->now, or the chip is not idle.  The run is s->now -
+ * s->frame_start cycles: the caller bounds it.
+ */
+int rdc_hw_resume(struct rdc_hw *hw, const struct rdc_hw_resume *s);
 /* The tracer set (rdc_hw_set_trace), so that another can chain to it. */
 void rdc_hw_get_trace(const struct rdc_hw *hw, rdc_trace_fn *fn, void **ctx);
 /* Whether a VRAM watcher is set (rdc_hw_set_vram_hook). */
