@@ -118,5 +118,7 @@ int rdcdrm_ioctl_frame(struct drm_device *drm, void *data,
 		       struct drm_file *file);
 int rdcdrm_ioctl_vram(struct drm_device *drm, void *data,
 		      struct drm_file *file);
+int rdcdrm_ioctl_state(struct drm_device *drm, void *data,
+		       struct drm_file *file);
 
 #endif /* RDCDRM_H */

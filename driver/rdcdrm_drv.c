@@ -69,6 +69,7 @@ static const struct drm_ioctl_desc rdcdrm_ioctls[] = {
 			  DRM_RENDER_ALLOW),
 	DRM_IOCTL_DEF_DRV(RDC_FRAME, rdcdrm_ioctl_frame, DRM_RENDER_ALLOW),
 	DRM_IOCTL_DEF_DRV(RDC_VRAM, rdcdrm_ioctl_vram, DRM_RENDER_ALLOW),
+	DRM_IOCTL_DEF_DRV(RDC_STATE, rdcdrm_ioctl_state, DRM_RENDER_ALLOW),
 };
 
 DEFINE_DRM_GEM_FOPS(rdcdrm_fops);
