@@ -6,8 +6,9 @@
  * "Traces"), replayed by rdc_replay_file on fresh sim: devices, and once
  * more with a pixel history open (rdc_replay_history), as `rdcctl
  * replay`, `why` and `diff` read them.  Seeds: tests/fuzz/seeds/trace
- * (timed traces of golden scenes, version 2, and untimed ones, version 3
- * with SUBMIT records).
+ * (timed traces of golden scenes, version 2, untimed ones, version 3
+ * with SUBMIT records, and a client's on a 64 KiB sim:, version 4 with
+ * its STATE record: registers, CLUT, deflated VRAM, the core's state).
  *
  * Checked: the replay ends with 0 or an RDC_E_* code; on success the
  * records counted do not exceed what the input could hold, and a history

@@ -297,7 +297,7 @@ static void test_long_step_recorded(void **state)
 	assert_int_equal(rdc_sim_step(dev, minute + 5), 0);
 	rdc_close(dev);
 	assert_int_equal(rdc_replay_file(trace, &res, NULL), 0);
-	assert_int_equal(res.records, 2);
+	assert_int_equal(res.records, 3); /* STATE, two STEPs */
 	assert_int_equal(res.time, minute + 5);
 	assert_int_equal(res.mismatches, 0);
 }

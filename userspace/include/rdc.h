@@ -659,7 +659,11 @@ struct rdc_replay_result {
 
 /*
  * Play a trace back on a fresh sim: device: the same operations at the
- * same simulated times give the same frames and cycle counts.  `dev_out`
+ * same simulated times give the same frames and cycle counts.  A trace
+ * rdc_record_start wrote starts with the state of the device then (its
+ * registers, CLUT, VRAM and, where the device tells, its time, frame
+ * phase and counters: docs/protocol.md, "Traces"); the fresh device
+ * starts there.  `dev_out`
  * (may be NULL) receives the device afterwards, for the caller to
  * inspect and rdc_close.  RDC_E_FILE, RDC_E_PARSE for a damaged trace
  * (rdc_last_error_detail says where); a trace cut short is not damaged:
@@ -677,6 +681,15 @@ static inline int rdc_replay_file(const char *path,
 }
 
 /*
+ * A fresh sim: device as the trace at `path` starts: its STATE record
+ * replayed (rdc_record_start's traces), and nothing after it; of a trace
+ * without one, a fresh sim: of its VRAM size.  For running something
+ * else from the same start (`rdcctl diff` of a trace and a script).
+ * RDC_E_FILE, RDC_E_PARSE as rdc_replay_file.
+ */
+int rdc_replay_open(const char *path, rdc_dev **dev);
+
+/*
  * Record every operation this handle makes on its device, from now until
  * rdc_record_stop or rdc_close, into a trace at `path` (created or
  * truncated) that rdc_replay_file and `rdcctl replay`, `why`, `diff`
@@ -687,7 +700,9 @@ static inline int rdc_replay_file(const char *path,
  * cost an operation of its own to ask, and be late on a paced device):
  * replay runs its operations in order and compares what they returned,
  * not when.  Only this handle's operations are recorded, not another
- * client's of the same daemon, nor what rdcfb.ko's console draws.
+ * client's of the same daemon, nor what rdcfb.ko's console draws; the
+ * trace starts with the device's state (the DP first finishes what it
+ * has queued), so a replay starts where the recording did.
  * RDC_E_BUSY if the handle is already recorded, RDC_E_FILE if the file
  * cannot be written (rdc_last_error_detail says why).  While recording,
  * rdc_pins_get and rdc_pins_wait read the register PINS through the

@@ -158,6 +158,14 @@ struct rdc_backend {
 			 uint64_t *count, uint64_t *dropped);
 	int (*hist_set)(rdc_dev *dev, uint32_t what, uint32_t value);
 	int (*hist_close)(rdc_dev *dev);
+
+	/*
+	 * Optional: where the chip's run has got to beyond its registers
+	 * (rdc_hw_resume_get), for the start of a trace (record.c): sim:
+	 * reads its chip, fbdev: and drm: ask the module (RDCFB_IOC_STATE,
+	 * DRM_IOCTL_RDC_STATE).
+	 */
+	int (*resume_get)(rdc_dev *dev, struct rdc_hw_resume *s);
 };
 
 /* Backends (one file each). */

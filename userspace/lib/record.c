@@ -25,6 +25,9 @@
  *     PINS        u32 mask, u32 levels: the inputs in mask (RDC_PINS_IN)
  *                 driven to levels (version 2 on)
  *     SUBMIT      u32 n, n command words, i32 result (version 3 on)
+ *     STATE       u32 what, [core section], u32 n, n (u32 reg, u32 value),
+ *                 u32 256, the CLUT, u32 zlen, VRAM deflated (version 4
+ *                 on, the first record only)
  *
  * Version 1 is version 2 without PINS: such traces still replay.
  * Version 3 adds the flags word and SUBMIT.  A recorder on a device
@@ -33,12 +36,18 @@
  * for it, which would be an operation of its own, paid for with a round
  * trip (an ioctl) per record and still not exact on a paced device, whose
  * time moves between the question and the operation.  So it writes an
- * untimed trace: version 3, flag REC_F_UNTIMED, every time 0; replay runs
+ * untimed trace: flag REC_F_UNTIMED (version 3 on), every time 0; replay runs
  * its operations in order and compares what they return, not when.  Such
  * a device takes command words in bulk (its backend's submit: the FIFO
  * is fed on the other side), and SUBMIT records them as the client gave
  * them; replay feeds them to sim: as rdc_submit does there.  A timed
- * trace, rdcd's or a client's on sim:, is written as version 2 as before.
+ * trace of rdcd's is written as version 2 as before.
+ *
+ * Version 4 adds STATE, the first record of rdc_record_start's traces
+ * (timed or not): the device a client opens has usually run (rdcfb.ko's
+ * since the module loaded), and replay starts from a fresh chip, so the
+ * recorder writes where the device is (rec_state_put) and replay puts
+ * its chip there (rdc_hw_resume) before the first operation.
  * The same layout, as a table: docs/protocol.md, "Traces".
  *
  * The file is flushed whenever a client gets an answer (after REG_READ,
@@ -51,6 +60,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
 #include "kchip.h"
 #include "rdc_priv.h"
@@ -150,7 +160,8 @@ static void rec_u32x2(struct rdc_server_rec *r, uint8_t op, uint32_t a,
 }
 
 static struct rdc_server_rec *rec_open(const char *path, uint32_t vram_size,
-				       uint32_t flags, int *err)
+				       uint32_t version, uint32_t flags,
+				       int *err)
 {
 	struct rdc_server_rec *r = calloc(1, sizeof(*r));
 	uint8_t b[12];
@@ -168,10 +179,10 @@ static struct rdc_server_rec *rec_open(const char *path, uint32_t vram_size,
 	}
 	r->untimed = flags & REC_F_UNTIMED;
 	rec_put(r, REC_MAGIC, REC_MAGIC_LEN);
-	rdc_proto_put32(b, flags ? REC_VERSION_FLAGS : REC_VERSION);
+	rdc_proto_put32(b, version);
 	rdc_proto_put32(b + 4, vram_size);
 	rdc_proto_put32(b + 8, flags);
-	rec_put(r, b, flags ? 12 : 8);
+	rec_put(r, b, version >= REC_VERSION_FLAGS ? 12 : 8);
 	rec_sync(r);
 	return r;
 }
@@ -180,7 +191,7 @@ struct rdc_server_rec *rdc_server_rec_open(const char *path, uint32_t vram_size)
 {
 	int err;
 
-	return rec_open(path, vram_size, 0, &err);
+	return rec_open(path, vram_size, REC_VERSION, 0, &err);
 }
 
 /* The wrapper's table for `inner`: what it lacks, the wrapper lacks. */
@@ -583,6 +594,114 @@ static const struct rdc_backend rdc_backend_rec = {
 
 /* ---- The client's recorder (rdc.h) ---------------------------------------- */
 
+/*
+ * The STATE record: where the device is as the recording starts, read
+ * through its own backend before the recorder wraps it (none of it is the
+ * client's).  Work the DP still has queued runs first (a wait for it to
+ * go idle, as rdc_idle_wait's), so that the start is a point where the
+ * DP has nothing in hand: a kernel's chip on a stepped clock keeps the
+ * console's commands queued until somebody waits.  Then the core's state
+ * (the backend's resume_get, where it has one), the registers of
+ * rec_state_regs, the CLUT and VRAM, deflated.
+ */
+static int rec_state_put(struct rdc_server_rec *r, rdc_dev *dev, uint32_t vram)
+{
+	const struct rdc_backend *be = dev->be;
+	struct rdc_wait w = { .needs_dp = true };
+	struct rdc_hw_resume hs;
+	uint32_t what = 0, v, clut_index = 0, regs[REC_STATE_REGS][2];
+	uint8_t *img = NULL, *z = NULL, b[REC_STATE_CORE_LEN];
+	uLongf zlen;
+	int ret = 0;
+
+	w.term[0].kind = RDC_WAIT_TEST_EQ;
+	w.term[0].reg = RDC_REG_STATUS;
+	w.term[0].mask = RDC_STATUS_IDLE_MASK | RDC_STATUS_FIFO_EMPTY;
+	w.term[0].value = RDC_STATUS_FIFO_EMPTY;
+	w.budget = RDC_WAIT_BUDGET_DEFAULT;
+	if (be->wait)
+		(void)be->wait(dev, &w); /* a halted DP is part of the state */
+	if (be->resume_get && !be->resume_get(dev, &hs))
+		what |= REC_STATE_CORE;
+	for (size_t i = 0; i < REC_STATE_REGS && !ret; i++) {
+		regs[i][0] = rec_state_regs[i];
+		ret = be->reg_read(dev, rec_state_regs[i], &regs[i][1]);
+		if (rec_state_regs[i] == RDC_REG_CLUT_INDEX)
+			clut_index = regs[i][1];
+	}
+	if (ret)
+		return ret;
+
+	b[0] = REC_STATE;
+	rdc_proto_put64(b + 1, what & REC_STATE_CORE ? hs.now : 0);
+	rdc_proto_put32(b + 9, what);
+	rec_put(r, b, 13);
+	if (what & REC_STATE_CORE) {
+		rdc_proto_put64(b, hs.now);
+		rdc_proto_put64(b + 8, hs.frame_start);
+		rdc_proto_put64(b + 16, hs.frame_count);
+		rdc_proto_put64(b + 24, hs.perf.busy);
+		rdc_proto_put64(b + 32, hs.perf.stall);
+		rdc_proto_put64(b + 40, hs.perf.pixels);
+		rdc_proto_put32(b + 48, hs.perf.cmds);
+		rdc_proto_put32(b + 52, hs.perf.last_cycles);
+		rdc_proto_put32(b + 56, hs.perf.last_opcode);
+		rdc_proto_put32(b + 60, hs.fence);
+		rdc_proto_put32(b + 64, hs.irq_status);
+		rdc_proto_put32(b + 68, hs.err_code);
+		rdc_proto_put32(b + 72, hs.err_info);
+		rdc_proto_put32(b + 76, hs.open_row);
+		rdc_proto_put32(b + 80,
+				(hs.scanning ? REC_STATE_SCANNING : 0) |
+					(hs.dp_active ? REC_STATE_DP_ACTIVE :
+							0) |
+					(hs.gamma ? REC_STATE_GAMMA : 0));
+		for (size_t i = 0; i < REC_STATE_INFORCE; i++)
+			rdc_proto_put32(b + 84 + 4 * i,
+					*rec_state_inforce(&hs, i));
+		rdc_proto_put32(b + 152, hs.perf.culled);
+		rec_put(r, b, REC_STATE_CORE_LEN);
+	}
+	rdc_proto_put32(b, (uint32_t)REC_STATE_REGS);
+	rec_put(r, b, 4);
+	for (size_t i = 0; i < REC_STATE_REGS; i++) {
+		rdc_proto_put32(b, regs[i][0]);
+		rdc_proto_put32(b + 4, regs[i][1]);
+		rec_put(r, b, 8);
+	}
+	/* CLUT_DATA reads step CLUT_INDEX: from 0, then put it back */
+	rdc_proto_put32(b, REC_STATE_CLUT);
+	rec_put(r, b, 4);
+	ret = be->reg_write(dev, RDC_REG_CLUT_INDEX, 0);
+	for (uint32_t i = 0; i < REC_STATE_CLUT && !ret; i++) {
+		ret = be->reg_read(dev, RDC_REG_CLUT_DATA, &v);
+		rdc_proto_put32(b, v);
+		rec_put(r, b, 4);
+	}
+	if (!ret)
+		ret = be->reg_write(dev, RDC_REG_CLUT_INDEX, clut_index);
+
+	zlen = compressBound(vram);
+	img = ret ? NULL : malloc(vram);
+	z = img ? malloc(zlen) : NULL;
+	if (!ret && !z)
+		ret = RDC_E_NOMEM;
+	for (uint32_t a = 0; !ret && a < vram; a += RDC_MIN(vram - a, 1u << 20))
+		ret = be->vram_read(dev, a, img + a,
+				    RDC_MIN(vram - a, 1u << 20));
+	if (!ret && compress2(z, &zlen, img, vram, 1) != Z_OK)
+		ret = RDC_E_NOMEM;
+	if (!ret) {
+		rdc_proto_put32(b, (uint32_t)zlen);
+		rec_put(r, b, 4);
+		rec_put(r, z, zlen);
+		rec_sync(r);
+	}
+	free(img);
+	free(z);
+	return ret;
+}
+
 int rdc_record_start(rdc_dev *dev, const char *path)
 {
 	struct rdc_server_rec *r;
@@ -607,9 +726,15 @@ int rdc_record_start(rdc_dev *dev, const char *path)
 				      "%s: the device reports %u bytes of "
 				      "VRAM",
 				      path, vram);
-	r = rec_open(path, vram, rdc_sim_hw(dev) ? 0 : REC_F_UNTIMED, &ret);
+	r = rec_open(path, vram, REC_VERSION_STATE,
+		     rdc_sim_hw(dev) ? 0 : REC_F_UNTIMED, &ret);
 	if (!r)
 		return ret;
+	ret = rec_state_put(r, dev, vram);
+	if (ret) {
+		rdc_server_rec_close(r, NULL);
+		return ret;
+	}
 	if (r->err) {
 		ret = rdc_err_detail(r->err, "%s: %s", path, strerror(errno));
 		rdc_server_rec_close(r, NULL);

@@ -13,8 +13,9 @@
 #define REC_MAGIC_LEN	  8u
 #define REC_VERSION	  2u /* a timed trace */
 #define REC_VERSION_FLAGS 3u /* the flags word and SUBMIT */
+#define REC_VERSION_STATE 4u /* STATE: where the chip was at the start */
 #define REC_VERSION_MIN	  1u /* no PINS records */
-#define REC_VERSION_MAX	  REC_VERSION_FLAGS
+#define REC_VERSION_MAX	  REC_VERSION_STATE
 /* The header up to version 2: magic, u32 version, u32 VRAM size. */
 #define REC_HEAD_LEN (REC_MAGIC_LEN + 8u)
 /* Every record starts with u8 op, u64 time. */
@@ -34,6 +35,19 @@ enum rec_op {
 	REC_END = 7,
 	REC_PINS = 8,
 	REC_SUBMIT = 9,
+	REC_STATE = 10,
 };
+
+/* STATE's `what` (version 4 on) */
+#define REC_STATE_CORE	0x1u /* the core section: rdc_hw_resume's */
+#define REC_STATE_KNOWN REC_STATE_CORE
+/* its core section's flags */
+#define REC_STATE_SCANNING	 0x1u
+#define REC_STATE_DP_ACTIVE	 0x2u
+#define REC_STATE_GAMMA		 0x4u /* CONTROL.GAMMA_EN in force */
+#define REC_STATE_CORE_FLAGS_ALL 0x7u
+/* the core section's bytes: 6 u64, 8 u32, u32 flags, 17 u32 in force,
+ * u32 PERF_CULLED */
+#define REC_STATE_CORE_LEN (6u * 8u + 8u * 4u + 4u + 17u * 4u + 4u)
 
 #endif /* RDC_RECORD_H */

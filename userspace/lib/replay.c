@@ -34,6 +34,9 @@ struct replay {
 	bool cut;	 /* the file ended inside a record */
 	uint64_t at;	 /* where the record replaying began */
 	uint32_t powers; /* POWER records so far */
+	bool state;	 /* a STATE record was replayed */
+	bool watching;	 /* the first chip's history is open (rp_watch) */
+	bool start_only; /* rdc_replay_open: the STATE record, no more */
 	/* rdc_replay_history: the history to keep across power cycles */
 	const uint32_t *watch; /* x, y, w, h, flags; NULL: none */
 	rdc_history *hist;
@@ -70,6 +73,191 @@ static int rp_too_much(struct replay *p, const char *op, const char *what,
 			      asked, max);
 }
 
+/* A STATE record that cannot be one: say which and why. */
+static int rp_state_bad(struct replay *p, const char *why)
+{
+	return rdc_err_detail(RDC_E_PARSE,
+			      "%s: record %" PRIu64 " (STATE at byte %" PRIu64
+			      "): %s",
+			      p->path, p->res->records + 1, p->at, why);
+}
+
+static bool rp_state_reg(uint32_t reg)
+{
+	for (size_t i = 0; i < REC_STATE_REGS; i++)
+		if (rec_state_regs[i] == reg)
+			return true;
+	return false;
+}
+
+/* The core section of a STATE record (REC_STATE_CORE_LEN bytes at b). */
+static void rp_state_core(const uint8_t *b, struct rdc_hw_resume *s)
+{
+	uint32_t fl = rdc_proto_get32(b + 80);
+
+	s->now = rdc_proto_get64(b);
+	s->frame_start = rdc_proto_get64(b + 8);
+	s->frame_count = rdc_proto_get64(b + 16);
+	s->perf.busy = rdc_proto_get64(b + 24);
+	s->perf.stall = rdc_proto_get64(b + 32);
+	s->perf.pixels = rdc_proto_get64(b + 40);
+	s->perf.cmds = rdc_proto_get32(b + 48);
+	s->perf.last_cycles = rdc_proto_get32(b + 52);
+	s->perf.last_opcode = rdc_proto_get32(b + 56);
+	s->fence = rdc_proto_get32(b + 60);
+	s->irq_status = rdc_proto_get32(b + 64);
+	s->err_code = rdc_proto_get32(b + 68);
+	s->err_info = rdc_proto_get32(b + 72);
+	s->open_row = rdc_proto_get32(b + 76);
+	s->scanning = fl & REC_STATE_SCANNING;
+	s->dp_active = fl & REC_STATE_DP_ACTIVE;
+	s->gamma = fl & REC_STATE_GAMMA;
+	for (size_t i = 0; i < REC_STATE_INFORCE; i++)
+		*rec_state_inforce(s, i) = rdc_proto_get32(b + 84 + 4 * i);
+	s->perf.culled = rdc_proto_get32(b + 152);
+}
+
+/*
+ * What a latched register had in force at the start (`s`, its core
+ * section, while scanning) in *v, in place of the value read back;
+ * false for a register whose value read back is in force.
+ */
+static bool rp_state_inforce(struct rdc_hw_resume *s, uint32_t reg, uint32_t *v)
+{
+	if (!s->scanning)
+		return false;
+	if (reg == RDC_REG_CONTROL) {
+		*v = (*v & ~RDC_CONTROL_GAMMA_EN) |
+		     (s->gamma ? RDC_CONTROL_GAMMA_EN : 0);
+		return true;
+	}
+	for (size_t i = 0; i < REC_STATE_INFORCE; i++) {
+		if (rec_state_latched[i] == reg) {
+			*v = *rec_state_inforce(s, i);
+			return true;
+		}
+	}
+	return false;
+}
+
+/*
+ * STATE (record.c): the fresh chip becomes the one the recording started
+ * on.  VRAM and the CLUT first, then the registers in their order, then
+ * the core's run (rdc_hw_resume), which restarts the frame where the
+ * recorded one started and latches what was written.  Only as the first
+ * record, once; every size is checked before it is used.
+ */
+static int rp_state(struct replay *p)
+{
+	const struct rdc_backend *be = p->dev->be;
+	struct rdc_hw_resume hs = { 0 };
+	uint8_t b[REC_STATE_CORE_LEN];
+	uint32_t what, n, regs[REC_STATE_REGS][2], zl;
+	uint8_t *z;
+	uLongf got;
+	int ret = 0;
+
+	if (p->version < REC_VERSION_STATE)
+		return rp_state_bad(p, "a STATE record in a trace of version 3 "
+				       "or before");
+	if (p->state || p->res->records)
+		return rp_state_bad(p, "not the first record");
+	if (rp_get(p, b, 4))
+		return RDC_E_PARSE;
+	what = rdc_proto_get32(b);
+	if (what & ~REC_STATE_KNOWN)
+		return rp_state_bad(p, "unknown sections");
+	if (what & REC_STATE_CORE) {
+		if (rp_get(p, b, REC_STATE_CORE_LEN))
+			return RDC_E_PARSE;
+		rp_state_core(b, &hs);
+		if (rdc_proto_get32(b + 80) & ~REC_STATE_CORE_FLAGS_ALL)
+			return rp_state_bad(p, "unknown core flags");
+		if (hs.frame_start > hs.now)
+			return rp_state_bad(p,
+					    "its frame starts after its time");
+		if (hs.now - hs.frame_start > REC_MAX_CYCLES)
+			return rp_too_much(p, "STATE", "cycles into its frame",
+					   hs.now - hs.frame_start,
+					   REC_MAX_CYCLES);
+	}
+	if (rp_get(p, b, 4))
+		return RDC_E_PARSE;
+	n = rdc_proto_get32(b);
+	if (n > REC_STATE_REGS)
+		return rp_state_bad(p, "more registers than a STATE names");
+	for (uint32_t i = 0; i < n; i++) {
+		if (rp_get(p, b, 8))
+			return RDC_E_PARSE;
+		regs[i][0] = rdc_proto_get32(b);
+		regs[i][1] = rdc_proto_get32(b + 4);
+		if (!rp_state_reg(regs[i][0]))
+			return rp_state_bad(p, "a register a STATE does not "
+					       "restore");
+	}
+	if (rp_get(p, b, 4))
+		return RDC_E_PARSE;
+	if (rdc_proto_get32(b) != REC_STATE_CLUT)
+		return rp_state_bad(p, "not 256 CLUT entries");
+	ret = be->reg_write(p->dev, RDC_REG_CLUT_INDEX, 0);
+	for (uint32_t i = 0; i < REC_STATE_CLUT && !ret; i++) {
+		if (rp_get(p, b, 4))
+			return RDC_E_PARSE;
+		ret = be->reg_write(p->dev, RDC_REG_CLUT_DATA,
+				    rdc_proto_get32(b));
+	}
+	if (ret || rp_get(p, b, 4))
+		return RDC_E_PARSE;
+	zl = rdc_proto_get32(b);
+	if (zl > compressBound(p->vram) || zl > REC_STATE_MAX_Z)
+		return rp_state_bad(p, "its VRAM is larger than zlib makes "
+				       "the trace's VRAM size");
+	z = malloc(zl ? zl : 1);
+	if (!z)
+		return RDC_E_NOMEM;
+	if (rp_get(p, z, zl)) {
+		free(z);
+		return RDC_E_PARSE;
+	}
+	got = p->vram;
+	if (uncompress(p->buf, &got, z, zl) != Z_OK || got != p->vram)
+		ret = rp_state_bad(p, "its VRAM does not inflate to the "
+				      "trace's VRAM size");
+	free(z);
+	if (!ret && be->vram_write(p->dev, 0, p->buf, p->vram))
+		ret = RDC_E_PARSE;
+	/* the latched registers as they were in force, for the latch */
+	for (uint32_t i = 0; i < n && !ret; i++) {
+		uint32_t v = regs[i][1];
+
+		if (regs[i][0] == RDC_REG_CONTROL)
+			v &= ~(RDC_CONTROL_SOFT_RESET | RDC_CONTROL_RESUME);
+		regs[i][1] = v;
+		if (what & REC_STATE_CORE)
+			rp_state_inforce(&hs, regs[i][0], &v);
+		ret = be->reg_write(p->dev, regs[i][0], v);
+	}
+	if (ret)
+		return ret < 0 ? ret : RDC_E_PARSE;
+	if (!(what & REC_STATE_CORE)) {
+		p->state = true;
+		return 0;
+	}
+	if (rdc_hw_resume(rdc_sim_hw(p->dev), &hs))
+		return rp_state_bad(p, "the chip cannot start there");
+	/* and what was written for the next vblank */
+	for (uint32_t i = 0; i < n && !ret; i++) {
+		uint32_t v = regs[i][1];
+
+		if (rp_state_inforce(&hs, regs[i][0], &v) && v != regs[i][1])
+			ret = be->reg_write(p->dev, regs[i][0], regs[i][1]);
+	}
+	if (ret)
+		return ret < 0 ? ret : RDC_E_PARSE;
+	p->state = true;
+	return 0;
+}
+
 static void rp_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 		     uint64_t n)
 {
@@ -85,6 +273,8 @@ static void rp_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 	res->frames_crc = (uint32_t)crc32(res->frames_crc, le, sizeof(le));
 }
 
+static int rp_watch(struct replay *p);
+
 static int rp_open(struct replay *p)
 {
 	char uri[48];
@@ -97,6 +287,15 @@ static int rp_open(struct replay *p)
 	if (ret)
 		return ret == RDC_E_URI ? RDC_E_PARSE : ret;
 	rdc_hw_set_frame_fn(rdc_sim_hw(p->dev), rp_frame, p->res);
+	/* the first chip's history starts after a STATE record (rp_watch) */
+	if (!p->powers)
+		return 0;
+	return rp_watch(p);
+}
+
+/* The history to keep (rdc_replay_history), on the chip replaying. */
+static int rp_watch(struct replay *p)
+{
 	if (p->hist)
 		return rdc_history_attach(p->hist, p->dev);
 	if (p->watch)
@@ -114,7 +313,8 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 	uint32_t v;
 	int ret;
 
-	if (op != REC_POWER && !p->untimed && rdc_hw_now(hw) != t)
+	if (op != REC_POWER && op != REC_STATE && !p->untimed &&
+	    rdc_hw_now(hw) != t)
 		p->res->mismatches++;
 	switch (op) {
 	case REC_REG_WRITE:
@@ -217,6 +417,8 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 			p->res->mismatches++;
 		return 0;
 	}
+	case REC_STATE:
+		return rp_state(p);
 	default:
 		return RDC_E_PARSE;
 	}
@@ -224,10 +426,10 @@ static int rp_one(struct replay *p, uint8_t op, uint64_t t)
 
 static int replay_file(const char *path, struct rdc_replay_result *res,
 		       rdc_dev **dev_out, const uint32_t *watch,
-		       rdc_history **hist)
+		       rdc_history **hist, bool start_only)
 {
 	struct rdc_replay_result dummy;
-	struct replay p = { .watch = watch };
+	struct replay p = { .watch = watch, .start_only = start_only };
 	uint8_t hdr[REC_MAGIC_LEN + 8], rec[9], fl[4];
 	int ret;
 
@@ -286,7 +488,7 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 		 * unknown op in the last bytes is damage all the same. */
 		if (ret && p.cut &&
 		    (p.off == at ||
-		     (rec[0] >= REC_REG_WRITE && rec[0] <= REC_SUBMIT))) {
+		     (rec[0] >= REC_REG_WRITE && rec[0] <= REC_STATE))) {
 			p.res->truncated = 1;
 			ret = 0;
 			break;
@@ -319,6 +521,15 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 				p.res->mismatches++;
 			break;
 		}
+		if (p.start_only && (rec[0] != REC_STATE || p.res->records))
+			break;
+		/* the chip as the recording started is no write of it */
+		if (!ret && !p.watching && rec[0] != REC_STATE) {
+			p.watching = true;
+			ret = rp_watch(&p);
+			if (ret)
+				break;
+		}
 		/* pixel history: the record that is replaying (1-based) */
 		p.dev->src_line = (uint32_t)RDC_MIN(p.res->records + 1,
 						    (uint64_t)UINT32_MAX);
@@ -333,6 +544,8 @@ static int replay_file(const char *path, struct rdc_replay_result *res,
 			rp_bad(&p, "bad record", at);
 		p.res->records++;
 	}
+	if (!ret && p.dev && !p.watching)
+		ret = rp_watch(&p);
 	if (p.dev)
 		p.res->time = rdc_hw_now(rdc_sim_hw(p.dev));
 	fclose(p.f);
@@ -356,7 +569,7 @@ int rdc_replay_file_sized(const char *path, struct rdc_replay_result *res,
 			  rdc_dev **dev_out)
 {
 	struct rdc_replay_result full;
-	int ret = replay_file(path, &full, dev_out, NULL, NULL);
+	int ret = replay_file(path, &full, dev_out, NULL, NULL, false);
 
 	if (res)
 		rdc_struct_out(res, &full, sizeof(full));
@@ -375,8 +588,15 @@ int rdc_replay_history_sized(const char *path, uint32_t x, uint32_t y,
 	if (!hist)
 		return RDC_E_INVAL;
 	*hist = NULL;
-	ret = replay_file(path, &full, dev_out, watch, hist);
+	ret = replay_file(path, &full, dev_out, watch, hist, false);
 	if (res)
 		rdc_struct_out(res, &full, sizeof(full));
 	return ret;
+}
+
+int rdc_replay_open(const char *path, rdc_dev **dev)
+{
+	if (!dev)
+		return RDC_E_INVAL;
+	return replay_file(path, NULL, dev, NULL, NULL, true);
 }

@@ -373,6 +373,12 @@ struct rdc_hw *rdc_sim_hw(rdc_dev *dev)
 	return dev && dev->be == &rdc_backend_sim ? sim_of(dev)->hw : NULL;
 }
 
+static int sim_resume_get(rdc_dev *dev, struct rdc_hw_resume *s)
+{
+	rdc_hw_resume_get(rdc_sim_hw(dev), s);
+	return 0;
+}
+
 const struct rdc_backend rdc_backend_sim = {
 	.scheme = "sim",
 	.open = sim_open,
@@ -387,4 +393,5 @@ const struct rdc_backend rdc_backend_sim = {
 	.frame_grab = sim_frame_grab,
 	.pins_set = sim_pins_set,
 	.pins_wait = sim_pins_wait,
+	.resume_get = sim_resume_get,
 };
