@@ -325,12 +325,14 @@ static int is_trace(const char *path)
  * it brings, with a history open.  A script's device error is no failure:
  * its history up to there is what is wanted.  *ret_run gets it; *untimed
  * (may be NULL) whether the trace has no times (rdc_record_start's on a
- * device other than sim:).
+ * device other than sim:).  A script runs from where the trace `start`
+ * starts (may be NULL: a fresh device of `uri`) when `uri` is sim:'s
+ * default (diff: the two from the same chip).
  */
 static int open_run(const char *uri, const char *path, const uint32_t *spec,
 		    uint32_t flags, size_t limit, rdc_history **h,
 		    rdc_dev **dev, int *ret_run, struct frames *fr,
-		    int *untimed)
+		    int *untimed, const char *start)
 {
 	int ret;
 
@@ -360,9 +362,17 @@ static int open_run(const char *uri, const char *path, const uint32_t *spec,
 				path);
 		return ret;
 	}
-	ret = rdcctl_open(uri, dev);
-	if (ret)
-		return ret;
+	if (start && !strcmp(uri, DEFAULT_URI)) {
+		ret = rdc_replay_open(start, dev);
+		if (ret) {
+			rdcctl_error(start, ret);
+			return ret;
+		}
+	} else {
+		ret = rdcctl_open(uri, dev);
+		if (ret)
+			return ret;
+	}
 	ret = rdc_history_open(*dev, spec[0], spec[1], spec[2], spec[3], flags,
 			       h);
 	if (ret) {
@@ -403,7 +413,7 @@ static int cmd_history(struct hopts *o)
 
 	o->trace = is_trace(o->script);
 	if (open_run(o->uri, o->script, spec, 0, o->limit, &h, &dev, &ret, NULL,
-		     NULL))
+		     NULL, NULL))
 		return 1;
 	if (o->png)
 		save_frame(dev, o->png);
@@ -455,7 +465,8 @@ struct side {
 	struct frames fr; /* a script's every frame; none for a trace */
 };
 
-static int side_run(const char *uri, struct side *s)
+/* `start`: the other side's trace, where a script starts (open_run) */
+static int side_run(const char *uri, struct side *s, const char *start)
 {
 	static const uint32_t none[4] = { 0, 0, 0, 0 };
 	rdc_history *h = NULL;
@@ -464,7 +475,7 @@ static int side_run(const char *uri, struct side *s)
 
 	s->trace = is_trace(s->path);
 	ret = open_run(uri, s->path, none, RDC_HISTORY_WRITES, 0, &h, &dev,
-		       &s->ret, &s->fr, &s->untimed);
+		       &s->ret, &s->fr, &s->untimed, start);
 	if (ret)
 		return ret;
 	s->n = rdc_history_write_count(h);
@@ -544,9 +555,10 @@ static int cmd_diff(const struct hopts *o)
 	uint32_t *out = NULL;
 	int ret, differs = 0;
 
-	ret = side_run(o->uri, &a);
+	/* a script against a trace runs from where the trace starts */
+	ret = side_run(o->uri, &a, is_trace(b.path) ? b.path : NULL);
 	if (!ret)
-		ret = side_run(o->uri, &b);
+		ret = side_run(o->uri, &b, is_trace(a.path) ? a.path : NULL);
 	if (ret)
 		goto out;
 	differs = rdc_history_first_diff(a.h, b.h, &i) == 1;
