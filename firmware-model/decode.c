@@ -126,6 +126,28 @@ static void emit_row(struct rdc_dp *dp, const struct dec *d, uint32_t row,
 	emit_seg(dp, d, row, 0, d->w, s);
 }
 
+/*
+ * An RLE packet's header: lit literals follow, or a run of px; false at
+ * the end of the data.
+ */
+static bool rle_packet(struct rdc_dp *dp, const struct dec *d, struct img_in *r,
+		       uint32_t *run, uint32_t *lit, uint32_t *px)
+{
+	uint32_t c, k;
+
+	if (!in_byte(dp, r, &c))
+		return false;
+	if (c < RDC_IMG_RLE_LITERAL_MAX) {
+		*lit = c + 1;
+		return true;
+	}
+	*run = c - 126;
+	for (k = 0; k < d->ch; k++)
+		if (!in_byte(dp, r, &px[k]))
+			return false;
+	return true;
+}
+
 static uint32_t dec_rle(struct rdc_dp *dp, const struct dec *d,
 			struct img_in *r)
 {
@@ -134,18 +156,9 @@ static uint32_t dec_rle(struct rdc_dp *dp, const struct dec *d,
 
 	for (y = 0; y < d->h; y++) {
 		for (x = 0, i = 0; x < d->w; x++, i += d->ch) {
-			if (!run && !lit) {
-				if (!in_byte(dp, r, &c))
-					return RDC_ERR_DATA;
-				if (c < RDC_IMG_RLE_LITERAL_MAX) {
-					lit = c + 1;
-				} else {
-					run = c - 126;
-					for (k = 0; k < d->ch; k++)
-						if (!in_byte(dp, r, &px[k]))
-							return RDC_ERR_DATA;
-				}
-			}
+			if (!run && !lit &&
+			    !rle_packet(dp, d, r, &run, &lit, px))
+				return RDC_ERR_DATA;
 			if (lit) {
 				for (k = 0; k < d->ch; k++) {
 					if (!in_byte(dp, r, &c))

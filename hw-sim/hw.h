@@ -70,8 +70,10 @@ struct rdc_crtc {
 	uint64_t frame_start;  /* time line 0 of this frame starts */
 	uint64_t frame_cycles; /* core cycles a frame lasts */
 	uint32_t next_line;    /* next line whose start is not yet processed */
-	/* its start time (RDC_NEVER if stopped), or a raster-list WAIT's
-	 * column before it (rl_mid): the next scanout event */
+	/*
+	 * its start time (RDC_NEVER if stopped), or a raster-list WAIT's
+	 * column before it (rl_mid): the next scanout event
+	 */
 	uint64_t next_line_time;
 	uint64_t fetch_end; /* end of the current scanout fetch window */
 	uint64_t frame_count;
