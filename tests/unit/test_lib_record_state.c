@@ -57,13 +57,14 @@ static int teardown(void **state)
 static void fill(rdc_dev *dev, uint32_t fg, int x, int y, int w, int h)
 {
 	const uint32_t cmd[] = {
-		RDC_CMD(RDC_OP_SET_FG, 0, 1),	 fg,
-		RDC_CMD(RDC_OP_FILL_RECT, 0, 2), RDC_XY(x, y),
+		RDC_CMD(RDC_OP_SET_FG, 0, 1),
+		fg,
+		RDC_CMD(RDC_OP_FILL_RECT, 0, 2),
+		RDC_XY(x, y),
 		RDC_WH(w, h),
 	};
 
-	assert_int_equal(rdc_submit(dev, cmd, sizeof(cmd) / sizeof(cmd[0])),
-			 0);
+	assert_int_equal(rdc_submit(dev, cmd, sizeof(cmd) / sizeof(cmd[0])), 0);
 }
 
 static void fence(rdc_dev *dev, uint32_t v)
@@ -78,13 +79,17 @@ static void fence(rdc_dev *dev, uint32_t v)
 static void reads(rdc_dev *dev)
 {
 	static const uint32_t regs[] = {
-		RDC_REG_TIME_LO,     RDC_REG_TIME_HI,	    RDC_REG_BEAM,
-		RDC_REG_FRAME_COUNT, RDC_REG_STATUS,	    RDC_REG_IRQ_STATUS,
-		RDC_REG_FENCE,	     RDC_REG_PERF_BUSY_LO,  RDC_REG_PERF_BUSY_HI,
-		RDC_REG_PERF_CMDS,   RDC_REG_PERF_PIXELS_LO, RDC_REG_ERR_CODE,
-		RDC_REG_FB_BASE,     RDC_REG_FB_FORMAT,	    RDC_REG_H_DISPLAY,
-		RDC_REG_CURSOR_POS,  RDC_REG_RASTER_STATUS, RDC_REG_CLUT_INDEX,
-		RDC_REG_CLUT_DATA,   RDC_REG_CLUT_DATA,	    RDC_REG_CONTROL,
+		RDC_REG_TIME_LO,	RDC_REG_TIME_HI,
+		RDC_REG_BEAM,		RDC_REG_FRAME_COUNT,
+		RDC_REG_STATUS,		RDC_REG_IRQ_STATUS,
+		RDC_REG_FENCE,		RDC_REG_PERF_BUSY_LO,
+		RDC_REG_PERF_BUSY_HI,	RDC_REG_PERF_CMDS,
+		RDC_REG_PERF_PIXELS_LO, RDC_REG_ERR_CODE,
+		RDC_REG_FB_BASE,	RDC_REG_FB_FORMAT,
+		RDC_REG_H_DISPLAY,	RDC_REG_CURSOR_POS,
+		RDC_REG_RASTER_STATUS,	RDC_REG_CLUT_INDEX,
+		RDC_REG_CLUT_DATA,	RDC_REG_CLUT_DATA,
+		RDC_REG_CONTROL,
 	};
 	uint32_t v;
 
@@ -101,10 +106,14 @@ static void reads(rdc_dev *dev)
 static uint32_t record_after_run(void)
 {
 	const uint32_t rl[] = {
-		(uint32_t)RDC_RL_WAIT << 28,	  100u << 16,
-		((uint32_t)RDC_RL_CLUT << 28) | 7, 0x00ff8000,
-		(uint32_t)RDC_RL_REG << 28 | RDC_REG_CURSOR_FG, 0x0000ff00,
-		(uint32_t)RDC_RL_END << 28,	  0,
+		(uint32_t)RDC_RL_WAIT << 28,
+		100u << 16,
+		((uint32_t)RDC_RL_CLUT << 28) | 7,
+		0x00ff8000,
+		(uint32_t)RDC_RL_REG << 28 | RDC_REG_CURSOR_FG,
+		0x0000ff00,
+		(uint32_t)RDC_RL_END << 28,
+		0,
 	};
 	uint8_t le[sizeof(rl)];
 	rdc_dev *dev = NULL;
@@ -122,16 +131,14 @@ static uint32_t record_after_run(void)
 		assert_int_equal(rdc_reg_write(dev, RDC_REG_CLUT_DATA,
 					       0x00102030u * (i + 1)),
 				 0);
-	assert_int_equal(rdc_reg_write(dev, RDC_REG_CURSOR_POS,
-				       40u | (30u << 16)),
-			 0);
+	assert_int_equal(
+		rdc_reg_write(dev, RDC_REG_CURSOR_POS, 40u | (30u << 16)), 0);
 	for (size_t i = 0; i < sizeof(rl) / sizeof(rl[0]); i++)
 		rdc_st32(le + 4 * i, rl[i]);
 	assert_int_equal(rdc_vram_write(dev, 0x300000, le, sizeof(le)), 0);
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_RASTER_BASE, 0x300000), 0);
-	assert_int_equal(rdc_reg_write(dev, RDC_REG_RASTER_CTRL,
-				       RDC_RASTER_CTRL_EN),
-			 0);
+	assert_int_equal(
+		rdc_reg_write(dev, RDC_REG_RASTER_CTRL, RDC_RASTER_CTRL_EN), 0);
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_IRQ_ENABLE,
 				       RDC_IRQ_VBLANK | RDC_IRQ_FENCE),
 			 0);
@@ -150,9 +157,8 @@ static uint32_t record_after_run(void)
 	} while (beam >> 16 < 40 || beam >> 16 > 60);
 	/* a new format for the next vblank: scanout fetches 320 bytes a
 	 * line until then, and the DP's fill below waits behind them */
-	assert_int_equal(rdc_reg_write(dev, RDC_REG_FB_FORMAT,
-				       RDC_FMT_XRGB8888),
-			 0);
+	assert_int_equal(
+		rdc_reg_write(dev, RDC_REG_FB_FORMAT, RDC_FMT_XRGB8888), 0);
 	assert_int_equal(rdc_reg_write(dev, RDC_REG_FB_STRIDE, 1280), 0);
 
 	assert_int_equal(rdc_sim_time(dev, &start_time), 0);
