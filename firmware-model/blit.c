@@ -102,6 +102,15 @@ static rdc_always_inline void rop_bytes_as(unsigned int r, uint8_t *restrict d,
 		d += ROP_BLOCK;
 		s += ROP_BLOCK;
 	}
+	/* the rest a 32-bit word at a time (a row's last pixels), not bytes */
+	for (; len >= 4; len -= 4, d += 4, s += 4) {
+		uint32_t a, b;
+
+		rdc_memcpy(&a, s, 4);
+		rdc_memcpy(&b, d, 4);
+		b = rdc_rop_apply(r, a, b);
+		rdc_memcpy(d, &b, 4);
+	}
 	for (i = 0; i < len; i++)
 		d[i] = (uint8_t)rdc_rop_apply(r, s[i], d[i]);
 }
