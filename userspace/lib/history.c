@@ -719,7 +719,7 @@ int rdc_history_clut_sized(rdc_history *h, uint32_t x, uint32_t y,
 	struct rdc_history_clut c = { 0 };
 	uint32_t v[RDC_ARRAY_SIZE(regs)], bpp;
 	uint64_t addr;
-	uint8_t b;
+	uint8_t b[4] = { 0 }; /* one byte read: an indexed pixel is <= 8 bits */
 	int ret;
 
 	if (!h || !out || out->size < sizeof(uint32_t) || !h->dev)
@@ -735,13 +735,13 @@ int rdc_history_clut_sized(rdc_history *h, uint32_t x, uint32_t y,
 	addr = v[BASE] + (uint64_t)y * v[STRIDE] + (uint64_t)x * bpp / 8;
 	if (addr >= v[VSIZE])
 		return RDC_E_RANGE;
-	ret = rdc_vram_read(h->dev, (uint32_t)addr, &b, 1);
+	ret = rdc_vram_read(h->dev, (uint32_t)addr, b, 1);
 	if (ret)
 		return ret;
 	c.x = x;
 	c.y = y;
 	c.format = v[FMT];
-	c.index = rdc_px_get(&b, bpp, (x * bpp) % 8);
+	c.index = rdc_px_get(b, bpp, (x * bpp) % 8);
 	c.source = RDC_HISTORY_CLUT_HOST;
 	if (v[RCTRL] & RDC_RASTER_CTRL_EN)
 		ret = clut_walk(h->dev, v[RBASE], v[RCTRL], v[VSIZE], v[HTOTAL],
