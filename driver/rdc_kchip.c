@@ -109,12 +109,16 @@ int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,
 		       cpu_budget);
 		return -EINVAL;
 	}
-	out->cpu_budget = cpu_budget;
 	if (!devices || devices > max_devices) {
 		pr_err("%s: devices=%u: want 1..%u\n", name, devices,
 		       max_devices);
 		return -EINVAL;
 	}
+	/*
+	 * The budget is the module's, all its devices together: each paces
+	 * within its share, so that N busy devices cannot take N budgets.
+	 */
+	out->cpu_budget = max(cpu_budget / devices, 1u);
 	return 0;
 }
 

@@ -157,14 +157,14 @@ struct rdc_kchip {
  * The module parameters both drivers take, checked the one way:
  * vram=SIZE (memparse, within [vram_min, vram_max], rounded up to whole
  * pages: mapped pages are handed out whole), clock=paced|stepped,
- * scanout=auto|demand|always, cpu_budget=1..100 and devices=1..max_devices.  -EINVAL, logged
- * under `name`, otherwise.
+ * scanout=auto|demand|always, cpu_budget=1..100 and
+ * devices=1..max_devices.  -EINVAL, logged under `name`, otherwise.
  */
 struct rdc_kchip_params {
 	u32 vram_bytes;
 	bool stepped;
 	bool on_demand; /* scanout=demand (rdc_hw_set_on_demand) */
-	u32 cpu_budget; /* cpu_budget=1..100, per cent of a CPU */
+	u32 cpu_budget; /* per device: cpu_budget / devices, at least 1 */
 };
 
 int rdc_kchip_params_parse(const char *name, const char *vram, u32 vram_min,

@@ -44,7 +44,8 @@ MODULE_PARM_DESC(scanout, "demand, always, or auto: demand when paced");
 
 static unsigned int cpu_budget = 75;
 module_param(cpu_budget, uint, 0444);
-MODULE_PARM_DESC(cpu_budget, "Per cent of a CPU the paced clock may take (75)");
+MODULE_PARM_DESC(cpu_budget,
+		 "Per cent of a CPU all devices' paced clocks may take (75)");
 
 static struct rdc_kchip_params rdcfb_params;
 static struct platform_device *rdcfb_pdev[RDCFB_MAX_DEVICES];
