@@ -6,8 +6,8 @@
 # the guest's one CPU than a guest under TCG has.  Without a budget the
 # pacing work (high-priority kworkers) runs back to back and user space
 # gets next to nothing, as when rdcfb-irqoff once hung on 6.12: this
-# test fails on the module from before the budget (docs/driver.md has
-# the figures).  With the budget (cpu_budget, 75% by default, the
+# test fails on the module from before the budget: the chips took 97%
+# of the CPU and the loop 1% (92 s where it takes 0.8 s unloaded).  With the budget (cpu_budget, 75% by default, the
 # module's for all its devices together) the chips' time falls behind
 # wall time instead.
 # The checks, on shares of the guest's CPU measured over a shell loop's
