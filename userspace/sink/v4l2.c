@@ -12,8 +12,9 @@
  *   writers by STREAMON less STREAMOFF: a writer gone without STREAMOFF
  *   keeps the format fixed until every opener has closed.
  * - A new mode: STREAMOFF, then S_FMT.  0.13 then takes the new size at
- *   once, unless a streaming (mmap) reader or keep_format holds it
- *   (EBUSY, or the old format back); 0.12.7 ignores STREAMOFF and answers
+ *   once, unless a streaming (mmap) reader or keep_format holds the old
+ *   one (S_FMT answers with it) or it still counts a writer gone without
+ *   STREAMOFF (EBUSY); 0.12.7 ignores STREAMOFF and answers
  *   S_FMT with the format in force until every opener, readers included,
  *   has closed.  When S_FMT does not give the new size, the sink closes
  *   its own descriptor (so the device can come free when the readers let
