@@ -106,14 +106,8 @@ def test_drawing_across_the_beam_tears(rdc_sim):
 
 
 @pytest.mark.rdc_mode("640x480", "xrgb8888")
-def test_drawing_presented_on_te_does_not_tear(rdc_sim, request):
+def test_drawing_presented_on_te_does_not_tear(rdc_sim):
     dev = rdc_sim
-    if dev.uri.startswith(("fbdev:", "drm:")):
-        # strict: passing there fails the run, and this goes
-        request.applymarker(pytest.mark.xfail(strict=True, reason=(
-            "fbdev: and drm: take TE's edge from the GPIO line's event "
-            "queue, which holds the edges since the lines were first "
-            "requested: the wait returns an old edge at once, mid-frame")))
     fill(dev, WHITE)
     dev.finish()
     dev.frame_wait()

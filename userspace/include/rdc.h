@@ -442,7 +442,9 @@ int rdc_pins_get(rdc_dev *dev, uint32_t *levels);
 int rdc_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels);
 /*
  * Wait for the next edge of a kind in `edges` (RDC_EDGE_*) on a pin of
- * `pins` (RDC_PINS_OUT bits, else RDC_E_INVAL) and describe it in *ev.
+ * `pins` (RDC_PINS_OUT bits, else RDC_E_INVAL) and describe it in *ev:
+ * the next after the call, on every backend (fbdev: and drm: let the
+ * edges their GPIO lines queued before it go by).
  * timeout_us bounds the wait in the device's time: simulated time on
  * sim:, unix:, tcp:, usb: (wall time too on a paced daemon), wall time
  * on fbdev:; 0 means ten seconds.  RDC_E_TIMEOUT when it runs out.  On

@@ -379,6 +379,20 @@ static int kchip_gpio_next(struct rdc_kchip_pins *g, int64_t ns,
 	return 1;
 }
 
+/* Note an edge event in the levels and nothing more. */
+static void kchip_gpio_note(struct rdc_kchip_pins *g,
+			    struct gpiod_edge_event *e)
+{
+	uint32_t bit = gpiod_edge_event_get_line_offset(e) == g->off[0] ?
+			       RDC_PIN_TE :
+			       RDC_PIN_IRQ;
+
+	if (gpiod_edge_event_get_event_type(e) == GPIOD_EDGE_EVENT_RISING_EDGE)
+		g->levels |= bit;
+	else
+		g->levels &= ~bit;
+}
+
 /*
  * Note an edge event in the levels; 1 if it is one the caller wants (ev
  * filled in), 0 if not, or an error.
@@ -395,7 +409,7 @@ static int kchip_gpio_take(rdc_dev *dev, struct rdc_kchip_pins *g,
 								 RDC_PIN_IRQ;
 	rising = gpiod_edge_event_get_event_type(e) ==
 		 GPIOD_EDGE_EVENT_RISING_EDGE;
-	g->levels = (g->levels & ~bit) | (rising ? bit : 0);
+	kchip_gpio_note(g, e);
 	if (!(pins & bit) ||
 	    !(edges & (rising ? RDC_EDGE_RISING : RDC_EDGE_FALLING)))
 		return 0;
@@ -407,6 +421,39 @@ static int kchip_gpio_take(rdc_dev *dev, struct rdc_kchip_pins *g,
 		return ret;
 	ev->levels = g->levels | (in & RDC_PINS_IN);
 	return 1;
+}
+
+/*
+ * A wait is for the next edge after the call, as on every other backend
+ * (rdc_pins_wait_regs starts from the levels the call finds): the edges
+ * the lines' queue holds happened before it, and go into the levels only.
+ * Stepped, an edge of the last step can still be on its way (PINS shows
+ * it, the queue not yet): it is waited for and dropped too.
+ */
+static int kchip_gpio_drain(rdc_dev *dev, struct rdc_kchip_pins *g)
+{
+	struct gpiod_edge_event *e;
+	uint32_t in;
+	int ret;
+
+	while ((ret = kchip_gpio_next(g, 0, &e)) > 0)
+		kchip_gpio_note(g, e);
+	if (ret < 0 || !g->stepped)
+		return ret;
+	ret = dev->be->reg_read(dev, RDC_REG_PINS, &in);
+	if (ret)
+		return ret;
+	while ((in ^ g->levels) & RDC_PINS_OUT) {
+		ret = kchip_gpio_next(g, KCHIP_EDGE_LATE_NS, &e);
+		if (ret < 0)
+			return ret;
+		if (!ret) { /* never came (a full queue): go by PINS */
+			g->levels = in & RDC_PINS_OUT;
+			break;
+		}
+		kchip_gpio_note(g, e);
+	}
+	return 0;
 }
 
 /*
@@ -428,6 +475,9 @@ int rdc_kchip_pins_wait(rdc_dev *dev, int fd, struct rdc_kchip_pins **p,
 	if (ret)
 		return ret;
 	g = *p;
+	ret = kchip_gpio_drain(dev, g);
+	if (ret)
+		return ret;
 	if (!timeout_us)
 		timeout_us = RDC_WAIT_BUDGET_DEFAULT /
 			     (RDC_DEFAULT_CORE_HZ / 1000000u);
