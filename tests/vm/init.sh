@@ -42,7 +42,7 @@ mount -t tmpfs tmp "/host$scratch"
 
 # leftovers: unload the modules loaded since /tmp/mods.before was taken
 # (those the test's "# vm-module:" lines named, their dependencies, and
-# any the test or the kernel loaded on the way), newest first as
+# any loaded while it ran), newest first as
 # /proc/modules lists them, so that a module goes before those it uses.
 # A module that stays loaded is a reference the test left behind (a
 # process still running, a file or mount still open, a device still
