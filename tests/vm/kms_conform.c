@@ -1149,14 +1149,20 @@ static int st_vblank(struct kms *k)
 		    "(within a factor of 4)");
 	}
 
-	/* absolute: three frames on */
+	/*
+	 * absolute: three frames on.  The reply names the vblank the event
+	 * went out at: on a host too slow for the paced clock (its CPU
+	 * budget holds the chip back) DRM's count can step over that one,
+	 * so a later one is right too, never an earlier one.
+	 */
 	memset(&va, 0, sizeof(va));
 	va.request.type = DRM_VBLANK_ABSOLUTE;
 	va.request.sequence = v.reply.sequence + 3;
 	ret = drmWaitVBlank(k->fd, &va) ? -errno : 0;
-	tap(!ret && va.reply.sequence == v.reply.sequence + 3 &&
+	tap(!ret && va.reply.sequence >= v.reply.sequence + 3 &&
 		    tv_ns(&va) > tv_ns(&v) &&
-		    about(tv_ns(&va) - tv_ns(&v), 3, per),
+		    about(tv_ns(&va) - tv_ns(&v),
+			  va.reply.sequence - v.reply.sequence, per),
 	    "vblank: absolute wait for sequence %u returns at %u, %" PRIu64
 	    " us on",
 	    v.reply.sequence + 3, va.reply.sequence,
