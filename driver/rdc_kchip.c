@@ -982,3 +982,49 @@ int rdc_kchip_snapshot(struct rdc_kchip *chip)
 	}
 	return -EAGAIN;
 }
+
+/* What the STATE ioctls answer: the chip's run beyond its registers. */
+void rdc_kchip_state_get(struct rdc_kchip *chip, struct rdc_chip_state *st)
+{
+	struct rdc_hw_resume r;
+
+	rdc_kchip_lock(chip);
+	rdc_hw_resume_get(chip->hw, &r);
+	rdc_kchip_unlock(chip);
+	memset(st, 0, sizeof(*st));
+	st->now = r.now;
+	st->frame_start = r.frame_start;
+	st->frame_count = r.frame_count;
+	st->busy = r.perf.busy;
+	st->stall = r.perf.stall;
+	st->pixels = r.perf.pixels;
+	st->cmds = r.perf.cmds;
+	st->last_cycles = r.perf.last_cycles;
+	st->last_opcode = r.perf.last_opcode;
+	st->culled = r.perf.culled;
+	st->fence = r.fence;
+	st->irq_status = r.irq_status;
+	st->err_code = r.err_code;
+	st->err_info = r.err_info;
+	st->open_row = r.open_row;
+	st->h_total = r.timing.h_total;
+	st->h_display = r.timing.h_display;
+	st->h_sync_start = r.timing.h_sync_start;
+	st->h_sync_end = r.timing.h_sync_end;
+	st->v_total = r.timing.v_total;
+	st->v_display = r.timing.v_display;
+	st->v_sync_start = r.timing.v_sync_start;
+	st->v_sync_end = r.timing.v_sync_end;
+	st->pixclk_khz = r.timing.pixclk_khz;
+	st->crtc_flags = r.timing.flags;
+	st->fb_base = r.fb_base;
+	st->fb_stride = r.fb_stride;
+	st->fb_format = r.fb_format;
+	st->cursor_ctrl = r.cursor_ctrl;
+	st->cursor_base = r.cursor_base;
+	st->raster_base = r.raster_base;
+	st->raster_ctrl = r.raster_ctrl;
+	st->flags = (r.scanning ? RDC_CHIP_STATE_SCANNING : 0) |
+		    (r.dp_active ? RDC_CHIP_STATE_DP_ACTIVE : 0) |
+		    (r.gamma ? RDC_CHIP_STATE_GAMMA : 0);
+}

@@ -190,6 +190,8 @@ int rdc_kchip_submit(struct rdc_kchip *chip, const u32 *words, u32 n);
 int rdc_kchip_vsync(struct rdc_kchip *chip);
 void rdc_kchip_counters(struct rdc_kchip *chip, struct rdc_kchip_counters *c);
 int rdc_kchip_snapshot(struct rdc_kchip *chip);
+/* The STATE ioctls' answer (rdc_state_uapi.h), taken under the lock. */
+void rdc_kchip_state_get(struct rdc_kchip *chip, struct rdc_chip_state *st);
 ssize_t rdc_kchip_scanout_show(struct rdc_kchip *chip, char *buf);
 u32 rdc_kchip_crc(const u32 *px, size_t count);
 /* With chip->lock held. */

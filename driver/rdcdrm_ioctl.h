@@ -39,6 +39,8 @@
 #include <drm.h> /* libdrm's copy, in pkg-config --cflags libdrm */
 #endif
 
+#include "rdc_state_uapi.h"
+
 /* drm_version.name of an rdcdrm device. */
 #define DRM_RDC_DRIVER_NAME "rdc"
 
@@ -151,58 +153,6 @@ struct drm_rdc_vram {
 	__u32 reserved;
 };
 
-/*
- * Where the chip's run has got to beyond what its registers read back
- * (read-only), as rdcfb_ioctl.h's struct rdcfb_state: a trace recorded
- * from here on starts its replay's fresh chip at the same time, frame
- * phase and counters.  `reserved` must be 0 in.
- */
-#define DRM_RDC_STATE_SCANNING (1u << 0) /* a mode is in force, scanning */
-#define DRM_RDC_STATE_DP_ACTIVE \
-	(1u << 1)		      /* the DP has work queued or running */
-#define DRM_RDC_STATE_GAMMA (1u << 2) /* CONTROL.GAMMA_EN in force */
-
-struct drm_rdc_state {
-	__u64 now;	   /* simulated time, core cycles */
-	__u64 frame_start; /* line 0 of the frame being scanned (now: none) */
-	__u64 frame_count; /* RDC_REG_FRAME_COUNT, all 64 bits */
-	__u64 busy;	   /* RDC_REG_PERF_* */
-	__u64 stall;
-	__u64 pixels;
-	__u32 cmds;
-	__u32 last_cycles;
-	__u32 last_opcode;
-	__u32 culled;
-	__u32 fence;	  /* RDC_REG_FENCE */
-	__u32 irq_status; /* RDC_REG_IRQ_STATUS */
-	__u32 err_code;	  /* RDC_REG_ERR_CODE */
-	__u32 err_info;	  /* RDC_REG_ERR_INFO */
-	__u32 open_row;	  /* the DRAM row the bus has open */
-	/*
-	 * What the CRTC has in force, latched at the last vblank: the
-	 * registers read what was written for the next one.
-	 */
-	__u32 h_total;
-	__u32 h_display;
-	__u32 h_sync_start;
-	__u32 h_sync_end;
-	__u32 v_total;
-	__u32 v_display;
-	__u32 v_sync_start;
-	__u32 v_sync_end;
-	__u32 pixclk_khz;
-	__u32 crtc_flags;
-	__u32 fb_base;
-	__u32 fb_stride;
-	__u32 fb_format;
-	__u32 cursor_ctrl;
-	__u32 cursor_base;
-	__u32 raster_base;
-	__u32 raster_ctrl;
-	__u32 flags;	/* out: DRM_RDC_STATE_* */
-	__u32 reserved; /* 0 */
-};
-
 #define DRM_RDC_REG_READ  0x00
 #define DRM_RDC_REG_WRITE 0x01
 #define DRM_RDC_SUBMIT	  0x02
@@ -230,6 +180,6 @@ struct drm_rdc_state {
 #define DRM_IOCTL_RDC_VRAM \
 	DRM_IOW(DRM_COMMAND_BASE + DRM_RDC_VRAM, struct drm_rdc_vram)
 #define DRM_IOCTL_RDC_STATE \
-	DRM_IOWR(DRM_COMMAND_BASE + DRM_RDC_STATE, struct drm_rdc_state)
+	DRM_IOWR(DRM_COMMAND_BASE + DRM_RDC_STATE, struct rdc_chip_state)
 
 #endif /* RDCDRM_IOCTL_H */

@@ -120,50 +120,11 @@ int rdcdrm_ioctl_state(struct drm_device *drm, void *data,
 		       struct drm_file *file)
 {
 	struct rdcdrm_device *rd = rdcdrm_of(drm);
-	struct drm_rdc_state *st = data;
-	struct rdc_hw_resume r;
+	struct rdc_chip_state *st = data;
 
 	if (st->reserved)
 		return -EINVAL;
-	rdc_kchip_lock(&rd->chip);
-	rdc_hw_resume_get(rd->chip.hw, &r);
-	rdc_kchip_unlock(&rd->chip);
-	memset(st, 0, sizeof(*st));
-	st->now = r.now;
-	st->frame_start = r.frame_start;
-	st->frame_count = r.frame_count;
-	st->busy = r.perf.busy;
-	st->stall = r.perf.stall;
-	st->pixels = r.perf.pixels;
-	st->cmds = r.perf.cmds;
-	st->last_cycles = r.perf.last_cycles;
-	st->last_opcode = r.perf.last_opcode;
-	st->culled = r.perf.culled;
-	st->fence = r.fence;
-	st->irq_status = r.irq_status;
-	st->err_code = r.err_code;
-	st->err_info = r.err_info;
-	st->open_row = r.open_row;
-	st->h_total = r.timing.h_total;
-	st->h_display = r.timing.h_display;
-	st->h_sync_start = r.timing.h_sync_start;
-	st->h_sync_end = r.timing.h_sync_end;
-	st->v_total = r.timing.v_total;
-	st->v_display = r.timing.v_display;
-	st->v_sync_start = r.timing.v_sync_start;
-	st->v_sync_end = r.timing.v_sync_end;
-	st->pixclk_khz = r.timing.pixclk_khz;
-	st->crtc_flags = r.timing.flags;
-	st->fb_base = r.fb_base;
-	st->fb_stride = r.fb_stride;
-	st->fb_format = r.fb_format;
-	st->cursor_ctrl = r.cursor_ctrl;
-	st->cursor_base = r.cursor_base;
-	st->raster_base = r.raster_base;
-	st->raster_ctrl = r.raster_ctrl;
-	st->flags = (r.scanning ? DRM_RDC_STATE_SCANNING : 0) |
-		    (r.dp_active ? DRM_RDC_STATE_DP_ACTIVE : 0) |
-		    (r.gamma ? DRM_RDC_STATE_GAMMA : 0);
+	rdc_kchip_state_get(&rd->chip, st);
 	return 0;
 }
 

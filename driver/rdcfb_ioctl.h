@@ -34,6 +34,8 @@
 #include <linux/types.h>
 #endif
 
+#include "rdc_state_uapi.h"
+
 #define RDCFB_IOC_MAGIC 'R'
 
 /* fb_fix_screeninfo.id of an rdcfb device, so clients can recognise it. */
@@ -128,57 +130,6 @@ struct rdcfb_frame {
 	__u32 reserved;
 };
 
-/*
- * Where the chip's run has got to beyond what its registers read back
- * (read-only): a trace recorded from here on (librdc's rdc_record_start)
- * starts its replay's fresh chip at the same time, frame phase and
- * counters.  `reserved` must be 0 in.
- */
-#define RDCFB_STATE_SCANNING  (1u << 0) /* a mode is in force, scanning */
-#define RDCFB_STATE_DP_ACTIVE (1u << 1) /* the DP has work queued or running */
-#define RDCFB_STATE_GAMMA     (1u << 2) /* CONTROL.GAMMA_EN in force */
-
-struct rdcfb_state {
-	__u64 now;	   /* simulated time, core cycles */
-	__u64 frame_start; /* line 0 of the frame being scanned (now: none) */
-	__u64 frame_count; /* RDC_REG_FRAME_COUNT, all 64 bits */
-	__u64 busy;	   /* RDC_REG_PERF_* */
-	__u64 stall;
-	__u64 pixels;
-	__u32 cmds;
-	__u32 last_cycles;
-	__u32 last_opcode;
-	__u32 culled;
-	__u32 fence;	  /* RDC_REG_FENCE */
-	__u32 irq_status; /* RDC_REG_IRQ_STATUS */
-	__u32 err_code;	  /* RDC_REG_ERR_CODE */
-	__u32 err_info;	  /* RDC_REG_ERR_INFO */
-	__u32 open_row;	  /* the DRAM row the bus has open */
-	/*
-	 * What the CRTC has in force, latched at the last vblank: the
-	 * registers read what was written for the next one.
-	 */
-	__u32 h_total;
-	__u32 h_display;
-	__u32 h_sync_start;
-	__u32 h_sync_end;
-	__u32 v_total;
-	__u32 v_display;
-	__u32 v_sync_start;
-	__u32 v_sync_end;
-	__u32 pixclk_khz;
-	__u32 crtc_flags;
-	__u32 fb_base;
-	__u32 fb_stride;
-	__u32 fb_format;
-	__u32 cursor_ctrl;
-	__u32 cursor_base;
-	__u32 raster_base;
-	__u32 raster_ctrl;
-	__u32 flags;	/* out: RDCFB_STATE_* */
-	__u32 reserved; /* 0 */
-};
-
 #define RDCFB_IOC_REG_READ  _IOWR(RDCFB_IOC_MAGIC, 0x00, struct rdcfb_reg)
 #define RDCFB_IOC_REG_WRITE _IOW(RDCFB_IOC_MAGIC, 0x01, struct rdcfb_reg)
 #define RDCFB_IOC_SUBMIT    _IOWR(RDCFB_IOC_MAGIC, 0x02, struct rdcfb_submit)
@@ -186,6 +137,6 @@ struct rdcfb_state {
 #define RDCFB_IOC_STEP	    _IOW(RDCFB_IOC_MAGIC, 0x04, struct rdcfb_step)
 #define RDCFB_IOC_COUNTERS  _IOR(RDCFB_IOC_MAGIC, 0x05, struct rdcfb_counters)
 #define RDCFB_IOC_FRAME	    _IOWR(RDCFB_IOC_MAGIC, 0x06, struct rdcfb_frame)
-#define RDCFB_IOC_STATE	    _IOWR(RDCFB_IOC_MAGIC, 0x07, struct rdcfb_state)
+#define RDCFB_IOC_STATE	    _IOWR(RDCFB_IOC_MAGIC, 0x07, struct rdc_chip_state)
 
 #endif /* RDCFB_IOCTL_H */

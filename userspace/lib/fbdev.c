@@ -403,46 +403,12 @@ static int fbdev_list(rdc_found_fn fn, void *arg)
 /* The chip's run beyond its registers, for a trace's start (record.c). */
 static int fbdev_resume_get(rdc_dev *dev, struct rdc_hw_resume *s)
 {
-	struct rdcfb_state st = { 0 };
+	struct rdc_chip_state st = { 0 };
 	int ret = fbdev_ioctl(fbdev_of(dev), RDCFB_IOC_STATE, &st);
 
 	if (ret)
 		return ret;
-	s->now = st.now;
-	s->frame_start = st.frame_start;
-	s->frame_count = st.frame_count;
-	s->perf.busy = st.busy;
-	s->perf.stall = st.stall;
-	s->perf.pixels = st.pixels;
-	s->perf.cmds = st.cmds;
-	s->perf.last_cycles = st.last_cycles;
-	s->perf.last_opcode = st.last_opcode;
-	s->perf.culled = st.culled;
-	s->fence = st.fence;
-	s->irq_status = st.irq_status;
-	s->err_code = st.err_code;
-	s->err_info = st.err_info;
-	s->open_row = st.open_row;
-	s->scanning = st.flags & RDCFB_STATE_SCANNING;
-	s->dp_active = st.flags & RDCFB_STATE_DP_ACTIVE;
-	s->timing.h_total = st.h_total;
-	s->timing.h_display = st.h_display;
-	s->timing.h_sync_start = st.h_sync_start;
-	s->timing.h_sync_end = st.h_sync_end;
-	s->timing.v_total = st.v_total;
-	s->timing.v_display = st.v_display;
-	s->timing.v_sync_start = st.v_sync_start;
-	s->timing.v_sync_end = st.v_sync_end;
-	s->timing.pixclk_khz = st.pixclk_khz;
-	s->timing.flags = st.crtc_flags;
-	s->fb_base = st.fb_base;
-	s->fb_stride = st.fb_stride;
-	s->fb_format = st.fb_format;
-	s->cursor_ctrl = st.cursor_ctrl;
-	s->cursor_base = st.cursor_base;
-	s->raster_base = st.raster_base;
-	s->raster_ctrl = st.raster_ctrl;
-	s->gamma = st.flags & RDCFB_STATE_GAMMA;
+	rdc_kchip_state_resume(&st, s);
 	return 0;
 }
 

@@ -19,6 +19,7 @@
 #endif
 
 #include "kchip.h"
+#include "rdc_state_uapi.h"
 
 /* Edge events read from the GPIO chip at once. */
 #define KCHIP_EDGE_BUF 16u
@@ -86,6 +87,46 @@ size_t rdc_kchip_piece(const uint32_t *w, size_t n, size_t max)
 	}
 	/* cannot happen while max > RDC_CMD_MAX_ARGS; never loop forever */
 	return i ? i : max;
+}
+
+void rdc_kchip_state_resume(const struct rdc_chip_state *st,
+			    struct rdc_hw_resume *s)
+{
+	s->now = st->now;
+	s->frame_start = st->frame_start;
+	s->frame_count = st->frame_count;
+	s->perf.busy = st->busy;
+	s->perf.stall = st->stall;
+	s->perf.pixels = st->pixels;
+	s->perf.cmds = st->cmds;
+	s->perf.last_cycles = st->last_cycles;
+	s->perf.last_opcode = st->last_opcode;
+	s->perf.culled = st->culled;
+	s->fence = st->fence;
+	s->irq_status = st->irq_status;
+	s->err_code = st->err_code;
+	s->err_info = st->err_info;
+	s->open_row = st->open_row;
+	s->scanning = st->flags & RDC_CHIP_STATE_SCANNING;
+	s->dp_active = st->flags & RDC_CHIP_STATE_DP_ACTIVE;
+	s->timing.h_total = st->h_total;
+	s->timing.h_display = st->h_display;
+	s->timing.h_sync_start = st->h_sync_start;
+	s->timing.h_sync_end = st->h_sync_end;
+	s->timing.v_total = st->v_total;
+	s->timing.v_display = st->v_display;
+	s->timing.v_sync_start = st->v_sync_start;
+	s->timing.v_sync_end = st->v_sync_end;
+	s->timing.pixclk_khz = st->pixclk_khz;
+	s->timing.flags = st->crtc_flags;
+	s->fb_base = st->fb_base;
+	s->fb_stride = st->fb_stride;
+	s->fb_format = st->fb_format;
+	s->cursor_ctrl = st->cursor_ctrl;
+	s->cursor_base = st->cursor_base;
+	s->raster_base = st->raster_base;
+	s->raster_ctrl = st->raster_ctrl;
+	s->gamma = st->flags & RDC_CHIP_STATE_GAMMA;
 }
 
 /* ---- Pins: the device's GPIO chip, through libgpiod ---------------------- */

@@ -24,6 +24,14 @@
 int rdc_kchip_error(int err);
 
 /*
+ * The modules' STATE ioctl answer (driver/rdc_state_uapi.h, the same for
+ * rdcfb and rdcdrm) as the core's rdc_hw_resume, for a trace's start.
+ */
+struct rdc_chip_state;
+void rdc_kchip_state_resume(const struct rdc_chip_state *st,
+			    struct rdc_hw_resume *s);
+
+/*
  * Words of `w` (n of them) up to the last command boundary at or before
  * `max`: the modules check a buffer command by command, so a command
  * must not be split between two SUBMITs.
