@@ -16,7 +16,9 @@
  *       bytesperline * height bytes.  The device is non-blocking: a frame
  *       the device cannot take now (EAGAIN) is dropped, and a device that
  *       went away (ENODEV, EIO, ...) is closed and reopened later, so the
- *       source is never stalled.  Default format bgr32.
+ *       source is never stalled.  Default format bgr32.  What a reader
+ *       sees with v4l2loopback 0.12.7 and 0.13, and how a size change
+ *       goes on each: docs/v4l2.md.
  *   png:DIR[,every=N][,prefix=NAME]
  *       PNG files DIR/NAME-NNNNNNNN.png (NAME default "frame", NNNNNNNN
  *       the frame's sequence number): every Nth frame handed to the sink
