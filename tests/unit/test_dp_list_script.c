@@ -16,31 +16,9 @@
 #include <cmocka.h>
 
 #include "rdc.h"
+#include "script_fx.h"
 
 #define LADDR 0x80000u
-
-static struct rdc_script_result res;
-
-static int dev_setup(void **state)
-{
-	rdc_dev *dev;
-
-	if (rdc_open("sim:vram=4M", &dev))
-		return -1;
-	*state = dev;
-	return 0;
-}
-
-static int dev_teardown(void **state)
-{
-	rdc_close(*state);
-	return 0;
-}
-
-static int run(rdc_dev *dev, const char *text)
-{
-	return rdc_script_run(dev, text, strlen(text), &res);
-}
 
 static uint32_t px(rdc_dev *dev, uint32_t x, uint32_t y)
 {

@@ -17,33 +17,8 @@
 #include <cmocka.h>
 
 #include "rdc.h"
-
-static struct rdc_script_result res;
-
-static int dev_setup(void **state)
-{
-	rdc_dev *dev;
-
-	if (rdc_open("sim:vram=4M", &dev))
-		return -1;
-	*state = dev;
-	return 0;
-}
-
-static int dev_teardown(void **state)
-{
-	rdc_close(*state);
-	return 0;
-}
-
-static int run(rdc_dev *dev, const char *text)
-{
-	int ret = rdc_script_run(dev, text, strlen(text), &res);
-
-	if (ret)
-		print_message("line %u: %s\n", res.error_line, res.error_msg);
-	return ret;
-}
+#define SCRIPT_FX_SAY_ERRORS
+#include "script_fx.h"
 
 /* The picture on show (calloc'd, 640x480 here). */
 static uint32_t *frame(rdc_dev *dev, uint32_t *fw)
