@@ -407,6 +407,15 @@ int rdc_batch_jump(rdc_batch *b, uint32_t addr);
 #define RDC_EDGE_RISING	 0x1u
 #define RDC_EDGE_FALLING 0x2u
 #define RDC_EDGE_BOTH	 (RDC_EDGE_RISING | RDC_EDGE_FALLING)
+/*
+ * With the kinds: a watcher's stream.  An edge that came after the
+ * previous wait on this device returned counts too, though it came
+ * before this call (fbdev: and drm: queue their GPIO lines' edges), so a
+ * loop of waits sees every edge, as gpiomon does.  Without it a wait is
+ * for an edge after the call.  sim: and the daemons start every wait
+ * from the levels they find; there it changes nothing.
+ */
+#define RDC_EDGE_QUEUED 0x4u
 
 /* rdc_pin_edge.time when the backend does not know the simulated time. */
 #define RDC_PIN_TIME_NONE UINT64_MAX
@@ -444,7 +453,7 @@ int rdc_pins_set(rdc_dev *dev, uint32_t mask, uint32_t levels);
  * Wait for the next edge of a kind in `edges` (RDC_EDGE_*) on a pin of
  * `pins` (RDC_PINS_OUT bits, else RDC_E_INVAL) and describe it in *ev:
  * the next after the call, on every backend (fbdev: and drm: let the
- * edges their GPIO lines queued before it go by).
+ * edges their GPIO lines queued before it go by, unless RDC_EDGE_QUEUED).
  * timeout_us bounds the wait in the device's time: simulated time on
  * sim:, unix:, tcp:, usb: (wall time too on a paced daemon), wall time
  * on fbdev:; 0 means ten seconds.  RDC_E_TIMEOUT when it runs out.  On

@@ -154,6 +154,7 @@ struct rdc_kchip_pins {
 	int buf_n, buf_next; /* events read and not yet looked at */
 	uint32_t levels;     /* TE and IRQ as the last event left them */
 	bool stepped;	     /* the module's clock=stepped: waits move time */
+	bool waited;	     /* a wait has returned: RDC_EDGE_QUEUED's start */
 };
 
 void rdc_kchip_pins_free(struct rdc_kchip_pins *g)
@@ -516,9 +517,12 @@ int rdc_kchip_pins_wait(rdc_dev *dev, int fd, struct rdc_kchip_pins **p,
 	if (ret)
 		return ret;
 	g = *p;
-	ret = kchip_gpio_drain(dev, g);
-	if (ret)
-		return ret;
+	if (!(edges & RDC_EDGE_QUEUED) || !g->waited) {
+		ret = kchip_gpio_drain(dev, g);
+		if (ret)
+			return ret;
+	}
+	g->waited = true;
 	if (!timeout_us)
 		timeout_us = RDC_WAIT_BUDGET_DEFAULT /
 			     (RDC_DEFAULT_CORE_HZ / 1000000u);

@@ -162,8 +162,9 @@ int rdc_pins_wait_edge_sized(rdc_dev *dev, uint32_t pins, uint32_t edges,
 	uint64_t budget = 0;
 	int ret;
 
-	if (!dev || !out || !pins || (pins & ~RDC_PINS_OUT) || !edges ||
-	    (edges & ~RDC_EDGE_BOTH))
+	if (!dev || !out || !pins || (pins & ~RDC_PINS_OUT) ||
+	    !(edges & RDC_EDGE_BOTH) ||
+	    (edges & ~(RDC_EDGE_BOTH | RDC_EDGE_QUEUED)))
 		return RDC_E_INVAL;
 	ret = rdc_pins_budget(dev, timeout_us, &budget);
 	if (ret)

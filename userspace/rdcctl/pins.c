@@ -180,7 +180,9 @@ static int pins_watch(rdc_dev *dev, const struct pins_opts *o)
 
 	while (!pins_stop && (!o->count || seen < o->count)) {
 		struct rdc_pin_edge ev;
-		int ret = rdc_pins_wait_edge(dev, o->watch_pins, o->edges,
+		/* every edge, as gpiomon: those queued between waits too */
+		int ret = rdc_pins_wait_edge(dev, o->watch_pins,
+					     o->edges | RDC_EDGE_QUEUED,
 					     PINS_WATCH_SLICE_US, &ev);
 
 		if (ret == RDC_E_TIMEOUT)
