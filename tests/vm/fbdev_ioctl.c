@@ -533,6 +533,23 @@ static void check_vsync_blank(void)
 	    "unblanked: frames run again");
 }
 
+/* STATE: read-only, its reserved word must be 0, its pointer readable */
+static void check_state(void)
+{
+	struct rdc_chip_state st = { .reserved = 1 };
+	uint32_t fc = reg(RDC_REG_FRAME_COUNT);
+
+	tap(xioctl(RDCFB_IOC_STATE, &st) && errno == EINVAL,
+	    "STATE with reserved set: EINVAL");
+	tap(ioctl(fd, RDCFB_IOC_STATE, NULL) && errno == EFAULT,
+	    "STATE at a NULL pointer: EFAULT");
+	memset(&st, 0, sizeof(st));
+	tap(!xioctl(RDCFB_IOC_STATE, &st) && (uint32_t)st.frame_count >= fc &&
+		    (st.flags & RDC_CHIP_STATE_SCANNING) && !st.reserved,
+	    "STATE: frame %llu (FRAME_COUNT was %u), scanning",
+	    (unsigned long long)st.frame_count, fc);
+}
+
 static void check_refusals(void)
 {
 	struct fb_var_screeninfo v, keep;
@@ -553,6 +570,7 @@ static void check_refusals(void)
 		    v.bits_per_pixel == keep.bits_per_pixel &&
 		    reg(RDC_REG_FB_FORMAT) == fmt,
 	    "FB_ACTIVATE_TEST changes nothing");
+	check_state();
 }
 
 /* ---- Entry points -------------------------------------------------------- */
