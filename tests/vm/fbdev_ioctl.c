@@ -538,13 +538,15 @@ static void check_state(void)
 {
 	struct rdc_chip_state st = { .reserved = 1 };
 	uint32_t fc = reg(RDC_REG_FRAME_COUNT);
+	bool ok;
 
 	tap(xioctl(RDCFB_IOC_STATE, &st) && errno == EINVAL,
 	    "STATE with reserved set: EINVAL");
 	tap(ioctl(fd, RDCFB_IOC_STATE, NULL) && errno == EFAULT,
 	    "STATE at a NULL pointer: EFAULT");
 	memset(&st, 0, sizeof(st));
-	tap(!xioctl(RDCFB_IOC_STATE, &st) && (uint32_t)st.frame_count >= fc &&
+	ok = !xioctl(RDCFB_IOC_STATE, &st);
+	tap(ok && (uint32_t)st.frame_count >= fc &&
 		    (st.flags & RDC_CHIP_STATE_SCANNING) && !st.reserved,
 	    "STATE: frame %llu (FRAME_COUNT was %u), scanning",
 	    (unsigned long long)st.frame_count, fc);
