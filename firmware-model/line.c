@@ -32,8 +32,9 @@ void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 
 /*
  * One run of line_queue's direct path: charged in the open window and
- * written at once, or (refused) charged and written by the port call
- * dp_runs_flush would make for it, in a window of its own.  *pixels is
+ * written at once, or (refused) charged and written as the port call
+ * dp_runs_flush would make for it charges it, in the window across the
+ * line start that falls in it, or else in a window of its own.  *pixels is
  * the perf count not yet added, added before any port call that could
  * let someone look at it.
  */
@@ -46,6 +47,10 @@ static rdc_noinline void line_run_port(struct rdc_dp *dp,
 	uint32_t stride = dp->st.dst.stride;
 	uint8_t *p;
 
+	if (rdc_port_window_cross(hw, w, r, stride, RDC_BUS_WRITE)) {
+		dp_run_write(dp, w->vram + r->addr, r, dp->st.fg);
+		return;
+	}
 	rdc_port_window_close(hw, w);
 	hw->perf.pixels += *pixels;
 	*pixels = 0;
@@ -190,6 +195,74 @@ struct line_pos {
 };
 
 /*
+ * line_fast's run of k pixels at a that the window refuses: charged and
+ * written across the line starts that fall in it, in the window, each
+ * burst as rdc_port_span / rdc_port_column would charge it (a column
+ * pixel is a burst; a span's pixels are cut at burst boundaries): those
+ * that end by the window's limit, then the event (rdc_port_window_event)
+ * and on from its fetch's end.  Where an event is not one the window can
+ * take, the rest goes to line_cut.  w->t and w->row are the window's as
+ * the runs before left them; returns what line_cut does.
+ */
+static rdc_noinline bool line_events(struct rdc_dp *dp,
+				     struct rdc_port_window *w,
+				     const struct line_fixed *f, uint32_t a,
+				     uint32_t k, bool xmajor, uint64_t *pixels)
+{
+	const uint32_t umul = xmajor ? 4 : f->stride;
+	const uint64_t pp = f->one + RDC_T_ROW_MISS;
+	uint32_t a0 = a, k0 = k, e;
+	uint64_t budget, c0;
+
+	while (k) {
+		budget = w->lim - w->t;
+		if (xmajor) {
+			/* the pixels of this burst */
+			e = RDC_MIN(k, (uint32_t)(RDC_BUS_BURST_BYTES -
+						  a % RDC_BUS_BURST_BYTES) /
+					       4);
+			c0 = span_cost32(a, e,
+					 a / RDC_DRAM_ROW_BYTES != w->row);
+			if (c0 > budget)
+				e = 0;
+			else
+				w->row = (a + 4 * e - 1) / RDC_DRAM_ROW_BYTES;
+		} else {
+			c0 = f->one + (a / RDC_DRAM_ROW_BYTES != w->row ?
+					       RDC_T_ROW_MISS :
+					       0);
+			e = c0 > budget ?
+				    0 :
+				    (uint32_t)RDC_MIN((uint64_t)k,
+						      1 + (budget - c0) / pp);
+			if (e) {
+				c0 += (uint64_t)(e - 1) * pp;
+				w->row = (a + (e - 1) * umul) /
+					 RDC_DRAM_ROW_BYTES;
+			}
+		}
+		if (e) {
+			w->t += c0;
+			a += e * umul;
+			k -= e;
+			continue;
+		}
+		if (!rdc_port_window_event(dp->hw, w) || w->t > w->lim) {
+			/* what is charged written, the rest the port's */
+			if (a != a0)
+				line_q32(f->vram + a0, k0 - k, f->v2, !xmajor,
+					 umul);
+			*pixels += k0 - k;
+			return line_cut(dp, w, a, k, xmajor, pixels);
+		}
+		rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
+	}
+	line_q32(f->vram + a0, k0, f->v2, !xmajor, umul);
+	*pixels += k0;
+	return true;
+}
+
+/*
  * The middle runs of a direct line (each of q or q + 1 steps, rem < 2m),
  * while the run cannot reach the last step ihi and the port window takes
  * it: each charged as rdc_port_window_span / _column would (the same
@@ -269,8 +342,8 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				w->t = lim - budget;
 				w->row = (a - vstep - 1) / RDC_DRAM_ROW_BYTES;
 				*pixels += (uint64_t)(run - run0);
-				more = line_cut(dp, w, a, (uint32_t)k, true,
-						pixels);
+				more = line_events(dp, w, f, a, (uint32_t)k,
+						   true, pixels);
 				rem += k > q ? d1 : d0;
 				run += k;
 				a += k > q ? step1 : step0;
@@ -305,8 +378,8 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				w->row =
 					(a - vstep - umul) / RDC_DRAM_ROW_BYTES;
 				*pixels += (uint64_t)(run - run0);
-				more = line_cut(dp, w, a, (uint32_t)k, false,
-						pixels);
+				more = line_events(dp, w, f, a, (uint32_t)k,
+						   false, pixels);
 				rem += k > q ? d1 : d0;
 				run += k;
 				a += k > q ? step1 : step0;

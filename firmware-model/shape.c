@@ -20,6 +20,16 @@ static inline void row_prefetch(const uint8_t *p, uint32_t len)
 	__builtin_prefetch(p + len - 1, 1);
 }
 
+/* dp_run_write's bytes for one row of rect_rows32, the block built */
+static inline void rect_row32(uint8_t *p, const uint8_t *blk, uint32_t v,
+			      uint32_t n, bool fast)
+{
+	if (fast)
+		fill32_blocks(p, blk, n * 4);
+	else
+		dp_fill32(p, v, n);
+}
+
 /*
  * A filled rectangle's rows [ya, ye] of pixels [xa, xb] (clipped) in
  * XRGB8888 with a ROP that ignores the destination, charged and written
@@ -86,19 +96,22 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 		rows -= done;
 		if (!rows)
 			break;
-		rdc_port_window_close(hw, &w);
-		hw->perf.pixels += pixels;
-		pixels = 0;
-		p = rdc_port_span(hw, one.addr, one.len, RDC_BUS_WRITE);
-		if (p) {
-			/* dp_run_write's bytes for the row, the block built */
-			if (fast)
-				fill32_blocks(p, blk, one.len);
-			else
-				dp_fill32(p, v, n);
-			hw->perf.pixels += n;
+		/* the row a line start falls in, in the window if it can */
+		if (rdc_port_window_cross(hw, &w, &one, s->stride,
+					  RDC_BUS_WRITE)) {
+			rect_row32(w.vram + one.addr, blk, v, n, fast);
+			pixels += n;
+		} else {
+			rdc_port_window_close(hw, &w);
+			hw->perf.pixels += pixels;
+			pixels = 0;
+			p = rdc_port_span(hw, one.addr, one.len, RDC_BUS_WRITE);
+			if (p) {
+				rect_row32(p, blk, v, n, fast);
+				hw->perf.pixels += n;
+			}
+			rdc_port_window_open(hw, &w);
 		}
-		rdc_port_window_open(hw, &w);
 		one.addr += s->stride;
 		rows--;
 	}

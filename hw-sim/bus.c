@@ -52,6 +52,14 @@ static void bus_burst(struct rdc_hw *hw, uint64_t *tp, uint64_t a, uint64_t n,
 			*tp = t + cost;
 			return;
 		}
+		if (rdc_crtc_next_quiet(hw)) {
+			/* the catch-up to ev now, and the wait for its fetch */
+			if (rdc_crtc_quiet_line(hw)) {
+				hw->perf.stall += ev - t;
+				t = ev;
+			}
+			continue;
+		}
 		if (rdc_crtc_next_fetches(hw)) {
 			hw->perf.stall += ev - t;
 			t = ev;
@@ -164,18 +172,17 @@ uint8_t *rdc_port_span_pair(struct rdc_hw *hw, uint32_t raddr, uint32_t waddr,
 	return rdc_port_span(hw, waddr, len, kind);
 }
 
-uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
-			 uint32_t count, uint32_t len, unsigned int kind)
+/*
+ * rdc_port_column's charge from hw->now, the column in VRAM: each element
+ * as rdc_bus_charge would charge it (one burst).
+ */
+static void bus_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
+		       uint32_t count, uint32_t len, unsigned int kind)
 {
-	uint64_t a = addr, t;
+	uint64_t a = addr, t = hw->now;
 	uint32_t i;
 	bool uniform;
 
-	rdc_port_poll(hw);
-	if (!count || !len ||
-	    a + (uint64_t)(count - 1) * stride + len > hw->vram_size)
-		return NULL;
-	t = hw->now;
 	rdc_crtc_catch_up(hw, t);
 	/*
 	 * Elements of one beat each, a DRAM row or more apart: once one is
@@ -219,13 +226,22 @@ uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 		bus_burst(hw, &t, a, len, kind);
 	}
 	hw->now = t;
+}
+
+uint8_t *rdc_port_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
+			 uint32_t count, uint32_t len, unsigned int kind)
+{
+	uint64_t end = addr + (uint64_t)(count - 1) * stride + len;
+
+	rdc_port_poll(hw);
+	if (!count || !len || end > hw->vram_size)
+		return NULL;
+	bus_column(hw, addr, stride, count, len, kind);
 	if ((kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
-		rdc_scan_check(hw, addr,
-			       addr + (uint64_t)(count - 1) * stride + len);
+		rdc_scan_check(hw, addr, end);
 	if (hw->vram_hook && (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
-	    rdc_vram_watched(hw, addr,
-			     addr + (uint64_t)(count - 1) * stride + len))
-		rdc_vram_hook_call(hw, t, addr, len, count, stride,
+	    rdc_vram_watched(hw, addr, end))
+		rdc_vram_hook_call(hw, hw->now, addr, len, count, stride,
 				   RDC_VRAM_BY_DP);
 	return hw->vram + addr;
 }
@@ -568,6 +584,109 @@ uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
 	w->row = row;
 	pairs_scan_hit(hw, w, waddr, wstep, len, i);
 	return i;
+}
+
+bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	if (!w->open || w->t > w->lim || hw->vram_hook ||
+	    !rdc_crtc_next_quiet(hw))
+		return false;
+	/* what the window's close would do, then bus_burst's wait */
+	if (w->scan_hit)
+		rdc_scan_drop_all(hw);
+	w->scan_hit = false;
+	hw->bus.open_row = w->row;
+	if (rdc_crtc_quiet_line(hw)) {
+		hw->perf.stall += c->fetch_end - w->t;
+		w->t = c->fetch_end;
+		w->row = hw->bus.open_row;
+	}
+	w->lim = c->next_line_time;
+	return true;
+}
+
+/*
+ * Bytes [a, end) of a span, the kind's flags for the span from `start`,
+ * charged in the window as rdc_bus_charge would charge them: the rest
+ * whole where it ends by the limit, else burst by burst up to the line
+ * start, which rdc_port_window_event takes.  Returns where it stopped:
+ * end, or the first byte not charged when an event is one the window
+ * cannot take.
+ */
+static uint64_t window_span(struct rdc_hw *hw, struct rdc_port_window *w,
+			    uint64_t start, uint64_t end, unsigned int kind)
+{
+	uint64_t a = start, be, cost;
+	unsigned int k = kind, kb;
+	uint32_t row;
+
+	for (;;) {
+		row = w->row;
+		cost = rdc_bus_cost(&row, a, end - a, k,
+				    rdc_bus_bursts(a, end - a));
+		if (w->t + cost <= w->lim) {
+			w->t += cost;
+			w->row = row;
+			return end;
+		}
+		for (;;) {
+			be = RDC_MIN(end, (a / RDC_BUS_BURST_BYTES + 1) *
+						  RDC_BUS_BURST_BYTES);
+			kb = be == end ? k : k & ~RDC_BUS_TAIL_PARTIAL;
+			row = w->row;
+			cost = rdc_bus_cost(&row, a, be - a, kb, 1);
+			if (w->t + cost > w->lim)
+				break;
+			w->t += cost;
+			w->row = row;
+			a = be;
+			k &= ~RDC_BUS_HEAD_PARTIAL;
+		}
+		if (!rdc_port_window_event(hw, w) || w->t > w->lim)
+			return a;
+	}
+}
+
+bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
+			   const struct rdc_port_run *r, uint32_t stride,
+			   unsigned int kind)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint64_t end = r->addr + (uint64_t)(r->count - 1) * stride + r->len;
+	uint64_t a = r->addr;
+
+	if (!w->open || !r->len || !r->count || end > hw->vram_size ||
+	    hw->vram_hook || w->t >= w->lim || !rdc_crtc_next_quiet(hw))
+		return false;
+	if (r->count == 1) {
+		a = window_span(hw, w, a, end, kind);
+		if (a == end)
+			goto done;
+		if (a != r->addr)
+			kind &= ~RDC_BUS_HEAD_PARTIAL;
+	}
+	/* the rest as the port call after the window's close charges it */
+	if (w->scan_hit)
+		rdc_scan_drop_all(hw);
+	hw->bus.open_row = w->row;
+	hw->now = w->t;
+	if (r->count == 1)
+		rdc_bus_charge(hw, (uint32_t)a, (uint32_t)(end - a), kind);
+	else
+		bus_column(hw, r->addr, stride, r->count, r->len, kind);
+	/* and the window's opening after it */
+	w->t = hw->now;
+	w->row = hw->bus.open_row;
+	w->lim = c->running ? c->next_line_time : RDC_NEVER;
+	w->open = w->t >= c->fetch_end;
+	w->scan_hit = false;
+done:
+	if ((kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
+	    rdc_scan_hits(hw, r->addr, end))
+		w->scan_hit = true;
+	return true;
 }
 
 void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w)

@@ -984,6 +984,25 @@ static rdc_noinline void crtc_line_compare(struct rdc_hw *hw, uint64_t when)
 	rdc_pins_update(hw, when);
 }
 
+bool rdc_crtc_quiet_line(struct rdc_hw *hw)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint32_t n = c->next_line;
+	uint64_t when = c->next_line_time, end = c->fetch_end;
+
+	/*
+	 * rdc_crtc_catch_up's loop for one line start with nothing but the
+	 * fetch to do: n is an active line of this frame (so before its
+	 * vblank, and shown: not `hidden`).
+	 */
+	c->next_line_time = c->frame_start + crtc_line_step(hw);
+	c->next_line = n + 1;
+	if (hw->now < when)
+		hw->now = when;
+	crtc_fetch(hw, n, when, false);
+	return c->fetch_end != end;
+}
+
 void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 {
 	struct rdc_crtc *c = &hw->crtc;

@@ -330,6 +330,29 @@ bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
 			    unsigned int kind);
 void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w);
 /*
+ * The DP's next burst, from w->t, cannot end by the window's limit, the
+ * next scanout event: take that event as the burst would wait for it
+ * (bus.h) and return true.  When it fetches, w->t becomes the end of the
+ * fetch window (the wait counts as stall cycles) and w->row its open row;
+ * w->lim becomes the event after it, which may come before w->t (a fetch
+ * longer than a line: then nothing fits and the window must be closed).
+ * The burst is then charged from there as any other.  False, nothing
+ * done, where rdc_port_window_cross would refuse the event.
+ */
+bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w);
+/*
+ * Run r, which the window refused because a scanout event falls in it,
+ * charged as the port call after the window's close would charge it
+ * (rdc_port_span, or rdc_port_column with `stride`), the window staying
+ * open: its bytes are at w->vram + r->addr, and w->t, w->lim and w->open
+ * are the reopened window's.  False, nothing charged, where the close and
+ * the port call must be made: the event does more than fetch a line
+ * (rdc_crtc_next_quiet), a VRAM watcher is set, or r leaves VRAM.
+ */
+bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
+			   const struct rdc_port_run *r, uint32_t stride,
+			   unsigned int kind);
+/*
  * rdc_port_window_charge for the spans [addr + i * stride, + len), i = 0,
  * 1, ... count - 1, as RDC_BUS_WRITE: how many of them, from the first,
  * it charged.
