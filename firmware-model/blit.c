@@ -219,6 +219,44 @@ static void blit_row(struct rdc_dp *dp, uint32_t saddr, int32_t y, int32_t xa,
 }
 
 /*
+ * The row blit_rows' window refuses, daddr its destination: the pair
+ * charged in the window across the line start that falls in it
+ * (rdc_port_window_cross), or as blit_row's port calls charge it, and
+ * the bytes moved.
+ */
+static void blit_row_window(struct rdc_dp *dp, struct rdc_port_window *win,
+			    uint32_t saddr, uint32_t daddr, int32_t y,
+			    int32_t xa, uint32_t n, unsigned int kind)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint32_t len = n * (rdc_format_bpp(dp->st.dst.format) / 8);
+	const struct rdc_port_run rr = { saddr, len, 1 },
+				  wr = { daddr, len, 1 };
+	uint8_t *p;
+
+	if (!rdc_port_window_cross(hw, win, &rr, 0, RDC_BUS_READ)) {
+		rdc_port_window_close(hw, win);
+		blit_row(dp, saddr, y, xa, n);
+		rdc_port_window_open(hw, win);
+		return;
+	}
+	if (rdc_port_window_charge(hw, win, &wr, 0, kind) ||
+	    rdc_port_window_cross(hw, win, &wr, 0, kind)) {
+		blit_bytes(dp, win->vram + daddr, win->vram + saddr, len);
+		hw->perf.pixels += n;
+		return;
+	}
+	/* the read charged: the write as rdc_port_span_pair's second call */
+	rdc_port_window_close(hw, win);
+	p = rdc_port_span(hw, daddr, len, kind);
+	if (p) {
+		blit_bytes(dp, p, hw->vram + saddr, len);
+		hw->perf.pixels += n;
+	}
+	rdc_port_window_open(hw, win);
+}
+
+/*
  * The fast path's rows, each one piece (w <= RDC_DP_CHUNK) and no VRAM
  * watcher: the pairs the window takes are charged together and their
  * bytes moved row by row in the same order; the row the window stops at
@@ -249,10 +287,9 @@ static void blit_rows(struct rdc_dp *dp, uint32_t saddr, uint32_t daddr,
 		k += done;
 		if (k == h)
 			break;
-		rdc_port_window_close(hw, &win);
-		blit_row(dp, saddr, dy + (int32_t)(back ? h - 1 - k : k), dx,
-			 n);
-		rdc_port_window_open(hw, &win);
+		blit_row_window(dp, &win, saddr, daddr,
+				dy + (int32_t)(back ? h - 1 - k : k), dx, n,
+				kind);
 		saddr += (uint32_t)sstep;
 		daddr += (uint32_t)dstep;
 		if (++k == h)

@@ -161,8 +161,9 @@ static inline void mono8_rows32(uint8_t *q, uint32_t stride,
  * Opaque MONO and TEXT rows in XRGB8888 with ROP COPY, the console's
  * case: the rows [ya, yb) of pixels [xa, xb) are charged as one span
  * each in a port window (rdc_port_window_rows) and expanded straight into
- * VRAM; a row the scanout interrupts is charged on its own by
- * rdc_port_span, as span_emit would.  Same spans, same order, same bytes.
+ * VRAM; a row the scanout interrupts is charged on its own as
+ * rdc_port_span charges it, as span_emit would.  Same spans, same order,
+ * same bytes.
  */
 static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 			int64_t xb, int64_t ya, int64_t yb,
@@ -173,6 +174,7 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 	uint32_t n = (uint32_t)(xb - xa), bx = (uint32_t)(xa - x);
 	uint32_t addr, rows, done, r, k;
 	struct rdc_port_window w;
+	struct rdc_port_run one;
 	struct mono_pairs t;
 	uint64_t pixels = 0;
 	bool mono8;
@@ -202,16 +204,27 @@ static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 		rows -= done;
 		if (!rows)
 			break;
-		/* the span span_emit would charge, then the same bytes */
-		rdc_port_window_close(hw, &w);
-		hw->perf.pixels += pixels;
-		pixels = 0;
-		p = rdc_port_span(hw, addr, n * 4, RDC_BUS_WRITE);
-		if (p) {
-			bits_write32(p, rs, &t, r, bx, n);
-			hw->perf.pixels += n;
+		/*
+		 * the span span_emit would charge, then the same bytes: in
+		 * the window across the line start that falls in it, if it can
+		 */
+		one.addr = addr;
+		one.len = n * 4;
+		one.count = 1;
+		if (rdc_port_window_cross(hw, &w, &one, 0, RDC_BUS_WRITE)) {
+			bits_write32(w.vram + addr, rs, &t, r, bx, n);
+			pixels += n;
+		} else {
+			rdc_port_window_close(hw, &w);
+			hw->perf.pixels += pixels;
+			pixels = 0;
+			p = rdc_port_span(hw, addr, n * 4, RDC_BUS_WRITE);
+			if (p) {
+				bits_write32(p, rs, &t, r, bx, n);
+				hw->perf.pixels += n;
+			}
+			rdc_port_window_open(hw, &w);
 		}
-		rdc_port_window_open(hw, &w);
 		r++;
 		addr += s->stride;
 		rows--;
