@@ -615,8 +615,10 @@ bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w)
  * end, or the first byte not charged when an event is one the window
  * cannot take.
  */
-static uint64_t window_span(struct rdc_hw *hw, struct rdc_port_window *w,
-			    uint64_t start, uint64_t end, unsigned int kind)
+static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
+					      struct rdc_port_window *w,
+					      uint64_t start, uint64_t end,
+					      unsigned int kind)
 {
 	uint64_t a = start, be, cost;
 	unsigned int k = kind, kb;
@@ -661,7 +663,13 @@ bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 	    hw->vram_hook || w->t >= w->lim || !rdc_crtc_next_quiet(hw))
 		return false;
 	if (r->count == 1) {
-		a = window_span(hw, w, a, end, kind);
+		/* inlined with the kind a constant, the cost loses its switch */
+		if (kind == RDC_BUS_WRITE)
+			a = window_span(hw, w, a, end, RDC_BUS_WRITE);
+		else if (kind == RDC_BUS_READ)
+			a = window_span(hw, w, a, end, RDC_BUS_READ);
+		else
+			a = window_span(hw, w, a, end, kind);
 		if (a == end)
 			goto done;
 		if (a != r->addr)
