@@ -616,6 +616,92 @@ static void test_port_window_match(void **state)
 	assert_true(a->perf.stall > 0);
 }
 
+/*
+ * A run the window refuses, taken across the line start in it: chip 0
+ * charges random runs (spans and columns, every access kind) in a
+ * window, a refused one by rdc_port_window_cross, a refused one-beat
+ * span also by waiting out line starts with rdc_port_window_event, as
+ * line_events does, and only when both refuse by the port call after
+ * closing the window; chip 1 charges each with rdc_port_span /
+ * rdc_port_column.  Same time, stalls, open row and fetch windows.
+ */
+static void test_port_window_cross_match(void **state)
+{
+	static const unsigned int kinds[] = {
+		RDC_BUS_READ,
+		RDC_BUS_WRITE,
+		RDC_BUS_RMW,
+		RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL,
+		RDC_BUS_WRITE | RDC_BUS_TAIL_PARTIAL,
+	};
+	struct tp_pair *p = *state;
+	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
+	uint32_t seed = 0x7c05u, round, i, n, stride, crossed = 0, waited = 0;
+	struct rdc_port_window w;
+	struct rdc_port_run r;
+	unsigned int kind;
+	bool ok;
+
+	for (round = 0; round < 3000; round++) {
+		stride = tdp_rand(&seed) % 2 ?
+				 (uint32_t)tdp_range(&seed, 1, 600) * 8 :
+				 (uint32_t)tdp_range(&seed, 1, 5000);
+		/* odd rounds: a line's worth of pixels */
+		n = (uint32_t)tdp_range(&seed, 1, round % 2 ? 400 : 40);
+		rdc_port_window_open(a, &w);
+		for (i = 0; i < n; i++) {
+			kind = kinds[tdp_rand(&seed) % RDC_ARRAY_SIZE(kinds)];
+			r.addr = tdp_rand(&seed) % (TDP_VRAM_SIZE + 64);
+			r.len = (uint32_t)tdp_range(&seed, 1, 2000);
+			if (tdp_rand(&seed) % 2)
+				r.len = (uint32_t)tdp_range(&seed, 1, 8);
+			r.count = tdp_rand(&seed) % 2 ?
+					  1 :
+					  (uint32_t)tdp_range(&seed, 0, 400);
+			if (round % 2 || tdp_rand(&seed) % 3 == 0) {
+				/* a pixel of a line: one beat, one burst */
+				r.addr &= ~7u;
+				r.len = (uint32_t)tdp_range(&seed, 1, 8);
+				r.count = 1;
+			}
+			if (r.count == 1)
+				rdc_port_span(b, r.addr, r.len, kind);
+			else
+				rdc_port_column(b, r.addr, stride, r.count,
+						r.len, kind);
+			if (rdc_port_window_charge(a, &w, &r, stride, kind))
+				continue;
+			if (r.count == 1 && r.addr % 8 + r.len <= 8 &&
+			    r.addr + r.len <= TDP_VRAM_SIZE &&
+			    tdp_rand(&seed) % 2) {
+				while (!(ok = rdc_port_window_charge(
+						 a, &w, &r, stride, kind)) &&
+				       w.t <= w.lim &&
+				       rdc_port_window_event(a, &w))
+					waited++;
+				if (ok)
+					continue;
+			}
+			if (rdc_port_window_cross(a, &w, &r, stride, kind)) {
+				crossed++;
+				continue;
+			}
+			rdc_port_window_close(a, &w);
+			if (r.count == 1)
+				rdc_port_span(a, r.addr, r.len, kind);
+			else
+				rdc_port_column(a, r.addr, stride, r.count,
+						r.len, kind);
+			rdc_port_window_open(a, &w);
+		}
+		rdc_port_window_close(a, &w);
+		tp_bus_same_then_idle(a, b, &seed);
+	}
+	assert_true(crossed > 100);
+	assert_true(waited > 100);
+	assert_true(a->perf.stall > 0);
+}
+
 /* A bulk FIFO push is the register writes it stands for. */
 static void test_fifo_push_match(void **state)
 {
@@ -939,6 +1025,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_port_runs_match, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_port_window_match,
+						tp_setup, tp_teardown),
+		cmocka_unit_test_setup_teardown(test_port_window_cross_match,
 						tp_setup, tp_teardown),
 		cmocka_unit_test_setup_teardown(test_fifo_push_match, tp_setup,
 						tp_teardown),
