@@ -608,12 +608,11 @@ bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w)
 }
 
 /*
- * Bytes [a, end) of a span, the kind's flags for the span from `start`,
- * charged in the window as rdc_bus_charge would charge them: the rest
- * whole where it ends by the limit, else burst by burst up to the line
- * start, which rdc_port_window_event takes.  Returns where it stopped:
- * end, or the first byte not charged when an event is one the window
- * cannot take.
+ * The span [start, end) as `kind`, charged in the window as
+ * rdc_bus_charge would charge it: the rest whole where it ends by the
+ * limit, else burst by burst up to the line start, which
+ * rdc_port_window_event takes.  Returns where it stopped: end, or the
+ * first byte not charged when an event is one the window cannot take.
  */
 static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 					      struct rdc_port_window *w,
