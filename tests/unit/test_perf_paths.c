@@ -438,6 +438,15 @@ static void test_aa_match(void **state)
 	tp_assert_raced(p);
 }
 
+/* The access kinds the bus-model checks draw from. */
+static const unsigned int tp_kinds[] = {
+	RDC_BUS_READ,
+	RDC_BUS_WRITE,
+	RDC_BUS_RMW,
+	RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL,
+	RDC_BUS_WRITE | RDC_BUS_TAIL_PARTIAL,
+};
+
 /*
  * The two chips' bus states agree (time, stalls, the open DRAM row, the
  * scanout fetch); then both idle a little, so the next round starts in
@@ -469,15 +478,7 @@ static void test_port_runs_match(void **state)
 	unsigned int kind;
 
 	for (round = 0; round < 2000; round++) {
-		static const unsigned int kinds[] = {
-			RDC_BUS_READ,
-			RDC_BUS_WRITE,
-			RDC_BUS_RMW,
-			RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL,
-			RDC_BUS_WRITE | RDC_BUS_TAIL_PARTIAL,
-		};
-
-		kind = kinds[tdp_rand(&seed) % RDC_ARRAY_SIZE(kinds)];
+		kind = tp_kinds[tdp_rand(&seed) % RDC_ARRAY_SIZE(tp_kinds)];
 		/* strides below and above a DRAM row, multiples of a beat
 		 * (the closed form) and not */
 		stride = tdp_rand(&seed) % 2 ?
@@ -627,13 +628,6 @@ static void test_port_window_match(void **state)
  */
 static void test_port_window_cross_match(void **state)
 {
-	static const unsigned int kinds[] = {
-		RDC_BUS_READ,
-		RDC_BUS_WRITE,
-		RDC_BUS_RMW,
-		RDC_BUS_WRITE | RDC_BUS_HEAD_PARTIAL,
-		RDC_BUS_WRITE | RDC_BUS_TAIL_PARTIAL,
-	};
 	struct tp_pair *p = *state;
 	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
 	uint32_t seed = 0x7c05u, round, i, n, stride, crossed = 0, waited = 0;
@@ -650,7 +644,8 @@ static void test_port_window_cross_match(void **state)
 		n = (uint32_t)tdp_range(&seed, 1, round % 2 ? 400 : 40);
 		rdc_port_window_open(a, &w);
 		for (i = 0; i < n; i++) {
-			kind = kinds[tdp_rand(&seed) % RDC_ARRAY_SIZE(kinds)];
+			kind = tp_kinds[tdp_rand(&seed) %
+					RDC_ARRAY_SIZE(tp_kinds)];
 			r.addr = tdp_rand(&seed) % (TDP_VRAM_SIZE + 64);
 			r.len = (uint32_t)tdp_range(&seed, 1, 2000);
 			if (tdp_rand(&seed) % 2)
