@@ -101,7 +101,8 @@ TEST_HELPER_OBJS := $(patsubst %.c,$(O)/san/%.o,$(TEST_HELPERS))
 
 .PHONY: all deps demo check test golden freestanding speed bench clean help \
 	shared install uninstall install-check debs FORCE \
-	bench-sink vm-test bench-net bench-usb fuzz fuzz-long fuzz-bins fuzz-cov \
+	bench-sink vm-test bench-net bench-idle bench-usb fuzz fuzz-long \
+	fuzz-bins fuzz-cov \
 	bench-peers bench-stream-vm module dkms-source \
 	module-clean checkpatch format format-check firmware-mcu mcu-test \
 	python-check
@@ -125,6 +126,7 @@ help:
 	@echo "make bench-peers  the same, also against pixman, cairo and SDL2_gfx"
 	@echo "make bench-sink   v4l2 sink conversion cost per frame against memcpy"
 	@echo "make bench-net    rdcd over a UNIX socket: submit rate, register round trip, frames"
+	@echo "make bench-idle   an idle paced rdcd's share of a core over 60 s (two minutes)"
 	@echo "make bench-usb    the same over USB against the socket, in the VM (figures only)"
 	@echo "make bench-stream-vm  rdcctl stream at 1920x1080 into v4l2loopback, in the VM (figures only)"
 	@echo "make fuzz         short libFuzzer runs: protocol codec, USB framing, rdcd, .rdl, traces"
@@ -575,6 +577,11 @@ $(O)/rel/net_bench: $(O)/rel/bench/net_bench.o $(O)/rel/librdc.a
 
 bench-net: $(O)/rel/net_bench $(O)/rel/rdcd
 	$(O)/rel/net_bench $(O)/rel/rdcd
+
+# An idle paced rdcd at 1024x768@60 watched for 60 s, with no frame
+# consumer and with one (bench/README.md "An idle rdcd").
+bench-idle: $(O)/rel/net_bench $(O)/rel/rdcd
+	$(O)/rel/net_bench --idle 60 $(O)/rel/rdcd
 
 # The same figures over USB against the UNIX socket, in the VM (an RDC-1
 # gadget on dummy_hcd): tests/vm/tests/usb-bench.sh prints them.

@@ -42,7 +42,7 @@
 #define BENCH_USB_HS_HI	    40e6
 #define BENCH_IDLE_S	    4.0 /* seconds an idle daemon is watched */
 #define BENCH_IDLE_SETTLE_S 1	/* after its start, before that */
-#define BENCH_IDLE_ROUNDS   2
+#define BENCH_IDLE_ROUNDS   2	/* (--idle SECONDS: one) */
 
 /* "unix", "usb"...: the JSON lines' transport */
 static char bench_transport[16] = "unix";
@@ -275,14 +275,15 @@ static double cpu_ns_of(pid_t pid)
 
 /*
  * An idle paced rdcd at 1024x768@60 (--mode), nobody connected, for
- * BENCH_IDLE_S seconds after it settled: the share of one core it takes
- * (its CPU time over the wall time), with no frame consumer (scanout on
- * demand converts nothing) and with one (a png sink that writes only
- * when asked, so every frame is converted and nothing else is done),
- * rounds interleaved; each the least of its rounds (a shared machine
- * only adds to a share).
+ * `seconds` after it settled: the share of one core it takes (its CPU
+ * time over the wall time), with no frame consumer (scanout on demand
+ * converts nothing) and with one (a png sink that writes only when asked,
+ * so every frame is converted and nothing else is done), `rounds`
+ * interleaved; each the least of its rounds (a shared machine only adds
+ * to a share).
  */
-static void bench_idle(const char *rdcd, const char *dir)
+static int bench_idle(const char *rdcd, const char *dir, double seconds,
+		      int rounds)
 {
 	double share[2][BENCH_IDLE_ROUNDS];
 	char ready[220], lis[220], png[220];
@@ -290,7 +291,7 @@ static void bench_idle(const char *rdcd, const char *dir)
 	snprintf(ready, sizeof(ready), "%s/ready", dir);
 	snprintf(lis, sizeof(lis), "unix:%s/idle.sock", dir);
 	snprintf(png, sizeof(png), "%s,every=0", dir);
-	for (int r = 0; r < BENCH_IDLE_ROUNDS; r++) {
+	for (int r = 0; r < rounds; r++) {
 		for (int w = 0; w < 2; w++) {
 			struct timespec settle = { BENCH_IDLE_SETTLE_S, 0 }, ts;
 			double c0, c1, t0, t1;
@@ -314,33 +315,34 @@ static void bench_idle(const char *rdcd, const char *dir)
 				_exit(127);
 			}
 			if (pid < 0)
-				return;
+				return -1;
 			nanosleep(&settle, NULL);
 			up = access(ready, F_OK) == 0;
 			c0 = cpu_ns_of(pid);
 			t0 = now_s();
-			ts.tv_sec = (time_t)BENCH_IDLE_S;
-			ts.tv_nsec = (long)((BENCH_IDLE_S - (double)ts.tv_sec) *
-					    1e9);
+			ts.tv_sec = (time_t)seconds;
+			ts.tv_nsec =
+				(long)((seconds - (double)ts.tv_sec) * 1e9);
 			nanosleep(&ts, NULL);
 			c1 = cpu_ns_of(pid);
 			t1 = now_s();
 			kill(pid, SIGTERM);
 			waitpid(pid, &st, 0);
 			if (c0 < 0 || c1 < 0 || !up)
-				return; /* it did not come up */
+				return -1; /* it did not come up */
 			share[w][r] = (c1 - c0) * 1e-9 / (t1 - t0);
 		}
 	}
 	unlink(ready);
-	qsort(share[0], BENCH_IDLE_ROUNDS, sizeof(double), cmp_double);
-	qsort(share[1], BENCH_IDLE_ROUNDS, sizeof(double), cmp_double);
+	qsort(share[0], (size_t)rounds, sizeof(double), cmp_double);
+	qsort(share[1], (size_t)rounds, sizeof(double), cmp_double);
 	printf("{\"bench\":\"rdcd_idle\",\"size\":\"1024x768@60\","
 	       "\"seconds\":%.1f,\"rounds\":%d,"
 	       "\"cpu_share_no_consumer\":%.5f,"
 	       "\"cpu_share_with_consumer\":%.5f,\"ratio\":%.3f}\n",
-	       BENCH_IDLE_S, BENCH_IDLE_ROUNDS, share[0][0], share[1][0],
+	       seconds, rounds, share[0][0], share[1][0],
 	       share[1][0] > 0 ? share[0][0] / share[1][0] : 0);
+	return 0;
 }
 
 static void bench_draw(rdc_dev *dev)
@@ -468,8 +470,29 @@ int main(int argc, char **argv)
 
 	if (argc == 3 && !strcmp(argv[1], "--uri"))
 		return bench_uri(argv[2]);
+	if (argc == 4 && !strcmp(argv[1], "--idle")) {
+		char *end;
+		double s = strtod(argv[2], &end);
+
+		if (*end || !(s >= 1 && s <= 3600)) {
+			fprintf(stderr,
+				"net_bench: --idle takes 1 to 3600 "
+				"seconds, not '%s'\n",
+				argv[2]);
+			return 2;
+		}
+		if (!mkdtemp(dir))
+			return 1;
+		st = bench_idle(argv[3], dir, s, 1);
+		rmdir(dir);
+		if (st)
+			fprintf(stderr, "net_bench: %s did not come up\n",
+				argv[3]);
+		return st ? 1 : 0;
+	}
 	if (argc != 2) {
-		fprintf(stderr, "usage: net_bench PATH/TO/rdcd | --uri URI\n");
+		fprintf(stderr, "usage: net_bench PATH/TO/rdcd | --uri URI | "
+				"--idle SECONDS PATH/TO/rdcd\n");
 		return 2;
 	}
 	if (!mkdtemp(dir))
@@ -502,7 +525,8 @@ int main(int argc, char **argv)
 		waitpid(pid, &st, 0);
 	}
 	unlink(path);
-	bench_idle(argv[1], dir);
+	if (bench_idle(argv[1], dir, BENCH_IDLE_S, BENCH_IDLE_ROUNDS))
+		fprintf(stderr, "net_bench: the idle rdcd did not come up\n");
 	rmdir(dir);
 	return 0;
 }
