@@ -46,17 +46,22 @@ static int in_rect(int64_t x, int64_t y, int64_t x0, int64_t y0, int64_t x1,
 /*
  * Random blits.  Expected: every source pixel read before anything is
  * written, copied where both its source position is on the source surface
- * and its destination inside clip and destination surface.
+ * and its destination inside clip and destination surface.  `copy_rows`:
+ * ROP COPY in the whole-byte formats only, whose rows the fast path
+ * copies as bytes.
  */
-static void test_blit_random(void **state)
+static void blit_rounds(struct tdp *t, uint32_t rng, uint32_t rounds,
+			bool copy_rows)
 {
-	struct tdp *t = *state;
-	uint32_t rng = 2024, k;
+	static const uint32_t byte_fmts[] = { RDC_FMT_I8, RDC_FMT_RGB565,
+					      RDC_FMT_RGB888,
+					      RDC_FMT_XRGB8888 };
 	uint8_t *before = malloc(WIN), *want = malloc(WIN);
+	uint32_t k;
 
 	assert_non_null(before);
 	assert_non_null(want);
-	for (k = 0; k < 400; k++) {
+	for (k = 0; k < rounds; k++) {
 		uint32_t fmt = tdp_rand(&rng) % RDC_FMT_COUNT;
 		uint32_t rop = tdp_rand(&rng) % RDC_ROP_COUNT;
 		uint32_t mode = tdp_rand(&rng) % 3;
@@ -64,6 +69,10 @@ static void test_blit_random(void **state)
 		struct rdc_rect c;
 		int32_t sx, sy, dx, dy, w, h, i, j;
 
+		if (copy_rows) {
+			fmt = byte_fmts[fmt % RDC_ARRAY_SIZE(byte_fmts)];
+			rop = RDC_ROP_COPY;
+		}
 		ss.format = fmt;
 		ss.width = (uint32_t)tdp_range(&rng, 8, 100);
 		ss.height = (uint32_t)tdp_range(&rng, 8, 80);
@@ -137,6 +146,17 @@ static void test_blit_random(void **state)
 	}
 	free(before);
 	free(want);
+}
+
+static void test_blit_random(void **state)
+{
+	blit_rounds(*state, 2024, 400, false);
+}
+
+/* Rows copied as bytes, of every length and alignment, apart or not. */
+static void test_blit_copy_rows(void **state)
+{
+	blit_rounds(*state, 7, 300, true);
 }
 
 /* Blits that overlap in the same rows, both directions, long rows. */
@@ -439,6 +459,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		TDP_TEST(test_blit_random),
+		TDP_TEST(test_blit_copy_rows),
 		TDP_TEST(test_blit_overlap_rows),
 		TDP_TEST(test_blit_bpp_mismatch),
 		TDP_TEST(test_host_blit_random),
