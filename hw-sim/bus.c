@@ -654,7 +654,6 @@ bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 			   const struct rdc_port_run *r, uint32_t stride,
 			   unsigned int kind)
 {
-	struct rdc_crtc *c = &hw->crtc;
 	uint64_t end = r->addr + (uint64_t)(r->count - 1) * stride + r->len;
 	uint64_t a = r->addr;
 
@@ -674,21 +673,13 @@ bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 		if (a != r->addr)
 			kind &= ~RDC_BUS_HEAD_PARTIAL;
 	}
-	/* the rest as the port call after the window's close charges it */
-	if (w->scan_hit)
-		rdc_scan_drop_all(hw);
-	hw->bus.open_row = w->row;
-	hw->now = w->t;
+	/* the rest as the port call between the window's close and reopening */
+	rdc_port_window_close(hw, w);
 	if (r->count == 1)
 		rdc_bus_charge(hw, (uint32_t)a, (uint32_t)(end - a), kind);
 	else
 		bus_column(hw, r->addr, stride, r->count, r->len, kind);
-	/* and the window's opening after it */
-	w->t = hw->now;
-	w->row = hw->bus.open_row;
-	w->lim = c->running ? c->next_line_time : RDC_NEVER;
-	w->open = w->t >= c->fetch_end;
-	w->scan_hit = false;
+	rdc_port_window_open(hw, w);
 done:
 	if ((kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ &&
 	    rdc_scan_hits(hw, r->addr, end))

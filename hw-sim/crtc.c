@@ -984,6 +984,20 @@ static rdc_noinline void crtc_line_compare(struct rdc_hw *hw, uint64_t when)
 	rdc_pins_update(hw, when);
 }
 
+/*
+ * Step past the start of line n, at `when`: the next event is line n + 1's
+ * start, and simulated time has reached this one.
+ */
+static inline void crtc_step_past(struct rdc_hw *hw, uint32_t n, uint64_t when)
+{
+	struct rdc_crtc *c = &hw->crtc;
+
+	c->next_line_time = c->frame_start + crtc_line_step(hw);
+	c->next_line = n + 1;
+	if (hw->now < when)
+		hw->now = when;
+}
+
 bool rdc_crtc_quiet_line(struct rdc_hw *hw)
 {
 	struct rdc_crtc *c = &hw->crtc;
@@ -995,10 +1009,7 @@ bool rdc_crtc_quiet_line(struct rdc_hw *hw)
 	 * fetch to do: n is an active line of this frame (so before its
 	 * vblank, and shown: not `hidden`).
 	 */
-	c->next_line_time = c->frame_start + crtc_line_step(hw);
-	c->next_line = n + 1;
-	if (hw->now < when)
-		hw->now = when;
+	crtc_step_past(hw, n, when);
 	crtc_fetch(hw, n, when, false);
 	return c->fetch_end != end;
 }
@@ -1044,10 +1055,7 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 		 * Step past the event before acting on it: the frame listener
 		 * may read registers, which catches up again.
 		 */
-		c->next_line_time = c->frame_start + crtc_line_step(hw);
-		c->next_line = n + 1;
-		if (hw->now < when)
-			hw->now = when;
+		crtc_step_past(hw, n, when);
 		if (hw->trace_fn || n == 0)
 			crtc_line_signals(hw, n, when);
 		if (n == 0 || c->rl_wait <= n)
