@@ -288,6 +288,7 @@ static int bench_idle(const char *rdcd, const char *dir, double seconds,
 	double share[2][BENCH_IDLE_ROUNDS];
 	char ready[220], lis[220], png[220];
 
+	rounds = RDC_MIN(rounds, BENCH_IDLE_ROUNDS); /* what share holds */
 	snprintf(ready, sizeof(ready), "%s/ready", dir);
 	snprintf(lis, sizeof(lis), "unix:%s/idle.sock", dir);
 	snprintf(png, sizeof(png), "%s,every=0", dir);
