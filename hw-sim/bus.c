@@ -608,11 +608,60 @@ bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w)
 }
 
 /*
+ * The whole bursts from a of the span [a, end) as `k`, from open row
+ * *row, that fit in `budget` cycles when the span as a whole does not:
+ * bus_burst's walk, a burst at a time (the one ending at end keeps the
+ * TAIL flag, the others lose it; HEAD goes after the first), in closed
+ * form.  Past the first burst every burst before the last is whole and
+ * aligned, costing `full` plus a row miss where it opens a DRAM row: at
+ * most rem / full of them fit, fewer while their misses make them
+ * dearer (a few steps: a miss is under a burst's cost).  The last never
+ * fits, as the span does not.  Returns where the bursts that fit end (a
+ * if none does), their cost in *cost and the row they leave in *row.
+ */
+static rdc_always_inline uint64_t bursts_within(uint32_t *row, uint64_t a,
+						uint64_t end, unsigned int k,
+						uint64_t budget, uint64_t *cost)
+{
+	const unsigned int km = k &
+				~(RDC_BUS_HEAD_PARTIAL | RDC_BUS_TAIL_PARTIAL);
+	uint64_t b1 = RDC_MIN(end, (a / RDC_BUS_BURST_BYTES + 1) *
+					   RDC_BUS_BURST_BYTES);
+	uint32_t r = *row, zero = 0, rj;
+	uint64_t c1, full, j, cj = 0;
+
+	c1 = rdc_bus_cost(&r, a, b1 - a,
+			  b1 == end ? k : k & ~RDC_BUS_TAIL_PARTIAL, 1);
+	if (c1 > budget) {
+		*cost = 0;
+		return a;
+	}
+	full = rdc_bus_cost(&zero, 0, RDC_BUS_BURST_BYTES, km, 1);
+	/* the bursts after the first and before the one holding end - 1 */
+	j = RDC_MIN((end - 1) / RDC_BUS_BURST_BYTES - b1 / RDC_BUS_BURST_BYTES,
+		    (budget - c1) / full);
+	rj = r;
+	while (j) {
+		rj = r;
+		cj = rdc_bus_cost(&rj, b1, j * RDC_BUS_BURST_BYTES, km, j);
+		if (cj <= budget - c1)
+			break;
+		j--;
+		cj = 0;
+		rj = r;
+	}
+	*row = rj;
+	*cost = c1 + cj;
+	return b1 + j * RDC_BUS_BURST_BYTES;
+}
+
+/*
  * The span [start, end) as `kind`, charged in the window as
  * rdc_bus_charge would charge it: the rest whole where it ends by the
- * limit, else burst by burst up to the line start, which
- * rdc_port_window_event takes.  Returns where it stopped: end, or the
- * first byte not charged when an event is one the window cannot take.
+ * limit, else the bursts that end by it (bursts_within), then the line
+ * start, which rdc_port_window_event takes.  Returns where it stopped:
+ * end, or the first byte not charged when an event is one the window
+ * cannot take.
  */
 static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 					      struct rdc_port_window *w,
@@ -620,7 +669,7 @@ static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 					      unsigned int kind)
 {
 	uint64_t a = start, be, cost;
-	unsigned int k = kind, kb;
+	unsigned int k = kind;
 	uint32_t row;
 
 	for (;;) {
@@ -632,14 +681,9 @@ static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 			w->row = row;
 			return end;
 		}
-		for (;;) {
-			be = RDC_MIN(end, (a / RDC_BUS_BURST_BYTES + 1) *
-						  RDC_BUS_BURST_BYTES);
-			kb = be == end ? k : k & ~RDC_BUS_TAIL_PARTIAL;
-			row = w->row;
-			cost = rdc_bus_cost(&row, a, be - a, kb, 1);
-			if (w->t + cost > w->lim)
-				break;
+		row = w->row;
+		be = bursts_within(&row, a, end, k, w->lim - w->t, &cost);
+		if (be != a) {
 			w->t += cost;
 			w->row = row;
 			a = be;

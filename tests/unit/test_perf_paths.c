@@ -650,6 +650,9 @@ static void test_port_window_cross_match(void **state)
 			r.len = (uint32_t)tdp_range(&seed, 1, 2000);
 			if (tdp_rand(&seed) % 2)
 				r.len = (uint32_t)tdp_range(&seed, 1, 8);
+			else if (tdp_rand(&seed) % 8 == 0)
+				/* over several DRAM rows: misses in the walk */
+				r.len = (uint32_t)tdp_range(&seed, 2000, 9000);
 			r.count = tdp_rand(&seed) % 2 ?
 					  1 :
 					  (uint32_t)tdp_range(&seed, 0, 400);
