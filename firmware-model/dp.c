@@ -293,14 +293,21 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		if (!xy_ok(a[0]) || !wh_ok(a[1]))
 			return RDC_ERR_RANGE;
 		fmt = op == RDC_OP_MONO ? RDC_FMT_I1 : dp->st.dst.format;
-		/* the data rows must be there, exactly */
+		/* the colours, then the data rows, must be there, exactly */
+		w = op == RDC_OP_MONO && (fl & RDC_MONO_COLORS) ? 4 : 2;
 		if (len !=
-		    2 + (uint64_t)RDC_H(a[1]) *
+		    w + (uint64_t)RDC_H(a[1]) *
 				    rdc_dp_words_per_row(fmt, RDC_W(a[1])))
 			return RDC_ERR_LENGTH;
+		if (w == 4) {
+			/* (cmd_exec keeps them once the command is done) */
+			dp->st.fg = a[2];
+			dp->st.bg = a[3];
+			dp_mask_colours(dp, &dp->st.fg, &dp->st.bg);
+		}
 		if (op == RDC_OP_MONO)
 			rdc_dp_mono(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_W(a[1]),
-				    RDC_H(a[1]), a + 2, tr);
+				    RDC_H(a[1]), a + w, tr);
 		else
 			rdc_dp_host_blit(dp, RDC_X(a[0]), RDC_Y(a[0]),
 					 RDC_W(a[1]), RDC_H(a[1]), a + 2);
@@ -578,6 +585,11 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 	save_bg = dp->st.bg;
 	dp_mask_colours(dp, &dp->st.fg, &dp->st.bg);
 	err = exec_draw(dp, op, RDC_CMD_FL(hdr), len, a);
+	if (!err && op == RDC_OP_MONO && (RDC_CMD_FL(hdr) & RDC_MONO_COLORS)) {
+		/* its colours stay, as SET_FG and SET_BG would leave them */
+		save_fg = a[2];
+		save_bg = a[3];
+	}
 	dp->st.fg = save_fg;
 	dp->st.bg = save_bg;
 	return err;

@@ -576,8 +576,9 @@ enum rdc_opcode {
 	 */
 	RDC_OP_READBACK = 0x32,
 	/*
-	 * xy, wh, then 1 bpp rows (bit 7 of byte 0 leftmost), each row padded
-	 * to a word; 1 = FG, 0 = BG        flags: RDC_MONO_TRANSPARENT
+	 * xy, wh, [fg, bg,] then 1 bpp rows (bit 7 of byte 0 leftmost), each
+	 * row padded to a word; 1 = FG, 0 = BG
+	 * flags: RDC_MONO_TRANSPARENT, RDC_MONO_COLORS
 	 */
 	RDC_OP_MONO = 0x33,
 	/*
@@ -894,6 +895,12 @@ enum rdc_join { RDC_JOIN_MITER = 0, RDC_JOIN_ROUND = 1, RDC_JOIN_BEVEL = 2 };
 enum rdc_arc_mode { RDC_ARC_OUTLINE = 0, RDC_ARC_PIE = 1, RDC_ARC_CHORD = 2 };
 
 #define RDC_MONO_TRANSPARENT BIT(0) /* 0 bits leave the destination alone */
+/*
+ * MONO: fg and bg follow wh and are set as SET_FG and SET_BG set them,
+ * before the bitmap is drawn: a glyph with its colours, as a console
+ * hands them over (fbdev's struct fb_image), in one command.
+ */
+#define RDC_MONO_COLORS BIT(1)
 
 /*
  * Raster operations: X11's GXclear..GXset.  Bit n of the code is the result for
