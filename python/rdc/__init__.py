@@ -578,9 +578,16 @@ class Batch:
         p, n = _points(xy)
         return self._do("bspline", p, n, steps)
 
-    def mono(self, x, y, w, h, bits, transparent=False):
+    def mono(self, x, y, w, h, bits, transparent=False, fg=None, bg=None):
+        """A 1 bpp bitmap; with fg and bg, one command that also sets them
+        (rdc_batch_mono_colors)."""
         p, _, keep = _in(bits)
-        return self._do("mono", x, y, w, h, p, int(transparent))
+        if fg is None and bg is None:
+            return self._do("mono", x, y, w, h, p, int(transparent))
+        if fg is None or bg is None:
+            raise ValueError("mono: fg and bg go together")
+        return self._do("mono_colors", x, y, w, h, p, fg, bg,
+                        int(transparent))
 
     def text(self, x, y, s, transparent=False):
         s = s.encode("latin-1") if isinstance(s, str) else bytes(s)

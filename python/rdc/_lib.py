@@ -220,6 +220,7 @@ _BATCH = {
     "circle": [i, i, u32], "fill_circle": [i, i, u32],
     "ellipse": [i, i, u32, u32], "fill_ellipse": [i, i, u32, u32],
     "blit": [i, i, i, i, u32, u32], "mono": [i, i, u32, u32, _vp, i],
+    "mono_colors": [i, i, u32, u32, _vp, u32, u32, i],
     "text": [i, i, c_char_p, c_size_t, i], "pen": [u32, u32, u32],
     "dash": [u32, u32, u32], "polygon": [_vp, c_size_t],
     "arc": [i, i, u32, u32, u32, u32, u32], "bezier": [_vp, u32],

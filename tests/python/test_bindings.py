@@ -291,6 +291,29 @@ def test_host_blit(sim):
     assert frame.pixel(9, 9) != 0x112233
 
 
+def test_mono_with_its_colours(sim):
+    sim.mode_set("320x200", "xrgb8888")
+    glyph = bytes([0x80, 0x01])  # 8x2: top-left and bottom-right set
+    with rdc.Batch() as b:
+        b.fg(0x111111).bg(0x222222)
+        b.mono(4, 4, 8, 2, glyph, fg=0x00AA00, bg=0x0000BB)
+        words = b.words()
+        assert words[4] >> 24 == rdc.OP_MONO
+        assert (words[4] >> 16) & 0xFF == rdc.MONO_COLORS
+        assert words[7:9] == [0x00AA00, 0x0000BB]
+        # the colours stay: a plain mono after it draws with them
+        b.mono(20, 4, 8, 2, glyph)
+        sim.submit(b.words())
+    with pytest.raises(ValueError):
+        rdc.Batch().mono(0, 0, 8, 1, b"\x00", fg=1)
+    sim.finish()
+    sim.frame_wait()
+    f = sim.frame_grab()
+    for x0 in (4, 20):
+        assert f.pixel(x0, 4) == 0x00AA00 and f.pixel(x0 + 7, 5) == 0x00AA00
+        assert f.pixel(x0 + 1, 4) == 0x0000BB and f.pixel(x0, 5) == 0x0000BB
+
+
 # ---- waits, pins, simulation ------------------------------------------------
 
 def test_waits_report_time_and_beam(sim):

@@ -167,6 +167,19 @@ static void test_mono_padding(void **state)
 					 RDC_XY(0, 0), RDC_WH(40, 1),
 					 0x04030201u, 0x00000005u },
 		     5);
+	/* with its colours: fg and bg between wh and the rows */
+	assert_int_equal(rdc_batch_mono_colors(b, 7, 8, 12, 2, bits,
+					       0x00112233u, 0x00445566u, 1),
+			 0);
+	expect_words(
+		(const uint32_t[]){
+			RDC_CMD(RDC_OP_MONO,
+				RDC_MONO_TRANSPARENT | RDC_MONO_COLORS, 6),
+			RDC_XY(7, 8), RDC_WH(12, 2), 0x00112233u, 0x00445566u,
+			0x0000c0abu, 0x00003012u },
+		7);
+	assert_int_equal(rdc_batch_mono_colors(b, 0, 0, 8, 1, NULL, 1, 2, 0),
+			 RDC_E_INVAL);
 }
 
 static void test_text_packing(void **state)

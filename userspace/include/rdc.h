@@ -319,6 +319,14 @@ int rdc_batch_blit(rdc_batch *b, int sx, int sy, int dx, int dy, uint32_t w,
 /* bits: h rows of ceil(w/8) bytes, bit 7 leftmost (padded into words here). */
 int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 		   const uint8_t *bits, int transparent);
+/*
+ * rdc_batch_mono with its colours, in one command: fg and bg become the
+ * DP's FG and BG, as rdc_batch_fg and rdc_batch_bg before it would set
+ * them (a console's glyph, which comes with its colours).
+ */
+int rdc_batch_mono_colors(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
+			  const uint8_t *bits, uint32_t fg, uint32_t bg,
+			  int transparent);
 int rdc_batch_text(rdc_batch *b, int x, int y, const char *s, size_t len,
 		   int transparent);
 /* Pens and dashes: width 1..RDC_PEN_MAX_WIDTH, enum rdc_cap, enum rdc_join;

@@ -262,25 +262,34 @@ int rdc_batch_blit(rdc_batch *b, int sx, int sy, int dx, int dy, uint32_t w,
 			  RDC_WH(w, h), 0);
 }
 
-int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
-		   const uint8_t *bits, int transparent)
+/* MONO, with fg and bg ahead of the rows when `colors` is given. */
+static int batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
+		      const uint8_t *bits, int transparent,
+		      const uint32_t *colors)
 {
 	size_t row_bytes = ((size_t)w + 7) / 8;
 	size_t row_words = (row_bytes + 3) / 4;
+	size_t args = colors ? 4 : 2;
 	uint32_t *p;
 	int err;
 
 	if (w > RDC_SIZE_MAX || h > RDC_SIZE_MAX || (!bits && w && h))
 		return RDC_E_INVAL;
-	if (2 + row_words * h > RDC_CMD_LENGTH)
+	if (args + row_words * h > RDC_CMD_LENGTH)
 		return RDC_E_INVAL;
-	p = batch_open(b, RDC_OP_MONO, transparent ? RDC_MONO_TRANSPARENT : 0,
-		       2 + row_words * h, &err);
+	p = batch_open(b, RDC_OP_MONO,
+		       (transparent ? RDC_MONO_TRANSPARENT : 0) |
+			       (colors ? RDC_MONO_COLORS : 0),
+		       (uint32_t)(args + row_words * h), &err);
 	if (!p)
 		return err;
 	p[0] = RDC_XY(x, y);
 	p[1] = RDC_WH(w, h);
-	p += 2;
+	if (colors) {
+		p[2] = colors[0];
+		p[3] = colors[1];
+	}
+	p += args;
 	if (row_bytes == 1) { /* 8-pixel glyphs, the console's case */
 		for (size_t r = 0; r < h; r++)
 			*p++ = bits[r];
@@ -296,6 +305,21 @@ int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 		}
 	}
 	return 0;
+}
+
+int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
+		   const uint8_t *bits, int transparent)
+{
+	return batch_mono(b, x, y, w, h, bits, transparent, NULL);
+}
+
+int rdc_batch_mono_colors(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
+			  const uint8_t *bits, uint32_t fg, uint32_t bg,
+			  int transparent)
+{
+	const uint32_t colors[2] = { fg, bg };
+
+	return batch_mono(b, x, y, w, h, bits, transparent, colors);
 }
 
 int rdc_batch_text(rdc_batch *b, int x, int y, const char *s, size_t len,
