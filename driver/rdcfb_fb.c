@@ -24,8 +24,9 @@
 #define RDCFB_PIXCLK_SLACK_PERMILLE 5u
 /* Command words staged on the stack before they go to the FIFO. */
 #define RDCFB_STAGE_WORDS 32u
-/* The argument words ahead of the data of MONO / HOST_BLIT. */
+/* The argument words ahead of the data: HOST_BLIT's xy, wh; MONO's fg, bg too. */
 #define RDCFB_DATA_ARGS 2u
+#define RDCFB_MONO_ARGS 4u
 
 static u32 rdcfb_fmt_of(const struct fb_var_screeninfo *var)
 {
@@ -620,16 +621,19 @@ static void rdcfb_dp_draw(struct rdcfb_par *par, const struct rdcfb_op *op,
 		rdcfb_put(&s, RDC_WH(op->w, op->h));
 		break;
 	default:
-		if (op->arg) {
-			rdcfb_put(&s, RDC_CMD(RDC_OP_SET_FG, 0, 1));
-			rdcfb_put(&s, op->fg);
-			rdcfb_put(&s, RDC_CMD(RDC_OP_SET_BG, 0, 1));
-			rdcfb_put(&s, op->bg);
-		}
-		rdcfb_put(&s, RDC_CMD(op->arg ? RDC_OP_MONO : RDC_OP_HOST_BLIT,
-				      0, RDCFB_DATA_ARGS + op->words));
+		/* a glyph carries its colours: one command, as fb_image does */
+		if (op->arg)
+			rdcfb_put(&s, RDC_CMD(RDC_OP_MONO, RDC_MONO_COLORS,
+					      RDCFB_MONO_ARGS + op->words));
+		else
+			rdcfb_put(&s, RDC_CMD(RDC_OP_HOST_BLIT, 0,
+					      RDCFB_DATA_ARGS + op->words));
 		rdcfb_put(&s, RDC_XY(op->dx, op->dy));
 		rdcfb_put(&s, RDC_WH(op->w, op->h));
+		if (op->arg) {
+			rdcfb_put(&s, op->fg);
+			rdcfb_put(&s, op->bg);
+		}
 		rdcfb_flush(&s);
 		if (!s.err)
 			s.err = rdc_kchip_push_locked(s.chip, data, op->words);
@@ -850,14 +854,14 @@ void rdcfb_blit(struct fb_info *info, const struct fb_image *img)
 	u32 bpp = mono ? 1 : rdc_format_bpp(par->fmt);
 	u32 wpr = DIV_ROUND_UP(img->width * bpp, RDCFB_BITS_PER_WORD);
 	u32 src_pitch = mono ? DIV_ROUND_UP(img->width, 8) : img->width;
+	u32 args = mono ? RDCFB_MONO_ARGS : RDCFB_DATA_ARGS;
 	u32 max_rows, rows, y0, y, x;
 	struct rdcfb_qw q;
 
 	/* wider than one DP command takes: wider than any screen */
-	if (!img->width || !img->height ||
-	    wpr > RDC_CMD_MAX_ARGS - RDCFB_DATA_ARGS)
+	if (!img->width || !img->height || wpr > RDC_CMD_MAX_ARGS - args)
 		return;
-	max_rows = (RDC_CMD_MAX_ARGS - RDCFB_DATA_ARGS) / wpr;
+	max_rows = (RDC_CMD_MAX_ARGS - args) / wpr;
 	max_rows = clamp(RDCFB_OP_BAND_WORDS / wpr, 1u, max_rows);
 	op.arg = mono;
 	op.fg = rdcfb_colour(info, img->fg_color);

@@ -27,7 +27,8 @@
 #define RDCFB_TRANSFORM_WORDS 9u
 #define RDCFB_ZBUF_WORDS      2u
 /* HOST_BLIT/MONO/TEXT: the position and size (or count) before the data */
-#define RDCFB_DATA_HDR_WORDS 2u
+#define RDCFB_DATA_HDR_WORDS   2u
+#define RDCFB_MONO_COLOR_WORDS 2u /* MONO with RDC_MONO_COLORS: fg, bg */
 /* The widest pixel there is, for HOST_BLIT when DST is not known here. */
 #define RDCFB_MAX_BPP 32u
 
@@ -58,7 +59,7 @@ static bool rdcfb_surface_ok(const u32 *a, u32 vram_size)
 static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 			    u32 *dst_bpp)
 {
-	u32 op = RDC_CMD_OP(hdr), fl = RDC_CMD_FL(hdr), wpr, lo, hi;
+	u32 op = RDC_CMD_OP(hdr), fl = RDC_CMD_FL(hdr), wpr, lo, hi, hdr_words;
 
 	switch (op) {
 	case RDC_OP_SET_DST:
@@ -112,6 +113,9 @@ static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 	case RDC_OP_HOST_BLIT:
 		if (len < RDCFB_DATA_HDR_WORDS)
 			return len;
+		hdr_words = RDCFB_DATA_HDR_WORDS;
+		if (op == RDC_OP_MONO && (fl & RDC_MONO_COLORS))
+			hdr_words += RDCFB_MONO_COLOR_WORDS;
 		if (op == RDC_OP_MONO) {
 			lo = rdcfb_words_per_row(1, RDC_W(a[1]));
 			hi = lo;
@@ -123,7 +127,9 @@ static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 			lo = rdcfb_words_per_row(1, RDC_W(a[1]));
 			hi = rdcfb_words_per_row(RDCFB_MAX_BPP, RDC_W(a[1]));
 		}
-		wpr = len - RDCFB_DATA_HDR_WORDS;
+		if (len < hdr_words)
+			return len;
+		wpr = len - hdr_words;
 		return wpr < (u64)RDC_H(a[1]) * lo ||
 				       wpr > (u64)RDC_H(a[1]) * hi ?
 			       1 :

@@ -160,6 +160,14 @@ static void tv_malformed(void **state)
 	 * the size word is named */
 	u32 mono[] = { RDC_CMD(RDC_OP_MONO, 0, 5), 0, RDC_WH(9, 2), 0, 0, 0 };
 	tv_expect(mono, 6, 2);
+	/* with its colours, MONO 9x2 is 4 + 2 words: 4 + 1 is short */
+	u32 monoc[] = { RDC_CMD(RDC_OP_MONO, RDC_MONO_COLORS, 5),
+			0,
+			RDC_WH(9, 2),
+			0,
+			0,
+			0 };
+	tv_expect(monoc, 6, 2);
 	/* TEXT of 5 characters is 2 words of them */
 	u32 text[] = { RDC_CMD(RDC_OP_TEXT, 0, 3), 0, 5, 0 };
 	tv_expect(text, 4, 2);
@@ -183,6 +191,14 @@ static void tv_malformed(void **state)
 	/* and their good twins pass */
 	u32 mono_ok[] = { RDC_CMD(RDC_OP_MONO, 0, 4), 0, RDC_WH(9, 2), 0, 0 };
 	assert_int_equal(rdcfb_validate(mono_ok, 5, TV_VRAM, &bad), 0);
+	u32 monoc_ok[] = { RDC_CMD(RDC_OP_MONO, RDC_MONO_COLORS, 6),
+			   0,
+			   RDC_WH(9, 2),
+			   0xff0000,
+			   0x00ff00,
+			   0,
+			   0 };
+	assert_int_equal(rdcfb_validate(monoc_ok, 7, TV_VRAM, &bad), 0);
 	u32 text_ok[] = { RDC_CMD(RDC_OP_TEXT, 0, 4), 0, 5, 0, 0 };
 	assert_int_equal(rdcfb_validate(text_ok, 5, TV_VRAM, &bad), 0);
 	hb[5] = RDC_CMD(RDC_OP_HOST_BLIT, 0, 4);
