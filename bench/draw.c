@@ -163,11 +163,11 @@ static void rdc_draw(struct bench_run *r, const struct bench_input *in)
 					       0);
 			break;
 		case BENCH_TEXT:
-			rdc_batch_fg(r->b, a[1]);
-			rdc_batch_bg(r->b, a[2]);
-			rdc_batch_mono(r->b, (int)a[3], (int)a[4],
-				       BENCH_GLYPH_W, BENCH_GLYPH_H,
-				       in->font + a[0] * BENCH_GLYPH_H, 0);
+			/* a glyph with its colours, as a console's are */
+			rdc_batch_mono_colors(r->b, (int)a[3], (int)a[4],
+					      BENCH_GLYPH_W, BENCH_GLYPH_H,
+					      in->font + a[0] * BENCH_GLYPH_H,
+					      a[1], a[2], 0);
 			break;
 		default:
 			return;
