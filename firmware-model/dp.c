@@ -293,18 +293,12 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		if (!xy_ok(a[0]) || !wh_ok(a[1]))
 			return RDC_ERR_RANGE;
 		fmt = op == RDC_OP_MONO ? RDC_FMT_I1 : dp->st.dst.format;
-		/* the colours, then the data rows, must be there, exactly */
+		/* (the colours, set by cmd_exec,) the rows, exactly */
 		w = op == RDC_OP_MONO && (fl & RDC_MONO_COLORS) ? 4 : 2;
 		if (len !=
 		    w + (uint64_t)RDC_H(a[1]) *
 				    rdc_dp_words_per_row(fmt, RDC_W(a[1])))
 			return RDC_ERR_LENGTH;
-		if (w == 4) {
-			/* (cmd_exec keeps them once the command is done) */
-			dp->st.fg = a[2];
-			dp->st.bg = a[3];
-			dp_mask_colours(dp, &dp->st.fg, &dp->st.bg);
-		}
 		if (op == RDC_OP_MONO)
 			rdc_dp_mono(dp, RDC_X(a[0]), RDC_Y(a[0]), RDC_W(a[1]),
 				    RDC_H(a[1]), a + w, tr);
@@ -472,12 +466,27 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 {
 	struct rdc_hw *hw = dp->hw;
 	uint32_t hdr = dp->cmd[0], op = RDC_CMD_OP(hdr);
-	uint32_t len = RDC_CMD_LEN(hdr), i, err, save_fg, save_bg;
+	uint32_t len = RDC_CMD_LEN(hdr), fl = RDC_CMD_FL(hdr), i, err, save_fg,
+		 save_bg;
 	const uint32_t *a = dp->cmd + 1;
 	int fixed = rdc_cmd_args(op);
 	struct rdc_surface s;
 	uint64_t t;
 
+	/*
+	 * Colours carried in the command: written as the SET_FG (and
+	 * SET_BG) before it would write them, whatever becomes of it.
+	 */
+	if ((fl & RDC_DRAW_FG) && rdc_cmd_takes_fg(op)) {
+		if (!len)
+			return RDC_ERR_LENGTH;
+		dp->st.fg = *a++;
+		len--;
+		fl &= ~RDC_DRAW_FG;
+	} else if (op == RDC_OP_MONO && (fl & RDC_MONO_COLORS) && len >= 4) {
+		dp->st.fg = a[2];
+		dp->st.bg = a[3];
+	}
 	if (fixed >= 0 && len != (uint32_t)fixed)
 		return RDC_ERR_LENGTH;
 
@@ -584,12 +593,7 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 	save_fg = dp->st.fg;
 	save_bg = dp->st.bg;
 	dp_mask_colours(dp, &dp->st.fg, &dp->st.bg);
-	err = exec_draw(dp, op, RDC_CMD_FL(hdr), len, a);
-	if (!err && op == RDC_OP_MONO && (RDC_CMD_FL(hdr) & RDC_MONO_COLORS)) {
-		/* its colours stay, as SET_FG and SET_BG would leave them */
-		save_fg = a[2];
-		save_bg = a[3];
-	}
+	err = exec_draw(dp, op, fl, len, a);
 	dp->st.fg = save_fg;
 	dp->st.bg = save_bg;
 	return err;

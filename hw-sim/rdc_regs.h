@@ -768,6 +768,31 @@ static inline int rdc_cmd_args(uint32_t op)
 	}
 }
 
+/* Does op take RDC_DRAW_FG? */
+static inline int rdc_cmd_takes_fg(uint32_t op)
+{
+	switch (op) {
+	case RDC_OP_PIXEL:
+	case RDC_OP_LINE:
+	case RDC_OP_POLYLINE:
+	case RDC_OP_RECT:
+	case RDC_OP_FILL_RECT:
+	case RDC_OP_CIRCLE:
+	case RDC_OP_FILL_CIRCLE:
+	case RDC_OP_ELLIPSE:
+	case RDC_OP_FILL_ELLIPSE:
+	case RDC_OP_POLYGON:
+	case RDC_OP_FILL_POLYGON:
+	case RDC_OP_ARC:
+	case RDC_OP_AA_LINE:
+	case RDC_OP_AA_CIRCLE:
+	case RDC_OP_AA_ELLIPSE:
+		return 1;
+	default:
+		return 0;
+	}
+}
+
 #define RDC_CALL_DEPTH 8 /* nested display lists */
 #define RDC_ALPHA_OPAQUE 255u /* SET_ALPHA: 0..255, reset 255 */
 #define RDC_ALPHA_THRESHOLD 128u /* indexed DST: alpha >= this draws */
@@ -785,6 +810,14 @@ static inline int rdc_cmd_args(uint32_t op)
 #define RDC_ARC_END GENMASK(31, 16)
 #define RDC_CURVE_MAX_STEPS 255 /* steps in the flags of BEZIER & co. */
 #define RDC_COLORKEY_ENABLE BIT(0)
+/*
+ * A drawing command whose flags leave bit 7 free and that draws in FG
+ * (rdc_cmd_takes_fg) may carry its colour: with RDC_DRAW_FG its first
+ * argument word is written to FG, as a SET_FG before it would, and its
+ * own arguments follow.  A blitter's solid fill that carries its colour
+ * (Intel's XY_COLOR_BLT) rather than a register write ahead of it.
+ */
+#define RDC_DRAW_FG BIT(7)
 #define RDC_FILL_NONZERO BIT(0)
 #define RDC_FLOOD_8 BIT(0) /* 8-connected (else 4-connected) */
 /* fill up to the boundary colour (else replace the seed's colour) */
@@ -896,9 +929,10 @@ enum rdc_arc_mode { RDC_ARC_OUTLINE = 0, RDC_ARC_PIE = 1, RDC_ARC_CHORD = 2 };
 
 #define RDC_MONO_TRANSPARENT BIT(0) /* 0 bits leave the destination alone */
 /*
- * MONO: fg and bg follow wh and are set as SET_FG and SET_BG set them,
- * before the bitmap is drawn: a glyph with its colours, as a console
- * hands them over (fbdev's struct fb_image), in one command.
+ * MONO: fg and bg follow wh and are written to FG and BG, as a SET_FG
+ * and a SET_BG before it would, then the bitmap is drawn: a glyph with
+ * its colours, as a console hands them over (fbdev's struct fb_image),
+ * in one command.
  */
 #define RDC_MONO_COLORS BIT(1)
 

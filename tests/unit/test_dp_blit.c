@@ -433,7 +433,7 @@ static void test_mono_text_random(void **state)
  * pixels, the same FG and BG afterwards, and 10 cycles less (two FIFO
  * words of 1 cycle and two decodes of 4 fewer).  Each run starts from
  * the same VRAM and the same open DRAM row (a pixel drawn far away).
- * One with a wrong length fails and leaves FG and BG as they were.
+ * One a word short is refused: the colours are written if it holds them.
  */
 static uint64_t mono_colors_run(struct tdp *t, const struct rdc_surface *ds,
 				const uint32_t *cmd, uint32_t n)
@@ -518,15 +518,21 @@ static void test_mono_colors(void **state)
 		/* the three's busy cycles less the one's: 2 + 2 * 4 */
 		assert_int_equal(busy, 2 * RDC_T_FIFO_WORD + 2 * RDC_T_DECODE);
 
-		/* a word short: refused, the colours kept */
+		/*
+		 * a word short: refused, but the colours written, as the
+		 * SET_FG and SET_BG before a refused MONO would write them;
+		 * too short to hold them, nothing written
+		 */
+		memcpy(want, t->vram, WIN);
 		cmd[2] = RDC_CMD(RDC_OP_MONO, fl | RDC_MONO_COLORS, 3 + words);
 		cmd[5] = ~fg;
 		cmd[6] = ~bg;
 		mono_colors_run(t, &ds, cmd + 2, n - 3);
 		assert_int_equal(tdp_err(t), RDC_ERR_LENGTH);
 		tdp_clear_err(t);
-		assert_int_equal(t->dp.st.fg, fg);
-		assert_int_equal(t->dp.st.bg, bg);
+		assert_int_equal(t->dp.st.fg, words ? ~fg : fg);
+		assert_int_equal(t->dp.st.bg, words ? ~bg : bg);
+		assert_memory_equal(want, t->vram, WIN);
 	}
 	free(want);
 	free(orig);

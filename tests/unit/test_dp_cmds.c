@@ -267,6 +267,103 @@ static void test_colour_mask(void **state)
 	assert_int_equal(t->vram[0x1001], 0);
 }
 
+/*
+ * RDC_DRAW_FG against SET_FG and the command: for every opcode that
+ * takes it, with arguments good and bad, the same VRAM, the same FG
+ * after (even when refused) and the same error, one fetched word and
+ * one decode less.  Each run starts from the same VRAM and the same open
+ * DRAM row (a pixel drawn far away).
+ */
+#define FG_WIN (640u * 480u * 4u)
+
+static uint64_t draw_fg_run(struct tdp *t, const uint32_t *w, uint32_t n,
+			    uint32_t *err)
+{
+	uint64_t busy;
+	uint32_t i;
+
+	TDP_CMD(t, RDC_OP_SET_DST, 3u << 20, 64, RDC_WH(16, 16),
+		RDC_FMT_XRGB8888);
+	TDP_CMD(t, RDC_OP_FILL_RECT, RDC_XY(0, 0), RDC_WH(1, 1));
+	tdp_set_surface(t, RDC_OP_SET_DST, &scr);
+	tdp_drain(t);
+	busy = t->hw.perf.busy;
+	for (i = 0; i < n; i++)
+		tdp_push(t, w[i]);
+	tdp_drain(t);
+	*err = tdp_err(t);
+	tdp_clear_err(t);
+	return t->hw.perf.busy - busy;
+}
+
+static void test_draw_fg(void **state)
+{
+	static const uint32_t ops[] = {
+		RDC_OP_PIXEL,	    RDC_OP_LINE,	 RDC_OP_POLYLINE,
+		RDC_OP_RECT,	    RDC_OP_FILL_RECT,	 RDC_OP_CIRCLE,
+		RDC_OP_FILL_CIRCLE, RDC_OP_ELLIPSE,	 RDC_OP_FILL_ELLIPSE,
+		RDC_OP_POLYGON,	    RDC_OP_FILL_POLYGON, RDC_OP_ARC,
+		RDC_OP_AA_LINE,	    RDC_OP_AA_CIRCLE,	 RDC_OP_AA_ELLIPSE,
+	};
+	struct tdp *t = *state;
+	uint8_t *orig = malloc(FG_WIN), *want = malloc(FG_WIN);
+	uint32_t rng = 0xf6, k, i, w[2 + 2 + 16], len, err_a, err_b, c;
+	uint32_t refused = 0;
+	uint64_t busy;
+
+	assert_non_null(orig);
+	assert_non_null(want);
+	for (k = 0; k < 600; k++) {
+		uint32_t op = ops[k % RDC_ARRAY_SIZE(ops)];
+		int fixed = rdc_cmd_args(op);
+
+		assert_true(rdc_cmd_takes_fg(op));
+		len = fixed >= 0 ? (uint32_t)fixed :
+				   (uint32_t)tdp_range(&rng, 0, 16);
+		if (tdp_rand(&rng) % 8 == 0)
+			len = (uint32_t)tdp_range(&rng, 0, 16); /* LENGTH */
+		c = tdp_rand(&rng);
+		w[0] = RDC_CMD(RDC_OP_SET_FG, 0, 1);
+		w[1] = c;
+		w[2] = RDC_CMD(
+			op, op == RDC_OP_FILL_POLYGON ? tdp_rand(&rng) % 2 : 0,
+			len);
+		for (i = 0; i < len; i++)
+			w[3 + i] = tdp_rand(&rng) % 4 ?
+					   RDC_XY(tdp_range(&rng, -40, 680),
+						  tdp_range(&rng, -40, 520)) :
+					   tdp_rand(&rng);
+		for (i = 0; i < FG_WIN; i += 4)
+			rdc_st32(t->vram + i, tdp_rand(&rng));
+		memcpy(orig, t->vram, FG_WIN);
+		busy = draw_fg_run(t, w, 3 + len, &err_a);
+		assert_int_equal(t->dp.st.fg, c);
+		memcpy(want, t->vram, FG_WIN);
+
+		/* the one command, after another colour */
+		memcpy(t->vram, orig, FG_WIN);
+		TDP_CMD(t, RDC_OP_SET_FG, ~c);
+		w[1] = w[2] | FIELD_PREP(RDC_CMD_FLAGS, RDC_DRAW_FG);
+		w[1] += 1; /* the length: the colour word too */
+		w[2] = c;
+		busy -= draw_fg_run(t, w + 1, 2 + len, &err_b);
+		assert_int_equal(err_b, err_a);
+		assert_int_equal(t->dp.st.fg, c);
+		if (memcmp(want, t->vram, FG_WIN))
+			fail_msg("draw fg %u: op %#x len %u", k, op, len);
+		assert_int_equal(busy, RDC_T_FIFO_WORD + RDC_T_DECODE);
+		refused += err_a != RDC_ERR_NONE;
+	}
+	/* both kinds were met */
+	assert_true(refused > 20 && refused < 500);
+	/* no colour word: LENGTH, and FG untouched */
+	TDP_CMD(t, RDC_OP_SET_FG, 0x123);
+	EXPECT_ERROR(t, RDC_ERR_LENGTH, RDC_CMD(RDC_OP_LINE, RDC_DRAW_FG, 0));
+	assert_int_equal(t->dp.st.fg, 0x123);
+	free(want);
+	free(orig);
+}
+
 static void test_halt_on_error(void **state)
 {
 	struct tdp *t = *state;
@@ -782,6 +879,7 @@ int main(void)
 		TDP_TEST(test_bad_ranges),
 		TDP_TEST(test_bad_surfaces),
 		TDP_TEST(test_colour_mask),
+		TDP_TEST(test_draw_fg),
 		TDP_TEST(test_halt_on_error),
 		TDP_TEST(test_dp_disabled),
 		TDP_TEST(test_fence_clut_reg),
