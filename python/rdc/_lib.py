@@ -214,6 +214,7 @@ _BATCH = {
     "nop": [], "fence": [u32], "wait_vblank": [], "wait_line": [u32],
     "reg_write": [u32, u32], "load_clut": [u32, _vp, c_size_t],
     "fg": [u32], "bg": [u32], "rop": [u32], "clip": [i, i, i, i],
+    "fg_next": [u32],
     "dst": [u32, u32, u32, u32, u32], "src": [u32, u32, u32, u32, u32],
     "pixel": [i, i], "line": [i, i, i, i], "polyline": [_vp, c_size_t],
     "rect": [i, i, u32, u32], "fill_rect": [i, i, u32, u32],

@@ -314,6 +314,23 @@ def test_mono_with_its_colours(sim):
         assert f.pixel(x0 + 1, 4) == 0x0000BB and f.pixel(x0, 5) == 0x0000BB
 
 
+def test_fg_next_is_carried_by_the_line(sim):
+    sim.mode_set("320x200", "xrgb8888")
+    with rdc.Batch() as b:
+        b.fg_next(0x00C0FFEE).line(2, 3, 40, 3)
+        words = b.words()
+        assert len(words) == 4
+        assert words[0] >> 24 == rdc.OP_LINE
+        assert (words[0] >> 16) & 0xFF == rdc.DRAW_FG
+        assert words[1] == 0x00C0FFEE
+        sim.submit(words)
+    sim.finish()
+    sim.frame_wait()
+    f = sim.frame_grab()
+    assert f.pixel(2, 3) == 0xC0FFEE and f.pixel(40, 3) == 0xC0FFEE
+    assert f.pixel(41, 3) != 0xC0FFEE
+
+
 # ---- waits, pins, simulation ------------------------------------------------
 
 def test_waits_report_time_and_beam(sim):

@@ -182,6 +182,63 @@ static void test_mono_padding(void **state)
 			 RDC_E_INVAL);
 }
 
+/*
+ * rdc_batch_fg_next: a drawing command that takes RDC_DRAW_FG carries
+ * the colour; another command, rdc_batch_cmd or a reset keeps the
+ * SET_FG (or nothing) as it is.
+ */
+static void test_fg_next(void **state)
+{
+	(void)state;
+	assert_int_equal(rdc_batch_fg_next(b, 0x00abcdefu), 0);
+	assert_int_equal(rdc_batch_line(b, 1, 2, 3, 4), 0);
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_LINE, RDC_DRAW_FG, 3),
+					 0x00abcdefu, RDC_XY(1, 2),
+					 RDC_XY(3, 4) },
+		     4);
+	/* the flags of the command itself stay */
+	rdc_batch_reset(b);
+	static const int tri[] = { 0, 0, 9, 0, 0, 9 };
+	assert_int_equal(rdc_batch_fg_next(b, 5), 0);
+	assert_int_equal(rdc_batch_fill_polygon(b, tri, 3, 1), 0);
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_FILL_POLYGON,
+						 RDC_DRAW_FG | RDC_FILL_NONZERO,
+						 4),
+					 5, RDC_XY(0, 0), RDC_XY(9, 0),
+					 RDC_XY(0, 9) },
+		     5);
+	/* a command that does not take it: SET_FG, then the command */
+	rdc_batch_reset(b);
+	assert_int_equal(rdc_batch_fg_next(b, 7), 0);
+	assert_int_equal(rdc_batch_blit(b, 0, 0, 8, 8, 2, 2), 0);
+	assert_int_equal(rdc_batch_line(b, 0, 0, 1, 1), 0);
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_SET_FG, 0, 1), 7,
+					 RDC_CMD(RDC_OP_BLIT, 0, 3),
+					 RDC_XY(0, 0), RDC_XY(8, 8),
+					 RDC_WH(2, 2),
+					 RDC_CMD(RDC_OP_LINE, 0, 2),
+					 RDC_XY(0, 0), RDC_XY(1, 1) },
+		     9);
+	/* rdc_batch_cmd's words are the ones asked for */
+	rdc_batch_reset(b);
+	static const uint32_t px = RDC_XY(3, 3);
+	assert_int_equal(rdc_batch_fg_next(b, 7), 0);
+	assert_int_equal(rdc_batch_cmd(b, RDC_OP_PIXEL, 0, &px, 1), 0);
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_SET_FG, 0, 1), 7,
+					 RDC_CMD(RDC_OP_PIXEL, 0, 1), px },
+		     4);
+	/* a plain SET_FG after a reset is not carried */
+	rdc_batch_reset(b);
+	assert_int_equal(rdc_batch_fg_next(b, 7), 0);
+	rdc_batch_reset(b);
+	assert_int_equal(rdc_batch_fg(b, 8), 0);
+	assert_int_equal(rdc_batch_pixel(b, 1, 1), 0);
+	expect_words((const uint32_t[]){ RDC_CMD(RDC_OP_SET_FG, 0, 1), 8,
+					 RDC_CMD(RDC_OP_PIXEL, 0, 1),
+					 RDC_XY(1, 1) },
+		     4);
+}
+
 static void test_text_packing(void **state)
 {
 	(void)state;
@@ -238,6 +295,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_primitive_encoders,
 						batch_setup, batch_teardown),
 		cmocka_unit_test_setup_teardown(test_mono_padding, batch_setup,
+						batch_teardown),
+		cmocka_unit_test_setup_teardown(test_fg_next, batch_setup,
 						batch_teardown),
 		cmocka_unit_test_setup_teardown(test_text_packing, batch_setup,
 						batch_teardown),

@@ -296,6 +296,15 @@ int rdc_batch_reg_write(rdc_batch *b, uint32_t reg, uint32_t val);
 int rdc_batch_load_clut(rdc_batch *b, uint32_t first, const uint32_t *rgb,
 			size_t n);
 int rdc_batch_fg(rdc_batch *b, uint32_t pixel);
+/*
+ * FG for the command that comes next: carried in it (RDC_DRAW_FG, one
+ * command where rdc_batch_fg and it are two, the same drawing and the
+ * same FG after it) when it is a drawing command that takes it
+ * (rdc_cmd_takes_fg: pixels, lines, rectangles, circles, ellipses,
+ * arcs, polygons and their anti-aliased kinds); before any other, or
+ * rdc_batch_cmd, the SET_FG rdc_batch_fg encodes.
+ */
+int rdc_batch_fg_next(rdc_batch *b, uint32_t pixel);
 int rdc_batch_bg(rdc_batch *b, uint32_t pixel);
 int rdc_batch_rop(rdc_batch *b, uint32_t rop);
 int rdc_batch_clip(rdc_batch *b, int x0, int y0, int x1, int y1);

@@ -17,6 +17,7 @@
 struct rdc_batch {
 	uint32_t *w;
 	size_t n, cap;
+	size_t fg_end; /* rdc_batch_fg_next's SET_FG ends here (else 0) */
 };
 
 rdc_batch *rdc_batch_new(void)
@@ -35,7 +36,7 @@ void rdc_batch_free(rdc_batch *b)
 void rdc_batch_reset(rdc_batch *b)
 {
 	if (b)
-		b->n = 0;
+		b->n = b->fg_end = 0;
 }
 
 const uint32_t *rdc_batch_words(const rdc_batch *b, size_t *n)
@@ -67,12 +68,28 @@ static int batch_reserve(rdc_batch *b, size_t more)
 	return 0;
 }
 
-/* Header plus `n` arguments; the space for the arguments is returned. */
+/*
+ * Header plus `n` arguments; the space for the arguments is returned.
+ * Right after rdc_batch_fg_next, a command that takes RDC_DRAW_FG takes
+ * that SET_FG's colour in its place.
+ */
 static uint32_t *batch_open(rdc_batch *b, uint32_t op, uint32_t flags, size_t n,
 			    int *err)
 {
 	uint32_t *p;
 
+	if (b && b->fg_end == b->n && b->n >= 2 && rdc_cmd_takes_fg(op) &&
+	    n < RDC_CMD_LENGTH) {
+		/* [SET_FG, c] becomes [op | DRAW_FG, c, args...] */
+		*err = batch_reserve(b, n);
+		if (*err)
+			return NULL;
+		b->fg_end = 0;
+		p = b->w + b->n - 2;
+		p[0] = RDC_CMD(op, flags | RDC_DRAW_FG, n + 1);
+		b->n += n;
+		return p + 2;
+	}
 	*err = batch_reserve(b, n + 1);
 	if (*err)
 		return NULL;
@@ -91,6 +108,8 @@ int rdc_batch_cmd(rdc_batch *b, uint32_t op, uint32_t flags,
 	/* The length field is 16 bits; longer would silently wrap. */
 	if ((!args && n) || n > RDC_CMD_LENGTH)
 		return RDC_E_INVAL;
+	if (b)
+		b->fg_end = 0; /* the words asked for, as they are */
 	p = batch_open(b, op, flags, n, &err);
 	if (p && n)
 		memcpy(p, args, n * sizeof(*p));
@@ -165,6 +184,15 @@ int rdc_batch_load_clut(rdc_batch *b, uint32_t first, const uint32_t *rgb,
 int rdc_batch_fg(rdc_batch *b, uint32_t pixel)
 {
 	return batch_args(b, RDC_OP_SET_FG, 1, pixel, 0, 0, 0);
+}
+
+int rdc_batch_fg_next(rdc_batch *b, uint32_t pixel)
+{
+	int err = rdc_batch_fg(b, pixel);
+
+	if (!err)
+		b->fg_end = b->n;
+	return err;
 }
 
 int rdc_batch_bg(rdc_batch *b, uint32_t pixel)
@@ -353,7 +381,7 @@ int rdc_batch_submit(rdc_dev *dev, rdc_batch *b)
 	if (!dev || !b)
 		return RDC_E_INVAL;
 	ret = rdc_submit(dev, b->w, b->n);
-	b->n = 0;
+	b->n = b->fg_end = 0;
 	return ret;
 }
 
