@@ -608,9 +608,9 @@ static void rdcfb_dp_draw(struct rdcfb_par *par, const struct rdcfb_op *op,
 	rdcfb_put(&s, op->rop);
 	switch (op->kind) {
 	case RDCFB_OPK_FILL:
-		rdcfb_put(&s, RDC_CMD(RDC_OP_SET_FG, 0, 1));
+		/* the colour carried in the fill, as fb_fillrect carries it */
+		rdcfb_put(&s, RDC_CMD(RDC_OP_FILL_RECT, RDC_DRAW_FG, 3));
 		rdcfb_put(&s, op->fg);
-		rdcfb_put(&s, RDC_CMD(RDC_OP_FILL_RECT, 0, 2));
 		rdcfb_put(&s, RDC_XY(op->dx, op->dy));
 		rdcfb_put(&s, RDC_WH(op->w, op->h));
 		break;

@@ -149,18 +149,23 @@ int rdcfb_validate(const u32 *w, u32 n, u32 vram_size, u32 *bad_word)
 	u32 dst_bpp = 0, i = 0;
 
 	while (i < n) {
-		u32 hdr = w[i], len = RDC_CMD_LEN(hdr);
-		int fixed = rdc_cmd_args(RDC_CMD_OP(hdr)), at;
+		u32 hdr = w[i], len = RDC_CMD_LEN(hdr), op = RDC_CMD_OP(hdr);
+		int fixed = rdc_cmd_args(op), at;
+		/* a colour carried ahead of the arguments (RDC_DRAW_FG) */
+		u32 fg = (RDC_CMD_FL(hdr) & RDC_DRAW_FG) &&
+			 rdc_cmd_takes_fg(op);
 
 		if (fixed == RDC_ARGS_UNKNOWN || len > RDC_CMD_MAX_ARGS ||
-		    len > n - i - 1 || (fixed >= 0 && len != (u32)fixed)) {
+		    len > n - i - 1 || len < fg ||
+		    (fixed >= 0 && len - fg != (u32)fixed)) {
 			*bad_word = i;
 			return -EPROTO;
 		}
-		at = rdcfb_check_args(hdr, w + i + 1, len, vram_size, &dst_bpp);
+		at = rdcfb_check_args(hdr, w + i + 1 + fg, len - fg, vram_size,
+				      &dst_bpp);
 		if (at >= 0) {
 			/* "len" names the header: the count is what is wrong */
-			*bad_word = (u32)at == len ? i : i + 1 + at;
+			*bad_word = (u32)at == len - fg ? i : i + 1 + fg + at;
 			return -EPROTO;
 		}
 		i += 1 + len;

@@ -168,6 +168,14 @@ static void tv_malformed(void **state)
 			0,
 			0 };
 	tv_expect(monoc, 6, 2);
+	/* a carried colour is not one of LINE's 2 words; POLYGON's 1 point
+	 * after its colour is too few, named by the header */
+	u32 line_fg[] = { RDC_CMD(RDC_OP_LINE, RDC_DRAW_FG, 2), 0xff, 0 };
+	tv_expect(line_fg, 3, 0);
+	u32 line_nofg[] = { RDC_CMD(RDC_OP_LINE, RDC_DRAW_FG, 0) };
+	tv_expect(line_nofg, 1, 0);
+	u32 poly_fg[] = { RDC_CMD(RDC_OP_POLYGON, RDC_DRAW_FG, 2), 0xff, 0 };
+	tv_expect(poly_fg, 3, 0);
 	/* TEXT of 5 characters is 2 words of them */
 	u32 text[] = { RDC_CMD(RDC_OP_TEXT, 0, 3), 0, 5, 0 };
 	tv_expect(text, 4, 2);
@@ -191,6 +199,9 @@ static void tv_malformed(void **state)
 	/* and their good twins pass */
 	u32 mono_ok[] = { RDC_CMD(RDC_OP_MONO, 0, 4), 0, RDC_WH(9, 2), 0, 0 };
 	assert_int_equal(rdcfb_validate(mono_ok, 5, TV_VRAM, &bad), 0);
+	u32 line_fg_ok[] = { RDC_CMD(RDC_OP_LINE, RDC_DRAW_FG, 3), 0xff, 0,
+			     RDC_XY(9, 9) };
+	assert_int_equal(rdcfb_validate(line_fg_ok, 4, TV_VRAM, &bad), 0);
 	u32 monoc_ok[] = { RDC_CMD(RDC_OP_MONO, RDC_MONO_COLORS, 6),
 			   0,
 			   RDC_WH(9, 2),
