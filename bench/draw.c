@@ -114,7 +114,7 @@ static void rdc_fills(struct bench_run *r, const uint32_t *a, uint32_t ops)
 	uint32_t i;
 
 	for (i = 0; i < ops; i++, a += BENCH_RECORD) {
-		rdc_batch_fg(r->b, a[4]);
+		rdc_batch_fg_next(r->b, a[4]);
 		rdc_batch_fill_rect(r->b, (int)a[0], (int)a[1], a[2], a[3]);
 		bench_run_flush(r, false);
 	}
@@ -140,25 +140,25 @@ static void rdc_draw(struct bench_run *r, const struct bench_input *in)
 				       (int)a[3], a[4], a[5]);
 			break;
 		case BENCH_LINE:
-			rdc_batch_fg(r->b, a[4]);
+			rdc_batch_fg_next(r->b, a[4]);
 			rdc_batch_line(r->b, (int)a[0], (int)a[1], (int)a[2],
 				       (int)a[3]);
 			break;
 		case BENCH_AALINE:
-			rdc_batch_fg(r->b, a[4]);
+			rdc_batch_fg_next(r->b, a[4]);
 			rdc_batch_aa_line(r->b, (int)a[0], (int)a[1], (int)a[2],
 					  (int)a[3]);
 			break;
 		case BENCH_CIRCLE:
-			rdc_batch_fg(r->b, a[3]);
+			rdc_batch_fg_next(r->b, a[3]);
 			rdc_batch_circle(r->b, (int)a[0], (int)a[1], a[2]);
 			break;
 		case BENCH_FILL_CIRCLE:
-			rdc_batch_fg(r->b, a[3]);
+			rdc_batch_fg_next(r->b, a[3]);
 			rdc_batch_fill_circle(r->b, (int)a[0], (int)a[1], a[2]);
 			break;
 		case BENCH_POLYGON:
-			rdc_batch_fg(r->b, a[2]);
+			rdc_batch_fg_next(r->b, a[2]);
 			rdc_batch_fill_polygon(r->b, in->xy + 2 * a[1], a[0],
 					       0);
 			break;
@@ -362,7 +362,7 @@ static void rt_frame(struct bench_run *r, struct bench_rng *g,
 		int x1 = (int)(bench_r32(g) % m->w),
 		    y1 = (int)(bench_r32(g) % m->h);
 
-		rdc_batch_fg(r->b, bench_r32(g) | BENCH_OPAQUE);
+		rdc_batch_fg_next(r->b, bench_r32(g) | BENCH_OPAQUE);
 		rdc_batch_line(r->b, x0, y0, x1, y1);
 	}
 	for (i = 0; i < RT_FILLS; i++) {
@@ -371,7 +371,7 @@ static void rt_frame(struct bench_run *r, struct bench_rng *g,
 		uint32_t w = 1 + bench_r32(g) % RT_FILL_MAX;
 		uint32_t h = 1 + bench_r32(g) % RT_FILL_MAX;
 
-		rdc_batch_fg(r->b, bench_r32(g) | BENCH_OPAQUE);
+		rdc_batch_fg_next(r->b, bench_r32(g) | BENCH_OPAQUE);
 		rdc_batch_fill_rect(r->b, x, y, w, h);
 	}
 	for (i = 0; i < RT_TEXT_ROWS; i++) {
