@@ -179,6 +179,49 @@ static rdc_always_inline uint64_t span_cost32(uint32_t a, uint32_t k,
 	       (uint64_t)misses * RDC_T_ROW_MISS + (uint64_t)turns * RDC_T_TURN;
 }
 
+/*
+ * span_cost32(a, k, 1) of a line's middle runs, k = q + more, from a
+ * table made once a line: with h = a / 4 & 1 and t = h ^ (k & 1), it is
+ * c[2h + more] (the beats, the row miss and the h + t turnarounds) plus
+ * a row miss where the run crosses a DRAM row (a and its last byte e
+ * differ above the row's bits: a run no longer than a row crosses one
+ * boundary at most) and less the turnaround both edges share within one
+ * burst (shared[2h + more] when a ^ e is below a burst).  About a third
+ * of span_cost32's instructions in x-major line_fast, whose runs are a
+ * few pixels each.
+ */
+struct run_costs {
+	uint32_t c[4], shared[4];
+};
+
+#define RUN_COSTS_MAX_Q (RDC_DRAM_ROW_BYTES / 4 - 1) /* q + 1 pixels a row */
+
+static inline void run_costs_fill(struct run_costs *rc, uint32_t q)
+{
+	uint32_t h, more;
+
+	for (h = 0; h < 2; h++)
+		for (more = 0; more < 2; more++) {
+			uint32_t k = q + more, t = h ^ (k & 1);
+
+			rc->c[2 * h + more] =
+				(k + 3 * (h + t)) / 2 * RDC_T_BEAT +
+				RDC_T_ROW_MISS + (h + t) * RDC_T_TURN;
+			rc->shared[2 * h + more] = (h & t) * RDC_T_TURN;
+		}
+}
+
+static rdc_always_inline uint64_t run_cost32(const struct run_costs *rc,
+					     uint32_t a, uint32_t k,
+					     uint32_t more)
+{
+	uint32_t i = (a / 4 & 1) * 2 + more, x = a ^ (a + 4 * k - 1);
+
+	/* (selects, not branches: runs alternate between the cases) */
+	return rc->c[i] + (x >= RDC_DRAM_ROW_BYTES) * RDC_T_ROW_MISS -
+	       (rc->shared[i] & -(uint32_t)(x < RDC_BUS_BURST_BYTES));
+}
+
 /* What line_fast needs of a line, fixed while it runs. */
 struct line_fixed {
 	uint8_t *vram;
@@ -333,10 +376,16 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 	run1 = run;
 
 	if (xmajor) {
+		struct run_costs rc;
+		const bool table = q <= RUN_COSTS_MAX_Q;
+
+		if (table)
+			run_costs_fill(&rc, q);
 		while (run < end) {
 			more = rem < 0;
 			k = q + more;
-			cost = span_cost32(a, (uint32_t)k, 1);
+			cost = table ? run_cost32(&rc, a, (uint32_t)k, more) :
+				       span_cost32(a, (uint32_t)k, 1);
 			if (cost > budget) {
 				/* the run an event falls in, and on after it */
 				w->t = lim - budget;

@@ -196,6 +196,39 @@ static void test_lines_match(void **state)
 		}
 		tp_check(p);
 	}
+	/*
+	 * A 1024-pixel screen of 4096-byte rows, as rdc-bench's: x-major
+	 * runs cross a DRAM row at x = 512 (line_fast's run cost table);
+	 * then runs longer than a row, which it leaves to span_cost32.
+	 */
+	TP_CMD(p, RDC_OP_SET_DST, 1u << 20, 4096, RDC_WH(1024, 200),
+	       RDC_FMT_XRGB8888);
+	TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(0, 0), RDC_XY(1024, 200));
+	TP_CMD(p, RDC_OP_SET_ROP, RDC_ROP_COPY);
+	for (round = 0; round < 4; round++) {
+		for (i = 0; i < TP_BATCH; i++) {
+			int32_t x0 = tdp_range(&seed, -20, 1044),
+				y0 = tdp_range(&seed, -20, 220);
+			int32_t x1 = tdp_range(&seed, -20, 1044),
+				y1 = i % 3 ? tdp_range(&seed, -20, 220) :
+					     y0 + tdp_range(&seed, -2, 2);
+
+			TP_CMD(p, RDC_OP_LINE, RDC_XY(x0, y0), RDC_XY(x1, y1));
+		}
+		tp_check(p);
+	}
+	/* 4096 pixels wide: whole middle runs longer than a DRAM row */
+	TP_CMD(p, RDC_OP_SET_DST, 1u << 20, 16384, RDC_WH(4096, 16),
+	       RDC_FMT_XRGB8888);
+	TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(0, 0), RDC_XY(4096, 16));
+	for (i = 0; i < TP_BATCH; i++) {
+		int32_t y0 = tdp_range(&seed, 0, 10);
+
+		TP_CMD(p, RDC_OP_LINE, RDC_XY(tdp_range(&seed, 0, 200), y0),
+		       RDC_XY(tdp_range(&seed, 3800, 4095),
+			      y0 + tdp_range(&seed, 2, 5)));
+	}
+	tp_check(p);
 	tp_assert_raced(p);
 }
 
