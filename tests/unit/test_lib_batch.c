@@ -180,6 +180,20 @@ static void test_mono_padding(void **state)
 		7);
 	assert_int_equal(rdc_batch_mono_colors(b, 0, 0, 8, 1, NULL, 1, 2, 0),
 			 RDC_E_INVAL);
+
+	/* 8 pixels wide, 18 rows: a byte a row, each in its own word */
+	uint8_t glyph[18];
+	uint32_t want[3 + 18];
+
+	for (size_t r = 0; r < 18; r++) {
+		glyph[r] = (uint8_t)(0x81 + 7 * r);
+		want[3 + r] = glyph[r];
+	}
+	want[0] = RDC_CMD(RDC_OP_MONO, 0, 2 + 18);
+	want[1] = RDC_XY(3, 4);
+	want[2] = RDC_WH(8, 18);
+	assert_int_equal(rdc_batch_mono(b, 3, 4, 8, 18, glyph, 0), 0);
+	expect_words(want, 3 + 18);
 }
 
 /*
