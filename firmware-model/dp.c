@@ -293,7 +293,7 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 		if (!xy_ok(a[0]) || !wh_ok(a[1]))
 			return RDC_ERR_RANGE;
 		fmt = op == RDC_OP_MONO ? RDC_FMT_I1 : dp->st.dst.format;
-		/* (the colours, set by cmd_exec,) the rows, exactly */
+		/* the rows, after MONO's colours (cmd_exec's), exactly */
 		w = op == RDC_OP_MONO && (fl & RDC_MONO_COLORS) ? 4 : 2;
 		if (len !=
 		    w + (uint64_t)RDC_H(a[1]) *
