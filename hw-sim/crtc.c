@@ -1007,9 +1007,12 @@ bool rdc_crtc_quiet_line(struct rdc_hw *hw)
 	/*
 	 * rdc_crtc_catch_up's loop for one line start with nothing but the
 	 * fetch to do: n is an active line of this frame (so before its
-	 * vblank, and shown: not `hidden`).
+	 * vblank, and shown: not `hidden`), or with nothing at all: a blank
+	 * line after the vblank's.
 	 */
 	crtc_step_past(hw, n, when);
+	if (n >= c->cur.v_display)
+		return false;
 	crtc_fetch(hw, n, when, false);
 	return c->fetch_end != end;
 }

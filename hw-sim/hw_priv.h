@@ -111,19 +111,22 @@ static inline bool rdc_crtc_due(const struct rdc_hw *hw, uint64_t t)
 }
 
 /*
- * Is the next scanout event an active line's start (not line 0) that does
- * nothing but fetch: no raster list, line compare, light pen or trace?
- * Then rdc_crtc_quiet_line takes it, as rdc_crtc_catch_up to its time
- * would, and says whether it opened a fetch window.
+ * Is the next scanout event a line's start that does nothing but fetch
+ * (an active line) or nothing at all (a blank line after the vblank's)?
+ * Not line 0 (the frame's start), not the vblank's, and no raster list,
+ * line compare, light pen or trace.  Then rdc_crtc_quiet_line takes it,
+ * as rdc_crtc_catch_up to its time would, and says whether it opened a
+ * fetch window.
  */
 static inline bool rdc_crtc_next_quiet(const struct rdc_hw *hw)
 {
 	const struct rdc_crtc *c = &hw->crtc;
 	uint32_t n = c->next_line;
 
-	return c->running && !c->rl_mid && n && n < c->cur.v_display &&
-	       c->rl_wait > n && n != c->line_compare && n != c->lpen_line &&
-	       c->lpen_time > c->next_line_time && !hw->trace_fn;
+	return c->running && !c->rl_mid && n && n != c->cur.v_display &&
+	       n < c->cur.v_total && c->rl_wait > n && n != c->line_compare &&
+	       n != c->lpen_line && c->lpen_time > c->next_line_time &&
+	       !hw->trace_fn;
 }
 
 bool rdc_crtc_quiet_line(struct rdc_hw *hw);

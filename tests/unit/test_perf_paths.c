@@ -232,6 +232,81 @@ static void test_lines_match(void **state)
 	tp_assert_raced(p);
 }
 
+/* A trace that only counts line starts. */
+static void tp_trace_lines(void *ctx, uint64_t time, unsigned int event,
+			   uint32_t a, uint32_t b)
+{
+	(void)time;
+	(void)a;
+	(void)b;
+	if (event == RDC_TRACE_LINE)
+		(*(uint64_t *)ctx)++;
+}
+
+/*
+ * The quiet line starts the DP's windows and bursts take themselves
+ * (rdc_crtc_next_quiet, rdc_crtc_quiet_line) against the CRTC's own
+ * catch-up: chip 1 is traced, so that none is quiet and every line start
+ * goes through rdc_crtc_catch_up.  Lines, fills, blits and glyphs keep
+ * the DP busy over many frames (now and then idling to anywhere in one),
+ * so that frame starts, the vblank and the blank lines after it fall
+ * inside DP accesses: the same VRAM, time, stalls, open row and frame.
+ */
+static void test_quiet_lines_match(void **state)
+{
+	struct tp_pair *p = *state;
+	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
+	uint32_t seed = 0x9a1e7u, round, i, k, g[4 + 16];
+	uint64_t lines = 0, frames0 = a->crtc.frame_count;
+
+	p->c[1]->dp.ref_paths = false;
+	rdc_hw_set_trace(b, tp_trace_lines, &lines);
+	for (round = 0; round < 64; round++) {
+		TP_CMD(p, RDC_OP_SET_DST, 0, TP_W * 4, RDC_WH(TP_W, TP_H),
+		       RDC_FMT_XRGB8888);
+		TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(0, 0), RDC_XY(TP_W, TP_H));
+		TP_CMD(p, RDC_OP_SET_ROP,
+		       round % 3 ? RDC_ROP_COPY : RDC_ROP_XOR);
+		for (i = 0; i < TP_BATCH; i++) {
+			TP_CMD(p, RDC_OP_SET_FG, tdp_rand(&seed));
+			switch (i % 4) {
+			case 0:
+				TP_CMD(p, RDC_OP_LINE, tp_xy(&seed),
+				       tp_xy(&seed));
+				break;
+			case 1:
+				TP_CMD(p, RDC_OP_FILL_RECT, tp_xy(&seed),
+				       RDC_WH(tdp_range(&seed, 1, 300),
+					      tdp_range(&seed, 1, 200)));
+				break;
+			case 2:
+				TP_CMD(p, RDC_OP_BLIT, tp_xy(&seed),
+				       tp_xy(&seed),
+				       RDC_WH(tdp_range(&seed, 1, 200),
+					      tdp_range(&seed, 1, 120)));
+				break;
+			default: /* a glyph with its colours */
+				g[0] = tp_xy(&seed);
+				g[1] = RDC_WH(8, 16);
+				for (k = 2; k < RDC_ARRAY_SIZE(g); k++)
+					g[k] = tdp_rand(&seed);
+				tp_cmd(p, RDC_OP_MONO, RDC_MONO_COLORS,
+				       RDC_ARRAY_SIZE(g), g);
+				break;
+			}
+		}
+		tp_check(p);
+		/* now and then, idle to anywhere in the next frame */
+		if (round % 8 == 7) {
+			rdc_hw_run_until(a, a->now + tdp_rand(&seed) % 1500000);
+			rdc_hw_run_until(b, a->now);
+		}
+	}
+	assert_true(a->crtc.frame_count - frames0 >= 10);
+	assert_true(lines > 2000); /* the reference saw them all */
+	tp_assert_raced(p);
+}
+
 static void test_blits_match(void **state)
 {
 	struct tp_pair *p = *state;
@@ -1056,6 +1131,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_port_runs_match, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_port_window_match,
+						tp_setup, tp_teardown),
+		cmocka_unit_test_setup_teardown(test_quiet_lines_match,
 						tp_setup, tp_teardown),
 		cmocka_unit_test_setup_teardown(test_port_window_cross_match,
 						tp_setup, tp_teardown),
