@@ -640,18 +640,14 @@ static rdc_always_inline uint64_t bursts_within(uint32_t *row, uint64_t a,
 	/* the bursts after the first and before the one holding end - 1 */
 	j = RDC_MIN((end - 1) / RDC_BUS_BURST_BYTES - b1 / RDC_BUS_BURST_BYTES,
 		    (budget - c1) / full);
-	rj = r;
-	while (j) {
+	for (; j; j--) {
 		rj = r;
 		cj = rdc_bus_cost(&rj, b1, j * RDC_BUS_BURST_BYTES, km, j);
 		if (cj <= budget - c1)
 			break;
-		j--;
-		cj = 0;
-		rj = r;
 	}
-	*row = rj;
-	*cost = c1 + cj;
+	*row = j ? rj : r;
+	*cost = c1 + (j ? cj : 0);
 	return b1 + j * RDC_BUS_BURST_BYTES;
 }
 
