@@ -111,11 +111,11 @@ static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 								    -1;
 	case RDC_OP_MONO:
 	case RDC_OP_HOST_BLIT:
-		if (len < RDCFB_DATA_HDR_WORDS)
-			return len;
 		hdr_words = RDCFB_DATA_HDR_WORDS;
 		if (op == RDC_OP_MONO && (fl & RDC_MONO_COLORS))
 			hdr_words += RDCFB_MONO_COLOR_WORDS;
+		if (len < hdr_words)
+			return len;
 		if (op == RDC_OP_MONO) {
 			lo = rdcfb_words_per_row(1, RDC_W(a[1]));
 			hi = lo;
@@ -127,8 +127,6 @@ static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 			lo = rdcfb_words_per_row(1, RDC_W(a[1]));
 			hi = rdcfb_words_per_row(RDCFB_MAX_BPP, RDC_W(a[1]));
 		}
-		if (len < hdr_words)
-			return len;
 		wpr = len - hdr_words;
 		return wpr < (u64)RDC_H(a[1]) * lo ||
 				       wpr > (u64)RDC_H(a[1]) * hi ?
