@@ -86,24 +86,37 @@ static inline uint64_t px_pair(uint32_t a, uint32_t b)
 }
 
 /*
- * The four 2-pixel groups of FG and BG: pair[u] has FG as its first pixel
- * if bit 1 of u is set, as its second if bit 0 is.  Built a command (four
- * values), read back whole.
+ * FG and BG in groups, built a command and read back whole: pair[u] has
+ * FG as its first pixel if bit 1 of u is set, as its second if bit 0 is;
+ * quad[u] has FG as its pixel k (0 leftmost) where bit 3 - k of u is
+ * set.  The quads cost 32 stores to build and save a byte of bits two
+ * copies: the console's glyphs, one byte a row, keep to the pairs.
  */
-struct mono_pairs {
+struct mono_groups {
 	uint64_t pair[4];
+	uint64_t quad[16][2];
 };
 
-static inline void pairs_fill(struct mono_pairs *t, uint32_t fg, uint32_t bg)
+static inline void groups_fill(struct mono_groups *t, uint32_t fg, uint32_t bg,
+			       bool quads)
 {
+	unsigned int u;
+
 	t->pair[0] = px_pair(bg, bg);
 	t->pair[1] = px_pair(bg, fg);
 	t->pair[2] = px_pair(fg, bg);
 	t->pair[3] = px_pair(fg, fg);
+	if (!quads)
+		return;
+#pragma GCC unroll 16
+	for (u = 0; u < 16; u++) {
+		t->quad[u][0] = t->pair[u >> 2];
+		t->quad[u][1] = t->pair[u & 3];
+	}
 }
 
-/* The 8 pixels of a byte of bits (bit 7 leftmost) at q. */
-static inline void byte_write32(uint8_t *q, const struct mono_pairs *t,
+/* The 8 pixels of a byte of bits (bit 7 leftmost) at q, from the pairs. */
+static inline void byte_pairs32(uint8_t *q, const struct mono_groups *t,
 				uint32_t byte)
 {
 	rdc_memcpy(q, &t->pair[byte >> 6 & 3], 8);
@@ -112,14 +125,22 @@ static inline void byte_write32(uint8_t *q, const struct mono_pairs *t,
 	rdc_memcpy(q + 24, &t->pair[byte & 3], 8);
 }
 
+/* The same from the quads. */
+static inline void byte_quads32(uint8_t *q, const struct mono_groups *t,
+				uint32_t byte)
+{
+	rdc_memcpy(q, t->quad[byte >> 4 & 15], 16);
+	rdc_memcpy(q + 16, t->quad[byte & 15], 16);
+}
+
 /*
  * Pixels [bx, bx + n) of row r of a MONO or TEXT source as XRGB8888 at q,
- * FG and BG both written: whole bytes of bits as four 2-pixel groups
- * (byte_write32); at the ragged ends, pixel by pixel.
+ * FG and BG both written: whole bytes of bits from the quads; at the
+ * ragged ends, pixel by pixel.
  */
-static inline void bits_write32(uint8_t *q, const struct row_src *rs,
-				const struct mono_pairs *t, uint32_t r,
-				uint32_t bx, uint32_t n)
+static void bits_write32(uint8_t *q, const struct row_src *rs,
+			 const struct mono_groups *t, uint32_t r, uint32_t bx,
+			 uint32_t n)
 {
 	uint32_t i = 0, bg = rs->bg, diff = rs->fg ^ rs->bg;
 	unsigned int b;
@@ -129,7 +150,7 @@ static inline void bits_write32(uint8_t *q, const struct row_src *rs,
 
 		b = (bx + i) % 8;
 		if (b == 0 && n - i >= 8) {
-			byte_write32(q, t, byte);
+			byte_quads32(q, t, byte);
 			q += 32;
 			i += 8;
 			continue;
@@ -141,89 +162,148 @@ static inline void bits_write32(uint8_t *q, const struct row_src *rs,
 }
 
 /*
- * bits_write32 for `rows` rows of exactly one whole byte of a MONO
- * source (bx a multiple of 8, n 8), the console's 8-pixel glyph rows:
- * the row loop without a call or the ragged-end tests per row.
+ * `rows` rows of exactly one whole byte of a MONO source (bx a multiple
+ * of 8), the console's 8-pixel glyph rows, from the pairs.
  */
 static inline void mono8_rows32(uint8_t *q, uint32_t stride,
 				const struct row_src *rs,
-				const struct mono_pairs *t, uint32_t r,
+				const struct mono_groups *t, uint32_t r,
 				uint32_t bx, uint32_t rows)
 {
 	const uint32_t *d = rs->data + (size_t)r * rs->wpr;
 	uint32_t k;
 
 	for (k = 0; k < rows; k++, q += stride, d += rs->wpr)
-		byte_write32(q, t, word_byte(d, bx / 8));
+		byte_pairs32(q, t, word_byte(d, bx / 8));
+}
+
+/*
+ * bits_write32 for `rows` rows at q, a stride apart: the whole bytes of
+ * bits a column at a time, a glyph's rows with its font byte found once;
+ * the ragged ends row by row.  The bytes are bits_write32's, all charged
+ * before any is written, so their order is free.  Not inlined: its setup,
+ * hoisted, would cost the console's glyphs as much as their rows.
+ */
+static rdc_noinline void bits_rows32(uint8_t *q, uint32_t stride,
+				     const struct row_src *rs,
+				     const struct mono_groups *t, uint32_t r,
+				     uint32_t bx, uint32_t n, uint32_t rows)
+{
+	uint32_t head = RDC_MIN((8 - bx % 8) % 8, n);
+	uint32_t bytes = (n - head) / 8, tail = n - head - 8 * bytes;
+	uint32_t j, k, k0 = (bx + head) / 8;
+	uint8_t *col = q + 4 * head, *p;
+
+	for (k = k0; k < k0 + bytes; k++, col += 32) {
+		p = col;
+		if (rs->kind == SRC_TEXT) {
+			const uint8_t *f =
+				&rdc_font8x16[word_byte(rs->data, k) * 16 + r];
+
+			for (j = 0; j < rows; j++, p += stride)
+				byte_quads32(p, t, f[j]);
+		} else {
+			const uint32_t *d = rs->data + (size_t)r * rs->wpr;
+
+			for (j = 0; j < rows; j++, p += stride, d += rs->wpr)
+				byte_quads32(p, t, word_byte(d, k));
+		}
+	}
+	if (!head && !tail)
+		return;
+	for (j = 0; j < rows; j++, q += stride) {
+		bits_write32(q, rs, t, r + j, bx, head);
+		bits_write32(q + 4 * (n - tail), rs, t, r + j, bx + n - tail,
+			     tail);
+	}
+}
+
+/*
+ * One span of rows_text32's, charged in the window w as rdc_port_span
+ * would charge it: where it fits (tried if `fits`), across the line
+ * start that falls in it, or between the window's close and reopening.
+ * Where to write its bytes, or NULL where it leaves VRAM; its pixels
+ * counted.
+ */
+static uint8_t *text_span(struct rdc_hw *hw, struct rdc_port_window *w,
+			  uint32_t addr, uint32_t px, bool fits,
+			  uint64_t *pixels)
+{
+	struct rdc_port_run one = { .addr = addr, .len = px * 4, .count = 1 };
+	uint8_t *p;
+
+	if ((fits && rdc_port_window_span(hw, w, addr, px * 4)) ||
+	    rdc_port_window_cross(hw, w, &one, 0, RDC_BUS_WRITE)) {
+		*pixels += px;
+		return w->vram + addr;
+	}
+	rdc_port_window_close(hw, w);
+	hw->perf.pixels += *pixels;
+	*pixels = 0;
+	p = rdc_port_span(hw, addr, px * 4, RDC_BUS_WRITE);
+	if (p)
+		hw->perf.pixels += px;
+	rdc_port_window_open(hw, w);
+	return p;
 }
 
 /*
  * Opaque MONO and TEXT rows in XRGB8888 with ROP COPY, the console's
- * case: the rows [ya, yb) of pixels [xa, xb) are charged as one span
- * each in a port window (rdc_port_window_rows) and expanded straight into
- * VRAM; a row the scanout interrupts is charged on its own as
- * rdc_port_span charges it, as span_emit would.  Same spans, same order,
- * same bytes.
+ * case, expanded straight into VRAM with each row's spans charged as
+ * span_emit charges them: one a row of up to RDC_DP_CHUNK pixels, where
+ * the rows go in a port window together (rdc_port_window_rows_all),
+ * else row by row (text_span); a wider row, a span a chunk, as
+ * span_emit's caller cuts it.  Same spans, same order, same bytes.
  */
-static void rows_text32(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
-			int64_t xb, int64_t ya, int64_t yb,
-			const struct row_src *rs)
+static rdc_always_inline void rows_text32(struct rdc_dp *dp, int32_t x,
+					  int32_t y, int64_t xa, int64_t xb,
+					  int64_t ya, int64_t yb,
+					  const struct row_src *rs)
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	struct rdc_hw *hw = dp->hw;
 	uint32_t n = (uint32_t)(xb - xa), bx = (uint32_t)(xa - x);
-	uint32_t addr, rows, done, r, k;
+	uint32_t addr, rows, done, r, c, m;
 	struct rdc_port_window w;
-	struct rdc_port_run one;
-	struct mono_pairs t;
+	struct mono_groups t;
 	uint64_t pixels = 0;
 	bool mono8;
 	uint8_t *p;
 
 	if (ya >= yb)
 		return;
-	pairs_fill(&t, rs->fg, rs->bg);
 	mono8 = rs->kind == SRC_MONO && n == 8 && bx % 8 == 0;
+	groups_fill(&t, rs->fg, rs->bg, !mono8);
 	addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
 	rows = (uint32_t)(yb - ya);
 	r = (uint32_t)(ya - y);
 	rdc_port_window_open(hw, &w);
 	while (rows) {
-		done = rdc_port_window_rows_all(hw, &w, addr, n * 4, s->stride,
-						rows);
-		if (mono8) {
+		done = n <= RDC_DP_CHUNK ?
+			       rdc_port_window_rows_all(hw, &w, addr, n * 4,
+							s->stride, rows) :
+			       0;
+		if (done && mono8)
 			mono8_rows32(w.vram + addr, s->stride, rs, &t, r, bx,
 				     done);
-			r += done;
-			addr += done * s->stride;
-		} else {
-			for (k = 0; k < done; k++, r++, addr += s->stride)
-				bits_write32(w.vram + addr, rs, &t, r, bx, n);
-		}
+		else if (done)
+			bits_rows32(w.vram + addr, s->stride, rs, &t, r, bx, n,
+				    done);
 		pixels += (uint64_t)done * n;
+		r += done;
+		addr += done * s->stride;
 		rows -= done;
 		if (!rows)
 			break;
-		/*
-		 * the span span_emit would charge, then the same bytes: in
-		 * the window across the line start that falls in it, if it can
-		 */
-		one.addr = addr;
-		one.len = n * 4;
-		one.count = 1;
-		if (rdc_port_window_cross(hw, &w, &one, 0, RDC_BUS_WRITE)) {
-			bits_write32(w.vram + addr, rs, &t, r, bx, n);
-			pixels += n;
-		} else {
-			rdc_port_window_close(hw, &w);
-			hw->perf.pixels += pixels;
-			pixels = 0;
-			p = rdc_port_span(hw, addr, n * 4, RDC_BUS_WRITE);
-			if (p) {
-				bits_write32(p, rs, &t, r, bx, n);
-				hw->perf.pixels += n;
-			}
-			rdc_port_window_open(hw, &w);
+		/* the next row span by span: wide, or the window ends in it */
+		for (c = 0; c < n; c += m) {
+			m = RDC_MIN(n - c, RDC_DP_CHUNK);
+			p = text_span(hw, &w, addr + 4 * c, m, n > RDC_DP_CHUNK,
+				      &pixels);
+			if (p && mono8)
+				mono8_rows32(p, 0, rs, &t, r, bx, 1);
+			else if (p)
+				bits_write32(p, rs, &t, r, bx + c, m);
 		}
 		r++;
 		addr += s->stride;
@@ -305,8 +385,7 @@ static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 
 	if (rs->kind != SRC_HOST && !rs->transparent && !dp->ref_paths &&
 	    dp->st.rop == RDC_ROP_COPY &&
-	    dp->st.dst.format == RDC_FMT_XRGB8888 && xa < xb &&
-	    xb - xa <= (int64_t)RDC_DP_CHUNK) {
+	    dp->st.dst.format == RDC_FMT_XRGB8888 && xa < xb) {
 		rows_text32(dp, x, y, xa, xb, ya, yb, rs);
 		return;
 	}

@@ -404,15 +404,37 @@ static void test_host_blits_match(void **state)
 	tp_assert_raced(p);
 }
 
+/*
+ * A destination wider than RDC_DP_CHUNK pixels, clipped to itself: a
+ * TEXT row across it is cut into spans a chunk long.
+ */
+static void tp_wide_dst(struct tp_pair *p, uint32_t *seed)
+{
+	struct rdc_surface s = { 1u << 20, 0, 0, 96, RDC_FMT_XRGB8888 };
+	unsigned int i;
+
+	s.width = (uint32_t)tdp_range(seed, RDC_DP_CHUNK + 8, 1800);
+	s.stride = tdp_rand(seed) % 2 ? s.width * 4 : 4 * RDC_DRAM_ROW_BYTES;
+	for (i = 0; i < TP_CHIPS; i++) {
+		tdp_set_surface(p->c[i], RDC_OP_SET_DST, &s);
+		TDP_CMD(p->c[i], RDC_OP_SET_CLIP, RDC_XY(0, 0),
+			RDC_XY(s.width, s.height));
+	}
+}
+
 static void test_glyphs_match(void **state)
 {
 	struct tp_pair *p = *state;
 	uint32_t seed = 0x7e47u, a[2 + 64];
 	unsigned int round, i, k;
+	bool wide;
 
 	for (round = 0; round < TP_ROUNDS; round++) {
+		wide = round % 3 == 2;
 		tp_random_dst(p, &seed, RDC_OP_SET_DST);
 		tp_random_state(p, &seed);
+		if (wide)
+			tp_wide_dst(p, &seed);
 		for (i = 0; i < TP_BATCH; i++) {
 			uint32_t fl =
 				tdp_rand(&seed) % 3 ? 0 : RDC_MONO_TRANSPARENT;
@@ -421,8 +443,12 @@ static void test_glyphs_match(void **state)
 			uint32_t words = (w + 31) / 32 * h;
 
 			a[0] = tp_xy(&seed);
-			if (i % 2) { /* TEXT: 1..8 characters */
+			if (i % 2) { /* TEXT: 1..8 characters, or a wide row */
 				uint32_t n = (uint32_t)tdp_range(&seed, 1, 8);
+
+				if (wide && i % 4 == 1)
+					n = (uint32_t)tdp_range(&seed, 120,
+								4 * 62);
 
 				a[1] = n;
 				for (k = 0; k < (n + 3) / 4; k++)
