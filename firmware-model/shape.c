@@ -11,8 +11,12 @@
  * come in together (rdc-bench -w growth: a 16x16 fill on a 4096-wide
  * surface 1.1-1.4 us -> 0.5 us, an 8x32 one 1.9 -> 0.7 us).  A row's
  * first and last lines are asked for; the hardware brings those between.
+ * A surface of FILL_AHEAD_MIN bytes or less (1024x768 XRGB8888 is 3 MiB)
+ * stays in a desktop's last-level cache, and there the asking costs more
+ * than it brings: rdc-bench's fill with scanout off, about 4% more CPU.
  */
-#define FILL_AHEAD 16
+#define FILL_AHEAD     16
+#define FILL_AHEAD_MIN (8u << 20)
 
 static inline void row_prefetch(const uint8_t *p, uint32_t len)
 {
@@ -47,7 +51,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	uint32_t n = (uint32_t)(xb - xa + 1), v, rows, done, k;
 	uint64_t pixels = 0;
 	uint8_t *p, blk[FILL_STORE];
-	bool fast;
+	bool fast, ahead;
 
 	if (s->format != RDC_FMT_XRGB8888 || rdc_rop_reads_dst(dp->st.rop))
 		return false;
@@ -57,6 +61,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	for (k = 0; k < FILL_STORE; k += 4)
 		rdc_st32(blk + k, v);
 	fast = n * 4 >= FILL_STORE && (v & 0xff) * 0x01010101u != v;
+	ahead = (uint64_t)s->stride * s->height > FILL_AHEAD_MIN;
 	one.addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
 	one.len = n * 4;
 	one.count = 1;
@@ -65,7 +70,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	while (rows) {
 		done = rdc_port_window_rows(hw, &w, one.addr, one.len,
 					    s->stride, rows);
-		for (k = 0; k < done && k < FILL_AHEAD; k++)
+		for (k = 0; ahead && k < done && k < FILL_AHEAD; k++)
 			row_prefetch(w.vram + one.addr + k * s->stride,
 				     one.len);
 		if (fast) {
@@ -75,7 +80,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 			 * rdc-bench fill, scanout off, about 10% less CPU)
 			 */
 			for (k = 0; k < done; k++, one.addr += s->stride) {
-				if (k + FILL_AHEAD < done)
+				if (ahead && k + FILL_AHEAD < done)
 					row_prefetch(w.vram + one.addr +
 							     FILL_AHEAD *
 								     s->stride,
@@ -84,7 +89,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 			}
 		} else {
 			for (k = 0; k < done; k++, one.addr += s->stride) {
-				if (k + FILL_AHEAD < done)
+				if (ahead && k + FILL_AHEAD < done)
 					row_prefetch(w.vram + one.addr +
 							     FILL_AHEAD *
 								     s->stride,
