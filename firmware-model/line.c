@@ -181,45 +181,60 @@ static rdc_always_inline uint64_t span_cost32(uint32_t a, uint32_t k,
 
 /*
  * span_cost32(a, k, 1) of a line's middle runs, k = q + more, from a
- * table made once a line: with h = a / 4 & 1 and t = h ^ (k & 1), it is
- * c[2h + more] (the beats, the row miss and the h + t turnarounds) plus
- * a row miss where the run crosses a DRAM row (a and its last byte e
- * differ above the row's bits: a run no longer than a row crosses one
- * boundary at most) and less the turnaround both edges share within one
- * burst (shared[2h + more] when a ^ e is below a burst).  About a third
- * of span_cost32's instructions in x-major line_fast, whose runs are a
- * few pixels each.
+ * table made once a line: c[2p + more] for a run starting at pixel p of
+ * its burst (p = a / 4 % 8) holds the beats, the row miss and the
+ * turnarounds, less the one both edges share where the run ends in the
+ * burst it starts in (p + k <= 8); a run that crosses a DRAM row (a and
+ * its last byte e differ above the row's bits: a run no longer than a
+ * row crosses one boundary at most) adds a row miss.  With h = p & 1 and
+ * t = h ^ (k & 1) as span_cost32's head and tail.  Half of span_cost32's
+ * instructions in x-major line_fast, whose runs are a few pixels each.
  */
+#define RUN_BURST_PX (RDC_BUS_BURST_BYTES / 4)
+
 struct run_costs {
-	uint32_t c[4], shared[4];
+	uint32_t c[2 * RUN_BURST_PX];
 };
 
 #define RUN_COSTS_MAX_Q (RDC_DRAM_ROW_BYTES / 4 - 1) /* q + 1 pixels a row */
 
 static inline void run_costs_fill(struct run_costs *rc, uint32_t q)
 {
-	uint32_t h, more;
+	uint32_t base[4], shared[4], p, more;
 
-	for (h = 0; h < 2; h++)
+	for (p = 0; p < 2; p++) {
 		for (more = 0; more < 2; more++) {
-			uint32_t k = q + more, t = h ^ (k & 1);
+			uint32_t k = q + more, t = p ^ (k & 1);
 
-			rc->c[2 * h + more] =
-				(k + 3 * (h + t)) / 2 * RDC_T_BEAT +
-				RDC_T_ROW_MISS + (h + t) * RDC_T_TURN;
-			rc->shared[2 * h + more] = (h & t) * RDC_T_TURN;
+			base[2 * p + more] =
+				(k + 3 * (p + t)) / 2 * RDC_T_BEAT +
+				RDC_T_ROW_MISS + (p + t) * RDC_T_TURN;
+			shared[2 * p + more] = (p & t) * RDC_T_TURN;
 		}
+	}
+	/* unrolled, the tests on p folded: a line's cost, not a run's */
+#pragma GCC unroll 8
+	for (p = 0; p < RUN_BURST_PX; p++) {
+		uint32_t h = p & 1;
+
+		rc->c[2 * p] =
+			base[2 * h] -
+			(shared[2 * h] & -(uint32_t)(p + q <= RUN_BURST_PX));
+		rc->c[2 * p + 1] =
+			base[2 * h + 1] -
+			(shared[2 * h + 1] & -(uint32_t)(p + q < RUN_BURST_PX));
+	}
 }
 
 static rdc_always_inline uint64_t run_cost32(const struct run_costs *rc,
 					     uint32_t a, uint32_t k,
 					     uint32_t more)
 {
-	uint32_t i = (a / 4 & 1) * 2 + more, x = a ^ (a + 4 * k - 1);
+	uint32_t x = a ^ (a + 4 * k - 1);
 
-	/* (selects, not branches: runs alternate between the cases) */
-	return rc->c[i] + (x >= RDC_DRAM_ROW_BYTES) * RDC_T_ROW_MISS -
-	       (rc->shared[i] & -(uint32_t)(x < RDC_BUS_BURST_BYTES));
+	/* (a select, not a branch: runs alternate between the cases) */
+	return rc->c[(a / 4 % RUN_BURST_PX) * 2 + more] +
+	       (x >= RDC_DRAM_ROW_BYTES) * RDC_T_ROW_MISS;
 }
 
 /* What line_fast needs of a line, fixed while it runs. */
