@@ -155,11 +155,13 @@ static inline void mono8_rows32(uint8_t *q, uint32_t stride,
 				const struct mono_quads *t, uint32_t r,
 				uint32_t bx, uint32_t rows)
 {
-	const uint32_t *d = rs->data + (size_t)r * rs->wpr;
+	/* in registers: the stores may alias *rs */
+	const uint32_t wpr = rs->wpr, kb = bx / 8;
+	const uint32_t *d = rs->data + (size_t)r * wpr;
 	uint32_t k;
 
-	for (k = 0; k < rows; k++, q += stride, d += rs->wpr)
-		byte_write32(q, t, word_byte(d, bx / 8));
+	for (k = 0; k < rows; k++, q += stride, d += wpr)
+		byte_write32(q, t, word_byte(d, kb));
 }
 
 /*
@@ -188,9 +190,10 @@ static rdc_noinline void bits_rows32(uint8_t *q, uint32_t stride,
 			for (j = 0; j < rows; j++, p += stride)
 				byte_write32(p, t, f[j]);
 		} else {
-			const uint32_t *d = rs->data + (size_t)r * rs->wpr;
+			const uint32_t wpr = rs->wpr;
+			const uint32_t *d = rs->data + (size_t)r * wpr;
 
-			for (j = 0; j < rows; j++, p += stride, d += rs->wpr)
+			for (j = 0; j < rows; j++, p += stride, d += wpr)
 				byte_write32(p, t, word_byte(d, k));
 		}
 	}
