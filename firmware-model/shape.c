@@ -77,16 +77,20 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 			/*
 			 * dp_fill32's rows, the pattern built once for all
 			 * (in registers, not stored and reloaded a row:
-			 * rdc-bench fill, scanout off, about 10% less CPU)
+			 * rdc-bench fill, scanout off, about 10% less CPU),
+			 * and the row's address, stride and length in
+			 * registers too: the stores may alias `one` and *s
 			 */
-			for (k = 0; k < done; k++, one.addr += s->stride) {
+			uint8_t *q = w.vram + one.addr;
+			const uint32_t stride = s->stride, len = one.len;
+
+			for (k = 0; k < done; k++, q += stride) {
 				if (ahead && k + FILL_AHEAD < done)
-					row_prefetch(w.vram + one.addr +
-							     FILL_AHEAD *
-								     s->stride,
-						     one.len);
-				fill32_blocks(w.vram + one.addr, blk, one.len);
+					row_prefetch(q + FILL_AHEAD * stride,
+						     len);
+				fill32_blocks(q, blk, len);
 			}
+			one.addr += done * stride;
 		} else {
 			for (k = 0; k < done; k++, one.addr += s->stride) {
 				if (ahead && k + FILL_AHEAD < done)
