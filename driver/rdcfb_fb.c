@@ -24,9 +24,9 @@
 #define RDCFB_PIXCLK_SLACK_PERMILLE 5u
 /* Command words staged on the stack before they go to the FIFO. */
 #define RDCFB_STAGE_WORDS 32u
-/* The argument words ahead of the data: HOST_BLIT's xy, wh; MONO's fg, bg too. */
-#define RDCFB_DATA_ARGS 2u
-#define RDCFB_MONO_ARGS 4u
+/* The argument words ahead of the data: HOST_BLIT's; MONO's, colours carried */
+#define RDCFB_DATA_ARGS rdc_cmd_data_at(RDC_OP_HOST_BLIT, 0)
+#define RDCFB_MONO_ARGS rdc_cmd_data_at(RDC_OP_MONO, RDC_MONO_COLORS)
 
 static u32 rdcfb_fmt_of(const struct fb_var_screeninfo *var)
 {

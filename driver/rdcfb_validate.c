@@ -27,8 +27,7 @@
 #define RDCFB_TRANSFORM_WORDS 9u
 #define RDCFB_ZBUF_WORDS      2u
 /* HOST_BLIT/MONO/TEXT: the position and size (or count) before the data */
-#define RDCFB_DATA_HDR_WORDS   2u
-#define RDCFB_MONO_COLOR_WORDS 2u /* MONO with RDC_MONO_COLORS: fg, bg */
+#define RDCFB_DATA_HDR_WORDS 2u
 /* The widest pixel there is, for HOST_BLIT when DST is not known here. */
 #define RDCFB_MAX_BPP 32u
 
@@ -111,9 +110,7 @@ static int rdcfb_check_args(u32 hdr, const u32 *a, u32 len, u32 vram_size,
 								    -1;
 	case RDC_OP_MONO:
 	case RDC_OP_HOST_BLIT:
-		hdr_words = RDCFB_DATA_HDR_WORDS;
-		if (op == RDC_OP_MONO && (fl & RDC_MONO_COLORS))
-			hdr_words += RDCFB_MONO_COLOR_WORDS;
+		hdr_words = rdc_cmd_data_at(op, fl);
 		if (len < hdr_words)
 			return len;
 		if (op == RDC_OP_MONO) {

@@ -294,7 +294,7 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 			return RDC_ERR_RANGE;
 		fmt = op == RDC_OP_MONO ? RDC_FMT_I1 : dp->st.dst.format;
 		/* the rows, after MONO's colours (cmd_exec's), exactly */
-		w = op == RDC_OP_MONO && (fl & RDC_MONO_COLORS) ? 4 : 2;
+		w = rdc_cmd_data_at(op, fl);
 		if (len !=
 		    w + (uint64_t)RDC_H(a[1]) *
 				    rdc_dp_words_per_row(fmt, RDC_W(a[1])))
@@ -304,7 +304,7 @@ static uint32_t exec_draw(struct rdc_dp *dp, uint32_t op, uint32_t fl,
 				    RDC_H(a[1]), a + w, tr);
 		else
 			rdc_dp_host_blit(dp, RDC_X(a[0]), RDC_Y(a[0]),
-					 RDC_W(a[1]), RDC_H(a[1]), a + 2);
+					 RDC_W(a[1]), RDC_H(a[1]), a + w);
 		return RDC_ERR_NONE;
 	case RDC_OP_TEXT:
 		if (len < 2)
@@ -483,7 +483,8 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 		dp->st.fg = *a++;
 		len--;
 		fl &= ~RDC_DRAW_FG;
-	} else if (op == RDC_OP_MONO && (fl & RDC_MONO_COLORS) && len >= 4) {
+	} else if (op == RDC_OP_MONO && (fl & RDC_MONO_COLORS) &&
+		   len >= rdc_cmd_data_at(op, fl)) {
 		dp->st.fg = a[2];
 		dp->st.bg = a[3];
 	}

@@ -937,6 +937,15 @@ enum rdc_arc_mode { RDC_ARC_OUTLINE = 0, RDC_ARC_PIE = 1, RDC_ARC_CHORD = 2 };
 #define RDC_MONO_COLORS BIT(1)
 
 /*
+ * The argument words of HOST_BLIT and MONO (with flags fl) before their
+ * data rows: xy, wh, and MONO's fg, bg with RDC_MONO_COLORS.
+ */
+static inline uint32_t rdc_cmd_data_at(uint32_t op, uint32_t fl)
+{
+	return op == RDC_OP_MONO && (fl & RDC_MONO_COLORS) ? 4 : 2;
+}
+
+/*
  * Raster operations: X11's GXclear..GXset.  Bit n of the code is the result for
  * (src, dst) = (!(n >> 1), !(n & 1)), so 3 (GXcopy) is src.
  */

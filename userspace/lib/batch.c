@@ -297,7 +297,8 @@ static int batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 {
 	size_t row_bytes = ((size_t)w + 7) / 8;
 	size_t row_words = (row_bytes + 3) / 4;
-	size_t args = colors ? 4 : 2;
+	size_t args =
+		rdc_cmd_data_at(RDC_OP_MONO, colors ? RDC_MONO_COLORS : 0);
 	uint32_t *p;
 	int err;
 
