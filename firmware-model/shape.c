@@ -68,8 +68,8 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 	rows = (uint32_t)(ye - ya + 1);
 	rdc_port_window_open(hw, &w);
 	while (rows) {
-		done = rdc_port_window_rows(hw, &w, one.addr, one.len,
-					    s->stride, rows);
+		done = rdc_port_window_rows_through(hw, &w, one.addr, one.len,
+						    s->stride, rows);
 		for (k = 0; ahead && k < done && k < FILL_AHEAD; k++)
 			row_prefetch(w.vram + one.addr + k * s->stride,
 				     one.len);

@@ -410,6 +410,7 @@ void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w)
 	w->lim = c->running ? c->next_line_time : RDC_NEVER;
 	w->open = w->t >= c->fetch_end;
 	w->scan_hit = false;
+	w->parted = false;
 }
 
 bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
@@ -662,22 +663,24 @@ static rdc_always_inline uint64_t bursts_within(uint32_t *row, uint64_t a,
 static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 					      struct rdc_port_window *w,
 					      uint64_t start, uint64_t end,
-					      unsigned int kind)
+					      unsigned int kind, bool refused)
 {
 	uint64_t a = start, be, cost;
 	unsigned int k = kind;
 	uint32_t row;
 
-	for (;;) {
+	for (;; refused = false) {
 		row = w->row;
-		cost = rdc_bus_cost(&row, a, end - a, k,
-				    rdc_bus_bursts(a, end - a));
-		if (w->t + cost <= w->lim) {
-			w->t += cost;
-			w->row = row;
-			return end;
+		if (!refused) {
+			cost = rdc_bus_cost(&row, a, end - a, k,
+					    rdc_bus_bursts(a, end - a));
+			if (w->t + cost <= w->lim) {
+				w->t += cost;
+				w->row = row;
+				return end;
+			}
+			row = w->row;
 		}
-		row = w->row;
 		be = bursts_within(&row, a, end, k, w->lim - w->t, &cost);
 		if (be != a) {
 			w->t += cost;
@@ -697,22 +700,31 @@ bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 	uint64_t end = r->addr + (uint64_t)(r->count - 1) * stride + r->len;
 	uint64_t a = r->addr;
 
+	if (w->parted) {
+		/* rdc_port_window_rows_through's row, window_span's stop */
+		w->parted = false;
+		a = w->part;
+		if (a != r->addr)
+			kind &= ~RDC_BUS_HEAD_PARTIAL;
+		goto rest;
+	}
 	if (!w->open || !r->len || !r->count || end > hw->vram_size ||
 	    hw->vram_hook || w->t >= w->lim || !rdc_crtc_next_quiet(hw))
 		return false;
 	if (r->count == 1) {
 		/* inlined with the kind a constant, the cost loses its switch */
 		if (kind == RDC_BUS_WRITE)
-			a = window_span(hw, w, a, end, RDC_BUS_WRITE);
+			a = window_span(hw, w, a, end, RDC_BUS_WRITE, false);
 		else if (kind == RDC_BUS_READ)
-			a = window_span(hw, w, a, end, RDC_BUS_READ);
+			a = window_span(hw, w, a, end, RDC_BUS_READ, false);
 		else
-			a = window_span(hw, w, a, end, kind);
+			a = window_span(hw, w, a, end, kind, false);
 		if (a == end)
 			goto done;
 		if (a != r->addr)
 			kind &= ~RDC_BUS_HEAD_PARTIAL;
 	}
+rest:
 	/* the rest as the port call between the window's close and reopening */
 	rdc_port_window_close(hw, w);
 	if (r->count == 1)
@@ -725,6 +737,62 @@ done:
 	    rdc_scan_hits(hw, r->addr, end))
 		w->scan_hit = true;
 	return true;
+}
+
+uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
+				      struct rdc_port_window *w, uint32_t addr,
+				      uint32_t len, uint32_t stride,
+				      uint32_t count)
+{
+	uint64_t a = addr, c0, c1, n, most = count;
+	uint32_t row = w->row, done = 0;
+
+	/*
+	 * Only while lines wait unconverted (hw->lazy): a frame converted
+	 * at its fetch would read the rows before the caller writes them.
+	 * Else, and where rdc_port_window_rows has no closed form, its rows
+	 * up to the first event.
+	 */
+	if (!hw->lazy || !w->open || hw->vram_hook ||
+	    stride % RDC_DRAM_ROW_BYTES || count < 2 || !len ||
+	    a + len > hw->vram_size)
+		return rdc_port_window_rows(hw, w, addr, len, stride, count);
+	/* rdc_port_window_rows' closed form, event after event */
+	c0 = rdc_bus_cost(&row, a, len, RDC_BUS_WRITE, rdc_bus_bursts(a, len));
+	c1 = rdc_bus_cost(&row, a + stride, len, RDC_BUS_WRITE,
+			  rdc_bus_bursts(a + stride, len));
+	if ((most - 1) * stride > hw->vram_size - len - a)
+		most = (hw->vram_size - len - a) / stride + 1;
+	for (;;) {
+		n = 0;
+		if (w->t + c0 <= w->lim) {
+			n = most - done;
+			if ((n - 1) * c1 > w->lim - w->t - c0)
+				n = 1 + (w->lim - w->t - c0) / c1;
+			w->t += c0 + (n - 1) * c1;
+			w->row = (uint32_t)((a + (n - 1) * stride + len - 1) /
+					    RDC_DRAM_ROW_BYTES);
+			rdc_scan_window_hit(hw, w, a,
+					    a + (n - 1) * stride + len);
+			done += (uint32_t)n;
+			a += n * stride;
+		}
+		if (done == most || w->t >= w->lim || !rdc_crtc_next_quiet(hw))
+			return done;
+		/* the row the line start falls in: it does not fit */
+		w->part = window_span(hw, w, a, a + len, RDC_BUS_WRITE, true);
+		if (w->part != a + len) {
+			w->parted = true;
+			return done;
+		}
+		rdc_scan_window_hit(hw, w, a, a + len);
+		done++;
+		a += stride;
+		/* the row it leaves open is its own: the next costs c1 */
+		c0 = c1;
+		if (done == most)
+			return done;
+	}
 }
 
 void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w)

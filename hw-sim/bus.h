@@ -245,12 +245,12 @@ static inline bool rdc_port_window_span(const struct rdc_hw *hw,
 }
 
 /*
- * rdc_port_window_rows, inline when all `count` rows (a whole number of
- * DRAM rows apart, no VRAM watcher) fit in VRAM and before the limit: its
- * closed form, each row after the first costing what the second does.  A
- * glyph's rows, one command each, mostly fit.
+ * rdc_port_window_rows_through, inline when all `count` rows (a whole
+ * number of DRAM rows apart, no VRAM watcher) fit in VRAM and before the
+ * limit: the closed form, each row after the first costing what the
+ * second does.  A glyph's rows, one command each, mostly fit.
  */
-static inline uint32_t rdc_port_window_rows_all(const struct rdc_hw *hw,
+static inline uint32_t rdc_port_window_rows_all(struct rdc_hw *hw,
 						struct rdc_port_window *w,
 						uint32_t addr, uint32_t len,
 						uint32_t stride, uint32_t count)
@@ -261,14 +261,16 @@ static inline uint32_t rdc_port_window_rows_all(const struct rdc_hw *hw,
 
 	if (!w->open || stride % RDC_DRAM_ROW_BYTES || count < 2 || !len ||
 	    hw->vram_hook || end > hw->vram_size)
-		return rdc_port_window_rows(hw, w, addr, len, stride, count);
+		return rdc_port_window_rows_through(hw, w, addr, len, stride,
+						    count);
 	c0 = rdc_bus_cost(&r0, a, len, RDC_BUS_WRITE, rdc_bus_bursts(a, len));
 	r1 = r0;
 	c1 = rdc_bus_cost(&r1, a + stride, len, RDC_BUS_WRITE,
 			  rdc_bus_bursts(a + stride, len));
 	t = w->t + c0 + (uint64_t)(count - 1) * c1;
 	if (t > w->lim)
-		return rdc_port_window_rows(hw, w, addr, len, stride, count);
+		return rdc_port_window_rows_through(hw, w, addr, len, stride,
+						    count);
 	w->t = t;
 	w->row = (uint32_t)((end - 1) / RDC_DRAM_ROW_BYTES);
 	rdc_scan_window_hit(hw, w, a, end);

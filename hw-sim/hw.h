@@ -320,8 +320,10 @@ struct rdc_port_window {
 	uint8_t *vram;
 	uint64_t t, lim;
 	uint32_t row;
+	uint64_t part; /* parted: the refused row is charged up to here */
 	bool open;     /* false: a fetch window holds the bus now */
 	bool scan_hit; /* a write reached lines scanout has not converted */
+	bool parted;   /* rdc_port_window_rows_through stopped in a row */
 };
 
 void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w);
@@ -347,7 +349,9 @@ bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w);
  * open: its bytes are at w->vram + r->addr, and w->t, w->lim and w->open
  * are the reopened window's.  False, nothing charged, where the close and
  * the port call must be made: the event does more than fetch a line
- * (rdc_crtc_next_quiet), a VRAM watcher is set, or r leaves VRAM.
+ * (rdc_crtc_next_quiet), a VRAM watcher is set, or r leaves VRAM.  With
+ * w->parted, r is the row rdc_port_window_rows_through stopped in: its
+ * rest is charged from w->part, after the close, and true returned.
  */
 bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 			   const struct rdc_port_run *r, uint32_t stride,
@@ -360,6 +364,22 @@ bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 			      struct rdc_port_window *w, uint32_t addr,
 			      uint32_t len, uint32_t stride, uint32_t count);
+/*
+ * rdc_port_window_rows for a caller that writes the rows it is given
+ * only after the call, and then hands the first row refused to
+ * rdc_port_window_cross: while no frame is looked at (scanout on demand
+ * with no consumer), nothing reads VRAM at a line start that only
+ * fetches, so the rows go on through such line starts, the row each one
+ * falls in charged across it as rdc_port_window_cross charges it.  The
+ * cycles, the row left open and the write barrier are what the calls
+ * one event at a time give.  A row stopped at an event the window
+ * cannot take stays charged in part (w->parted): the caller's
+ * rdc_port_window_cross goes on from there.
+ */
+uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
+				      struct rdc_port_window *w, uint32_t addr,
+				      uint32_t len, uint32_t stride,
+				      uint32_t count);
 /*
  * rdc_port_window_pair for the pairs (raddr + i * rstep, waddr + i * wstep),
  * i = 0, 1, ... count - 1, each len bytes: how many of them, from the

@@ -534,6 +534,207 @@ static void test_barrier_elsewhere(void **state)
 	assert_true(look_same(o, LATE));
 }
 
+/*
+ * Rows a whole number of DRAM rows apart (RT_STRIDE) are charged in
+ * closed form, and on a chip nobody watches, on through the line starts
+ * that only fetch (rdc_port_window_rows_through): the rows are written
+ * after the charge, as nothing reads them at such a line start.  Filled
+ * rectangles and glyphs on two chips, one converting each line at its
+ * fetch, one on demand with no consumer, must agree on every cycle, the
+ * row left open, every byte and every frame looked at.  At a core clock
+ * of 40 MHz a line's fetch leaves the DP about 300 cycles of a line, so a
+ * row takes up to two line starts; where the second is one the window
+ * does not take (the line-compare line, the vblank's), the row stops
+ * between them and rdc_port_window_cross goes on with its rest.
+ */
+#define RT_W	  1024u
+#define RT_H	  768u
+#define RT_STRIDE 4096u
+
+static void rt_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
+		     uint64_t number)
+{
+	(void)ctx;
+	(void)xrgb;
+	(void)w;
+	(void)h;
+	(void)number;
+}
+
+static struct tdp *rt_chip_new(uint32_t core_hz, bool lazy)
+{
+	const struct rdc_hw_config cfg = { .vram_size = TDP_VRAM_SIZE,
+					   .core_hz = core_hz };
+	const struct rdc_surface dst = { .base = 0,
+					 .stride = RT_STRIDE,
+					 .width = RT_W,
+					 .height = RT_H,
+					 .format = RDC_FMT_XRGB8888 };
+	struct tdp *t = calloc(1, sizeof(*t));
+	struct rdc_hw *hw;
+
+	assert_non_null(t);
+	t->vram = calloc(1, TDP_VRAM_SIZE);
+	t->frame[0] = calloc(TDP_FRAME_CAP, 4);
+	t->frame[1] = calloc(TDP_FRAME_CAP, 4);
+	assert_non_null(t->vram);
+	assert_non_null(t->frame[0]);
+	assert_non_null(t->frame[1]);
+	hw = &t->hw;
+	rdc_hw_init(hw, &cfg, t->vram, t->frame[0], t->frame[1], TDP_FRAME_CAP);
+	rdc_dp_init(&t->dp, hw);
+	rdc_hw_write(hw, RDC_REG_MODE_PRESET, RDC_PRESET_1024x768_60);
+	rdc_hw_write(hw, RDC_REG_FB_BASE, 0);
+	rdc_hw_write(hw, RDC_REG_FB_FORMAT, RDC_FMT_XRGB8888);
+	rdc_hw_write(hw, RDC_REG_FB_STRIDE, RT_STRIDE);
+	rdc_hw_write(hw, RDC_REG_LINE_COMPARE, RT_H / 3);
+	rdc_hw_write(hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
+	if (lazy)
+		rdc_hw_set_on_demand(hw, true);
+	else
+		rdc_hw_set_frame_fn(hw, rt_frame, NULL);
+	assert_int_equal(hw->lazy, lazy);
+	tdp_set_surface(t, RDC_OP_SET_DST, &dst);
+	tdp_drain(t);
+	return t;
+}
+
+static void rt_same(struct tdp *e, struct tdp *l, bool all)
+{
+	assert_int_equal(e->hw.now, l->hw.now);
+	assert_int_equal(e->hw.perf.stall, l->hw.perf.stall);
+	assert_int_equal(e->hw.perf.busy, l->hw.perf.busy);
+	assert_int_equal(e->hw.perf.pixels, l->hw.perf.pixels);
+	assert_int_equal(e->hw.crtc.fetch_end, l->hw.crtc.fetch_end);
+	assert_int_equal(e->hw.bus.open_row, l->hw.bus.open_row);
+	if (all)
+		assert_memory_equal(e->vram, l->vram, TDP_VRAM_SIZE);
+}
+
+/* the two chips, freed by the teardown if a check fails */
+static int rt_teardown(void **state)
+{
+	struct tdp **c = *state;
+
+	if (c) {
+		if (c[0])
+			tdp_free(c[0]);
+		if (c[1])
+			tdp_free(c[1]);
+		free(c);
+	}
+	return 0;
+}
+
+static void rt_run(void **state, uint32_t core_hz, uint32_t seed)
+{
+	struct tdp **c;
+	uint32_t i, k, a[2 + 2 + 4], wa, ha, wb, hb, looks = 0;
+	const uint32_t *fa, *fb;
+	uint64_t idle;
+
+	rt_teardown(state);
+	c = calloc(2, sizeof(*c));
+	assert_non_null(c);
+	*state = c;
+	c[0] = rt_chip_new(core_hz, false);
+	c[1] = rt_chip_new(core_hz, true);
+	for (i = 0; i < 120; i++) {
+		uint32_t r = tdp_rand(&seed);
+
+		if (r % 4 == 0) { /* a glyph with its colours */
+			a[0] = RDC_XY(tdp_range(&seed, -4, RT_W),
+				      tdp_range(&seed, -8, RT_H));
+			a[1] = RDC_WH(8, 16);
+			for (k = 2; k < RDC_ARRAY_SIZE(a); k++)
+				a[k] = tdp_rand(&seed);
+			for (k = 0; k < 2; k++)
+				tdp_cmd(c[k], RDC_OP_MONO, RDC_MONO_COLORS,
+					RDC_ARRAY_SIZE(a), a);
+		} else { /* a filled rectangle, up to the whole surface */
+			a[0] = tdp_rand(&seed);
+			a[1] = RDC_XY(tdp_range(&seed, -20, RT_W),
+				      tdp_range(&seed, -20, RT_H));
+			a[2] = RDC_WH(tdp_range(&seed, 1, r % 3 ? 300 : RT_W),
+				      tdp_range(&seed, 1, r % 5 ? 200 : RT_H));
+			for (k = 0; k < 2; k++) {
+				tdp_cmd(c[k], RDC_OP_SET_FG, 0, 1, a);
+				tdp_cmd(c[k], RDC_OP_FILL_RECT, 0, 2, a + 1);
+			}
+		}
+		idle = c[0]->hw.now + tdp_rand(&seed) % 400000;
+		for (k = 0; k < 2; k++) {
+			tdp_drain(c[k]);
+			rdc_hw_run_until(&c[k]->hw, idle);
+		}
+		rt_same(c[0], c[1], i % 16 == 15);
+		if (r % 4 == 1) {
+			/* a frame scanned with nothing drawn: kept */
+			for (k = 0; k < 2; k++) {
+				rdc_hw_run_until(
+					&c[k]->hw,
+					rdc_port_next_vblank(&c[k]->hw) + 1);
+				rdc_hw_run_until(
+					&c[k]->hw,
+					rdc_port_next_vblank(&c[k]->hw) + 1);
+			}
+		} else if (r % 4 != 2) {
+			continue;
+		}
+		/* a look: the lazy chip's frame, if kept, is the eager one's */
+		fa = rdc_hw_frame(&c[0]->hw, &wa, &ha);
+		fb = rdc_hw_frame(&c[1]->hw, &wb, &hb);
+		if (r % 4 == 1)
+			assert_non_null(fb);
+		if (!fb)
+			continue;
+		assert_non_null(fa);
+		assert_int_equal(wa, wb);
+		assert_int_equal(ha, hb);
+		assert_memory_equal(fa, fb, (size_t)wa * ha * 4);
+		looks++;
+	}
+	/*
+	 * Rows drawn just ahead of the beam, which fetches them during the
+	 * command: no write reaches a fetched line, so the frame is kept,
+	 * and it shows the rows the beam found written.
+	 */
+	for (i = 0; i < 4; i++) {
+		uint32_t y = 40 + 150 * i;
+
+		a[0] = 0xff000000u | tdp_rand(&seed);
+		a[1] = RDC_XY(0, y + 2);
+		a[2] = RDC_WH(RT_W / 4, 160);
+		for (k = 0; k < 2; k++) {
+			rdc_hw_run_until(&c[k]->hw,
+					 rdc_port_next_vblank(&c[k]->hw) + 1);
+			tdp_cmd(c[k], RDC_OP_SET_FG, 0, 1, a);
+			rdc_hw_run_until(&c[k]->hw,
+					 rdc_port_next_line(&c[k]->hw, y));
+			tdp_cmd(c[k], RDC_OP_FILL_RECT, 0, 2, a + 1);
+			tdp_drain(c[k]);
+			rdc_hw_run_until(&c[k]->hw,
+					 rdc_port_next_vblank(&c[k]->hw) + 1);
+		}
+		rt_same(c[0], c[1], false);
+		fa = rdc_hw_frame(&c[0]->hw, &wa, &ha);
+		fb = rdc_hw_frame(&c[1]->hw, &wb, &hb);
+		assert_non_null(fa);
+		assert_non_null(fb);
+		assert_memory_equal(fa, fb, (size_t)wa * ha * 4);
+		assert_int_equal(fa[(y + 100) * RT_W + 7], a[0] & 0xffffffu);
+	}
+	rt_same(c[0], c[1], true);
+	assert_true(looks > 0);
+}
+
+static void test_rows_through_line_starts(void **state)
+{
+	rt_run(state, 0, 0x726f7773u);	       /* the default 100 MHz */
+	rt_run(state, 40000000u, 0x74687275u); /* rows outlast lines */
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -549,6 +750,8 @@ int main(void)
 						od_teardown),
 		cmocka_unit_test_setup_teardown(test_barrier_elsewhere,
 						od_setup, od_teardown),
+		cmocka_unit_test_teardown(test_rows_through_line_starts,
+					  rt_teardown),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
