@@ -255,7 +255,8 @@ static void blit_row(struct rdc_dp *dp, uint32_t saddr, int32_t y, int32_t xa,
  * The row blit_rows' window refuses, daddr its destination: the pair
  * charged in the window across the line start that falls in it
  * (rdc_port_window_cross), or as blit_row's port calls charge it, and
- * the bytes moved.
+ * the bytes moved.  The window may have charged some of it already
+ * (win->parted, rdc_port_window_pairs_through).
  */
 static void blit_row_window(struct rdc_dp *dp, struct rdc_port_window *win,
 			    uint32_t saddr, uint32_t daddr, int32_t y,
@@ -266,15 +267,25 @@ static void blit_row_window(struct rdc_dp *dp, struct rdc_port_window *win,
 	const struct rdc_port_run rr = { saddr, len, 1 },
 				  wr = { daddr, len, 1 };
 	uint8_t *p;
+	bool moved;
 
-	if (!rdc_port_window_cross(hw, win, &rr, 0, RDC_BUS_READ)) {
-		rdc_port_window_close(hw, win);
-		blit_row(dp, saddr, y, xa, n);
-		rdc_port_window_open(hw, win);
-		return;
+	if (win->parted == RDC_PARTED_WRITE) {
+		/* blit_rows' window charged the read, and the write in part */
+		moved = rdc_port_window_cross(hw, win, &wr, 0, kind);
+	} else {
+		if (win->parted == RDC_PARTED_READ) {
+			win->parted = 0; /* blit_rows' window charged it */
+		} else if (!rdc_port_window_cross(hw, win, &rr, 0,
+						  RDC_BUS_READ)) {
+			rdc_port_window_close(hw, win);
+			blit_row(dp, saddr, y, xa, n);
+			rdc_port_window_open(hw, win);
+			return;
+		}
+		moved = rdc_port_window_charge(hw, win, &wr, 0, kind) ||
+			rdc_port_window_cross(hw, win, &wr, 0, kind);
 	}
-	if (rdc_port_window_charge(hw, win, &wr, 0, kind) ||
-	    rdc_port_window_cross(hw, win, &wr, 0, kind)) {
+	if (moved) {
 		blit_bytes(dp, win->vram + daddr, win->vram + saddr, len);
 		hw->perf.pixels += n;
 		return;
@@ -309,8 +320,8 @@ static void blit_rows(struct rdc_dp *dp, uint32_t saddr, uint32_t daddr,
 
 	rdc_port_window_open(hw, &win);
 	for (;;) {
-		done = rdc_port_window_pairs(hw, &win, saddr, daddr, len, sstep,
-					     dstep, h - k, kind);
+		done = rdc_port_window_pairs_through(
+			hw, &win, saddr, daddr, len, sstep, dstep, h - k, kind);
 		for (i = 0; i < done; i++) {
 			blit_bytes(dp, win.vram + daddr, win.vram + saddr, len);
 			saddr += (uint32_t)sstep;

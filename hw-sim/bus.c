@@ -410,7 +410,7 @@ void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w)
 	w->lim = c->running ? c->next_line_time : RDC_NEVER;
 	w->open = w->t >= c->fetch_end;
 	w->scan_hit = false;
-	w->parted = false;
+	w->parted = 0;
 }
 
 bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
@@ -700,9 +700,9 @@ bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 	uint64_t end = r->addr + (uint64_t)(r->count - 1) * stride + r->len;
 	uint64_t a = r->addr;
 
-	if (w->parted) {
-		/* rdc_port_window_rows_through's row, window_span's stop */
-		w->parted = false;
+	if (w->parted == RDC_PARTED_RUN || w->parted == RDC_PARTED_WRITE) {
+		/* a _through call's run, where window_span stopped */
+		w->parted = 0;
 		a = w->part;
 		if (a != r->addr)
 			kind &= ~RDC_BUS_HEAD_PARTIAL;
@@ -782,7 +782,7 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 		/* the row the line start falls in: it does not fit */
 		w->part = window_span(hw, w, a, a + len, RDC_BUS_WRITE, true);
 		if (w->part != a + len) {
-			w->parted = true;
+			w->parted = RDC_PARTED_RUN;
 			return done;
 		}
 		rdc_scan_window_hit(hw, w, a, a + len);
@@ -791,6 +791,86 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 		/* the row it leaves open is its own: the next costs c1 */
 		c0 = c1;
 		if (done == most)
+			return done;
+	}
+}
+
+uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
+				       struct rdc_port_window *w,
+				       uint32_t raddr, uint32_t waddr,
+				       uint32_t len, int64_t step,
+				       int64_t wstep, uint32_t count,
+				       unsigned int kind)
+{
+	int64_t ra = raddr, wa = waddr, last = (int64_t)(count - 1) * step;
+	int64_t size = (int64_t)hw->vram_size;
+	uint64_t c0, c1, n, cost;
+	uint32_t row = w->row, done = 0;
+
+	if (!hw->lazy || !w->open || hw->vram_hook || !len || count < 2 ||
+	    wstep != step || step % RDC_DRAM_ROW_BYTES ||
+	    RDC_MIN(ra, ra + last) < 0 || RDC_MIN(wa, wa + last) < 0 ||
+	    RDC_MAX(ra, ra + last) + len > size ||
+	    RDC_MAX(wa, wa + last) + len > size)
+		return rdc_port_window_pairs(hw, w, raddr, waddr, len, step,
+					     wstep, count, kind);
+	/* rdc_port_window_pairs' closed form, event after event */
+	c0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
+			  rdc_bus_bursts((uint64_t)ra, len));
+	c0 += rdc_bus_cost(&row, (uint64_t)wa, len, kind,
+			   rdc_bus_bursts((uint64_t)wa, len));
+	c1 = rdc_bus_cost(&row, (uint64_t)(ra + step), len, RDC_BUS_READ,
+			  rdc_bus_bursts((uint64_t)(ra + step), len));
+	c1 += rdc_bus_cost(&row, (uint64_t)(wa + step), len, kind,
+			   rdc_bus_bursts((uint64_t)(wa + step), len));
+	for (;;) {
+		if (w->t + c0 <= w->lim) {
+			n = RDC_MIN((uint64_t)(count - done),
+				    1 + (w->lim - w->t - c0) / c1);
+			w->t += c0 + (n - 1) * c1;
+			w->row = (uint32_t)((uint64_t)(wa +
+						       (int64_t)(n - 1) * step +
+						       len - 1) /
+					    RDC_DRAM_ROW_BYTES);
+			pairs_scan_hit(hw, w, wa, step, len, (uint32_t)n);
+			done += (uint32_t)n;
+			ra += (int64_t)n * step;
+			wa += (int64_t)n * step;
+		}
+		if (done == count || w->t >= w->lim || !rdc_crtc_next_quiet(hw))
+			return done;
+		/* the pair the line start falls in: its read, as cross does */
+		w->part = window_span(hw, w, (uint64_t)ra, (uint64_t)ra + len,
+				      RDC_BUS_READ, false);
+		if (w->part != (uint64_t)ra + len) {
+			w->parted = RDC_PARTED_RUN;
+			return done;
+		}
+		/* its write: whole where it fits, else across the event */
+		row = w->row;
+		cost = rdc_bus_cost(&row, (uint64_t)wa, len, kind,
+				    rdc_bus_bursts((uint64_t)wa, len));
+		if (w->t + cost <= w->lim) {
+			w->t += cost;
+			w->row = row;
+		} else if (w->t < w->lim && rdc_crtc_next_quiet(hw)) {
+			w->part = window_span(hw, w, (uint64_t)wa,
+					      (uint64_t)wa + len, kind, true);
+			if (w->part != (uint64_t)wa + len) {
+				w->parted = RDC_PARTED_WRITE;
+				return done;
+			}
+		} else {
+			w->parted = RDC_PARTED_READ;
+			return done;
+		}
+		rdc_scan_window_hit(hw, w, (uint64_t)wa, (uint64_t)wa + len);
+		done++;
+		ra += step;
+		wa += step;
+		/* the row the write leaves open is its own: c1 from here */
+		c0 = c1;
+		if (done == count)
 			return done;
 	}
 }

@@ -320,11 +320,15 @@ struct rdc_port_window {
 	uint8_t *vram;
 	uint64_t t, lim;
 	uint32_t row;
-	uint64_t part; /* parted: the refused row is charged up to here */
-	bool open;     /* false: a fetch window holds the bus now */
-	bool scan_hit; /* a write reached lines scanout has not converted */
-	bool parted;   /* rdc_port_window_rows_through stopped in a row */
+	uint64_t part;	/* RDC_PARTED_RUN, _WRITE: charged up to here */
+	uint8_t parted; /* a _through call stopped in a row: RDC_PARTED_* */
+	bool open;	/* false: a fetch window holds the bus now */
+	bool scan_hit;	/* a write reached lines scanout has not converted */
 };
+
+#define RDC_PARTED_RUN	 1u /* the refused row's first run, up to part */
+#define RDC_PARTED_READ	 2u /* a pair's read charged, its write not */
+#define RDC_PARTED_WRITE 3u /* a pair's read charged, its write to part */
 
 void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w);
 bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
@@ -350,8 +354,9 @@ bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w);
  * are the reopened window's.  False, nothing charged, where the close and
  * the port call must be made: the event does more than fetch a line
  * (rdc_crtc_next_quiet), a VRAM watcher is set, or r leaves VRAM.  With
- * w->parted, r is the row rdc_port_window_rows_through stopped in: its
- * rest is charged from w->part, after the close, and true returned.
+ * w->parted RDC_PARTED_RUN or _WRITE, r is the run a _through call
+ * stopped in: its rest is charged from w->part, after the close, and
+ * true returned.
  */
 bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 			   const struct rdc_port_run *r, uint32_t stride,
@@ -373,8 +378,8 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
  * falls in charged across it as rdc_port_window_cross charges it.  The
  * cycles, the row left open and the write barrier are what the calls
  * one event at a time give.  A row stopped at an event the window
- * cannot take stays charged in part (w->parted): the caller's
- * rdc_port_window_cross goes on from there.
+ * cannot take stays charged in part (w->parted, RDC_PARTED_RUN): the
+ * caller's rdc_port_window_cross goes on from there.
  */
 uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 				      struct rdc_port_window *w, uint32_t addr,
@@ -391,6 +396,24 @@ uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
 			       uint32_t waddr, uint32_t len, int64_t rstep,
 			       int64_t wstep, uint32_t count,
 			       unsigned int kind);
+/*
+ * rdc_port_window_pairs as rdc_port_window_rows_through goes on from
+ * rdc_port_window_rows, for a caller that moves the pairs' bytes after
+ * the call, in their order: the pair a line start falls in is charged
+ * as the caller's rdc_port_window_cross (the read), then
+ * rdc_port_window_charge or _cross (the write) would.  Where it stops in
+ * a pair, w->parted says how far: RDC_PARTED_RUN, its read charged up to
+ * w->part; RDC_PARTED_READ, its read charged; RDC_PARTED_WRITE, its
+ * read charged and its write up to w->part.  Both steps the same whole
+ * number of DRAM rows and every pair in VRAM; else, or with a VRAM
+ * watcher, rdc_port_window_pairs.
+ */
+uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
+				       struct rdc_port_window *w,
+				       uint32_t raddr, uint32_t waddr,
+				       uint32_t len, int64_t rstep,
+				       int64_t wstep, uint32_t count,
+				       unsigned int kind);
 
 /* Charge `cycles` of DP-internal work (decode, setup); no bus use. */
 void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles);

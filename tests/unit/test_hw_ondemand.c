@@ -537,19 +537,21 @@ static void test_barrier_elsewhere(void **state)
 /*
  * Rows a whole number of DRAM rows apart (RT_STRIDE) are charged in
  * closed form, and on a chip nobody watches, on through the line starts
- * that only fetch (rdc_port_window_rows_through): the rows are written
- * after the charge, as nothing reads them at such a line start.  Filled
- * rectangles and glyphs on two chips, one converting each line at its
+ * that only fetch (rdc_port_window_rows_through, _pairs_through): the
+ * rows are written after the charge, as nothing reads them at such a
+ * line start.  Filled rectangles, copies and glyphs on two chips, one converting each line at its
  * fetch, one on demand with no consumer, must agree on every cycle, the
  * row left open, every byte and every frame looked at.  At a core clock
  * of 40 MHz a line's fetch leaves the DP about 300 cycles of a line, so a
  * row takes up to two line starts; where the second is one the window
- * does not take (the line-compare line, the vblank's), the row stops
- * between them and rdc_port_window_cross goes on with its rest.
+ * does not take (the line-compare line, the vblank's, a raster list's
+ * WAIT), the row stops between them and rdc_port_window_cross goes on
+ * with its rest.
  */
 #define RT_W	  1024u
 #define RT_H	  768u
 #define RT_STRIDE 4096u
+#define RT_LIST	  (3u << 20) /* the raster list, past the surface */
 
 static void rt_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 		     uint64_t number)
@@ -561,7 +563,7 @@ static void rt_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 	(void)number;
 }
 
-static struct tdp *rt_chip_new(uint32_t core_hz, bool lazy)
+static struct tdp *rt_chip_new(uint32_t core_hz, bool lazy, bool waits)
 {
 	const struct rdc_hw_config cfg = { .vram_size = TDP_VRAM_SIZE,
 					   .core_hz = core_hz };
@@ -588,6 +590,19 @@ static struct tdp *rt_chip_new(uint32_t core_hz, bool lazy)
 	rdc_hw_write(hw, RDC_REG_FB_FORMAT, RDC_FMT_XRGB8888);
 	rdc_hw_write(hw, RDC_REG_FB_STRIDE, RT_STRIDE);
 	rdc_hw_write(hw, RDC_REG_LINE_COMPARE, RT_H / 3);
+	if (waits) {
+		/* a raster list that waits for every fifth line, nothing more */
+		uint32_t *e = (uint32_t *)(t->vram + RT_LIST);
+		uint32_t i;
+
+		for (i = 0; i < RT_H / 5; i++) {
+			e[2 * i] = FIELD_PREP(RDC_RL_OP, RDC_RL_WAIT);
+			e[2 * i + 1] = FIELD_PREP(RDC_RL_Y, 5 * i + 3);
+		}
+		e[2 * i] = FIELD_PREP(RDC_RL_OP, RDC_RL_END);
+		rdc_hw_write(hw, RDC_REG_RASTER_BASE, RT_LIST);
+		rdc_hw_write(hw, RDC_REG_RASTER_CTRL, RDC_RASTER_CTRL_EN);
+	}
 	rdc_hw_write(hw, RDC_REG_CONTROL,
 		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
 	if (lazy)
@@ -596,6 +611,7 @@ static struct tdp *rt_chip_new(uint32_t core_hz, bool lazy)
 		rdc_hw_set_frame_fn(hw, rt_frame, NULL);
 	assert_int_equal(hw->lazy, lazy);
 	tdp_set_surface(t, RDC_OP_SET_DST, &dst);
+	tdp_set_surface(t, RDC_OP_SET_SRC, &dst);
 	tdp_drain(t);
 	return t;
 }
@@ -627,7 +643,7 @@ static int rt_teardown(void **state)
 	return 0;
 }
 
-static void rt_run(void **state, uint32_t core_hz, uint32_t seed)
+static void rt_run(void **state, uint32_t core_hz, bool waits, uint32_t seed)
 {
 	struct tdp **c;
 	uint32_t i, k, a[2 + 2 + 4], wa, ha, wb, hb, looks = 0;
@@ -638,8 +654,8 @@ static void rt_run(void **state, uint32_t core_hz, uint32_t seed)
 	c = calloc(2, sizeof(*c));
 	assert_non_null(c);
 	*state = c;
-	c[0] = rt_chip_new(core_hz, false);
-	c[1] = rt_chip_new(core_hz, true);
+	c[0] = rt_chip_new(core_hz, false, waits);
+	c[1] = rt_chip_new(core_hz, true, waits);
 	for (i = 0; i < 120; i++) {
 		uint32_t r = tdp_rand(&seed);
 
@@ -652,6 +668,19 @@ static void rt_run(void **state, uint32_t core_hz, uint32_t seed)
 			for (k = 0; k < 2; k++)
 				tdp_cmd(c[k], RDC_OP_MONO, RDC_MONO_COLORS,
 					RDC_ARRAY_SIZE(a), a);
+		} else if (r % 4 == 3) { /* a copy, up or down, or xor */
+			a[0] = r & 0x30 ? RDC_ROP_COPY : RDC_ROP_XOR;
+			a[1] = RDC_XY(tdp_range(&seed, 0, RT_W - 1),
+				      tdp_range(&seed, 0, RT_H - 1));
+			a[2] = RDC_XY(tdp_range(&seed, 0, RT_W - 1),
+				      tdp_range(&seed, 0, RT_H - 1));
+			a[3] = RDC_WH(tdp_range(&seed, 1, RT_W),
+				      tdp_range(&seed, 1, r % 5 ? 200 : RT_H));
+			for (k = 0; k < 2; k++) {
+				tdp_cmd(c[k], RDC_OP_SET_ROP, 0, 1, a);
+				tdp_cmd(c[k], RDC_OP_BLIT, 0, 3, a + 1);
+				TDP_CMD(c[k], RDC_OP_SET_ROP, RDC_ROP_COPY);
+			}
 		} else { /* a filled rectangle, up to the whole surface */
 			a[0] = tdp_rand(&seed);
 			a[1] = RDC_XY(tdp_range(&seed, -20, RT_W),
@@ -696,23 +725,31 @@ static void rt_run(void **state, uint32_t core_hz, uint32_t seed)
 		looks++;
 	}
 	/*
-	 * Rows drawn just ahead of the beam, which fetches them during the
-	 * command: no write reaches a fetched line, so the frame is kept,
-	 * and it shows the rows the beam found written.
+	 * Rows drawn or copied just ahead of the beam, which fetches them
+	 * during the command: no write reaches a fetched line, so the frame
+	 * is kept, and it shows the rows the beam found written.
 	 */
-	for (i = 0; i < 4; i++) {
-		uint32_t y = 40 + 150 * i;
+	for (i = 0; i < 6; i++) {
+		uint32_t y = 40 + 110 * i, op = RDC_OP_FILL_RECT, n = 2;
+		const uint32_t *px = (const uint32_t *)c[0]->vram;
 
 		a[0] = 0xff000000u | tdp_rand(&seed);
 		a[1] = RDC_XY(0, y + 2);
 		a[2] = RDC_WH(RT_W / 4, 160);
+		if (i % 2) { /* from the same rows, further right */
+			op = RDC_OP_BLIT;
+			n = 3;
+			a[1] = RDC_XY(RT_W / 2, y + 2);
+			a[2] = RDC_XY(0, y + 2);
+			a[3] = RDC_WH(RT_W / 8, 160);
+		}
 		for (k = 0; k < 2; k++) {
 			rdc_hw_run_until(&c[k]->hw,
 					 rdc_port_next_vblank(&c[k]->hw) + 1);
 			tdp_cmd(c[k], RDC_OP_SET_FG, 0, 1, a);
 			rdc_hw_run_until(&c[k]->hw,
 					 rdc_port_next_line(&c[k]->hw, y));
-			tdp_cmd(c[k], RDC_OP_FILL_RECT, 0, 2, a + 1);
+			tdp_cmd(c[k], op, 0, n, a + 1);
 			tdp_drain(c[k]);
 			rdc_hw_run_until(&c[k]->hw,
 					 rdc_port_next_vblank(&c[k]->hw) + 1);
@@ -723,7 +760,9 @@ static void rt_run(void **state, uint32_t core_hz, uint32_t seed)
 		assert_non_null(fa);
 		assert_non_null(fb);
 		assert_memory_equal(fa, fb, (size_t)wa * ha * 4);
-		assert_int_equal(fa[(y + 100) * RT_W + 7], a[0] & 0xffffffu);
+		assert_int_equal(fa[(y + 100) * RT_W + 7],
+				 px[(y + 100) * (RT_STRIDE / 4) + 7] &
+					 0xffffffu);
 	}
 	rt_same(c[0], c[1], true);
 	assert_true(looks > 0);
@@ -731,8 +770,10 @@ static void rt_run(void **state, uint32_t core_hz, uint32_t seed)
 
 static void test_rows_through_line_starts(void **state)
 {
-	rt_run(state, 0, 0x726f7773u);	       /* the default 100 MHz */
-	rt_run(state, 40000000u, 0x74687275u); /* rows outlast lines */
+	rt_run(state, 0, false, 0x726f7773u); /* the default 100 MHz */
+	/* rows that outlast lines; line starts the window does not take */
+	rt_run(state, 40000000u, false, 0x74687275u);
+	rt_run(state, 40000000u, true, 0x77616974u);
 }
 
 int main(void)
