@@ -35,9 +35,11 @@ struct tdp {
 	uint32_t *frame[2];
 };
 
-static inline struct tdp *tdp_new(void)
+/* A chip of TDP_VRAM_SIZE bytes clocked at core_hz (0: the default). */
+static inline struct tdp *tdp_new_clocked(uint32_t core_hz)
 {
-	struct rdc_hw_config cfg = { .vram_size = TDP_VRAM_SIZE };
+	const struct rdc_hw_config cfg = { .vram_size = TDP_VRAM_SIZE,
+					   .core_hz = core_hz };
 	struct tdp *t = calloc(1, sizeof(*t));
 
 	assert_non_null(t);
@@ -50,6 +52,13 @@ static inline struct tdp *tdp_new(void)
 	rdc_hw_init(&t->hw, &cfg, t->vram, t->frame[0], t->frame[1],
 		    TDP_FRAME_CAP);
 	rdc_dp_init(&t->dp, &t->hw);
+	return t;
+}
+
+static inline struct tdp *tdp_new(void)
+{
+	struct tdp *t = tdp_new_clocked(0);
+
 	/* No scanout: the DP owns the bus, so costs are the bare formulas. */
 	rdc_hw_write(&t->hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
 	/* let a scanout fetch that was under way at power-on finish */

@@ -565,26 +565,14 @@ static void rt_frame(void *ctx, const uint32_t *xrgb, uint32_t w, uint32_t h,
 
 static struct tdp *rt_chip_new(uint32_t core_hz, bool lazy, bool waits)
 {
-	const struct rdc_hw_config cfg = { .vram_size = TDP_VRAM_SIZE,
-					   .core_hz = core_hz };
 	const struct rdc_surface dst = { .base = 0,
 					 .stride = RT_STRIDE,
 					 .width = RT_W,
 					 .height = RT_H,
 					 .format = RDC_FMT_XRGB8888 };
-	struct tdp *t = calloc(1, sizeof(*t));
-	struct rdc_hw *hw;
+	struct tdp *t = tdp_new_clocked(core_hz);
+	struct rdc_hw *hw = &t->hw;
 
-	assert_non_null(t);
-	t->vram = calloc(1, TDP_VRAM_SIZE);
-	t->frame[0] = calloc(TDP_FRAME_CAP, 4);
-	t->frame[1] = calloc(TDP_FRAME_CAP, 4);
-	assert_non_null(t->vram);
-	assert_non_null(t->frame[0]);
-	assert_non_null(t->frame[1]);
-	hw = &t->hw;
-	rdc_hw_init(hw, &cfg, t->vram, t->frame[0], t->frame[1], TDP_FRAME_CAP);
-	rdc_dp_init(&t->dp, hw);
 	rdc_hw_write(hw, RDC_REG_MODE_PRESET, RDC_PRESET_1024x768_60);
 	rdc_hw_write(hw, RDC_REG_FB_BASE, 0);
 	rdc_hw_write(hw, RDC_REG_FB_FORMAT, RDC_FMT_XRGB8888);
