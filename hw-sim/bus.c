@@ -798,12 +798,13 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 				       struct rdc_port_window *w,
 				       uint32_t raddr, uint32_t waddr,
-				       uint32_t len, int64_t step,
+				       uint32_t len, int64_t rstep,
 				       int64_t wstep, uint32_t count,
 				       unsigned int kind)
 {
-	int64_t ra = raddr, wa = waddr, last = (int64_t)(count - 1) * step;
-	int64_t size = (int64_t)hw->vram_size;
+	const int64_t step = rstep, size = (int64_t)hw->vram_size;
+	int64_t ra = raddr, wa = waddr;
+	int64_t last = count ? (int64_t)(count - 1) * step : 0;
 	uint64_t c0, c1, n, cost;
 	uint32_t row = w->row, done = 0;
 
@@ -812,7 +813,7 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 	    RDC_MIN(ra, ra + last) < 0 || RDC_MIN(wa, wa + last) < 0 ||
 	    RDC_MAX(ra, ra + last) + len > size ||
 	    RDC_MAX(wa, wa + last) + len > size)
-		return rdc_port_window_pairs(hw, w, raddr, waddr, len, step,
+		return rdc_port_window_pairs(hw, w, raddr, waddr, len, rstep,
 					     wstep, count, kind);
 	/* rdc_port_window_pairs' closed form, event after event */
 	c0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
