@@ -876,6 +876,49 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 	}
 }
 
+uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
+			      const struct rdc_port_run *r, uint32_t n,
+			      uint32_t stride, unsigned int kind)
+{
+	const bool writes = (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ;
+	uint32_t done = 0, k;
+	uint64_t a, end;
+
+	if (!w->open || hw->vram_hook)
+		return 0;
+	for (;;) {
+		/* inlined with the kind a constant, the cost loses its switch */
+		if (kind == RDC_BUS_WRITE)
+			k = runs_charge(hw, r + done, n - done, stride,
+					RDC_BUS_WRITE, &w->row, &w->t, w->lim);
+		else
+			k = runs_charge(hw, r + done, n - done, stride, kind,
+					&w->row, &w->t, w->lim);
+		if (k && hw->scan_hi && writes &&
+		    runs_scan_hit(hw, r + done, k, stride))
+			w->scan_hit = true;
+		done += k;
+		/* on through a line start that only fetches, while lazy */
+		if (done == n || !hw->lazy || w->t >= w->lim ||
+		    !rdc_crtc_next_quiet(hw) || r[done].count != 1 ||
+		    !r[done].len)
+			return done;
+		a = r[done].addr;
+		end = a + r[done].len;
+		if (end > hw->vram_size)
+			return done;
+		/* the span the line start falls in: it does not fit */
+		w->part = window_span(hw, w, a, end, kind, true);
+		if (w->part != end) {
+			w->parted = RDC_PARTED_RUN;
+			return done;
+		}
+		if (writes && rdc_scan_hits(hw, a, end))
+			w->scan_hit = true;
+		done++;
+	}
+}
+
 void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w)
 {
 	hw->bus.open_row = w->row;

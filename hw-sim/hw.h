@@ -386,6 +386,19 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 				      uint32_t len, uint32_t stride,
 				      uint32_t count);
 /*
+ * rdc_port_runs in the window w, for a caller that writes the runs it is
+ * given only after the call, and then hands the first run refused to
+ * rdc_port_window_cross: the runs that end by the window's limit, and,
+ * while no frame is looked at, on through the line starts that only
+ * fetch as rdc_port_window_rows_through goes (a span a line start falls
+ * in charged across it, or stopped in: w->parted, RDC_PARTED_RUN).  How
+ * many of them, from the first, it charged; none with a VRAM watcher
+ * (then the caller charges them with the port calls).
+ */
+uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
+			      const struct rdc_port_run *r, uint32_t n,
+			      uint32_t stride, unsigned int kind);
+/*
  * rdc_port_window_pair for the pairs (raddr + i * rstep, waddr + i * wstep),
  * i = 0, 1, ... count - 1, each len bytes: how many of them, from the
  * first, it charged.  Calls no VRAM watcher: with one set, a caller

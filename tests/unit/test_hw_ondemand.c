@@ -539,7 +539,8 @@ static void test_barrier_elsewhere(void **state)
  * closed form, and on a chip nobody watches, on through the line starts
  * that only fetch (rdc_port_window_rows_through, _pairs_through): the
  * rows are written after the charge, as nothing reads them at such a
- * line start.  Filled rectangles, copies and glyphs on two chips, one converting each line at its
+ * line start.  Filled rectangles, copies, glyphs, circles and polygons
+ * (queued runs, rdc_port_window_runs) on two chips, one converting each line at its
  * fetch, one on demand with no consumer, must agree on every cycle, the
  * row left open, every byte and every frame looked at.  At a core clock
  * of 40 MHz a line's fetch leaves the DP about 300 cycles of a line, so a
@@ -669,6 +670,24 @@ static void rt_run(void **state, uint32_t core_hz, bool waits, uint32_t seed)
 				tdp_cmd(c[k], RDC_OP_BLIT, 0, 3, a + 1);
 				TDP_CMD(c[k], RDC_OP_SET_ROP, RDC_ROP_COPY);
 			}
+		} else if (r % 3 == 0) { /* queued runs: circles, polygons */
+			static const uint32_t ops[] = { RDC_OP_CIRCLE,
+							RDC_OP_FILL_CIRCLE,
+							RDC_OP_FILL_POLYGON };
+			uint32_t op = ops[(r >> 8) % 3], n = 2;
+
+			a[0] = tdp_rand(&seed);
+			for (k = 1; k < 5; k++)
+				a[k] = RDC_XY(tdp_range(&seed, -40, RT_W + 40),
+					      tdp_range(&seed, -40, RT_H + 40));
+			if (op == RDC_OP_FILL_POLYGON)
+				n = 4;
+			else
+				a[2] = tdp_range(&seed, 1, 400);
+			for (k = 0; k < 2; k++) {
+				tdp_cmd(c[k], RDC_OP_SET_FG, 0, 1, a);
+				tdp_cmd(c[k], op, 0, n, a + 1);
+			}
 		} else { /* a filled rectangle, up to the whole surface */
 			a[0] = tdp_rand(&seed);
 			a[1] = RDC_XY(tdp_range(&seed, -20, RT_W),
@@ -713,30 +732,46 @@ static void rt_run(void **state, uint32_t core_hz, bool waits, uint32_t seed)
 		looks++;
 	}
 	/*
-	 * Rows drawn or copied just ahead of the beam, which fetches them
-	 * during the command: no write reaches a fetched line, so the frame
-	 * is kept, and it shows the rows the beam found written.
+	 * Rows drawn, copied or filled as queued runs just ahead of the
+	 * beam, which fetches them during the command: no write reaches a
+	 * fetched line, so the frame is kept, and it shows the rows the beam
+	 * found written.  Then the same behind the beam, over lines it has
+	 * fetched: the write barrier drops the frame nobody has converted.
 	 */
-	for (i = 0; i < 6; i++) {
-		uint32_t y = 40 + 110 * i, op = RDC_OP_FILL_RECT, n = 2;
+	for (i = 0; i < 12; i++) {
+		/* behind: a few rows, that may end before the next line start */
+		bool behind = i >= 6;
+		uint32_t y = behind ? 40 + 80 * (i - 6) : 40 + 110 * i;
+		uint32_t op = RDC_OP_FILL_RECT, n = 2, h = behind ? 6 : 160;
 		const uint32_t *px = (const uint32_t *)c[0]->vram;
 
 		a[0] = 0xff000000u | tdp_rand(&seed);
 		a[1] = RDC_XY(0, y + 2);
-		a[2] = RDC_WH(RT_W / 4, 160);
-		if (i % 2) { /* from the same rows, further right */
+		a[2] = RDC_WH(RT_W / 4, h);
+		if (i % 3 == 1) { /* from the same rows, further right */
 			op = RDC_OP_BLIT;
 			n = 3;
 			a[1] = RDC_XY(RT_W / 2, y + 2);
 			a[2] = RDC_XY(0, y + 2);
-			a[3] = RDC_WH(RT_W / 8, 160);
+			a[3] = RDC_WH(RT_W / 8, h);
+		} else if (i % 3 == 2) { /* the same rectangle, as runs */
+			op = RDC_OP_FILL_POLYGON;
+			n = 4;
+			a[2] = RDC_XY(RT_W / 4, y + 2);
+			a[3] = RDC_XY(RT_W / 4, y + 2 + h);
+			a[4] = RDC_XY(0, y + 2 + h);
 		}
 		for (k = 0; k < 2; k++) {
 			rdc_hw_run_until(&c[k]->hw,
 					 rdc_port_next_vblank(&c[k]->hw) + 1);
 			tdp_cmd(c[k], RDC_OP_SET_FG, 0, 1, a);
-			rdc_hw_run_until(&c[k]->hw,
-					 rdc_port_next_line(&c[k]->hw, y));
+			/* behind: after the line's fetch, in the DP's window */
+			rdc_hw_run_until(
+				&c[k]->hw,
+				behind ?
+					rdc_port_next_line(&c[k]->hw, y + 200) +
+						600 :
+					rdc_port_next_line(&c[k]->hw, y));
 			tdp_cmd(c[k], op, 0, n, a + 1);
 			tdp_drain(c[k]);
 			rdc_hw_run_until(&c[k]->hw,
@@ -746,6 +781,10 @@ static void rt_run(void **state, uint32_t core_hz, bool waits, uint32_t seed)
 		fa = rdc_hw_frame(&c[0]->hw, &wa, &ha);
 		fb = rdc_hw_frame(&c[1]->hw, &wb, &hb);
 		assert_non_null(fa);
+		if (behind) {
+			assert_null(fb);
+			continue;
+		}
 		assert_non_null(fb);
 		assert_memory_equal(fa, fb, (size_t)wa * ha * 4);
 		assert_int_equal(fa[(y + 100) * RT_W + 7],
