@@ -181,23 +181,7 @@ void dp_run_write(struct rdc_dp *dp, uint8_t *p, const struct rdc_port_run *r,
 	dp->hw->perf.pixels += n;
 }
 
-/* Run r as its port call charges it (rdc_port_span or _column), written. */
-static void runs_one(struct rdc_dp *dp, const struct rdc_port_run *r,
-		     unsigned int kind)
-{
-	const struct rdc_surface *s = &dp->st.dst;
-	uint8_t *p;
-
-	if (r->count == 1)
-		p = rdc_port_span(dp->hw, r->addr, r->len, kind);
-	else
-		p = rdc_port_column(dp->hw, r->addr, s->stride, r->count,
-				    r->len, kind);
-	if (p)
-		dp_run_write(dp, p, r, dp->st.fg);
-}
-
-/* Runs [first, first + n) charged by rdc_port_runs, their bytes at p. */
+/* Runs [first, first + n) charged in the port window, their bytes at p. */
 static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 		       uint32_t n)
 {
@@ -251,19 +235,6 @@ void dp_runs_flush(struct rdc_dp *dp)
 	struct rdc_port_window w;
 	uint8_t *p;
 
-	if (hw->vram_hook) {
-		/* the port calls, which tell the watcher run by run */
-		while (i < dp->nruns) {
-			p = rdc_port_runs(hw, dp->runs + i, dp->nruns - i,
-					  s->stride, kind, &done);
-			runs_write(dp, p, i, done);
-			i += done;
-			if (i < dp->nruns)
-				runs_one(dp, &dp->runs[i++], kind);
-		}
-		dp->nruns = 0;
-		return;
-	}
 	/*
 	 * The runs in a port window: those that end by the next line start,
 	 * on through it while nobody looks (rdc_port_window_runs), and the
@@ -284,7 +255,13 @@ void dp_runs_flush(struct rdc_dp *dp)
 			continue;
 		}
 		rdc_port_window_close(hw, &w);
-		runs_one(dp, r, kind);
+		if (r->count == 1)
+			p = rdc_port_span(hw, r->addr, r->len, kind);
+		else
+			p = rdc_port_column(hw, r->addr, s->stride, r->count,
+					    r->len, kind);
+		if (p)
+			dp_run_write(dp, p, r, fg);
 		rdc_port_window_open(hw, &w);
 	}
 	rdc_port_window_close(hw, &w);

@@ -439,6 +439,49 @@ bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
 	return true;
 }
 
+/*
+ * Rows a whole number of DRAM rows apart: from the second on, every row
+ * has the same offset in its beat, burst and DRAM row, and the same
+ * relation to the row the last one left open, so each costs what the
+ * second does.  rows_costs: the first's cost c0 from open row `row`, the
+ * others' c1, and how many of the count rows from a (the first in VRAM)
+ * are in VRAM.  rows_fit: of `most` such rows, those that end by the
+ * window's limit charged in closed form; how many.
+ */
+static rdc_always_inline uint64_t rows_costs(const struct rdc_hw *hw,
+					     uint32_t row, uint64_t a,
+					     uint32_t len, uint32_t stride,
+					     uint32_t count, uint64_t *c0,
+					     uint64_t *c1)
+{
+	*c0 = rdc_bus_cost(&row, a, len, RDC_BUS_WRITE, rdc_bus_bursts(a, len));
+	*c1 = rdc_bus_cost(&row, a + stride, len, RDC_BUS_WRITE,
+			   rdc_bus_bursts(a + stride, len));
+	if ((uint64_t)(count - 1) * stride > hw->vram_size - len - a)
+		return (hw->vram_size - len - a) / stride + 1;
+	return count;
+}
+
+static rdc_always_inline uint64_t rows_fit(const struct rdc_hw *hw,
+					   struct rdc_port_window *w,
+					   uint64_t a, uint32_t len,
+					   uint32_t stride, uint64_t most,
+					   uint64_t c0, uint64_t c1)
+{
+	uint64_t n = most, end;
+
+	if (w->t + c0 > w->lim)
+		return 0;
+	/* (divided only when not all fit: a glyph's rows mostly do) */
+	if ((n - 1) * c1 > w->lim - w->t - c0)
+		n = 1 + (w->lim - w->t - c0) / c1;
+	end = a + (n - 1) * stride + len;
+	w->t += c0 + (n - 1) * c1;
+	w->row = (uint32_t)((end - 1) / RDC_DRAM_ROW_BYTES);
+	rdc_scan_window_hit(hw, w, a, end);
+	return n;
+}
+
 uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 			      struct rdc_port_window *w, uint32_t addr,
 			      uint32_t len, uint32_t stride, uint32_t count)
@@ -450,33 +493,12 @@ uint32_t rdc_port_window_rows(const struct rdc_hw *hw,
 		return 0;
 	if (stride % RDC_DRAM_ROW_BYTES == 0 && count > 1 && len &&
 	    a + len <= hw->vram_size) {
-		/*
-		 * Rows a whole number of DRAM rows apart: from the second on,
-		 * every row has the same offset in its beat, burst and DRAM
-		 * row, and the same relation to the row the last one left
-		 * open, so each costs what the second does.  Charged in
-		 * closed form: as many rows as fit in VRAM and before lim.
-		 */
-		uint32_t r0 = row, r1;
-		uint64_t c0 = rdc_bus_cost(&r0, a, len, RDC_BUS_WRITE,
-					   rdc_bus_bursts(a, len));
-		uint64_t c1, n = count;
+		/* in closed form (rows_fit) */
+		uint64_t c0, c1, most, n;
 
-		if (t + c0 > w->lim)
-			return 0;
-		r1 = r0;
-		c1 = rdc_bus_cost(&r1, a + stride, len, RDC_BUS_WRITE,
-				  rdc_bus_bursts(a + stride, len));
-		/* (divided only when not all fit: a glyph's rows mostly do) */
-		if ((n - 1) * stride > hw->vram_size - len - a)
-			n = RDC_MIN(n, (hw->vram_size - len - a) / stride + 1);
-		if ((n - 1) * c1 > w->lim - t - c0)
-			n = RDC_MIN(n, 1 + (w->lim - t - c0) / c1);
-		w->t = t + c0 + (n - 1) * c1;
-		w->row = (uint32_t)((a + (n - 1) * stride + len - 1) /
-				    RDC_DRAM_ROW_BYTES);
-		rdc_scan_window_hit(hw, w, a, a + (n - 1) * stride + len);
-		if (hw->vram_hook &&
+		most = rows_costs(hw, row, a, len, stride, count, &c0, &c1);
+		n = rows_fit(hw, w, a, len, stride, most, c0, c1);
+		if (n && hw->vram_hook &&
 		    rdc_vram_watched(hw, addr, a + (n - 1) * stride + len))
 			rdc_vram_hook_call(hw, w->t, addr, len, (uint32_t)n,
 					   stride, RDC_VRAM_BY_DP);
@@ -519,6 +541,48 @@ static inline void pairs_scan_hit(const struct rdc_hw *hw,
 				    (uint64_t)RDC_MAX(wa, last) + len);
 }
 
+/*
+ * rows_costs and rows_fit for read/write pairs whose rows both move by
+ * the same whole number of DRAM rows: c0 the first pair's cost from open
+ * row `row` (returned), c1 each other's; of `most` pairs, those that end
+ * by the window's limit charged.
+ */
+static rdc_always_inline uint64_t pairs_costs(uint32_t row, int64_t ra,
+					      int64_t wa, int64_t step,
+					      uint32_t len, unsigned int kind,
+					      uint64_t *c1)
+{
+	uint64_t c0;
+
+	c0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
+			  rdc_bus_bursts((uint64_t)ra, len));
+	c0 += rdc_bus_cost(&row, (uint64_t)wa, len, kind,
+			   rdc_bus_bursts((uint64_t)wa, len));
+	*c1 = rdc_bus_cost(&row, (uint64_t)(ra + step), len, RDC_BUS_READ,
+			   rdc_bus_bursts((uint64_t)(ra + step), len));
+	*c1 += rdc_bus_cost(&row, (uint64_t)(wa + step), len, kind,
+			    rdc_bus_bursts((uint64_t)(wa + step), len));
+	return c0;
+}
+
+static rdc_always_inline uint64_t pairs_fit(const struct rdc_hw *hw,
+					    struct rdc_port_window *w,
+					    int64_t wa, int64_t step,
+					    uint32_t len, uint64_t most,
+					    uint64_t c0, uint64_t c1)
+{
+	uint64_t n;
+
+	if (w->t + c0 > w->lim)
+		return 0;
+	n = RDC_MIN(most, 1 + (w->lim - w->t - c0) / c1);
+	w->t += c0 + (n - 1) * c1;
+	w->row = (uint32_t)((uint64_t)(wa + (int64_t)(n - 1) * step + len - 1) /
+			    RDC_DRAM_ROW_BYTES);
+	pairs_scan_hit(hw, w, wa, step, len, (uint32_t)n);
+	return n;
+}
+
 uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
 			       struct rdc_port_window *w, uint32_t raddr,
 			       uint32_t waddr, uint32_t len, int64_t rstep,
@@ -535,35 +599,12 @@ uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
 	    RDC_MIN(wa, wa + (count - 1) * wstep) >= 0 &&
 	    RDC_MAX(ra, ra + (count - 1) * rstep) + len <= size &&
 	    RDC_MAX(wa, wa + (count - 1) * wstep) + len <= size) {
-		/*
-		 * Both rows move by whole DRAM rows: from the second pair on,
-		 * every read and write has the same offsets in its beat,
-		 * burst and DRAM row, and the same relation to the row the
-		 * one before left open, so each pair costs what the second
-		 * does (as in rdc_port_window_rows).
-		 */
-		uint32_t r1;
-		uint64_t c0, c1, n;
+		/* in closed form (pairs_fit, as rows_fit) */
+		uint64_t c1,
+			c0 = pairs_costs(row, ra, wa, rstep, len, kind, &c1);
 
-		c0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
-				  rdc_bus_bursts((uint64_t)ra, len));
-		c0 += rdc_bus_cost(&row, (uint64_t)wa, len, kind,
-				   rdc_bus_bursts((uint64_t)wa, len));
-		if (t + c0 > w->lim)
-			return 0;
-		r1 = row;
-		c1 = rdc_bus_cost(&r1, (uint64_t)(ra + rstep), len,
-				  RDC_BUS_READ,
-				  rdc_bus_bursts((uint64_t)(ra + rstep), len));
-		c1 += rdc_bus_cost(&r1, (uint64_t)(wa + wstep), len, kind,
-				   rdc_bus_bursts((uint64_t)(wa + wstep), len));
-		n = RDC_MIN((uint64_t)count, 1 + (w->lim - t - c0) / c1);
-		w->t = t + c0 + (n - 1) * c1;
-		w->row = (uint32_t)((uint64_t)(wa + (int64_t)(n - 1) * wstep +
-					       len - 1) /
-				    RDC_DRAM_ROW_BYTES);
-		pairs_scan_hit(hw, w, wa, wstep, len, (uint32_t)n);
-		return (uint32_t)n;
+		return (uint32_t)pairs_fit(hw, w, wa, wstep, len, count, c0,
+					   c1);
 	}
 	/* rdc_port_window_pair's charge, pair by pair */
 	for (i = 0; i < count; i++, ra += rstep, wa += wstep) {
@@ -739,59 +780,68 @@ done:
 	return true;
 }
 
+/*
+ * The _through calls go on past the window's limit while lines wait
+ * unconverted (a frame converted at its fetch would read the runs before
+ * the caller writes them) and the line start there only fetches.
+ */
+static inline bool window_goes_on(const struct rdc_hw *hw,
+				  const struct rdc_port_window *w)
+{
+	return hw->lazy && !hw->vram_hook && w->t < w->lim &&
+	       rdc_crtc_next_quiet(hw);
+}
+
+/*
+ * Span [a, end) as `kind` across the line start, as
+ * rdc_port_window_cross charges it (`refused`: it is known not to fit
+ * before it): true, or false where it stopped at an event the window
+ * cannot take, charged up to w->part and w->parted set to `parted`.
+ */
+static rdc_always_inline bool
+span_through(struct rdc_hw *hw, struct rdc_port_window *w, uint64_t a,
+	     uint64_t end, unsigned int kind, bool refused, uint8_t parted)
+{
+	w->part = window_span(hw, w, a, end, kind, refused);
+	if (w->part != end) {
+		w->parted = parted;
+		return false;
+	}
+	if ((kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ)
+		rdc_scan_window_hit(hw, w, a, end);
+	return true;
+}
+
 uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 				      struct rdc_port_window *w, uint32_t addr,
 				      uint32_t len, uint32_t stride,
 				      uint32_t count)
 {
-	uint64_t a = addr, c0, c1, n, most = count;
-	uint32_t row = w->row, done = 0;
+	uint64_t a = addr, c0, c1, most, done = 0;
 
-	/*
-	 * Only while lines wait unconverted (hw->lazy): a frame converted
-	 * at its fetch would read the rows before the caller writes them.
-	 * Else, and where rdc_port_window_rows has no closed form, its rows
-	 * up to the first event.
-	 */
+	/* else, and where there is no closed form, rows up to the limit */
 	if (!hw->lazy || !w->open || hw->vram_hook ||
 	    stride % RDC_DRAM_ROW_BYTES || count < 2 || !len ||
 	    a + len > hw->vram_size)
 		return rdc_port_window_rows(hw, w, addr, len, stride, count);
-	/* rdc_port_window_rows' closed form, event after event */
-	c0 = rdc_bus_cost(&row, a, len, RDC_BUS_WRITE, rdc_bus_bursts(a, len));
-	c1 = rdc_bus_cost(&row, a + stride, len, RDC_BUS_WRITE,
-			  rdc_bus_bursts(a + stride, len));
-	if ((most - 1) * stride > hw->vram_size - len - a)
-		most = (hw->vram_size - len - a) / stride + 1;
+	most = rows_costs(hw, w->row, a, len, stride, count, &c0, &c1);
 	for (;;) {
-		n = 0;
-		if (w->t + c0 <= w->lim) {
-			n = most - done;
-			if ((n - 1) * c1 > w->lim - w->t - c0)
-				n = 1 + (w->lim - w->t - c0) / c1;
-			w->t += c0 + (n - 1) * c1;
-			w->row = (uint32_t)((a + (n - 1) * stride + len - 1) /
-					    RDC_DRAM_ROW_BYTES);
-			rdc_scan_window_hit(hw, w, a,
-					    a + (n - 1) * stride + len);
-			done += (uint32_t)n;
-			a += n * stride;
-		}
-		if (done == most || w->t >= w->lim || !rdc_crtc_next_quiet(hw))
-			return done;
+		uint64_t n =
+			rows_fit(hw, w, a, len, stride, most - done, c0, c1);
+
+		done += n;
+		a += n * stride;
 		/* the row the line start falls in: it does not fit */
-		w->part = window_span(hw, w, a, a + len, RDC_BUS_WRITE, true);
-		if (w->part != a + len) {
-			w->parted = RDC_PARTED_RUN;
-			return done;
-		}
-		rdc_scan_window_hit(hw, w, a, a + len);
+		if (done == most || !window_goes_on(hw, w) ||
+		    !span_through(hw, w, a, a + len, RDC_BUS_WRITE, true,
+				  RDC_PARTED_RUN))
+			return (uint32_t)done;
 		done++;
 		a += stride;
+		if (done == most)
+			return (uint32_t)done;
 		/* the row it leaves open is its own: the next costs c1 */
 		c0 = c1;
-		if (done == most)
-			return done;
 	}
 }
 
@@ -806,7 +856,7 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 	int64_t ra = raddr, wa = waddr;
 	int64_t last = count ? (int64_t)(count - 1) * step : 0;
 	uint64_t c0, c1, n, cost;
-	uint32_t row = w->row, done = 0;
+	uint32_t row, done = 0;
 
 	if (!hw->lazy || !w->open || hw->vram_hook || !len || count < 2 ||
 	    wstep != step || step % RDC_DRAM_ROW_BYTES ||
@@ -815,38 +865,17 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 	    RDC_MAX(wa, wa + last) + len > size)
 		return rdc_port_window_pairs(hw, w, raddr, waddr, len, rstep,
 					     wstep, count, kind);
-	/* rdc_port_window_pairs' closed form, event after event */
-	c0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
-			  rdc_bus_bursts((uint64_t)ra, len));
-	c0 += rdc_bus_cost(&row, (uint64_t)wa, len, kind,
-			   rdc_bus_bursts((uint64_t)wa, len));
-	c1 = rdc_bus_cost(&row, (uint64_t)(ra + step), len, RDC_BUS_READ,
-			  rdc_bus_bursts((uint64_t)(ra + step), len));
-	c1 += rdc_bus_cost(&row, (uint64_t)(wa + step), len, kind,
-			   rdc_bus_bursts((uint64_t)(wa + step), len));
+	c0 = pairs_costs(w->row, ra, wa, step, len, kind, &c1);
 	for (;;) {
-		if (w->t + c0 <= w->lim) {
-			n = RDC_MIN((uint64_t)(count - done),
-				    1 + (w->lim - w->t - c0) / c1);
-			w->t += c0 + (n - 1) * c1;
-			w->row = (uint32_t)((uint64_t)(wa +
-						       (int64_t)(n - 1) * step +
-						       len - 1) /
-					    RDC_DRAM_ROW_BYTES);
-			pairs_scan_hit(hw, w, wa, step, len, (uint32_t)n);
-			done += (uint32_t)n;
-			ra += (int64_t)n * step;
-			wa += (int64_t)n * step;
-		}
-		if (done == count || w->t >= w->lim || !rdc_crtc_next_quiet(hw))
-			return done;
+		n = pairs_fit(hw, w, wa, step, len, count - done, c0, c1);
+		done += (uint32_t)n;
+		ra += (int64_t)n * step;
+		wa += (int64_t)n * step;
 		/* the pair the line start falls in: its read, as cross does */
-		w->part = window_span(hw, w, (uint64_t)ra, (uint64_t)ra + len,
-				      RDC_BUS_READ, false);
-		if (w->part != (uint64_t)ra + len) {
-			w->parted = RDC_PARTED_RUN;
+		if (done == count || !window_goes_on(hw, w) ||
+		    !span_through(hw, w, (uint64_t)ra, (uint64_t)ra + len,
+				  RDC_BUS_READ, false, RDC_PARTED_RUN))
 			return done;
-		}
 		/* its write: whole where it fits, else across the event */
 		row = w->row;
 		cost = rdc_bus_cost(&row, (uint64_t)wa, len, kind,
@@ -854,25 +883,23 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 		if (w->t + cost <= w->lim) {
 			w->t += cost;
 			w->row = row;
-		} else if (w->t < w->lim && rdc_crtc_next_quiet(hw)) {
-			w->part = window_span(hw, w, (uint64_t)wa,
-					      (uint64_t)wa + len, kind, true);
-			if (w->part != (uint64_t)wa + len) {
-				w->parted = RDC_PARTED_WRITE;
-				return done;
-			}
-		} else {
+			rdc_scan_window_hit(hw, w, (uint64_t)wa,
+					    (uint64_t)wa + len);
+		} else if (!window_goes_on(hw, w)) {
 			w->parted = RDC_PARTED_READ;
 			return done;
+		} else if (!span_through(hw, w, (uint64_t)wa,
+					 (uint64_t)wa + len, kind, true,
+					 RDC_PARTED_WRITE)) {
+			return done;
 		}
-		rdc_scan_window_hit(hw, w, (uint64_t)wa, (uint64_t)wa + len);
 		done++;
 		ra += step;
 		wa += step;
-		/* the row the write leaves open is its own: c1 from here */
-		c0 = c1;
 		if (done == count)
 			return done;
+		/* the row the write leaves open is its own: c1 from here */
+		c0 = c1;
 	}
 }
 
@@ -882,9 +909,8 @@ uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
 {
 	const bool writes = (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ;
 	uint32_t done = 0, k;
-	uint64_t a, end;
 
-	if (!w->open || hw->vram_hook)
+	if (!w->open)
 		return 0;
 	for (;;) {
 		/* inlined with the kind a constant, the cost loses its switch */
@@ -897,24 +923,17 @@ uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
 		if (k && hw->scan_hi && writes &&
 		    runs_scan_hit(hw, r + done, k, stride))
 			w->scan_hit = true;
+		if (k && hw->vram_hook && writes)
+			runs_watched(hw, r + done, k, stride, w->t);
 		done += k;
-		/* on through a line start that only fetches, while lazy */
-		if (done == n || !hw->lazy || w->t >= w->lim ||
-		    !rdc_crtc_next_quiet(hw) || r[done].count != 1 ||
-		    !r[done].len)
-			return done;
-		a = r[done].addr;
-		end = a + r[done].len;
-		if (end > hw->vram_size)
-			return done;
 		/* the span the line start falls in: it does not fit */
-		w->part = window_span(hw, w, a, end, kind, true);
-		if (w->part != end) {
-			w->parted = RDC_PARTED_RUN;
+		if (done == n || !window_goes_on(hw, w) || r[done].count != 1 ||
+		    !r[done].len ||
+		    (uint64_t)r[done].addr + r[done].len > hw->vram_size ||
+		    !span_through(hw, w, r[done].addr,
+				  (uint64_t)r[done].addr + r[done].len, kind,
+				  true, RDC_PARTED_RUN))
 			return done;
-		}
-		if (writes && rdc_scan_hits(hw, a, end))
-			w->scan_hit = true;
 		done++;
 	}
 }

@@ -392,8 +392,8 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
  * while no frame is looked at, on through the line starts that only
  * fetch as rdc_port_window_rows_through goes (a span a line start falls
  * in charged across it, or stopped in: w->parted, RDC_PARTED_RUN).  How
- * many of them, from the first, it charged; none with a VRAM watcher
- * (then the caller charges them with the port calls).
+ * many of them, from the first, it charged; the VRAM watcher, if any, is
+ * told of them as rdc_port_runs tells it.
  */
 uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
 			      const struct rdc_port_run *r, uint32_t n,
