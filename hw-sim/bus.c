@@ -12,14 +12,6 @@
 #define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "hw_priv.h"
 
-uint64_t rdc_bus_read_cost(uint32_t *row, uint64_t addr, uint64_t len)
-{
-	if (!len)
-		return 0;
-	return rdc_bus_cost(row, addr, len, RDC_BUS_READ,
-			    rdc_bus_bursts(addr, len));
-}
-
 /*
  * One burst [a, a + n) starting no earlier than *tp: wait while the CRTC
  * owns the bus, and do not start a burst that a fetch window opening

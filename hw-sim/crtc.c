@@ -836,9 +836,11 @@ static rdc_noinline void raster_column(struct rdc_hw *hw)
  * row on it, in the same window) and converts it at once.  The bus sees
  * every fetch; the conversion is skipped (`hidden`) for a frame that
  * nobody can ever look at, and put off while nobody looks (hw->lazy).
+ * Inline: a quiet line start (rdc_crtc_quiet_line), the DP's most
+ * frequent event, is little more than this.
  */
-static void crtc_fetch(struct rdc_hw *hw, uint32_t n, uint64_t when,
-		       bool hidden)
+static rdc_always_inline void crtc_fetch(struct rdc_hw *hw, uint32_t n,
+					 uint64_t when, bool hidden)
 {
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t bytes;

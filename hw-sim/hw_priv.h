@@ -93,7 +93,14 @@ void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
  * Cost of one read of [addr, addr + len) as bursts, from open row *row; *row is
  * left at the last row touched.  Used by the scanout fetch.
  */
-uint64_t rdc_bus_read_cost(uint32_t *row, uint64_t addr, uint64_t len);
+static inline uint64_t rdc_bus_read_cost(uint32_t *row, uint64_t addr,
+					 uint64_t len)
+{
+	if (!len)
+		return 0;
+	return rdc_bus_cost(row, addr, len, RDC_BUS_READ,
+			    rdc_bus_bursts(addr, len));
+}
 
 /* crtc.c */
 void rdc_crtc_reset(struct rdc_hw *hw);
