@@ -152,18 +152,26 @@ static inline void words_copy(uint32_t *d, const uint32_t *s, uint32_t n)
 
 static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 {
-	uint32_t before = hw->fifo_count, i;
+	uint32_t before = hw->fifo_count, i, h;
 
 	n = RDC_MIN(n, hw->fifo_count);
 	if (!n)
 		return 0;
 	rdc_dp_active(hw, 1);
 	rdc_hw_idle_to(hw, hw->now + n * RDC_T_FIFO_WORD);
-	/* the ring holds the n words in at most two pieces */
-	i = RDC_MIN(n, RDC_FIFO_DEPTH - hw->fifo_head);
-	words_copy(dst, hw->fifo + hw->fifo_head, i);
-	if (i < n)
-		words_copy(dst + i, hw->fifo, n - i);
+	/*
+	 * The first word (a command's header) alone, so that the copy's
+	 * wide stores start at the arguments: the DP reads two of them as
+	 * one 8-byte load (a glyph's colours), which a store holding both
+	 * serves at once, where two stores it straddles stall it until they
+	 * retire.  Then the ring holds the rest in at most two pieces.
+	 */
+	dst[0] = hw->fifo[hw->fifo_head];
+	h = (hw->fifo_head + 1) % RDC_FIFO_DEPTH;
+	i = RDC_MIN(n - 1, RDC_FIFO_DEPTH - h);
+	words_copy(dst + 1, hw->fifo + h, i);
+	if (i < n - 1)
+		words_copy(dst + 1 + i, hw->fifo, n - 1 - i);
 	hw->fifo_head = (hw->fifo_head + n) % RDC_FIFO_DEPTH;
 	hw->fifo_count -= n;
 	rdc_fifo_traced(hw);
