@@ -176,6 +176,67 @@ static void test_host_blit_readback_formats(void **state)
 	}
 }
 
+/*
+ * Host blit 4 pixels of 16 bits to (0, 0) of the DST surface at `base`,
+ * RGB565 rows 64 bytes apart: how many bytes they took there says the
+ * format the handle believed DST had (2 each as RGB565, 4 as XRGB8888).
+ */
+static uint32_t blit_bytes_at(rdc_dev *dev, uint32_t base)
+{
+	const uint16_t px[8] = { 0x1111, 0x2222, 0x3333, 0x4444,
+				 0x5555, 0x6666, 0x7777, 0x8888 };
+	uint8_t zero[32] = { 0 }, vr[32];
+	uint32_t n = 0;
+
+	assert_int_equal(rdc_vram_write(dev, base, zero, sizeof(zero)), 0);
+	assert_int_equal(rdc_host_blit(dev, 0, 0, 4, 1, px, sizeof(px)), 0);
+	assert_int_equal(rdc_finish(dev), 0);
+	assert_int_equal(rdc_vram_read(dev, base, vr, sizeof(vr)), 0);
+	for (uint32_t i = 0; i < sizeof(vr); i++)
+		n = vr[i] ? i + 1 : n;
+	return n;
+}
+
+/*
+ * The DST format host blits encode for follows the SET_DST words sent:
+ * in a batch, in a batch without one (nothing changes), and in raw words
+ * a batch's words finish.
+ */
+static void test_dst_format_tracked(void **state)
+{
+	rdc_dev *dev = *state;
+	rdc_batch *b = rdc_batch_new();
+	const uint32_t base = 0x100000, nop[16] = { RDC_FMT_RGB565 };
+	const uint32_t hdr[3] = { RDC_CMD(RDC_OP_SET_DST, 0, 4), base, 64 };
+
+	assert_non_null(b);
+	assert_int_equal(rdc_mode_set(dev, RDC_PRESET_640x480_60,
+				      RDC_FMT_XRGB8888, 0),
+			 0);
+	assert_int_equal(rdc_batch_dst(b, base, 64, 16, 4, RDC_FMT_RGB565), 0);
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	assert_int_equal(blit_bytes_at(dev, base), 8);
+	/* a batch with no SET_DST leaves the format as it was */
+	assert_int_equal(rdc_batch_fg(b, 0xff), 0);
+	assert_int_equal(rdc_batch_fill_rect(b, 0, 2, 4, 1), 0);
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	assert_int_equal(blit_bytes_at(dev, base), 8);
+	assert_int_equal(rdc_batch_dst(b, base, 64, 16, 4, RDC_FMT_XRGB8888),
+			 0);
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	assert_int_equal(blit_bytes_at(dev, base), 16);
+	/*
+	 * A SET_DST begun in raw words: a batch's first two words, a NOP's
+	 * header (16 words, flags 4) and its first word, are its size (16
+	 * by 4) and format.
+	 */
+	assert_int_equal(rdc_submit(dev, hdr, 3), 0);
+	assert_int_equal(rdc_batch_cmd(b, RDC_OP_NOP, 4, nop, 16), 0);
+	assert_int_equal(rdc_batch_submit(dev, b), 0);
+	assert_int_equal(blit_bytes_at(dev, base), 8);
+	rdc_batch_free(b);
+}
+
 /* Wider than one HOST_BLIT command can carry: split in columns. */
 static void test_host_blit_wide_split(void **state)
 {
@@ -308,6 +369,7 @@ int main(void)
 		T(test_vram_bounds),
 		T(test_mode_set),
 		T(test_host_blit_readback_formats),
+		T(test_dst_format_tracked),
 		T(test_host_blit_wide_split),
 		T(test_readback_small_buffer),
 		T(test_frame_grab),

@@ -18,6 +18,7 @@ struct rdc_batch {
 	uint32_t *w;
 	size_t n, cap;
 	size_t fg_end; /* rdc_batch_fg_next's SET_FG ends here (else 0) */
+	bool surfaces; /* a SET_DST or SET_SRC among the words */
 };
 
 rdc_batch *rdc_batch_new(void)
@@ -35,8 +36,10 @@ void rdc_batch_free(rdc_batch *b)
 
 void rdc_batch_reset(rdc_batch *b)
 {
-	if (b)
+	if (b) {
 		b->n = b->fg_end = 0;
+		b->surfaces = false;
+	}
 }
 
 const uint32_t *rdc_batch_words(const rdc_batch *b, size_t *n)
@@ -78,6 +81,8 @@ static uint32_t *batch_open(rdc_batch *b, uint32_t op, uint32_t flags, size_t n,
 {
 	uint32_t *p;
 
+	if (b && (op == RDC_OP_SET_DST || op == RDC_OP_SET_SRC))
+		b->surfaces = true;
 	if (b && b->fg_end == b->n && b->n >= 2 && rdc_cmd_takes_fg(op) &&
 	    n < RDC_CMD_LENGTH) {
 		/* [SET_FG, c] becomes [op | DRAW_FG, c, args...] */
@@ -392,8 +397,8 @@ int rdc_batch_submit(rdc_dev *dev, rdc_batch *b)
 
 	if (!dev || !b)
 		return RDC_E_INVAL;
-	ret = rdc_submit(dev, b->w, b->n);
-	b->n = b->fg_end = 0;
+	ret = rdc_submit_whole(dev, b->w, b->n, b->surfaces);
+	rdc_batch_reset(b);
 	return ret;
 }
 

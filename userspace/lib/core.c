@@ -496,14 +496,26 @@ int rdc_fifo_feed(rdc_dev *dev, const uint32_t *words, size_t n,
 	return 0;
 }
 
-int rdc_submit(rdc_dev *dev, const uint32_t *words, size_t n)
+int rdc_submit_whole(rdc_dev *dev, const uint32_t *words, size_t n,
+		     bool surfaces)
 {
 	if (!dev || (!words && n))
 		return RDC_E_INVAL;
-	rdc_track_words(dev, words, n);
+	/*
+	 * The walk only follows SET_DST and SET_SRC: words of whole
+	 * commands without them, after a whole command, leave nothing
+	 * for it to find.
+	 */
+	if (surfaces || dev->scan_left)
+		rdc_track_words(dev, words, n);
 	if (dev->be->submit)
 		return dev->be->submit(dev, words, n);
 	return rdc_fifo_feed(dev, words, n, NULL);
+}
+
+int rdc_submit(rdc_dev *dev, const uint32_t *words, size_t n)
+{
+	return rdc_submit_whole(dev, words, n, true);
 }
 
 int rdc_fence_wait(rdc_dev *dev, uint32_t value)

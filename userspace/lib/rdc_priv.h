@@ -199,6 +199,12 @@ struct rdc_hw *rdc_dev_chip(rdc_dev *dev);
 /* The device closes under its history (history.c). */
 void rdc_history_detach(rdc_dev *dev);
 
+/*
+ * rdc_submit of words that hold whole commands (a batch's), `surfaces`
+ * false when none of them is a SET_DST or SET_SRC (core.c).
+ */
+int rdc_submit_whole(rdc_dev *dev, const uint32_t *words, size_t n,
+		     bool surfaces);
 /* Run a wait with one term (core.c). */
 int rdc_wait_one(rdc_dev *dev, enum rdc_wait_test kind, uint32_t reg,
 		 uint32_t mask, uint32_t value, bool needs_dp);
