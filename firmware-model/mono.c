@@ -86,35 +86,76 @@ static inline uint64_t px_pair(uint32_t a, uint32_t b)
 }
 
 /*
- * The sixteen 4-pixel groups of FG and BG, built a command and read back
- * whole: quad[u] has FG as its pixel k (0 leftmost) where bit 3 - k of u
- * is set.  32 stores to build; a byte of bits is then two 16-byte copies
- * (against four 8-byte ones from 2-pixel groups, 4 stores to build: a
- * console glyph's 16 rows cost 69 instructions less this way).
+ * A byte of bits is two 4-pixel groups of 16 bytes.  Group u (a nibble,
+ * bit 3 the leftmost pixel) is BG with FG where u's bits are set: BG ^
+ * (FG ^ BG) & mask[u], the masks a constant table.  A row of many glyphs
+ * builds the sixteen groups once (quads_table) and copies them; a single
+ * glyph (a command each, the console's way) computes its groups from the
+ * masks, as the 16-byte reads of a table just built would wait for its
+ * stores to retire.  A vector of two 64-bit halves: SSE2 where there is
+ * SSE2, pairs of 64-bit operations elsewhere (the kernel, the MCU); kept
+ * inline, as a vector is never passed or returned.
  */
-struct mono_quads {
-	uint64_t quad[16][2];
+typedef uint64_t mono_u64x2 __attribute__((__vector_size__(16)));
+
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#define MONO_LANE(k) (0xffffffffull << (32 * (k))) /* pixel k of a pair */
+#else
+#define MONO_LANE(k) (0xffffffffull << (32 * (1 - (k))))
+#endif
+#define MONO_HALF(a, b) (((a) ? MONO_LANE(0) : 0) | ((b) ? MONO_LANE(1) : 0))
+#define MONO_QUAD(u) \
+	{ \
+		MONO_HALF((u)&8, (u)&4), MONO_HALF((u)&2, (u)&1) \
+	}
+
+static const mono_u64x2 mono_masks[16] = {
+	MONO_QUAD(0),  MONO_QUAD(1),  MONO_QUAD(2),  MONO_QUAD(3),
+	MONO_QUAD(4),  MONO_QUAD(5),  MONO_QUAD(6),  MONO_QUAD(7),
+	MONO_QUAD(8),  MONO_QUAD(9),  MONO_QUAD(10), MONO_QUAD(11),
+	MONO_QUAD(12), MONO_QUAD(13), MONO_QUAD(14), MONO_QUAD(15),
 };
 
-static inline void quads_fill(struct mono_quads *t, uint32_t fg, uint32_t bg)
+struct mono_quads {
+	mono_u64x2 bg, diff; /* BG in both halves; FG ^ BG */
+	mono_u64x2 quad[16]; /* quads_table's */
+};
+
+static rdc_always_inline void quads_fill(struct mono_quads *t, uint32_t fg,
+					 uint32_t bg)
 {
-	const uint64_t pair[4] = { px_pair(bg, bg), px_pair(bg, fg),
-				   px_pair(fg, bg), px_pair(fg, fg) };
+	const uint64_t b = px_pair(bg, bg), d = px_pair(fg, fg) ^ b;
+
+	t->bg = (mono_u64x2){ b, b };
+	t->diff = (mono_u64x2){ d, d };
+}
+
+static rdc_always_inline void quads_table(struct mono_quads *t)
+{
 	unsigned int u;
 
 #pragma GCC unroll 16
-	for (u = 0; u < 16; u++) {
-		t->quad[u][0] = pair[u >> 2];
-		t->quad[u][1] = pair[u & 3];
-	}
+	for (u = 0; u < 16; u++)
+		t->quad[u] = t->bg ^ (t->diff & mono_masks[u]);
 }
 
-/* The 8 pixels of a byte of bits (bit 7 leftmost) at q. */
+/* The 8 pixels of a byte of bits (bit 7 leftmost) at q, from the table. */
 static inline void byte_write32(uint8_t *q, const struct mono_quads *t,
 				uint32_t byte)
 {
-	rdc_memcpy(q, t->quad[byte >> 4 & 15], 16);
-	rdc_memcpy(q + 16, t->quad[byte & 15], 16);
+	rdc_memcpy(q, &t->quad[byte >> 4 & 15], 16);
+	rdc_memcpy(q + 16, &t->quad[byte & 15], 16);
+}
+
+/* byte_write32 from the masks, for a glyph with no table. */
+static rdc_always_inline void
+byte_masks32(uint8_t *q, const struct mono_quads *t, uint32_t byte)
+{
+	const mono_u64x2 l = t->bg ^ (t->diff & mono_masks[byte >> 4 & 15]);
+	const mono_u64x2 r = t->bg ^ (t->diff & mono_masks[byte & 15]);
+
+	rdc_memcpy(q, &l, 16);
+	rdc_memcpy(q + 16, &r, 16);
 }
 
 /*
@@ -161,7 +202,7 @@ static inline void mono8_rows32(uint8_t *q, uint32_t stride,
 	uint32_t k;
 
 	for (k = 0; k < rows; k++, q += stride, d += wpr)
-		byte_write32(q, t, word_byte(d, kb));
+		byte_masks32(q, t, word_byte(d, kb));
 }
 
 /*
@@ -262,6 +303,8 @@ static rdc_always_inline void rows_text32(struct rdc_dp *dp, int32_t x,
 		return;
 	mono8 = rs->kind == SRC_MONO && n == 8 && bx % 8 == 0;
 	quads_fill(&t, rs->fg, rs->bg);
+	if (!mono8)
+		quads_table(&t);
 	addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
 	rows = (uint32_t)(yb - ya);
 	r = (uint32_t)(ya - y);
