@@ -150,14 +150,12 @@ static bool surface_parse(const struct rdc_hw *hw, const uint32_t *a,
 	return true;
 }
 
-/* Mask colours to the destination's pixel size. */
-static void dp_mask_colours(const struct rdc_dp *dp, uint32_t *fg, uint32_t *bg)
+/* The bits of a colour the destination's pixel holds. */
+static uint32_t dp_colour_mask(const struct rdc_dp *dp)
 {
 	unsigned int bpp = rdc_format_bpp(dp->st.dst.format);
-	uint32_t m = bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
 
-	*fg &= m;
-	*bg &= m;
+	return bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
 }
 
 /* Run a command that may wait: WAIT_* or READBACK.  true when complete. */
@@ -467,7 +465,7 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 	struct rdc_hw *hw = dp->hw;
 	uint32_t hdr = dp->cmd[0], op = RDC_CMD_OP(hdr);
 	uint32_t len = RDC_CMD_LEN(hdr), fl = RDC_CMD_FL(hdr), i, err, save_fg,
-		 save_bg;
+		 save_bg, m;
 	const uint32_t *a = dp->cmd + 1;
 	int fixed = rdc_cmd_args(op);
 	struct rdc_surface s;
@@ -590,13 +588,26 @@ static uint32_t cmd_exec(struct rdc_dp *dp)
 		break;
 	}
 
-	/* Draw with colours masked to DST; the registers keep all bits. */
-	save_fg = dp->st.fg;
-	save_bg = dp->st.bg;
-	dp_mask_colours(dp, &dp->st.fg, &dp->st.bg);
+	/*
+	 * Draw with colours masked to DST; the registers keep all bits.
+	 * Drawing leaves the colours alone, so a 32-bit DST, which masks
+	 * nothing, needs no copy: and the copy's read of both colours in
+	 * one load, just after a command's own colour was stored alone,
+	 * would wait for that store to retire.
+	 */
+	m = dp_colour_mask(dp);
+	save_fg = save_bg = 0;
+	if (m != 0xffffffffu) {
+		save_fg = dp->st.fg;
+		save_bg = dp->st.bg;
+		dp->st.fg &= m;
+		dp->st.bg &= m;
+	}
 	err = exec_draw(dp, op, fl, len, a);
-	dp->st.fg = save_fg;
-	dp->st.bg = save_bg;
+	if (m != 0xffffffffu) {
+		dp->st.fg = save_fg;
+		dp->st.bg = save_bg;
+	}
 	return err;
 }
 
