@@ -323,6 +323,7 @@ static void aa_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 	int64_t ady = y1 > y0 ? (int64_t)y1 - y0 : (int64_t)y0 - y1;
 	bool xmajor = adx >= ady && adx > 0;
 	int64_t n, m, i, j, rem, run, ilo, ihi, cu0, cu1;
+	int64_t fq = 0, fr = 0, dq = 0, dr = 0;
 	int32_t u0, v0, sv;
 	uint8_t *hi = dp->aa_cov[0], *lo = dp->aa_cov[1];
 	uint32_t k = 0;
@@ -348,10 +349,20 @@ static void aa_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		return;
 	j = n ? ilo * m / n : 0;
 	rem = n ? ilo * m % n : 0;
+	/*
+	 * f = (RDC_AA_FULL rem + n / 2) / n, carried as its quotient and
+	 * remainder from step to step as rem is: the same values without a
+	 * division a step.
+	 */
+	if (n) {
+		fq = (RDC_AA_FULL * rem + n / 2) / n;
+		fr = (RDC_AA_FULL * rem + n / 2) % n;
+		dq = RDC_AA_FULL * m / n;
+		dr = RDC_AA_FULL * m % n;
+	}
 	run = ilo;
 	for (i = ilo; i <= ihi; i++) {
-		uint32_t f = n ? (uint32_t)((RDC_AA_FULL * rem + n / 2) / n) :
-				 0;
+		uint32_t f = (uint32_t)fq;
 		int64_t nj = j;
 
 		hi[k] = (uint8_t)(RDC_AA_FULL - f);
@@ -359,8 +370,15 @@ static void aa_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		k++;
 		if (i < ihi) {
 			rem += m;
+			fq += dq;
+			fr += dr;
+			if (fr >= n) {
+				fr -= n;
+				fq++;
+			}
 			if (rem >= n) {
 				rem -= n;
+				fq -= RDC_AA_FULL;
 				nj++;
 			}
 		}
