@@ -174,7 +174,7 @@ struct rdc_dp {
 	uint32_t flood_row[3][RDC_DP_CHUNK];
 
 	/*
-	 * Solid runs (lines, outlines, fills) queued for rdc_port_runs;
+	 * Solid runs (lines, outlines, fills) queued for a port window;
 	 * queue_spans: solid spans and columns go to the queue (span.c)
 	 */
 	struct rdc_port_run runs[RDC_DP_CHUNK];

@@ -33,7 +33,7 @@ void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 /*
  * Between rdc_dp_queue_begin and rdc_dp_queue_end, solid FG spans and
  * columns (span_fill, col_fill, an unpatterned dp_fill_span) are queued
- * and charged in bulk (rdc_port_runs), in their order, with the same
+ * and charged in bulk (a port window's runs), in their order, with the same
  * pixels and cycles; begin does nothing where the queue cannot be used.
  * Nothing else may touch VRAM in between.  rdc_dp_queue_span is
  * dp_fill_span's way in: [xa, xb] of row y, inside the clip.

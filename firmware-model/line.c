@@ -30,40 +30,6 @@ void rdc_dp_line(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 			  n - (skip_last ? 1 : 0));
 }
 
-/*
- * One run of line_queue's direct path: charged in the open window and
- * written at once, or (refused) charged and written as the port call
- * dp_runs_flush would make for it charges it, in the window across the
- * line start that falls in it, or else in a window of its own.  *pixels is
- * the perf count not yet added, added before any port call that could
- * let someone look at it.
- */
-static rdc_noinline void line_run_port(struct rdc_dp *dp,
-				       struct rdc_port_window *w,
-				       const struct rdc_port_run *r,
-				       uint64_t *pixels)
-{
-	struct rdc_hw *hw = dp->hw;
-	uint32_t stride = dp->st.dst.stride;
-	uint8_t *p;
-
-	if (rdc_port_window_cross(hw, w, r, stride, RDC_BUS_WRITE)) {
-		dp_run_write(dp, w->vram + r->addr, r, dp->st.fg);
-		return;
-	}
-	rdc_port_window_close(hw, w);
-	hw->perf.pixels += *pixels;
-	*pixels = 0;
-	if (r->count == 1)
-		p = rdc_port_span(hw, r->addr, r->len, RDC_BUS_WRITE);
-	else
-		p = rdc_port_column(hw, r->addr, stride, r->count, r->len,
-				    RDC_BUS_WRITE);
-	if (p)
-		dp_run_write(dp, p, r, dp->st.fg);
-	rdc_port_window_open(hw, w);
-}
-
 static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
 			    const struct rdc_port_run *r, const uint8_t *pair,
 			    uint64_t *pixels)
@@ -77,12 +43,12 @@ static inline void line_run(struct rdc_dp *dp, struct rdc_port_window *w,
 				       rdc_ld32(pair));
 		return;
 	}
-	line_run_port(dp, w, r, pixels);
+	dp_run_refused(dp, w, r, RDC_BUS_WRITE, pixels);
 }
 
 /*
  * A middle run of k steps at a that line_fast's window refuses (a
- * scanout event falls in it): line_run's port path for it, as
+ * scanout event falls in it): dp_run_refused, as
  * rdc_dp_line_steps' loop would take it, t and row the window's as the
  * runs before left them.  True when line_fast may go on in the window
  * reopened after it: open, not past its limit, and the open row the one
@@ -101,7 +67,7 @@ static rdc_noinline bool line_cut(struct rdc_dp *dp, struct rdc_port_window *w,
 	};
 	uint32_t last = xmajor ? a + 4 * k - 1 : a + (k - 1) * stride;
 
-	line_run_port(dp, w, &r, pixels);
+	dp_run_refused(dp, w, &r, RDC_BUS_WRITE, pixels);
 	return w->open && w->t <= w->lim && w->row == last / RDC_DRAM_ROW_BYTES;
 }
 
@@ -544,7 +510,7 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 	/*
 	 * XRGB8888 over a destination the ROP ignores: each run is charged
 	 * and written as it is made (rdc_port_window), not queued; a run the
-	 * window refuses takes the port call dp_runs_flush would make.
+	 * window refuses goes to dp_run_refused, as in dp_runs_flush.
 	 */
 	bool direct = bytes == 4 && !rdc_rop_reads_dst(dp->st.rop);
 	bool fast = false;

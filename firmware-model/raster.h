@@ -117,6 +117,17 @@ bool dp_runs_ok(const struct rdc_dp *dp);
 /* The pixels of run r at p with colour fg through the ROP. */
 void dp_run_write(struct rdc_dp *dp, uint8_t *p, const struct rdc_port_run *r,
 		  uint32_t fg);
+/*
+ * Run r, refused by the open port window w (a scanout event falls in
+ * it), charged and written in the window across the line start that
+ * falls in it, or else as its rdc_port_span / rdc_port_column call
+ * charges it, w closed around the call and open again after it.
+ * *pixels, a perf count the caller has not yet added, is added before
+ * that port call (which could let someone look at it).
+ */
+void dp_run_refused(struct rdc_dp *dp, struct rdc_port_window *w,
+		    const struct rdc_port_run *r, unsigned int kind,
+		    uint64_t *pixels);
 /* Charge and write the queued runs dp->runs[0, nruns). */
 void dp_runs_flush(struct rdc_dp *dp);
 /* Queue count pixels down from x, y (count 1: n pixels across). */

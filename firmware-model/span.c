@@ -126,9 +126,9 @@ static void span_emit(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
 /*
  * Queued solid runs.  Lines and outlines are many runs of a few pixels;
  * rather than a port call each, they are queued in dp->runs and charged
- * together by rdc_port_runs, which takes them for as long as no scanout
- * event falls inside; the run it stops at goes through the port call the
- * per-run path would make.  Each run is charged and written exactly as
+ * together in a port window (rdc_port_window_runs), which takes them for
+ * as long as no scanout event falls inside; the run it stops at goes
+ * through dp_run_refused.  Each run is charged and written exactly as
  * dp_span_fill / dp_col_fill would, so pixels, cycles and counters are
  * the same.
  * Only for DST formats of whole bytes, pixel-aligned (a pixel never
@@ -224,22 +224,45 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 	dp->hw->perf.pixels += pixels;
 }
 
+void dp_run_refused(struct rdc_dp *dp, struct rdc_port_window *w,
+		    const struct rdc_port_run *r, unsigned int kind,
+		    uint64_t *pixels)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint32_t stride = dp->st.dst.stride;
+	uint8_t *p;
+
+	if (rdc_port_window_cross(hw, w, r, stride, kind)) {
+		dp_run_write(dp, w->vram + r->addr, r, dp->st.fg);
+		return;
+	}
+	rdc_port_window_close(hw, w);
+	hw->perf.pixels += *pixels;
+	*pixels = 0;
+	if (r->count == 1)
+		p = rdc_port_span(hw, r->addr, r->len, kind);
+	else
+		p = rdc_port_column(hw, r->addr, stride, r->count, r->len,
+				    kind);
+	if (p)
+		dp_run_write(dp, p, r, dp->st.fg);
+	rdc_port_window_open(hw, w);
+}
+
 void dp_runs_flush(struct rdc_dp *dp)
 {
 	const struct rdc_surface *s = &dp->st.dst;
 	struct rdc_hw *hw = dp->hw;
 	unsigned int kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW :
 							    RDC_BUS_WRITE;
-	uint32_t fg = dp->st.fg, i = 0, done;
-	const struct rdc_port_run *r;
+	uint32_t i = 0, done;
+	uint64_t pixels = 0; /* runs_write counts its own */
 	struct rdc_port_window w;
-	uint8_t *p;
 
 	/*
 	 * The runs in a port window: those that end by the next line start,
 	 * on through it while nobody looks (rdc_port_window_runs), and the
-	 * run it falls in across it (rdc_port_window_cross) or, where the
-	 * window does not take it, as its port call charges it
+	 * run it falls in as dp_run_refused takes it
 	 */
 	rdc_port_window_open(hw, &w);
 	while (i < dp->nruns) {
@@ -249,20 +272,7 @@ void dp_runs_flush(struct rdc_dp *dp)
 		i += done;
 		if (i == dp->nruns)
 			break;
-		r = &dp->runs[i++];
-		if (rdc_port_window_cross(hw, &w, r, s->stride, kind)) {
-			dp_run_write(dp, w.vram + r->addr, r, fg);
-			continue;
-		}
-		rdc_port_window_close(hw, &w);
-		if (r->count == 1)
-			p = rdc_port_span(hw, r->addr, r->len, kind);
-		else
-			p = rdc_port_column(hw, r->addr, s->stride, r->count,
-					    r->len, kind);
-		if (p)
-			dp_run_write(dp, p, r, fg);
-		rdc_port_window_open(hw, &w);
+		dp_run_refused(dp, &w, &dp->runs[i++], kind, &pixels);
 	}
 	rdc_port_window_close(hw, &w);
 	dp->nruns = 0;

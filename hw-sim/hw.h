@@ -297,9 +297,9 @@ struct rdc_port_run {
  * next port call).  The caller writes their pixels (no fetch can have
  * seen any of them), passes the next run to rdc_port_span /
  * rdc_port_column itself (which wait for scanout, or refuse a run that
- * leaves VRAM), and calls again with the rest.  Lines, outlines and glyph
- * rows are many short runs: this is their per-run cost without a call
- * each.
+ * leaves VRAM), and calls again with the rest.  This is the plain form
+ * of the port window's runs (rdc_port_window_runs), which charge as it
+ * does, and what tests hold them against.
  */
 uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 		       uint32_t n, uint32_t stride, unsigned int kind,

@@ -256,8 +256,8 @@ struct rdc_perf {
  * before the bytes change: the DP writes them after the port call that
  * charged them returns and before its next port call; the host's are
  * copied right after the call.  RDC_VRAM_MORE in `who`: another run of
- * the same port call (rdc_port_runs), whose runs are all written after
- * it returns.  Nothing may be written from the hook.
+ * the same port call (rdc_port_runs, a port window's runs), whose runs
+ * are all written after it returns.  Nothing may be written from the hook.
  */
 #define RDC_VRAM_BY_DP	 0u
 #define RDC_VRAM_BY_HOST 1u
