@@ -446,9 +446,10 @@ static rdc_always_inline uint64_t rows_costs(const struct rdc_hw *hw,
 					     uint32_t count, uint64_t *c0,
 					     uint64_t *c1)
 {
+	uint32_t row0 = row;
+
 	*c0 = rdc_bus_cost(&row, a, len, RDC_BUS_WRITE, rdc_bus_bursts(a, len));
-	*c1 = rdc_bus_cost(&row, a + stride, len, RDC_BUS_WRITE,
-			   rdc_bus_bursts(a + stride, len));
+	*c1 = rdc_bus_cost_next_row(*c0, a, stride, row0, row);
 	if ((uint64_t)(count - 1) * stride > hw->vram_size - len - a)
 		return (hw->vram_size - len - a) / stride + 1;
 	return count;

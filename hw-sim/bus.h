@@ -245,6 +245,22 @@ static inline bool rdc_port_window_span(const struct rdc_hw *hw,
 }
 
 /*
+ * The cost of the span `stride` bytes (a whole number of DRAM rows) on
+ * from [a, a + len), which cost c0 from open row row0 and left row1
+ * open: the same beats, bursts and edges (every offset is kept), and a
+ * row miss unless it starts in the row the one before ended in.
+ */
+static inline uint64_t rdc_bus_cost_next_row(uint64_t c0, uint64_t a,
+					     uint32_t stride, uint32_t row0,
+					     uint32_t row1)
+{
+	uint64_t ra = a / RDC_DRAM_ROW_BYTES;
+
+	return c0 - (ra != row0) * RDC_T_ROW_MISS +
+	       (ra + stride / RDC_DRAM_ROW_BYTES != row1) * RDC_T_ROW_MISS;
+}
+
+/*
  * rdc_port_window_rows_through, inline when all `count` rows (a whole
  * number of DRAM rows apart, no VRAM watcher) fit in VRAM and before the
  * limit: the closed form, each row after the first costing what the
@@ -256,7 +272,7 @@ static inline uint32_t rdc_port_window_rows_all(struct rdc_hw *hw,
 						uint32_t stride, uint32_t count)
 {
 	uint64_t a = addr, end = a + (uint64_t)(count - 1) * stride + len;
-	uint32_t r0 = w->row, r1;
+	uint32_t r0 = w->row;
 	uint64_t c0, c1, t;
 
 	if (!w->open || stride % RDC_DRAM_ROW_BYTES || count < 2 || !len ||
@@ -264,9 +280,7 @@ static inline uint32_t rdc_port_window_rows_all(struct rdc_hw *hw,
 		return rdc_port_window_rows_through(hw, w, addr, len, stride,
 						    count);
 	c0 = rdc_bus_cost(&r0, a, len, RDC_BUS_WRITE, rdc_bus_bursts(a, len));
-	r1 = r0;
-	c1 = rdc_bus_cost(&r1, a + stride, len, RDC_BUS_WRITE,
-			  rdc_bus_bursts(a + stride, len));
+	c1 = rdc_bus_cost_next_row(c0, a, stride, w->row, r0);
 	t = w->t + c0 + (uint64_t)(count - 1) * c1;
 	if (t > w->lim)
 		return rdc_port_window_rows_through(hw, w, addr, len, stride,
