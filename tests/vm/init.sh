@@ -47,13 +47,14 @@ mount -t tmpfs tmp "/host$scratch"
 # A module that stays loaded is a reference the test left behind (a
 # process still running, a file or mount still open, a device still
 # bound, a configfs directory not removed): print a "not ok" line naming
-# it, its reference count and holders, and what may hold it; false then.
+# it, its reference count and holders, and what may hold it, then take
+# that down (takedown) and unload again; false then.
 # /proc/modules decides, not modprobe's status: busybox's modprobe -r
 # NAME unloads NAME and then its dependencies, and exits 1 when one of
 # those is still used by a module loaded beside it (modprobe -r usb_f_fs
 # unloads usb_f_fs, libcomposite and configfs, and fails on udc_core,
 # which dummy_hcd uses).
-leftovers() {
+unload_new() {
 	cut -d' ' -f1 /proc/modules | grep -vxF -f /tmp/mods.before >/tmp/mods.new
 	# a reference can go a moment after its last holder exits (a
 	# work item, a deferred close): a few tries before blaming the test
@@ -69,7 +70,42 @@ leftovers() {
 		mv /tmp/mods.left /tmp/mods.new
 		i=$((i + 1))
 	done
-	[ -s /tmp/mods.new ] || return 0
+	[ ! -s /tmp/mods.new ]
+}
+
+# takedown: what a test that failed or was stopped may have left: its
+# processes killed, its USB gadgets unbound and removed the way configfs
+# wants (function links first, then strings, configs, functions, the
+# gadget), the framebuffer console unbound, FunctionFS and configfs
+# unmounted; so that the next test starts clean.
+takedown() {
+	[ -z "$1" ] || kill -KILL $1 2>/dev/null
+	sleep 0.2
+	# (configfs mounted by a test, in the chroot, is under /host)
+	for g in /sys/kernel/config/usb_gadget/* \
+		/host/sys/kernel/config/usb_gadget/*; do
+		[ -d "$g" ] || continue
+		echo "    gadget $(basename "$g"): taken down"
+		echo "" >"$g/UDC" 2>/dev/null
+		for l in "$g"/configs/*/* "$g"/os_desc/*; do
+			[ -L "$l" ] && rm -f "$l"
+		done
+		rmdir "$g"/configs/*/strings/* "$g"/configs/* \
+			"$g"/functions/* "$g"/strings/* "$g" 2>/dev/null
+	done
+	# the framebuffer console on a device whose driver must unload
+	for v in /sys/class/vtconsole/vtcon*; do
+		grep -q "frame buffer" "$v/name" 2>/dev/null &&
+			echo 0 >"$v/bind" 2>/dev/null
+	done
+	grep -E ' (functionfs|configfs) ' /proc/mounts | cut -d' ' -f2 |
+		sort -r | while read -r mnt; do
+		umount "$mnt" 2>/dev/null || umount -l "$mnt" 2>/dev/null
+	done
+}
+
+leftovers() {
+	unload_new && return 0
 	for m in $(cat /tmp/mods.new); do
 		h=$(echo $(ls /sys/module/$m/holders 2>/dev/null))
 		echo "not ok - module $m left loaded: refcnt" \
@@ -87,12 +123,16 @@ leftovers() {
 		left="$left ${p#/proc/}"
 	done
 	grep -E ' (functionfs|configfs|usbfs|debugfs) ' /proc/mounts | sed 's/^/    mount: /'
-	ls -d /sys/kernel/config/usb_gadget/* 2>/dev/null | sed 's/^/    gadget: /'
+	ls -d /sys/kernel/config/usb_gadget/* \
+		/host/sys/kernel/config/usb_gadget/* 2>/dev/null |
+		sed 's/^/    gadget: /'
 	for v in /sys/class/vtconsole/vtcon*; do
 		echo "    $(basename "$v"): $(cat "$v/name") bind $(cat "$v/bind")"
 	done 2>/dev/null
-	# the next test starts without this one's processes
-	[ -z "$left" ] || kill -KILL $left 2>/dev/null
+	# the next test starts without this one's leftovers
+	takedown "$left"
+	unload_new ||
+		echo "    still loaded after the takedown:" $(cat /tmp/mods.new)
 	return 1
 }
 
@@ -110,13 +150,21 @@ for t in $RDC_TESTS; do
 		fi
 	done </tmp/mods
 	if [ $rc = 0 ]; then
-		chroot /host /usr/bin/env -i \
+		# a test that hangs costs its own time, not the boot's
+		chroot /host /usr/bin/timeout -k 10 "$RDC_TEST_TIMEOUT" \
+			/usr/bin/env -i \
 			PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
 			HOME=$scratch TMPDIR=$scratch RDC_TREE="$RDC_TREE" \
 			RDC_BUILD="$RDC_BUILD" RDC_VM_DIR="$RDC_VM_DIR" \
 			/bin/sh "$RDC_TREE/tests/vm/tests/$t.sh" \
 			</dev/null 2>&1
 		rc=$?
+		case $rc in
+		124 | 137)
+			echo "not ok - $t: stopped after $RDC_TEST_TIMEOUT s" \
+				"(RDC_VM_TEST_TIMEOUT)"
+			;;
+		esac
 	fi
 	leftovers || rc=1
 	echo "RDC-VM-RESULT $t $rc $(($(date +%s) - t0))"

@@ -30,7 +30,9 @@
 # RDC_VM_TESTS="name ..." runs a subset; RDC_VM_TIMEOUT bounds the boot
 # (seconds, default 1800: the whole suite takes about 600 on a quiet
 # machine; on a loaded one, load average 6 on two cores, 1716 on 6.1 and
-# 1441 on 6.12); RDC_VM_ACCEL=tcg|kvm overrides the probe.
+# 1441 on 6.12), RDC_VM_TEST_TIMEOUT each test (seconds of guest time,
+# default 400; a test stopped there fails and the next one runs);
+# RDC_VM_ACCEL=tcg|kvm overrides the probe.
 set -u
 # Run from make: its variables (O=, -j) must not reach Kbuild's make.
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
@@ -73,6 +75,8 @@ for t in "$HERE"/tests/*.sh; do
 	TESTS="$TESTS $n"
 done
 [ -n "$TESTS" ] || { echo "vm: no tests"; exit 1; }
+TEST_TMO=${RDC_VM_TEST_TIMEOUT:-400}
+case $TEST_TMO in '' | *[!0-9]*) echo "vm: RDC_VM_TEST_TIMEOUT: not a number of seconds"; exit 1 ;; esac
 
 # ---- Packages ---------------------------------------------------------------------
 is_installed() {
@@ -287,6 +291,7 @@ chmod +x "$R/init"
 	echo "RDC_BUILD='$O'"
 	echo "RDC_VM_DIR='$VMDIR'"
 	echo "RDC_TESTS='$TESTS'"
+	echo "RDC_TEST_TIMEOUT='$TEST_TMO'"
 } >"$R/vm.conf"
 (cd "$R" && find . | cpio -o -H newc 2>/dev/null | gzip -1) >"$VMDIR/initrd.gz"
 
