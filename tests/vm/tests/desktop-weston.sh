@@ -45,11 +45,14 @@ kill $CLIENT 2>/dev/null
 # frame's vblank sequence (MSC) and presentation time.
 present() {
 	f0=$(chip_frames)
-	timeout -s INT 6 weston-presentation-shm -f >$T/present.out 2>&1
+	# stdout alone: its lines are buffered, and the client's "exiting"
+	# on stderr, written at the SIGINT, could land inside one
+	timeout -s INT 6 weston-presentation-shm -f >$T/present.out \
+		2>$T/present.err
 	f1=$(chip_frames)
 	awk -v f0="$f0" -v f1="$f1" -v us="$PERIOD_US" '
-		/seq [0-9]+/ {
-			seq = $NF; n++
+		/ seq [0-9]+$/ {
+			seq = $NF + 0; n++
 			if (n > 1 && seq <= last) { bad = "seq " seq " after " last }
 			if (n > 1 && us > 0) {
 				for (i = 1; i <= NF; i++) if ($i == "p2p") p2p = $(i + 1)
