@@ -73,6 +73,10 @@ unload_new() {
 	[ ! -s /tmp/mods.new ]
 }
 
+# The gadgets in configfs: under /host too, where a test running in
+# the chroot mounts it.
+GADGETS="/sys/kernel/config/usb_gadget /host/sys/kernel/config/usb_gadget"
+
 # takedown: what a test that failed or was stopped may have left: its
 # processes killed, its USB gadgets unbound and removed the way configfs
 # wants (function links first, then strings, configs, functions, the
@@ -81,9 +85,7 @@ unload_new() {
 takedown() {
 	[ -z "$1" ] || kill -KILL $1 2>/dev/null
 	sleep 0.2
-	# (configfs mounted by a test, in the chroot, is under /host)
-	for g in /sys/kernel/config/usb_gadget/* \
-		/host/sys/kernel/config/usb_gadget/*; do
+	for d in $GADGETS; do for g in "$d"/*; do
 		[ -d "$g" ] || continue
 		echo "    gadget $(basename "$g"): taken down"
 		echo "" >"$g/UDC" 2>/dev/null
@@ -92,7 +94,7 @@ takedown() {
 		done
 		rmdir "$g"/configs/*/strings/* "$g"/configs/* \
 			"$g"/functions/* "$g"/strings/* "$g" 2>/dev/null
-	done
+	done; done
 	# the framebuffer console on a device whose driver must unload
 	for v in /sys/class/vtconsole/vtcon*; do
 		grep -q "frame buffer" "$v/name" 2>/dev/null &&
@@ -123,8 +125,7 @@ leftovers() {
 		left="$left ${p#/proc/}"
 	done
 	grep -E ' (functionfs|configfs|usbfs|debugfs) ' /proc/mounts | sed 's/^/    mount: /'
-	ls -d /sys/kernel/config/usb_gadget/* \
-		/host/sys/kernel/config/usb_gadget/* 2>/dev/null |
+	for d in $GADGETS; do ls -d "$d"/* 2>/dev/null; done |
 		sed 's/^/    gadget: /'
 	for v in /sys/class/vtconsole/vtcon*; do
 		echo "    $(basename "$v"): $(cat "$v/name") bind $(cat "$v/bind")"
