@@ -462,6 +462,13 @@ static void test_glyphs_match(void **state)
 				h = (uint32_t)tdp_range(&seed, 1, 16);
 				words = h;
 			}
+			if (i % 8 == 6) {
+				/* wider, cut by the left edge to its last 8 */
+				int32_t cut = 8 * tdp_range(&seed, 1, 3);
+
+				w += (uint32_t)cut;
+				a[0] = RDC_XY(-cut, tdp_range(&seed, 0, TP_H));
+			}
 			a[1] = RDC_WH(w, h);
 			for (k = 0; k < words; k++)
 				a[2 + k] = tdp_rand(&seed);
