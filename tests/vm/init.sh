@@ -77,6 +77,17 @@ unload_new() {
 # the chroot mounts it.
 GADGETS="/sys/kernel/config/usb_gadget /host/sys/kernel/config/usb_gadget"
 
+# procs: the processes running, "PID COMMAND LINE" a line: not this
+# shell, nor a kernel thread (no command line).  Called with its output
+# to a file, in this shell: a pipe would make it a process of its own.
+procs() {
+	for p in /proc/[0-9]*; do
+		cmd=$(tr '\0' ' ' <"$p/cmdline" 2>/dev/null)
+		[ "${p#/proc/}" != 1 ] && [ -n "$cmd" ] || continue
+		echo "${p#/proc/} $cmd"
+	done
+}
+
 # takedown: what a test that failed or was stopped may have left: its
 # processes killed, its USB gadgets unbound and removed the way configfs
 # wants (function links first, then strings, configs, functions, the
@@ -116,14 +127,12 @@ leftovers() {
 	# what may hold them: processes and the device files they hold
 	# open, mounts, gadgets, consoles
 	left=""
-	for p in /proc/[0-9]*; do
-		cmd=$(tr '\0' ' ' <"$p/cmdline" 2>/dev/null)
-		# not this shell, nor a kernel thread (no command line)
-		[ "${p#/proc/}" != 1 ] && [ -n "$cmd" ] || continue
-		echo "    process ${p#/proc/}: $cmd"
-		ls -l "$p/fd" 2>/dev/null | sed -n 's|.* -> \(.*/dev/.*\)|      fd \1|p'
-		left="$left ${p#/proc/}"
-	done
+	procs >/tmp/procs
+	while read -r p cmd; do
+		echo "    process $p: $cmd"
+		ls -l "/proc/$p/fd" 2>/dev/null | sed -n 's|.* -> \(.*/dev/.*\)|      fd \1|p'
+		left="$left $p"
+	done </tmp/procs
 	grep -E ' (functionfs|configfs|usbfs|debugfs) ' /proc/mounts | sed 's/^/    mount: /'
 	for d in $GADGETS; do ls -d "$d"/* 2>/dev/null; done |
 		sed 's/^/    gadget: /'
@@ -137,6 +146,48 @@ leftovers() {
 	return 1
 }
 
+# remains: what a takedown must not leave: modules loaded since the test
+# began, gadgets, FunctionFS and configfs mounts, processes (as
+# leftovers finds them); one line each, none when clean.
+remains() {
+	cut -d' ' -f1 /proc/modules | grep -vxF -f /tmp/mods.before |
+		sed 's/^/module /'
+	for d in $GADGETS; do ls -d "$d"/* 2>/dev/null; done |
+		sed 's/^/gadget /'
+	grep -E ' (functionfs|configfs) ' /proc/mounts | sed 's/^/mount /'
+	procs >/tmp/procs
+	sed 's/^/process /' /tmp/procs
+}
+
+# stopped NAME STATUS: the verdict on a test with a "# vm-stop:" line,
+# which hangs on purpose to try the net below: stopped (STATUS 124, or
+# 137 when SIGTERM was not enough), found holding something, and nothing
+# left after the takedown.  (Its verdict has a name no other function
+# here uses: shell variables are global.)
+stopped() {
+	verdict=0
+	case $2 in
+	124 | 137) echo "ok - $1: stopped after $tmo s, as it asks" ;;
+	*)
+		echo "not ok - $1: exit $2 within its $tmo s: not stopped"
+		verdict=1
+		;;
+	esac
+	if leftovers; then
+		echo "not ok - $1: held nothing when stopped"
+		verdict=1
+	fi
+	remains >/tmp/remains
+	if [ -s /tmp/remains ]; then
+		echo "not ok - $1: left after the takedown:"
+		sed 's/^/    /' /tmp/remains
+		verdict=1
+	else
+		echo "ok - $1: nothing left after the takedown"
+	fi
+	return $verdict
+}
+
 for t in $RDC_TESTS; do
 	f=/host$RDC_TREE/tests/vm/tests/$t.sh
 	rc=0
@@ -144,6 +195,9 @@ for t in $RDC_TESTS; do
 	echo "RDC-VM-BEGIN $t"
 	cut -d' ' -f1 /proc/modules >/tmp/mods.before
 	sed -n 's/^# vm-module: *//p' "$f" >/tmp/mods
+	# "# vm-stop: N": the test hangs on purpose, stopped after N s
+	stop=$(sed -n 's/^# vm-stop: *\([0-9][0-9]*\) *$/\1/p' "$f")
+	tmo=${stop:-$RDC_TEST_TIMEOUT}
 	while read -r name args; do
 		if ! modprobe "$name" $args; then
 			echo "modprobe $name failed"
@@ -152,7 +206,7 @@ for t in $RDC_TESTS; do
 	done </tmp/mods
 	if [ $rc = 0 ]; then
 		# a test that hangs costs its own time, not the boot's
-		chroot /host /usr/bin/timeout -k 10 "$RDC_TEST_TIMEOUT" \
+		chroot /host /usr/bin/timeout -k 10 "$tmo" \
 			/usr/bin/env -i \
 			PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
 			HOME=$scratch TMPDIR=$scratch RDC_TREE="$RDC_TREE" \
@@ -162,12 +216,18 @@ for t in $RDC_TESTS; do
 		rc=$?
 		case $rc in
 		124 | 137)
-			echo "not ok - $t: stopped after $RDC_TEST_TIMEOUT s" \
-				"(RDC_VM_TEST_TIMEOUT)"
+			[ -n "$stop" ] ||
+				echo "not ok - $t: stopped after $tmo s" \
+					"(RDC_VM_TEST_TIMEOUT)"
 			;;
 		esac
 	fi
-	leftovers || rc=1
+	if [ -n "$stop" ] && [ $rc != 77 ]; then
+		stopped "$t" $rc
+		rc=$?
+	else
+		leftovers || rc=1
+	fi
 	echo "RDC-VM-RESULT $t $rc $(($(date +%s) - t0))"
 done
 echo RDC-VM-DONE
