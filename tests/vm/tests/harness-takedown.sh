@@ -25,6 +25,9 @@ check "fbcon is bound to it" sh -c 'grep -q "^0 rdcfb" /proc/fb && v=$1 &&
 	[ "$(cat "$v/bind")" = 1 ]' sh "$(fbcon_vt)"
 sh -c 'trap "" TERM; exec sleep 100000' </dev/fb0 >/dev/null 2>&1 &
 check "the gadget enumerates (rdcd on ffs:)" usb_gadget_up --mode 640x480
+# a hold that failed would leave that part of the takedown untried: the
+# test ends (and fails, not being stopped) instead of waiting
+[ $failed -eq 0 ] || exit 1
 echo "# held; this test waits for the harness to stop it"
 while :; do
 	sleep 1
