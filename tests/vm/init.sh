@@ -40,6 +40,11 @@ case "$RDC_TREE/ $RDC_BUILD/" in
 esac
 mount -t tmpfs tmp "/host$scratch"
 
+# new_mods: the modules loaded since /tmp/mods.before, one name a line.
+new_mods() {
+	cut -d' ' -f1 /proc/modules | grep -vxF -f /tmp/mods.before
+}
+
 # leftovers: unload the modules loaded since /tmp/mods.before was taken
 # (those the test's "# vm-module:" lines named, their dependencies, and
 # any loaded while it ran), newest first as
@@ -55,7 +60,7 @@ mount -t tmpfs tmp "/host$scratch"
 # unloads usb_f_fs, libcomposite and configfs, and fails on udc_core,
 # which dummy_hcd uses).
 unload_new() {
-	cut -d' ' -f1 /proc/modules | grep -vxF -f /tmp/mods.before >/tmp/mods.new
+	new_mods >/tmp/mods.new
 	# a reference can go a moment after its last holder exits (a
 	# work item, a deferred close): a few tries before blaming the test
 	i=0
@@ -77,6 +82,16 @@ unload_new() {
 # the chroot mounts it.
 GADGETS="/sys/kernel/config/usb_gadget /host/sys/kernel/config/usb_gadget"
 
+# gadgets: the gadget directories in configfs, one a line.
+gadgets() {
+	for d in $GADGETS; do ls -d "$d"/* 2>/dev/null; done
+}
+
+# mounts_of TYPE...: the lines of /proc/mounts of those file system types.
+mounts_of() {
+	grep -E " ($(echo "$@" | tr ' ' '|')) " /proc/mounts
+}
+
 # procs: the processes running, "PID COMMAND LINE" a line: not this
 # shell, nor a kernel thread (no command line).  Called with its output
 # to a file, in this shell: a pipe would make it a process of its own.
@@ -96,8 +111,7 @@ procs() {
 takedown() {
 	[ -z "$1" ] || kill -KILL $1 2>/dev/null
 	sleep 0.2
-	for d in $GADGETS; do for g in "$d"/*; do
-		[ -d "$g" ] || continue
+	for g in $(gadgets); do
 		echo "    gadget $(basename "$g"): taken down"
 		echo "" >"$g/UDC" 2>/dev/null
 		for l in "$g"/configs/*/* "$g"/os_desc/*; do
@@ -105,13 +119,13 @@ takedown() {
 		done
 		rmdir "$g"/configs/*/strings/* "$g"/configs/* \
 			"$g"/functions/* "$g"/strings/* "$g" 2>/dev/null
-	done; done
+	done
 	# the framebuffer console on a device whose driver must unload
 	for v in /sys/class/vtconsole/vtcon*; do
 		grep -q "frame buffer" "$v/name" 2>/dev/null &&
 			echo 0 >"$v/bind" 2>/dev/null
 	done
-	grep -E ' (functionfs|configfs) ' /proc/mounts | cut -d' ' -f2 |
+	mounts_of functionfs configfs | cut -d' ' -f2 |
 		sort -r | while read -r mnt; do
 		umount "$mnt" 2>/dev/null || umount -l "$mnt" 2>/dev/null
 	done
@@ -133,9 +147,8 @@ leftovers() {
 		ls -l "/proc/$p/fd" 2>/dev/null | sed -n 's|.* -> \(.*/dev/.*\)|      fd \1|p'
 		left="$left $p"
 	done </tmp/procs
-	grep -E ' (functionfs|configfs|usbfs|debugfs) ' /proc/mounts | sed 's/^/    mount: /'
-	for d in $GADGETS; do ls -d "$d"/* 2>/dev/null; done |
-		sed 's/^/    gadget: /'
+	mounts_of functionfs configfs usbfs debugfs | sed 's/^/    mount: /'
+	gadgets | sed 's/^/    gadget: /'
 	for v in /sys/class/vtconsole/vtcon*; do
 		echo "    $(basename "$v"): $(cat "$v/name") bind $(cat "$v/bind")"
 	done 2>/dev/null
@@ -150,11 +163,9 @@ leftovers() {
 # began, gadgets, FunctionFS and configfs mounts, processes (as
 # leftovers finds them); one line each, none when clean.
 remains() {
-	cut -d' ' -f1 /proc/modules | grep -vxF -f /tmp/mods.before |
-		sed 's/^/module /'
-	for d in $GADGETS; do ls -d "$d"/* 2>/dev/null; done |
-		sed 's/^/gadget /'
-	grep -E ' (functionfs|configfs) ' /proc/mounts | sed 's/^/mount /'
+	new_mods | sed 's/^/module /'
+	gadgets | sed 's/^/gadget /'
+	mounts_of functionfs configfs | sed 's/^/mount /'
 	procs >/tmp/procs
 	sed 's/^/process /' /tmp/procs
 }
