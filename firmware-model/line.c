@@ -287,6 +287,60 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
 }
 
 /*
+ * line_fast's runs of a line whose minor axis moves more than half as far
+ * as its major (q == 1: runs of one pixel or two), a stretch at a time: a stretch is the t runs of
+ * one pixel (rem >= 0 before each: rem -= dd) and the run of two after
+ * them (rem < 0: rem += d1), t from rem, so that a pass takes the
+ * run-slicing steps once for several pixels.  With rem before the run of
+ * two rn (-dd <= rn < 0), the next t is tq + (rn + tr >= 0) for
+ * d1 = tq * dd + tr: floor((rn + d1) / dd) + 1 without a division.
+ *
+ * A span's run of one costs the same at any address (rc->c[0]: a beat,
+ * a row miss, a turnaround); its stretch is charged whole, and where the
+ * window cannot take it whole, stops for line_fast's loop to take it run
+ * by run, as it takes the events.  A column's stretches are charged by
+ * line_fast (`one` and a row miss a pixel): `end` is then also where the
+ * window's budget ends.  A stretch whose run of two would not start
+ * before `end` is line_fast's too.
+ */
+static rdc_always_inline void
+line_pairs32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
+	     bool column, uint32_t umul, uint32_t vstep, int64_t dd, int64_t d1,
+	     int64_t end, int64_t *runp, int64_t *remp, uint32_t *ap,
+	     uint64_t *budgetp)
+{
+	const uint32_t step0 = umul + vstep, step1 = 2 * umul + vstep;
+	const int64_t tq = d1 / dd, tr = d1 - tq * dd;
+	int64_t run = *runp, rem = *remp, t, i;
+	uint64_t budget = *budgetp, cost;
+	uint32_t a = *ap;
+
+	/* -dd <= rem < d1 here: 0 <= rem + rr < 2m with rr = dd */
+	t = rem < 0 ? 0 : rem / dd + 1;
+	while (run + t < end) {
+		if (!column) {
+			cost = (uint64_t)t * rc->c[0] +
+			       run_cost32(rc, a + (uint32_t)t * step0, 2, 1);
+			if (cost > budget)
+				break;
+			budget -= cost;
+		}
+		for (i = 0; i < t; i++, a += step0)
+			line_q32(vram + a, 1, v2, column, umul);
+		line_q32(vram + a, 2, v2, column, umul);
+		rem -= t * dd;
+		run += t + 2;
+		a += step1;
+		t = tq + (rem + tr >= 0);
+		rem += d1;
+	}
+	*runp = run;
+	*remp = rem;
+	*ap = a;
+	*budgetp = budget;
+}
+
+/*
  * The middle runs of a direct line (each of q or q + 1 steps, rem < 2m),
  * while the run cannot reach the last step ihi and the port window takes
  * it: each charged as rdc_port_window_span / _column would (the same
@@ -359,10 +413,21 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 	if (xmajor) {
 		struct run_costs rc;
 		const bool table = q <= RUN_COSTS_MAX_Q;
+		/* q == 1 and a run of two now and then (not 45 degrees) */
+		bool pairs = q == 1 && d0 < 0;
 
 		if (table)
 			run_costs_fill(&rc, q);
 		while (run < end) {
+			if (pairs) {
+				line_pairs32(vram, &rc, v2, false, 4, vstep,
+					     -d0, d1, end, &run, &rem, &a,
+					     &budget);
+				if (run >= end)
+					break;
+				/* run by run up to the event that stopped it */
+				pairs = false;
+			}
 			more = rem < 0;
 			k = q + more;
 			cost = table ? run_cost32(&rc, a, (uint32_t)k, more) :
@@ -383,6 +448,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				lim = w->lim;
 				budget = lim - w->t;
 				rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
+				pairs = q == 1 && d0 < 0;
 				continue;
 			}
 			budget -= cost;
@@ -397,8 +463,17 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 		int64_t runmax = left > (uint64_t)(ihi - run) ?
 					 ihi + 1 :
 					 run + (int64_t)left;
+		bool pairs = q == 1 && d0 < 0;
 
 		while (run < end) {
+			if (pairs) {
+				line_pairs32(vram, NULL, v2, true, umul, vstep,
+					     -d0, d1, RDC_MIN(end, runmax - 1),
+					     &run, &rem, &a, &budget);
+				if (run >= end)
+					break;
+				pairs = false;
+			}
 			more = rem < 0;
 			k = q + more;
 			if (run + k > runmax) {
@@ -424,6 +499,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				runmax = left > (uint64_t)(ihi - run) ?
 						 ihi + 1 :
 						 run + (int64_t)left;
+				pairs = q == 1 && d0 < 0;
 				continue;
 			}
 			line_q32(vram + a, (uint32_t)k, v2, true, umul);

@@ -217,6 +217,29 @@ static void test_lines_match(void **state)
 		}
 		tp_check(p);
 	}
+	/*
+	 * Lines between 26.6 and 63.4 degrees from an axis (runs of one
+	 * pixel or two: line_pairs32's stretches), long enough that line
+	 * starts fall inside stretches, both axes, both directions.
+	 */
+	for (round = 0; round < 4; round++) {
+		for (i = 0; i < TP_BATCH; i++) {
+			int32_t n = tdp_range(&seed, 8, 190);
+			int32_t m = n / 2 + 1 + tdp_range(&seed, 0, n / 2 - 1);
+			int32_t du = tdp_rand(&seed) % 2 ? n : -n;
+			int32_t dv = tdp_rand(&seed) % 2 ? m : -m;
+			int32_t x0 = tdp_range(&seed, 0, 1023),
+				y0 = tdp_range(&seed, 0, 199);
+
+			if (i % 2)
+				TP_CMD(p, RDC_OP_LINE, RDC_XY(x0, y0),
+				       RDC_XY(x0 + du, y0 + dv));
+			else
+				TP_CMD(p, RDC_OP_LINE, RDC_XY(x0, y0),
+				       RDC_XY(x0 + dv, y0 + du));
+		}
+		tp_check(p);
+	}
 	/* 4096 pixels wide: whole middle runs longer than a DRAM row */
 	TP_CMD(p, RDC_OP_SET_DST, 1u << 20, 16384, RDC_WH(4096, 16),
 	       RDC_FMT_XRGB8888);
