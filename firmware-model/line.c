@@ -287,29 +287,30 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
 }
 
 /*
- * line_fast's runs of a line whose minor axis moves more than half as far
- * as its major (q == 1: runs of one pixel or two), a stretch at a time: a stretch is the t runs of
- * one pixel (rem >= 0 before each: rem -= dd) and the run of two after
+ * line_fast's middle runs a stretch at a time: a stretch is the t runs of
+ * q pixels (rem >= 0 before each: rem -= dd) and the run of q + 1 after
  * them (rem < 0: rem += d1), t from rem, so that a pass takes the
- * run-slicing steps once for several pixels.  With rem before the run of
- * two rn (-dd <= rn < 0), the next t is tq + (rn + tr >= 0) for
+ * run-slicing steps once for several runs.  With rem before the run of
+ * q + 1 rn (-dd <= rn < 0), the next t is tq + (rn + tr >= 0) for
  * d1 = tq * dd + tr: floor((rn + d1) / dd) + 1 without a division.
  *
- * A span's run of one costs the same at any address (rc->c[0]: a beat,
- * a row miss, a turnaround); its stretch is charged whole, and where the
- * window cannot take it whole, stops for line_fast's loop to take it run
- * by run, as it takes the events.  A column's stretches are charged by
- * line_fast (`one` and a row miss a pixel): `end` is then also where the
- * window's budget ends.  A stretch whose run of two would not start
- * before `end` is line_fast's too.
+ * A span's stretches are for q == 1, where random lines' runs are one
+ * pixel or two and most of a line's cost is the steps: a run of one
+ * costs the same at any address (rc->c[0]: a beat, a row miss, a
+ * turnaround), so a stretch is charged whole, and where the window
+ * cannot take it whole, stops for line_fast's loop to take it run by
+ * run, as it takes the events.  A column's are for any q: line_fast
+ * charges them (`one` and a row miss a pixel), and `end` is then also
+ * where the window's budget ends.  A stretch whose run of q + 1 would
+ * not start before `end` is line_fast's too.
  */
 static rdc_always_inline void
 line_pairs32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
-	     bool column, uint32_t umul, uint32_t vstep, int64_t dd, int64_t d1,
-	     int64_t end, int64_t *runp, int64_t *remp, uint32_t *ap,
-	     uint64_t *budgetp)
+	     bool column, uint32_t q, uint32_t umul, uint32_t vstep, int64_t dd,
+	     int64_t d1, int64_t end, int64_t *runp, int64_t *remp,
+	     uint32_t *ap, uint64_t *budgetp)
 {
-	const uint32_t step0 = umul + vstep, step1 = 2 * umul + vstep;
+	const uint32_t step0 = q * umul + vstep, step1 = step0 + umul;
 	const int64_t tq = d1 / dd, tr = d1 - tq * dd;
 	int64_t run = *runp, rem = *remp, t, i;
 	uint64_t budget = *budgetp, cost;
@@ -317,7 +318,7 @@ line_pairs32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
 
 	/* -dd <= rem < d1 here: 0 <= rem + rr < 2m with rr = dd */
 	t = rem < 0 ? 0 : rem / dd + 1;
-	while (run + t < end) {
+	while (run + t * q < end) {
 		if (!column) {
 			cost = (uint64_t)t * rc->c[0] +
 			       run_cost32(rc, a + (uint32_t)t * step0, 2, 1);
@@ -326,10 +327,10 @@ line_pairs32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
 			budget -= cost;
 		}
 		for (i = 0; i < t; i++, a += step0)
-			line_q32(vram + a, 1, v2, column, umul);
-		line_q32(vram + a, 2, v2, column, umul);
+			line_q32(vram + a, q, v2, column, umul);
+		line_q32(vram + a, q + 1, v2, column, umul);
 		rem -= t * dd;
-		run += t + 2;
+		run += t * q + q + 1;
 		a += step1;
 		t = tq + (rem + tr >= 0);
 		rem += d1;
@@ -420,7 +421,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 			run_costs_fill(&rc, q);
 		while (run < end) {
 			if (pairs) {
-				line_pairs32(vram, &rc, v2, false, 4, vstep,
+				line_pairs32(vram, &rc, v2, false, 1, 4, vstep,
 					     -d0, d1, end, &run, &rem, &a,
 					     &budget);
 				if (run >= end)
@@ -463,13 +464,22 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 		int64_t runmax = left > (uint64_t)(ihi - run) ?
 					 ihi + 1 :
 					 run + (int64_t)left;
-		bool pairs = q == 1 && d0 < 0;
+		/* runs of q + 1 now and then (n not a multiple of m) */
+		bool pairs = d0 < 0;
 
 		while (run < end) {
 			if (pairs) {
-				line_pairs32(vram, NULL, v2, true, umul, vstep,
-					     -d0, d1, RDC_MIN(end, runmax - 1),
-					     &run, &rem, &a, &budget);
+				int64_t e = RDC_MIN(end, runmax - q);
+
+				/* (q == 1, the most of them, a constant) */
+				if (q == 1)
+					line_pairs32(vram, NULL, v2, true, 1,
+						     umul, vstep, -d0, d1, e,
+						     &run, &rem, &a, &budget);
+				else
+					line_pairs32(vram, NULL, v2, true, q,
+						     umul, vstep, -d0, d1, e,
+						     &run, &rem, &a, &budget);
 				if (run >= end)
 					break;
 				pairs = false;
@@ -499,7 +509,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				runmax = left > (uint64_t)(ihi - run) ?
 						 ihi + 1 :
 						 run + (int64_t)left;
-				pairs = q == 1 && d0 < 0;
+				pairs = d0 < 0;
 				continue;
 			}
 			line_q32(vram + a, (uint32_t)k, v2, true, umul);

@@ -219,19 +219,29 @@ static void test_lines_match(void **state)
 	}
 	/*
 	 * Lines between 26.6 and 63.4 degrees from an axis (runs of one
-	 * pixel or two: line_pairs32's stretches), long enough that line
+	 * pixel or two: line_pairs32's stretches), and a quarter of them
+	 * between 11.3 and 26.6 (runs of two to five: a column's
+	 * stretches), on a screen 700 rows tall, long enough that line
 	 * starts fall inside stretches, both axes, both directions.
 	 */
-	for (round = 0; round < 4; round++) {
+	TP_CMD(p, RDC_OP_SET_DST, 1u << 20, 4096, RDC_WH(1024, 700),
+	       RDC_FMT_XRGB8888);
+	TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(0, 0), RDC_XY(1024, 700));
+	for (round = 0; round < 6; round++) {
 		for (i = 0; i < TP_BATCH; i++) {
-			int32_t n = tdp_range(&seed, 8, 190);
-			int32_t m = n / 2 + 1 + tdp_range(&seed, 0, n / 2 - 1);
+			int32_t n = tdp_range(&seed, 10, 600);
+			int32_t m =
+				i % 4 < 3 ?
+					n / 2 + 1 +
+						tdp_range(&seed, 0, n / 2 - 1) :
+					n / 5 + tdp_range(&seed, 1,
+							  n / 2 - n / 5);
 			int32_t du = tdp_rand(&seed) % 2 ? n : -n;
 			int32_t dv = tdp_rand(&seed) % 2 ? m : -m;
 			int32_t x0 = tdp_range(&seed, 0, 1023),
-				y0 = tdp_range(&seed, 0, 199);
+				y0 = tdp_range(&seed, 0, 699);
 
-			if (i % 2)
+			if (tdp_rand(&seed) % 2)
 				TP_CMD(p, RDC_OP_LINE, RDC_XY(x0, y0),
 				       RDC_XY(x0 + du, y0 + dv));
 			else
