@@ -160,6 +160,7 @@ static rdc_always_inline uint64_t span_cost32(uint32_t a, uint32_t k,
 
 struct run_costs {
 	uint32_t c[2 * RUN_BURST_PX];
+	uint32_t most; /* no run costs more: the largest base and a row miss */
 };
 
 #define RUN_COSTS_MAX_Q (RDC_DRAM_ROW_BYTES / 4 - 1) /* q + 1 pixels a row */
@@ -190,6 +191,10 @@ static inline void run_costs_fill(struct run_costs *rc, uint32_t q)
 			base[2 * h + 1] -
 			(shared[2 * h + 1] & -(uint32_t)(p + q < RUN_BURST_PX));
 	}
+	/* no c[] is above its base (a bound is all a stretch needs) */
+	rc->most =
+		RDC_MAX(RDC_MAX(base[0], base[1]), RDC_MAX(base[2], base[3])) +
+		RDC_T_ROW_MISS;
 }
 
 static rdc_always_inline uint64_t run_cost32(const struct run_costs *rc,
@@ -319,15 +324,22 @@ line_pairs32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
 	/* -dd <= rem < d1 here: 0 <= rem + rr < 2m with rr = dd */
 	t = rem < 0 ? 0 : rem / dd + 1;
 	while (run + t * q < end) {
-		if (!column) {
+		if (!column && q == 1) {
 			cost = (uint64_t)t * rc->c[0] +
 			       run_cost32(rc, a + (uint32_t)t * step0, 2, 1);
 			if (cost > budget)
 				break;
 			budget -= cost;
+		} else if (!column && (uint64_t)(t + 1) * rc->most > budget) {
+			break;
 		}
-		for (i = 0; i < t; i++, a += step0)
+		for (i = 0; i < t; i++, a += step0) {
+			if (!column && q != 1)
+				budget -= run_cost32(rc, a, q, 0);
 			line_q32(vram + a, q, v2, column, umul);
+		}
+		if (!column && q != 1)
+			budget -= run_cost32(rc, a, q + 1, 1);
 		line_q32(vram + a, q + 1, v2, column, umul);
 		rem -= t * dd;
 		run += t * q + q + 1;
@@ -415,15 +427,21 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 		struct run_costs rc;
 		const bool table = q <= RUN_COSTS_MAX_Q;
 		/* q == 1 and a run of two now and then (not 45 degrees) */
-		bool pairs = q == 1 && d0 < 0;
+		/* runs of q + 1 now and then (n not a multiple of m) */
+		bool pairs = table && d0 < 0;
 
 		if (table)
 			run_costs_fill(&rc, q);
 		while (run < end) {
 			if (pairs) {
-				line_pairs32(vram, &rc, v2, false, 1, 4, vstep,
-					     -d0, d1, end, &run, &rem, &a,
-					     &budget);
+				if (q == 1)
+					line_pairs32(vram, &rc, v2, false, 1, 4,
+						     vstep, -d0, d1, end, &run,
+						     &rem, &a, &budget);
+				else
+					line_pairs32(vram, &rc, v2, false, q, 4,
+						     vstep, -d0, d1, end, &run,
+						     &rem, &a, &budget);
 				if (run >= end)
 					break;
 				/* run by run up to the event that stopped it */
@@ -449,7 +467,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				lim = w->lim;
 				budget = lim - w->t;
 				rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
-				pairs = q == 1 && d0 < 0;
+				pairs = table && d0 < 0;
 				continue;
 			}
 			budget -= cost;
