@@ -299,21 +299,22 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
  * q + 1 rn (-dd <= rn < 0), the next t is tq + (rn + tr >= 0) for
  * d1 = tq * dd + tr: floor((rn + d1) / dd) + 1 without a division.
  *
- * A span's stretches are for q == 1, where random lines' runs are one
- * pixel or two and most of a line's cost is the steps: a run of one
- * costs the same at any address (rc->c[0]: a beat, a row miss, a
- * turnaround), so a stretch is charged whole, and where the window
- * cannot take it whole, stops for line_fast's loop to take it run by
- * run, as it takes the events.  A column's are for any q: line_fast
- * charges them (`one` and a row miss a pixel), and `end` is then also
- * where the window's budget ends.  A stretch whose run of q + 1 would
- * not start before `end` is line_fast's too.
+ * A span's stretch is charged here.  For q == 1, where random lines'
+ * runs are one pixel or two and most of a line's cost is the steps, a
+ * run of one costs the same at any address (rc->c[0]: a beat, a row
+ * miss, a turnaround), so the stretch is charged whole; for q >= 2 each
+ * run as it is stored, once the stretch is known to fit at rc->most a
+ * run.  Where the window cannot take it so, the stretch stops for
+ * line_fast's loop to take it run by run, as it takes the events.  A
+ * column's stretches line_fast charges (`one` and a row miss a pixel),
+ * and `end` is then also where the window's budget ends.  A stretch
+ * whose run of q + 1 would not start before `end` is line_fast's too.
  */
 static rdc_always_inline void
-line_pairs32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
-	     bool column, uint32_t q, uint32_t umul, uint32_t vstep, int64_t dd,
-	     int64_t d1, int64_t end, int64_t *runp, int64_t *remp,
-	     uint32_t *ap, uint64_t *budgetp)
+line_stretches32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
+		 bool column, uint32_t q, uint32_t umul, uint32_t vstep,
+		 int64_t dd, int64_t d1, int64_t end, int64_t *runp,
+		 int64_t *remp, uint32_t *ap, uint64_t *budgetp)
 {
 	const uint32_t step0 = q * umul + vstep, step1 = step0 + umul;
 	const int64_t tq = d1 / dd, tr = d1 - tq * dd;
@@ -426,26 +427,27 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 	if (xmajor) {
 		struct run_costs rc;
 		const bool table = q <= RUN_COSTS_MAX_Q;
-		/* q == 1 and a run of two now and then (not 45 degrees) */
 		/* runs of q + 1 now and then (n not a multiple of m) */
-		bool pairs = table && d0 < 0;
+		bool stretch = table && d0 < 0;
 
 		if (table)
 			run_costs_fill(&rc, q);
 		while (run < end) {
-			if (pairs) {
+			if (stretch) {
 				if (q == 1)
-					line_pairs32(vram, &rc, v2, false, 1, 4,
-						     vstep, -d0, d1, end, &run,
-						     &rem, &a, &budget);
+					line_stretches32(vram, &rc, v2, false,
+							 1, 4, vstep, -d0, d1,
+							 end, &run, &rem, &a,
+							 &budget);
 				else
-					line_pairs32(vram, &rc, v2, false, q, 4,
-						     vstep, -d0, d1, end, &run,
-						     &rem, &a, &budget);
+					line_stretches32(vram, &rc, v2, false,
+							 q, 4, vstep, -d0, d1,
+							 end, &run, &rem, &a,
+							 &budget);
 				if (run >= end)
 					break;
 				/* run by run up to the event that stopped it */
-				pairs = false;
+				stretch = false;
 			}
 			more = rem < 0;
 			k = q + more;
@@ -467,7 +469,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				lim = w->lim;
 				budget = lim - w->t;
 				rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
-				pairs = table && d0 < 0;
+				stretch = table && d0 < 0;
 				continue;
 			}
 			budget -= cost;
@@ -483,24 +485,26 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 					 ihi + 1 :
 					 run + (int64_t)left;
 		/* runs of q + 1 now and then (n not a multiple of m) */
-		bool pairs = d0 < 0;
+		bool stretch = d0 < 0;
 
 		while (run < end) {
-			if (pairs) {
+			if (stretch) {
 				int64_t e = RDC_MIN(end, runmax - q);
 
 				/* (q == 1, the most of them, a constant) */
 				if (q == 1)
-					line_pairs32(vram, NULL, v2, true, 1,
-						     umul, vstep, -d0, d1, e,
-						     &run, &rem, &a, &budget);
+					line_stretches32(vram, NULL, v2, true,
+							 1, umul, vstep, -d0,
+							 d1, e, &run, &rem, &a,
+							 &budget);
 				else
-					line_pairs32(vram, NULL, v2, true, q,
-						     umul, vstep, -d0, d1, e,
-						     &run, &rem, &a, &budget);
+					line_stretches32(vram, NULL, v2, true,
+							 q, umul, vstep, -d0,
+							 d1, e, &run, &rem, &a,
+							 &budget);
 				if (run >= end)
 					break;
-				pairs = false;
+				stretch = false;
 			}
 			more = rem < 0;
 			k = q + more;
@@ -527,7 +531,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				runmax = left > (uint64_t)(ihi - run) ?
 						 ihi + 1 :
 						 run + (int64_t)left;
-				pairs = d0 < 0;
+				stretch = d0 < 0;
 				continue;
 			}
 			line_q32(vram + a, (uint32_t)k, v2, true, umul);

@@ -219,10 +219,10 @@ static void test_lines_match(void **state)
 	}
 	/*
 	 * Lines between 26.6 and 63.4 degrees from an axis (runs of one
-	 * pixel or two: line_pairs32's stretches), and a quarter of them
-	 * between 11.3 and 26.6 (runs of two to five: a column's
-	 * stretches), on a screen 700 rows tall, long enough that line
-	 * starts fall inside stretches, both axes, both directions.
+	 * pixel or two), and a quarter of them between 11.3 and 26.6
+	 * (runs of two to five), on a screen 700 rows tall, long enough
+	 * that line starts fall inside line_stretches32's stretches, both
+	 * axes, both directions.
 	 */
 	TP_CMD(p, RDC_OP_SET_DST, 1u << 20, 4096, RDC_WH(1024, 700),
 	       RDC_FMT_XRGB8888);
