@@ -250,6 +250,23 @@ static void test_lines_match(void **state)
 		}
 		tp_check(p);
 	}
+	/*
+	 * Shallow lines across x = 512, where a DRAM row ends: runs of two
+	 * to eight pixels that cross it cost a row miss more than any
+	 * run's base, which a stretch's bound must allow for.
+	 */
+	for (round = 0; round < 25; round++) {
+		for (i = 0; i < TP_BATCH; i++) {
+			int32_t n = tdp_range(&seed, 20, 160);
+			int32_t m = n / 9 + tdp_range(&seed, 1, n / 2 - n / 9);
+			int32_t x0 = tdp_range(&seed, 512 - n, 511),
+				y0 = tdp_range(&seed, 0, 699 - m);
+
+			TP_CMD(p, RDC_OP_LINE, RDC_XY(x0, y0),
+			       RDC_XY(x0 + n, y0 + m));
+		}
+		tp_check(p);
+	}
 	/* 4096 pixels wide: whole middle runs longer than a DRAM row */
 	TP_CMD(p, RDC_OP_SET_DST, 1u << 20, 16384, RDC_WH(4096, 16),
 	       RDC_FMT_XRGB8888);
