@@ -215,6 +215,7 @@ struct line_fixed {
 	uint64_t lo, hi; /* the bytes the line may write (the write barrier) */
 	uint32_t q, vstep, stride, one;
 	int64_t rr, d0, d1; /* rem < rr: a run of q + 1; rem += d1 or d0 */
+	int64_t tq, tr; /* d1 = tq * -d0 + tr where d0 < 0 (line_stretches32) */
 };
 
 /* Where a line is: the next run's first step, its minor offset, rem. */
@@ -311,13 +312,14 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
  * whose run of q + 1 would not start before `end` is line_fast's too.
  */
 static rdc_always_inline void
-line_stretches32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
-		 bool column, uint32_t q, uint32_t umul, uint32_t vstep,
-		 int64_t dd, int64_t d1, int64_t end, int64_t *runp,
-		 int64_t *remp, uint32_t *ap, uint64_t *budgetp)
+line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
+		 bool column, uint32_t q, uint32_t umul, int64_t end,
+		 int64_t *runp, int64_t *remp, uint32_t *ap, uint64_t *budgetp)
 {
-	const uint32_t step0 = q * umul + vstep, step1 = step0 + umul;
-	const int64_t tq = d1 / dd, tr = d1 - tq * dd;
+	uint8_t *const vram = f->vram;
+	const uint64_t v2 = f->v2;
+	const uint32_t step0 = q * umul + f->vstep, step1 = step0 + umul;
+	const int64_t dd = -f->d0, d1 = f->d1, tq = f->tq, tr = f->tr;
 	int64_t run = *runp, rem = *remp, t, i;
 	uint64_t budget = *budgetp, cost;
 	uint32_t a = *ap;
@@ -352,6 +354,20 @@ line_stretches32(uint8_t *vram, const struct run_costs *rc, uint64_t v2,
 	*remp = rem;
 	*ap = a;
 	*budgetp = budget;
+}
+
+/* q == 1, the most of them, a constant: a run's stores are one store */
+static rdc_always_inline void
+line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
+		 bool column, uint32_t umul, int64_t end, int64_t *runp,
+		 int64_t *remp, uint32_t *ap, uint64_t *budgetp)
+{
+	if (f->q == 1)
+		line_stretches_q(f, rc, column, 1, umul, end, runp, remp, ap,
+				 budgetp);
+	else
+		line_stretches_q(f, rc, column, f->q, umul, end, runp, remp, ap,
+				 budgetp);
 }
 
 /*
@@ -428,22 +444,15 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 		struct run_costs rc;
 		const bool table = q <= RUN_COSTS_MAX_Q;
 		/* runs of q + 1 now and then (n not a multiple of m) */
-		bool stretch = table && d0 < 0;
+		const bool stretches = table && d0 < 0;
+		bool stretch = stretches;
 
 		if (table)
 			run_costs_fill(&rc, q);
 		while (run < end) {
 			if (stretch) {
-				if (q == 1)
-					line_stretches32(vram, &rc, v2, false,
-							 1, 4, vstep, -d0, d1,
-							 end, &run, &rem, &a,
-							 &budget);
-				else
-					line_stretches32(vram, &rc, v2, false,
-							 q, 4, vstep, -d0, d1,
-							 end, &run, &rem, &a,
-							 &budget);
+				line_stretches32(f, &rc, false, 4, end, &run,
+						 &rem, &a, &budget);
 				if (run >= end)
 					break;
 				/* run by run up to the event that stopped it */
@@ -469,7 +478,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				lim = w->lim;
 				budget = lim - w->t;
 				rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
-				stretch = table && d0 < 0;
+				stretch = stretches;
 				continue;
 			}
 			budget -= cost;
@@ -485,23 +494,14 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 					 ihi + 1 :
 					 run + (int64_t)left;
 		/* runs of q + 1 now and then (n not a multiple of m) */
-		bool stretch = d0 < 0;
+		const bool stretches = d0 < 0;
+		bool stretch = stretches;
 
 		while (run < end) {
 			if (stretch) {
-				int64_t e = RDC_MIN(end, runmax - q);
-
-				/* (q == 1, the most of them, a constant) */
-				if (q == 1)
-					line_stretches32(vram, NULL, v2, true,
-							 1, umul, vstep, -d0,
-							 d1, e, &run, &rem, &a,
-							 &budget);
-				else
-					line_stretches32(vram, NULL, v2, true,
-							 q, umul, vstep, -d0,
-							 d1, e, &run, &rem, &a,
-							 &budget);
+				line_stretches32(f, NULL, true, umul,
+						 RDC_MIN(end, runmax - q), &run,
+						 &rem, &a, &budget);
 				if (run >= end)
 					break;
 				stretch = false;
@@ -531,7 +531,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				runmax = left > (uint64_t)(ihi - run) ?
 						 ihi + 1 :
 						 run + (int64_t)left;
-				stretch = d0 < 0;
+				stretch = stretches;
 				continue;
 			}
 			line_q32(vram + a, (uint32_t)k, v2, true, umul);
@@ -692,6 +692,10 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 		f.rr = rr;
 		f.d0 = 2 * m * q - 2 * n;
 		f.d1 = f.d0 + 2 * m;
+		if (fast && f.d0 < 0) {
+			f.tq = f.d1 / -f.d0;
+			f.tr = f.d1 - f.tq * -f.d0;
+		}
 	}
 
 	for (; i <= ihi; i++, j++) {
