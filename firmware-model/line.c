@@ -298,7 +298,9 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
  * them (rem < 0: rem += d1), t from rem, so that a pass takes the
  * run-slicing steps once for several runs.  With rem before the run of
  * q + 1 rn (-dd <= rn < 0), the next t is tq + (rn + tr >= 0) for
- * d1 = tq * dd + tr: floor((rn + d1) / dd) + 1 without a division.
+ * d1 = tq * dd + tr: floor((rn + d1) / dd) + 1 without a division, and
+ * the next rn rn + tr, less dd where that is not negative: a midpoint
+ * step of its own, one level up, with no product in the loop.
  *
  * A span's stretch is charged here.  For q == 1, where random lines'
  * runs are one pixel or two and most of a line's cost is the steps, a
@@ -318,41 +320,53 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 {
 	uint8_t *const vram = f->vram;
 	const uint64_t v2 = f->v2;
-	const uint32_t step0 = q * umul + f->vstep, step1 = step0 + umul;
-	const int64_t dd = -f->d0, d1 = f->d1, tq = f->tq, tr = f->tr;
-	int64_t run = *runp, rem = *remp, t, i;
+	const uint32_t step0 = q * umul + f->vstep;
+	/* the steps, signed */
+	const ptrdiff_t s0 = (int32_t)step0, s1 = s0 + (ptrdiff_t)umul;
+	const int64_t dd = -f->d0, tq = f->tq, tr = f->tr;
+	int64_t run = *runp, rem = *remp, t, rn, u, i;
 	uint64_t budget = *budgetp, cost;
-	uint32_t a = *ap;
+	uint8_t *p = vram + *ap;
 
 	/* -dd <= rem < d1 here: 0 <= rem + rr < 2m with rr = dd */
 	t = rem < 0 ? 0 : rem / dd + 1;
+	rn = rem - t * dd; /* rem before the run of q + 1 */
 	while (run + t * q < end) {
+		/* where the run of q + 1 starts */
+		uint8_t *const pe = p + t * s0;
+
 		if (!column && q == 1) {
 			cost = (uint64_t)t * rc->c[0] +
-			       run_cost32(rc, a + (uint32_t)t * step0, 2, 1);
+			       run_cost32(rc, (uint32_t)(pe - vram), 2, 1);
 			if (cost > budget)
 				break;
 			budget -= cost;
 		} else if (!column && (uint64_t)(t + 1) * rc->most > budget) {
 			break;
 		}
-		for (i = 0; i < t; i++, a += step0) {
-			if (!column && q != 1)
-				budget -= run_cost32(rc, a, q, 0);
-			line_q32(vram + a, q, v2, column, umul);
+		/* q == 1: one store and a step a run */
+		for (; q == 1 && p != pe; p += s0)
+			line_q32(p, 1, v2, column, umul);
+		for (i = 0; q != 1 && i < t; i++, p += s0) {
+			if (!column)
+				budget -= run_cost32(rc, (uint32_t)(p - vram),
+						     q, 0);
+			line_q32(p, q, v2, column, umul);
 		}
 		if (!column && q != 1)
-			budget -= run_cost32(rc, a, q + 1, 1);
-		line_q32(vram + a, q + 1, v2, column, umul);
-		rem -= t * dd;
+			budget -=
+				run_cost32(rc, (uint32_t)(p - vram), q + 1, 1);
+		line_q32(p, q + 1, v2, column, umul);
 		run += t * q + q + 1;
-		a += step1;
-		t = tq + (rem + tr >= 0);
-		rem += d1;
+		p += s1;
+		/* the next rn: rn + d1 - t * dd, d1 - tq * dd being tr */
+		u = rn + tr;
+		t = tq + (u >= 0);
+		rn = u >= 0 ? u - dd : u;
 	}
 	*runp = run;
-	*remp = rem;
-	*ap = a;
+	*remp = rn + t * dd;
+	*ap = (uint32_t)(p - vram);
 	*budgetp = budget;
 }
 
