@@ -52,7 +52,22 @@ static rdc_always_inline void fill32_blocks(uint8_t *p, const uint8_t *blk,
 		rdc_memcpy(e - FILL_STORE, blk, FILL_STORE);
 }
 
-/* n XRGB8888 pixels of v: memset when its bytes agree, else the blocks. */
+/*
+ * len bytes (FILL_STORE or more) of pixel v, blk its pattern as
+ * fill32_blocks takes it: the C library's fill where the port has one,
+ * p is aligned for it (RDC_FILL32_LIB) and the row is a block or more,
+ * else fill32_blocks, whose two to four stores cost what a call does.
+ */
+static rdc_always_inline void fill32_row(uint8_t *p, const uint8_t *blk,
+					 uint32_t v, size_t len)
+{
+	if (RDC_FILL32_LIB && len >= FILL_BLOCK && ((uintptr_t)p & 3) == 0)
+		rdc_fill32_lib(p, v, len / 4);
+	else
+		fill32_blocks(p, blk, len);
+}
+
+/* n XRGB8888 pixels of v: memset when its bytes agree, else fill32_row. */
 static inline void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
 {
 	size_t len = (size_t)n * 4, i;
@@ -69,7 +84,7 @@ static inline void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
 	}
 	for (i = 0; i < FILL_STORE; i += 4)
 		rdc_st32(blk + i, v);
-	fill32_blocks(p, blk, len);
+	fill32_row(p, blk, v, len);
 }
 
 /*

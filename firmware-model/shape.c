@@ -29,7 +29,7 @@ static inline void rect_row32(uint8_t *p, const uint8_t *blk, uint32_t v,
 			      uint32_t n, bool fast)
 {
 	if (fast)
-		fill32_blocks(p, blk, n * 4);
+		fill32_row(p, blk, v, n * 4);
 	else
 		dp_fill32(p, v, n);
 }
@@ -88,7 +88,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 				if (ahead && k + FILL_AHEAD < done)
 					row_prefetch(q + FILL_AHEAD * stride,
 						     len);
-				fill32_blocks(q, blk, len);
+				fill32_row(q, blk, v, len);
 			}
 			one.addr += done * stride;
 		} else {
