@@ -35,6 +35,36 @@ static inline void rect_row32(uint8_t *p, const uint8_t *blk, uint32_t v,
 }
 
 /*
+ * `done` rows of len bytes (FILL_STORE or more) of pixel v from q,
+ * `stride` apart, blk v's pattern: fill32_row's choice made once for
+ * all of them where no row is asked for ahead (the rows' alignment is
+ * the first's when the stride keeps it), so that a row is the call or
+ * the blocks and the step.
+ */
+static rdc_always_inline void rect_rows_fill(uint8_t *q, const uint8_t *blk,
+					     uint32_t v, uint32_t len,
+					     uint32_t stride, uint32_t done,
+					     bool ahead)
+{
+	uint32_t k;
+
+	if (ahead) {
+		for (k = 0; k < done; k++, q += stride) {
+			if (k + FILL_AHEAD < done)
+				row_prefetch(q + FILL_AHEAD * stride, len);
+			fill32_row(q, blk, v, len);
+		}
+	} else if (RDC_FILL32_LIB && len >= FILL_BLOCK &&
+		   ((uintptr_t)q & 3) == 0 && stride % 4 == 0) {
+		for (k = 0; k < done; k++, q += stride)
+			rdc_fill32_lib(q, v, len / 4);
+	} else {
+		for (k = 0; k < done; k++, q += stride)
+			fill32_blocks(q, blk, len);
+	}
+}
+
+/*
  * A filled rectangle's rows [ya, ye] of pixels [xa, xb] (clipped) in
  * XRGB8888 with a ROP that ignores the destination, charged and written
  * row by row as the queued runs would be (see line_run): no queue, and
@@ -81,16 +111,9 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 			 * and the row's address, stride and length in
 			 * registers too: the stores may alias `one` and *s
 			 */
-			uint8_t *q = w.vram + one.addr;
-			const uint32_t stride = s->stride, len = one.len;
-
-			for (k = 0; k < done; k++, q += stride) {
-				if (ahead && k + FILL_AHEAD < done)
-					row_prefetch(q + FILL_AHEAD * stride,
-						     len);
-				fill32_row(q, blk, v, len);
-			}
-			one.addr += done * stride;
+			rect_rows_fill(w.vram + one.addr, blk, v, one.len,
+				       s->stride, done, ahead);
+			one.addr += done * s->stride;
 		} else {
 			for (k = 0; k < done; k++, one.addr += s->stride) {
 				if (ahead && k + FILL_AHEAD < done)
