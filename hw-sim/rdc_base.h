@@ -47,6 +47,15 @@
 #define rdc_hide_var(v) __asm__("" : "+r"(v))
 #endif
 
+/* RDC_ASAN: built with AddressSanitizer (GCC's word, then clang's) */
+#if defined(__SANITIZE_ADDRESS__)
+#define RDC_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RDC_ASAN 1
+#endif
+#endif
+
 /*
  * n 32-bit units of v from p (4-byte aligned) as little-endian words:
  * glibc's wmemset, a wchar_t being 32 bits there, whose vector loop
@@ -59,8 +68,7 @@
  */
 #if !defined(__KERNEL__) && defined(__GLIBC__) && defined(__WCHAR_MAX__) && \
 	__WCHAR_MAX__ == 0x7fffffff && \
-	__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && \
-	!defined(__SANITIZE_ADDRESS__)
+	__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && !defined(RDC_ASAN)
 #include <wchar.h>
 #define RDC_FILL32_LIB 1
 static inline void rdc_fill32_lib(void *p, uint32_t v, size_t n)

@@ -47,7 +47,7 @@ struct sim {
  * 4 KiB page a pixel costs a TLB miss each.  Under AddressSanitizer they
  * stay heap blocks, whose bounds it checks.
  */
-#ifdef __SANITIZE_ADDRESS__
+#ifdef RDC_ASAN /* rdc_base.h */
 static void *sim_big_alloc(size_t len)
 {
 	return calloc(len, 1);

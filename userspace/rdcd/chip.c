@@ -26,14 +26,7 @@
 
 #include "rdcd.h"
 
-#if defined(__SANITIZE_ADDRESS__)
-#define RDCD_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RDCD_ASAN 1
-#endif
-#endif
-#ifdef RDCD_ASAN
+#ifdef RDC_ASAN /* rdc_base.h: built with AddressSanitizer */
 #include <sanitizer/common_interface_defs.h>
 #endif
 
@@ -63,7 +56,7 @@ struct rdcd_chip {
 	bool between;
 	uint64_t slice_end_ns;
 
-#ifdef RDCD_ASAN
+#ifdef RDC_ASAN
 	void *fake_loop, *fake_chip;
 	const void *loop_bottom;
 	size_t loop_size;
@@ -73,13 +66,13 @@ struct rdcd_chip {
 /* The loop hands the chip its stack and waits until it yields or ends. */
 static void to_chip(struct rdcd_chip *ch)
 {
-#ifdef RDCD_ASAN
+#ifdef RDC_ASAN
 	__sanitizer_start_switch_fiber(&ch->fake_loop,
 				       (char *)ch->stack + getpagesize(),
 				       ch->stack_len - (size_t)getpagesize());
 #endif
 	swapcontext(&ch->loop_ctx, &ch->chip_ctx);
-#ifdef RDCD_ASAN
+#ifdef RDC_ASAN
 	__sanitizer_finish_switch_fiber(ch->fake_loop, NULL, NULL);
 #endif
 }
@@ -88,12 +81,12 @@ static void to_chip(struct rdcd_chip *ch)
 static void to_loop(struct rdcd_chip *ch)
 {
 	ch->on_chip = false;
-#ifdef RDCD_ASAN
+#ifdef RDC_ASAN
 	__sanitizer_start_switch_fiber(&ch->fake_chip, ch->loop_bottom,
 				       ch->loop_size);
 #endif
 	swapcontext(&ch->chip_ctx, &ch->loop_ctx);
-#ifdef RDCD_ASAN
+#ifdef RDC_ASAN
 	__sanitizer_finish_switch_fiber(ch->fake_chip, &ch->loop_bottom,
 					&ch->loop_size);
 #endif
@@ -106,7 +99,7 @@ static void chip_main(void)
 {
 	struct rdcd_chip *ch = chip_entry_arg;
 
-#ifdef RDCD_ASAN
+#ifdef RDC_ASAN
 	__sanitizer_finish_switch_fiber(NULL, &ch->loop_bottom, &ch->loop_size);
 #endif
 	ch->on_chip = true;
