@@ -54,8 +54,7 @@ static rdc_always_inline void rect_rows_fill(uint8_t *q, const uint8_t *blk,
 				row_prefetch(q + FILL_AHEAD * stride, len);
 			fill32_row(q, blk, v, len);
 		}
-	} else if (RDC_FILL32_LIB && len >= FILL_BLOCK &&
-		   ((uintptr_t)q & 3) == 0 && stride % 4 == 0) {
+	} else if (fill32_lib_takes(q, len) && stride % 4 == 0) {
 		for (k = 0; k < done; k++, q += stride)
 			rdc_fill32_lib(q, v, len / 4);
 	} else {
