@@ -324,7 +324,7 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 	/* the steps, signed */
 	const ptrdiff_t s0 = (int32_t)step0, s1 = s0 + (ptrdiff_t)umul;
 	const int64_t dd = -f->d0, tq = f->tq, tr = f->tr;
-	int64_t run = *runp, rem = *remp, t, rn, u, i;
+	int64_t run = *runp, rem = *remp, t, rn, u;
 	uint64_t budget = *budgetp, cost;
 	uint8_t *p = vram + *ap;
 
@@ -344,11 +344,8 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 		} else if (!column && (uint64_t)(t + 1) * rc->most > budget) {
 			break;
 		}
-		/* q == 1: one store and a step a run */
-		for (; q == 1 && p != pe; p += s0)
-			line_q32(p, 1, v2, column, umul);
-		for (i = 0; q != 1 && i < t; i++, p += s0) {
-			if (!column)
+		for (; p != pe; p += s0) {
+			if (!column && q != 1)
 				budget -= run_cost32(rc, (uint32_t)(p - vram),
 						     q, 0);
 			line_q32(p, q, v2, column, umul);
