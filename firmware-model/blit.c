@@ -175,14 +175,6 @@ static rdc_noinline void rop_bytes(uint8_t *restrict d,
 	}
 }
 
-/*
- * BLIT's fast path, for SRC and DST of the same whole-byte format with no
- * colour key and no blend: n pixels read from saddr go to DST row y from
- * xa through the ROP byte by byte, charged as the read span and the write
- * span, then moved straight from SRC to DST when the two do not
- * overlap (memmove for COPY even when they do); an overlapping ROP stages
- * the source first, as the per-pixel path does.
- */
 /* len bytes from src to p through the ROP, overlap-safe. */
 static inline void blit_bytes(struct rdc_dp *dp, uint8_t *p, const uint8_t *src,
 			      uint32_t len)
@@ -209,6 +201,14 @@ static inline void blit_bytes(struct rdc_dp *dp, uint8_t *p, const uint8_t *src,
 	}
 }
 
+/*
+ * BLIT's fast path, for SRC and DST of the same whole-byte format with no
+ * colour key and no blend: n pixels read from saddr go to DST row y from
+ * xa through the ROP byte by byte, charged as the read span and the write
+ * span, then moved straight from SRC to DST when the two do not
+ * overlap (memmove for COPY even when they do); an overlapping ROP stages
+ * the source first, as the per-pixel path does.
+ */
 static void blit_row(struct rdc_dp *dp, uint32_t saddr, int32_t y, int32_t xa,
 		     uint32_t n)
 {
