@@ -621,13 +621,15 @@ uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
 	return i;
 }
 
-bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w)
+/*
+ * rdc_port_window_event once its tests have passed: the window open, no
+ * VRAM watcher, w->t by the limit and the line start there quiet.
+ */
+static rdc_always_inline void window_take(struct rdc_hw *hw,
+					  struct rdc_port_window *w)
 {
 	struct rdc_crtc *c = &hw->crtc;
 
-	if (!w->open || w->t > w->lim || hw->vram_hook ||
-	    !rdc_crtc_next_quiet(hw))
-		return false;
 	/* what the window's close would do, then bus_burst's wait */
 	if (w->scan_hit)
 		rdc_scan_drop_all(hw);
@@ -639,6 +641,14 @@ bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w)
 		w->row = hw->bus.open_row;
 	}
 	w->lim = c->next_line_time;
+}
+
+bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w)
+{
+	if (!w->open || w->t > w->lim || hw->vram_hook ||
+	    !rdc_crtc_next_quiet(hw))
+		return false;
+	window_take(hw, w);
 	return true;
 }
 
@@ -692,7 +702,9 @@ static rdc_always_inline uint64_t bursts_within(uint32_t *row, uint64_t a,
  * limit, else the bursts that end by it (bursts_within), then the line
  * start, which rdc_port_window_event takes.  Returns where it stopped:
  * end, or the first byte not charged when an event is one the window
- * cannot take.
+ * cannot take.  The callers have just seen that the window would take
+ * the first (window_goes_on, rdc_port_window_cross), and bursts_within
+ * keeps w->t by the limit: that one is taken without asking again.
  */
 static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 					      struct rdc_port_window *w,
@@ -701,9 +713,10 @@ static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 {
 	uint64_t a = start, be, cost;
 	unsigned int k = kind;
+	bool first = true;
 	uint32_t row;
 
-	for (;; refused = false) {
+	for (;; refused = false, first = false) {
 		row = w->row;
 		if (!refused) {
 			cost = rdc_bus_cost(&row, a, end - a, k,
@@ -722,7 +735,11 @@ static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 			a = be;
 			k &= ~RDC_BUS_HEAD_PARTIAL;
 		}
-		if (!rdc_port_window_event(hw, w) || w->t > w->lim)
+		if (first)
+			window_take(hw, w);
+		else if (!rdc_port_window_event(hw, w))
+			return a;
+		if (w->t > w->lim)
 			return a;
 	}
 }
