@@ -661,8 +661,10 @@ bool rdc_port_window_event(struct rdc_hw *hw, struct rdc_port_window *w)
  * aligned, costing `full` plus a row miss where it opens a DRAM row: at
  * most rem / full of them fit, fewer while their misses make them
  * dearer (a few steps: a miss is under a burst's cost).  The last never
- * fits, as the span does not.  Returns where the bursts that fit end (a
- * if none does), their cost in *cost and the row they leave in *row.
+ * fits, as the span does not: nor does the first when it is the last,
+ * and where it is not, it ends on a burst's edge without the TAIL flag.
+ * Returns where the bursts that fit end (a if none does), their cost in
+ * *cost and the row they leave in *row.
  */
 static rdc_always_inline uint64_t bursts_within(uint32_t *row, uint64_t a,
 						uint64_t end, unsigned int k,
@@ -670,14 +672,13 @@ static rdc_always_inline uint64_t bursts_within(uint32_t *row, uint64_t a,
 {
 	const unsigned int km = k &
 				~(RDC_BUS_HEAD_PARTIAL | RDC_BUS_TAIL_PARTIAL);
-	uint64_t b1 = RDC_MIN(end, (a / RDC_BUS_BURST_BYTES + 1) *
-					   RDC_BUS_BURST_BYTES);
-	uint32_t r = *row, zero = 0, rj;
-	uint64_t c1, full, j, cj = 0;
+	uint64_t b1 = (a / RDC_BUS_BURST_BYTES + 1) * RDC_BUS_BURST_BYTES;
+	uint32_t r = *row, zero = 0, rj = 0;
+	uint64_t c1 = 0, full, j, rb, re, cj = 0;
 
-	c1 = rdc_bus_cost(&r, a, b1 - a,
-			  b1 == end ? k : k & ~RDC_BUS_TAIL_PARTIAL, 1);
-	if (c1 > budget) {
+	if (b1 < end)
+		c1 = rdc_bus_cost(&r, a, b1 - a, k & ~RDC_BUS_TAIL_PARTIAL, 1);
+	if (b1 >= end || c1 > budget) {
 		*cost = 0;
 		return a;
 	}
@@ -685,9 +686,12 @@ static rdc_always_inline uint64_t bursts_within(uint32_t *row, uint64_t a,
 	/* the bursts after the first and before the one holding end - 1 */
 	j = RDC_MIN((end - 1) / RDC_BUS_BURST_BYTES - b1 / RDC_BUS_BURST_BYTES,
 		    (budget - c1) / full);
+	rb = b1 / RDC_DRAM_ROW_BYTES;
 	for (; j; j--) {
-		rj = r;
-		cj = rdc_bus_cost(&rj, b1, j * RDC_BUS_BURST_BYTES, km, j);
+		/* rdc_bus_cost of the j bursts from b1, aligned and whole */
+		re = (b1 + j * RDC_BUS_BURST_BYTES - 1) / RDC_DRAM_ROW_BYTES;
+		rj = (uint32_t)re;
+		cj = j * full + (re - rb + (rb != r)) * RDC_T_ROW_MISS;
 		if (cj <= budget - c1)
 			break;
 	}
@@ -705,30 +709,41 @@ static rdc_always_inline uint64_t bursts_within(uint32_t *row, uint64_t a,
  * cannot take.  The callers have just seen that the window would take
  * the first (window_goes_on, rdc_port_window_cross), and bursts_within
  * keeps w->t by the limit: that one is taken without asking again.
+ *
+ * `whole` is the span's cost from w->row where the caller knows it (and
+ * that it does not fit), else RDC_NEVER.  The rest's cost after an event
+ * follows from it: costs add up over bursts and the rest starts on a
+ * burst's edge, so only its first row miss changes, the row open before
+ * it being the one the fetch left.
  */
 static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 					      struct rdc_port_window *w,
 					      uint64_t start, uint64_t end,
-					      unsigned int kind, bool refused)
+					      unsigned int kind, uint64_t whole)
 {
+	const uint32_t last = (uint32_t)((end - 1) / RDC_DRAM_ROW_BYTES);
 	uint64_t a = start, be, cost;
 	unsigned int k = kind;
 	bool first = true;
 	uint32_t row;
 
-	for (;; refused = false, first = false) {
+	if (whole == RDC_NEVER) {
 		row = w->row;
-		if (!refused) {
-			cost = rdc_bus_cost(&row, a, end - a, k,
-					    rdc_bus_bursts(a, end - a));
-			if (w->t + cost <= w->lim) {
-				w->t += cost;
-				w->row = row;
-				return end;
-			}
-			row = w->row;
+		whole = rdc_bus_cost(&row, a, end - a, k,
+				     rdc_bus_bursts(a, end - a));
+		if (w->t + whole <= w->lim) {
+			w->t += whole;
+			w->row = row;
+			return end;
 		}
+	}
+	for (;; first = false) {
+		/* whole: [a, end) from w->row, which does not fit */
+		row = w->row;
 		be = bursts_within(&row, a, end, k, w->lim - w->t, &cost);
+		/* [be, end) from `row`, less its first row miss */
+		whole -= cost +
+			 (be / RDC_DRAM_ROW_BYTES != row) * RDC_T_ROW_MISS;
 		if (be != a) {
 			w->t += cost;
 			w->row = row;
@@ -741,6 +756,12 @@ static rdc_always_inline uint64_t window_span(struct rdc_hw *hw,
 			return a;
 		if (w->t > w->lim)
 			return a;
+		whole += (a / RDC_DRAM_ROW_BYTES != w->row) * RDC_T_ROW_MISS;
+		if (w->t + whole <= w->lim) {
+			w->t += whole;
+			w->row = last;
+			return end;
+		}
 	}
 }
 
@@ -765,11 +786,12 @@ bool rdc_port_window_cross(struct rdc_hw *hw, struct rdc_port_window *w,
 	if (r->count == 1) {
 		/* inlined with the kind a constant, the cost loses its switch */
 		if (kind == RDC_BUS_WRITE)
-			a = window_span(hw, w, a, end, RDC_BUS_WRITE, false);
+			a = window_span(hw, w, a, end, RDC_BUS_WRITE,
+					RDC_NEVER);
 		else if (kind == RDC_BUS_READ)
-			a = window_span(hw, w, a, end, RDC_BUS_READ, false);
+			a = window_span(hw, w, a, end, RDC_BUS_READ, RDC_NEVER);
 		else
-			a = window_span(hw, w, a, end, kind, false);
+			a = window_span(hw, w, a, end, kind, RDC_NEVER);
 		if (a == end)
 			goto done;
 		if (a != r->addr)
@@ -803,16 +825,28 @@ static inline bool window_goes_on(const struct rdc_hw *hw,
 }
 
 /*
+ * window_goes_on in a _through call that began lazy with no watcher: only
+ * the host changes either, and it does not run inside a port call (a
+ * quiet line start calls no hook).
+ */
+static inline bool window_still_goes_on(const struct rdc_hw *hw,
+					const struct rdc_port_window *w)
+{
+	return w->t < w->lim && rdc_crtc_next_quiet(hw);
+}
+
+/*
  * Span [a, end) as `kind` across the line start, as
- * rdc_port_window_cross charges it (`refused`: it is known not to fit
- * before it): true, or false where it stopped at an event the window
- * cannot take, charged up to w->part and w->parted set to `parted`.
+ * rdc_port_window_cross charges it (`whole`: its cost, known not to fit
+ * before it, or RDC_NEVER): true, or false where it stopped at an event
+ * the window cannot take, charged up to w->part and w->parted set to
+ * `parted`.
  */
 static rdc_always_inline bool
 span_through(struct rdc_hw *hw, struct rdc_port_window *w, uint64_t a,
-	     uint64_t end, unsigned int kind, bool refused, uint8_t parted)
+	     uint64_t end, unsigned int kind, uint64_t whole, uint8_t parted)
 {
-	w->part = window_span(hw, w, a, end, kind, refused);
+	w->part = window_span(hw, w, a, end, kind, whole);
 	if (w->part != end) {
 		w->parted = parted;
 		return false;
@@ -842,8 +876,8 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 		done += n;
 		a += n * stride;
 		/* the row the line start falls in: it does not fit */
-		if (done == most || !window_goes_on(hw, w) ||
-		    !span_through(hw, w, a, a + len, RDC_BUS_WRITE, true,
+		if (done == most || !window_still_goes_on(hw, w) ||
+		    !span_through(hw, w, a, a + len, RDC_BUS_WRITE, n ? c1 : c0,
 				  RDC_PARTED_RUN))
 			return (uint32_t)done;
 		done++;
@@ -882,9 +916,9 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 		ra += (int64_t)n * step;
 		wa += (int64_t)n * step;
 		/* the pair the line start falls in: its read, as cross does */
-		if (done == count || !window_goes_on(hw, w) ||
+		if (done == count || !window_still_goes_on(hw, w) ||
 		    !span_through(hw, w, (uint64_t)ra, (uint64_t)ra + len,
-				  RDC_BUS_READ, false, RDC_PARTED_RUN))
+				  RDC_BUS_READ, RDC_NEVER, RDC_PARTED_RUN))
 			return done;
 		/* its write: whole where it fits, else across the event */
 		row = w->row;
@@ -895,11 +929,11 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 			w->row = row;
 			rdc_scan_window_hit(hw, w, (uint64_t)wa,
 					    (uint64_t)wa + len);
-		} else if (!window_goes_on(hw, w)) {
+		} else if (!window_still_goes_on(hw, w)) {
 			w->parted = RDC_PARTED_READ;
 			return done;
 		} else if (!span_through(hw, w, (uint64_t)wa,
-					 (uint64_t)wa + len, kind, true,
+					 (uint64_t)wa + len, kind, cost,
 					 RDC_PARTED_WRITE)) {
 			return done;
 		}
@@ -942,7 +976,7 @@ uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
 		    (uint64_t)r[done].addr + r[done].len > hw->vram_size ||
 		    !span_through(hw, w, r[done].addr,
 				  (uint64_t)r[done].addr + r[done].len, kind,
-				  true, RDC_PARTED_RUN))
+				  RDC_NEVER, RDC_PARTED_RUN))
 			return done;
 		done++;
 	}
