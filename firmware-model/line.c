@@ -232,17 +232,23 @@ struct line_pos {
  * that end by the window's limit, then the event (rdc_port_window_event)
  * and on from its fetch's end.  Where an event is not one the window can
  * take, the rest goes to line_cut.  w->t and w->row are the window's as
- * the runs before left them; returns what line_cut does.
+ * the first `done` pixels (charged, not written) left them.  Returns
+ * what line_cut does; when true, the window (a reopened one too) has
+ * seen the line's writes (rdc_scan_window_hit).
  */
 static rdc_noinline bool line_events(struct rdc_dp *dp,
 				     struct rdc_port_window *w,
 				     const struct line_fixed *f, uint32_t a,
-				     uint32_t k, bool xmajor, uint64_t *pixels)
+				     uint32_t k, uint32_t done, bool xmajor,
+				     uint64_t *pixels)
 {
 	const uint32_t umul = xmajor ? 4 : f->stride;
 	const uint64_t pp = f->one + RDC_T_ROW_MISS;
 	uint32_t a0 = a, k0 = k, e;
 	uint64_t budget, c0;
+
+	a += done * umul;
+	k -= done;
 
 	while (k) {
 		budget = w->lim - w->t;
@@ -283,12 +289,64 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
 				line_q32(f->vram + a0, k0 - k, f->v2, !xmajor,
 					 umul);
 			*pixels += k0 - k;
-			return line_cut(dp, w, a, k, xmajor, pixels);
+			if (!line_cut(dp, w, a, k, xmajor, pixels))
+				return false;
+			rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
+			return true;
 		}
 		rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
 	}
 	line_q32(f->vram + a0, k0, f->v2, !xmajor, umul);
 	*pixels += k0;
+	return true;
+}
+
+/*
+ * line_events inline where the run's pixels before the event are known
+ * without its pass per burst: the first `before` (a column's that end by
+ * the limit; none of a span within one burst, which as a whole does
+ * not).  Those charged, the event taken, and the rest charged from the
+ * fetch's end in one sum where it fits: what line_events' loop charges,
+ * without the call and the loop for the line start that falls in most
+ * long lines.  Else line_events or line_cut from where it stands.
+ */
+static rdc_always_inline bool line_event(struct rdc_dp *dp,
+					 struct rdc_port_window *w,
+					 const struct line_fixed *f, uint32_t a,
+					 uint32_t k, uint32_t before,
+					 bool xmajor, uint64_t *pixels)
+{
+	const uint32_t umul = xmajor ? 4 : f->stride;
+	const uint64_t pp = f->one + RDC_T_ROW_MISS;
+	const uint32_t b = a + before * umul, rest = k - before;
+	uint64_t cost;
+
+	if (before) {
+		w->t += before * pp;
+		w->row = (b - umul) / RDC_DRAM_ROW_BYTES;
+	}
+	if (!rdc_port_window_event(dp->hw, w) || w->t > w->lim) {
+		if (before)
+			line_q32(f->vram + a, before, f->v2, !xmajor, umul);
+		*pixels += before;
+		if (!line_cut(dp, w, b, rest, xmajor, pixels))
+			return false;
+		rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
+		return true;
+	}
+	rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
+	if (xmajor)
+		cost = span_cost32(b, rest, b / RDC_DRAM_ROW_BYTES != w->row);
+	else
+		cost = rest * pp -
+		       (b / RDC_DRAM_ROW_BYTES == w->row ? RDC_T_ROW_MISS : 0);
+	if (cost > w->lim - w->t)
+		return line_events(dp, w, f, a, k, before, xmajor, pixels);
+	w->t += cost;
+	w->row =
+		(b + (rest - 1) * umul + (xmajor ? 3 : 0)) / RDC_DRAM_ROW_BYTES;
+	line_q32(f->vram + a, k, f->v2, !xmajor, umul);
+	*pixels += k;
 	return true;
 }
 
@@ -478,8 +536,15 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				w->t = lim - budget;
 				w->row = (a - vstep - 1) / RDC_DRAM_ROW_BYTES;
 				*pixels += (uint64_t)(run - run0);
-				more = line_events(dp, w, f, a, (uint32_t)k,
-						   true, pixels);
+				if ((a ^ (a + 4 * (uint32_t)k - 1)) <
+				    RDC_BUS_BURST_BYTES)
+					more = line_event(dp, w, f, a,
+							  (uint32_t)k, 0, true,
+							  pixels);
+				else
+					more = line_events(dp, w, f, a,
+							   (uint32_t)k, 0, true,
+							   pixels);
 				rem += k > q ? d1 : d0;
 				run += k;
 				a += k > q ? step1 : step0;
@@ -488,7 +553,6 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 					goto cut;
 				lim = w->lim;
 				budget = lim - w->t;
-				rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
 				stretch = stretches;
 				continue;
 			}
@@ -526,8 +590,10 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 				w->row =
 					(a - vstep - umul) / RDC_DRAM_ROW_BYTES;
 				*pixels += (uint64_t)(run - run0);
-				more = line_events(dp, w, f, a, (uint32_t)k,
-						   false, pixels);
+				/* `budget / pp` pixels fit before the event */
+				more = line_event(dp, w, f, a, (uint32_t)k,
+						  (uint32_t)(runmax - run),
+						  false, pixels);
 				rem += k > q ? d1 : d0;
 				run += k;
 				a += k > q ? step1 : step0;
@@ -536,7 +602,6 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 					goto cut;
 				lim = w->lim;
 				budget = lim - w->t;
-				rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
 				run1 = run;
 				left = budget / pp;
 				runmax = left > (uint64_t)(ihi - run) ?
