@@ -366,15 +366,21 @@ static rdc_always_inline bool line_event(struct rdc_dp *dp,
  * miss, a turnaround), so the stretch is charged whole; for q >= 2 each
  * run as it is stored, once the stretch is known to fit at rc->most a
  * run.  Where the window cannot take it so, the stretch stops for
- * line_fast's loop to take it run by run, as it takes the events.  A
- * column's stretches line_fast charges (`one` and a row miss a pixel),
+ * line_fast's loop to take the rest run by run, as it takes the events.
+ * A column's stretches line_fast charges (`one` and a row miss a pixel),
  * and `end` is then also where the window's budget ends.  A stretch
  * whose run of q + 1 would not start before `end` is line_fast's too.
+ *
+ * The stretch that stops so has its runs of q that the window takes
+ * (for a span those that fit, for a column those that start before
+ * `part`) stored here, in its pointer loop: line_fast's loop, a run a
+ * pass, then mostly has only the run the line start falls in to take.
  */
 static rdc_always_inline void
 line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 		 bool column, uint32_t q, uint32_t umul, int64_t end,
-		 int64_t *runp, int64_t *remp, uint32_t *ap, uint64_t *budgetp)
+		 int64_t part, int64_t *runp, int64_t *remp, uint32_t *ap,
+		 uint64_t *budgetp)
 {
 	uint8_t *const vram = f->vram;
 	const uint64_t v2 = f->v2;
@@ -382,24 +388,36 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 	/* the steps, signed */
 	const ptrdiff_t s0 = (int32_t)step0, s1 = s0 + (ptrdiff_t)umul;
 	const int64_t dd = -f->d0, tq = f->tq, tr = f->tr;
-	int64_t run = *runp, rem = *remp, t, rn, u;
+	int64_t run = *runp, rem = *remp, t, rn, u, n = 0;
 	uint64_t budget = *budgetp, cost;
-	uint8_t *p = vram + *ap;
+	uint8_t *p = vram + *ap, *pe;
 
 	/* -dd <= rem < d1 here: 0 <= rem + rr < 2m with rr = dd */
 	t = rem < 0 ? 0 : rem / dd + 1;
 	rn = rem - t * dd; /* rem before the run of q + 1 */
 	while (run + t * q < end) {
 		/* where the run of q + 1 starts */
-		uint8_t *const pe = p + t * s0;
-
+		pe = p + t * s0;
 		if (!column && q == 1) {
 			cost = (uint64_t)t * rc->c[0] +
 			       run_cost32(rc, (uint32_t)(pe - vram), 2, 1);
-			if (cost > budget)
+			if (cost > budget) {
+				/* the runs of one that fit, c[0] each */
+				n = (int64_t)RDC_MIN((uint64_t)t,
+						     budget / rc->c[0]);
+				budget -= (uint64_t)n * rc->c[0];
 				break;
+			}
 			budget -= cost;
 		} else if (!column && (uint64_t)(t + 1) * rc->most > budget) {
+			for (; n < t; n++) {
+				cost = run_cost32(rc,
+						  (uint32_t)(p + n * s0 - vram),
+						  q, 0);
+				if (cost > budget)
+					break;
+				budget -= cost;
+			}
 			break;
 		}
 		for (; p != pe; p += s0) {
@@ -419,6 +437,13 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 		t = tq + (u >= 0);
 		rn = u >= 0 ? u - dd : u;
 	}
+	/* a column's runs of q that start before part */
+	if (column && part > run)
+		n = RDC_MIN(t, (part - run + q - 1) / q);
+	for (pe = p + n * s0; p != pe; p += s0)
+		line_q32(p, q, v2, column, umul);
+	run += n * q;
+	t -= n;
 	*runp = run;
 	*remp = rn + t * dd;
 	*ap = (uint32_t)(p - vram);
@@ -428,15 +453,15 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 /* q == 1, the most of them, a constant: a run's stores are one store */
 static rdc_always_inline void
 line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
-		 bool column, uint32_t umul, int64_t end, int64_t *runp,
-		 int64_t *remp, uint32_t *ap, uint64_t *budgetp)
+		 bool column, uint32_t umul, int64_t end, int64_t part,
+		 int64_t *runp, int64_t *remp, uint32_t *ap, uint64_t *budgetp)
 {
 	if (f->q == 1)
-		line_stretches_q(f, rc, column, 1, umul, end, runp, remp, ap,
-				 budgetp);
+		line_stretches_q(f, rc, column, 1, umul, end, part, runp, remp,
+				 ap, budgetp);
 	else
-		line_stretches_q(f, rc, column, f->q, umul, end, runp, remp, ap,
-				 budgetp);
+		line_stretches_q(f, rc, column, f->q, umul, end, part, runp,
+				 remp, ap, budgetp);
 }
 
 /*
@@ -520,7 +545,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 			run_costs_fill(&rc, q);
 		while (run < end) {
 			if (stretch) {
-				line_stretches32(f, &rc, false, 4, end, &run,
+				line_stretches32(f, &rc, false, 4, end, 0, &run,
 						 &rem, &a, &budget);
 				if (run >= end)
 					break;
@@ -574,9 +599,11 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 
 		while (run < end) {
 			if (stretch) {
+				/* its runs of q that end by runmax */
 				line_stretches32(f, NULL, true, umul,
-						 RDC_MIN(end, runmax - q), &run,
-						 &rem, &a, &budget);
+						 RDC_MIN(end, runmax - q),
+						 RDC_MIN(end, runmax - q + 1),
+						 &run, &rem, &a, &budget);
 				if (run >= end)
 					break;
 				stretch = false;
