@@ -282,6 +282,46 @@ static void test_lines_match(void **state)
 	tp_assert_raced(p);
 }
 
+/*
+ * A line start's fetch leaves open the DRAM row its last bytes are in,
+ * and a run drawn just after it in that row costs no row miss.  On a
+ * surface at 0 with 4096-byte rows, row 5 is DRAM row 10 (its first 512
+ * pixels), which the fetch of screen line 16 (1280-byte lines) ends in
+ * and no other line's does.  One line at a time crosses row 5, started
+ * a little earlier each round before line 16 starts, so that the event
+ * falls in its runs before, at and after row 5: x-major (runs of one
+ * pixel or two, within a burst) and y-major.
+ */
+static void test_lines_fetch_row(void **state)
+{
+	struct tp_pair *p = *state;
+	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
+	uint32_t seed = 0xf37c4u, early;
+
+	assert_int_equal((16 * TP_W * 4 + TP_W * 4 - 1) / RDC_DRAM_ROW_BYTES,
+			 5 * 4096 / RDC_DRAM_ROW_BYTES);
+	TP_CMD(p, RDC_OP_SET_DST, 0, 4096, RDC_WH(512, 12), RDC_FMT_XRGB8888);
+	TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(0, 0), RDC_XY(512, 12));
+	TP_CMD(p, RDC_OP_SET_ROP, RDC_ROP_COPY);
+	tp_check(p);
+	for (early = 0; early < 1200; early += 4) {
+		uint64_t t = rdc_port_next_line(a, 16) - early;
+		int32_t x0 = tdp_range(&seed, 0, 400);
+
+		rdc_hw_run_until(a, RDC_MAX(t, a->now));
+		rdc_hw_run_until(b, a->now);
+		TP_CMD(p, RDC_OP_SET_FG, tdp_rand(&seed));
+		if (early % 8)
+			TP_CMD(p, RDC_OP_LINE, RDC_XY(x0, 0),
+			       RDC_XY(x0 + tdp_range(&seed, 10, 19), 10));
+		else
+			TP_CMD(p, RDC_OP_LINE, RDC_XY(x0, 0),
+			       RDC_XY(x0 + tdp_range(&seed, 2, 9), 10));
+		tp_check(p);
+	}
+	tp_assert_raced(p);
+}
+
 /* A trace that only counts line starts. */
 static void tp_trace_lines(void *ctx, uint64_t time, unsigned int event,
 			   uint32_t a, uint32_t b)
@@ -1200,6 +1240,8 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test_setup_teardown(test_lines_match, tp_setup,
+						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_lines_fetch_row, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_blits_match, tp_setup,
 						tp_teardown),
