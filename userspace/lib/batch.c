@@ -49,7 +49,7 @@ const uint32_t *rdc_batch_words(const rdc_batch *b, size_t *n)
 	return b ? b->w : NULL;
 }
 
-static int batch_reserve(rdc_batch *b, size_t more)
+static int batch_grow(rdc_batch *b, size_t more)
 {
 	size_t cap;
 	uint32_t *w;
@@ -72,12 +72,25 @@ static int batch_reserve(rdc_batch *b, size_t more)
 }
 
 /*
+ * Every command asks for room: the test that it has some is inline, the
+ * growing is not.  The capacity doubles from BATCH_FIRST_CAP and stops at
+ * the first power of two that holds the words, so it never passes
+ * BATCH_MAX_WORDS: room within it is room within the limit.
+ */
+static inline int batch_reserve(rdc_batch *b, size_t more)
+{
+	if (b && more <= b->cap - b->n)
+		return 0;
+	return batch_grow(b, more);
+}
+
+/*
  * Header plus `n` arguments; the space for the arguments is returned.
  * Right after rdc_batch_fg_next, a command that takes RDC_DRAW_FG takes
  * that SET_FG's colour in its place.
  */
-static uint32_t *batch_open(rdc_batch *b, uint32_t op, uint32_t flags, size_t n,
-			    int *err)
+static inline uint32_t *batch_open(rdc_batch *b, uint32_t op, uint32_t flags,
+				   size_t n, int *err)
 {
 	uint32_t *p;
 
