@@ -627,13 +627,47 @@ static void dp_status_update(struct rdc_dp *dp)
 		dp->hw->dp_status |= RDC_STATUS_DP_BUSY;
 }
 
+/* The fetched command in dp->cmd: decode it and run it. */
+static void cmd_run(struct rdc_dp *dp)
+{
+	uint32_t err;
+
+	rdc_port_compute(dp->hw, RDC_T_DECODE);
+	dp->phase = RDC_DP_IDLE;
+	err = cmd_exec(dp);
+	if (err)
+		cmd_fail(dp, err);
+	else if (dp->phase == RDC_DP_IDLE)
+		cmd_done(dp);
+}
+
+/*
+ * Most commands are in the FIFO whole: one pop, not two, and no need to
+ * ask first whether a source has words (the pop says).  A list runs to
+ * its end before the queues are looked at.
+ */
+static bool cmd_pop_whole(struct rdc_dp *dp)
+{
+	struct rdc_hw *hw = dp->hw;
+	uint32_t got;
+
+	if (dp->list_depth)
+		return false;
+	dp->cmd_start = hw->now;
+	got = rdc_port_cmd_pop_whole(hw, dp->cmd, RDC_CMD_MAX_ARGS);
+	if (!got)
+		return false;
+	dp->src = RDC_SRC_FIFO;
+	dp->cmd_have = dp->cmd_len = got;
+	return true;
+}
+
 /* Start a command from the first source with words waiting. */
 static bool cmd_begin(struct rdc_dp *dp)
 {
 	struct rdc_hw *hw = dp->hw;
 	unsigned int src;
 
-	/* A display list runs to its end before the queues are looked at. */
 	if (dp->list_depth) {
 		list_begin(dp);
 		return true;
@@ -645,18 +679,6 @@ static bool cmd_begin(struct rdc_dp *dp)
 	else
 		return false;
 	dp->cmd_start = hw->now;
-	/* most commands are in the FIFO whole: one pop, not two */
-	if (src == RDC_SRC_FIFO) {
-		uint32_t got =
-			rdc_port_cmd_pop_whole(hw, dp->cmd, RDC_CMD_MAX_ARGS);
-
-		if (got) {
-			dp->src = src;
-			dp->cmd_have = dp->cmd_len = got;
-			dp->phase = RDC_DP_FETCH;
-			return true;
-		}
-	}
 	if (rdc_port_cmd_pop(hw, src, dp->cmd, 1) != 1)
 		return false;
 	dp->src = src;
@@ -683,7 +705,7 @@ static uint64_t dp_run(void *opaque, uint64_t until)
 		return RDC_NEVER;
 	}
 	for (;;) {
-		uint32_t err, got;
+		uint32_t got;
 
 		switch (dp->phase) {
 		case RDC_DP_HALTED:
@@ -700,7 +722,10 @@ static uint64_t dp_run(void *opaque, uint64_t until)
 					ret = hw->now;
 				goto out;
 			}
-			if (!cmd_begin(dp))
+			/* whole: run now, not after another turn of the loop */
+			if (cmd_pop_whole(dp))
+				cmd_run(dp);
+			else if (!cmd_begin(dp))
 				goto out;
 			continue;
 		case RDC_DP_FETCH:
@@ -713,13 +738,7 @@ static uint64_t dp_run(void *opaque, uint64_t until)
 			}
 			if (dp->cmd_have < dp->cmd_len)
 				goto out; /* the host owes us words */
-			rdc_port_compute(hw, RDC_T_DECODE);
-			dp->phase = RDC_DP_IDLE;
-			err = cmd_exec(dp);
-			if (err)
-				cmd_fail(dp, err);
-			else if (dp->phase == RDC_DP_IDLE)
-				cmd_done(dp);
+			cmd_run(dp);
 			continue;
 		case RDC_DP_WAIT:
 			if (dp->wait_time > until) {

@@ -150,15 +150,11 @@ static inline void words_copy(uint32_t *d, const uint32_t *s, uint32_t n)
 		*d = *s;
 }
 
-static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
+/* Take n words, 1 <= n <= fifo_count, whose fetch is charged. */
+static uint32_t fifo_take(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 {
 	uint32_t before = hw->fifo_count, i, h;
 
-	n = RDC_MIN(n, hw->fifo_count);
-	if (!n)
-		return 0;
-	rdc_dp_active(hw, 1);
-	rdc_hw_idle_to(hw, hw->now + n * RDC_T_FIFO_WORD);
 	/*
 	 * The first word (a command's header) alone, so that the copy's
 	 * wide stores start at the arguments: the DP reads two of them as
@@ -178,6 +174,16 @@ static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
 	if (before > hw->fifo_lowwater && hw->fifo_count <= hw->fifo_lowwater)
 		rdc_port_irq(hw, RDC_IRQ_FIFO_LOW);
 	return n;
+}
+
+static uint32_t fifo_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
+{
+	n = RDC_MIN(n, hw->fifo_count);
+	if (!n)
+		return 0;
+	rdc_dp_active(hw, 1);
+	rdc_hw_idle_to(hw, hw->now + n * RDC_T_FIFO_WORD);
+	return fifo_take(hw, dst, n);
 }
 
 static uint32_t ring_pop(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
@@ -220,7 +226,13 @@ uint32_t rdc_port_cmd_pop_whole(struct rdc_hw *hw, uint32_t *dst,
 	    (before > hw->fifo_lowwater && before - 1 <= hw->fifo_lowwater) ||
 	    rdc_crtc_due(hw, hw->now + n * RDC_T_FIFO_WORD))
 		return 0;
-	return fifo_pop(hw, dst, n);
+	/*
+	 * fifo_pop's tests again would find what these did: words waiting,
+	 * and no scanout event before the fetch ends.
+	 */
+	rdc_dp_active(hw, 1);
+	hw->now += n * RDC_T_FIFO_WORD;
+	return fifo_take(hw, dst, n);
 }
 
 uint32_t rdc_port_cmd_pop(struct rdc_hw *hw, unsigned int src, uint32_t *dst,
