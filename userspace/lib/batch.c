@@ -308,10 +308,15 @@ int rdc_batch_blit(rdc_batch *b, int sx, int sy, int dx, int dy, uint32_t w,
 			  RDC_WH(w, h), 0);
 }
 
-/* MONO, with fg and bg ahead of the rows when `colors` is given. */
-static int batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
-		      const uint8_t *bits, int transparent,
-		      const uint32_t *colors)
+/*
+ * MONO, with fg and bg ahead of the rows when `colors` is given.  Inline
+ * in both encoders: each knows whether colours come, so the argument
+ * count and the tests on `colors` fold away, and a glyph (a console's
+ * every character) pays for one call, not two.
+ */
+static rdc_always_inline int batch_mono(rdc_batch *b, int x, int y, uint32_t w,
+					uint32_t h, const uint8_t *bits,
+					int transparent, const uint32_t *colors)
 {
 	size_t row_bytes = ((size_t)w + 7) / 8;
 	size_t row_words = (row_bytes + 3) / 4;
