@@ -218,7 +218,7 @@ struct line_fixed {
 	/*
 	 * line_stretches32's, where d0 < 0: sdd = dd = -d0 and
 	 * d1 = tq * dd + tr, or with flip (stretches of runs of q + 1)
-	 * sdd = d1 and dd = tq * d1 + tr
+	 * sdd = d1 and dd = tq * d1 + tr; sdd = 0 where d0 = 0
 	 */
 	int64_t sdd, tq, tr;
 	bool flip;
@@ -383,13 +383,14 @@ static rdc_always_inline bool line_event(struct rdc_dp *dp,
  * line_fast's loop to take the rest run by run, as it takes the events.
  * A column's stretches line_fast charges (`one` and a row miss a pixel),
  * and `end` is then also where the window's budget ends.  A stretch
- * whose last run would not start before `end` is line_fast's too.
+ * whose last run would not start before `end` stops too.
  *
  * The stretch that stops so has its runs of q that the window takes
- * (for a span those that fit, for a column those that start before
+ * and that start before `end` (a span's that fit; a column's before
  * `part`, flip's before `end`) stored here, in its pointer loop:
  * line_fast's loop, a run a pass, then mostly has only the run the line
- * start falls in to take.
+ * start falls in to take, or none.  Where n is a multiple of m (dd 0:
+ * all runs of q, a diagonal's of one), the line is one such stretch.
  */
 static rdc_always_inline void
 line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
@@ -404,12 +405,16 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 	const ptrdiff_t s0 = (int32_t)step0,
 			s1 = flip ? s0 - (ptrdiff_t)umul : s0 + (ptrdiff_t)umul;
 	const int64_t dd = f->sdd, tq = f->tq, tr = f->tr;
-	int64_t run = *runp, rem = flip ? -1 - *remp : *remp, t, rn, u, n = 0;
+	int64_t run = *runp, rem = flip ? -1 - *remp : *remp, t, rn, u;
+	int64_t k, n = 0;
 	uint64_t budget = *budgetp, cost;
 	uint8_t *p = vram + *ap, *pe;
 
 	/* -dd <= rem < d1 here: 0 <= rem + rr < 2m with rr = dd */
-	t = rem < 0 ? 0 : rem / dd + 1;
+	if (dd == 0) /* all runs of q: more than start before end */
+		t = RDC_MAX(end - run, (int64_t)0) + 1;
+	else
+		t = rem < 0 ? 0 : rem / dd + 1;
 	rn = rem - t * dd; /* rem before the run of q + 1 */
 	while (run + t * q < end) {
 		/* where the run of q + 1 starts */
@@ -417,23 +422,10 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 		if (!column && q == 1) {
 			cost = (uint64_t)t * rc->c[0] +
 			       run_cost32(rc, (uint32_t)(pe - vram), 2, 1);
-			if (cost > budget) {
-				/* the runs of one that fit, c[0] each */
-				n = (int64_t)RDC_MIN((uint64_t)t,
-						     budget / rc->c[0]);
-				budget -= (uint64_t)n * rc->c[0];
+			if (cost > budget)
 				break;
-			}
 			budget -= cost;
 		} else if (!column && (uint64_t)(t + 1) * rc->most > budget) {
-			for (; n < t; n++) {
-				cost = run_cost32(rc,
-						  (uint32_t)(p + n * s0 - vram),
-						  q, flip);
-				if (cost > budget)
-					break;
-				budget -= cost;
-			}
 			break;
 		}
 		for (; p != pe; p += s0) {
@@ -453,11 +445,29 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 		t = tq + (u >= 0);
 		rn = u >= 0 ? u - dd : u;
 	}
-	/* a column's runs of q that start before part (of q + 1: end) */
-	if (flip)
+	/*
+	 * The runs of q before the last that the window takes: a column's
+	 * that start before part (of q + 1: end), a span's that start
+	 * before end and fit (all t where the budget stopped the stretch;
+	 * a run of one c[0]).
+	 */
+	if (flip || !column)
 		part = end;
-	if (column && part > run)
-		n = RDC_MIN(t, (part - run + q - 1) / q);
+	k = part > run ? RDC_MIN(t, (part - run + q - 1) / q) : 0;
+	if (column) {
+		n = k;
+	} else if (q == 1) {
+		n = (int64_t)RDC_MIN((uint64_t)k, budget / rc->c[0]);
+		budget -= (uint64_t)n * rc->c[0];
+	} else {
+		for (; n < k; n++) {
+			cost = run_cost32(rc, (uint32_t)(p + n * s0 - vram), q,
+					  flip);
+			if (cost > budget)
+				break;
+			budget -= cost;
+		}
+	}
 	for (pe = p + n * s0; p != pe; p += s0)
 		line_q32(p, q, v2, column, umul);
 	run += n * q;
@@ -564,8 +574,8 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 	if (xmajor) {
 		struct run_costs rc;
 		const bool table = q <= RUN_COSTS_MAX_Q;
-		/* runs of q + 1 now and then (n not a multiple of m) */
-		const bool stretches = table && d0 < 0;
+		/* (n a multiple of m: all runs of q, one stretch) */
+		const bool stretches = table && d0 <= 0;
 		bool stretch = stretches;
 
 		if (table)
@@ -620,8 +630,8 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 		int64_t runmax = left > (uint64_t)(ihi - run) ?
 					 ihi + 1 :
 					 run + (int64_t)left;
-		/* runs of q + 1 now and then (n not a multiple of m) */
-		const bool stretches = d0 < 0;
+		/* (n a multiple of m: all runs of q, one stretch) */
+		const bool stretches = d0 <= 0;
 		bool stretch = stretches;
 
 		while (run < end) {
