@@ -146,6 +146,21 @@ static rdc_always_inline uint64_t span_cost32(uint32_t a, uint32_t k,
 }
 
 /*
+ * A run of k pixels from a with DRAM row `row` open: an x-major run is a
+ * span, a column k pixels of pp (a pixel and a row miss) each, less the
+ * miss its first pixel does not pay where it is in the open row.
+ */
+static rdc_always_inline uint64_t run_cost_from(uint32_t a, uint32_t k,
+						bool xmajor, uint64_t pp,
+						uint32_t row)
+{
+	if (xmajor)
+		return span_cost32(a, k, a / RDC_DRAM_ROW_BYTES != row);
+	return (uint64_t)k * pp -
+	       (a / RDC_DRAM_ROW_BYTES == row ? RDC_T_ROW_MISS : 0);
+}
+
+/*
  * span_cost32(a, k, 1) of a line's middle runs, k = q + more, from a
  * table made once a line: c[2p + more] for a run starting at pixel p of
  * its burst (p = a / 4 % 8) holds the beats, the row miss and the
@@ -263,8 +278,7 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
 			e = RDC_MIN(k, (uint32_t)(RDC_BUS_BURST_BYTES -
 						  a % RDC_BUS_BURST_BYTES) /
 					       4);
-			c0 = span_cost32(a, e,
-					 a / RDC_DRAM_ROW_BYTES != w->row);
+			c0 = run_cost_from(a, e, true, pp, w->row);
 			if (c0 > budget)
 				e = 0;
 			else
@@ -341,11 +355,7 @@ static rdc_always_inline bool line_event(struct rdc_dp *dp,
 		return true;
 	}
 	rdc_scan_window_hit(dp->hw, w, f->lo, f->hi);
-	if (xmajor)
-		cost = span_cost32(b, rest, b / RDC_DRAM_ROW_BYTES != w->row);
-	else
-		cost = rest * pp -
-		       (b / RDC_DRAM_ROW_BYTES == w->row ? RDC_T_ROW_MISS : 0);
+	cost = run_cost_from(b, rest, xmajor, pp, w->row);
 	if (cost > w->lim - w->t)
 		return line_events(dp, w, f, a, k, before, xmajor, pixels);
 	w->t += cost;
@@ -550,12 +560,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 	last = run + k - 1 >= ihi;
 	if (last)
 		k = ihi - run + 1;
-	if (xmajor)
-		cost = span_cost32(a, (uint32_t)k,
-				   a / RDC_DRAM_ROW_BYTES != row);
-	else
-		cost = (uint64_t)k * pp -
-		       (a / RDC_DRAM_ROW_BYTES == row ? RDC_T_ROW_MISS : 0);
+	cost = run_cost_from(a, (uint32_t)k, xmajor, pp, row);
 	if (cost > budget)
 		return;
 	budget -= cost;
