@@ -813,18 +813,6 @@ done:
 }
 
 /*
- * The _through calls go on past the window's limit while lines wait
- * unconverted (a frame converted at its fetch would read the runs before
- * the caller writes them) and the line start there only fetches.
- */
-static inline bool window_goes_on(const struct rdc_hw *hw,
-				  const struct rdc_port_window *w)
-{
-	return hw->lazy && !hw->vram_hook && w->t < w->lim &&
-	       rdc_crtc_next_quiet(hw);
-}
-
-/*
  * window_goes_on in a _through call that began lazy with no watcher: only
  * the host changes either, and it does not run inside a port call (a
  * quiet line start calls no hook).
@@ -833,6 +821,17 @@ static inline bool window_still_goes_on(const struct rdc_hw *hw,
 					const struct rdc_port_window *w)
 {
 	return w->t < w->lim && rdc_crtc_next_quiet(hw);
+}
+
+/*
+ * The _through calls go on past the window's limit while lines wait
+ * unconverted (a frame converted at its fetch would read the runs before
+ * the caller writes them) and the line start there only fetches.
+ */
+static inline bool window_goes_on(const struct rdc_hw *hw,
+				  const struct rdc_port_window *w)
+{
+	return hw->lazy && !hw->vram_hook && window_still_goes_on(hw, w);
 }
 
 /*
