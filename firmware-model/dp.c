@@ -649,14 +649,16 @@ static void cmd_run(struct rdc_dp *dp)
 static bool cmd_pop_whole(struct rdc_dp *dp)
 {
 	struct rdc_hw *hw = dp->hw;
+	uint64_t start;
 	uint32_t got;
 
 	if (dp->list_depth)
 		return false;
-	dp->cmd_start = hw->now;
+	start = hw->now;
 	got = rdc_port_cmd_pop_whole(hw, dp->cmd, RDC_CMD_MAX_ARGS);
 	if (!got)
 		return false;
+	dp->cmd_start = start;
 	dp->src = RDC_SRC_FIFO;
 	dp->cmd_have = dp->cmd_len = got;
 	return true;
