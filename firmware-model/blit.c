@@ -278,6 +278,27 @@ static void blit_row_window(struct rdc_dp *dp, struct rdc_port_window *win,
 }
 
 /*
+ * n rows of COPY, as blit_bytes moves them, with the ROP's test made once
+ * for them all: the rows are most of a blit's time beside memmove's.
+ */
+static void blit_copies(uint8_t *p, const uint8_t *src, uint32_t len,
+			int64_t sstep, int64_t dstep, uint32_t n)
+{
+	size_t bytes = len;
+
+	rdc_hide_var(bytes);
+	if (!n)
+		return;
+	for (;;) {
+		rdc_memmove(p, src, bytes);
+		if (!--n)
+			break;
+		src += sstep;
+		p += dstep;
+	}
+}
+
+/*
  * The fast path's rows, each one piece (w <= RDC_DP_CHUNK) and no VRAM
  * watcher: the pairs the window takes are charged together and their
  * bytes moved row by row in the same order; the row the window stops at
@@ -292,6 +313,7 @@ static void blit_rows(struct rdc_dp *dp, uint32_t saddr, uint32_t daddr,
 	int64_t dstep = back ? -(int64_t)ds->stride : (int64_t)ds->stride;
 	unsigned int kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW :
 							    RDC_BUS_WRITE;
+	bool copy = dp->st.rop == RDC_ROP_COPY;
 	struct rdc_hw *hw = dp->hw;
 	struct rdc_port_window win;
 
@@ -299,10 +321,18 @@ static void blit_rows(struct rdc_dp *dp, uint32_t saddr, uint32_t daddr,
 	for (;;) {
 		done = rdc_port_window_pairs_through(
 			hw, &win, saddr, daddr, len, sstep, dstep, h - k, kind);
-		for (i = 0; i < done; i++) {
-			blit_bytes(dp, win.vram + daddr, win.vram + saddr, len);
-			saddr += (uint32_t)sstep;
-			daddr += (uint32_t)dstep;
+		if (copy) {
+			blit_copies(win.vram + daddr, win.vram + saddr, len,
+				    sstep, dstep, done);
+			saddr += (uint32_t)(sstep * done);
+			daddr += (uint32_t)(dstep * done);
+		} else {
+			for (i = 0; i < done; i++) {
+				blit_bytes(dp, win.vram + daddr,
+					   win.vram + saddr, len);
+				saddr += (uint32_t)sstep;
+				daddr += (uint32_t)dstep;
+			}
 		}
 		hw->perf.pixels += (uint64_t)done * n;
 		k += done;
