@@ -815,12 +815,20 @@ done:
 /*
  * window_goes_on in a _through call that began lazy with no watcher: only
  * the host changes either, and it does not run inside a port call (a
- * quiet line start calls no hook).
+ * quiet line start calls no hook).  *quiet is the call's
+ * rdc_crtc_quiet_until, 0 at its start: the line starts the call takes
+ * are all quiet, so it holds until next_line reaches it.
  */
 static inline bool window_still_goes_on(const struct rdc_hw *hw,
-					const struct rdc_port_window *w)
+					const struct rdc_port_window *w,
+					uint32_t *quiet)
 {
-	return w->t < w->lim && rdc_crtc_next_quiet(hw);
+	if (w->t >= w->lim)
+		return false;
+	if (hw->crtc.next_line < *quiet)
+		return true;
+	*quiet = rdc_crtc_quiet_until(hw);
+	return hw->crtc.next_line < *quiet;
 }
 
 /*
@@ -829,9 +837,10 @@ static inline bool window_still_goes_on(const struct rdc_hw *hw,
  * the caller writes them) and the line start there only fetches.
  */
 static inline bool window_goes_on(const struct rdc_hw *hw,
-				  const struct rdc_port_window *w)
+				  const struct rdc_port_window *w,
+				  uint32_t *quiet)
 {
-	return hw->lazy && !hw->vram_hook && window_still_goes_on(hw, w);
+	return hw->lazy && !hw->vram_hook && window_still_goes_on(hw, w, quiet);
 }
 
 /*
@@ -861,6 +870,7 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 				      uint32_t count)
 {
 	uint64_t a = addr, c0, c1, most, done = 0;
+	uint32_t quiet = 0;
 
 	/* else, and where there is no closed form, rows up to the limit */
 	if (!hw->lazy || !w->open || hw->vram_hook ||
@@ -875,7 +885,7 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 		done += n;
 		a += n * stride;
 		/* the row the line start falls in: it does not fit */
-		if (done == most || !window_still_goes_on(hw, w) ||
+		if (done == most || !window_still_goes_on(hw, w, &quiet) ||
 		    !span_through(hw, w, a, a + len, RDC_BUS_WRITE, n ? c1 : c0,
 				  RDC_PARTED_RUN))
 			return (uint32_t)done;
@@ -899,7 +909,7 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 	int64_t ra = raddr, wa = waddr;
 	int64_t last = count ? (int64_t)(count - 1) * step : 0;
 	uint64_t c0, c1, n, cost;
-	uint32_t row, done = 0;
+	uint32_t row, done = 0, quiet = 0;
 
 	if (!hw->lazy || !w->open || hw->vram_hook || !len || count < 2 ||
 	    wstep != step || step % RDC_DRAM_ROW_BYTES ||
@@ -915,7 +925,7 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 		ra += (int64_t)n * step;
 		wa += (int64_t)n * step;
 		/* the pair the line start falls in: its read, as cross does */
-		if (done == count || !window_still_goes_on(hw, w) ||
+		if (done == count || !window_still_goes_on(hw, w, &quiet) ||
 		    !span_through(hw, w, (uint64_t)ra, (uint64_t)ra + len,
 				  RDC_BUS_READ, RDC_NEVER, RDC_PARTED_RUN))
 			return done;
@@ -928,7 +938,7 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 			w->row = row;
 			rdc_scan_window_hit(hw, w, (uint64_t)wa,
 					    (uint64_t)wa + len);
-		} else if (!window_still_goes_on(hw, w)) {
+		} else if (!window_still_goes_on(hw, w, &quiet)) {
 			w->parted = RDC_PARTED_READ;
 			return done;
 		} else if (!span_through(hw, w, (uint64_t)wa,
@@ -951,7 +961,7 @@ uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
 			      uint32_t stride, unsigned int kind)
 {
 	const bool writes = (kind & RDC_BUS_KIND_MASK) != RDC_BUS_READ;
-	uint32_t done = 0, k;
+	uint32_t done = 0, k, quiet = 0;
 
 	if (!w->open)
 		return 0;
@@ -970,8 +980,8 @@ uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
 			runs_watched(hw, r + done, k, stride, w->t);
 		done += k;
 		/* the span the line start falls in: it does not fit */
-		if (done == n || !window_goes_on(hw, w) || r[done].count != 1 ||
-		    !r[done].len ||
+		if (done == n || !window_goes_on(hw, w, &quiet) ||
+		    r[done].count != 1 || !r[done].len ||
 		    (uint64_t)r[done].addr + r[done].len > hw->vram_size ||
 		    !span_through(hw, w, r[done].addr,
 				  (uint64_t)r[done].addr + r[done].len, kind,

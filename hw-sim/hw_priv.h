@@ -136,6 +136,33 @@ static inline bool rdc_crtc_next_quiet(const struct rdc_hw *hw)
 	       !hw->trace_fn;
 }
 
+/*
+ * The line before which every line start from the next one on is quiet,
+ * as long as only rdc_crtc_quiet_line takes them (next_line itself if
+ * the next is not).  Of what rdc_crtc_next_quiet tests, a quiet line
+ * start changes nothing but next_line, which steps by one towards the
+ * first line that ends the run: the vblank's or the frame's end, the
+ * raster list's WAIT, the line compare or the light pen's.  A strobe to
+ * come ends it at the next line, where it is asked again.
+ */
+static inline uint32_t rdc_crtc_quiet_until(const struct rdc_hw *hw)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+	uint32_t n = c->next_line, h;
+
+	if (!rdc_crtc_next_quiet(hw))
+		return n;
+	if (c->lpen_time != RDC_NEVER)
+		return n + 1;
+	h = n < c->cur.v_display ? c->cur.v_display : c->cur.v_total;
+	h = RDC_MIN(h, c->rl_wait);
+	if (c->line_compare > n)
+		h = RDC_MIN(h, c->line_compare);
+	if (c->lpen_line > n)
+		h = RDC_MIN(h, c->lpen_line);
+	return h;
+}
+
 bool rdc_crtc_quiet_line(struct rdc_hw *hw);
 
 /*
