@@ -537,24 +537,26 @@ static inline void pairs_scan_hit(const struct rdc_hw *hw,
 /*
  * rows_costs and rows_fit for read/write pairs whose rows both move by
  * the same whole number of DRAM rows: c0 the first pair's cost from open
- * row `row` (returned), c1 each other's; of `most` pairs, those that end
- * by the window's limit charged.
+ * row `row` (returned), c1 each other's, and of those the reads' r0 and
+ * r1 (a write costs the same in every pair: it follows its own read); of
+ * `most` pairs, those that end by the window's limit charged.
  */
 static rdc_always_inline uint64_t pairs_costs(uint32_t row, int64_t ra,
 					      int64_t wa, int64_t step,
 					      uint32_t len, unsigned int kind,
-					      uint64_t *c1)
+					      uint64_t *c1, uint64_t *r0,
+					      uint64_t *r1)
 {
 	uint64_t c0;
 
-	c0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
-			  rdc_bus_bursts((uint64_t)ra, len));
-	c0 += rdc_bus_cost(&row, (uint64_t)wa, len, kind,
-			   rdc_bus_bursts((uint64_t)wa, len));
-	*c1 = rdc_bus_cost(&row, (uint64_t)(ra + step), len, RDC_BUS_READ,
+	*r0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
+			   rdc_bus_bursts((uint64_t)ra, len));
+	c0 = *r0 + rdc_bus_cost(&row, (uint64_t)wa, len, kind,
+				rdc_bus_bursts((uint64_t)wa, len));
+	*r1 = rdc_bus_cost(&row, (uint64_t)(ra + step), len, RDC_BUS_READ,
 			   rdc_bus_bursts((uint64_t)(ra + step), len));
-	*c1 += rdc_bus_cost(&row, (uint64_t)(wa + step), len, kind,
-			    rdc_bus_bursts((uint64_t)(wa + step), len));
+	*c1 = *r1 + rdc_bus_cost(&row, (uint64_t)(wa + step), len, kind,
+				 rdc_bus_bursts((uint64_t)(wa + step), len));
 	return c0;
 }
 
@@ -593,8 +595,9 @@ uint32_t rdc_port_window_pairs(const struct rdc_hw *hw,
 	    RDC_MAX(ra, ra + (count - 1) * rstep) + len <= size &&
 	    RDC_MAX(wa, wa + (count - 1) * wstep) + len <= size) {
 		/* in closed form (pairs_fit, as rows_fit) */
-		uint64_t c1,
-			c0 = pairs_costs(row, ra, wa, rstep, len, kind, &c1);
+		uint64_t c1, r0, r1,
+			c0 = pairs_costs(row, ra, wa, rstep, len, kind, &c1,
+					 &r0, &r1);
 
 		return (uint32_t)pairs_fit(hw, w, wa, wstep, len, count, c0,
 					   c1);
@@ -908,8 +911,8 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 	const int64_t step = rstep, size = (int64_t)hw->vram_size;
 	int64_t ra = raddr, wa = waddr;
 	int64_t last = count ? (int64_t)(count - 1) * step : 0;
-	uint64_t c0, c1, n, cost;
-	uint32_t row, done = 0, quiet = 0;
+	uint64_t c0, c1, r0, r1, n, cw;
+	uint32_t done = 0, quiet = 0;
 
 	if (!hw->lazy || !w->open || hw->vram_hook || !len || count < 2 ||
 	    wstep != step || step % RDC_DRAM_ROW_BYTES ||
@@ -918,31 +921,43 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 	    RDC_MAX(wa, wa + last) + len > size)
 		return rdc_port_window_pairs(hw, w, raddr, waddr, len, rstep,
 					     wstep, count, kind);
-	c0 = pairs_costs(w->row, ra, wa, step, len, kind, &c1);
+	c0 = pairs_costs(w->row, ra, wa, step, len, kind, &c1, &r0, &r1);
+	cw = c1 - r1;
 	for (;;) {
 		n = pairs_fit(hw, w, wa, step, len, count - done, c0, c1);
 		done += (uint32_t)n;
 		ra += (int64_t)n * step;
 		wa += (int64_t)n * step;
-		/* the pair the line start falls in: its read, as cross does */
-		if (done == count || !window_still_goes_on(hw, w, &quiet) ||
-		    !span_through(hw, w, (uint64_t)ra, (uint64_t)ra + len,
-				  RDC_BUS_READ, RDC_NEVER, RDC_PARTED_RUN))
+		/*
+		 * The pair the line start falls in: its read, as cross does
+		 * (whole where it fits), from the row the pair before left
+		 * unless it is the first.
+		 */
+		if (n)
+			r0 = r1;
+		if (done == count || !window_still_goes_on(hw, w, &quiet))
 			return done;
-		/* its write: whole where it fits, else across the event */
-		row = w->row;
-		cost = rdc_bus_cost(&row, (uint64_t)wa, len, kind,
-				    rdc_bus_bursts((uint64_t)wa, len));
-		if (w->t + cost <= w->lim) {
-			w->t += cost;
-			w->row = row;
+		if (w->t + r0 <= w->lim) {
+			w->t += r0;
+			w->row = (uint32_t)(((uint64_t)ra + len - 1) /
+					    RDC_DRAM_ROW_BYTES);
+		} else if (!span_through(hw, w, (uint64_t)ra,
+					 (uint64_t)ra + len, RDC_BUS_READ, r0,
+					 RDC_PARTED_RUN)) {
+			return done;
+		}
+		/* its write, from the read's row: whole where it fits */
+		if (w->t + cw <= w->lim) {
+			w->t += cw;
+			w->row = (uint32_t)(((uint64_t)wa + len - 1) /
+					    RDC_DRAM_ROW_BYTES);
 			rdc_scan_window_hit(hw, w, (uint64_t)wa,
 					    (uint64_t)wa + len);
 		} else if (!window_still_goes_on(hw, w, &quiet)) {
 			w->parted = RDC_PARTED_READ;
 			return done;
 		} else if (!span_through(hw, w, (uint64_t)wa,
-					 (uint64_t)wa + len, kind, cost,
+					 (uint64_t)wa + len, kind, cw,
 					 RDC_PARTED_WRITE)) {
 			return done;
 		}
@@ -953,6 +968,7 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 			return done;
 		/* the row the write leaves open is its own: c1 from here */
 		c0 = c1;
+		r0 = r1;
 	}
 }
 
