@@ -1000,11 +1000,32 @@ static inline void crtc_step_past(struct rdc_hw *hw, uint32_t n, uint64_t when)
 		hw->now = when;
 }
 
+/*
+ * rdc_crtc_quiet_line's fetch where crtc_fetch has more to do than read
+ * the line (the ARGB8888 cursor's row, a frame converted at its fetch),
+ * and its put-off line where the frame is kept: calls out of line, made
+ * last, so that the common line start saves no registers.
+ */
+static rdc_noinline bool quiet_fetch(struct rdc_hw *hw, uint32_t n,
+				     uint64_t when, uint64_t end)
+{
+	crtc_fetch(hw, n, when, false);
+	return hw->crtc.fetch_end != end;
+}
+
+static rdc_noinline bool quiet_defer(struct rdc_hw *hw, uint32_t n,
+				     bool fetched)
+{
+	scan_defer(hw, n);
+	return fetched;
+}
+
 bool rdc_crtc_quiet_line(struct rdc_hw *hw)
 {
 	struct rdc_crtc *c = &hw->crtc;
-	uint32_t n = c->next_line;
-	uint64_t when = c->next_line_time, end = c->fetch_end;
+	uint32_t n = c->next_line, bytes;
+	uint64_t when = c->next_line_time, end = c->fetch_end, addr;
+	bool fetched = false;
 
 	/*
 	 * rdc_crtc_catch_up's loop for one line start with nothing but the
@@ -1015,8 +1036,18 @@ bool rdc_crtc_quiet_line(struct rdc_hw *hw)
 	crtc_step_past(hw, n, when);
 	if (n >= c->cur.v_display)
 		return false;
-	crtc_fetch(hw, n, when, false);
-	return c->fetch_end != end;
+	if (!hw->lazy || cursor_argb(hw))
+		return quiet_fetch(hw, n, when, end);
+	/* crtc_fetch with no cursor row, the line put off */
+	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
+		c->fetch_end =
+			RDC_MAX(when, end) +
+			rdc_bus_read_cost(&hw->bus.open_row, addr, bytes);
+		fetched = c->fetch_end != end;
+	}
+	if (hw->frame_ok[hw->frame_back])
+		return quiet_defer(hw, n, fetched);
+	return fetched;
 }
 
 void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
