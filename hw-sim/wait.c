@@ -15,7 +15,7 @@
  * the CRTC, then the value) without its dispatch; a traced chip reads it
  * through the register file, so that the trace still shows the read.
  */
-static uint32_t cond_read(struct rdc_hw *hw, uint32_t reg)
+static rdc_always_inline uint32_t cond_read(struct rdc_hw *hw, uint32_t reg)
 {
 	if (reg != RDC_REG_FIFO_FREE || hw->trace_fn)
 		return rdc_hw_read(hw, reg);
@@ -24,7 +24,13 @@ static uint32_t cond_read(struct rdc_hw *hw, uint32_t reg)
 	return RDC_FIFO_DEPTH - hw->fifo_count;
 }
 
-bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c)
+/*
+ * Inline in the wait's loop, which checks its terms between every two
+ * slices of running: a FIFO feed's wait checks as often as the DP runs
+ * a command.
+ */
+static rdc_always_inline bool cond_holds(struct rdc_hw *hw,
+					 const struct rdc_wait_cond *c)
 {
 	uint32_t v;
 
@@ -43,13 +49,18 @@ bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c)
 	}
 }
 
+bool rdc_hw_cond_holds(struct rdc_hw *hw, const struct rdc_wait_cond *c)
+{
+	return cond_holds(hw, c);
+}
+
 /*
  * STATUS's DP_HALTED bit, read as the register file would (a catch-up of
  * the CRTC, then the bit) without working out the beam position for the
  * rest of the register; a traced chip reads the register, so that the
  * trace still shows the read.
  */
-static bool dp_halted(struct rdc_hw *hw)
+static rdc_always_inline bool dp_halted(struct rdc_hw *hw)
 {
 	if (hw->trace_fn)
 		return rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_DP_HALTED;
@@ -58,11 +69,11 @@ static bool dp_halted(struct rdc_hw *hw)
 	return hw->dp_status & RDC_STATUS_DP_HALTED;
 }
 
-enum rdc_hw_wait_result rdc_hw_wait_check(struct rdc_hw *hw,
-					  const struct rdc_hw_wait *w)
+static rdc_always_inline enum rdc_hw_wait_result
+wait_check(struct rdc_hw *hw, const struct rdc_hw_wait *w)
 {
 	for (unsigned int i = 0; i < RDC_WAIT_TEST_TERMS; i++)
-		if (rdc_hw_cond_holds(hw, &w->term[i]))
+		if (cond_holds(hw, &w->term[i]))
 			return RDC_HW_WAIT_DONE;
 	/*
 	 * STATUS reflects the DP as of its last run: after a RESUME it
@@ -73,6 +84,12 @@ enum rdc_hw_wait_result rdc_hw_wait_check(struct rdc_hw *hw,
 	if (hw->now - w->start >= w->budget)
 		return RDC_HW_WAIT_TIMEOUT;
 	return RDC_HW_WAIT_MORE;
+}
+
+enum rdc_hw_wait_result rdc_hw_wait_check(struct rdc_hw *hw,
+					  const struct rdc_hw_wait *w)
+{
+	return wait_check(hw, w);
 }
 
 void rdc_hw_wait_begin(struct rdc_hw *hw, struct rdc_hw_wait *w)
@@ -88,7 +105,7 @@ enum rdc_hw_wait_result rdc_hw_wait_run(struct rdc_hw *hw,
 
 	for (;;) {
 		uint64_t before = hw->now;
-		enum rdc_hw_wait_result res = rdc_hw_wait_check(hw, w);
+		enum rdc_hw_wait_result res = wait_check(hw, w);
 
 		if (res != RDC_HW_WAIT_MORE)
 			return res;
