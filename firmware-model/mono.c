@@ -116,6 +116,32 @@ static const mono_u64x2 mono_masks[16] = {
 	MONO_QUAD(12), MONO_QUAD(13), MONO_QUAD(14), MONO_QUAD(15),
 };
 
+/*
+ * A whole byte's two masks side by side, for byte_masks32 (8 KiB, read
+ * only): the byte, shifted, finds both, where its nibbles would need a
+ * mask and a shift each.
+ */
+#define MONO_OCT(u) \
+	{ \
+		MONO_QUAD((u) >> 4), MONO_QUAD((u)&15) \
+	}
+#define MONO_OCTS(h) \
+	MONO_OCT(16 * (h) + 0), MONO_OCT(16 * (h) + 1), \
+		MONO_OCT(16 * (h) + 2), MONO_OCT(16 * (h) + 3), \
+		MONO_OCT(16 * (h) + 4), MONO_OCT(16 * (h) + 5), \
+		MONO_OCT(16 * (h) + 6), MONO_OCT(16 * (h) + 7), \
+		MONO_OCT(16 * (h) + 8), MONO_OCT(16 * (h) + 9), \
+		MONO_OCT(16 * (h) + 10), MONO_OCT(16 * (h) + 11), \
+		MONO_OCT(16 * (h) + 12), MONO_OCT(16 * (h) + 13), \
+		MONO_OCT(16 * (h) + 14), MONO_OCT(16 * (h) + 15)
+
+static const mono_u64x2 mono_octs[256][2] = {
+	MONO_OCTS(0),  MONO_OCTS(1),  MONO_OCTS(2),  MONO_OCTS(3),
+	MONO_OCTS(4),  MONO_OCTS(5),  MONO_OCTS(6),  MONO_OCTS(7),
+	MONO_OCTS(8),  MONO_OCTS(9),  MONO_OCTS(10), MONO_OCTS(11),
+	MONO_OCTS(12), MONO_OCTS(13), MONO_OCTS(14), MONO_OCTS(15),
+};
+
 struct mono_quads {
 	mono_u64x2 bg, diff; /* BG in both halves; FG ^ BG */
 	mono_u64x2 quad[16]; /* quads_table's */
@@ -154,19 +180,16 @@ static inline void byte_write32(uint8_t *q, const struct mono_quads *t,
 }
 
 /*
- * byte_write32 from the masks, for a glyph with no table, each mask
- * found by byte offset as byte_write32 finds its group; bits 0-7 of
- * `bits` are the byte, the bits above them ignored.
+ * byte_write32 from the masks, for a glyph with no table, both masks
+ * found by the byte; bits 0-7 of `bits` are the byte, the bits above
+ * them ignored.
  */
 static rdc_always_inline void
 byte_masks32(uint8_t *q, const struct mono_quads *t, uint32_t bits)
 {
-	const uint8_t *m = (const uint8_t *)mono_masks;
-	const mono_u64x2 l =
-		t->bg ^ (t->diff & *(const mono_u64x2 *)(m + (bits & 0xf0)));
-	const mono_u64x2 r =
-		t->bg ^
-		(t->diff & *(const mono_u64x2 *)(m + (bits & 0x0f) * 16));
+	const mono_u64x2 *m = mono_octs[bits & 0xff];
+	const mono_u64x2 l = t->bg ^ (t->diff & m[0]);
+	const mono_u64x2 r = t->bg ^ (t->diff & m[1]);
 
 	rdc_memcpy(q, &l, 16);
 	rdc_memcpy(q + 16, &r, 16);
