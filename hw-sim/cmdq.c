@@ -150,8 +150,12 @@ static inline void words_copy(uint32_t *d, const uint32_t *s, uint32_t n)
 		*d = *s;
 }
 
-/* Take n words, 1 <= n <= fifo_count, whose fetch is charged. */
-static uint32_t fifo_take(struct rdc_hw *hw, uint32_t *dst, uint32_t n)
+/*
+ * Take n words, 1 <= n <= fifo_count, whose fetch is charged.  Inline:
+ * a whole command's pop is one for every command the DP runs.
+ */
+static rdc_always_inline uint32_t fifo_take(struct rdc_hw *hw, uint32_t *dst,
+					    uint32_t n)
 {
 	uint32_t before = hw->fifo_count, i, h;
 
