@@ -526,6 +526,16 @@ static uint32_t reg_read(struct rdc_hw *hw, uint32_t reg)
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t *p, x, y, v;
 
+	/*
+	 * FIFO_FREE, which a host feeding the FIFO reads before every
+	 * push: the catch-up only where a scanout event is due (as the
+	 * call would find), and no dispatch.
+	 */
+	if (reg == RDC_REG_FIFO_FREE) {
+		if (rdc_crtc_due(hw, hw->now))
+			rdc_crtc_catch_up(hw, hw->now);
+		return RDC_FIFO_DEPTH - hw->fifo_count;
+	}
 	rdc_crtc_catch_up(hw, hw->now);
 	if (timing_reg(&c->shadow, reg, &p))
 		return *p;
