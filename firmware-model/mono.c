@@ -239,9 +239,18 @@ static inline void mono8_rows32(uint8_t *q, uint32_t stride,
 	uint32_t k = 0;
 
 	/*
-	 * Four rows a pass, a glyph's sixteen in four; the byte first in
-	 * its word (a glyph of up to 8 pixels, unclipped) needs no shift.
+	 * The byte first in its word (a glyph of up to 8 pixels,
+	 * unclipped) needs no shift.  A glyph's sixteen rows of a word
+	 * each (the console's MONO glyph, one a command) are written
+	 * unrolled, their words at fixed offsets, with no loop to keep;
+	 * other rows four a pass.
 	 */
+	if (!sh && wpr == 1 && rows == 16) {
+#pragma GCC unroll 16
+		for (k = 0; k < 16; k++)
+			byte_masks32(q + k * stride, t, d[k]);
+		return;
+	}
 	if (!sh) {
 		for (; k + 4 <= rows; k += 4, q += 4 * stride, d += 4 * wpr) {
 			byte_masks32(q, t, d[0]);
