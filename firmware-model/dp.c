@@ -91,8 +91,11 @@ static bool wh_ok(uint32_t w)
 	return RDC_W(w) <= RDC_SIZE_MAX && RDC_H(w) <= RDC_SIZE_MAX;
 }
 
-/* The command is over: account for it and return to idle. */
-static void cmd_done(struct rdc_dp *dp)
+/*
+ * The command is over: account for it and return to idle.  Inline: every
+ * command that runs ends here.
+ */
+static rdc_always_inline void cmd_done(struct rdc_dp *dp)
 {
 	struct rdc_hw *hw = dp->hw;
 	uint64_t cycles = hw->now - dp->cmd_start;
