@@ -342,17 +342,16 @@ static void tp_trace_lines(void *ctx, uint64_t time, unsigned int event,
  * so that frame starts, the vblank and the blank lines after it fall
  * inside DP accesses: the same VRAM, time, stalls, open row and frame.
  */
-static void test_quiet_lines_match(void **state)
+static void quiet_lines(struct tp_pair *p, uint32_t seed, uint32_t stride)
 {
-	struct tp_pair *p = *state;
 	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
-	uint32_t seed = 0x9a1e7u, round, i, k, g[4 + 16];
+	uint32_t round, i, k, g[4 + 16];
 	uint64_t lines = 0, frames0 = a->crtc.frame_count;
 
 	p->c[1]->dp.ref_paths = false;
 	rdc_hw_set_trace(b, tp_trace_lines, &lines);
 	for (round = 0; round < 64; round++) {
-		TP_CMD(p, RDC_OP_SET_DST, 0, TP_W * 4, RDC_WH(TP_W, TP_H),
+		TP_CMD(p, RDC_OP_SET_DST, 0, stride, RDC_WH(TP_W, TP_H),
 		       RDC_FMT_XRGB8888);
 		TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(0, 0), RDC_XY(TP_W, TP_H));
 		TP_CMD(p, RDC_OP_SET_ROP,
@@ -395,6 +394,27 @@ static void test_quiet_lines_match(void **state)
 	assert_true(a->crtc.frame_count - frames0 >= 10);
 	assert_true(lines > 2000); /* the reference saw them all */
 	tp_assert_raced(p);
+}
+
+static void test_quiet_lines_match(void **state)
+{
+	quiet_lines(*state, 0x9a1e7u, TP_W * 4);
+}
+
+/*
+ * The same with scanout on demand and no frame consumer, drawing rows a
+ * DRAM row apart: the lines wait unconverted, so a fill's rows go on
+ * through runs of quiet line starts in one call
+ * (rdc_port_window_rows_through).
+ */
+static void test_quiet_lines_lazy_match(void **state)
+{
+	struct tp_pair *p = *state;
+
+	rdc_hw_set_on_demand(&p->c[0]->hw, true);
+	rdc_hw_set_on_demand(&p->c[1]->hw, true);
+	assert_true(p->c[0]->hw.lazy && p->c[1]->hw.lazy);
+	quiet_lines(p, 0x1a2e7u, RDC_DRAM_ROW_BYTES);
 }
 
 static void test_blits_match(void **state)
@@ -1258,6 +1278,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(test_port_window_match,
 						tp_setup, tp_teardown),
 		cmocka_unit_test_setup_teardown(test_quiet_lines_match,
+						tp_setup, tp_teardown),
+		cmocka_unit_test_setup_teardown(test_quiet_lines_lazy_match,
 						tp_setup, tp_teardown),
 		cmocka_unit_test_setup_teardown(test_port_window_cross_match,
 						tp_setup, tp_teardown),
