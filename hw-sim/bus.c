@@ -1016,7 +1016,7 @@ void rdc_port_window_close(struct rdc_hw *hw, const struct rdc_port_window *w)
 		rdc_scan_drop_all(hw);
 }
 
-void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles)
+void rdc_port_compute_slow(struct rdc_hw *hw, uint32_t cycles)
 {
 	rdc_port_poll(hw);
 	rdc_hw_idle_to(hw, hw->now + cycles);

@@ -428,8 +428,26 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 				       int64_t wstep, uint32_t count,
 				       unsigned int kind);
 
-/* Charge `cycles` of DP-internal work (decode, setup); no bus use. */
-void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles);
+/*
+ * Charge `cycles` of DP-internal work (decode, setup); no bus use.
+ * Inline because the DP charges a decode for every command: with no poll
+ * hook and no scanout event due by the end, time just moves on (as
+ * rdc_hw_idle_to would, rdc_crtc_due false); else the call that polls
+ * and catches scanout up.
+ */
+void rdc_port_compute_slow(struct rdc_hw *hw, uint32_t cycles);
+
+static inline void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles)
+{
+	uint64_t t = hw->now + cycles;
+
+	if (hw->poll_fn || (hw->crtc.running && (hw->crtc.next_line_time <= t ||
+						 hw->crtc.lpen_time <= t))) {
+		rdc_port_compute_slow(hw, cycles);
+		return;
+	}
+	hw->now = t;
+}
 
 /* Command sources, in the order the DP takes a new command from them. */
 #define RDC_SRC_FIFO 0u
