@@ -389,20 +389,13 @@ uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 	return hw->vram;
 }
 
-void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w)
+void rdc_port_window_sync(struct rdc_hw *hw)
 {
 	struct rdc_crtc *c = &hw->crtc;
 
 	rdc_port_poll(hw);
 	if (c->running && c->next_line_time <= hw->now)
 		rdc_crtc_catch_up(hw, hw->now);
-	w->vram = hw->vram;
-	w->t = hw->now;
-	w->row = hw->bus.open_row;
-	w->lim = c->running ? c->next_line_time : RDC_NEVER;
-	w->open = w->t >= c->fetch_end;
-	w->scan_hit = false;
-	w->parted = 0;
 }
 
 bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,

@@ -330,7 +330,29 @@ struct rdc_port_window {
 #define RDC_PARTED_READ	 2u /* a pair's read charged, its write not */
 #define RDC_PARTED_WRITE 3u /* a pair's read charged, its write to part */
 
-void rdc_port_window_open(struct rdc_hw *hw, struct rdc_port_window *w);
+/*
+ * rdc_port_window_open is inline, as the DP opens a window for every
+ * glyph: the call (rdc_port_window_sync: the poll, scanout brought up
+ * to hw->now) only with a poll hook or a line start due.
+ */
+void rdc_port_window_sync(struct rdc_hw *hw);
+
+static inline void rdc_port_window_open(struct rdc_hw *hw,
+					struct rdc_port_window *w)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+
+	if (hw->poll_fn || (c->running && c->next_line_time <= hw->now))
+		rdc_port_window_sync(hw);
+	w->vram = hw->vram;
+	w->t = hw->now;
+	w->row = hw->bus.open_row;
+	w->lim = c->running ? c->next_line_time : RDC_NEVER;
+	w->open = w->t >= c->fetch_end;
+	w->scan_hit = false;
+	w->parted = 0;
+}
+
 bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
 			    const struct rdc_port_run *r, uint32_t stride,
 			    unsigned int kind);
