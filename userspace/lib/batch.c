@@ -308,11 +308,29 @@ int rdc_batch_blit(rdc_batch *b, int sx, int sy, int dx, int dy, uint32_t w,
 			  RDC_WH(w, h), 0);
 }
 
+/* Rows of 8 pixels or fewer, a byte each, into a word each. */
+static rdc_always_inline void mono8_rows(uint32_t *p, const uint8_t *bits,
+					 size_t h)
+{
+	size_t r = 0;
+
+	/* 16 rows at a time through a copy the stores cannot alias:
+	 * the compiler widens them 4 or 8 at a time */
+	for (; r + 16 <= h; r += 16, p += 16) {
+		uint8_t rows[16];
+
+		memcpy(rows, bits + r, sizeof(rows));
+		for (size_t k = 0; k < 16; k++)
+			p[k] = rows[k];
+	}
+	for (; r < h; r++)
+		*p++ = bits[r];
+}
+
 /*
  * MONO, with fg and bg ahead of the rows when `colors` is given.  Inline
  * in both encoders: each knows whether colours come, so the argument
- * count and the tests on `colors` fold away, and a glyph (a console's
- * every character) pays for one call, not two.
+ * count and the tests on `colors` fold away.
  */
 static rdc_always_inline int batch_mono(rdc_batch *b, int x, int y, uint32_t w,
 					uint32_t h, const uint8_t *bits,
@@ -343,19 +361,7 @@ static rdc_always_inline int batch_mono(rdc_batch *b, int x, int y, uint32_t w,
 	}
 	p += args;
 	if (row_bytes == 1) { /* 8-pixel glyphs, the console's case */
-		size_t r = 0;
-
-		/* 16 rows at a time through a copy the stores cannot alias:
-		 * the compiler widens them 4 or 8 at a time */
-		for (; r + 16 <= h; r += 16, p += 16) {
-			uint8_t rows[16];
-
-			memcpy(rows, bits + r, sizeof(rows));
-			for (size_t k = 0; k < 16; k++)
-				p[k] = rows[k];
-		}
-		for (; r < h; r++)
-			*p++ = bits[r];
+		mono8_rows(p, bits, h);
 		return 0;
 	}
 	for (size_t r = 0; r < h; r++) {
@@ -376,13 +382,46 @@ int rdc_batch_mono(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
 	return batch_mono(b, x, y, w, h, bits, transparent, NULL);
 }
 
-int rdc_batch_mono_colors(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
-			  const uint8_t *bits, uint32_t fg, uint32_t bg,
-			  int transparent)
+static rdc_noinline int batch_mono_colors(rdc_batch *b, int x, int y,
+					  uint32_t w, uint32_t h,
+					  const uint8_t *bits, uint32_t fg,
+					  uint32_t bg, int transparent)
 {
 	const uint32_t colors[2] = { fg, bg };
 
 	return batch_mono(b, x, y, w, h, bits, transparent, colors);
+}
+
+int rdc_batch_mono_colors(rdc_batch *b, int x, int y, uint32_t w, uint32_t h,
+			  const uint8_t *bits, uint32_t fg, uint32_t bg,
+			  int transparent)
+{
+	size_t n = rdc_cmd_data_at(RDC_OP_MONO, RDC_MONO_COLORS) + h;
+	uint32_t *p;
+
+	/*
+	 * A glyph of 16 rows up to 8 pixels wide (a console's 8x16 cell,
+	 * one a character) with room for it and no SET_FG to take in is
+	 * written here with no call, nothing kept across one, and its rows
+	 * in one widened copy; anything else goes the whole way, a call
+	 * that may grow the batch.  Same words either way.
+	 */
+	if (!b || !bits || w - 1 >= 8 || h != 16 || n + 1 > b->cap - b->n ||
+	    (b->fg_end == b->n && b->n >= 2))
+		return batch_mono_colors(b, x, y, w, h, bits, fg, bg,
+					 transparent);
+	p = b->w + b->n;
+	b->n += n + 1;
+	p[0] = RDC_CMD(RDC_OP_MONO,
+		       (transparent ? RDC_MONO_TRANSPARENT : 0) |
+			       RDC_MONO_COLORS,
+		       (uint32_t)n);
+	p[1] = RDC_XY(x, y);
+	p[2] = RDC_WH(w, h);
+	p[3] = fg;
+	p[4] = bg;
+	mono8_rows(p + 5, bits, h);
+	return 0;
 }
 
 int rdc_batch_text(rdc_batch *b, int x, int y, const char *s, size_t len,
