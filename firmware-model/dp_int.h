@@ -14,8 +14,35 @@
 
 #include "dp.h"
 
-/* The clip rectangle intersected with the destination surface. */
-struct rdc_rect rdc_dp_eff_clip(const struct rdc_dp *dp);
+/*
+ * The clip rectangle intersected with the destination surface, its
+ * bounds only: where that is empty, x1 < x0 or y1 < y0 may hold.  For
+ * callers that only bound a shape by it (a line, a glyph: every command
+ * asks, so inline), an inverted rectangle bounds it to nothing as an
+ * empty one does.
+ */
+static inline struct rdc_rect rdc_dp_clip_bounds(const struct rdc_dp *dp)
+{
+	struct rdc_rect r = dp->st.clip;
+
+	r.x0 = RDC_MAX(r.x0, 0);
+	r.y0 = RDC_MAX(r.y0, 0);
+	r.x1 = RDC_MIN(r.x1, (int32_t)dp->st.dst.width);
+	r.y1 = RDC_MIN(r.y1, (int32_t)dp->st.dst.height);
+	return r;
+}
+
+/* The same, empty as x1 == x0 or y1 == y0: x0 <= x1 and y0 <= y1. */
+static inline struct rdc_rect rdc_dp_eff_clip(const struct rdc_dp *dp)
+{
+	struct rdc_rect r = rdc_dp_clip_bounds(dp);
+
+	if (r.x1 < r.x0)
+		r.x1 = r.x0;
+	if (r.y1 < r.y0)
+		r.y1 = r.y0;
+	return r;
+}
 
 void rdc_dp_pixel(struct rdc_dp *dp, int32_t x, int32_t y);
 /*

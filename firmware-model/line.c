@@ -928,19 +928,7 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		       int32_t y1, int64_t first, int64_t last)
 {
-	/*
-	 * rdc_dp_eff_clip's bounds without the call (once a line): where
-	 * its fix-up would empty the clip these are empty too, and the
-	 * line returns before using them.
-	 */
-	const struct rdc_surface *s = &dp->st.dst;
-	struct rdc_rect c = {
-		.x0 = RDC_MAX(dp->st.clip.x0, 0),
-		.y0 = RDC_MAX(dp->st.clip.y0, 0),
-		.x1 = RDC_MIN(dp->st.clip.x1, (int32_t)s->width),
-		.y1 = RDC_MIN(dp->st.clip.y1, (int32_t)s->height),
-	};
-	unsigned int bpp = rdc_format_bpp(s->format);
+	struct rdc_rect c = rdc_dp_clip_bounds(dp); /* empty: returns below */
 	int32_t adx = x1 > x0 ? x1 - x0 : x0 - x1;
 	int32_t ady = y1 > y0 ? y1 - y0 : y0 - y1;
 	bool xmajor = adx >= ady && adx > 0;
@@ -1007,9 +995,7 @@ void rdc_dp_line_steps(struct rdc_dp *dp, int32_t x0, int32_t y0, int32_t x1,
 		rem = 0;
 	}
 	run = ilo;
-	/* dp_runs_ok, inline: the same test without a call a line */
-	if (!dp->ref_paths && (bpp == 8 || bpp == 16 || bpp == 32) &&
-	    ((s->base | s->stride) & (bpp / 8 - 1)) == 0) {
+	if (dp_runs_ok(dp)) {
 		line_queue(dp, &c, xmajor, u0, v0, sv, n, m, ilo, ihi, j, rem);
 		return;
 	}

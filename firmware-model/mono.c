@@ -465,20 +465,12 @@ static void host_rows_copy(struct rdc_dp *dp, int32_t x, int32_t y, int64_t xa,
 static void rows_draw(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
 		      uint32_t h, const struct row_src *rs)
 {
-	/*
-	 * rdc_dp_eff_clip's bounds, without the call (a glyph's command
-	 * is short): where its clip is empty these are too (xa >= xb or
-	 * ya >= yb), and nothing is drawn, as from its emptied clip.
-	 */
-	const struct rdc_rect *c = &dp->st.clip;
-	int64_t xa = RDC_MAX((int64_t)x, (int64_t)RDC_MAX(c->x0, 0));
-	int64_t xb =
-		RDC_MIN((int64_t)x + w, /* exclusive */
-			(int64_t)RDC_MIN(c->x1, (int32_t)dp->st.dst.width));
-	int64_t ya = RDC_MAX((int64_t)y, (int64_t)RDC_MAX(c->y0, 0));
-	int64_t yb =
-		RDC_MIN((int64_t)y + h,
-			(int64_t)RDC_MIN(c->y1, (int32_t)dp->st.dst.height));
+	/* where the clip is empty, xa >= xb or ya >= yb: nothing drawn */
+	struct rdc_rect c = rdc_dp_clip_bounds(dp);
+	int64_t xa = RDC_MAX((int64_t)x, (int64_t)c.x0);
+	int64_t xb = RDC_MIN((int64_t)x + w, (int64_t)c.x1); /* exclusive */
+	int64_t ya = RDC_MAX((int64_t)y, (int64_t)c.y0);
+	int64_t yb = RDC_MIN((int64_t)y + h, (int64_t)c.y1);
 	int64_t row, col;
 
 	if (rs->kind != SRC_HOST && !rs->transparent && !dp->ref_paths &&

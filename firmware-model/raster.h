@@ -137,8 +137,20 @@ static inline uint32_t run_store32(uint8_t *q, const struct rdc_port_run *r,
 	return len / 4;
 }
 
-/* DST formats the run queue takes (see span.c). */
-bool dp_runs_ok(const struct rdc_dp *dp);
+/*
+ * DST formats the run queue takes (see span.c): whole bytes,
+ * pixel-aligned (a pixel never straddles a burst, so a one-pixel column
+ * is a one-pixel span).  Inline: every line asks.
+ */
+static inline bool dp_runs_ok(const struct rdc_dp *dp)
+{
+	const struct rdc_surface *s = &dp->st.dst;
+	unsigned int bpp = rdc_format_bpp(s->format);
+
+	/* bpp / 8 a power of two: a mask, not a division (every command) */
+	return !dp->ref_paths && (bpp == 8 || bpp == 16 || bpp == 32) &&
+	       ((s->base | s->stride) & (bpp / 8 - 1)) == 0;
+}
 /* The pixels of run r at p with colour fg through the ROP. */
 void dp_run_write(struct rdc_dp *dp, uint8_t *p, const struct rdc_port_run *r,
 		  uint32_t fg);

@@ -14,21 +14,6 @@
 #define RDC_CORE_INTERNAL /* a source of the core: hw.h, dp.h */
 #include "raster.h"
 
-struct rdc_rect rdc_dp_eff_clip(const struct rdc_dp *dp)
-{
-	struct rdc_rect r = dp->st.clip;
-
-	r.x0 = RDC_MAX(r.x0, 0);
-	r.y0 = RDC_MAX(r.y0, 0);
-	r.x1 = RDC_MIN(r.x1, (int32_t)dp->st.dst.width);
-	r.y1 = RDC_MIN(r.y1, (int32_t)dp->st.dst.height);
-	if (r.x1 < r.x0)
-		r.x1 = r.x0;
-	if (r.y1 < r.y0)
-		r.y1 = r.y0;
-	return r;
-}
-
 /*
  * Write pixels [xa, xa + n) of destination row y, already inside the
  * effective clip.  vals == NULL: every pixel gets `solid`; on != NULL:
@@ -130,19 +115,8 @@ static void span_emit(struct rdc_dp *dp, int32_t y, int32_t xa, uint32_t n,
  * as long as no scanout event falls inside; the run it stops at goes
  * through dp_run_refused.  Each run is charged and written exactly as
  * dp_span_fill / dp_col_fill would, so pixels, cycles and counters are
- * the same.
- * Only for DST formats of whole bytes, pixel-aligned (a pixel never
- * straddles a burst, so a one-pixel column is a one-pixel span).
+ * the same, for the DST formats dp_runs_ok (raster.h) takes.
  */
-bool dp_runs_ok(const struct rdc_dp *dp)
-{
-	const struct rdc_surface *s = &dp->st.dst;
-	unsigned int bpp = rdc_format_bpp(s->format);
-
-	/* bpp / 8 a power of two: a mask, not a division (every command) */
-	return !dp->ref_paths && (bpp == 8 || bpp == 16 || bpp == 32) &&
-	       ((s->base | s->stride) & (bpp / 8 - 1)) == 0;
-}
 
 /* The pixels of run r at p with colour fg through the ROP. */
 void dp_run_write(struct rdc_dp *dp, uint8_t *p, const struct rdc_port_run *r,
