@@ -839,13 +839,12 @@ static rdc_noinline void raster_column(struct rdc_hw *hw)
  * Inline: a quiet line start (rdc_crtc_quiet_line), the DP's most
  * frequent event, is little more than this.
  */
-static rdc_always_inline void crtc_fetch(struct rdc_hw *hw, uint32_t n,
-					 uint64_t when, bool hidden)
+static rdc_always_inline void crtc_read_line(struct rdc_hw *hw, uint32_t n,
+					     uint64_t when)
 {
 	struct rdc_crtc *c = &hw->crtc;
 	uint32_t bytes;
-	uint64_t addr, cursor_addr = 0;
-	bool argb = cursor_argb_row(hw, &c->cur, n, &cursor_addr);
+	uint64_t addr;
 
 	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
 		uint64_t start = RDC_MAX(when, c->fetch_end);
@@ -853,6 +852,16 @@ static rdc_always_inline void crtc_fetch(struct rdc_hw *hw, uint32_t n,
 		c->fetch_end = start + rdc_bus_read_cost(&hw->bus.open_row,
 							 addr, bytes);
 	}
+}
+
+static rdc_always_inline void crtc_fetch(struct rdc_hw *hw, uint32_t n,
+					 uint64_t when, bool hidden)
+{
+	struct rdc_crtc *c = &hw->crtc;
+	uint64_t cursor_addr = 0;
+	bool argb = cursor_argb_row(hw, &c->cur, n, &cursor_addr);
+
+	crtc_read_line(hw, n, when);
 	if (argb)
 		cursor_argb_fetch(hw, when, cursor_addr);
 	if (hidden) {
@@ -1023,9 +1032,9 @@ static rdc_noinline bool quiet_defer(struct rdc_hw *hw, uint32_t n,
 bool rdc_crtc_quiet_line(struct rdc_hw *hw)
 {
 	struct rdc_crtc *c = &hw->crtc;
-	uint32_t n = c->next_line, bytes;
-	uint64_t when = c->next_line_time, end = c->fetch_end, addr;
-	bool fetched = false;
+	uint32_t n = c->next_line;
+	uint64_t when = c->next_line_time, end = c->fetch_end;
+	bool fetched;
 
 	/*
 	 * rdc_crtc_catch_up's loop for one line start with nothing but the
@@ -1039,12 +1048,8 @@ bool rdc_crtc_quiet_line(struct rdc_hw *hw)
 	if (!hw->lazy || cursor_argb(hw))
 		return quiet_fetch(hw, n, when, end);
 	/* crtc_fetch with no cursor row, the line put off */
-	if (line_range(hw, &c->cur, n, &addr, &bytes)) {
-		c->fetch_end =
-			RDC_MAX(when, end) +
-			rdc_bus_read_cost(&hw->bus.open_row, addr, bytes);
-		fetched = c->fetch_end != end;
-	}
+	crtc_read_line(hw, n, when);
+	fetched = c->fetch_end != end;
 	if (hw->frame_ok[hw->frame_back])
 		return quiet_defer(hw, n, fetched);
 	return fetched;
