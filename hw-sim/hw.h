@@ -451,6 +451,17 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 				       unsigned int kind);
 
 /*
+ * Does a scanout event (a line start, a light-pen strobe) fall at or
+ * before t?  If not, rdc_crtc_catch_up(hw, t) does nothing, and callers
+ * on hot paths skip the call.
+ */
+static inline bool rdc_crtc_due(const struct rdc_hw *hw, uint64_t t)
+{
+	return hw->crtc.running &&
+	       (hw->crtc.next_line_time <= t || hw->crtc.lpen_time <= t);
+}
+
+/*
  * Charge `cycles` of DP-internal work (decode, setup); no bus use.
  * Inline because the DP charges a decode for every command: with no poll
  * hook and no scanout event due by the end, time just moves on (as
@@ -463,8 +474,7 @@ static inline void rdc_port_compute(struct rdc_hw *hw, uint32_t cycles)
 {
 	uint64_t t = hw->now + cycles;
 
-	if (hw->poll_fn || (hw->crtc.running && (hw->crtc.next_line_time <= t ||
-						 hw->crtc.lpen_time <= t))) {
+	if (hw->poll_fn || rdc_crtc_due(hw, t)) {
 		rdc_port_compute_slow(hw, cycles);
 		return;
 	}

@@ -107,17 +107,6 @@ void rdc_crtc_reset(struct rdc_hw *hw);
 void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t);
 
 /*
- * Does a scanout event (a line start, a light-pen strobe) fall at or
- * before t?  If not, rdc_crtc_catch_up(hw, t) does nothing, and callers
- * on hot paths skip the call.
- */
-static inline bool rdc_crtc_due(const struct rdc_hw *hw, uint64_t t)
-{
-	return hw->crtc.running &&
-	       (hw->crtc.next_line_time <= t || hw->crtc.lpen_time <= t);
-}
-
-/*
  * Is the next scanout event a line's start that does nothing but fetch
  * (an active line) or nothing at all (a blank line after the vblank's)?
  * Not line 0 (the frame's start), not the vblank's, and no raster list,
