@@ -33,12 +33,12 @@ static void bus_burst(struct rdc_hw *hw, uint64_t *tp, uint64_t a, uint64_t n,
 			hw->perf.stall += c->fetch_end - t;
 			t = c->fetch_end;
 		}
-		if (c->running && c->next_line_time <= t) {
+		if (c->next_line_time <= t) {
 			rdc_crtc_catch_up(hw, t);
 			continue;
 		}
 		cost = rdc_bus_cost(&row, a, n, kind, 1);
-		ev = c->running ? c->next_line_time : RDC_NEVER;
+		ev = c->next_line_time;
 		if (ev >= t + cost) {
 			hw->bus.open_row = row;
 			*tp = t + cost;
@@ -69,8 +69,7 @@ static void bus_burst(struct rdc_hw *hw, uint64_t *tp, uint64_t a, uint64_t n,
 static inline bool bus_quiet(const struct rdc_crtc *c, uint64_t t,
 			     uint64_t cost)
 {
-	return t >= c->fetch_end &&
-	       (!c->running || c->next_line_time >= t + cost);
+	return t >= c->fetch_end && c->next_line_time >= t + cost;
 }
 
 void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
@@ -80,7 +79,7 @@ void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 	uint64_t a = addr, end = (uint64_t)addr + len;
 	uint64_t t = hw->now;
 
-	if (c->running && c->next_line_time <= t)
+	if (c->next_line_time <= t)
 		rdc_crtc_catch_up(hw, t);
 	while (a < end) {
 		uint64_t be;
@@ -88,14 +87,13 @@ void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 
 		if (a != addr)
 			k &= ~RDC_BUS_HEAD_PARTIAL;
-		if (t >= c->fetch_end &&
-		    (!c->running || c->next_line_time > t)) {
+		if (t >= c->fetch_end && c->next_line_time > t) {
 			uint32_t row = hw->bus.open_row;
 			uint64_t cost =
 				rdc_bus_cost(&row, a, end - a, k,
 					     rdc_bus_bursts(a, end - a));
 
-			if (!c->running || c->next_line_time >= t + cost) {
+			if (c->next_line_time >= t + cost) {
 				hw->bus.open_row = row;
 				t += cost;
 				break;
@@ -114,8 +112,7 @@ void rdc_bus_charge(struct rdc_hw *hw, uint32_t addr, uint32_t len,
 						  RDC_BUS_BURST_BYTES);
 			if (be != end)
 				kb &= ~RDC_BUS_TAIL_PARTIAL;
-			if (t >= c->fetch_end && c->running &&
-			    c->next_line_time > t) {
+			if (t >= c->fetch_end && c->next_line_time > t) {
 				uint32_t row = hw->bus.open_row;
 				uint64_t cost =
 					rdc_bus_cost(&row, a, be - a, kb, 1);
@@ -191,8 +188,7 @@ static void bus_column(struct rdc_hw *hw, uint32_t addr, uint32_t stride,
 		uint64_t cost, k;
 
 		/* bus_burst's first step, without the call */
-		if (t >= c->fetch_end &&
-		    (!c->running || c->next_line_time > t)) {
+		if (t >= c->fetch_end && c->next_line_time > t) {
 			cost = rdc_bus_cost(&row, a, len, kind, 1);
 			if (!bus_quiet(c, t, cost)) {
 				bus_burst(hw, &t, a, len, kind);
@@ -368,9 +364,9 @@ uint8_t *rdc_port_runs(struct rdc_hw *hw, const struct rdc_port_run *r,
 	rdc_port_poll(hw);
 	t = hw->now;
 	row = hw->bus.open_row;
-	if (c->running && c->next_line_time <= t)
+	if (c->next_line_time <= t)
 		rdc_crtc_catch_up(hw, t);
-	lim = c->running ? c->next_line_time : RDC_NEVER;
+	lim = c->next_line_time;
 	*done = 0;
 	if (t < c->fetch_end)
 		return hw->vram;
@@ -394,7 +390,7 @@ void rdc_port_window_sync(struct rdc_hw *hw)
 	struct rdc_crtc *c = &hw->crtc;
 
 	rdc_port_poll(hw);
-	if (c->running && c->next_line_time <= hw->now)
+	if (c->next_line_time <= hw->now)
 		rdc_crtc_catch_up(hw, hw->now);
 }
 

@@ -1065,11 +1065,11 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t)
 	 * catch-up ends is never seen: skip converting it, so that running
 	 * far ahead costs little more than the bus bookkeeping.
 	 */
-	if (c->running && c->next_line_time <= t && !hw->frame_fn)
+	if (c->next_line_time <= t && !hw->frame_fn)
 		shown_until = crtc_shown_until(hw, t);
 	if (c->lpen_time <= t) /* before the next line start */
 		crtc_lpen_strobe(hw);
-	while (c->running && c->next_line_time <= t) {
+	while (c->next_line_time <= t) {
 		uint32_t n = c->next_line;
 		uint64_t when = c->next_line_time;
 

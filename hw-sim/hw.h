@@ -66,7 +66,12 @@ struct rdc_crtc {
 	/* latched at vblank: CURSOR_CTRL, CURSOR_BASE, CONTROL.GAMMA_EN */
 	uint32_t cur_cursor_ctrl, cur_cursor_base;
 	int cur_gamma;
-	int running;	       /* a mode is in force and scanout is enabled */
+	/*
+	 * A mode is in force and scanout is enabled.  While it is not,
+	 * next_line_time and lpen_time are RDC_NEVER: a test of either
+	 * against a time needs no test of this.
+	 */
+	int running;
 	uint64_t frame_start;  /* time line 0 of this frame starts */
 	uint64_t frame_cycles; /* core cycles a frame lasts */
 	uint32_t next_line;    /* next line whose start is not yet processed */
@@ -342,12 +347,12 @@ static inline void rdc_port_window_open(struct rdc_hw *hw,
 {
 	const struct rdc_crtc *c = &hw->crtc;
 
-	if (hw->poll_fn || (c->running && c->next_line_time <= hw->now))
+	if (hw->poll_fn || c->next_line_time <= hw->now)
 		rdc_port_window_sync(hw);
 	w->vram = hw->vram;
 	w->t = hw->now;
 	w->row = hw->bus.open_row;
-	w->lim = c->running ? c->next_line_time : RDC_NEVER;
+	w->lim = c->next_line_time;
 	w->open = w->t >= c->fetch_end;
 	w->scan_hit = false;
 	w->parted = 0;
@@ -457,8 +462,7 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
  */
 static inline bool rdc_crtc_due(const struct rdc_hw *hw, uint64_t t)
 {
-	return hw->crtc.running &&
-	       (hw->crtc.next_line_time <= t || hw->crtc.lpen_time <= t);
+	return hw->crtc.next_line_time <= t || hw->crtc.lpen_time <= t;
 }
 
 /*

@@ -110,7 +110,8 @@ void rdc_crtc_catch_up(struct rdc_hw *hw, uint64_t t);
  * Is the next scanout event a line's start that does nothing but fetch
  * (an active line) or nothing at all (a blank line after the vblank's)?
  * Not line 0 (the frame's start), not the vblank's, and no raster list,
- * line compare, light pen or trace.  Then rdc_crtc_quiet_line takes it,
+ * line compare, light pen or trace (a stopped CRTC's times are both
+ * RDC_NEVER: not before each other).  Then rdc_crtc_quiet_line takes it,
  * as rdc_crtc_catch_up to its time would, and says whether it opened a
  * fetch window.
  */
@@ -119,10 +120,9 @@ static inline bool rdc_crtc_next_quiet(const struct rdc_hw *hw)
 	const struct rdc_crtc *c = &hw->crtc;
 	uint32_t n = c->next_line;
 
-	return c->running && !c->rl_mid && n && n != c->cur.v_display &&
-	       n < c->cur.v_total && c->rl_wait > n && n != c->line_compare &&
-	       n != c->lpen_line && c->lpen_time > c->next_line_time &&
-	       !hw->trace_fn;
+	return !c->rl_mid && n && n != c->cur.v_display && n < c->cur.v_total &&
+	       c->rl_wait > n && n != c->line_compare && n != c->lpen_line &&
+	       c->lpen_time > c->next_line_time && !hw->trace_fn;
 }
 
 /*

@@ -461,6 +461,51 @@ static void test_scanout_off_and_on(void **state)
 			 RDC_IRQ_LINE | RDC_IRQ_VBLANK);
 }
 
+/*
+ * A stopped CRTC has no scanout event to come: its line and strobe times
+ * are RDC_NEVER, which the hot paths' tests of those times rely on
+ * rather than testing `running` too.
+ */
+static void assert_stopped(struct rdc_hw *hw)
+{
+	assert_false(hw->crtc.running);
+	assert_int_equal(hw->crtc.next_line_time, RDC_NEVER);
+	assert_int_equal(hw->crtc.lpen_time, RDC_NEVER);
+	assert_false(rdc_crtc_due(hw, hw->now + 100 * FRAME_CYCLES));
+}
+
+static void test_stopped_has_no_events(void **state)
+{
+	struct fx *f = *state;
+	struct rdc_hw *hw = &f->sim.hw;
+	struct hw_fx fresh;
+
+	/* a chip just made, scanout never on */
+	assert_int_equal(hw_fx_init(&fresh, VRAM_SIZE, FRAME_CAP), 0);
+	assert_stopped(&fresh.hw);
+	hw_fx_fini(&fresh);
+
+	/* running mid-line, a light pen armed, then scanout off */
+	rdc_hw_write(hw, RDC_REG_LPEN_POS, FIELD_PREP(RDC_LPEN_Y, 7));
+	rdc_hw_write(hw, RDC_REG_LPEN_CTRL, RDC_LPEN_CTRL_EN);
+	rdc_hw_run_until(hw, hw->now + 7 * LINE_CYCLES + 3);
+	assert_true(hw->crtc.running);
+	assert_true(rdc_crtc_due(hw, hw->now + LINE_CYCLES));
+	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
+	assert_stopped(hw);
+	rdc_hw_run_until(hw, hw->now + 3 * FRAME_CYCLES);
+	assert_stopped(hw);
+
+	/* on after a reset with a mode refused: none to fall back on */
+	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
+	rdc_hw_write(hw, RDC_REG_PIXCLK_KHZ, RDC_PIXCLK_MAX_KHZ + 1);
+	rdc_hw_write(hw, RDC_REG_CONTROL,
+		     RDC_CONTROL_DP_EN | RDC_CONTROL_SCANOUT_EN);
+	assert_int_equal(rdc_hw_read(hw, RDC_REG_ERR_CODE), RDC_ERR_MODE);
+	assert_stopped(hw);
+	assert_int_equal(f->frames, 0);
+}
+
 /* ---- run loop with a display processor ----------------------------------
  * The fake DP works in steps of dp_step cycles while it has work, then
  * waits until dp_wake.
@@ -561,6 +606,8 @@ int main(void)
 						setup, teardown),
 		cmocka_unit_test_setup_teardown(test_scanout_off_and_on, setup,
 						teardown),
+		cmocka_unit_test_setup_teardown(test_stopped_has_no_events,
+						setup, teardown),
 		cmocka_unit_test_setup_teardown(test_run_loop, setup, teardown),
 		cmocka_unit_test_setup_teardown(test_run_loop_wakes, setup,
 						teardown),
