@@ -366,7 +366,7 @@ static rdc_always_inline void rows_text32(struct rdc_dp *dp, int32_t x,
 	addr = s->base + (uint32_t)ya * s->stride + (uint32_t)xa * 4;
 	rows = (uint32_t)(yb - ya);
 	r = (uint32_t)(ya - y);
-	rdc_port_window_open(hw, &w);
+	rdc_port_window_open_busy(hw, &w);
 	while (rows) {
 		done = n <= RDC_DP_CHUNK ?
 			       rdc_port_window_rows_all(hw, &w, addr, n * 4,

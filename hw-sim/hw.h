@@ -358,6 +358,28 @@ static inline void rdc_port_window_open(struct rdc_hw *hw,
 	w->parted = 0;
 }
 
+/*
+ * rdc_port_window_open for a caller whose first act in the window is an
+ * access: where a fetch holds the bus now, the window opens at its end,
+ * the wait a stall, as that access's own wait in rdc_bus_charge would be
+ * (the row it finds open is the fetch's either way).  Not with a poll
+ * hook or a VRAM watcher, which the port calls serve.  A command that
+ * begins in a fetch then draws in the window rather than through the
+ * port calls.
+ */
+static inline void rdc_port_window_open_busy(struct rdc_hw *hw,
+					     struct rdc_port_window *w)
+{
+	const struct rdc_crtc *c = &hw->crtc;
+
+	rdc_port_window_open(hw, w);
+	if (w->open || hw->poll_fn || hw->vram_hook)
+		return;
+	hw->perf.stall += c->fetch_end - w->t;
+	w->t = c->fetch_end;
+	w->open = true;
+}
+
 bool rdc_port_window_charge(const struct rdc_hw *hw, struct rdc_port_window *w,
 			    const struct rdc_port_run *r, uint32_t stride,
 			    unsigned int kind);

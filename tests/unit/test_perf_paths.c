@@ -590,6 +590,51 @@ static void test_glyphs_match(void **state)
 }
 
 /*
+ * A console glyph that begins while a line's fetch holds the bus: the
+ * window opens at the fetch's end (rdc_port_window_open_busy), the wait
+ * a stall, against the reference's port calls, which wait in the first
+ * row's charge.  Each round starts a little later around screen line
+ * 16's start, so that glyphs begin before, inside and after its fetch;
+ * on 4096-byte rows, row 5 is in the DRAM row the fetch ends in, and
+ * some glyphs start there.  With scanout converting at the fetch and on
+ * demand.
+ */
+static void test_glyphs_in_fetch_match(void **state)
+{
+	struct tp_pair *p = *state;
+	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
+	uint32_t seed = 0x91f3bu, g[4 + 16], k, lazy;
+	int32_t late;
+
+	for (lazy = 0; lazy < 2; lazy++) {
+		rdc_hw_set_on_demand(a, lazy);
+		rdc_hw_set_on_demand(b, lazy);
+		TP_CMD(p, RDC_OP_SET_DST, 0, 4096, RDC_WH(512, 40),
+		       RDC_FMT_XRGB8888);
+		TP_CMD(p, RDC_OP_SET_CLIP, RDC_XY(0, 0), RDC_XY(512, 40));
+		TP_CMD(p, RDC_OP_SET_ROP, RDC_ROP_COPY);
+		tp_check(p);
+		for (late = -400; late < 200; late += 5) {
+			uint64_t t = rdc_port_next_line(a, 16) + late;
+
+			rdc_hw_run_until(a, RDC_MAX(t, a->now));
+			rdc_hw_run_until(b, a->now);
+			g[0] = RDC_XY(8 * tdp_range(&seed, 0, 63),
+				      tdp_range(&seed, 0, 24));
+			if (late % 2)
+				g[0] = RDC_XY(8 * tdp_range(&seed, 0, 63), 5);
+			g[1] = RDC_WH(8, 16);
+			for (k = 2; k < RDC_ARRAY_SIZE(g); k++)
+				g[k] = tdp_rand(&seed);
+			tp_cmd(p, RDC_OP_MONO, RDC_MONO_COLORS,
+			       RDC_ARRAY_SIZE(g), g);
+			tp_check(p);
+		}
+	}
+	tp_assert_raced(p);
+}
+
+/*
  * Rectangles, circles, ellipses and polygons, whose solid spans and
  * columns are queued; a mono pattern now and then keeps them on the
  * per-span path.
@@ -1269,6 +1314,8 @@ int main(void)
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_glyphs_match, tp_setup,
 						tp_teardown),
+		cmocka_unit_test_setup_teardown(test_glyphs_in_fetch_match,
+						tp_setup, tp_teardown),
 		cmocka_unit_test_setup_teardown(test_shapes_match, tp_setup,
 						tp_teardown),
 		cmocka_unit_test_setup_teardown(test_aa_match, tp_setup,
