@@ -527,8 +527,10 @@ static inline void pairs_scan_hit(const struct rdc_hw *hw,
  * rows_costs and rows_fit for read/write pairs whose rows both move by
  * the same whole number of DRAM rows: c0 the first pair's cost from open
  * row `row` (returned), c1 each other's, and of those the reads' r0 and
- * r1 (a write costs the same in every pair: it follows its own read); of
- * `most` pairs, those that end by the window's limit charged.
+ * r1; of `most` pairs, those that end by the window's limit charged.  A
+ * write costs the same in every pair, as it follows its own read; the
+ * next read keeps the first's offsets, so only its first row miss can
+ * differ (rdc_bus_cost_next_row, for a step of either sign).
  */
 static rdc_always_inline uint64_t pairs_costs(uint32_t row, int64_t ra,
 					      int64_t wa, int64_t step,
@@ -536,17 +538,19 @@ static rdc_always_inline uint64_t pairs_costs(uint32_t row, int64_t ra,
 					      uint64_t *c1, uint64_t *r0,
 					      uint64_t *r1)
 {
-	uint64_t c0;
+	const uint64_t first = (uint64_t)ra / RDC_DRAM_ROW_BYTES;
+	const uint32_t row0 = row;
+	uint64_t cw;
 
 	*r0 = rdc_bus_cost(&row, (uint64_t)ra, len, RDC_BUS_READ,
 			   rdc_bus_bursts((uint64_t)ra, len));
-	c0 = *r0 + rdc_bus_cost(&row, (uint64_t)wa, len, kind,
-				rdc_bus_bursts((uint64_t)wa, len));
-	*r1 = rdc_bus_cost(&row, (uint64_t)(ra + step), len, RDC_BUS_READ,
-			   rdc_bus_bursts((uint64_t)(ra + step), len));
-	*c1 = *r1 + rdc_bus_cost(&row, (uint64_t)(wa + step), len, kind,
-				 rdc_bus_bursts((uint64_t)(wa + step), len));
-	return c0;
+	cw = rdc_bus_cost(&row, (uint64_t)wa, len, kind,
+			  rdc_bus_bursts((uint64_t)wa, len));
+	*r1 = *r0 - (first != row0) * RDC_T_ROW_MISS +
+	      ((uint64_t)(ra + step) / RDC_DRAM_ROW_BYTES != row) *
+		      RDC_T_ROW_MISS;
+	*c1 = *r1 + cw;
+	return *r0 + cw;
 }
 
 static rdc_always_inline uint64_t pairs_fit(const struct rdc_hw *hw,
