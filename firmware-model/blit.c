@@ -281,22 +281,25 @@ static void blit_row_window(struct rdc_dp *dp, struct rdc_port_window *win,
  * n rows of COPY, as blit_bytes moves them, with the ROP's test made once
  * for them all: the rows are most of a blit's time beside memmove's.
  * Out of line, the loop has the callee-saved registers to itself and
- * reloads nothing from the stack around each call.
+ * reloads nothing from the stack around each call.  The source is kept
+ * as its offset from the destination, which memmove returns: one
+ * pointer to carry across the call.
  */
 static rdc_noinline void blit_copies(uint8_t *p, const uint8_t *src,
 				     uint32_t len, int64_t sstep, int64_t dstep,
 				     uint32_t n)
 {
+	int64_t off = src - p;
 	size_t bytes = len;
 
 	rdc_hide_var(bytes);
 	if (!n)
 		return;
 	for (;;) {
-		rdc_memmove(p, src, bytes);
+		p = rdc_memmove(p, p + off, bytes);
 		if (!--n)
 			break;
-		src += sstep;
+		off += sstep - dstep;
 		p += dstep;
 	}
 }
