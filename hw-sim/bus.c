@@ -894,26 +894,18 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 	}
 }
 
-uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
-				       struct rdc_port_window *w,
-				       uint32_t raddr, uint32_t waddr,
-				       uint32_t len, int64_t rstep,
-				       int64_t wstep, uint32_t count,
-				       unsigned int kind)
+/*
+ * rdc_port_window_pairs_through once its tests have passed, inlined
+ * there with the kind a constant: the costs of the spans a line start
+ * falls in lose their switch.
+ */
+static rdc_always_inline uint32_t pairs_through(
+	struct rdc_hw *hw, struct rdc_port_window *w, int64_t ra, int64_t wa,
+	uint32_t len, int64_t step, uint32_t count, unsigned int kind)
 {
-	const int64_t step = rstep, size = (int64_t)hw->vram_size;
-	int64_t ra = raddr, wa = waddr;
-	int64_t last = count ? (int64_t)(count - 1) * step : 0;
 	uint64_t c0, c1, r0, r1, n, cw;
 	uint32_t done = 0, quiet = 0;
 
-	if (!hw->lazy || !w->open || hw->vram_hook || !len || count < 2 ||
-	    wstep != step || step % RDC_DRAM_ROW_BYTES ||
-	    RDC_MIN(ra, ra + last) < 0 || RDC_MIN(wa, wa + last) < 0 ||
-	    RDC_MAX(ra, ra + last) + len > size ||
-	    RDC_MAX(wa, wa + last) + len > size)
-		return rdc_port_window_pairs(hw, w, raddr, waddr, len, rstep,
-					     wstep, count, kind);
 	c0 = pairs_costs(w->row, ra, wa, step, len, kind, &c1, &r0, &r1);
 	cw = c1 - r1;
 	for (;;) {
@@ -963,6 +955,34 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 		c0 = c1;
 		r0 = r1;
 	}
+}
+
+uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
+				       struct rdc_port_window *w,
+				       uint32_t raddr, uint32_t waddr,
+				       uint32_t len, int64_t rstep,
+				       int64_t wstep, uint32_t count,
+				       unsigned int kind)
+{
+	const int64_t step = rstep, size = (int64_t)hw->vram_size;
+	int64_t ra = raddr, wa = waddr;
+	int64_t last = count ? (int64_t)(count - 1) * step : 0;
+
+	if (!hw->lazy || !w->open || hw->vram_hook || !len || count < 2 ||
+	    wstep != step || step % RDC_DRAM_ROW_BYTES ||
+	    RDC_MIN(ra, ra + last) < 0 || RDC_MIN(wa, wa + last) < 0 ||
+	    RDC_MAX(ra, ra + last) + len > size ||
+	    RDC_MAX(wa, wa + last) + len > size)
+		return rdc_port_window_pairs(hw, w, raddr, waddr, len, rstep,
+					     wstep, count, kind);
+	/* a blit's two kinds: COPY's writes, and the other ROPs' */
+	if (kind == RDC_BUS_WRITE)
+		return pairs_through(hw, w, ra, wa, len, step, count,
+				     RDC_BUS_WRITE);
+	if (kind == RDC_BUS_RMW)
+		return pairs_through(hw, w, ra, wa, len, step, count,
+				     RDC_BUS_RMW);
+	return pairs_through(hw, w, ra, wa, len, step, count, kind);
 }
 
 uint32_t rdc_port_window_runs(struct rdc_hw *hw, struct rdc_port_window *w,
