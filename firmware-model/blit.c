@@ -355,51 +355,24 @@ static void blit_rows(struct rdc_dp *dp, uint32_t saddr, uint32_t daddr,
 	rdc_port_window_close(hw, &win);
 }
 
-void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
-		 int32_t dy32, uint32_t w32, uint32_t h32)
+/*
+ * rdc_dp_blit's rows piece by piece, the clipped rectangles from (sx, sy)
+ * and (dx, dy): those of the fast path (a ROP byte by byte) in a port
+ * window, the others pixel by pixel.  Out of line, as blit_rows takes
+ * most blits: rdc_dp_blit keeps fewer values across its calls.
+ */
+static rdc_noinline void blit_pieces(struct rdc_dp *dp, int64_t sx, int64_t sy,
+				     int64_t dx, int64_t dy, int64_t w,
+				     int64_t h, bool back, bool fast)
 {
-	struct rdc_rect c = rdc_dp_eff_clip(dp);
 	const struct rdc_surface *ss = &dp->st.src, *ds = &dp->st.dst;
 	unsigned int bpp = rdc_format_bpp(ss->format);
-	int64_t sx = sx32, sy = sy32, dx = dx32, dy = dy32, w = w32, h = h32;
+	unsigned int kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW :
+							    RDC_BUS_WRITE;
 	struct rdc_hw *hw = dp->hw;
 	struct rdc_port_window win;
-	unsigned int kind;
-	uint64_t sbit, dbit;
-	bool back, fast;
 	int64_t k;
 
-	if (!blit_drawn(dp) ||
-	    !clip_pair(&c, ss->width, ss->height, &sx, &sy, &dx, &dy, &w, &h))
-		return;
-	sbit = (uint64_t)ss->base * 8 + (uint64_t)sy * ss->stride * 8 +
-	       (uint64_t)sx * bpp;
-	dbit = (uint64_t)ds->base * 8 + (uint64_t)dy * ds->stride * 8 +
-	       (uint64_t)dx * bpp;
-	back = dbit > sbit;
-	fast = !dp->ref_paths && ss->format == ds->format && bpp >= 8 &&
-	       !dp->st.colorkey_on &&
-	       (dp->st.alpha == RDC_ALPHA_OPAQUE ||
-		rdc_format_indexed(ds->format));
-
-	/*
-	 * The fast rows are charged as read/write pairs in a port window
-	 * and their bytes moved at once; a pair the window refuses goes to
-	 * blit_row's rdc_port_span_pair, as every row otherwise would.
-	 */
-	if (fast && w <= RDC_DP_CHUNK && !hw->vram_hook) {
-		int64_t row0 = back ? h - 1 : 0;
-
-		blit_rows(dp,
-			  ss->base + (uint32_t)(sy + row0) * ss->stride +
-				  (uint32_t)sx * (bpp / 8),
-			  ds->base + (uint32_t)(dy + row0) * ds->stride +
-				  (uint32_t)dx * (bpp / 8),
-			  (int32_t)dy, (int32_t)dx, (uint32_t)w, (uint32_t)h,
-			  back);
-		return;
-	}
-	kind = rdc_rop_reads_dst(dp->st.rop) ? RDC_BUS_RMW : RDC_BUS_WRITE;
 	if (fast)
 		rdc_port_window_open(hw, &win);
 	for (k = 0; k < h; k++) {
@@ -452,6 +425,50 @@ void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
 	}
 	if (fast)
 		rdc_port_window_close(hw, &win);
+}
+
+void rdc_dp_blit(struct rdc_dp *dp, int32_t sx32, int32_t sy32, int32_t dx32,
+		 int32_t dy32, uint32_t w32, uint32_t h32)
+{
+	struct rdc_rect c = rdc_dp_eff_clip(dp);
+	const struct rdc_surface *ss = &dp->st.src, *ds = &dp->st.dst;
+	unsigned int bpp = rdc_format_bpp(ss->format);
+	int64_t sx = sx32, sy = sy32, dx = dx32, dy = dy32, w = w32, h = h32;
+	struct rdc_hw *hw = dp->hw;
+	uint64_t sbit, dbit;
+	bool back, fast;
+
+	if (!blit_drawn(dp) ||
+	    !clip_pair(&c, ss->width, ss->height, &sx, &sy, &dx, &dy, &w, &h))
+		return;
+	sbit = (uint64_t)ss->base * 8 + (uint64_t)sy * ss->stride * 8 +
+	       (uint64_t)sx * bpp;
+	dbit = (uint64_t)ds->base * 8 + (uint64_t)dy * ds->stride * 8 +
+	       (uint64_t)dx * bpp;
+	back = dbit > sbit;
+	fast = !dp->ref_paths && ss->format == ds->format && bpp >= 8 &&
+	       !dp->st.colorkey_on &&
+	       (dp->st.alpha == RDC_ALPHA_OPAQUE ||
+		rdc_format_indexed(ds->format));
+
+	/*
+	 * The fast rows are charged as read/write pairs in a port window
+	 * and their bytes moved at once; a pair the window refuses goes to
+	 * blit_row's rdc_port_span_pair, as every row otherwise would.
+	 */
+	if (fast && w <= RDC_DP_CHUNK && !hw->vram_hook) {
+		int64_t row0 = back ? h - 1 : 0;
+
+		blit_rows(dp,
+			  ss->base + (uint32_t)(sy + row0) * ss->stride +
+				  (uint32_t)sx * (bpp / 8),
+			  ds->base + (uint32_t)(dy + row0) * ds->stride +
+				  (uint32_t)dx * (bpp / 8),
+			  (int32_t)dy, (int32_t)dx, (uint32_t)w, (uint32_t)h,
+			  back);
+		return;
+	}
+	blit_pieces(dp, sx, sy, dx, dy, w, h, back, fast);
 }
 
 void rdc_dp_readback_pack(struct rdc_dp *dp, int32_t x, int32_t y, uint32_t w,
