@@ -896,8 +896,8 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 
 /*
  * rdc_port_window_pairs_through once its tests have passed, inlined
- * there with the kind a constant: the costs of the spans a line start
- * falls in lose their switch.
+ * there with the kind a constant: the costs of the pairs, and of the
+ * spans a line start falls in, lose their switch.
  */
 static rdc_always_inline uint32_t pairs_through(
 	struct rdc_hw *hw, struct rdc_port_window *w, int64_t ra, int64_t wa,
@@ -920,7 +920,9 @@ static rdc_always_inline uint32_t pairs_through(
 		 */
 		if (n)
 			r0 = r1;
-		if (done == count || !window_still_goes_on(hw, w, &quiet))
+		/* not lazy, the pairs stop at the limit */
+		if (done == count || !hw->lazy ||
+		    !window_still_goes_on(hw, w, &quiet))
 			return done;
 		if (w->t + r0 <= w->lim) {
 			w->t += r0;
@@ -968,10 +970,9 @@ uint32_t rdc_port_window_pairs_through(struct rdc_hw *hw,
 	int64_t ra = raddr, wa = waddr;
 	int64_t last = count ? (int64_t)(count - 1) * step : 0;
 
-	if (!hw->lazy || !w->open || hw->vram_hook || !len || count < 2 ||
-	    wstep != step || step % RDC_DRAM_ROW_BYTES ||
-	    RDC_MIN(ra, ra + last) < 0 || RDC_MIN(wa, wa + last) < 0 ||
-	    RDC_MAX(ra, ra + last) + len > size ||
+	if (!w->open || hw->vram_hook || !len || count < 2 || wstep != step ||
+	    step % RDC_DRAM_ROW_BYTES || RDC_MIN(ra, ra + last) < 0 ||
+	    RDC_MIN(wa, wa + last) < 0 || RDC_MAX(ra, ra + last) + len > size ||
 	    RDC_MAX(wa, wa + last) + len > size)
 		return rdc_port_window_pairs(hw, w, raddr, waddr, len, rstep,
 					     wstep, count, kind);
