@@ -860,20 +860,20 @@ span_through(struct rdc_hw *hw, struct rdc_port_window *w, uint64_t a,
 	return true;
 }
 
-uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
-				      struct rdc_port_window *w, uint32_t addr,
-				      uint32_t len, uint32_t stride,
-				      uint32_t count)
+/*
+ * rdc_port_window_rows_through once its tests have passed (lazy among
+ * them), the first row's cost c0 and the others' c1 known, `most` of
+ * them in VRAM.
+ */
+static rdc_always_inline uint32_t rows_through(struct rdc_hw *hw,
+					       struct rdc_port_window *w,
+					       uint64_t a, uint32_t len,
+					       uint32_t stride, uint64_t most,
+					       uint64_t c0, uint64_t c1)
 {
-	uint64_t a = addr, c0, c1, most, done = 0;
+	uint64_t done = 0;
 	uint32_t quiet = 0;
 
-	/* else, and where there is no closed form, rows up to the limit */
-	if (!hw->lazy || !w->open || hw->vram_hook ||
-	    stride % RDC_DRAM_ROW_BYTES || count < 2 || !len ||
-	    a + len > hw->vram_size)
-		return rdc_port_window_rows(hw, w, addr, len, stride, count);
-	most = rows_costs(hw, w->row, a, len, stride, count, &c0, &c1);
 	for (;;) {
 		uint64_t n =
 			rows_fit(hw, w, a, len, stride, most - done, c0, c1);
@@ -892,6 +892,33 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 		/* the row it leaves open is its own: the next costs c1 */
 		c0 = c1;
 	}
+}
+
+uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
+				      struct rdc_port_window *w, uint32_t addr,
+				      uint32_t len, uint32_t stride,
+				      uint32_t count)
+{
+	uint64_t a = addr, c0, c1, most;
+
+	/* else, and where there is no closed form, rows up to the limit */
+	if (!hw->lazy || !w->open || hw->vram_hook ||
+	    stride % RDC_DRAM_ROW_BYTES || count < 2 || !len ||
+	    a + len > hw->vram_size)
+		return rdc_port_window_rows(hw, w, addr, len, stride, count);
+	most = rows_costs(hw, w->row, a, len, stride, count, &c0, &c1);
+	return rows_through(hw, w, a, len, stride, most, c0, c1);
+}
+
+uint32_t rdc_port_window_rows_costed(struct rdc_hw *hw,
+				     struct rdc_port_window *w, uint32_t addr,
+				     uint32_t len, uint32_t stride,
+				     uint32_t count, uint64_t c0, uint64_t c1)
+{
+	if (!hw->lazy) /* rows up to the limit */
+		return (uint32_t)rows_fit(hw, w, addr, len, stride, count, c0,
+					  c1);
+	return rows_through(hw, w, addr, len, stride, count, c0, c1);
 }
 
 /*

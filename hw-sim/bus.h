@@ -283,8 +283,8 @@ static inline uint32_t rdc_port_window_rows_all(struct rdc_hw *hw,
 	c1 = rdc_bus_cost_next_row(c0, a, stride, w->row, r0);
 	t = w->t + c0 + (uint64_t)(count - 1) * c1;
 	if (t > w->lim)
-		return rdc_port_window_rows_through(hw, w, addr, len, stride,
-						    count);
+		return rdc_port_window_rows_costed(hw, w, addr, len, stride,
+						   count, c0, c1);
 	w->t = t;
 	w->row = (uint32_t)((end - 1) / RDC_DRAM_ROW_BYTES);
 	rdc_scan_window_hit(hw, w, a, end);

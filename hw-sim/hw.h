@@ -435,6 +435,17 @@ uint32_t rdc_port_window_rows_through(struct rdc_hw *hw,
 				      uint32_t len, uint32_t stride,
 				      uint32_t count);
 /*
+ * rdc_port_window_rows_through for a caller that has made its tests
+ * (the window open, no VRAM watcher, count >= 2 rows of len > 0 bytes a
+ * whole number of DRAM rows apart, all in VRAM) and costed the first row
+ * from w->row (c0) and each other (c1), as rdc_port_window_rows_all
+ * has.
+ */
+uint32_t rdc_port_window_rows_costed(struct rdc_hw *hw,
+				     struct rdc_port_window *w, uint32_t addr,
+				     uint32_t len, uint32_t stride,
+				     uint32_t count, uint64_t c0, uint64_t c1);
+/*
  * rdc_port_runs in the window w, for a caller that writes the runs it is
  * given only after the call, and then hands the first run refused to
  * rdc_port_window_cross: the runs that end by the window's limit, and,

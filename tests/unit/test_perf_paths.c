@@ -590,21 +590,23 @@ static void test_glyphs_match(void **state)
 }
 
 /*
- * A console glyph that begins while a line's fetch holds the bus: the
+ * Console glyphs that begin while a line's fetch holds the bus: the
  * window opens at the fetch's end (rdc_port_window_open_busy), the wait
  * a stall, against the reference's port calls, which wait in the first
  * row's charge.  Each round starts a little later around screen line
  * 16's start, so that glyphs begin before, inside and after its fetch;
  * on 4096-byte rows, row 5 is in the DRAM row the fetch ends in, and
- * some glyphs start there.  With scanout converting at the fetch and on
- * demand.
+ * some glyphs start there.  Each glyph has a second one under it whose
+ * first row shares a DRAM row with its last (no row miss: it costs less
+ * than the rows after it), and which the line start falls in, in some
+ * rounds.  With scanout converting at the fetch and on demand.
  */
 static void test_glyphs_in_fetch_match(void **state)
 {
 	struct tp_pair *p = *state;
 	struct rdc_hw *a = &p->c[0]->hw, *b = &p->c[1]->hw;
-	uint32_t seed = 0x91f3bu, g[4 + 16], k, lazy;
-	int32_t late;
+	uint32_t seed = 0x91f3bu, g[4 + 16], k, lazy, under;
+	int32_t late, x, y;
 
 	for (lazy = 0; lazy < 2; lazy++) {
 		rdc_hw_set_on_demand(a, lazy);
@@ -619,15 +621,16 @@ static void test_glyphs_in_fetch_match(void **state)
 
 			rdc_hw_run_until(a, RDC_MAX(t, a->now));
 			rdc_hw_run_until(b, a->now);
-			g[0] = RDC_XY(8 * tdp_range(&seed, 0, 63),
-				      tdp_range(&seed, 0, 24));
-			if (late % 2)
-				g[0] = RDC_XY(8 * tdp_range(&seed, 0, 63), 5);
-			g[1] = RDC_WH(8, 16);
-			for (k = 2; k < RDC_ARRAY_SIZE(g); k++)
-				g[k] = tdp_rand(&seed);
-			tp_cmd(p, RDC_OP_MONO, RDC_MONO_COLORS,
-			       RDC_ARRAY_SIZE(g), g);
+			x = 8 * tdp_range(&seed, 0, 63);
+			y = late % 2 ? 5 : tdp_range(&seed, 0, 9);
+			for (under = 0; under < 2; under++) {
+				g[0] = RDC_XY(x, y + 15 * (int32_t)under);
+				g[1] = RDC_WH(8, 16);
+				for (k = 2; k < RDC_ARRAY_SIZE(g); k++)
+					g[k] = tdp_rand(&seed);
+				tp_cmd(p, RDC_OP_MONO, RDC_MONO_COLORS,
+				       RDC_ARRAY_SIZE(g), g);
+			}
 			tp_check(p);
 		}
 	}
