@@ -223,12 +223,24 @@ static rdc_always_inline uint64_t run_cost32(const struct run_costs *rc,
 	       (x >= RDC_DRAM_ROW_BYTES) * RDC_T_ROW_MISS;
 }
 
+/*
+ * A pixel's cost in an open row, the same at any 4-aligned address: a
+ * constant, folded where it is used (line_fast's pixel of a column is
+ * this and a row miss).
+ */
+static rdc_always_inline uint32_t line_one(void)
+{
+	uint32_t open = 0;
+
+	return (uint32_t)rdc_bus_cost(&open, 0, 4, RDC_BUS_WRITE, 1);
+}
+
 /* What line_fast needs of a line, fixed while it runs. */
 struct line_fixed {
 	uint8_t *vram;
 	uint64_t lim, v2;
 	uint64_t lo, hi; /* the bytes the line may write (the write barrier) */
-	uint32_t q, vstep, stride, one;
+	uint32_t q, vstep, stride;
 	int64_t rr, d0, d1; /* rem < rr: a run of q + 1; rem += d1 or d0 */
 	/*
 	 * line_stretches32's, where d0 < 0: sdd = dd = -d0 and
@@ -264,7 +276,7 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
 				     uint64_t *pixels)
 {
 	const uint32_t umul = xmajor ? 4 : f->stride;
-	const uint64_t pp = f->one + RDC_T_ROW_MISS;
+	const uint64_t pp = line_one() + RDC_T_ROW_MISS;
 	uint32_t a0 = a, k0 = k, e;
 	uint64_t budget, c0;
 
@@ -284,9 +296,9 @@ static rdc_noinline bool line_events(struct rdc_dp *dp,
 			else
 				w->row = (a + 4 * e - 1) / RDC_DRAM_ROW_BYTES;
 		} else {
-			c0 = f->one + (a / RDC_DRAM_ROW_BYTES != w->row ?
-					       RDC_T_ROW_MISS :
-					       0);
+			c0 = line_one() + (a / RDC_DRAM_ROW_BYTES != w->row ?
+						   RDC_T_ROW_MISS :
+						   0);
 			e = c0 > budget ?
 				    0 :
 				    (uint32_t)RDC_MIN((uint64_t)k,
@@ -337,7 +349,7 @@ static rdc_always_inline bool line_event(struct rdc_dp *dp,
 					 bool xmajor, uint64_t *pixels)
 {
 	const uint32_t umul = xmajor ? 4 : f->stride;
-	const uint64_t pp = f->one + RDC_T_ROW_MISS;
+	const uint64_t pp = line_one() + RDC_T_ROW_MISS;
 	const uint32_t b = a + before * umul, rest = k - before;
 	uint64_t cost;
 
@@ -391,8 +403,8 @@ static rdc_always_inline bool line_event(struct rdc_dp *dp,
  * run as it is stored, once the stretch is known to fit at rc->most a
  * run.  Where the window cannot take it so, the stretch stops for
  * line_fast's loop to take the rest run by run, as it takes the events.
- * A column's stretches line_fast charges (`one` and a row miss a pixel),
- * and `end` is then also where the window's budget ends.  A stretch
+ * A column's stretches line_fast charges (line_one and a row miss a
+ * pixel), and `end` is then also where the window's budget ends.  A stretch
  * whose last run would not start before `end` stops too.
  *
  * The stretch that stops so has its runs of q that the window takes
@@ -522,7 +534,7 @@ line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
  * The stride is over a DRAM row plus a beat, so after the first run
  * every run starts in a row the one before did not end in (a row miss):
  * a span costs span_cost32 with miss0 1, and a column (one beat a pixel,
- * a row each) `one` plus a row miss a pixel, so the window's test on
+ * a row each) line_one plus a row miss a pixel, so the window's test on
  * each run is a bound on the step where the runs must end.  Few values
  * live in the loops, so that they stay in registers: the budget left
  * before the limit rather than the time and the limit, rem less rr, and j
@@ -537,7 +549,7 @@ static rdc_always_inline void line_fast(struct rdc_dp *dp,
 	const uint32_t q = f->q, vstep = f->vstep;
 	const uint32_t umul = xmajor ? 4 : f->stride;
 	const uint32_t step0 = q * umul + vstep, step1 = step0 + umul;
-	const uint64_t v2 = f->v2, pp = f->one + RDC_T_ROW_MISS;
+	const uint64_t v2 = f->v2, pp = line_one() + RDC_T_ROW_MISS;
 	const int64_t rr = f->rr, d0 = f->d0, d1 = f->d1, end = ihi - q;
 	uint8_t *const vram = f->vram;
 	int64_t run0 = pos->run;
@@ -769,9 +781,9 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 	bool fast = false;
 	struct rdc_port_window w = { 0 };
 	struct rdc_port_run one;
-	struct line_fixed f = { 0 };
+	struct line_fixed f; /* set where fast: line_fast's only */
 	uint64_t pixels = 0;
-	uint32_t fg = 0, open;
+	uint32_t fg = 0;
 	uint8_t pair[8];
 	/* u runs along the major axis, v steps across it */
 	const int32_t ulo = xmajor ? c->x0 : c->y0;
@@ -802,13 +814,14 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 		rdc_port_window_open(dp->hw, &w);
 		/*
 		 * line_fast for the middle runs: not on the reference paths
-		 * (test_perf_paths), without a VRAM watcher (it
-		 * sees each run as rdc_port_window_span / _column does), with
-		 * every pixel 4-byte aligned (a column's in one beat) and the
-		 * line's bounding box in VRAM (no run refused for its address).
+		 * (test_perf_paths; dp_runs_ok, as is every pixel 4-byte
+		 * aligned), without a VRAM watcher (it sees each run as
+		 * rdc_port_window_span / _column does), with a column's
+		 * pixels in one beat each and the line's bounding box in
+		 * VRAM (no run refused for its address).
 		 */
-		if (m > 0 && !dp->hw->vram_hook && !dp->ref_paths &&
-		    base % 4 == 0 && stride % RDC_BUS_BYTES == 0 &&
+		if (m > 0 && !dp->hw->vram_hook &&
+		    stride % RDC_BUS_BYTES == 0 &&
 		    stride > RDC_DRAM_ROW_BYTES + RDC_BUS_BYTES) {
 			int64_t jz =
 				ihi == n ? m : /* j(n) */
@@ -824,20 +837,20 @@ static void line_queue(struct rdc_dp *dp, const struct rdc_rect *c, bool xmajor,
 			f.lo = lo;
 			f.hi = hi + 4;
 		}
+	}
+	if (fast) {
 		f.vram = w.vram;
 		f.lim = w.lim;
 		rdc_memcpy(&f.v2, pair, 8);
 		f.q = (uint32_t)q;
 		f.vstep = (uint32_t)sv * vmul;
 		f.stride = stride;
-		/* a pixel in an open row, the same at any 4-aligned address */
-		open = base / RDC_DRAM_ROW_BYTES;
-		f.one = (uint32_t)rdc_bus_cost(&open, base, 4, RDC_BUS_WRITE,
-					       1);
 		f.rr = rr;
 		f.d0 = 2 * m * q - 2 * n;
 		f.d1 = f.d0 + 2 * m;
-		if (fast && f.d0 < 0) {
+		f.flip = false;
+		f.sdd = f.tq = f.tr = 0;
+		if (f.d0 < 0) {
 			int64_t sd1;
 
 			f.flip = f.d1 < -f.d0;
