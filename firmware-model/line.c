@@ -379,6 +379,27 @@ static rdc_always_inline bool line_event(struct rdc_dp *dp,
 }
 
 /*
+ * line_stretches_q's runs of q from p to pe, s0 apart: stored, and each
+ * charged to *budget where `charge` (a span's stretch not charged
+ * whole).  `charge` a constant in each call: neither loop tests it.
+ * (vram and v2 by value: read through f, the stores to p might change
+ * them, so they would be loaded again for every run.)
+ */
+static rdc_always_inline uint8_t *
+line_runs(uint8_t *vram, uint64_t v2, const struct run_costs *rc, uint8_t *p,
+	  uint8_t *pe, ptrdiff_t s0, uint32_t q, bool flip, bool column,
+	  uint32_t umul, bool charge, uint64_t *budget)
+{
+	for (; p != pe; p += s0) {
+		if (charge)
+			*budget -=
+				run_cost32(rc, (uint32_t)(p - vram), q, flip);
+		line_q32(p, q, v2, column, umul);
+	}
+	return p;
+}
+
+/*
  * line_fast's middle runs a stretch at a time: a stretch is the t runs of
  * q pixels (rem >= 0 before each: rem -= dd) and the run of q + 1 after
  * them (rem < 0: rem += d1), t from rem, so that a pass takes the
@@ -399,13 +420,17 @@ static rdc_always_inline bool line_event(struct rdc_dp *dp,
  * A span's stretch is charged here.  For q == 1, where random lines'
  * runs are one pixel or two and most of a line's cost is the steps, a
  * run of one costs the same at any address (rc->c[0]: a beat, a row
- * miss, a turnaround), so the stretch is charged whole; for q >= 2 each
- * run as it is stored, once the stretch is known to fit at rc->most a
- * run.  Where the window cannot take it so, the stretch stops for
- * line_fast's loop to take the rest run by run, as it takes the events.
- * A column's stretches line_fast charges (line_one and a row miss a
- * pixel), and `end` is then also where the window's budget ends.  A stretch
- * whose last run would not start before `end` stops too.
+ * miss, a turnaround), so the stretch is charged whole.  So is one of
+ * runs of two from an even pixel (one whole beat: rc->c[flip], pixel
+ * 0's), as all of a stretch's runs of q start on an even pixel where its
+ * first does (the stride a whole number of beats, q even).  Other
+ * stretches are charged a run at a time as they are stored, once known
+ * to fit at rc->most a run.  Where the window cannot take it so, the
+ * stretch stops for line_fast's loop to take the rest run by run, as it
+ * takes the events.  A column's stretches line_fast charges (line_one
+ * and a row miss a pixel), and `end` is then also where the window's
+ * budget ends.  A stretch whose last run would not start before `end`
+ * stops too.
  *
  * The stretch that stops so has its runs of q that the window takes
  * and that start before `end` (a span's that fit; a column's before
@@ -431,6 +456,7 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 	int64_t k, n = 0;
 	uint64_t budget = *budgetp, cost;
 	uint8_t *p = vram + *ap, *pe;
+	bool whole; /* the stretch's runs of q all cost rc->c[flip] */
 
 	/* -dd <= rem < d1 here: 0 <= rem + rr < 2m with rr = dd */
 	if (dd == 0) /* all runs of q: more than start before end */
@@ -441,22 +467,24 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 	while (run + t * q < end) {
 		/* where the run of q + 1 starts */
 		pe = p + t * s0;
-		if (!column && q == 1) {
-			cost = (uint64_t)t * rc->c[0] +
-			       run_cost32(rc, (uint32_t)(pe - vram), 2, 1);
+		whole = !column &&
+			(q == 1 || (q == 2 && ((p - vram) & 4) == 0));
+		if (whole) {
+			cost = (uint64_t)t * rc->c[flip] +
+			       run_cost32(rc, (uint32_t)(pe - vram), qb, !flip);
 			if (cost > budget)
 				break;
 			budget -= cost;
 		} else if (!column && (uint64_t)(t + 1) * rc->most > budget) {
 			break;
 		}
-		for (; p != pe; p += s0) {
-			if (!column && q != 1)
-				budget -= run_cost32(rc, (uint32_t)(p - vram),
-						     q, flip);
-			line_q32(p, q, v2, column, umul);
-		}
-		if (!column && q != 1)
+		if (column || whole)
+			p = line_runs(vram, v2, rc, p, pe, s0, q, flip, column,
+				      umul, false, &budget);
+		else
+			p = line_runs(vram, v2, rc, p, pe, s0, q, flip, column,
+				      umul, true, &budget);
+		if (!column && !whole)
 			budget -=
 				run_cost32(rc, (uint32_t)(p - vram), qb, !flip);
 		line_q32(p, qb, v2, column, umul);
