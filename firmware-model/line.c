@@ -532,9 +532,8 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
  * q == 1, the most of them, a constant, flipped or not: a run's stores
  * are one store or two.  A span's runs of 2 to 4 pixels (q 2 or 3) on
  * their own: the range known, line_q32's tests on a run's length go
- * from the loops, each run two stores; unflipped, q a constant too (the
- * run of q + 1's stores, and whether a stretch may be charged whole,
- * known).
+ * from the loops, each run two stores; q a constant in each too (the
+ * last run's stores, and whether a stretch may be charged whole, known).
  */
 static rdc_always_inline void
 line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
@@ -553,9 +552,12 @@ line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
 	else if (!column && f->q == 3 && !f->flip)
 		line_stretches_q(f, rc, column, 3, false, umul, end, part, runp,
 				 remp, ap, budgetp);
-	else if (!column && f->q <= 3)
-		line_stretches_q(f, rc, column, f->q + 1, true, umul, end, part,
-				 runp, remp, ap, budgetp);
+	else if (!column && f->q == 2)
+		line_stretches_q(f, rc, column, 3, true, umul, end, part, runp,
+				 remp, ap, budgetp);
+	else if (!column && f->q == 3)
+		line_stretches_q(f, rc, column, 4, true, umul, end, part, runp,
+				 remp, ap, budgetp);
 	else if (!f->flip)
 		line_stretches_q(f, rc, column, f->q, false, umul, end, part,
 				 runp, remp, ap, budgetp);
