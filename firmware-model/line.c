@@ -530,10 +530,10 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 
 /*
  * q == 1, the most of them, a constant, flipped or not: a run's stores
- * are one store or two.  A span's runs of 2 to 4 pixels (q 2 or 3) on
- * their own: the range known, line_q32's tests on a run's length go
- * from the loops, each run two stores; q a constant in each too (the
- * last run's stores, and whether a stretch may be charged whole, known).
+ * are one store or two.  Runs of 2 to 4 pixels (q 2 or 3) on their own,
+ * q a constant in each: line_q32's tests on a run's length go from the
+ * loops (a span's run is two stores, a column's loop unrolled), and
+ * whether a stretch may be charged whole is known.
  */
 static rdc_always_inline void
 line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
@@ -546,16 +546,16 @@ line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
 	else if (f->q == 1)
 		line_stretches_q(f, rc, column, 2, true, umul, end, part, runp,
 				 remp, ap, budgetp);
-	else if (!column && f->q == 2 && !f->flip)
+	else if (f->q == 2 && !f->flip)
 		line_stretches_q(f, rc, column, 2, false, umul, end, part, runp,
 				 remp, ap, budgetp);
-	else if (!column && f->q == 3 && !f->flip)
+	else if (f->q == 3 && !f->flip)
 		line_stretches_q(f, rc, column, 3, false, umul, end, part, runp,
 				 remp, ap, budgetp);
-	else if (!column && f->q == 2)
+	else if (f->q == 2)
 		line_stretches_q(f, rc, column, 3, true, umul, end, part, runp,
 				 remp, ap, budgetp);
-	else if (!column && f->q == 3)
+	else if (f->q == 3)
 		line_stretches_q(f, rc, column, 4, true, umul, end, part, runp,
 				 remp, ap, budgetp);
 	else if (!f->flip)
