@@ -528,42 +528,53 @@ line_stretches_q(const struct line_fixed *f, const struct run_costs *rc,
 	*budgetp = budget;
 }
 
+/* line_stretches_q for q, its runs of q and q + 1, flipped or not */
+static rdc_always_inline void
+line_stretches_k(const struct line_fixed *f, const struct run_costs *rc,
+		 bool column, uint32_t q, uint32_t umul, int64_t end,
+		 int64_t part, int64_t *runp, int64_t *remp, uint32_t *ap,
+		 uint64_t *budgetp)
+{
+	if (!f->flip)
+		line_stretches_q(f, rc, column, q, false, umul, end, part, runp,
+				 remp, ap, budgetp);
+	else
+		line_stretches_q(f, rc, column, q + 1, true, umul, end, part,
+				 runp, remp, ap, budgetp);
+}
+
 /*
- * q == 1, the most of them, a constant, flipped or not: a run's stores
- * are one store or two.  Runs of 2 to 4 pixels (q 2 or 3) on their own,
- * q a constant in each: line_q32's tests on a run's length go from the
- * loops (a span's run is two stores, a column's loop unrolled), and
- * whether a stretch may be charged whole is known.
+ * q from 1 to 4, the most of them, a constant in each call: line_q32's
+ * tests on a run's length go from the loops (a span's run is one store,
+ * two or four, a column's loop unrolled), and whether a stretch may be
+ * charged whole is known.
  */
 static rdc_always_inline void
 line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
 		 bool column, uint32_t umul, int64_t end, int64_t part,
 		 int64_t *runp, int64_t *remp, uint32_t *ap, uint64_t *budgetp)
 {
-	if (f->q == 1 && !f->flip)
-		line_stretches_q(f, rc, column, 1, false, umul, end, part, runp,
+	switch (f->q) {
+	case 1:
+		line_stretches_k(f, rc, column, 1, umul, end, part, runp, remp,
+				 ap, budgetp);
+		break;
+	case 2:
+		line_stretches_k(f, rc, column, 2, umul, end, part, runp, remp,
+				 ap, budgetp);
+		break;
+	case 3:
+		line_stretches_k(f, rc, column, 3, umul, end, part, runp, remp,
+				 ap, budgetp);
+		break;
+	case 4:
+		line_stretches_k(f, rc, column, 4, umul, end, part, runp, remp,
+				 ap, budgetp);
+		break;
+	default:
+		line_stretches_k(f, rc, column, f->q, umul, end, part, runp,
 				 remp, ap, budgetp);
-	else if (f->q == 1)
-		line_stretches_q(f, rc, column, 2, true, umul, end, part, runp,
-				 remp, ap, budgetp);
-	else if (f->q == 2 && !f->flip)
-		line_stretches_q(f, rc, column, 2, false, umul, end, part, runp,
-				 remp, ap, budgetp);
-	else if (f->q == 3 && !f->flip)
-		line_stretches_q(f, rc, column, 3, false, umul, end, part, runp,
-				 remp, ap, budgetp);
-	else if (f->q == 2)
-		line_stretches_q(f, rc, column, 3, true, umul, end, part, runp,
-				 remp, ap, budgetp);
-	else if (f->q == 3)
-		line_stretches_q(f, rc, column, 4, true, umul, end, part, runp,
-				 remp, ap, budgetp);
-	else if (!f->flip)
-		line_stretches_q(f, rc, column, f->q, false, umul, end, part,
-				 runp, remp, ap, budgetp);
-	else
-		line_stretches_q(f, rc, column, f->q + 1, true, umul, end, part,
-				 runp, remp, ap, budgetp);
+	}
 }
 
 /*
