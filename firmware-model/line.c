@@ -544,10 +544,10 @@ line_stretches_k(const struct line_fixed *f, const struct run_costs *rc,
 }
 
 /*
- * q from 1 to 4, the most of them, a constant in each call: line_q32's
- * tests on a run's length go from the loops (a span's run is one store,
- * two or four, a column's loop unrolled), and whether a stretch may be
- * charged whole is known.
+ * q from 1 to 7, the most of them, a constant in each call: line_q32's
+ * tests on a run's length go from the loops (a span's run, of 8 pixels
+ * at most, is one store, two or four, a column's loop unrolled), and
+ * whether a stretch may be charged whole is known.
  */
 static rdc_always_inline void
 line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
@@ -569,6 +569,18 @@ line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
 		break;
 	case 4:
 		line_stretches_k(f, rc, column, 4, umul, end, part, runp, remp,
+				 ap, budgetp);
+		break;
+	case 5:
+		line_stretches_k(f, rc, column, 5, umul, end, part, runp, remp,
+				 ap, budgetp);
+		break;
+	case 6:
+		line_stretches_k(f, rc, column, 6, umul, end, part, runp, remp,
+				 ap, budgetp);
+		break;
+	case 7:
+		line_stretches_k(f, rc, column, 7, umul, end, part, runp, remp,
 				 ap, budgetp);
 		break;
 	default:
