@@ -554,39 +554,25 @@ line_stretches32(const struct line_fixed *f, const struct run_costs *rc,
 		 bool column, uint32_t umul, int64_t end, int64_t part,
 		 int64_t *runp, int64_t *remp, uint32_t *ap, uint64_t *budgetp)
 {
+	/* each case the same call with its own constant q */
+#define STRETCHES_Q(k) \
+	case k: \
+		line_stretches_k(f, rc, column, k, umul, end, part, runp, \
+				 remp, ap, budgetp); \
+		break
 	switch (f->q) {
-	case 1:
-		line_stretches_k(f, rc, column, 1, umul, end, part, runp, remp,
-				 ap, budgetp);
-		break;
-	case 2:
-		line_stretches_k(f, rc, column, 2, umul, end, part, runp, remp,
-				 ap, budgetp);
-		break;
-	case 3:
-		line_stretches_k(f, rc, column, 3, umul, end, part, runp, remp,
-				 ap, budgetp);
-		break;
-	case 4:
-		line_stretches_k(f, rc, column, 4, umul, end, part, runp, remp,
-				 ap, budgetp);
-		break;
-	case 5:
-		line_stretches_k(f, rc, column, 5, umul, end, part, runp, remp,
-				 ap, budgetp);
-		break;
-	case 6:
-		line_stretches_k(f, rc, column, 6, umul, end, part, runp, remp,
-				 ap, budgetp);
-		break;
-	case 7:
-		line_stretches_k(f, rc, column, 7, umul, end, part, runp, remp,
-				 ap, budgetp);
-		break;
+		STRETCHES_Q(1);
+		STRETCHES_Q(2);
+		STRETCHES_Q(3);
+		STRETCHES_Q(4);
+		STRETCHES_Q(5);
+		STRETCHES_Q(6);
+		STRETCHES_Q(7);
 	default:
 		line_stretches_k(f, rc, column, f->q, umul, end, part, runp,
 				 remp, ap, budgetp);
 	}
+#undef STRETCHES_Q
 }
 
 /*
