@@ -52,32 +52,7 @@ static rdc_always_inline void fill32_blocks(uint8_t *p, const uint8_t *blk,
 		rdc_memcpy(e - FILL_STORE, blk, FILL_STORE);
 }
 
-/*
- * Does a row of len bytes at p go to the C library's fill: the port has
- * one (RDC_FILL32_LIB), p is aligned for it and the row is a block or
- * more (below that fill32_blocks' two to four stores cost what a call
- * does)?
- */
-static inline bool fill32_lib_takes(const uint8_t *p, size_t len)
-{
-	return RDC_FILL32_LIB && len >= FILL_BLOCK && ((uintptr_t)p & 3) == 0;
-}
-
-/*
- * len bytes (FILL_STORE or more) of pixel v, blk its pattern as
- * fill32_blocks takes it: the C library's fill where fill32_lib_takes
- * the row, else fill32_blocks.
- */
-static rdc_always_inline void fill32_row(uint8_t *p, const uint8_t *blk,
-					 uint32_t v, size_t len)
-{
-	if (fill32_lib_takes(p, len))
-		rdc_fill32_lib(p, v, len / 4);
-	else
-		fill32_blocks(p, blk, len);
-}
-
-/* n XRGB8888 pixels of v: memset when its bytes agree, else fill32_row. */
+/* n XRGB8888 pixels of v: memset when its bytes agree, else fill32_blocks. */
 static inline void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
 {
 	size_t len = (size_t)n * 4, i;
@@ -94,7 +69,7 @@ static inline void dp_fill32(uint8_t *p, uint32_t v, uint32_t n)
 	}
 	for (i = 0; i < FILL_STORE; i += 4)
 		rdc_st32(blk + i, v);
-	fill32_row(p, blk, v, len);
+	fill32_blocks(p, blk, len);
 }
 
 /*

@@ -29,22 +29,19 @@ static inline void rect_row32(uint8_t *p, const uint8_t *blk, uint32_t v,
 			      uint32_t n, bool fast)
 {
 	if (fast)
-		fill32_row(p, blk, v, n * 4);
+		fill32_blocks(p, blk, n * 4);
 	else
 		dp_fill32(p, v, n);
 }
 
 /*
- * `done` rows of len bytes (FILL_STORE or more) of pixel v from q,
- * `stride` apart, blk v's pattern: fill32_row's choice made once for
- * all of them where no row is asked for ahead (the rows' alignment is
- * the first's when the stride keeps it), so that a row is the call or
- * the blocks and the step.
+ * `done` rows of len bytes (FILL_STORE or more) of blk's pixel from q,
+ * `stride` apart, each row asked for FILL_AHEAD rows before it is filled
+ * where `ahead` says so.
  */
 static rdc_always_inline void rect_rows_fill(uint8_t *q, const uint8_t *blk,
-					     uint32_t v, uint32_t len,
-					     uint32_t stride, uint32_t done,
-					     bool ahead)
+					     uint32_t len, uint32_t stride,
+					     uint32_t done, bool ahead)
 {
 	uint32_t k;
 
@@ -52,11 +49,8 @@ static rdc_always_inline void rect_rows_fill(uint8_t *q, const uint8_t *blk,
 		for (k = 0; k < done; k++, q += stride) {
 			if (k + FILL_AHEAD < done)
 				row_prefetch(q + FILL_AHEAD * stride, len);
-			fill32_row(q, blk, v, len);
+			fill32_blocks(q, blk, len);
 		}
-	} else if (fill32_lib_takes(q, len) && stride % 4 == 0) {
-		for (k = 0; k < done; k++, q += stride)
-			rdc_fill32_lib(q, v, len / 4);
 	} else {
 		for (k = 0; k < done; k++, q += stride)
 			fill32_blocks(q, blk, len);
@@ -110,7 +104,7 @@ static bool rect_rows32(struct rdc_dp *dp, int32_t xa, int32_t xb, int32_t ya,
 			 * and the row's address, stride and length in
 			 * registers too: the stores may alias `one` and *s
 			 */
-			rect_rows_fill(w.vram + one.addr, blk, v, one.len,
+			rect_rows_fill(w.vram + one.addr, blk, one.len,
 				       s->stride, done, ahead);
 			one.addr += done * s->stride;
 		} else {

@@ -189,7 +189,7 @@ static void runs_write(struct rdc_dp *dp, uint8_t *p, uint32_t first,
 			if (same)
 				rdc_memset(q, (int)(v & 0xff), r->len);
 			else
-				fill32_row(q, blk, v, r->len);
+				fill32_blocks(q, blk, r->len);
 			pixels += r->len / 4;
 			continue;
 		}

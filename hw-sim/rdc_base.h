@@ -56,35 +56,6 @@
 #endif
 #endif
 
-/*
- * n 32-bit units of v from p (4-byte aligned) as little-endian words:
- * glibc's wmemset, a wchar_t being 32 bits there, whose vector loop
- * outruns the core's own 16-byte block stores (rdc-bench fill with
- * scanout off in 0.90 to 0.95 of the time).  RDC_FILL32_LIB is 0, and
- * callers store for themselves, in the kernel, without glibc (the MCU,
- * the freestanding build), on big-endian hosts and under
- * AddressSanitizer, which does not look inside wmemset: there the
- * core's stores stay checked.
- */
-#if !defined(__KERNEL__) && defined(__GLIBC__) && defined(__WCHAR_MAX__) && \
-	__WCHAR_MAX__ == 0x7fffffff && \
-	__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && !defined(RDC_ASAN)
-#include <wchar.h>
-#define RDC_FILL32_LIB 1
-static inline void rdc_fill32_lib(void *p, uint32_t v, size_t n)
-{
-	wmemset((wchar_t *)p, (wchar_t)v, n);
-}
-#else
-#define RDC_FILL32_LIB 0
-static inline void rdc_fill32_lib(void *p, uint32_t v, size_t n)
-{
-	(void)p;
-	(void)v;
-	(void)n;
-}
-#endif
-
 /* Inlining decisions the hot paths make on purpose. */
 #ifdef __KERNEL__
 #define rdc_noinline	  noinline
