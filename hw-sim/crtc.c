@@ -832,12 +832,11 @@ static rdc_noinline void raster_column(struct rdc_hw *hw)
 }
 
 /*
- * Start of active line n: the CRTC reads it (and the ARGB8888 cursor's
- * row on it, in the same window) and converts it at once.  The bus sees
- * every fetch; the conversion is skipped (`hidden`) for a frame that
- * nobody can ever look at, and put off while nobody looks (hw->lazy).
- * Inline: a quiet line start (rdc_crtc_quiet_line), the DP's most
- * frequent event, is little more than this.
+ * The bus's side of active line n's fetch: its bytes read from VRAM,
+ * from the line's start or the end of a fetch still running, moving
+ * fetch_end.  Inline: with scanout put off, a quiet line start
+ * (rdc_crtc_quiet_line), the DP's most frequent event, is little more
+ * than this.
  */
 static rdc_always_inline void crtc_read_line(struct rdc_hw *hw, uint32_t n,
 					     uint64_t when)
@@ -854,6 +853,12 @@ static rdc_always_inline void crtc_read_line(struct rdc_hw *hw, uint32_t n,
 	}
 }
 
+/*
+ * Start of active line n: the CRTC reads it (and the ARGB8888 cursor's
+ * row on it, in the same window) and converts it at once.  The bus sees
+ * every fetch; the conversion is skipped (`hidden`) for a frame that
+ * nobody can ever look at, and put off while nobody looks (hw->lazy).
+ */
 static rdc_always_inline void crtc_fetch(struct rdc_hw *hw, uint32_t n,
 					 uint64_t when, bool hidden)
 {
