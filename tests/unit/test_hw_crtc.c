@@ -485,16 +485,24 @@ static void test_stopped_has_no_events(void **state)
 	assert_stopped(&fresh.hw);
 	hw_fx_fini(&fresh);
 
-	/* running mid-line, a light pen armed, then scanout off */
-	rdc_hw_write(hw, RDC_REG_LPEN_POS, FIELD_PREP(RDC_LPEN_Y, 7));
+	/*
+	 * running mid-line, a light pen on a lit pixel of it whose strobe
+	 * is still to come, then scanout off: the strobe never comes
+	 */
+	rdc_st32(hw->vram + 7 * small_mode.h_display * 4 + 31 * 4, 0xffffff);
+	rdc_hw_write(hw, RDC_REG_LPEN_POS,
+		     FIELD_PREP(RDC_LPEN_X, 31) | FIELD_PREP(RDC_LPEN_Y, 7));
 	rdc_hw_write(hw, RDC_REG_LPEN_CTRL, RDC_LPEN_CTRL_EN);
 	rdc_hw_run_until(hw, hw->now + 7 * LINE_CYCLES + 3);
 	assert_true(hw->crtc.running);
+	assert_int_equal(hw->crtc.lpen_time, hw->now - 3 + 31 * PX_CYCLES);
 	assert_true(rdc_crtc_due(hw, hw->now + LINE_CYCLES));
 	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_DP_EN);
 	assert_stopped(hw);
 	rdc_hw_run_until(hw, hw->now + 3 * FRAME_CYCLES);
 	assert_stopped(hw);
+	assert_false(rdc_hw_read(hw, RDC_REG_STATUS) & RDC_STATUS_LPEN);
+	assert_false(rdc_hw_read(hw, RDC_REG_IRQ_STATUS) & RDC_IRQ_LPEN);
 
 	/* on after a reset with a mode refused: none to fall back on */
 	rdc_hw_write(hw, RDC_REG_CONTROL, RDC_CONTROL_SOFT_RESET);
