@@ -184,10 +184,11 @@ static inline void blit_bytes(struct rdc_dp *dp, uint8_t *p, const uint8_t *src,
 	if (rop == RDC_ROP_COPY) {
 		/*
 		 * The C library's copy, the length hidden so that it stays
-		 * a call: its vector loop outruns the core's own 16-byte
-		 * copy of a row (rdc-bench blit with scanout off in 0.78 to
-		 * 0.84 of the time), and memmove's test for overlap is its
-		 * own.
+		 * a call: its vector loop outran the core's own 16-byte
+		 * copy of a row on one machine (rdc-bench blit with scanout
+		 * off in 0.78 to 0.84 of the time) and is within the noise
+		 * of it on another (an AMD EPYC), and memmove's test for
+		 * overlap is its own.
 		 */
 		size_t n = len;
 
