@@ -15,7 +15,7 @@ static inline uint32_t fmt_mask(unsigned int bpp)
 	return bpp >= 32 ? 0xffffffffu : (1u << bpp) - 1;
 }
 
-#define FILL_BLOCK 64 /* bytes of pattern copied at a time */
+#define FILL_BLOCK 64 /* a run of this many bytes or more takes fill32_blocks */
 #define FILL_STORE 32 /* bytes of pattern one store of dp_fill32 writes */
 
 /*
